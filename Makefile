@@ -1,0 +1,35 @@
+# Thin wrapper around CMake.  See README.md.
+.PHONY: all build build-asan test demo bench accuracy valgrind clean deps
+
+JOBS ?= 2
+CMAKE ?= cmake
+
+all: build
+
+# Debian packages a target needs are installed by the target itself.
+deps:
+	@command -v cmake >/dev/null && command -v cc >/dev/null && command -v python3 >/dev/null || \
+	  { apt-get update && apt-get install -y cmake gcc make python3; }
+
+build: deps
+	$(CMAKE) -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
+	$(CMAKE) --build build -j $(JOBS)
+
+build-asan: deps
+	$(CMAKE) -S . -B build-asan -DCMAKE_BUILD_TYPE=Debug -DTS_SANITIZE=ON >/dev/null
+	$(CMAKE) --build build-asan -j $(JOBS)
+
+test: build build-asan
+	tests/run_all.sh build build-asan
+
+valgrind: build
+	@command -v valgrind >/dev/null || { apt-get update && apt-get install -y valgrind; }
+	for t in build/tests/test_*; do \
+	  valgrind -q --leak-check=full --errors-for-leak-kinds=all --error-exitcode=9 $$t >/dev/null || exit 1; \
+	done; echo "valgrind: clean"
+
+demo: build
+	./build/examples/table1
+
+clean:
+	rm -rf build build-asan build-bench out

@@ -1,0 +1,257 @@
+/* Evaluation, batch evaluation and integrals (SPEC §2, §3). */
+#define _POSIX_C_SOURCE 200809L
+#include "ts_internal.h"
+
+#include <math.h>
+#include <pthread.h>
+#include <unistd.h>
+
+size_t ts__locate(const ts_spline *sp, double x, ts_cursor *cur)
+{
+    const double *xs = sp->x;
+    size_t n = sp->n;
+    if (cur) {
+        size_t i = cur->interval;
+        if (i < n && xs[i] <= x) {
+            if (x < xs[i + 1] || (i + 1 == n))
+                return i;
+            /* sorted queries: try the next interval before searching */
+            if (i + 2 <= n && (x < xs[i + 2] || i + 2 == n)) {
+                cur->interval = i + 1;
+                return i + 1;
+            }
+        }
+    }
+    /* largest i in [0, n-1] with xs[i] <= x */
+    size_t lo = 0, hi = n; /* invariant: xs[lo] <= x, answer < hi */
+    while (hi - lo > 1) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (xs[mid] <= x)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    if (cur)
+        cur->interval = lo;
+    return lo;
+}
+
+/* Value and derivatives (in x) of interval i at x; x may lie outside the
+ * interval (TS_EXTRAP_EXTEND). */
+static void eval_in(const ts_spline *sp, size_t i, double x, int want, double o[3])
+{
+    if (sp->form == TS_FORM_GEOMETRIC) {
+        ts__geo_eval(sp, i, x, want, o);
+        return;
+    }
+    double h = sp->h[i], B[4];
+    ts__B(sp, i, B);
+    double w = TS_HALF_PI / h; /* dθ/dx */
+    double theta = (x - sp->x[i]) * w;
+    ts__seg_theta(B, theta, want, o);
+    o[1] *= w;
+    o[2] *= w * w;
+}
+
+static ts_status eval_one(const ts_spline *sp, double x, ts_cursor *cur, int want, double o[3])
+{
+    o[1] = o[2] = 0.0;
+    if (!isfinite(x))
+        return TS_ERR_DOMAIN;
+    size_t n = sp->n;
+    double x0 = sp->x[0], xn = sp->x[n];
+    if (x0 <= x && x <= xn) {
+        eval_in(sp, ts__locate(sp, x, cur), x, want, o);
+        return TS_OK;
+    }
+    int left = x < x0;
+    size_t i = left ? 0 : n - 1;
+    double xe = left ? x0 : xn;
+    switch (sp->extrap) {
+    case TS_EXTRAP_CLAMP:
+        o[0] = sp->f[left ? 0 : n];
+        return TS_OK;
+    case TS_EXTRAP_EXTEND:
+        eval_in(sp, i, x, want, o);
+        return TS_OK;
+    case TS_EXTRAP_LINEAR: {
+        double e[3];
+        eval_in(sp, i, xe, 1, e);
+        o[0] = sp->f[left ? 0 : n] + e[1] * (x - xe);
+        o[1] = e[1];
+        return TS_OK;
+    }
+    case TS_EXTRAP_ERROR:
+    default:
+        return TS_ERR_DOMAIN;
+    }
+}
+
+ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur,
+                        double *y, double *dy, double *d2y)
+{
+    double o[3] = {NAN, NAN, NAN};
+    ts_status st = TS_ERR_NULL;
+    if (s) {
+        int want = d2y ? 2 : dy ? 1 : 0;
+        st = eval_one(s, x, cur, want, o);
+        if (st != TS_OK)
+            o[0] = o[1] = o[2] = NAN;
+    }
+    if (y)
+        *y = o[0];
+    if (dy)
+        *dy = o[1];
+    if (d2y)
+        *d2y = o[2];
+    return st;
+}
+
+ts_status ts_eval(const ts_spline *s, double x, ts_cursor *cur, double *y)
+{
+    return ts_eval_deriv(s, x, cur, y, NULL, NULL);
+}
+
+ts_status ts_eval_batch(const ts_spline *s, int deriv, const double *xq, size_t m,
+                        double *yq, ts_cursor *cur, ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!s || (m && (!xq || !yq))) {
+        ts__error_set(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+        return TS_ERR_NULL;
+    }
+    if (deriv < 0 || deriv > 2) {
+        ts__error_set(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
+        return TS_ERR_OPTION;
+    }
+    ts_cursor local = TS_CURSOR_INIT;
+    if (!cur)
+        cur = &local;
+    double x0 = s->x[0], xn = s->x[s->n];
+    ts_status result = TS_OK;
+    size_t run = 0; /* start of the current run of in-range queries */
+    for (size_t j = 0; j <= m; j++) {
+        if (j < m && x0 <= xq[j] && xq[j] <= xn)
+            continue;
+        if (j > run)
+            ts__fast_batch(s, deriv, xq + run, j - run, yq + run, cur);
+        run = j + 1;
+        if (j == m)
+            break;
+        double o[3];
+        ts_status st = eval_one(s, xq[j], cur, deriv, o);
+        yq[j] = st == TS_OK ? o[deriv] : (double)NAN;
+        if (st != TS_OK && result == TS_OK) {
+            result = st;
+            ts__error_set(err, st, j, TS_WHERE_QUERY);
+        }
+    }
+    return result;
+}
+
+typedef struct mt_job {
+    const ts_spline *s;
+    int deriv;
+    const double *xq;
+    size_t m;
+    double *yq;
+    ts_status st;
+    ts_error err;
+} mt_job;
+
+static void *mt_run(void *arg)
+{
+    mt_job *j = arg;
+    j->st = ts_eval_batch(j->s, j->deriv, j->xq, j->m, j->yq, NULL, &j->err);
+    return NULL;
+}
+
+#define TS_MT_MAX 64
+
+ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size_t m,
+                           double *yq, unsigned nthreads, ts_error *err)
+{
+    if (nthreads == 0) {
+        long c = sysconf(_SC_NPROCESSORS_ONLN);
+        nthreads = c > 0 ? (unsigned)c : 1u;
+    }
+    if (nthreads > TS_MT_MAX)
+        nthreads = TS_MT_MAX;
+    if (!s || nthreads <= 1 || m < 2 * (size_t)nthreads)
+        return ts_eval_batch(s, deriv, xq, m, yq, NULL, err);
+    if (!xq || !yq || deriv < 0 || deriv > 2)
+        return ts_eval_batch(s, deriv, xq, m, yq, NULL, err);
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    mt_job jobs[TS_MT_MAX];
+    pthread_t th[TS_MT_MAX];
+    int started[TS_MT_MAX];
+    size_t chunk = m / nthreads;
+    for (unsigned t = 0; t < nthreads; t++) {
+        size_t a = t * chunk, b = t + 1 == nthreads ? m : a + chunk;
+        jobs[t] = (mt_job){s, deriv, xq + a, b - a, yq + a, TS_OK, {TS_OK, TS_NO_INDEX, TS_WHERE_NONE}};
+        /* thread 0 runs on the caller's thread; a failed create runs inline */
+        started[t] = t > 0 && pthread_create(&th[t], NULL, mt_run, &jobs[t]) == 0;
+    }
+    for (unsigned t = 0; t < nthreads; t++)
+        if (!started[t])
+            mt_run(&jobs[t]);
+    ts_status result = TS_OK;
+    for (unsigned t = 0; t < nthreads; t++) {
+        if (started[t])
+            pthread_join(th[t], NULL);
+    }
+    for (unsigned t = 0; t < nthreads; t++) {
+        if (jobs[t].st != TS_OK) {
+            result = jobs[t].st;
+            size_t idx = jobs[t].err.index == TS_NO_INDEX ? TS_NO_INDEX : t * chunk + jobs[t].err.index;
+            ts__error_set(err, result, idx, jobs[t].err.where);
+            break;
+        }
+    }
+    return result;
+}
+
+/* ∫_{x_i}^{x} S on interval i, x in the interval. */
+static double partial(const ts_spline *sp, size_t i, double x)
+{
+    if (sp->form == TS_FORM_GEOMETRIC)
+        return ts__geo_integral(sp, i, x);
+    double h = sp->h[i], B[4], I[4];
+    double theta = TS_HALF_PI * (x - sp->x[i]) / h;
+    ts__B(sp, i, B);
+    ts__basis_int(theta, sin(theta), cos(theta), I);
+    return (2.0 * h / TS_PI) * (I[0] * B[0] + I[1] * B[1] + I[2] * B[2] + I[3] * B[3]);
+}
+
+ts_status ts_integral(const ts_spline *s, double a, double b, double *out)
+{
+    if (out)
+        *out = NAN;
+    if (!s || !out)
+        return TS_ERR_NULL;
+    double x0 = s->x[0], xn = s->x[s->n];
+    if (!(x0 <= a && a <= xn && x0 <= b && b <= xn))
+        return TS_ERR_DOMAIN;
+    if (a == b) {
+        *out = 0.0;
+        return TS_OK;
+    }
+    double sign = 1.0;
+    if (a > b) {
+        double t = a;
+        a = b;
+        b = t;
+        sign = -1.0;
+    }
+    size_t ia, ib;
+    ia = ts__locate(s, a, NULL);
+    ib = ts__locate(s, b, NULL);
+    double r;
+    if (ia == ib)
+        r = partial(s, ia, b) - partial(s, ia, a);
+    else
+        r = (s->cum[ib] - s->cum[ia + 1]) + (s->cum[ia + 1] - s->cum[ia] - partial(s, ia, a)) +
+            partial(s, ib, b);
+    *out = sign * r;
+    return TS_OK;
+}

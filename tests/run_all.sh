@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Runs every test program of each build directory given, and the script tests
+# (tests/*.py) against the first; prints each program's line and, last, the
+# sum as "total: N passed, M failed".  Exit status 0 only if nothing failed.
+set -u
+here=$(cd "$(dirname "$0")" && pwd)
+pass=0; fail=0; status=0
+run_one() { # label, command...
+    local label=$1; shift
+    local out rc line p f
+    out=$("$@" 2>&1); rc=$?
+    line=$(printf '%s\n' "$out" | grep -E '[0-9]+ passed, [0-9]+ failed' | tail -n 1)
+    if [ -n "$line" ]; then
+        p=$(printf '%s' "$line" | sed -E 's/.* ([0-9]+) passed, ([0-9]+) failed.*/\1/')
+        f=$(printf '%s' "$line" | sed -E 's/.* ([0-9]+) passed, ([0-9]+) failed.*/\2/')
+    else
+        p=0; f=1
+    fi
+    if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; fi
+    pass=$((pass + p)); fail=$((fail + f))
+    if [ "$f" -ne 0 ] || [ "$rc" -ne 0 ]; then
+        status=1
+        printf '%s\n' "$out" | tail -n 40
+        echo "[$label] FAILED (exit $rc)"
+    else
+        echo "[$label] $p passed, 0 failed"
+    fi
+}
+first=""
+for dir in "$@"; do
+    [ -z "$first" ] && first=$dir
+    for t in "$dir"/tests/test_*; do
+        [ -x "$t" ] || continue
+        run_one "$(basename "$dir")/$(basename "$t")" "$t"
+    done
+done
+if [ -n "$first" ]; then
+    for py in "$here"/test_*.py; do
+        [ -f "$py" ] || continue
+        run_one "script/$(basename "$py")" python3 "$py" "$first"
+    done
+fi
+echo "total: $pass passed, $fail failed"
+exit $status
