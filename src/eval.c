@@ -56,7 +56,7 @@ static void eval_in(const ts_spline *sp, size_t i, double x, int want, double o[
 static ts_status eval_one(const ts_spline *sp, double x, ts_cursor *cur, int want, double o[3])
 {
     o[1] = o[2] = 0.0;
-    if (!isfinite(x))
+    if (isnan(x) || (isinf(x) && sp->extrap != TS_EXTRAP_CLAMP))
         return TS_ERR_DOMAIN;
     size_t n = sp->n;
     double x0 = sp->x[0], xn = sp->x[n];

@@ -1,0 +1,269 @@
+/* SPEC §6: slope estimates d_0..d_n.  Method details: comments at enum ts_slopes
+ * in trigspline.h.  Secants are recomputed where needed: nothing is allocated. */
+#include "ts_internal.h"
+
+#include <math.h>
+
+/* Δ_j, j = 0..n-1 (SPEC §1). */
+static double secant(const double *x, const double *f, size_t j)
+{
+    return (f[j + 1] - f[j]) / (x[j + 1] - x[j]);
+}
+
+static int same_sign(double p, double q)
+{
+    return (p > 0.0 && q > 0.0) || (p < 0.0 && q < 0.0);
+}
+
+/* SPEC §6 three-point end formula at the end whose interval has width h0 and
+ * secant D0, next interval h1, D1. */
+static double end3(double h0, double h1, double D0, double D1)
+{
+    return D0 + (D0 - D1) * h0 / (h0 + h1);
+}
+
+/* Weighted means of D0 = Δ_{i-1}, D1 = Δ_i with weights w0 + w1 = 1. */
+static double mean_arith(double D0, double D1, double w0, double w1)
+{
+    if (D0 == D1)
+        return D0;
+    return w0 * D0 + w1 * D1;
+}
+
+static double mean_geom(double D0, double D1, double w0, double w1)
+{
+    if (!same_sign(D0, D1))
+        return 0.0;
+    if (D0 == D1)
+        return D0;
+    double a = fabs(D0), b = fabs(D1), g;
+    double r = b / a;
+    if (isnormal(r))
+        g = a * pow(r, w1);
+    else /* ratio over/underflows: go through logarithms */
+        g = exp(w0 * log(a) + w1 * log(b));
+    return D0 > 0.0 ? g : -g;
+}
+
+static double mean_harm(double D0, double D1, double w0, double w1)
+{
+    if (!same_sign(D0, D1))
+        return 0.0;
+    if (D0 == D1)
+        return D0;
+    /* 1/d = w0/D0 + w1/D1, divided through by the secant of larger size so
+     * the ratio is <= 1: no overflow for tiny or huge secants */
+    if (fabs(D0) <= fabs(D1))
+        return D0 / (w0 + w1 * (D0 / D1));
+    return D1 / (w1 + w0 * (D1 / D0));
+}
+
+/* Weights (on Δ_{i-1}, Δ_i) at inner point i. */
+static void weights_three_point(const double *x, size_t i, double *w0, double *w1)
+{
+    double hl = x[i] - x[i - 1], hr = x[i + 1] - x[i];
+    *w0 = hr / (hl + hr);
+    *w1 = hl / (hl + hr);
+}
+
+static void weights_brodlie(const double *x, size_t i, double *w0, double *w1)
+{
+    double hl = x[i] - x[i - 1], hr = x[i + 1] - x[i];
+    double a = 2.0 * hr + hl, b = hr + 2.0 * hl;
+    *w0 = a / (a + b);
+    *w1 = b / (a + b);
+}
+
+/* Interior d_1..d_{n-1} by one of the three means with the given weights. */
+static void interior(const double *x, const double *f, size_t n, double *d,
+                     double (*mean)(double, double, double, double),
+                     void (*weights)(const double *, size_t, double *, double *))
+{
+    double Dl = secant(x, f, 0);
+    for (size_t i = 1; i < n; i++) {
+        double Dr = secant(x, f, i), w0, w1;
+        weights(x, i, &w0, &w1);
+        d[i] = mean(Dl, Dr, w0, w1);
+        Dl = Dr;
+    }
+}
+
+/* Both ends by the three-point formula; limit 0: sign-limited (d = 0 unless d
+ * has the sign of the end secant); limit 1: also Fritsch–Carlson/Moler's
+ * |d| <= 3|Δ| when the two end secants differ in sign. */
+static void ends3(const double *x, const double *f, size_t n, double *d, int limit)
+{
+    for (int side = 0; side < 2; side++) {
+        double h0, h1, D0, D1;
+        if (side == 0) {
+            h0 = x[1] - x[0];
+            h1 = x[2] - x[1];
+            D0 = secant(x, f, 0);
+            D1 = secant(x, f, 1);
+        } else {
+            h0 = x[n] - x[n - 1];
+            h1 = x[n - 1] - x[n - 2];
+            D0 = secant(x, f, n - 1);
+            D1 = secant(x, f, n - 2);
+        }
+        double e = end3(h0, h1, D0, D1);
+        if (limit >= 0 && !same_sign(e, D0))
+            e = 0.0;
+        else if (limit >= 1 && !same_sign(D0, D1) && fabs(e) > fabs(3.0 * D0))
+            e = 3.0 * D0;
+        d[side == 0 ? 0 : n] = e;
+    }
+}
+
+/* Akima's extended secants m_j, j = -2..n+1 (n >= 2): ghosts continue the
+ * secants linearly, m_{-1} = 2 m_0 - m_1, m_{-2} = 2 m_{-1} - m_0 (Akima 1970). */
+static double akima_m(const double *x, const double *f, size_t n, long j)
+{
+    if (j >= 0 && (size_t)j < n)
+        return secant(x, f, (size_t)j);
+    double a, b;
+    if (j < 0) {
+        a = secant(x, f, 0);
+        b = secant(x, f, 1);
+    } else {
+        a = secant(x, f, n - 1);
+        b = secant(x, f, n - 2);
+    }
+    double g1 = 2.0 * a - b;
+    if (j == -1 || (j >= 0 && (size_t)j == n))
+        return g1;
+    return 2.0 * g1 - a;
+}
+
+static void akima(const double *x, const double *f, size_t n, double *d, int modified)
+{
+    for (size_t i = 0; i <= n; i++) {
+        long k = (long)i;
+        double m0 = akima_m(x, f, n, k - 2), m1 = akima_m(x, f, n, k - 1);
+        double m2 = akima_m(x, f, n, k), m3 = akima_m(x, f, n, k + 1);
+        if (m1 == m2) {
+            d[i] = m1;
+            continue;
+        }
+        double w1 = fabs(m3 - m2), w2 = fabs(m1 - m0);
+        if (modified) { /* Moler 2019 */
+            w1 += 0.5 * fabs(m3 + m2);
+            w2 += 0.5 * fabs(m1 + m0);
+        }
+        double s = w1 + w2;
+        if (s == 0.0) /* Akima's 0/0: the plain average */
+            d[i] = 0.5 * m1 + 0.5 * m2;
+        else
+            d[i] = (w1 / s) * m1 + (w2 / s) * m2;
+    }
+}
+
+/* SPEC §6 periodic: three-point mean, interval n-1 is the left neighbour of point 0. */
+static void periodic(const double *x, const double *f, size_t n, double *d)
+{
+    interior(x, f, n, d, mean_arith, weights_three_point);
+    double hl = x[n] - x[n - 1], hr = x[1] - x[0];
+    double w0 = hr / (hl + hr), w1 = hl / (hl + hr);
+    d[0] = mean_arith(secant(x, f, n - 1), secant(x, f, 0), w0, w1);
+    d[n] = d[0];
+}
+
+ts_status ts__slopes(ts_slopes method, const double *x, const double *f, size_t np,
+                     double *d, ts_error *err)
+{
+    size_t n = np - 1;
+    if (!((int)method >= 0 && (int)method < TS_SLOPES_COUNT_) || method == TS_SLOPES_USER) {
+        ts__error_set(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
+        return TS_ERR_OPTION;
+    }
+    if (method == TS_SLOPES_PERIODIC && f[0] != f[n]) {
+        ts__error_set(err, TS_ERR_PERIODIC, n, TS_WHERE_POINT);
+        return TS_ERR_PERIODIC;
+    }
+    if (n == 1) { /* SPEC §6: two points */
+        d[0] = d[1] = secant(x, f, 0);
+    } else {
+        switch (method) {
+        case TS_SLOPES_GEOMETRIC:
+            interior(x, f, n, d, mean_geom, weights_three_point);
+            ends3(x, f, n, d, 0);
+            break;
+        case TS_SLOPES_HARMONIC:
+            interior(x, f, n, d, mean_harm, weights_three_point);
+            ends3(x, f, n, d, 0);
+            break;
+        case TS_SLOPES_FRITSCH_CARLSON:
+            interior(x, f, n, d, mean_harm, weights_brodlie);
+            ends3(x, f, n, d, 1);
+            break;
+        case TS_SLOPES_AKIMA:
+            akima(x, f, n, d, 0);
+            break;
+        case TS_SLOPES_MAKIMA:
+            akima(x, f, n, d, 1);
+            break;
+        case TS_SLOPES_PERIODIC:
+            periodic(x, f, n, d);
+            break;
+        case TS_SLOPES_ARITHMETIC:
+        case TS_SLOPES_USER:
+        default:
+            interior(x, f, n, d, mean_arith, weights_three_point);
+            ends3(x, f, n, d, -1);
+            break;
+        }
+    }
+    /* finite data can still overflow (huge f over a tiny h) */
+    for (size_t i = 0; i <= n; i++) {
+        if (!isfinite(d[i])) {
+            ts__error_set(err, TS_ERR_NONFINITE, i, TS_WHERE_POINT);
+            return TS_ERR_NONFINITE;
+        }
+    }
+    return TS_OK;
+}
+
+ts_status ts_slopes_compute(ts_slopes method, const double *x, const double *f,
+                            size_t n_points, double *d, ts_error *err)
+{
+    ts_status st = TS_OK;
+    size_t idx = TS_NO_INDEX;
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!x || !f || !d) {
+        ts__error_set(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+        return TS_ERR_NULL;
+    }
+    if (n_points < 2) {
+        st = TS_ERR_TOO_FEW;
+        goto fail;
+    }
+    for (size_t i = 0; i < n_points; i++) {
+        if (!isfinite(x[i]) || !isfinite(f[i])) {
+            st = TS_ERR_NONFINITE;
+            idx = i;
+            goto fail;
+        }
+    }
+    for (size_t i = 1; i < n_points; i++) {
+        if (!(x[i] > x[i - 1])) {
+            st = TS_ERR_UNSORTED;
+            idx = i;
+            goto fail;
+        }
+    }
+    if (!((int)method >= 0 && (int)method < TS_SLOPES_COUNT_) || method == TS_SLOPES_USER) {
+        st = TS_ERR_OPTION;
+        goto fail;
+    }
+    st = ts__slopes(method, x, f, n_points, d, err);
+    if (st == TS_OK)
+        return TS_OK;
+    for (size_t i = 0; i < n_points; i++)
+        d[i] = (double)NAN;
+    return st;
+fail:
+    ts__error_set(err, st, idx, idx == TS_NO_INDEX ? TS_WHERE_NONE : TS_WHERE_POINT);
+    for (size_t i = 0; i < n_points; i++)
+        d[i] = (double)NAN;
+    return st;
+}
