@@ -421,8 +421,8 @@ typedef struct ts_curve ts_curve;
  *    (rotation, reflection, uniform scale s, translation; t scales by s resp.
  *    sqrt(s)).  A shear or non-uniform scale changes the knots and the curve.
  *  - The nonlinear slope methods (geometric, harmonic, Fritsch–Carlson, Akima,
- *    modified Akima) act per coordinate and are invariant only under
- *    translation and per-axis scaling.  Fritsch–Carlson, harmonic and
+ *    modified Akima) act per coordinate: with uniform knots they are
+ *    invariant under translation and per-axis scaling, not under rotation.  Fritsch–Carlson, harmonic and
  *    geometric give d = 0 in a coordinate at its local extrema; where every
  *    coordinate has one at the same point the tangent vector is 0 (a corner).
  *  - Each segment lies in the convex hull of its 4 control points (the basis
@@ -493,7 +493,8 @@ void ts_curve_options_init(ts_curve_options *opt);
  *                      curve, the last point kept), or a knot step lost to rounding
  *   TS_ERR_SIDE        a point on or outside the box (index = point)
  *   TS_ERR_INFEASIBLE  the SPEC §5 value of beta_i overflows, or no finite
- *                      beta_i certifies (extreme data ranges only; index = segment)
+ *                      beta_i certifies (slope/gap ratios beyond ~1e300 only;
+ *                      index = segment)
  *   TS_ERR_NOMEM.
  */
 ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
@@ -509,7 +510,8 @@ const double *ts_curve_knots(const ts_curve *c);   /* segments+1 parameter value
 /* Control points of segment i: ctrl receives 4 rows of dim doubles.  The
  * spline of coordinate k in segment i has values ctrl[l*dim + k]:
  * P_i, P_i + k_i d_i, P_{i+1} - k_i d_{i+1}, P_{i+1} with k_i = 2h_i/(3 pi a_i)
- * (SPEC §3, h_i = t_{i+1} - t_i).  TS_OK, TS_ERR_NULL, TS_ERR_INDEX. */
+ * (SPEC §3, h_i = t_{i+1} - t_i).  TS_OK, TS_ERR_NULL, TS_ERR_INDEX (ctrl
+ * set to NaN). */
 ts_status ts_curve_control(const ts_curve *c, size_t i, double *ctrl);
 /* alpha_i, beta_i of segment i (both set to NaN first; with a box beta_i is the
  * computed one).  TS_OK, TS_ERR_NULL, TS_ERR_INDEX. */
@@ -536,16 +538,19 @@ ts_status ts_curve_sample(const ts_curve *c, size_t m, double *out, size_t out_l
  * bisection until two halves agree with the whole to tol relative
  * (tol <= 0 or NaN: 1e-12; below 1e-14: 1e-14).  The returned sum uses the
  * halves, so on smooth curves its relative error is far below tol (measured:
- * < 1e-13 for tol = 1e-12 on a 64-point circle, tests/test_curve.c); near a
- * point of zero speed (a cusp) it is about tol.  Bisection stops at depth 48
+ * 6e-16 for every tol in [1e-14, 1e-3] on a 64-point circle, docs/curves.md);
+ * near a point of zero speed inside a segment the error can approach tol.  Bisection stops at depth 48
  * or 20000 pieces per segment.  *len is NaN first.  TS_OK, TS_ERR_NULL. */
 ts_status ts_curve_length(const ts_curve *c, double tol, double *len);
 
 /* Curve certificate against its box: exact minimum per segment and coordinate
  * (ts_interval_report entry i*dim + k, x0/x1/at_* are parameter values t,
- * B the control values of coordinate k; reports may be NULL).
- * TS_OK if every active gap > 0 or no box; TS_ERR_VIOLATED (index = first
- * segment); TS_ERR_NULL. */
+ * B the control values of coordinate k, gap_* the exact minimum distance to
+ * the side; reports may be NULL).  A side is certified when all 4 control
+ * values are strictly inside (a proof: convex hull) or its exact gap exceeds
+ * a rounding guard of ~64 ε max|B - bound|.
+ * TS_OK if every active side is certified or there is no box;
+ * TS_ERR_VIOLATED (index = first segment); TS_ERR_NULL. */
 ts_status ts_curve_certify(const ts_curve *c, ts_interval_report *reports, ts_error *err);
 /* Same against any box (e.g. to test a curve built without one): coordinate k
  * > lo[k] where has_lo[k], < hi[k] where has_hi[k] (k < dim; has_lo/lo and

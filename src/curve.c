@@ -1,0 +1,847 @@
+/* SPEC §7: parametric curves (open/closed, 2-D/3-D), box constraints of SPEC §5
+ * applied per coordinate with a shared beta per segment. */
+#include "ts_internal.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Per-coordinate bounds (SPEC §5 with constant lines). */
+struct curve_box {
+    int has_lo[3], has_hi[3];
+    double lo[3], hi[3];
+};
+
+struct ts_curve {
+    size_t n;            /* segments */
+    size_t dim;          /* 2 or 3 */
+    int closed;
+    ts_param param;
+    double *t;           /* n+1 parameter knots */
+    double *p;           /* (n+1)*dim points (closed: row n == row 0) */
+    double *d;           /* (n+1)*dim derivatives d_i per coordinate (in t) */
+    double *alpha, *beta;/* n */
+    double *ctrl;        /* n*4*dim control points, segment-major then row l */
+    unsigned char *term; /* n: ts_term that set beta_i */
+    int has_box;
+    struct curve_box box;
+};
+
+/* Padding of the periodic extension used for closed-curve slopes: covers the
+ * widest stencil of SPEC §6 (Akima: two secants on each side). */
+#define CURVE_PAD 3
+
+void ts_curve_options_init(ts_curve_options *opt)
+{
+    if (!opt)
+        return;
+    memset(opt, 0, sizeof *opt);
+    opt->param = TS_PARAM_CENTRIPETAL;
+    opt->closed = 0;
+    opt->slopes = TS_SLOPES_ARITHMETIC;
+    opt->alpha = 1.0;
+    opt->alphas = NULL;
+    opt->n_alphas = 0;
+    opt->beta = 0.0;
+    opt->betas = NULL;
+    opt->n_betas = 0;
+    for (int k = 0; k < 3; k++) {
+        opt->has_lo[k] = opt->has_hi[k] = 0;
+        opt->lo[k] = opt->hi[k] = 0.0;
+    }
+    opt->margin = TS_DEFAULT_MARGIN;
+}
+
+void ts_curve_free(ts_curve *c)
+{
+    if (!c)
+        return;
+    free(c->t);
+    free(c->p);
+    free(c->d);
+    free(c->alpha);
+    free(c->beta);
+    free(c->ctrl);
+    free(c->term);
+    free(c);
+}
+
+/* count * size bytes, or NULL with *st set (overflow / no memory). */
+static void *alloc_n(size_t count, size_t size, ts_status *st)
+{
+    if (count == 0)
+        count = 1;
+    if (count > SIZE_MAX / size) {
+        *st = TS_ERR_OVERFLOW;
+        return NULL;
+    }
+    void *m = malloc(count * size);
+    if (!m)
+        *st = TS_ERR_NOMEM;
+    return m;
+}
+
+static int isfin(double v)
+{
+    return v - v == 0.0;
+}
+
+/* Euclidean norm of v[0..dim), scaled against overflow/underflow. */
+static double norm_dim(const double *v, size_t dim)
+{
+    double m = 0.0;
+    for (size_t k = 0; k < dim; k++) {
+        double a = fabs(v[k]);
+        if (a > m)
+            m = a;
+    }
+    if (m == 0.0 || !isfin(m))
+        return m;
+    double s = 0.0;
+    for (size_t k = 0; k < dim; k++) {
+        double q = v[k] / m;
+        s += q * q;
+    }
+    return m * sqrt(s);
+}
+
+/* sin and cos of theta = (pi/2) delta, delta in [0, 1], exact at both ends. */
+static void sincos_delta(double delta, double *s, double *c)
+{
+    *s = sin(TS_HALF_PI * delta);
+    *c = sin(TS_HALF_PI * (1.0 - delta));
+}
+
+/* SPEC §2, (2.1): dS/dθ from control differences, and its θ-derivative. */
+static double seg_d1(const double B[4], double s, double c)
+{
+    return 3.0 * (1.0 - s) * (1.0 - s) * c * (B[1] - B[0]) + 2.0 * s * c * (B[2] - B[1]) +
+           3.0 * (1.0 - c) * (1.0 - c) * s * (B[3] - B[2]);
+}
+
+static double seg_d2(const double B[4], double s, double c)
+{
+    double w0 = -3.0 * (1.0 - s) * (2.0 * c * c + s * (1.0 - s));
+    double w1 = 2.0 * (c * c - s * s);
+    double w2 = 3.0 * (1.0 - c) * (2.0 * s * s + c * (1.0 - c));
+    return w0 * (B[1] - B[0]) + w1 * (B[2] - B[1]) + w2 * (B[3] - B[2]);
+}
+
+/* Control values of coordinate k of segment i. */
+static void ctrl_coord(const ts_curve *c, size_t i, size_t k, double B[4])
+{
+    const double *q = c->ctrl + i * 4 * c->dim;
+    for (int l = 0; l < 4; l++)
+        B[l] = q[(size_t)l * c->dim + k];
+}
+
+/* SPEC §3 control points of segment i from p, d, t, alpha, beta. */
+static void seg_controls(ts_curve *c, size_t i)
+{
+    size_t dim = c->dim;
+    double h = c->t[i + 1] - c->t[i];
+    double k = 2.0 * h / (3.0 * TS_PI * (c->alpha[i] + c->beta[i]));
+    const double *p0 = c->p + i * dim, *p1 = p0 + dim;
+    const double *d0 = c->d + i * dim, *d1 = d0 + dim;
+    double *q = c->ctrl + i * 4 * dim;
+    for (size_t j = 0; j < dim; j++) {
+        q[j] = p0[j];
+        q[dim + j] = p0[j] + k * d0[j];
+        q[2 * dim + j] = p1[j] - k * d1[j];
+        q[3 * dim + j] = p1[j];
+    }
+}
+
+/* One side of the box: C_l = ±(B_l − bound).  The segment is inside when
+ * every C_l > 0 (a proof by itself: S − bound = Σ A_l C_l, A_l >= 0, Σ A_l = 1,
+ * SPEC §2) or when the exact minimum (SPEC §5, ts__trig_min with κ = 0)
+ * exceeds a rounding guard for g and for the C_l themselves (see certify.c:
+ * <= 16ε max|C| per evaluation, doubled twice here, plus 8ε of the
+ * subtraction).  *g receives the exact minimum, *th its θ. */
+static int side_ok(const double C[4], double bmax, double *g, double *th)
+{
+    int structural = 1;
+    double cmax = 0.0;
+    for (int l = 0; l < 4; l++) {
+        if (!(C[l] > 0.0))
+            structural = 0;
+        if (fabs(C[l]) > cmax)
+            cmax = fabs(C[l]);
+    }
+    *g = ts__trig_min(C, 0.0, th);
+    return structural || *g > 64.0 * DBL_EPSILON * cmax + 8.0 * DBL_EPSILON * bmax;
+}
+
+/* Exact gaps of coordinate k of segment i to the sides of box bx (SPEC §5
+ * with constant lines).  Returns 1 when every active side is certified. */
+static int seg_gaps(const ts_curve *c, const struct curve_box *bx, size_t i, size_t k,
+                    double *glo, double *tlo, double *ghi, double *thi)
+{
+    double B[4], C[4];
+    int ok = 1;
+    ctrl_coord(c, i, k, B);
+    *glo = *tlo = *ghi = *thi = NAN;
+    if (bx->has_lo[k]) {
+        double bmax = fabs(bx->lo[k]);
+        for (int l = 0; l < 4; l++) {
+            C[l] = B[l] - bx->lo[k];
+            bmax = fmax(bmax, fabs(B[l]));
+        }
+        ok = side_ok(C, bmax, glo, tlo) && ok;
+    }
+    if (bx->has_hi[k]) {
+        double bmax = fabs(bx->hi[k]);
+        for (int l = 0; l < 4; l++) {
+            C[l] = bx->hi[k] - B[l];
+            bmax = fmax(bmax, fabs(B[l]));
+        }
+        ok = side_ok(C, bmax, ghi, thi) && ok;
+    }
+    return ok;
+}
+
+static int seg_certified(const ts_curve *c, size_t i)
+{
+    double a, b, e, f;
+    for (size_t k = 0; k < c->dim; k++)
+        if (!seg_gaps(c, &c->box, i, k, &a, &b, &e, &f))
+            return 0;
+    return 1;
+}
+
+/* SPEC §5 certificate repair: raise beta_i (doubling, then bisection on a_i)
+ * until every gap of segment i is > 0.  0 on success, -1 if infeasible. */
+static int seg_repair(ts_curve *c, size_t i)
+{
+    double a_lo = c->alpha[i] + c->beta[i], a_hi = a_lo;
+    int found = 0;
+    for (int it = 0; it < 2200 && !found; it++) {
+        a_hi *= 2.0;
+        if (!isfin(a_hi))
+            break;
+        c->beta[i] = a_hi - c->alpha[i];
+        seg_controls(c, i);
+        if (seg_certified(c, i))
+            found = 1;
+        else
+            a_lo = a_hi;
+    }
+    if (!found) {
+        c->beta[i] = a_lo - c->alpha[i];
+        seg_controls(c, i);
+        return -1;
+    }
+    for (int it = 0; it < 60 && a_hi - a_lo > 1e-9 * a_hi; it++) {
+        double am = 0.5 * (a_lo + a_hi);
+        c->beta[i] = am - c->alpha[i];
+        seg_controls(c, i);
+        if (seg_certified(c, i))
+            a_hi = am;
+        else
+            a_lo = am;
+    }
+    c->beta[i] = a_hi - c->alpha[i];
+    seg_controls(c, i);
+    return 0;
+}
+
+/* SPEC §6 slopes of one coordinate.  Closed curves: the method applied to the
+ * periodic extension (CURVE_PAD points each side), d_n = d_0 exactly. */
+static ts_status coord_slopes(const ts_curve *c, ts_slopes method, size_t k, double *ft,
+                              double *te, double *fe, double *de, ts_error *err)
+{
+    size_t n = c->n, dim = c->dim;
+    ts_status st;
+    if (!c->closed) {
+        for (size_t i = 0; i <= n; i++)
+            ft[i] = c->p[i * dim + k];
+        st = ts__slopes(method, c->t, ft, n + 1, de, err);
+        if (st != TS_OK)
+            return st;
+        for (size_t i = 0; i <= n; i++)
+            c->d[i * dim + k] = de[i];
+        return TS_OK;
+    }
+    if (method == TS_SLOPES_PERIODIC)
+        method = TS_SLOPES_ARITHMETIC; /* periodic three-point mean */
+    double T = c->t[n] - c->t[0];
+    size_t ne = n + 1 + 2 * CURVE_PAD;
+    for (size_t j = 0; j < ne; j++) {
+        /* index j - CURVE_PAD, wrapped: r in [0, n), q periods */
+        long long jj = (long long)j - CURVE_PAD;
+        long long nn = (long long)n;
+        long long q = jj >= 0 ? jj / nn : -((-jj + nn - 1) / nn);
+        size_t r = (size_t)(jj - q * nn);
+        te[j] = c->t[r] + (double)q * T;
+        fe[j] = c->p[r * dim + k];
+    }
+    st = ts__slopes(method, te, fe, ne, de, err);
+    if (st != TS_OK)
+        return st;
+    for (size_t i = 0; i < n; i++)
+        c->d[i * dim + k] = de[i + CURVE_PAD];
+    c->d[n * dim + k] = c->d[k];
+    return TS_OK;
+}
+
+static ts_status fail(ts_error *err, ts_status st, size_t index, ts_where where)
+{
+    ts__error_set(err, st, index, where);
+    return st;
+}
+
+ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
+                       const ts_curve_options *opt, ts_curve **out, ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (out)
+        *out = NULL;
+    if (!points || !out)
+        return fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    if (dim != 2 && dim != 3)
+        return fail(err, TS_ERR_DIMENSION, TS_NO_INDEX, TS_WHERE_NONE);
+    ts_curve_options defaults;
+    if (!opt) {
+        ts_curve_options_init(&defaults);
+        opt = &defaults;
+    }
+    if (!((int)opt->param >= 0 && (int)opt->param <= (int)TS_PARAM_UNIFORM))
+        return fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!((int)opt->slopes >= 0 && (int)opt->slopes < TS_SLOPES_COUNT_) ||
+        opt->slopes == TS_SLOPES_USER || (opt->slopes == TS_SLOPES_PERIODIC && !opt->closed))
+        return fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
+    if (n_points < 2)
+        return fail(err, TS_ERR_TOO_FEW, TS_NO_INDEX, TS_WHERE_NONE);
+    if (n_points > SIZE_MAX / dim / sizeof(double))
+        return fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
+    for (size_t i = 0; i < n_points; i++)
+        for (size_t k = 0; k < dim; k++)
+            if (!isfin(points[i * dim + k]))
+                return fail(err, TS_ERR_NONFINITE, i, TS_WHERE_POINT);
+
+    /* distinct points m; closed: drop an exact repetition of the first point */
+    int closed = opt->closed != 0;
+    size_t m = n_points;
+    if (closed) {
+        int same = 1;
+        for (size_t k = 0; k < dim; k++)
+            if (points[k] != points[(n_points - 1) * dim + k])
+                same = 0;
+        if (same)
+            m = n_points - 1;
+    }
+    if (closed && m < 3)
+        return fail(err, TS_ERR_TOO_FEW, TS_NO_INDEX, TS_WHERE_NONE);
+    size_t n = closed ? m : m - 1; /* segments */
+
+    if (opt->alphas && opt->n_alphas != n)
+        return fail(err, TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
+    if (opt->betas && opt->n_betas != n)
+        return fail(err, TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
+    for (size_t i = 0; i < n; i++) {
+        double a = opt->alphas ? opt->alphas[i] : opt->alpha;
+        if (!(a > 0.0 && isfin(a)))
+            return fail(err, TS_ERR_ALPHA, i, TS_WHERE_INTERVAL);
+    }
+    for (size_t i = 0; i < n; i++) {
+        double b = opt->betas ? opt->betas[i] : opt->beta;
+        if (!(b >= 0.0 && isfin(b)))
+            return fail(err, TS_ERR_BETA, i, TS_WHERE_INTERVAL);
+    }
+    int has_box = 0;
+    for (size_t k = 0; k < dim; k++) {
+        if (opt->has_lo[k]) {
+            has_box = 1;
+            if (!isfin(opt->lo[k]))
+                return fail(err, TS_ERR_NONFINITE, TS_NO_INDEX, TS_WHERE_NONE);
+        }
+        if (opt->has_hi[k]) {
+            has_box = 1;
+            if (!isfin(opt->hi[k]))
+                return fail(err, TS_ERR_NONFINITE, TS_NO_INDEX, TS_WHERE_NONE);
+        }
+    }
+    if (has_box && !(opt->margin > 0.0 && isfin(opt->margin)))
+        return fail(err, TS_ERR_MARGIN, TS_NO_INDEX, TS_WHERE_NONE);
+    /* consecutive equal points (and, closed, the last kept point equal to the first) */
+    for (size_t i = 0; i + 1 < m; i++) {
+        int same = 1;
+        for (size_t k = 0; k < dim; k++)
+            if (points[i * dim + k] != points[(i + 1) * dim + k])
+                same = 0;
+        if (same)
+            return fail(err, TS_ERR_UNSORTED, i + 1, TS_WHERE_POINT);
+    }
+    if (closed) {
+        int same = 1;
+        for (size_t k = 0; k < dim; k++)
+            if (points[(m - 1) * dim + k] != points[k])
+                same = 0;
+        if (same)
+            return fail(err, TS_ERR_UNSORTED, m - 1, TS_WHERE_POINT);
+    }
+    /* SPEC §5: every point strictly inside the box */
+    for (size_t i = 0; i < m; i++)
+        for (size_t k = 0; k < dim; k++) {
+            double v = points[i * dim + k];
+            if ((opt->has_lo[k] && !(v > opt->lo[k])) || (opt->has_hi[k] && !(v < opt->hi[k])))
+                return fail(err, TS_ERR_SIDE, i, TS_WHERE_POINT);
+        }
+
+    /* allocate */
+    ts_status st = TS_OK;
+    if (n + 1 + 2 * CURVE_PAD < n || (n + 1) > SIZE_MAX / dim / 4 / sizeof(double))
+        return fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
+    ts_curve *c = calloc(1, sizeof *c);
+    if (!c)
+        return fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
+    c->n = n;
+    c->dim = dim;
+    c->closed = closed;
+    c->param = opt->param;
+    c->has_box = has_box;
+    for (size_t k = 0; k < 3; k++) {
+        c->box.has_lo[k] = k < dim && opt->has_lo[k] != 0;
+        c->box.has_hi[k] = k < dim && opt->has_hi[k] != 0;
+        c->box.lo[k] = c->box.has_lo[k] ? opt->lo[k] : 0.0;
+        c->box.hi[k] = c->box.has_hi[k] ? opt->hi[k] : 0.0;
+    }
+    size_t ne = n + 1 + 2 * CURVE_PAD;
+    double *ft = NULL, *te = NULL, *fe = NULL, *de = NULL;
+    c->t = alloc_n(n + 1, sizeof(double), &st);
+    c->p = alloc_n((n + 1) * dim, sizeof(double), &st);
+    c->d = alloc_n((n + 1) * dim, sizeof(double), &st);
+    c->alpha = alloc_n(n, sizeof(double), &st);
+    c->beta = alloc_n(n, sizeof(double), &st);
+    c->ctrl = alloc_n(n * 4 * dim, sizeof(double), &st);
+    c->term = alloc_n(n, 1, &st);
+    ft = alloc_n(n + 1, sizeof(double), &st);
+    te = alloc_n(ne, sizeof(double), &st);
+    fe = alloc_n(ne, sizeof(double), &st);
+    de = alloc_n(ne, sizeof(double), &st);
+    if (st != TS_OK || !c->t || !c->p || !c->d || !c->alpha || !c->beta || !c->ctrl ||
+        !c->term || !ft || !te || !fe || !de) {
+        if (st == TS_OK)
+            st = TS_ERR_NOMEM;
+        fail(err, st, TS_NO_INDEX, TS_WHERE_NONE);
+        goto out;
+    }
+    for (size_t i = 0; i < m; i++)
+        memcpy(c->p + i * dim, points + i * dim, dim * sizeof(double));
+    if (closed)
+        memcpy(c->p + n * dim, points, dim * sizeof(double));
+
+    /* SPEC §7: parameter knots */
+    c->t[0] = 0.0;
+    for (size_t i = 0; i < n; i++) {
+        double dv[3], h;
+        for (size_t k = 0; k < dim; k++)
+            dv[k] = c->p[(i + 1) * dim + k] - c->p[i * dim + k];
+        h = c->param == TS_PARAM_UNIFORM ? 1.0 : norm_dim(dv, dim);
+        if (c->param == TS_PARAM_CENTRIPETAL)
+            h = sqrt(h);
+        c->t[i + 1] = c->param == TS_PARAM_UNIFORM ? (double)(i + 1) : c->t[i] + h;
+        if (!isfin(c->t[i + 1])) {
+            st = fail(err, TS_ERR_NONFINITE, i + 1 < m ? i + 1 : 0, TS_WHERE_POINT);
+            goto out;
+        }
+        if (!(c->t[i + 1] > c->t[i])) { /* step lost to rounding */
+            st = fail(err, TS_ERR_UNSORTED, i + 1 < m ? i + 1 : m - 1, TS_WHERE_POINT);
+            goto out;
+        }
+    }
+
+    /* SPEC §6: slopes per coordinate */
+    for (size_t k = 0; k < dim; k++) {
+        st = coord_slopes(c, opt->slopes, k, ft, te, fe, de, err);
+        if (st != TS_OK)
+            goto out;
+    }
+    for (size_t i = 0; i <= n; i++)
+        for (size_t k = 0; k < dim; k++)
+            if (!isfin(c->d[i * dim + k])) {
+                st = fail(err, TS_ERR_NONFINITE, i < m ? i : 0, TS_WHERE_POINT);
+                goto out;
+            }
+
+    /* alpha, beta: user values; with a box SPEC §5 per coordinate, shared max */
+    for (size_t i = 0; i < n; i++) {
+        double a = opt->alphas ? opt->alphas[i] : opt->alpha;
+        double b = opt->betas ? opt->betas[i] : opt->beta;
+        c->alpha[i] = a;
+        c->beta[i] = b;
+        c->term[i] = TS_TERM_USER;
+        if (!has_box)
+            continue;
+        double K = 2.0 * (c->t[i + 1] - c->t[i]) / (3.0 * TS_PI);
+        double best = 0.0;
+        ts_term bt = TS_TERM_MARGIN;
+        for (size_t k = 0; k < dim; k++) {
+            double f0 = c->p[i * dim + k], f1 = c->p[(i + 1) * dim + k];
+            double d0 = c->d[i * dim + k], d1 = c->d[(i + 1) * dim + k];
+            double cand[4] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY};
+            if (c->box.has_lo[k]) { /* SPEC §5 lower-boundary rule, l = lo[k] */
+                cand[0] = -a - K * d0 / (f0 - c->box.lo[k]);
+                cand[1] = -a + K * d1 / (f1 - c->box.lo[k]);
+            }
+            if (c->box.has_hi[k]) { /* SPEC §5 upper-boundary rule, u = hi[k] */
+                cand[2] = -a + K * d0 / (c->box.hi[k] - f0);
+                cand[3] = -a - K * d1 / (c->box.hi[k] - f1);
+            }
+            for (int j = 0; j < 4; j++)
+                if (cand[j] > best) {
+                    best = cand[j];
+                    bt = (ts_term)(TS_TERM_LOWER_LEFT + j);
+                }
+        }
+        double rule = opt->margin + best;
+        if (!isfin(rule)) {
+            st = fail(err, TS_ERR_INFEASIBLE, i, TS_WHERE_INTERVAL);
+            goto out;
+        }
+        if (rule >= b) {
+            c->beta[i] = rule;
+            c->term[i] = (unsigned char)bt;
+        }
+    }
+
+    /* SPEC §3 control points */
+    for (size_t i = 0; i < n; i++) {
+        seg_controls(c, i);
+        for (size_t j = 0; j < 4 * dim; j++)
+            if (!isfin(c->ctrl[i * 4 * dim + j])) {
+                st = fail(err, TS_ERR_NONFINITE, i, TS_WHERE_INTERVAL);
+                goto out;
+            }
+    }
+
+    /* SPEC §5: exact certificate per segment and coordinate, repair by bisection */
+    if (has_box)
+        for (size_t i = 0; i < n; i++) {
+            if (seg_certified(c, i))
+                continue;
+            if (seg_repair(c, i) != 0) {
+                st = fail(err, TS_ERR_INFEASIBLE, i, TS_WHERE_INTERVAL);
+                goto out;
+            }
+            c->term[i] = TS_TERM_CERTIFY;
+        }
+
+out:
+    free(ft);
+    free(te);
+    free(fe);
+    free(de);
+    if (st != TS_OK) {
+        ts_curve_free(c);
+        return st;
+    }
+    *out = c;
+    return TS_OK;
+}
+
+size_t ts_curve_segments(const ts_curve *c)
+{
+    return c ? c->n : 0;
+}
+
+size_t ts_curve_dim(const ts_curve *c)
+{
+    return c ? c->dim : 0;
+}
+
+int ts_curve_closed(const ts_curve *c)
+{
+    return c ? c->closed : 0;
+}
+
+const double *ts_curve_knots(const ts_curve *c)
+{
+    return c ? c->t : NULL;
+}
+
+ts_status ts_curve_control(const ts_curve *c, size_t i, double *ctrl)
+{
+    if (!c || !ctrl)
+        return TS_ERR_NULL;
+    if (i >= c->n) {
+        for (size_t j = 0; j < 4 * c->dim; j++)
+            ctrl[j] = NAN;
+        return TS_ERR_INDEX;
+    }
+    memcpy(ctrl, c->ctrl + i * 4 * c->dim, 4 * c->dim * sizeof(double));
+    return TS_OK;
+}
+
+ts_status ts_curve_params(const ts_curve *c, size_t i, double *alpha, double *beta)
+{
+    if (alpha)
+        *alpha = NAN;
+    if (beta)
+        *beta = NAN;
+    if (!c || !alpha || !beta)
+        return TS_ERR_NULL;
+    if (i >= c->n)
+        return TS_ERR_INDEX;
+    *alpha = c->alpha[i];
+    *beta = c->beta[i];
+    return TS_OK;
+}
+
+/* Segment containing t in [t0, tn] (right-hand segment at inner knots). */
+static size_t curve_locate(const ts_curve *c, double t, ts_cursor *cur)
+{
+    size_t n = c->n;
+    if (cur && cur->interval < n) {
+        size_t i = cur->interval;
+        if (c->t[i] <= t && (t < c->t[i + 1] || i == n - 1))
+            return i;
+        if (i + 1 < n && c->t[i + 1] <= t && (t < c->t[i + 2] || i + 1 == n - 1)) {
+            cur->interval = i + 1;
+            return i + 1;
+        }
+    }
+    size_t lo = 0, hi = n; /* t[lo] <= t, answer in [lo, hi) */
+    while (hi - lo > 1) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (c->t[mid] <= t)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    if (cur)
+        cur->interval = lo;
+    return lo;
+}
+
+/* Point and derivatives of segment i at delta in [0, 1]. */
+static void seg_eval(const ts_curve *c, size_t i, double delta, double *p, double *dp,
+                     double *d2p)
+{
+    double s, co, A[4], B[4];
+    double h = c->t[i + 1] - c->t[i], w = TS_HALF_PI / h;
+    sincos_delta(delta, &s, &co);
+    ts__basis(s, co, A);
+    for (size_t k = 0; k < c->dim; k++) {
+        ctrl_coord(c, i, k, B);
+        if (p)
+            p[k] = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
+        if (dp)
+            dp[k] = seg_d1(B, s, co) * w;
+        if (d2p)
+            d2p[k] = seg_d2(B, s, co) * w * w;
+    }
+}
+
+ts_status ts_curve_eval(const ts_curve *c, double t, ts_cursor *cur, double *p, double *dp,
+                        double *d2p)
+{
+    if (!c)
+        return TS_ERR_NULL;
+    for (size_t k = 0; k < c->dim; k++) {
+        if (p)
+            p[k] = NAN;
+        if (dp)
+            dp[k] = NAN;
+        if (d2p)
+            d2p[k] = NAN;
+    }
+    double t0 = c->t[0], tn = c->t[c->n];
+    if (!isfin(t))
+        return TS_ERR_DOMAIN;
+    if (c->closed) {
+        if (!(t0 <= t && t < tn)) { /* periodic: tn is t0 again */
+            double T = tn - t0, r = fmod(t - t0, T);
+            if (r < 0.0)
+                r += T;
+            if (!(r < T)) /* rounding */
+                r = 0.0;
+            t = t0 + r;
+        }
+    } else if (!(t0 <= t && t <= tn)) {
+        return TS_ERR_DOMAIN;
+    }
+    size_t i = curve_locate(c, t, cur);
+    double delta = (t - c->t[i]) / (c->t[i + 1] - c->t[i]);
+    if (delta < 0.0)
+        delta = 0.0;
+    if (delta > 1.0)
+        delta = 1.0;
+    seg_eval(c, i, delta, p, dp, d2p);
+    return TS_OK;
+}
+
+ts_status ts_curve_sample(const ts_curve *c, size_t m, double *out, size_t out_len, size_t *rows)
+{
+    if (rows)
+        *rows = 0;
+    if (!c || !rows || (!out && out_len > 0))
+        return TS_ERR_NULL;
+    if (m < 2)
+        return TS_ERR_OPTION;
+    size_t n = c->n, w = 1 + c->dim;
+    if (m - 1 > (SIZE_MAX - 1) / n)
+        return TS_ERR_OVERFLOW;
+    size_t r = n * (m - 1) + 1;
+    if (r > SIZE_MAX / w)
+        return TS_ERR_OVERFLOW;
+    *rows = r;
+    if (out_len < r * w)
+        return TS_ERR_LENGTH;
+    size_t row = 0;
+    for (size_t i = 0; i < n; i++) {
+        double h = c->t[i + 1] - c->t[i];
+        for (size_t j = 0; j + 1 < m; j++, row++) {
+            double delta = (double)j / (double)(m - 1);
+            out[row * w] = c->t[i] + h * delta;
+            seg_eval(c, i, delta, out + row * w + 1, NULL, NULL);
+        }
+    }
+    out[row * w] = c->t[n];
+    seg_eval(c, n - 1, 1.0, out + row * w + 1, NULL, NULL);
+    return TS_OK;
+}
+
+/* 10-point Gauss–Legendre on [-1, 1]: positive nodes and weights (roots of
+ * P_10 computed with mpmath at 40 digits, rounded to 21). */
+static const double gl_x[5] = {0.148874338981631210885, 0.433395394129247190799,
+                               0.679409568299024406234, 0.865063366688984510732,
+                               0.973906528517171720078};
+static const double gl_w[5] = {0.295524224714752870174, 0.269266719309996355091,
+                               0.219086362515982043996, 0.149451349150580593146,
+                               0.0666713443086881375936};
+
+/* |dP/dθ| of segment i at θ. */
+static double seg_speed(const ts_curve *c, size_t i, double theta)
+{
+    double s = sin(theta), co = cos(theta), v[3], B[4];
+    for (size_t k = 0; k < c->dim; k++) {
+        ctrl_coord(c, i, k, B);
+        v[k] = seg_d1(B, s, co);
+    }
+    return norm_dim(v, c->dim);
+}
+
+static double gl_seg(const ts_curve *c, size_t i, double a, double b)
+{
+    double m = 0.5 * (a + b), r = 0.5 * (b - a), sum = 0.0;
+    for (int j = 0; j < 5; j++)
+        sum += gl_w[j] * (seg_speed(c, i, m - r * gl_x[j]) + seg_speed(c, i, m + r * gl_x[j]));
+    return r * sum;
+}
+
+#define LEN_DEPTH 48
+#define LEN_BUDGET 20000
+
+ts_status ts_curve_length(const ts_curve *c, double tol, double *len)
+{
+    if (len)
+        *len = NAN;
+    if (!c || !len)
+        return TS_ERR_NULL;
+    if (!(tol > 0.0))
+        tol = 1e-12;
+    if (tol < 1e-14)
+        tol = 1e-14;
+    double total = 0.0;
+    for (size_t i = 0; i < c->n; i++) {
+        struct { double a, b, I; int depth; } stk[LEN_DEPTH + 2];
+        int sp = 0, pieces = 0;
+        double whole = gl_seg(c, i, 0.0, TS_HALF_PI), seg = 0.0;
+        stk[sp].a = 0.0;
+        stk[sp].b = TS_HALF_PI;
+        stk[sp].I = whole;
+        stk[sp].depth = 0;
+        sp++;
+        while (sp > 0) {
+            sp--;
+            double a = stk[sp].a, b = stk[sp].b, I = stk[sp].I;
+            int depth = stk[sp].depth;
+            double mid = 0.5 * (a + b);
+            double L = gl_seg(c, i, a, mid), R = gl_seg(c, i, mid, b);
+            double fine = L + R, e = fabs(fine - I);
+            double scale = fmax(fine, whole * (b - a) / TS_HALF_PI);
+            pieces++;
+            if (e <= tol * scale || depth >= LEN_DEPTH || pieces >= LEN_BUDGET) {
+                seg += fine;
+                continue;
+            }
+            stk[sp].a = mid; stk[sp].b = b; stk[sp].I = R; stk[sp].depth = depth + 1; sp++;
+            stk[sp].a = a; stk[sp].b = mid; stk[sp].I = L; stk[sp].depth = depth + 1; sp++;
+        }
+        total += seg;
+    }
+    *len = total;
+    return TS_OK;
+}
+
+static ts_status certify_with(const ts_curve *c, const struct curve_box *bx,
+                              ts_interval_report *reports, ts_error *err)
+{
+    size_t first = TS_NO_INDEX;
+    for (size_t i = 0; i < c->n; i++) {
+        double h = c->t[i + 1] - c->t[i];
+        for (size_t k = 0; k < c->dim; k++) {
+            double glo, tlo, ghi, thi;
+            int ok = seg_gaps(c, bx, i, k, &glo, &tlo, &ghi, &thi);
+            if (!ok && first == TS_NO_INDEX)
+                first = i;
+            if (!reports)
+                continue;
+            ts_interval_report *r = &reports[i * c->dim + k];
+            r->x0 = c->t[i];
+            r->x1 = c->t[i + 1];
+            r->alpha = c->alpha[i];
+            r->beta = c->beta[i];
+            r->a = c->alpha[i] + c->beta[i];
+            ctrl_coord(c, i, k, r->B);
+            r->term = (ts_term)c->term[i];
+            r->has_lower = bx->has_lo[k];
+            r->has_upper = bx->has_hi[k];
+            r->gap_lower = glo;
+            r->at_lower = c->t[i] + h * tlo / TS_HALF_PI; /* NaN if inactive */
+            r->gap_upper = ghi;
+            r->at_upper = c->t[i] + h * thi / TS_HALF_PI;
+            r->certified = ok;
+        }
+    }
+    if (first != TS_NO_INDEX)
+        return fail(err, TS_ERR_VIOLATED, first, TS_WHERE_INTERVAL);
+    return TS_OK;
+}
+
+ts_status ts_curve_certify(const ts_curve *c, ts_interval_report *reports, ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!c)
+        return fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    return certify_with(c, &c->box, reports, err);
+}
+
+ts_status ts_curve_certify_box(const ts_curve *c, const int has_lo[3], const double lo[3],
+                               const int has_hi[3], const double hi[3],
+                               ts_interval_report *reports, ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!c || (has_lo && !lo) || (has_hi && !hi))
+        return fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    struct curve_box bx;
+    memset(&bx, 0, sizeof bx);
+    for (size_t k = 0; k < c->dim; k++) {
+        bx.has_lo[k] = has_lo && has_lo[k] != 0;
+        bx.has_hi[k] = has_hi && has_hi[k] != 0;
+        if (bx.has_lo[k]) {
+            bx.lo[k] = lo[k];
+            if (!isfin(lo[k]))
+                return fail(err, TS_ERR_NONFINITE, TS_NO_INDEX, TS_WHERE_NONE);
+        }
+        if (bx.has_hi[k]) {
+            bx.hi[k] = hi[k];
+            if (!isfin(hi[k]))
+                return fail(err, TS_ERR_NONFINITE, TS_NO_INDEX, TS_WHERE_NONE);
+        }
+    }
+    return certify_with(c, &bx, reports, err);
+}
