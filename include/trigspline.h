@@ -49,7 +49,7 @@ typedef enum ts_status {
     TS_ERR_NONFINITE = 5,    /* NaN or ±Inf in x, f, slopes or line coefficients */
     TS_ERR_UNSORTED = 6,     /* x not strictly increasing (unsorted or duplicate); index = i with x[i] <= x[i-1] */
     TS_ERR_ALPHA = 7,        /* alpha <= 0 or not finite; index = interval */
-    TS_ERR_BETA = 8,         /* beta < 0, not finite, or alpha + beta <= 0; index = interval */
+    TS_ERR_BETA = 8,         /* beta < 0 or not finite, or alpha + beta <= 0 or not finite; index = interval */
     TS_ERR_MARGIN = 9,       /* margin t <= 0 or not finite; index = interval */
     TS_ERR_LENGTH = 10,      /* a per-interval / per-point array has the wrong length */
     TS_ERR_OPTION = 11,      /* an enum value out of range, or options that do not fit together */
@@ -194,7 +194,42 @@ typedef enum ts_slopes {
 } ts_slopes;
 #define TS_SLOPES_COUNT_ 8
 
-/* SPEC §5.  Which region the curve must stay in. */
+/*
+ * SPEC §5.  Which region the curve must stay in.  The caller gives alpha and
+ * the margin t; beta_i = t_i + max{0, terms of the §5 rule} (the upper-line
+ * terms with the corrected signs of §5.3), recorded in ts_interval_report.term.
+ * Then every interval is certified (ts_options.certify) and beta_i changed
+ * where the certificate fails (term TS_TERM_CERTIFY).
+ *  - Data checks, first offending point named: TS_ERR_NEGATIVE (f < 0),
+ *    TS_ERR_LINES (lower line not strictly below the upper at a data point;
+ *    checked before TS_ERR_SIDE at the same point), TS_ERR_SIDE (a point on
+ *    or across a line: touching a sloped line cannot be kept), and
+ *    TS_ERR_NONMONOTONE (index = first i such that f[0..i] is not monotone;
+ *    flat runs are allowed).
+ *  - Positive data may contain zeros: there S >= 0 (and S > 0 wherever both
+ *    ends of an interval are > 0).  At a zero knot the slope is set to 0 (at
+ *    the first knot d_0 >= 0, at the last d_n <= 0: clamped; with periodic
+ *    slopes both ends are one knot, d_0 = d_n = 0).  Estimated slopes are
+ *    changed silently (see ts_spline_slopes); user slopes that break this are
+ *    refused with TS_ERR_ZERO_SLOPE (index = the knot).
+ *  - Monotone: slopes of the wrong sign are set to 0, user slopes too (SPEC
+ *    §5.5), and both slopes of a flat interval are 0.  There is no boundary
+ *    line: the certificate is the control polygon's monotonicity, which
+ *    proves S monotone (SPEC (2.1)); the report's gaps are NaN.
+ *  - Lines in the paper and C¹ forms: the rule is not a proof (SPEC §5), so
+ *    a failing interval gets beta_i raised (bisection on a_i) until its
+ *    certificate is positive; if the limit a -> ∞ is not inside either (a
+ *    steep line, close data), the largest certificate over all beta_i >= 0
+ *    is searched (golden section; exact in the paper form, where the gap is
+ *    concave in 1/a) and the smallest certified a taken.  If none exists:
+ *    TS_ERR_INFEASIBLE, index = interval.  (Any scheme also reports it when
+ *    the a needed exceeds 1e307, e.g. a value near the underflow threshold
+ *    next to a slope of order one.)  In the C¹ form an interval's
+ *    curve also depends on its neighbours' a (d̂ of SPEC §3); there a
+ *    neighbour whose larger a caps the shared knot's slope may be lowered
+ *    once, and the error means no beta_i was found with the neighbours as
+ *    they then are.
+ */
 typedef enum ts_shape {
     TS_SHAPE_NONE = 0,      /* beta given by the caller */
     TS_SHAPE_POSITIVE = 1,  /* S >= 0 (S > 0 where all data > 0); Theorem 2 */
@@ -249,7 +284,13 @@ typedef struct ts_options {
     int certify;               /* default 1: exact certificate per interval (SPEC §5), repair if needed.
                                   0 skips the certificate where the scheme is already rigorous
                                   (positive, monotone, geometric form); line schemes in the paper
-                                  and C¹ forms are always certified. */
+                                  and C¹ forms are always certified.  With 0 those schemes are
+                                  still checked through the control values alone (S = Σ A_l B_l,
+                                  A_l >= 0, Σ A_l = 1: positive needs B1, B2 >= 0 and B0, B3 > 0,
+                                  monotone a monotone polygon, geometric lines every
+                                  Y_l − m X_l − c > 0), which is a proof, so the spline is still
+                                  certified (ts_spline_certified = 1); ts_spline_report then
+                                  computes the exact gaps on demand. */
 
     ts_extrap extrapolate;     /* default TS_EXTRAP_ERROR */
 } ts_options;
@@ -338,6 +379,17 @@ typedef struct ts_interval_report {
     double at_upper;
     int certified;          /* every active gap > 0 (with the rounding guard of certify.c) */
 } ts_interval_report;
+/*
+ * The gaps are exact: the minimum of a degree-3 trigonometric polynomial
+ * (minus a linear function) from all its critical points (SPEC §2, §5),
+ * computed in floating point.  "certified" requires gap > guard, a bound on
+ * the rounding of that computation (about 1e-14 of the size of the control
+ * values and the line over the interval; certify.c derives it).  Exceptions:
+ * positive intervals are also certified by B1, B2 >= 0 and B0, B3 > 0, and
+ * an interval with a zero end (positive data with zeros) by all B_l >= 0;
+ * its gap is then 0, attained at the zero knot.  Monotone intervals are
+ * certified by a monotone control polygon and have no gap (NaN).
+ */
 
 /* Report of interval i.  For shape schemes the boundaries are the scheme's
  * (positive: lower = 0); for TS_SHAPE_NONE no boundary (has_* = 0).
