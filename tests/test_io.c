@@ -1,0 +1,1473 @@
+/* Tests of src/io.c (ts_io.h): number conversion, table reader, safe output,
+ * row writer.
+ *
+ * References, none of them the code under test:
+ *  - glibc strtod (correctly rounded) and printf("%.*e") (exact digits);
+ *  - CPython's float() and repr() via tests/data/io_parse_ref.txt and
+ *    io_format_ref.txt (tests/data/io_gen_reference.py; David Gay's dtoa);
+ *  - exact big-integer arithmetic written here for the power-of-ten table
+ *    and for the exact decimal text of halfway points;
+ *  - hand-written expected messages and values (from the format rules in
+ *    ts_io.h and IEEE 754 facts such as 2^53 + 1 rounding to 2^53).
+ * Number conversions are exact, so every comparison is bit for bit (no
+ * tolerance anywhere).  Speeds are printed for information only. */
+#define _POSIX_C_SOURCE 200809L
+
+#include "th.h"
+#include "ts_io.h"
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <float.h>
+#include <signal.h>
+#include <stdint.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define SAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SAN 1
+#endif
+#endif
+#ifndef SAN
+#define SAN 0
+#endif
+/* Sanitized builds are ~10x slower, valgrind ~50x: fewer random cases there. */
+static long scale_div = 1;
+#define SCALE(n) ((n) / scale_div)
+
+#ifndef TS_SOURCE_DIR
+#define TS_SOURCE_DIR "."
+#endif
+
+/* ------------------------------------------------------------------ */
+/* helpers                                                              */
+/* ------------------------------------------------------------------ */
+
+static uint64_t rng_state = 0x9E3779B97F4A7C15u;
+static uint64_t rnd(void) /* xorshift64* */
+{
+    rng_state ^= rng_state >> 12;
+    rng_state ^= rng_state << 25;
+    rng_state ^= rng_state >> 27;
+    return rng_state * 2685821657736338717u;
+}
+static unsigned rndn(unsigned n) { return (unsigned)(rnd() % n); }
+
+static uint64_t bits_of(double d)
+{
+    uint64_t u;
+    memcpy(&u, &d, sizeof u);
+    return u;
+}
+static double of_bits(uint64_t u)
+{
+    double d;
+    memcpy(&d, &u, sizeof d);
+    return d;
+}
+
+static volatile double sink;
+
+static double now(void)
+{
+    struct timespec ts;
+    timespec_get(&ts, TIME_UTC);
+    return (double)ts.tv_sec + (double)ts.tv_nsec * 1e-9;
+}
+
+/* Canonical form of a decimal text: significant digits (no leading or
+ * trailing zeros) and the exponent of the last digit.  "0" -> "", 0. */
+static void canon(const char *s, char *dig, long *e)
+{
+    long frac = 0, ex = 0;
+    int point = 0;
+    size_t n = 0;
+    const char *p = s;
+    if (*p == '-' || *p == '+')
+        p++;
+    for (; *p && *p != 'e' && *p != 'E'; p++) {
+        if (*p == '.') {
+            point = 1;
+            continue;
+        }
+        if (point)
+            frac++;
+        if (n == 0 && *p == '0')
+            continue;
+        dig[n++] = *p;
+    }
+    if (*p)
+        ex = strtol(p + 1, NULL, 10);
+    ex -= frac;
+    while (n > 0 && dig[n - 1] == '0') {
+        n--;
+        ex++;
+    }
+    dig[n] = 0;
+    *e = n ? ex : 0;
+}
+
+/* ------------------------------------------------------------------ */
+/* a tiny exact big integer (base 2^32), separate from io.c's           */
+/* ------------------------------------------------------------------ */
+
+#define TB 80
+typedef struct {
+    uint32_t d[TB];
+} tbig; /* fixed length, little-endian */
+
+static void tb_set(tbig *a, uint64_t hi, uint64_t lo)
+{
+    memset(a, 0, sizeof *a);
+    a->d[0] = (uint32_t)lo;
+    a->d[1] = (uint32_t)(lo >> 32);
+    a->d[2] = (uint32_t)hi;
+    a->d[3] = (uint32_t)(hi >> 32);
+}
+static void tb_mul(tbig *a, uint32_t m)
+{
+    uint64_t c = 0;
+    for (int i = 0; i < TB; i++) {
+        uint64_t t = (uint64_t)a->d[i] * m + c;
+        a->d[i] = (uint32_t)t;
+        c = t >> 32;
+    }
+}
+static void tb_pow10(tbig *a, int k)
+{
+    for (int i = 0; i < k; i++)
+        tb_mul(a, 10);
+}
+static void tb_shl(tbig *a, int k)
+{
+    for (int i = 0; i < k; i++) {
+        uint32_t c = 0;
+        for (int j = 0; j < TB; j++) {
+            uint32_t nc = a->d[j] >> 31;
+            a->d[j] = (a->d[j] << 1) | c;
+            c = nc;
+        }
+    }
+}
+static int tb_cmp(const tbig *a, const tbig *b)
+{
+    for (int i = TB - 1; i >= 0; i--)
+        if (a->d[i] != b->d[i])
+            return a->d[i] < b->d[i] ? -1 : 1;
+    return 0;
+}
+
+/* Table entry a: T·2^s <= 10^(27a) < (T+1)·2^s, equality iff exact. */
+static void test_pow10_table(void)
+{
+    for (int a = -13; a <= 12; a++) {
+        unsigned long long hi, lo;
+        int s, ex, k = 27 * a;
+        tbig L, R, T1, X;
+        CHECK(ts_io__pow10_entry(a, &hi, &lo, &s, &ex) == 0);
+        CHECK(hi >> 63 == 1); /* normalised: 2^127 <= T */
+        /* compare T·2^s with 10^k, both sides made integers */
+        tb_set(&L, hi, lo);
+        tb_set(&T1, lo == UINT64_MAX ? hi + 1 : hi, lo + 1);
+        memset(&X, 0, sizeof X);
+        X.d[0] = 1;
+        if (k >= 0)
+            tb_pow10(&X, k);
+        if (k < 0) { /* T·10^-k vs 2^-s */
+            tb_pow10(&L, -k);
+            tb_pow10(&T1, -k);
+        }
+        if (s >= 0) {
+            tb_shl(&L, s);
+            tb_shl(&T1, s);
+        } else {
+            tb_shl(&X, -s);
+        }
+        R = X;
+        CHECKF(tb_cmp(&L, &R) <= 0 && tb_cmp(&R, &T1) < 0, "pow10 entry %d", a);
+        CHECKF((tb_cmp(&L, &R) == 0) == (ex == 1), "pow10 entry %d exact flag", a);
+    }
+    CHECK(ts_io__pow10_entry(13, NULL, NULL, NULL, NULL) == -1);
+    CHECK(ts_io__pow10_entry(-14, NULL, NULL, NULL, NULL) == -1);
+}
+
+/* ------------------------------------------------------------------ */
+/* exact decimal text of M·2^Q (base 1e9 digits)                        */
+/* ------------------------------------------------------------------ */
+
+#define DB 160 /* 1440 decimal digits */
+/* Writes the integer digits D with M·2^Q = D·10^*e10 into out. */
+static void exact_decimal(uint64_t M, int Q, char *out, int *e10)
+{
+    uint32_t d[DB];
+    int n = 0, i;
+    memset(d, 0, sizeof d);
+    while (M) {
+        d[n++] = (uint32_t)(M % 1000000000u);
+        M /= 1000000000u;
+    }
+    for (int r = Q >= 0 ? Q : -Q; r > 0;) { /* ·2^Q or ·5^-Q, up to 2^29 or 5^13 at a time */
+        int step = Q >= 0 ? (r < 29 ? r : 29) : (r < 13 ? r : 13);
+        uint64_t mul = 1, c = 0;
+        for (int j = 0; j < step; j++)
+            mul *= Q >= 0 ? 2u : 5u;
+        for (i = 0; i < n; i++) {
+            uint64_t t = (uint64_t)d[i] * mul + c; /* < 1e9 · 1.3e9 + 2e9 */
+            d[i] = (uint32_t)(t % 1000000000u);
+            c = t / 1000000000u;
+        }
+        while (c) {
+            d[n++] = (uint32_t)(c % 1000000000u);
+            c /= 1000000000u;
+        }
+        r -= step;
+    }
+    *e10 = Q >= 0 ? 0 : Q;
+    i = sprintf(out, "%u", d[n - 1]);
+    for (int j = n - 2; j >= 0; j--)
+        i += sprintf(out + i, "%09u", d[j]);
+}
+
+/* ------------------------------------------------------------------ */
+/* ts_format_double                                                     */
+/* ------------------------------------------------------------------ */
+
+static void test_format_known(void)
+{
+    /* expected: the layout rules of ts_io.h with the shortest digits
+     * (which are those of Python's repr for these values) */
+    static const struct {
+        double v;
+        const char *s;
+    } T[] = {
+        {0.1, "0.1"},
+        {1e-300, "1e-300"},
+        {-2.5, "-2.5"},
+        {123456789.0, "123456789"},
+        {100.0, "100"},
+        {1e16, "10000000000000000"},
+        {1e17, "1e+17"},
+        {1.5e17, "1.5e+17"},
+        {5e-324, "5e-324"},
+        {DBL_MAX, "1.7976931348623157e+308"},
+        {-DBL_MAX, "-1.7976931348623157e+308"},
+        {DBL_MIN, "2.2250738585072014e-308"},
+        {0.30000000000000004, "0.30000000000000004"},
+        {1e-5, "1e-05"},
+        {1e-4, "0.0001"},
+        {0.000123, "0.000123"},
+        {1.2345e-5, "1.2345e-05"},
+        {1e23, "1e+23"},
+        {1e22, "1e+22"},
+        {9007199254740993.0, "9007199254740992"}, /* 2^53 + 1 rounds to 2^53 */
+        {9223372036854775808.0, "9.223372036854776e+18"},
+        {12345678901234567.0, "12345678901234568"},
+        {123.456, "123.456"},
+        {1.5e300, "1.5e+300"},
+        {0.0, "0"},
+        {-0.0, "-0"},
+        {1.0, "1"},
+        {-1.0, "-1"},
+        {2.0, "2"},
+        {0.5, "0.5"},
+        {3.0e-310, "3e-310"},
+        {2.2250738585072009e-308, "2.225073858507201e-308"}, /* largest subnormal */
+        {4.9406564584124654e-323, "5e-323"},
+        {1e100, "1e+100"},
+        {5e-05, "5e-05"},
+        {1234567890123456.7, "1234567890123456.8"},
+        {0.1 + 0.7, "0.7999999999999999"},
+        {1.0 / 3.0, "0.3333333333333333"},
+        {2.0 / 3.0, "0.6666666666666666"},
+        {100000.0, "100000"},
+        {1e15, "1000000000000000"},
+    };
+    char buf[TS_FMT_SIZE];
+    for (size_t i = 0; i < sizeof T / sizeof *T; i++) {
+        size_t n = ts_format_double(T[i].v, buf);
+        CHECKF(strcmp(buf, T[i].s) == 0 && n == strlen(T[i].s), "format %.17g: got %s, want %s",
+               T[i].v, buf, T[i].s);
+    }
+    CHECK(ts_format_double(NAN, buf) == 3 && strcmp(buf, "nan") == 0);
+    CHECK(ts_format_double(-(double)NAN, buf) == 3 && strcmp(buf, "nan") == 0);
+    CHECK(ts_format_double(HUGE_VAL, buf) == 3 && strcmp(buf, "inf") == 0);
+    CHECK(ts_format_double(-HUGE_VAL, buf) == 4 && strcmp(buf, "-inf") == 0);
+}
+
+/* Every line of io_format_ref.txt: same digits and exponent as Python's repr. */
+static void test_format_python(void)
+{
+    FILE *f = fopen(TS_SOURCE_DIR "/tests/data/io_format_ref.txt", "r");
+    char line[200], want[64], buf[TS_FMT_SIZE], d1[40], d2[40];
+    long n = 0, bad = 0, e1, e2;
+    CHECKF(f != NULL, "cannot open io_format_ref.txt");
+    if (!f)
+        return;
+    while (fgets(line, sizeof line, f)) {
+        unsigned long long u;
+        if (sscanf(line, "%llx %63s", &u, want) != 2)
+            continue;
+        n++;
+        ts_format_double(of_bits((uint64_t)u), buf);
+        canon(buf, d1, &e1);
+        canon(want, d2, &e2);
+        if (strcmp(d1, d2) != 0 || e1 != e2) {
+            if (bad++ < 5)
+                fprintf(stderr, "format %016llx: got %s, python %s\n", u, buf, want);
+        }
+    }
+    fclose(f);
+    CHECKF(n > 2000, "only %ld reference lines", n);
+    CHECKF(bad == 0, "%ld of %ld differ from Python repr", bad, n);
+}
+
+/* A random finite double of one of several kinds. */
+static double random_double(int kind)
+{
+    uint64_t u;
+    double d;
+    switch (kind) {
+    case 0: /* any bit pattern */
+        do
+            u = rnd();
+        while (((u >> 52) & 0x7ff) == 0x7ff);
+        return of_bits(u);
+    case 1: /* subnormal */
+        return of_bits((rnd() & ((UINT64_C(1) << 52) - 1)) | (rnd() & (UINT64_C(1) << 63)));
+    case 2: /* power of two or a neighbour */
+        u = (uint64_t)(1 + rndn(2046)) << 52;
+        u += (uint64_t)rndn(3);
+        u -= (uint64_t)rndn(2) * 2;
+        return of_bits(u);
+    case 3: /* log-uniform in [1e-5, 1e10] */
+        return pow(10.0, -5.0 + 15.0 * (double)(rnd() >> 11) * 0x1p-53);
+    case 4: { /* a short decimal, as data often are */
+        char s[40];
+        snprintf(s, sizeof s, "%u.%0*ue%d", rndn(100000), (int)(1 + rndn(6)), rndn(1000000),
+                 (int)rndn(41) - 20);
+        return strtod(s, NULL);
+    }
+    case 5: /* integers */
+        return (double)(rnd() >> rndn(64));
+    default: /* near the extremes */
+        d = rndn(2) ? DBL_MAX : DBL_MIN;
+        u = bits_of(d) - rndn(1000);
+        return of_bits(u);
+    }
+}
+
+/* Round trip through glibc strtod and through ts_parse_double, ~2e6 values. */
+static void test_format_roundtrip(void)
+{
+    long n = SCALE(2000000), bad_c = 0, bad_p = 0, bad_len = 0;
+    char buf[TS_FMT_SIZE];
+    double t0, tf = 0.0, tp = 0.0;
+    static double vals[4096];
+    static char strs[4096][TS_FMT_SIZE];
+    for (long i = 0; i < n; i += 4096) {
+        int m = 4096;
+        for (int j = 0; j < m; j++)
+            vals[j] = random_double((int)(((unsigned long)i / 4096 + (unsigned)j) % 7));
+        t0 = now();
+        for (int j = 0; j < m; j++)
+            ts_format_double(vals[j], strs[j]);
+        tf += now() - t0;
+        t0 = now();
+        for (int j = 0; j < m; j++) {
+            double g;
+            const char *stop;
+            if (ts_parse_double(strs[j], NULL, &g, &stop) != TS_NUM_OK || *stop ||
+                bits_of(g) != bits_of(vals[j])) {
+                if (bad_p++ < 5)
+                    fprintf(stderr, "parse back %s -> %a, want %a\n", strs[j], g, vals[j]);
+            }
+        }
+        tp += now() - t0;
+        for (int j = 0; j < m; j++) {
+            double c = strtod(strs[j], NULL);
+            if (bits_of(c) != bits_of(vals[j]) && bad_c++ < 5)
+                fprintf(stderr, "strtod(%s) = %a, want %a\n", strs[j], c, vals[j]);
+            if (strlen(strs[j]) > 24)
+                bad_len++;
+        }
+    }
+    CHECKF(bad_c == 0, "%ld of %ld formatted values do not round-trip through strtod", bad_c, n);
+    CHECKF(bad_p == 0, "%ld of %ld do not round-trip through ts_parse_double", bad_p, n);
+    CHECK(bad_len == 0);
+    printf("speed: ts_format_double %.1f M/s, ts_parse_double (its output) %.1f M/s\n",
+           (double)n / tf * 1e-6, (double)n / tp * 1e-6);
+    /* the same values with the library */
+    t0 = now();
+    for (int j = 0; j < 4096 * 25; j++)
+        snprintf(buf, sizeof buf, "%.17g", vals[j % 4096]);
+    tf = now() - t0;
+    t0 = now();
+    for (int j = 0; j < 4096 * 25; j++)
+        sink = strtod(strs[j % 4096], NULL);
+    tp = now() - t0;
+    printf("speed: for comparison snprintf %%.17g %.1f M/s, strtod %.1f M/s\n",
+           4096 * 25 / tf * 1e-6, 4096 * 25 / tp * 1e-6);
+}
+
+/* Shortest: no decimal with fewer digits round-trips (its nearest and both
+ * neighbours at one digit less are checked with snprintf + strtod), and at
+ * the length of the shortest %.Ne that round-trips the digits are the same. */
+static void test_format_shortest(void)
+{
+    long n = SCALE(100000), bad_short = 0, bad_min = 0, bad_same = 0;
+    char buf[TS_FMT_SIZE], ref[40], d1[40], d2[40];
+    for (long i = 0; i < n; i++) {
+        double v = fabs(random_double((int)(i % 7)));
+        long e1, e2;
+        int nref = 17, nd;
+        if (v == 0)
+            continue;
+        ts_format_double(v, buf);
+        canon(buf, d1, &e1);
+        nd = (int)strlen(d1);
+        for (int p = 1; p <= 17; p++) {
+            snprintf(ref, sizeof ref, "%.*e", p - 1, v);
+            if (strtod(ref, NULL) == v) {
+                nref = p;
+                break;
+            }
+        }
+        snprintf(ref, sizeof ref, "%.*e", nref - 1, v);
+        canon(ref, d2, &e2);
+        if (nd > nref && bad_short++ < 5)
+            fprintf(stderr, "%a: %s longer than %s\n", v, buf, ref);
+        if (nd == nref && (strcmp(d1, d2) != 0 || e1 != e2) && bad_same++ < 5)
+            fprintf(stderr, "%a: %s, printf %s\n", v, buf, ref);
+        if (nd >= 2) { /* nothing with nd - 1 digits: nearest, and one unit either side */
+            char c[40], *mant;
+            long ex;
+            snprintf(c, sizeof c, "%.*e", nd - 2, v);
+            mant = c;
+            ex = strtol(strchr(c, 'e') + 1, NULL, 10);
+            {
+                char digs[40];
+                size_t k = 0;
+                unsigned long long x;
+                for (const char *p = mant; *p != 'e'; p++)
+                    if (*p != '.')
+                        digs[k++] = *p;
+                digs[k] = 0;
+                x = strtoull(digs, NULL, 10);
+                for (int dlt = -1; dlt <= 2; dlt++) {
+                    char t[60];
+                    if (dlt < 2)
+                        snprintf(t, sizeof t, "%llue%ld", x + (unsigned long long)(long long)dlt,
+                                 ex - (long)(k - 1));
+                    else if (digs[0] == '1' && strspn(digs + 1, "0") == k - 1) /* decade below */
+                        snprintf(t, sizeof t, "%.*se%ld", (int)k, "99999999999999999", ex - (long)k);
+                    else
+                        continue;
+                    if (strtod(t, NULL) == v && bad_min++ < 5)
+                        fprintf(stderr, "%a: %s has %d digits but %s round-trips\n", v, buf, nd, t);
+                }
+            }
+        }
+    }
+    CHECKF(bad_short == 0, "%ld longer than the shortest %%.Ne", bad_short);
+    CHECKF(bad_same == 0, "%ld differ from the shortest %%.Ne of the same length", bad_same);
+    CHECKF(bad_min == 0, "%ld not minimal", bad_min);
+}
+
+/* ------------------------------------------------------------------ */
+/* ts_parse_double                                                      */
+/* ------------------------------------------------------------------ */
+
+/* Compare ts_parse_double with strtod on s (whole string must be consumed). */
+static int parse_agrees(const char *s)
+{
+    double g, c = strtod(s, NULL);
+    const char *stop;
+    ts_num_status st = ts_parse_double(s, NULL, &g, &stop);
+    if (isinf(c))
+        return st == TS_NUM_RANGE && *stop == 0 && g == c;
+    return st == TS_NUM_OK && *stop == 0 && bits_of(g) == bits_of(c);
+}
+
+static void random_decimal(char *s)
+{
+    static const int lens[] = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 12, 14, 15, 16, 16, 17, 17, 17,
+                               18, 18, 19, 19, 20, 20, 21, 22, 25, 30, 40, 60, 120};
+    int nd = lens[rndn(sizeof lens / sizeof *lens)], k = 0, pt = -1, i, intd, x;
+    unsigned r = rndn(100);
+    if (r < 25)
+        s[k++] = '-';
+    else if (r < 30)
+        s[k++] = '+';
+    if (rndn(10) == 0)
+        for (i = (int)rndn(3); i >= 0; i--)
+            s[k++] = '0';
+    if (rndn(10) < 6)
+        pt = (int)rndn((unsigned)nd + 1);
+    if (pt == 0 && rndn(2))
+        s[k++] = '0';
+    for (i = 0; i < nd; i++) {
+        if (i == pt)
+            s[k++] = '.';
+        s[k++] = (char)('0' + (i == 0 ? 1 + rndn(9) : rndn(10)));
+    }
+    if (pt == nd)
+        s[k++] = '.';
+    intd = pt < 0 ? nd : pt;
+    if (rndn(10) < 8) {
+        x = (int)rndn(660) - 345; /* decimal exponent of the first digit */
+        if (rndn(20) == 0)
+            x = rndn(2) ? 308 + (int)rndn(3) : -324 - (int)rndn(3);
+        k += sprintf(s + k, "%c%d", rndn(2) ? 'e' : 'E', x - (intd - 1));
+    }
+    s[k] = 0;
+}
+
+static void test_parse_random(void)
+{
+    long n = SCALE(1000000), bad = 0;
+    char s[300];
+    for (long i = 0; i < n; i++) {
+        random_decimal(s);
+        if (!parse_agrees(s) && bad++ < 5) {
+            double g;
+            ts_parse_double(s, NULL, &g, NULL);
+            fprintf(stderr, "parse %s: %a, strtod %a\n", s, g, strtod(s, NULL));
+        }
+    }
+    CHECKF(bad == 0, "%ld of %ld random decimals differ from strtod", bad, n);
+}
+
+/* Halfway points between neighbouring doubles, exactly, and just off. */
+static void test_parse_halfway(void)
+{
+    long n = SCALE(20000), bad = 0, cnt = 0;
+    static char D[1500], s[1600];
+    for (long i = 0; i < n; i++) {
+        uint64_t u = rndn(8) == 0 ? rnd() & ((UINT64_C(1) << 52) - 1) : rnd() & ~(UINT64_C(1) << 63);
+        uint64_t m;
+        int q, e10, len;
+        if ((u >> 52) >= 0x7fe)
+            u = (u & ((UINT64_C(1) << 52) - 1)) | ((uint64_t)rndn(0x7fe) << 52);
+        if (i % 4 == 0) /* moderate exponents: shorter halfway texts */
+            u = (u & ((UINT64_C(1) << 52) - 1)) | ((uint64_t)(1023 - 70 + rndn(140)) << 52);
+        q = (int)(u >> 52) == 0 ? -1074 : (int)(u >> 52) - 1075;
+        m = (u & ((UINT64_C(1) << 52) - 1)) | ((u >> 52) ? UINT64_C(1) << 52 : 0);
+        exact_decimal(2 * m + 1, q - 1, D, &e10); /* (m + 1/2)·2^q */
+        len = (int)strlen(D);
+        sprintf(s, "%se%d", D, e10); /* exact: ties to even */
+        cnt++;
+        if (!parse_agrees(s) && bad++ < 5)
+            fprintf(stderr, "halfway %.60s... (%d digits)\n", s, len);
+        sprintf(s, "%s1e%d", D, e10 - 1); /* a hair above */
+        cnt++;
+        if (!parse_agrees(s) && bad++ < 5)
+            fprintf(stderr, "above halfway %.60s...\n", s);
+        if (len > 1) { /* below: the first 1..len-1 digits */
+            int t = 1 + (int)rndn((unsigned)len - 1);
+            if (rndn(2)) /* around the 19 digits kept exactly */
+                t = 17 + (int)rndn(6);
+            if (t > len - 1)
+                t = len - 1;
+            sprintf(s, "%.*se%d", t, D, e10 + (len - t));
+            cnt++;
+            if (!parse_agrees(s) && bad++ < 5)
+                fprintf(stderr, "below halfway %.60s...\n", s);
+            /* the same with a decimal point after the first digit */
+            sprintf(s, "%c.%se%d", D[0], D + 1, e10 + len - 1);
+            cnt++;
+            if (!parse_agrees(s) && bad++ < 5)
+                fprintf(stderr, "halfway (point) %.60s...\n", s);
+        }
+    }
+    CHECKF(bad == 0, "%ld of %ld halfway texts differ from strtod", bad, cnt);
+}
+
+static void test_parse_python(void)
+{
+    FILE *f = fopen(TS_SOURCE_DIR "/tests/data/io_parse_ref.txt", "r");
+    static char line[4096];
+    long n = 0, bad = 0;
+    CHECKF(f != NULL, "cannot open io_parse_ref.txt");
+    if (!f)
+        return;
+    while (fgets(line, sizeof line, f)) {
+        char *sp = strchr(line, ' ');
+        double g;
+        const char *stop;
+        ts_num_status st;
+        int ok;
+        if (!sp)
+            continue;
+        *sp = 0;
+        sp++;
+        sp[strcspn(sp, "\n")] = 0;
+        n++;
+        st = ts_parse_double(line, NULL, &g, &stop);
+        if (strcmp(sp, "inf") == 0)
+            ok = st == TS_NUM_RANGE && g == HUGE_VAL;
+        else if (strcmp(sp, "-inf") == 0)
+            ok = st == TS_NUM_RANGE && g == -HUGE_VAL;
+        else
+            ok = st == TS_NUM_OK && *stop == 0 && bits_of(g) == strtoull(sp, NULL, 16);
+        if (!ok && bad++ < 5)
+            fprintf(stderr, "python ref %.60s: got %a (status %d), want %s\n", line, g, st, sp);
+    }
+    fclose(f);
+    CHECKF(n > 1900, "only %ld reference lines", n);
+    CHECKF(bad == 0, "%ld of %ld differ from Python float()", bad, n);
+}
+
+static void test_parse_cases(void)
+{
+    static const struct {
+        const char *s;
+        ts_num_status st;
+        int stop;
+        double v;
+    } T[] = {
+        {"abc", TS_NUM_SYNTAX, 0, 0},
+        {"", TS_NUM_SYNTAX, 0, 0},
+        {"-", TS_NUM_SYNTAX, 1, 0},
+        {"+", TS_NUM_SYNTAX, 1, 0},
+        {".", TS_NUM_SYNTAX, 1, 0},
+        {"-.e5", TS_NUM_SYNTAX, 2, 0},
+        {"-x", TS_NUM_SYNTAX, 1, 0},
+        {" 1", TS_NUM_SYNTAX, 0, 0},
+        {"e5", TS_NUM_SYNTAX, 0, 0},
+        {"n", TS_NUM_SYNTAX, 0, 0},
+        {"in", TS_NUM_SYNTAX, 0, 0},
+        {"1e", TS_NUM_OK, 1, 1.0},
+        {"1e+", TS_NUM_OK, 1, 1.0},
+        {"1.5e-3x", TS_NUM_OK, 6, 1.5e-3},
+        {"0x1p3", TS_NUM_OK, 1, 0.0},
+        {"1_000", TS_NUM_OK, 1, 1.0},
+        {"1,5", TS_NUM_OK, 1, 1.0},
+        {".5", TS_NUM_OK, 2, 0.5},
+        {"5.", TS_NUM_OK, 2, 5.0},
+        {"+.5e1", TS_NUM_OK, 5, 5.0},
+        {"00012", TS_NUM_OK, 5, 12.0},
+        {"0.000", TS_NUM_OK, 5, 0.0},
+        {"1E+05", TS_NUM_OK, 5, 1e5},
+        {"1e0000000000000000000000000005", TS_NUM_OK, 30, 1e5},
+        {"1e99999999999999999999", TS_NUM_RANGE, 22, HUGE_VAL},
+        {"-1e99999999999999999999", TS_NUM_RANGE, 23, -HUGE_VAL},
+        {"1e-99999999999999", TS_NUM_OK, 17, 0.0},
+        {"0e999999", TS_NUM_OK, 8, 0.0},
+        {"1e400", TS_NUM_RANGE, 5, HUGE_VAL},
+        {"1.8e308", TS_NUM_RANGE, 7, HUGE_VAL},
+        {"1e-400", TS_NUM_OK, 6, 0.0},
+        {"nan", TS_NUM_NONFINITE, 3, NAN},
+        {"-NaN", TS_NUM_NONFINITE, 4, NAN},
+        {"nan(123)", TS_NUM_NONFINITE, 3, NAN},
+        {"nano", TS_NUM_NONFINITE, 3, NAN},
+        {"inf", TS_NUM_NONFINITE, 3, HUGE_VAL},
+        {"-Inf", TS_NUM_NONFINITE, 4, -HUGE_VAL},
+        {"INFINITY", TS_NUM_NONFINITE, 8, HUGE_VAL},
+        {"infinit", TS_NUM_NONFINITE, 3, HUGE_VAL},
+        {"9007199254740993", TS_NUM_OK, 16, 9007199254740992.0},
+        {"9007199254740995", TS_NUM_OK, 16, 9007199254740996.0},
+        {"0.1", TS_NUM_OK, 3, 0.1},
+        {"123456789012345678901234567890", TS_NUM_OK, 30, 1.2345678901234568e29},
+    };
+    for (size_t i = 0; i < sizeof T / sizeof *T; i++) {
+        double g = -7;
+        const char *stop = NULL;
+        ts_num_status st = ts_parse_double(T[i].s, NULL, &g, &stop);
+        int vok = isnan(T[i].v) ? isnan(g) : bits_of(g) == bits_of(T[i].v);
+        CHECKF(st == T[i].st && stop == T[i].s + T[i].stop && vok,
+               "parse \"%s\": status %d stop %d value %a (want %d %d %a)", T[i].s, st,
+               (int)(stop - T[i].s), g, T[i].st, T[i].stop, T[i].v);
+    }
+    {
+        double g = 1;
+        const char *stop = NULL;
+        const char *s = "12345";
+        CHECK(ts_parse_double(s, s + 3, &g, &stop) == TS_NUM_OK && g == 123.0 && stop == s + 3);
+        CHECK(ts_parse_double(s, s, &g, &stop) == TS_NUM_SYNTAX && stop == s && g == 0.0);
+        CHECK(ts_parse_double("-0", NULL, &g, NULL) == TS_NUM_OK && g == 0.0 && signbit(g));
+        CHECK(ts_parse_double("-0.0e-999", NULL, &g, NULL) == TS_NUM_OK && g == 0.0 && signbit(g));
+        CHECK(ts_parse_double("-1e-400", NULL, &g, NULL) == TS_NUM_OK && g == 0.0 && signbit(g));
+        CHECK(ts_parse_double(NULL, NULL, &g, &stop) == TS_NUM_SYNTAX && stop == NULL);
+        CHECK(ts_parse_double("2.5", NULL, NULL, NULL) == TS_NUM_OK);
+        /* 1 + 2^-53 exactly (halfway: ties to 1), then with 900 zeros and a 1
+         * (just above: 1 + 2^-52); > 19 digits whose truncations disagree go to
+         * strtod through a copy of at most 800 digits plus one sticky digit */
+        {
+            static char h[1100];
+            const char *half = "1.00000000000000011102230246251565404236316680908203125";
+            strcpy(h, half);
+            CHECK(ts_parse_double(h, NULL, &g, NULL) == TS_NUM_OK && g == 1.0 && parse_agrees(h));
+            memset(h + strlen(half), '0', 900);
+            h[strlen(half) + 900] = 0;
+            CHECK(ts_parse_double(h, NULL, &g, NULL) == TS_NUM_OK && g == 1.0 && parse_agrees(h));
+            strcat(h, "1");
+            CHECK(ts_parse_double(h, NULL, &g, NULL) == TS_NUM_OK && g == 1.0 + 0x1p-52 &&
+                  parse_agrees(h));
+            strcat(h, "e-5"); /* with an exponent too */
+            CHECK(parse_agrees(h));
+            memmove(h + 1, h, strlen(h) + 1);
+            h[0] = '-';
+            CHECK(ts_parse_double(h, NULL, &g, NULL) == TS_NUM_OK && g < 0 && parse_agrees(h));
+        }
+        /* a digit string longer than the strtod fallback's 800-digit copy */
+        {
+            static char big[3000];
+            memset(big, '0', sizeof big - 1);
+            big[0] = '4';
+            big[1] = '.';
+            big[2999] = 0;
+            big[2998] = '1';
+            CHECK(parse_agrees(big));
+            memcpy(big + 2990, "e-308", 6);
+            CHECK(parse_agrees(big));
+        }
+    }
+}
+
+/* ------------------------------------------------------------------ */
+/* reader                                                               */
+/* ------------------------------------------------------------------ */
+
+static FILE *mem_file(const char *text, size_t len)
+{
+    FILE *f = tmpfile();
+    if (!f)
+        return NULL;
+    if (len)
+        fwrite(text, 1, len, f);
+    rewind(f);
+    return f;
+}
+
+/* Read text as a table; returns the status, message in e. */
+static ts_io_status read_text(const char *text, size_t len, const ts_read_options *opt,
+                              ts_table *t, ts_io_error *e)
+{
+    FILE *f = mem_file(text, len);
+    ts_io_status st;
+    if (!f)
+        return TS_IO_ERR_READ;
+    st = ts_read_table(f, "t.csv", opt, t, e);
+    fclose(f);
+    return st;
+}
+
+#define RT(text, opt, t, e) read_text(text, sizeof(text) - 1, opt, t, e)
+
+static void expect_error(const char *text, size_t len, const ts_read_options *opt,
+                         ts_io_status want, const char *msg, unsigned long long line, size_t col)
+{
+    ts_table t;
+    ts_io_error e;
+    ts_io_status st = read_text(text, len, opt, &t, &e);
+    CHECKF(st == want && e.status == want && strcmp(e.msg, msg) == 0 && e.line == line &&
+               e.column == col && t.cols == NULL && t.nrows == 0,
+           "input \"%.40s\": status %d, msg '%s' line %llu col %zu; want %d '%s' %llu %zu", text,
+           st, e.msg, e.line, e.column, want, msg, line, col);
+    /* the streaming reader gives the same error */
+    {
+        FILE *f = mem_file(text, len);
+        ts_reader *r;
+        const double *row;
+        ts_io_error e2;
+        ts_io_status s2 = TS_IO_OK;
+        if (f && ts_reader_open(&r, f, "t.csv", opt, &e2) == TS_IO_OK) {
+            while ((s2 = ts_reader_next(r, &row, &e2)) == TS_IO_OK)
+                ;
+            CHECKF(s2 == want && strcmp(e2.msg, msg) == 0, "streaming: %s", e2.msg);
+            /* sticky */
+            CHECK(ts_reader_next(r, &row, &e2) == want && strcmp(e2.msg, msg) == 0 && row == NULL);
+            ts_reader_free(r);
+        }
+        if (f)
+            fclose(f);
+    }
+}
+#define EXPECT_ERR(text, opt, want, msg, line, col) \
+    expect_error(text, sizeof(text) - 1, opt, want, msg, line, col)
+
+static void test_reader_valid(void)
+{
+    ts_table t;
+    ts_io_error e;
+    ts_read_options o;
+
+    /* CSV: comments, blank lines, CRLF, spaces, header, no final newline */
+    CHECK(RT("# comment\r\n\r\nx, y\r\n1,2\r\n  3 , 4 # c\r\n   \r\n# x\n5,6e1", NULL, &t, &e) ==
+          TS_IO_OK);
+    CHECK(t.nrows == 3 && t.ncols == 2 && t.names && strcmp(t.names[0], "x") == 0 &&
+          strcmp(t.names[1], "y") == 0);
+    if (t.nrows == 3) {
+        CHECK(t.cols[0][0] == 1 && t.cols[1][0] == 2 && t.cols[0][1] == 3 && t.cols[1][1] == 4 &&
+              t.cols[0][2] == 5 && t.cols[1][2] == 60);
+        CHECK(t.lines && t.lines[0] == 4 && t.lines[1] == 5 && t.lines[2] == 8);
+    }
+    ts_table_free(&t);
+    CHECK(t.cols == NULL && t.names == NULL && t.nrows == 0);
+
+    /* TSV with names containing spaces and parentheses */
+    CHECK(RT("time s\tf(t)\n0\t1.5\n 1 \t-2\n", NULL, &t, &e) == TS_IO_OK);
+    CHECK(t.nrows == 2 && t.ncols == 2 && strcmp(t.names[0], "time s") == 0 &&
+          strcmp(t.names[1], "f(t)") == 0 && t.cols[1][1] == -2);
+    ts_table_free(&t);
+
+    /* white space, mixed spaces and tabs, three columns, no header */
+    CHECK(RT("  1   2 3\n4\t5  \t6\n", NULL, &t, &e) == TS_IO_OK);
+    CHECK(t.nrows == 2 && t.ncols == 3 && t.names == NULL && t.cols[2][1] == 6 && t.cols[0][1] == 4);
+    ts_table_free(&t);
+
+    /* byte-order mark, quoted header names, one column */
+    CHECK(RT("\xef\xbb\xbf\"time, s\",\"val\"\"x\"\n1,2\n", NULL, &t, &e) == TS_IO_OK);
+    CHECK(t.ncols == 2 && strcmp(t.names[0], "time, s") == 0 && strcmp(t.names[1], "val\"x") == 0);
+    ts_table_free(&t);
+    CHECK(RT("v\n1\n2\n3", NULL, &t, &e) == TS_IO_OK && t.ncols == 1 && t.nrows == 3 &&
+          t.cols[0][2] == 3);
+    ts_table_free(&t);
+
+    /* TS_HEADER_YES takes a numeric line as names; track_lines = 0 */
+    ts_read_options_init(&o);
+    o.header = TS_HEADER_YES;
+    o.track_lines = 0;
+    CHECK(RT("1,2\n3,4\n", &o, &t, &e) == TS_IO_OK && t.nrows == 1 && strcmp(t.names[1], "2") == 0 &&
+          t.lines == NULL);
+    ts_table_free(&t);
+
+    /* explicit delimiter: tab given, commas would be errors; explicit ncols */
+    ts_read_options_init(&o);
+    o.delim = TS_DELIM_SPACE;
+    o.ncols = 2;
+    CHECK(RT("1\t2\n3 4\n", &o, &t, &e) == TS_IO_OK && t.nrows == 2);
+    ts_table_free(&t);
+
+    /* "nan,1" is data (nan counts as a number for the header rule); "x,nan" a header */
+    CHECK(RT("nan,1\n1,2\n", NULL, &t, &e) == TS_IO_ERR_NONFINITE);
+    CHECK(strcmp(e.msg, "t.csv:1:1: not a finite number: \"nan\"") == 0);
+    CHECK(RT("x,nan\n1,2\n", NULL, &t, &e) == TS_IO_OK && strcmp(t.names[1], "nan") == 0);
+    ts_table_free(&t);
+
+    /* the reader's accessors */
+    {
+        FILE *f = mem_file("a b\n1 2\n\n3 4\n", 13);
+        ts_reader *r;
+        const double *row;
+        CHECK(ts_reader_open(&r, f, NULL, NULL, &e) == TS_IO_OK);
+        CHECK(ts_reader_next(r, &row, &e) == TS_IO_OK && row[0] == 1 && ts_reader_line(r) == 2);
+        CHECK(ts_reader_ncols(r) == 2 && ts_reader_nnames(r) == 2 &&
+              strcmp(ts_reader_name(r, 1), "b") == 0 && ts_reader_name(r, 2) == NULL);
+        CHECK(strcmp(ts_reader_source(r), "<input>") == 0 && ts_reader_delim(r) == TS_DELIM_SPACE);
+        CHECK(ts_reader_next(r, &row, &e) == TS_IO_OK && row[1] == 4 && ts_reader_line(r) == 4);
+        CHECK(ts_reader_next(r, &row, &e) == TS_IO_END && row == NULL && ts_reader_rows(r) == 2);
+        CHECK(ts_reader_next(r, &row, &e) == TS_IO_END);
+        ts_reader_free(r);
+        fclose(f);
+    }
+    CHECK(ts_reader_ncols(NULL) == 0 && ts_reader_name(NULL, 0) == NULL && ts_reader_line(NULL) == 0);
+
+    /* header details: blanks around names, text after a closing quote */
+    CHECK(RT("a ,\"b\"x , c\n1,2,3\n", NULL, &t, &e) == TS_IO_OK && t.ncols == 3 &&
+          strcmp(t.names[0], "a") == 0 && strcmp(t.names[1], "b") == 0 && strcmp(t.names[2], "c") == 0);
+    ts_table_free(&t);
+    CHECK(RT("\"a b\" \"c\"\n1 2\n", NULL, &t, &e) == TS_IO_OK && t.ncols == 2 &&
+          strcmp(t.names[0], "a b") == 0);
+    ts_table_free(&t);
+    CHECK(RT("\"open,x\n1,2\n", NULL, &t, &e) == TS_IO_OK && t.ncols == 2 &&
+          strcmp(t.names[0], "\"open") == 0); /* an unclosed quote stays */
+    ts_table_free(&t);
+
+    /* a file by path, and "-" for standard input */
+    CHECK(ts_read_table_path(TS_SOURCE_DIR "/tests/data/io_sample.tsv", NULL, &t, &e) == TS_IO_OK);
+    CHECK(t.nrows == 3 && t.ncols == 2 && strcmp(t.names[0], "t (s)") == 0 &&
+          strcmp(t.names[1], "y") == 0 && t.cols[1][1] == -2e-3 && t.cols[0][2] == 100 &&
+          t.lines[2] == 6);
+    ts_table_free(&t);
+    CHECK(ts_read_table_path(TS_SOURCE_DIR "/tests/data/io_bad.csv", NULL, &t, &e) ==
+              TS_IO_ERR_NUMBER &&
+          strcmp(e.msg, TS_SOURCE_DIR "/tests/data/io_bad.csv:3:3: expected a number, found \"abc\"") ==
+              0);
+    if (freopen(TS_SOURCE_DIR "/tests/data/io_sample.tsv", "r", stdin)) {
+        CHECK(ts_read_table_path("-", NULL, &t, &e) == TS_IO_OK && t.nrows == 3);
+        ts_table_free(&t);
+    }
+    if (freopen(TS_SOURCE_DIR "/tests/data/io_bad.csv", "r", stdin)) {
+        CHECK(ts_read_table_path("-", NULL, &t, &e) == TS_IO_ERR_NUMBER &&
+              strcmp(e.msg, "<stdin>:3:3: expected a number, found \"abc\"") == 0);
+    }
+    ts_reader_free(NULL);
+    ts_table_free(NULL);
+}
+
+static void test_reader_errors(void)
+{
+    ts_read_options o;
+    EXPECT_ERR("x,y\n1,2\n3,abc\n", NULL, TS_IO_ERR_NUMBER,
+               "t.csv:3:3: expected a number, found \"abc\"", 3, 3);
+    EXPECT_ERR("1,2\n3,4,5\n", NULL, TS_IO_ERR_FIELDS,
+               "t.csv:2:5: wrong number of fields (3, expected 2)", 2, 5);
+    EXPECT_ERR("1,2\n3\n", NULL, TS_IO_ERR_FIELDS,
+               "t.csv:2:2: wrong number of fields (1, expected 2)", 2, 2);
+    EXPECT_ERR("1 2\n3 4 5 6 # c\n", NULL, TS_IO_ERR_FIELDS,
+               "t.csv:2:5: wrong number of fields (4, expected 2)", 2, 5);
+    EXPECT_ERR("1,2\n3,nan\n", NULL, TS_IO_ERR_NONFINITE, "t.csv:2:3: not a finite number: \"nan\"",
+               2, 3);
+    EXPECT_ERR("1,2\n3, -Infinity \n", NULL, TS_IO_ERR_NONFINITE,
+               "t.csv:2:4: not a finite number: \"-Infinity\"", 2, 4);
+    EXPECT_ERR("1,2\n3,1e999\n", NULL, TS_IO_ERR_RANGE, "t.csv:2:3: number out of range: \"1e999\"",
+               2, 3);
+    EXPECT_ERR("1,2\n3,,4\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:3: empty field", 2, 3);
+    EXPECT_ERR("1,2\n,4\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:1: empty field", 2, 1);
+    EXPECT_ERR("1,2\n3,\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:3: empty field", 2, 3);
+    EXPECT_ERR("1,\n", NULL, TS_IO_ERR_NUMBER, "t.csv:1:3: empty field", 1, 3);
+    EXPECT_ERR("", NULL, TS_IO_ERR_EMPTY, "t.csv: no data (empty input)", 0, 0);
+    EXPECT_ERR("# only a comment\n\n  \n", NULL, TS_IO_ERR_EMPTY, "t.csv: no data (empty input)", 0,
+               0);
+    EXPECT_ERR("x,y\n# nothing\n", NULL, TS_IO_ERR_EMPTY, "t.csv: no data rows", 0, 0);
+    EXPECT_ERR("1 2\n3 4x\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:3: expected a number, found \"4x\"",
+               2, 3);
+    EXPECT_ERR("1,2\n3,4 5\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:3: expected a number, found \"4 5\"",
+               2, 3);
+    EXPECT_ERR("1,2\nabc ,4\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:1: expected a number, found \"abc\"",
+               2, 1);
+    EXPECT_ERR("1,2\n0x10,2\n", NULL, TS_IO_ERR_NUMBER,
+               "t.csv:2:1: expected a number, found \"0x10\"", 2, 1);
+    EXPECT_ERR("1,2\r\n3,x\r\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:3: expected a number, found \"x\"",
+               2, 3);
+    EXPECT_ERR("1\t2\n3\tz\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:3: expected a number, found \"z\"",
+               2, 3);
+    EXPECT_ERR("1\t2\n3\t\t4\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:3: empty field", 2, 3);
+    EXPECT_ERR("1,2\n3,\"4\"\n", NULL, TS_IO_ERR_NUMBER,
+               "t.csv:2:3: expected a number, found \"\"4\"\"", 2, 3);
+    EXPECT_ERR("1,2\n3,4\xc3\xa9\n", NULL, TS_IO_ERR_NUMBER,
+               "t.csv:2:3: expected a number, found \"4\\xc3\\xa9\"", 2, 3);
+    expect_error("1,2\n3,\0\n", 7, NULL, TS_IO_ERR_NUMBER,
+                 "t.csv:2:3: expected a number, found \"\\x00\"", 2, 3);
+    EXPECT_ERR("1,2\n3,aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa\n", NULL,
+               TS_IO_ERR_NUMBER,
+               "t.csv:2:3: expected a number, found \"aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa\"...", 2,
+               3);
+    /* the byte-order mark is not counted in columns */
+    ts_read_options_init(&o);
+    o.header = TS_HEADER_NONE;
+    EXPECT_ERR("\xef\xbb\xbf" "1,x\n", &o, TS_IO_ERR_NUMBER, "t.csv:1:3: expected a number, found \"x\"",
+               1, 3);
+    EXPECT_ERR("x,y\n1,2\n", &o, TS_IO_ERR_NUMBER, "t.csv:1:1: expected a number, found \"x\"", 1, 1);
+    /* required number of columns */
+    ts_read_options_init(&o);
+    o.ncols = 2;
+    EXPECT_ERR("a,b,c\n1,2,3\n", &o, TS_IO_ERR_FIELDS,
+               "t.csv:1:5: wrong number of fields (3, expected 2)", 1, 5);
+    EXPECT_ERR("a\n1\n", &o, TS_IO_ERR_FIELDS, "t.csv:1:2: wrong number of fields (1, expected 2)",
+               1, 2);
+    EXPECT_ERR("1 2 3\n", &o, TS_IO_ERR_FIELDS, "t.csv:1:5: wrong number of fields (3, expected 2)",
+               1, 5);
+    /* header fixes the count */
+    EXPECT_ERR("a,b\n1,2,3\n", NULL, TS_IO_ERR_FIELDS,
+               "t.csv:2:5: wrong number of fields (3, expected 2)", 2, 5);
+    /* long lines */
+    ts_read_options_init(&o);
+    o.max_line = 16;
+    o.buffer_size = 16;
+    EXPECT_ERR("1,2\n123456789012345,1\n", &o, TS_IO_ERR_LINE, "t.csv:2: line longer than 16 bytes",
+               2, 0);
+    EXPECT_ERR("1,2\n123456789012345,1", &o, TS_IO_ERR_LINE, "t.csv:2: line longer than 16 bytes",
+               2, 0);
+    {
+        ts_table t;
+        ts_io_error e;
+        /* exactly 16 bytes is fine, also at the end without newline */
+        CHECK(RT("1,2\n1234567890123,1\n1234567890123,2", &o, &t, &e) == TS_IO_OK && t.nrows == 3);
+        ts_table_free(&t);
+    }
+    /* options and arguments */
+    {
+        ts_table t;
+        ts_io_error e;
+        ts_reader *r = (ts_reader *)&e;
+        FILE *f = tmpfile();
+        ts_read_options_init(&o);
+        o.max_line = 5;
+        CHECK(ts_read_table(f, "t", &o, &t, &e) == TS_IO_ERR_OPTION &&
+              strcmp(e.msg, "t: invalid option") == 0);
+        ts_read_options_init(&o);
+        o.delim = (ts_delim)9;
+        CHECK(ts_reader_open(&r, f, "t", &o, &e) == TS_IO_ERR_OPTION && r == NULL);
+        ts_read_options_init(&o);
+        o.header = (ts_header)-1;
+        CHECK(ts_reader_open(&r, f, "t", &o, &e) == TS_IO_ERR_OPTION);
+        ts_read_options_init(&o);
+        o.buffer_size = 3;
+        CHECK(ts_reader_open(&r, f, "t", &o, &e) == TS_IO_ERR_OPTION);
+        CHECK(ts_reader_open(&r, NULL, "t", NULL, &e) == TS_IO_ERR_NULL && r == NULL);
+        CHECK(ts_reader_open(NULL, f, "t", NULL, &e) == TS_IO_ERR_NULL);
+        CHECK(ts_reader_next(NULL, NULL, &e) == TS_IO_ERR_NULL);
+        CHECK(ts_read_table(f, "t", NULL, NULL, &e) == TS_IO_ERR_NULL);
+        CHECK(ts_read_table_path(NULL, NULL, &t, &e) == TS_IO_ERR_NULL);
+        CHECK(ts_read_table_path("/nonexistent-dir/x.csv", NULL, &t, &e) == TS_IO_ERR_OPEN &&
+              e.sys_errno == ENOENT &&
+              strcmp(e.msg, "/nonexistent-dir/x.csv: cannot open: No such file or directory") == 0);
+        ts_read_options_init(NULL);
+        fclose(f);
+        /* a read error: reading a stream open for writing only */
+        f = fopen("/dev/null", "w");
+        if (f) {
+            CHECK(ts_read_table(f, "w.csv", NULL, &t, &e) == TS_IO_ERR_READ && e.sys_errno != 0 &&
+                  strncmp(e.msg, "w.csv: read error: ", 19) == 0);
+            fclose(f);
+        }
+    }
+    for (int s = 0; s <= TS_IO_STATUS_COUNT_; s++)
+        CHECK(ts_io_strerror((ts_io_status)s) != NULL);
+    CHECK(strcmp(ts_io_strerror((ts_io_status)99), "unknown status") == 0);
+}
+
+/* A generated file read with several buffer sizes, read-all and streaming:
+ * the values are those written, bit for bit, and the lines agree. */
+static void test_reader_stream(void)
+{
+    long nrows = SCALE(200000), i;
+    FILE *f = tmpfile();
+    static const size_t bufs[] = {16, 100, 4096, 0};
+    double *xv = malloc((size_t)nrows * sizeof *xv), *yv = malloc((size_t)nrows * sizeof *yv);
+    unsigned long long *lines = malloc((size_t)nrows * sizeof *lines), line = 0;
+    char a[TS_FMT_SIZE];
+    if (!f || !xv || !yv || !lines) {
+        CHECK(0);
+        return;
+    }
+    fputs("# generated\nx,y\n", f);
+    line = 2;
+    for (i = 0; i < nrows; i++) {
+        xv[i] = random_double((int)(i % 7));
+        yv[i] = random_double((int)((i + 3) % 7));
+        if (i % 1000 == 7) {
+            fputs("\r\n# comment, with, commas\n", f);
+            line += 2;
+        }
+        if (i % 2) {
+            ts_format_double(xv[i], a);
+            fprintf(f, "%s, %.17g\n", a, yv[i]);
+        } else {
+            fprintf(f, "%.20e,%s\r\n", xv[i], (ts_format_double(yv[i], a), a));
+        }
+        lines[i] = ++line;
+    }
+    for (size_t b = 0; b < sizeof bufs / sizeof *bufs; b++) {
+        ts_read_options o;
+        ts_table t;
+        ts_io_error e;
+        ts_reader *r;
+        const double *row;
+        long bad = 0, k = 0;
+        ts_read_options_init(&o);
+        if (bufs[b])
+            o.buffer_size = bufs[b];
+        rewind(f);
+        CHECK(ts_read_table(f, "g.csv", &o, &t, &e) == TS_IO_OK);
+        CHECK(t.nrows == (size_t)nrows && t.ncols == 2);
+        for (i = 0; i < nrows && t.nrows == (size_t)nrows; i++)
+            if (bits_of(t.cols[0][i]) != bits_of(xv[i]) || bits_of(t.cols[1][i]) != bits_of(yv[i]) ||
+                t.lines[i] != lines[i])
+                bad++;
+        CHECKF(bad == 0, "buffer %zu: %ld rows differ", bufs[b], bad);
+        rewind(f);
+        bad = 0;
+        CHECK(ts_reader_open(&r, f, "g.csv", &o, &e) == TS_IO_OK);
+        while (ts_reader_next(r, &row, &e) == TS_IO_OK) {
+            if (k >= nrows || bits_of(row[0]) != bits_of(t.cols[0][k]) ||
+                bits_of(row[1]) != bits_of(t.cols[1][k]) || ts_reader_line(r) != t.lines[k])
+                bad++;
+            k++;
+        }
+        CHECKF(bad == 0 && k == nrows && e.status == TS_IO_OK, "streaming, buffer %zu", bufs[b]);
+        ts_reader_free(r);
+        ts_table_free(&t);
+    }
+    fclose(f);
+    free(xv);
+    free(yv);
+    free(lines);
+}
+
+/* ------------------------------------------------------------------ */
+/* output                                                               */
+/* ------------------------------------------------------------------ */
+
+static int dir_entries(const char *dir, char names[][64], int max)
+{
+    DIR *d = opendir(dir);
+    struct dirent *de;
+    int n = 0;
+    if (!d)
+        return -1;
+    while ((de = readdir(d)) != NULL) {
+        if (strcmp(de->d_name, ".") == 0 || strcmp(de->d_name, "..") == 0)
+            continue;
+        if (n < max)
+            snprintf(names[n], 64, "%.63s", de->d_name);
+        n++;
+    }
+    closedir(d);
+    return n;
+}
+
+static int file_is(const char *path, const char *content)
+{
+    char buf[256];
+    size_t n;
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return 0;
+    n = fread(buf, 1, sizeof buf - 1, f);
+    fclose(f);
+    buf[n] = 0;
+    return strcmp(buf, content) == 0;
+}
+
+static void test_out(void)
+{
+    char tmpl[] = "/tmp/ts_io_test.XXXXXX", path[300], sub[300], msg[TS_IO_MSG_SIZE], names[8][64];
+    char *dir = mkdtemp(tmpl);
+    ts_out *o;
+    struct stat st;
+    mode_t old = umask(022);
+    CHECK(dir != NULL);
+    if (!dir)
+        return;
+    snprintf(path, sizeof path, "%s/out.csv", dir);
+
+    /* aborted: nothing left */
+    CHECK(ts_out_open(&o, path, 0, msg, sizeof msg) == 0 && o && msg[0] == 0);
+    CHECK(strncmp(ts_out_temp(o), path, strlen(path)) == 0 &&
+          strncmp(ts_out_temp(o) + strlen(path), ".tmp.", 5) == 0);
+    CHECK(strcmp(ts_out_path(o), path) == 0);
+    fputs("half written", ts_out_file(o));
+    CHECK(dir_entries(dir, names, 8) == 1); /* the temp file exists meanwhile */
+    ts_out_abort(o);
+    CHECK(dir_entries(dir, names, 8) == 0);
+
+    /* committed: the file, nothing else, mode 0666 & ~umask */
+    CHECK(ts_out_open(&o, path, TS_OUT_FSYNC, msg, sizeof msg) == 0);
+    fputs("a,b\n", ts_out_file(o));
+    CHECK(ts_out_commit(o, msg, sizeof msg) == 0 && msg[0] == 0);
+    CHECK(file_is(path, "a,b\n"));
+    CHECK(dir_entries(dir, names, 8) == 1 && strcmp(names[0], "out.csv") == 0);
+    CHECK(stat(path, &st) == 0 && (st.st_mode & 0777) == 0644);
+
+    /* replacing keeps the permissions of the old file */
+    chmod(path, 0640);
+    CHECK(ts_out_open(&o, path, 0, msg, sizeof msg) == 0);
+    fputs("new\n", ts_out_file(o));
+    CHECK(file_is(path, "a,b\n")); /* untouched until commit */
+    CHECK(ts_out_commit(o, msg, sizeof msg) == 0);
+    CHECK(file_is(path, "new\n") && stat(path, &st) == 0 && (st.st_mode & 0777) == 0640);
+    /* aborting a replacement leaves the old file */
+    CHECK(ts_out_open(&o, path, 0, msg, sizeof msg) == 0);
+    fputs("newer\n", ts_out_file(o));
+    ts_out_abort(o);
+    CHECK(file_is(path, "new\n") && dir_entries(dir, names, 8) == 1);
+
+    /* directory missing */
+    snprintf(sub, sizeof sub, "%s/nope/x.csv", dir);
+    o = (ts_out *)msg;
+    CHECK(ts_out_open(&o, sub, 0, msg, sizeof msg) == ENOENT && o == NULL);
+    {
+        char want[400];
+        snprintf(want, sizeof want,
+                 "cannot create temporary file for \"%s\": No such file or directory", sub);
+        CHECKF(strcmp(msg, want) == 0, "%s", msg);
+    }
+
+    /* rename fails (target is a non-empty directory): temp removed, error */
+    snprintf(sub, sizeof sub, "%s/sub", dir);
+    mkdir(sub, 0755);
+    {
+        char inner[320];
+        snprintf(inner, sizeof inner, "%s/keep", sub);
+        FILE *f = fopen(inner, "w");
+        if (f)
+            fclose(f);
+        CHECK(ts_out_open(&o, sub, 0, msg, sizeof msg) == 0);
+        fputs("x", ts_out_file(o));
+        {
+            int rc = ts_out_commit(o, msg, sizeof msg);
+            char want[400];
+            snprintf(want, sizeof want, "cannot replace \"%s\": %s", sub, strerror(rc));
+            CHECKF((rc == EISDIR || rc == ENOTEMPTY || rc == EEXIST) && strcmp(msg, want) == 0,
+                   "rc %d: %s", rc, msg);
+        }
+        CHECK(dir_entries(dir, names, 8) == 2); /* out.csv and sub only */
+        remove(inner);
+        rmdir(sub);
+    }
+
+    /* a write error (file size limit -> EFBIG) removes the temp file */
+    {
+        struct rlimit rl, lim;
+        if (getrlimit(RLIMIT_FSIZE, &rl) == 0) {
+            void (*oldh)(int) = signal(SIGXFSZ, SIG_IGN);
+            snprintf(sub, sizeof sub, "%s/big.csv", dir);
+            CHECK(ts_out_open(&o, sub, 0, msg, sizeof msg) == 0);
+            lim = rl;
+            lim.rlim_cur = 1000;
+            if (setrlimit(RLIMIT_FSIZE, &lim) == 0) {
+                int rc;
+                for (int i = 0; i < 500; i++)
+                    fputs("0123456789\n", ts_out_file(o));
+                rc = ts_out_commit(o, msg, sizeof msg);
+                setrlimit(RLIMIT_FSIZE, &rl);
+                CHECKF(rc == EFBIG && strstr(msg, "error writing \"") == msg, "rc %d: %s", rc, msg);
+                CHECK(dir_entries(dir, names, 8) == 1);
+            } else {
+                ts_out_abort(o);
+            }
+            signal(SIGXFSZ, oldh);
+        }
+    }
+
+    /* a relative path (directory ".", fsync'ed) */
+    {
+        char cwd[1024];
+        if (getcwd(cwd, sizeof cwd) && chdir(dir) == 0) {
+            CHECK(ts_out_open(&o, "rel.csv", TS_OUT_FSYNC, msg, sizeof msg) == 0);
+            fputs("r\n", ts_out_file(o));
+            CHECK(ts_out_commit(o, msg, sizeof msg) == 0 && file_is("rel.csv", "r\n"));
+            remove("rel.csv");
+            CHECK(chdir(cwd) == 0);
+        }
+    }
+
+    /* standard output */
+    CHECK(ts_out_open(&o, "-", 0, msg, sizeof msg) == 0 && ts_out_file(o) == stdout &&
+          ts_out_temp(o) == NULL);
+    CHECK(ts_out_commit(o, msg, sizeof msg) == 0);
+    { /* standard output that fails (/dev/full on fd 1 for a moment) */
+        int save, full;
+        fflush(stdout);
+        save = dup(1);
+        full = open("/dev/full", O_WRONLY);
+        if (save >= 0 && full >= 0 && dup2(full, 1) >= 0) {
+            int rc;
+            CHECK(ts_out_open(&o, "-", 0, msg, sizeof msg) == 0);
+            fputs("\n", ts_out_file(o));
+            rc = ts_out_commit(o, msg, sizeof msg);
+            dup2(save, 1);
+            clearerr(stdout);
+            CHECKF(rc == ENOSPC && strcmp(msg, "error writing to standard output: No space left on "
+                                               "device") == 0,
+                   "rc %d %s", rc, msg);
+        }
+        if (full >= 0)
+            close(full);
+        if (save >= 0)
+            close(save);
+    }
+    CHECK(ts_out_open(&o, "-", 0, NULL, 0) == 0);
+    ts_out_abort(o);
+
+    /* arguments */
+    CHECK(ts_out_open(&o, NULL, 0, msg, sizeof msg) == EINVAL && strcmp(msg, "no output path") == 0);
+    CHECK(ts_out_open(&o, "", 0, msg, sizeof msg) == EINVAL);
+    CHECK(ts_out_open(NULL, path, 0, msg, sizeof msg) == EINVAL);
+    CHECK(ts_out_open(&o, path, 0x100, msg, sizeof msg) == EINVAL && o == NULL);
+    CHECK(ts_out_commit(NULL, msg, sizeof msg) == EINVAL);
+    ts_out_abort(NULL);
+    CHECK(ts_out_file(NULL) == NULL && ts_out_path(NULL) == NULL);
+
+    remove(path);
+    CHECK(dir_entries(dir, names, 8) == 0);
+    rmdir(dir);
+    umask(old);
+}
+
+static void test_writer(void)
+{
+    FILE *f = tmpfile();
+    ts_writer *w;
+    char buf[512];
+    size_t n;
+    double row[3] = {1.0, -0.1, 3e-300};
+    CHECK(ts_writer_new(NULL, ',') == NULL && ts_writer_new(f, 'x') == NULL);
+    w = ts_writer_new(f, ',');
+    CHECK(w != NULL);
+    CHECK(ts_writer_text(w, "x,y\n", 4) == 0);
+    CHECK(ts_writer_xy(w, 0.5, 100.0) == 0);
+    CHECK(ts_writer_row(w, row, 3) == 0);
+    CHECK(ts_writer_row(w, row, 0) == 0);
+    CHECK(ts_writer_xy(w, -0.0, 1e21) == 0);
+    CHECK(ts_writer_free(w) == 0);
+    rewind(f);
+    n = fread(buf, 1, sizeof buf - 1, f);
+    buf[n] = 0;
+    CHECKF(strcmp(buf, "x,y\n0.5,100\n1,-0.1,3e-300\n\n-0,1e+21\n") == 0, "%s", buf);
+    fclose(f);
+
+    w = ts_writer_new(stdout, '\t');
+    CHECK(ts_writer_row(w, NULL, 2) == EINVAL && ts_writer_xy(w, 1, 2) == EINVAL); /* sticky */
+    CHECK(ts_writer_free(w) == EINVAL);
+    CHECK(ts_writer_row(NULL, row, 1) == EINVAL && ts_writer_flush(NULL) == EINVAL &&
+          ts_writer_free(NULL) == 0 && ts_writer_text(NULL, "", 0) == EINVAL);
+
+    /* write errors: /dev/full */
+    f = fopen("/dev/full", "w");
+    if (f) {
+        long i;
+        int rc = 0;
+        w = ts_writer_new(f, ',');
+        for (i = 0; i < 100000 && rc == 0; i++)
+            rc = ts_writer_xy(w, (double)i, 0.25);
+        if (rc == 0)
+            rc = ts_writer_flush(w);
+        CHECKF(rc == ENOSPC, "rc %d", rc);
+        CHECK(ts_writer_xy(w, 1, 2) == ENOSPC && ts_writer_text(w, "a", 1) == ENOSPC);
+        CHECK(ts_writer_row(w, row, 3) == ENOSPC);
+        CHECK(ts_writer_free(w) == ENOSPC);
+        fclose(f);
+    }
+    f = fopen("/dev/full", "w");
+    if (f) { /* rows, a small write that fails only at fflush, long text */
+        static double many[5000];
+        static char txt[100000];
+        int rc = 0;
+        w = ts_writer_new(f, ';');
+        for (int i = 0; i < 100 && rc == 0; i++)
+            rc = ts_writer_row(w, many, 5000);
+        CHECK(rc == ENOSPC && ts_writer_free(w) == ENOSPC);
+        clearerr(f);
+        w = ts_writer_new(f, ' ');
+        CHECK(ts_writer_xy(w, 1, 2) == 0 && ts_writer_flush(w) == ENOSPC && ts_writer_free(w) == ENOSPC);
+        clearerr(f);
+        memset(txt, 'a', sizeof txt);
+        w = ts_writer_new(f, ',');
+        CHECK(ts_writer_text(w, txt, sizeof txt) == ENOSPC && ts_writer_free(w) == ENOSPC);
+        fclose(f);
+    }
+    w = ts_writer_new(stdout, ',');
+    CHECK(ts_writer_text(w, NULL, 3) == EINVAL && ts_writer_free(w) == EINVAL);
+    CHECK(ts_writer_xy(NULL, 1, 2) == EINVAL);
+
+    /* speed: rows of (x, y) into a temporary file; then reading them back */
+    {
+        long rows = SCALE(1000000), i;
+        double t0, tw, tr, ts;
+        ts_table t;
+        ts_io_error e;
+        ts_reader *r;
+        const double *rw;
+        f = tmpfile();
+        w = ts_writer_new(f, ',');
+        t0 = now();
+        for (i = 0; i < rows; i++)
+            ts_writer_xy(w, (double)i * 0.001, sin((double)i * 0.001) * 12.5);
+        CHECK(ts_writer_free(w) == 0);
+        tw = now() - t0;
+        rewind(f);
+        t0 = now();
+        CHECK(ts_read_table(f, "w.csv", NULL, &t, &e) == TS_IO_OK && t.nrows == (size_t)rows);
+        tr = now() - t0;
+        CHECK(t.nrows == (size_t)rows && t.cols[0][rows - 1] == (double)(rows - 1) * 0.001 &&
+              t.cols[1][rows / 2] == sin((double)(rows / 2) * 0.001) * 12.5);
+        ts_table_free(&t);
+        rewind(f);
+        t0 = now();
+        CHECK(ts_reader_open(&r, f, "w.csv", NULL, &e) == TS_IO_OK);
+        i = 0;
+        while (ts_reader_next(r, &rw, &e) == TS_IO_OK)
+            i++;
+        ts = now() - t0;
+        CHECK(i == rows);
+        ts_reader_free(r);
+        fclose(f);
+        printf("speed: writer %.2f M rows/s, read_table %.2f M rows/s, streaming %.2f M rows/s "
+               "(%ld rows of x,y)\n",
+               (double)rows / tw * 1e-6, (double)rows / tr * 1e-6, (double)rows / ts * 1e-6, rows);
+    }
+}
+
+/* Every allocation failing in turn: NOMEM (or success once the operation
+ * needs fewer allocations), with nothing leaked (LeakSanitizer in the ASan
+ * build) and the outputs reset. */
+static void test_nomem(void)
+{
+    static const char text[] = "alpha_long_name,b\n1,2\n3,4\n5,6\n";
+    int ok_seen = 0, nomem_seen = 0, bad = 0;
+    for (long n = 0; n < 40; n++) {
+        ts_table t;
+        ts_io_error e;
+        ts_read_options o;
+        FILE *f = mem_file(text, sizeof text - 1);
+        ts_io_status st;
+        ts_read_options_init(&o);
+        o.buffer_size = 16; /* the buffer grows too */
+        ts_io__fail_alloc_after(n);
+        st = ts_read_table(f, "t.csv", &o, &t, &e);
+        ts_io__fail_alloc_after(-1);
+        if (st == TS_IO_OK) {
+            ok_seen++;
+            if (t.nrows != 3 || t.cols[1][2] != 6)
+                bad++;
+        } else if (st == TS_IO_ERR_NOMEM && strcmp(e.msg, "t.csv: out of memory") == 0 &&
+                   t.cols == NULL && t.names == NULL) {
+            nomem_seen++;
+        } else {
+            bad++;
+            fprintf(stderr, "nomem %ld: status %d %s\n", n, st, e.msg);
+        }
+        ts_table_free(&t);
+        fclose(f);
+    }
+    CHECKF(bad == 0 && ok_seen > 0 && nomem_seen >= 10, "bad %d ok %d nomem %d", bad, ok_seen,
+           nomem_seen);
+    {
+        ts_reader *r;
+        ts_io_error e;
+        ts_out *o;
+        char msg[200];
+        FILE *f = tmpfile();
+        for (long n = 0; n < 3; n++) {
+            ts_io__fail_alloc_after(n);
+            CHECK(ts_reader_open(&r, f, "t", NULL, &e) == TS_IO_ERR_NOMEM && r == NULL &&
+                  strcmp(e.msg, "t: out of memory") == 0);
+            ts_io__fail_alloc_after(-1);
+        }
+        for (long n = 0; n < 3; n++) {
+            ts_io__fail_alloc_after(n);
+            CHECK(ts_out_open(&o, "/tmp/x.csv", 0, msg, sizeof msg) == ENOMEM && o == NULL &&
+                  strcmp(msg, "out of memory") == 0);
+            ts_io__fail_alloc_after(-1);
+        }
+        ts_io__fail_alloc_after(0);
+        CHECK(ts_writer_new(f, ',') == NULL);
+        ts_io__fail_alloc_after(-1);
+        fclose(f);
+    }
+}
+
+int main(void)
+{
+    double t0 = now();
+    const char *pre = getenv("LD_PRELOAD");
+    scale_div = (pre && strstr(pre, "vgpreload")) ? 40 : SAN ? 4 : 1;
+    test_pow10_table();
+    test_format_known();
+    test_format_python();
+    test_format_roundtrip();
+    test_format_shortest();
+    test_parse_cases();
+    test_parse_python();
+    test_parse_random();
+    test_parse_halfway();
+    test_reader_valid();
+    test_reader_errors();
+    test_reader_stream();
+    test_out();
+    test_writer();
+    test_nomem();
+    printf("test_io: %.1f s (1/%ld of the random cases)\n", now() - t0, scale_div);
+    return th_report("test_io");
+}
