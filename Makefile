@@ -28,6 +28,17 @@ valgrind: build
 	  valgrind -q --leak-check=full --errors-for-leak-kinds=all --error-exitcode=9 $$t >/dev/null || exit 1; \
 	done; echo "valgrind: clean"
 
+# Speed and memory against GSL (issue 6): prints a table, writes bench/RESULTS.md.
+bench: deps
+	@test -f /usr/include/gsl/gsl_interp.h || { apt-get update && apt-get install -y libgsl-dev; }
+	$(CMAKE) -S . -B build-bench -DCMAKE_BUILD_TYPE=Release >/dev/null
+	$(CMAKE) --build build-bench -j $(JOBS) --target trigspline
+	@$(CMAKE) --build build-bench -j $(JOBS) --target trigspline_cli >/dev/null 2>&1 || \
+	  echo "bench: the CLI did not build; its streaming row is skipped"
+	$(CC) -O2 -std=c11 -Wall -Wextra -Iinclude bench/bench.c build-bench/libtrigspline.a \
+	  -lgsl -lgslcblas -lm -lpthread -o build-bench/bench
+	./build-bench/bench --cli build-bench/trigspline --out bench/RESULTS.md
+
 demo: build
 	./build/examples/table1
 

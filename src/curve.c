@@ -77,7 +77,7 @@ static void *alloc_n(size_t count, size_t size, ts_status *st)
         *st = TS_ERR_OVERFLOW;
         return NULL;
     }
-    void *m = malloc(count * size);
+    void *m = ts__malloc(count * size);
     if (!m)
         *st = TS_ERR_NOMEM;
     return m;
@@ -394,7 +394,7 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
     ts_status st = TS_OK;
     if (n + 1 + 2 * CURVE_PAD < n || (n + 1) > SIZE_MAX / dim / 4 / sizeof(double))
         return fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
-    ts_curve *c = calloc(1, sizeof *c);
+    ts_curve *c = ts__calloc(1, sizeof *c);
     if (!c)
         return fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
     c->n = n;

@@ -54,6 +54,23 @@ void ts__error_set(ts_error *err, ts_status st, size_t index, ts_where where)
     }
 }
 
+long ts__test_fail_alloc;
+
+static int alloc_should_fail(void)
+{
+    return ts__test_fail_alloc > 0 && --ts__test_fail_alloc == 0;
+}
+
+void *ts__malloc(size_t bytes)
+{
+    return alloc_should_fail() ? NULL : malloc(bytes);
+}
+
+void *ts__calloc(size_t count, size_t size)
+{
+    return alloc_should_fail() ? NULL : calloc(count, size);
+}
+
 /* Record and return a failure. */
 static ts_status fail(ts_error *err, ts_status st, size_t index, ts_where where)
 {
@@ -262,8 +279,8 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
         if (!isfinite(x[i + 1] - x[i]))
             return fail(err, TS_ERR_NONFINITE, i + 1, TS_WHERE_POINT);
 
-    ts_spline *sp = calloc(1, sizeof *sp);
-    double *blk = sp ? malloc(bytes) : NULL;
+    ts_spline *sp = ts__calloc(1, sizeof *sp);
+    double *blk = sp ? ts__malloc(bytes) : NULL;
     if (!blk) {
         free(sp);
         return fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);

@@ -9,8 +9,9 @@
 #define TS_PI 3.14159265358979323846
 #define TS_HALF_PI 1.57079632679489661923
 
-/* Doubles per interval reserved for fast.c's batch coefficients. */
-#define TS_FAST_STRIDE 8
+/* Doubles per interval reserved for fast.c's batch coefficients
+ * (fast[i] = (π/2)/h_i). */
+#define TS_FAST_STRIDE 1
 
 struct ts_spline {
     size_t n;            /* intervals */
@@ -51,6 +52,12 @@ ts_status ts__slopes(ts_slopes method, const double *x, const double *f, size_t 
                      double *d, ts_error *err);
 
 /* ---- spline.c -------------------------------------------------------- */
+/* Every allocation of the library goes through these.  Tests only: when
+ * ts__test_fail_alloc > 0 it counts allocations down and the one that
+ * brings it to 0 fails (to provoke TS_ERR_NOMEM).  Not thread-safe. */
+extern long ts__test_fail_alloc;
+void *ts__malloc(size_t bytes);
+void *ts__calloc(size_t count, size_t size);
 void ts__error_set(ts_error *err, ts_status st, size_t index, ts_where where);
 /* Recompute b1, b2 (and xc1, xc2) of intervals i0..i1-1 from x, f, d, alpha,
  * beta, per the form (SPEC §3, §4).  For the C¹ form the knots' d̂ depend on
@@ -98,5 +105,9 @@ void ts__fast_prepare(ts_spline *sp);
 /* Evaluate sorted-or-not queries xq[0..m) (all inside [x0, xn], not NaN). */
 void ts__fast_batch(const ts_spline *sp, int deriv, const double *xq, size_t m,
                     double *yq, ts_cursor *cur);
+/* The same with a chosen kernel (tests): isa 0 portable C, 1 x86-64 AVX2+FMA,
+ * 2 AVX-512F.  Returns 0 (and does nothing) if that kernel is not available. */
+int ts__fast_batch_isa(const ts_spline *sp, int deriv, const double *xq, size_t m,
+                       double *yq, ts_cursor *cur, int isa);
 
 #endif

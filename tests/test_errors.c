@@ -2,6 +2,7 @@
  * index and kind reported through ts_error (header: include/trigspline.h).
  * Expected statuses come from the header's per-function lists. */
 #include "th.h"
+#include "ts_internal.h"
 #include "trigspline.h"
 
 #include <math.h>
@@ -361,8 +362,42 @@ static void test_overflow(void)
     }
 }
 
+/* TS_ERR_NOMEM: the library's test hook (ts_internal.h) makes the k-th
+ * allocation fail; nothing may leak (ASan/valgrind) and *out stays NULL. */
+static void test_nomem(void)
+{
+    static const double x[4] = {0, 1, 2, 3}, f[4] = {1, 2, 1, 3};
+    static const double pts[8] = {0, 0, 1, 0, 1, 1, 0, 1};
+    for (long k = 1; k <= 2; k++) {
+        ts_spline *s = (ts_spline *)(uintptr_t)1;
+        ts_error err;
+        ts__test_fail_alloc = k;
+        ts_status st = ts_spline_new(x, f, 4, NULL, &s, &err);
+        ts__test_fail_alloc = 0;
+        CHECKF(st == TS_ERR_NOMEM && s == NULL && err.status == TS_ERR_NOMEM, "spline, allocation %ld: %d", k,
+               (int)st);
+    }
+    int failed = 0;
+    for (long k = 1; k <= 16; k++) {
+        ts_curve *c = (ts_curve *)(uintptr_t)1;
+        ts__test_fail_alloc = k;
+        ts_status st = ts_curve_new(pts, 4, 2, NULL, &c, NULL);
+        long left = ts__test_fail_alloc;
+        ts__test_fail_alloc = 0;
+        if (left > 0) { /* fewer than k allocations: success expected */
+            CHECK(st == TS_OK && c != NULL);
+            ts_curve_free(c);
+            break;
+        }
+        failed++;
+        CHECKF(st == TS_ERR_NOMEM && c == NULL, "curve, allocation %ld: %d", k, (int)st);
+    }
+    CHECK(failed >= 1);
+}
+
 int main(void)
 {
+    test_nomem();
     test_strerror();
     test_new();
     test_eval_errors();

@@ -1,0 +1,227 @@
+/* SPEC §4: the geometric form (X(θ), Y(θ)) with the same k_i in both
+ * coordinates.  Derivations: docs/accuracy.md §1. */
+#include "ts_internal.h"
+
+#include <float.h>
+#include <math.h>
+
+/* One side of an interval, seen from the end it starts at: with φ measured
+ * from that end, X = x_end ± h X̂(φ), X̂ = s² + κ(A1 − A2), and
+ * Y = F0 c² + F1 s² + k (D0 A1 − D1 A2).  From the right end the roles swap:
+ * (F0, F1, D0, D1) = (f_{i+1}, f_i, −d_{i+1}, −d_i) (A0↔A3, A1↔A2 under
+ * θ → π/2 − θ), so 1 − X̂(π/2 − φ) = X̂(φ). */
+typedef struct geo_side {
+    double F0, F1, D0, D1; /* values and slopes as above */
+    double kappa, h, k;    /* κ = 2/(3π a), k = κ h */
+} geo_side;
+
+static void geo_side_init(const ts_spline *sp, size_t i, int right, geo_side *g)
+{
+    double a = sp->alpha[i] + sp->beta[i];
+    g->h = sp->h[i];
+    g->kappa = 2.0 / (3.0 * TS_PI * a);
+    g->k = g->kappa * g->h;
+    if (!right) {
+        g->F0 = sp->f[i];
+        g->F1 = sp->f[i + 1];
+        g->D0 = sp->d[i];
+        g->D1 = sp->d[i + 1];
+    } else {
+        g->F0 = sp->f[i + 1];
+        g->F1 = sp->f[i];
+        g->D0 = -sp->d[i + 1];
+        g->D1 = -sp->d[i];
+    }
+}
+
+/* X̂(φ) − u and X̂'(φ). */
+static void xhat(double kappa, double phi, double *X, double *Xp)
+{
+    double s = sin(phi), c = cos(phi), A[4], D[4];
+    ts__basis(s, c, A);
+    ts__basis_d1(s, c, D);
+    *X = s * s + kappa * (A[1] - A[2]);
+    *Xp = 2.0 * s * c + kappa * (D[1] - D[2]);
+}
+
+/* Solve X̂(φ) = u for u in [0, 1/2], φ in [0, π/4] (X̂(π/4) = 1/2 by the
+ * symmetry above).  Newton inside a bracket that every step shrinks; a
+ * Newton step leaving the bracket, or not at most half the step before the
+ * last one, is replaced by bisection, so the iteration always converges
+ * (at a_i near a*, X̂' nearly vanishes at π/4 and Newton alone is slow). */
+static double geo_solve(double kappa, double u)
+{
+    const double quarter = 0.25 * TS_PI;
+    if (!(u > 0.0))
+        return 0.0;
+    if (u >= 0.5)
+        return quarter;
+    double lo = 0.0, hi = quarter;
+    /* start: near 0 X̂ ≈ 3κφ; for small κ X̂ ≈ sin²φ */
+    double phi = u / (3.0 * kappa), alt = asin(sqrt(u));
+    if (alt < phi)
+        phi = alt;
+    if (!(phi > lo && phi < hi))
+        phi = 0.5 * (lo + hi);
+    double step_old = hi - lo, step = hi - lo;
+    for (int it = 0; it < 400; it++) {
+        double F, Fp;
+        xhat(kappa, phi, &F, &Fp);
+        F -= u;
+        if (F == 0.0)
+            return phi;
+        if (F < 0.0)
+            lo = phi;
+        else
+            hi = phi;
+        double next = Fp > 0.0 ? phi - F / Fp : -1.0;
+        if (Fp > 0.0 && fabs(next - phi) <= 2.0 * DBL_EPSILON * phi)
+            return next; /* converged to rounding */
+        if (!(next > lo && next < hi) || fabs(next - phi) > 0.5 * step_old)
+            next = 0.5 * (lo + hi);
+        step_old = step;
+        step = fabs(next - phi);
+        phi = next;
+        if (hi - lo <= 2.0 * DBL_EPSILON * hi)
+            return phi;
+    }
+    return phi;
+}
+
+/* Value and derivatives in u = (x − x_i)/h (so h² never under- or
+ * overflows) on one side at φ.  sign = +1 from the left end, −1 from the
+ * right (x decreases with φ there). */
+static void geo_side_eval_u(const geo_side *g, double phi, double sign, int want, double out[3])
+{
+    double s = sin(phi), c = cos(phi), A[4];
+    ts__basis(s, c, A);
+    out[0] = g->F0 * c * c + g->F1 * s * s + g->k * (g->D0 * A[1] - g->D1 * A[2]);
+    if (want < 1)
+        return;
+    double D1[4], dF = g->F1 - g->F0, sc2 = 2.0 * s * c;
+    ts__basis_d1(s, c, D1);
+    double Yp = dF * sc2 + g->k * (g->D0 * D1[1] - g->D1 * D1[2]);
+    double Xp = sc2 + g->kappa * (D1[1] - D1[2]); /* X̂' (dx/dφ = ±h X̂') */
+    out[1] = sign * (Yp / Xp);
+    if (want < 2)
+        return;
+    double D2[4], c2 = 2.0 * (c * c - s * s);
+    ts__basis_d2(s, c, D2);
+    double Ypp = dF * c2 + g->k * (g->D0 * D2[1] - g->D1 * D2[2]);
+    double Xpp = c2 + g->kappa * (D2[1] - D2[2]);
+    /* (Y''X' − Y'X'')/X'³; the sign cancels (see docs/accuracy.md §1) */
+    out[2] = (Ypp * Xp - Yp * Xpp) / (Xp * Xp * Xp);
+}
+
+static void geo_side_eval(const geo_side *g, double phi, double sign, int want, double out[3])
+{
+    geo_side_eval_u(g, phi, sign, want, out);
+    if (want > 0)
+        out[1] = out[1] / g->h;
+    if (want > 1)
+        out[2] = out[2] / g->h / g->h;
+}
+
+void ts__geo_eval(const ts_spline *sp, size_t i, double x, int want, double out[3])
+{
+    double x0 = sp->x[i], x1 = sp->x[i + 1];
+    geo_side g;
+    if (!(x0 <= x && x <= x1)) {
+        /* TS_EXTRAP_EXTEND: osculating parabola of the end (header) */
+        int right = x > x1;
+        double e[3];
+        geo_side_init(sp, i, right, &g);
+        double t = (x - (right ? x1 : x0)) / g.h;
+        geo_side_eval_u(&g, 0.0, right ? -1.0 : 1.0, 2, e);
+        out[0] = e[0] + t * (e[1] + 0.5 * t * e[2]);
+        if (want > 0)
+            out[1] = (e[1] + t * e[2]) / g.h;
+        if (want > 1)
+            out[2] = e[2] / g.h / g.h;
+        return;
+    }
+    double dl = x - x0, dr = x1 - x;
+    int right = dr < dl;
+    geo_side_init(sp, i, right, &g);
+    double u = (right ? dr : dl) / g.h;
+    double phi = geo_solve(g.kappa, u);
+    geo_side_eval(&g, phi, right ? -1.0 : 1.0, want, out);
+}
+
+/* 12-point Gauss–Legendre nodes and weights on [−1, 1] (positive half),
+ * from tests/ref/accuracy_ref.py. */
+static const double gl_node[6] = {
+    0.9815606342467192506905, 0.9041172563704748566785, 0.7699026741943046870369,
+    0.5873179542866174472967, 0.3678314989981801937527, 0.1252334085114689154724};
+static const double gl_weight[6] = {
+    0.04717533638651182719462, 0.1069393259953184309603, 0.1600783285433462263347,
+    0.2031674267230659217491, 0.2334925365383548087608, 0.2491470458134027850006};
+
+/* h ∫_0^φ Y(t) X̂'(t) dt on one side, φ <= π/4: the integrand is a
+ * trigonometric polynomial of degree 6, and the 12-point rule's error on
+ * [0, π/4] is below 1e-17 of its coefficients (docs/accuracy.md §1). */
+static double geo_side_int(const geo_side *g, double phi)
+{
+    double half = 0.5 * phi, sum = 0.0;
+    for (int j = 0; j < 12; j++) {
+        double xi = j < 6 ? -gl_node[j] : gl_node[11 - j];
+        double w = j < 6 ? gl_weight[j] : gl_weight[11 - j];
+        double t = half * (1.0 + xi), s = sin(t), c = cos(t), A[4], D[4];
+        ts__basis(s, c, A);
+        ts__basis_d1(s, c, D);
+        double Y = g->F0 * c * c + g->F1 * s * s + g->k * (g->D0 * A[1] - g->D1 * A[2]);
+        double Xp = 2.0 * s * c + g->kappa * (D[1] - D[2]);
+        sum += w * Y * Xp;
+    }
+    return g->h * half * sum;
+}
+
+/* ∫ over the whole interval: h Σ Y_l P_l + k Σ Y_l Q_l with
+ * P = (1/10, 2/5, 2/5, 1/10), Q = Q0 (1, −1, −1, 1), Q0 = 56/5 − 111π/32,
+ * i.e. h(f_i + f_{i+1})/2 + k(d_i − d_{i+1})(2h/5 − Q0 k). */
+static double geo_whole(const ts_spline *sp, size_t i)
+{
+    const double Q0 = 56.0 / 5.0 - 111.0 * TS_PI / 32.0;
+    double a = sp->alpha[i] + sp->beta[i], h = sp->h[i];
+    double k = 2.0 / (3.0 * TS_PI * a) * h;
+    return 0.5 * h * (sp->f[i] + sp->f[i + 1]) +
+           k * (sp->d[i] - sp->d[i + 1]) * (0.4 * h - Q0 * k);
+}
+
+double ts__geo_integral(const ts_spline *sp, size_t i, double x)
+{
+    double x0 = sp->x[i], x1 = sp->x[i + 1];
+    if (!(x > x0))
+        return 0.0;
+    if (x >= x1)
+        return geo_whole(sp, i);
+    double dl = x - x0, dr = x1 - x;
+    int right = dr < dl;
+    geo_side g;
+    geo_side_init(sp, i, right, &g);
+    double phi = geo_solve(g.kappa, (right ? dr : dl) / g.h);
+    double part = geo_side_int(&g, phi);
+    return right ? geo_whole(sp, i) - part : part;
+}
+
+/* SPEC §4 bound; the policy is documented at TS_FORM_GEOMETRIC. */
+ts_status ts__geo_check(ts_spline *sp, const ts_options *opt, ts_error *err)
+{
+    (void)opt;
+    for (size_t i = 0; i < sp->n; i++) {
+        double al = sp->alpha[i], a = al + sp->beta[i];
+        if (sp->shape == TS_SHAPE_NONE) {
+            if (!(a >= TS_GEOMETRIC_A_MIN)) {
+                ts__error_set(err, TS_ERR_GEOMETRIC, i, TS_WHERE_INTERVAL);
+                return TS_ERR_GEOMETRIC;
+            }
+        } else if (!(a >= TS_GEOMETRIC_A_RAISE)) {
+            double b = TS_GEOMETRIC_A_RAISE - al;
+            while (al + b < TS_GEOMETRIC_A_RAISE)
+                b = nextafter(b, INFINITY);
+            sp->beta[i] = b;
+            sp->term[i] = (unsigned char)TS_TERM_GEOMETRIC;
+        }
+    }
+    return TS_OK;
+}

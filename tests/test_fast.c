@@ -1,0 +1,318 @@
+/* The batch kernels of src/fast.c against plain ts_eval_deriv (issue 6).
+ *
+ * Expected values: ts_eval_deriv (the plain path, itself checked against the
+ * mpmath reference in test_core.c); a long-double evaluation of SPEC §2/(2.1)
+ * written here says which side an error is on (printed, not asserted).
+ *
+ * Tolerances: a first-order worst-case bound (u = 2⁻⁵³, ε = 2u = DBL_EPSILON,
+ * M = max|B_l| of the query's interval, w = (π/2)/h = dθ/dx).  Both paths
+ * compute the same double θ = (x − x_i)·w, so only the evaluation at θ differs.
+ *  Inputs.  fast.c: v = π/2 − θ in two parts (exact subtraction, one rounding:
+ *    <= 0.8u); polynomials of bench/sincos_coeffs.py on [0, π/4] (truncation
+ *    <= 0.05u; correction term <= 0.081 with relative error <= 5u; final
+ *    rounding <= 0.71u); 1 − cos u summed without the 1; 1 − sin u one
+ *    subtraction.  So s, c, 1−s, 1−c each carry <= e = 3u.  basis.c: libm
+ *    sin, cos (< 1 ulp <= u on [0, 1]); one_minus = c²/(1+s) or 1 − s: <= 3u.
+ *  Value.  Same expressions in both: A0 = (1−s)³ <= 3e + 2u = 11u;
+ *    A1 = s(1−s)(3−s): s(1−s) <= e + u/4, (3−s) <= e + 2u, product <= 11.7u;
+ *    A2, A3 alike.  Σ|ΔA_l|·M + 4 product and 3 sum roundings (each <= u·M):
+ *    <= 49.4u·M per path, |fast − plain| <= 98.8u·M = 49.4ε·M:  TOL0 = 50.
+ *  S' (SPEC (2.1)): weights 3(1−s)²c, 2sc, 3(1−c)²s (<= 3, 1, 3) carry
+ *    <= 36u, 9.5u, 36u; times D_k = B_k − B_{k−1} (|D_k| <= 2M, one rounding),
+ *    2 sums over <= 14M, one product by w: <= 233u·M·w per path:  TOL1 = 240.
+ *  S'': fast's weights 6(1−s)c² + 3(1−s)²s etc. (<= 6, 2, 6) carry <= 114u,
+ *    30u, 114u: <= 684u·M·w² (342ε); basis.c sums Σ A_l''B_l with
+ *    Σ|A_l''| <= 28 (test_basis.c) and terms of the same size: < 860ε.
+ *    TOL2 = 1200.
+ *  These are loose worst-case sums.  The measured maxima over >= 1e7 points
+ *  are printed below in units of ε·M·w^k (about 4, 12, 35: the numbers to
+ *  quote); the long-double comparison shows fast.c is as accurate as basis.c.
+ *  A wrong coefficient, sign or interval is off by >= 1e-6·M and fails.
+ *
+ * Points: 10 million random queries (6 splines, random order and sorted,
+ * every 97th exactly on a knot) for the value and 2 million each for S' and
+ * S'', for every kernel this CPU has; 1/10 of that under ASan.  The plain
+ * reference is computed once per query set and shared by the kernels.
+ */
+#include "th.h"
+#include "trigspline.h"
+#include "ts_internal.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define TF_SCALE 10
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define TF_SCALE 10
+#endif
+#endif
+#ifndef TF_SCALE
+#define TF_SCALE 1
+#endif
+
+#define EPS DBL_EPSILON
+#define TOL0 50.0
+#define TOL1 240.0
+#define TOL2 1200.0
+#define NREF 8 /* long-double check on every NREF-th query */
+
+static uint64_t rng = 0x243F6A8885A308D3u;
+static double urand(void)
+{
+    rng ^= rng << 13;
+    rng ^= rng >> 7;
+    rng ^= rng << 17;
+    return (double)(rng >> 11) * 0x1p-53;
+}
+
+/* Long-double S^(k) at θ of control values B (SPEC §2, (2.1)); derivatives in θ. */
+static long double ref_theta(const double B[4], long double th, int k)
+{
+    long double s = sinl(th), c = cosl(th), ms = 1.0L - s, mc = 1.0L - c;
+    long double b0 = B[0], b1 = B[1], b2 = B[2], b3 = B[3];
+    if (k == 0)
+        return ms * ms * ms * b0 + s * ms * (3 - s) * b1 + c * mc * (3 - c) * b2 + mc * mc * mc * b3;
+    if (k == 1)
+        return 3 * ms * ms * c * (b1 - b0) + 2 * s * c * (b2 - b1) + 3 * mc * mc * s * (b3 - b2);
+    return -(6 * ms * c * c + 3 * ms * ms * s) * (b1 - b0) + 2 * (c * c - s * s) * (b2 - b1) +
+           (6 * mc * s * s + 3 * mc * mc * c) * (b3 - b2);
+}
+
+/* Interval of x as the library defines it (largest i <= n-1 with x_i <= x). */
+static size_t interval_of(const ts_spline *s, double x)
+{
+    const double *X = ts_spline_x(s);
+    size_t lo = 0, hi = ts_spline_intervals(s);
+    while (hi - lo > 1) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (X[mid] <= x)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+typedef struct stats {
+    double worst[3];       /* max |fast − plain| / (ε M w^k) */
+    double worst_ref[3];   /* max |fast − long double| / (ε M w^k) */
+    double worst_plain[3]; /* max |plain − long double| / (ε M w^k) */
+    long count[3];
+} stats;
+
+/* A spline with hard features: h over 6 decades, |f| up to 1e6 with offsets
+ * (cancellation), a over 4 decades (B1 − B0 large or tiny), big slopes. */
+static ts_spline *random_spline(size_t np, int kind, int form)
+{
+    double *x = malloc(np * sizeof *x), *f = malloc(np * sizeof *f), *d = malloc(np * sizeof *d);
+    double *al = malloc((np - 1) * sizeof *al);
+    ts_spline *s = NULL;
+    if (!x || !f || !d || !al) {
+        CHECK(!"out of memory in the test");
+        goto done;
+    }
+    x[0] = kind == 2 ? 1e6 : -3.0;
+    for (size_t i = 1; i < np; i++)
+        x[i] = x[i - 1] + (kind == 1 ? pow(10.0, -3.0 + 6.0 * urand()) : 0.2 + urand());
+    for (size_t i = 0; i < np; i++) {
+        double base = kind == 2 ? 1e6 : kind == 3 ? -500.0 : 0.0;
+        f[i] = base + (kind == 2 ? 1e-3 : 10.0) * (urand() - 0.5);
+        d[i] = (kind == 3 ? 1e4 : 5.0) * (urand() - 0.5);
+    }
+    for (size_t i = 0; i + 1 < np; i++)
+        al[i] = pow(10.0, -2.0 + 4.0 * urand());
+    ts_options o;
+    ts_options_init(&o);
+    o.form = form ? TS_FORM_C1 : TS_FORM_PAPER;
+    o.slopes = TS_SLOPES_USER;
+    o.user_slopes = d;
+    o.n_user_slopes = np;
+    o.alphas = al;
+    o.n_alphas = np - 1;
+    ts_error e;
+    ts_status st = ts_spline_new(x, f, np, &o, &s, &e);
+    CHECKF(st == TS_OK, "random spline kind %d: %s at %zu", kind, ts_strerror(st), e.index);
+done:
+    free(x);
+    free(f);
+    free(d);
+    free(al);
+    return s;
+}
+
+/* One query set with its plain values, intervals and error units. */
+typedef struct qset {
+    const ts_spline *s;
+    size_t m;
+    const char *what;
+    double *q, *ref[3], *unit[3];
+    long double *lref[3]; /* every NREF-th query */
+} qset;
+
+static int qset_fill(qset *Q)
+{
+    const double *X = ts_spline_x(Q->s);
+    for (int k = 0; k < 3; k++) {
+        Q->ref[k] = malloc(Q->m * sizeof(double));
+        Q->unit[k] = malloc(Q->m * sizeof(double));
+        Q->lref[k] = malloc((Q->m / NREF + 1) * sizeof(long double));
+        if (!Q->ref[k] || !Q->unit[k] || !Q->lref[k])
+            return 0;
+    }
+    long bad = 0;
+    for (size_t j = 0; j < Q->m; j++) {
+        double o[3], B[4];
+        bad += ts_eval_deriv(Q->s, Q->q[j], NULL, &o[0], &o[1], &o[2]) != TS_OK;
+        size_t i = interval_of(Q->s, Q->q[j]);
+        ts_spline_control(Q->s, i, B, NULL);
+        double M = fmax(fmax(fabs(B[0]), fabs(B[1])), fmax(fabs(B[2]), fabs(B[3])));
+        double w = (3.14159265358979323846 / 2) / (X[i + 1] - X[i]);
+        for (int k = 0; k < 3; k++) {
+            Q->ref[k][j] = o[k];
+            Q->unit[k][j] = EPS * M * (k == 0 ? 1.0 : k == 1 ? w : w * w);
+        }
+        if (j % NREF == 0) {
+            long double th = (long double)((Q->q[j] - X[i]) * w); /* the double θ both paths use */
+            for (int k = 0; k < 3; k++)
+                Q->lref[k][j / NREF] = ref_theta(B, th, k) * (k == 0 ? 1.0L : k == 1 ? (long double)w
+                                                                                   : (long double)w * w);
+        }
+    }
+    CHECKF(bad == 0, "%s: ts_eval_deriv failed at %ld queries", Q->what, bad);
+    return 1;
+}
+
+static void qset_free(qset *Q)
+{
+    for (int k = 0; k < 3; k++) {
+        free(Q->ref[k]);
+        free(Q->unit[k]);
+        free(Q->lref[k]);
+    }
+}
+
+/* Kernel isa on the first m queries of Q for derivative deriv. */
+static void compare(const qset *Q, size_t m, int deriv, int isa, stats *S)
+{
+    double *y = malloc(m * sizeof *y);
+    if (!y) {
+        CHECK(!"out of memory in the test");
+        return;
+    }
+    ts_cursor cur = TS_CURSOR_INIT;
+    CHECK(ts__fast_batch_isa(Q->s, deriv, Q->q, m, y, &cur, isa) == 1);
+    double tol = deriv == 0 ? TOL0 : deriv == 1 ? TOL1 : TOL2;
+    long bad = 0;
+    size_t first = 0;
+    for (size_t j = 0; j < m; j++) {
+        double e = fabs(y[j] - Q->ref[deriv][j]) / Q->unit[deriv][j];
+        if (!(e <= tol) && !bad++)
+            first = j;
+        if (e > S->worst[deriv])
+            S->worst[deriv] = e;
+        if (j % NREF == 0) {
+            long double r = Q->lref[deriv][j / NREF];
+            double er = (double)fabsl((long double)y[j] - r) / Q->unit[deriv][j];
+            double ep = (double)fabsl((long double)Q->ref[deriv][j] - r) / Q->unit[deriv][j];
+            S->worst_ref[deriv] = fmax(S->worst_ref[deriv], er);
+            S->worst_plain[deriv] = fmax(S->worst_plain[deriv], ep);
+        }
+    }
+    S->count[deriv] += (long)m;
+    CHECKF(bad == 0, "kernel %d %s deriv %d: %ld queries off, first x = %.17g: fast %.17g plain %.17g", isa,
+           Q->what, deriv, bad, Q->q[first], y[first], Q->ref[deriv][first]);
+    /* the cursor ends on the last query's interval */
+    CHECKF(cur.interval == interval_of(Q->s, Q->q[m - 1]), "kernel %d %s: cursor %zu, want %zu", isa, Q->what,
+           cur.interval, interval_of(Q->s, Q->q[m - 1]));
+    free(y);
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return x < y ? -1 : x > y;
+}
+
+static int have_kernel(int isa)
+{
+    ts_spline *probe = random_spline(3, 0, 0);
+    double q = 0.0, y;
+    int have = probe && ts__fast_batch_isa(probe, 0, &q, 0, &y, NULL, isa);
+    ts_spline_free(probe);
+    return have;
+}
+
+static void accuracy(void)
+{
+    const size_t per = 10000000 / 12 / TF_SCALE + 1; /* 6 splines × (random, sorted) */
+    int have[3];
+    stats S[3];
+    memset(S, 0, sizeof S);
+    for (int isa = 0; isa <= 2; isa++) {
+        have[isa] = have_kernel(isa);
+        if (!have[isa])
+            printf("test_fast: kernel %d not available on this CPU (skipped)\n", isa);
+    }
+    CHECK(have[0]); /* the portable kernel always exists */
+    rng = 0x243F6A8885A308D3u;
+    for (int kind = 0; kind < 6; kind++) {
+        ts_spline *s = random_spline(kind == 5 ? 20001 : 201, kind % 4, kind >= 4);
+        if (!s)
+            continue;
+        const double *X = ts_spline_x(s);
+        size_t n = ts_spline_intervals(s);
+        for (int sorted = 0; sorted <= 1; sorted++) {
+            qset Q = {s, per, sorted ? "sorted" : "random", malloc(per * sizeof(double)), {0}, {0}, {0}};
+            if (!Q.q) {
+                CHECK(!"out of memory in the test");
+                continue;
+            }
+            for (size_t j = 0; j < per; j++) {
+                if (j % 97 == 0) /* knots exactly: the right-hand interval */
+                    Q.q[j] = X[(size_t)(urand() * (double)(n + 1)) % (n + 1)];
+                else
+                    Q.q[j] = X[0] + (X[n] - X[0]) * urand();
+            }
+            if (sorted)
+                qsort(Q.q, per, sizeof *Q.q, cmp_double);
+            if (qset_fill(&Q)) {
+                for (int isa = 0; isa <= 2; isa++) {
+                    if (!have[isa])
+                        continue;
+                    compare(&Q, per, 0, isa, &S[isa]);
+                    compare(&Q, per / 5, 1, isa, &S[isa]);
+                    compare(&Q, per / 5, 2, isa, &S[isa]);
+                }
+            } else {
+                CHECK(!"out of memory in the test");
+            }
+            qset_free(&Q);
+            free(Q.q);
+        }
+        ts_spline_free(s);
+    }
+    for (int isa = 0; isa <= 2; isa++) {
+        if (!have[isa])
+            continue;
+        printf("test_fast: kernel %d: max |fast - plain| / (eps M w^k) = %.2f, %.2f, %.2f for S, S', S'' "
+               "(bounds %.0f, %.0f, %.0f) over %ld, %ld, %ld points\n",
+               isa, S[isa].worst[0], S[isa].worst[1], S[isa].worst[2], TOL0, TOL1, TOL2, S[isa].count[0],
+               S[isa].count[1], S[isa].count[2]);
+        printf("test_fast:   vs long double (every %dth): fast %.2f, %.2f, %.2f; plain %.2f, %.2f, %.2f\n",
+               NREF, S[isa].worst_ref[0], S[isa].worst_ref[1], S[isa].worst_ref[2], S[isa].worst_plain[0],
+               S[isa].worst_plain[1], S[isa].worst_plain[2]);
+        CHECK(S[isa].count[0] >= 10000000 / TF_SCALE);
+    }
+}
+
+int main(void)
+{
+    accuracy();
+    return th_report("test_fast");
+}

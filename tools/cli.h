@@ -1,0 +1,206 @@
+/* Internal interface of the trigspline command-line tool (the tools directory). */
+#ifndef TS_CLI_H
+#define TS_CLI_H
+
+#include "trigspline.h"
+#include "ts_io.h"
+#include "ts_plot.h"
+
+#include <stddef.h>
+
+/* Exit statuses (docs/dev/CLI_CONTRACT.md, docs/trigspline.1). */
+enum {
+    CLI_OK = 0,
+    CLI_USAGE = 1,      /* bad option or option value */
+    CLI_DATA = 2,       /* malformed input, or data the scheme refuses */
+    CLI_INFEASIBLE = 3, /* no beta keeps an interval inside the region */
+    CLI_VIOLATED = 4,   /* certify: the curve leaves the region */
+    CLI_IO = 5,         /* cannot read or write a file (or out of memory) */
+    CLI_HELP = -1       /* --help was printed: exit 0 */
+};
+
+typedef enum cli_cmd { CLI_FIT = 0, CLI_CERTIFY = 1, CLI_CURVE = 2 } cli_cmd;
+
+/* Samples per interval when --samples is absent. */
+#define CLI_DEFAULT_SAMPLES 50
+
+typedef struct cli_opts {
+    cli_cmd cmd;
+    const char *data; /* path, "-" = stdin */
+
+    int shape_set;
+    ts_shape shape;
+    int has_line, has_lower, has_upper;
+    ts_line line, lower, upper;
+
+    int alpha_set, beta_set, margin_set;
+    double alpha, beta, margin;
+    double *alphas, *betas; /* owned */
+    size_t n_alphas, n_betas;
+
+    int slopes_set;
+    ts_slopes slopes;
+    int c1, form_set;
+    ts_form form;
+
+    int samples_set;
+    size_t samples;
+    const char *at;
+    int deriv_set, deriv;
+    int extrap_set;
+    ts_extrap extrap;
+
+    const char *out; /* NULL = stdout */
+    int json;
+    const char *svg;
+    const char *title;
+    int show_control, points_only;
+
+    int columns_set;
+    size_t col_x, col_y; /* 0-based */
+    int no_stream;
+
+    /* curve */
+    int closed;
+    int param_set;
+    ts_param param;
+    int box_set;
+    double box[6]; /* xmin, xmax, ymin, ymax[, zmin, zmax]; ±inf = absent */
+    size_t n_box;
+} cli_opts;
+
+/* ---- cli_args.c ------------------------------------------------------ */
+const char *cli_cmd_name(cli_cmd c);
+/* Parse argv (after the sub-command).  Returns CLI_OK, CLI_USAGE (message
+ * printed) or CLI_HELP (help printed). */
+int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o);
+void cli_opts_free(cli_opts *o);
+void cli_print_help(cli_cmd cmd);
+void cli_print_main_help(void);
+/* Names of enum values as used on the command line and in JSON. */
+const char *cli_shape_name(ts_shape s);
+const char *cli_slopes_name(ts_slopes s);
+const char *cli_form_name(ts_form f);
+const char *cli_term_name(ts_term t);
+const char *cli_param_name(ts_param p);
+
+/* ---- cli_util.c ------------------------------------------------------ */
+#if defined(__GNUC__)
+#define CLI_PRINTF(a, b) __attribute__((format(printf, a, b)))
+#else
+#define CLI_PRINTF(a, b)
+#endif
+/* "trigspline: ..." on stderr. */
+void cli_error(const char *fmt, ...) CLI_PRINTF(1, 2);
+/* "trigspline CMD: ...", then the hint to --help; returns CLI_USAGE. */
+int cli_usage(cli_cmd cmd, const char *fmt, ...) CLI_PRINTF(2, 3);
+/* Shortest round-trip text of v (ts_format_double). */
+const char *cli_num(double v, char buf[TS_FMT_SIZE]);
+/* "y = M*x + C" into buf. */
+void cli_line_text(const ts_line *l, char *buf, size_t len);
+/* Exit status for a failed append (out of memory). */
+int cli_nomem(void);
+
+/* A JSON document being built (numbers shortest round-trip, NaN/Inf -> null). */
+typedef struct cli_json {
+    ts_plot_buf b;
+    int need_comma;
+    int nl; /* next separator starts a new line */
+    int failed;
+} cli_json;
+void cli_json_init(cli_json *j);
+void cli_json_free(cli_json *j);
+void cli_json_raw(cli_json *j, const char *s);
+void cli_json_nl(cli_json *j); /* put the next item on a new line */
+void cli_json_key(cli_json *j, const char *key); /* also writes the comma before */
+void cli_json_begin(cli_json *j, char c);        /* '{' or '[' as a value */
+void cli_json_end(cli_json *j, char c);          /* '}' or ']' */
+void cli_json_num(cli_json *j, double v);        /* as a value (comma handled) */
+void cli_json_uint(cli_json *j, unsigned long long v);
+void cli_json_bool(cli_json *j, int v);
+void cli_json_null(cli_json *j);
+void cli_json_str(cli_json *j, const char *s);
+/* key + value shorthands */
+void cli_json_knum(cli_json *j, const char *k, double v);
+void cli_json_kuint(cli_json *j, const char *k, unsigned long long v);
+void cli_json_kbool(cli_json *j, const char *k, int v);
+void cli_json_kstr(cli_json *j, const char *k, const char *s);
+void cli_json_kline(cli_json *j, const char *k, const ts_line *l); /* NULL -> null */
+
+/* Growable pair of double arrays. */
+typedef struct cli_xy {
+    double *x, *y;
+    size_t n, cap;
+    int failed;
+} cli_xy;
+void cli_xy_push(cli_xy *a, double x, double y);
+void cli_xy_free(cli_xy *a);
+
+/*
+ * Outputs of one command, written only when everything succeeded: the main
+ * output (text in memory, or a callback that streams rows) to -o / stdout and
+ * the SVG to --svg, each through a temporary file renamed into place.
+ * Returns CLI_OK or CLI_IO (message printed); nothing is left behind on failure.
+ */
+typedef int (*cli_writer_fn)(void *ctx, FILE *fp); /* 0 or an errno */
+
+/* An output: ts_out (temporary file + rename; "-" = stdout), except that an
+ * existing target that is not a regular file (/dev/null, a FIFO, /dev/stdout)
+ * is opened and written directly: renaming over it would replace the device. */
+typedef struct cli_out {
+    ts_out *o;
+    FILE *direct;
+} cli_out;
+/* 0 or an errno (message in msg). */
+int cli_out_open(cli_out *c, const char *path, char *msg, size_t len);
+FILE *cli_out_file(const cli_out *c);
+int cli_out_commit(cli_out *c, char *msg, size_t len);
+void cli_out_abort(cli_out *c);
+int cli_write_outputs(const char *out_path, const ts_plot_buf *text, cli_writer_fn fn,
+                      void *fn_ctx, const char *svg_path, const ts_plot_buf *svg);
+
+/* ---- cli_data.c ------------------------------------------------------ */
+typedef struct cli_data {
+    const char *name; /* for messages: the path, or "<stdin>" */
+    size_t n;         /* points */
+    size_t dim;       /* columns kept (2 for fit/certify; 2 or 3 for curve) */
+    double *col[3];   /* borrowed from t */
+    unsigned long long *line;
+    ts_table t;
+} cli_data;
+/* Read DATA: fit/certify keep two columns (x, f; --columns picks them);
+ * curve keeps 2 or 3.  Returns CLI_OK, CLI_DATA or CLI_IO (message printed). */
+int cli_read_data(const cli_opts *o, cli_data *d);
+void cli_data_free(cli_data *d);
+/* Report a ts_spline_new failure on points x[0..n) (lines[i] their lines,
+ * NULL if unknown) read from name.  Returns the exit status. */
+int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char *name,
+                           const double *x, const double *f,
+                           const unsigned long long *lines, size_t n, const ts_error *e,
+                           ts_status st, size_t index_offset);
+/* Map an I/O reader failure to an exit status (message printed). */
+int cli_report_io(const ts_io_error *e);
+
+/* ---- cli_fit.c ------------------------------------------------------- */
+/* Sampling: m points per interval of [i0, i1) (knots included, the right
+ * knot belongs to the next interval), plus x_{i1} when with_end.  The sink
+ * receives blocks; it returns 0 or an errno that stops the walk. */
+typedef int (*cli_sink)(void *ctx, const double *x, const double *y, size_t k);
+int cli_sample(const ts_spline *s, size_t i0, size_t i1, int with_end, size_t m, int deriv,
+               cli_sink sink, void *ctx);
+/* Fill opt from o (fit and certify).  Returns CLI_OK or CLI_USAGE. */
+int cli_fit_options(const cli_opts *o, ts_options *opt);
+int cli_fit(cli_opts *o);
+int cli_certify(cli_opts *o);
+
+/* ---- cli_stream.c ---------------------------------------------------- */
+/* 1 when fit can stream (CSV samples only, see cli_stream.c). */
+int cli_can_stream(const cli_opts *o);
+int cli_fit_stream(const cli_opts *o, const ts_options *opt);
+/* Test/tuning knobs of the streaming mode (environment variable
+ * TRIGSPLINE_CHUNK overrides the chunk size, for tests of chunk borders). */
+
+/* ---- cli_curve.c ----------------------------------------------------- */
+int cli_curve(cli_opts *o);
+
+#endif

@@ -1,0 +1,617 @@
+/* Command-line parsing and help texts (docs/dev/CLI_CONTRACT.md). */
+#include "cli.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+enum { F = 1u, C = 2u, V = 4u };
+
+typedef enum opt_id {
+    O_SHAPE, O_LINE, O_LOWER, O_UPPER, O_ALPHA, O_BETA, O_ALPHAS, O_BETAS, O_MARGIN,
+    O_SLOPES, O_C1, O_FORM, O_SAMPLES, O_AT, O_DERIV, O_EXTRAP, O_OUT, O_JSON, O_SVG,
+    O_TITLE, O_SHOWCTL, O_POINTSONLY, O_COLUMNS, O_NOSTREAM, O_CLOSED, O_PARAM, O_BOX,
+    O_HELP
+} opt_id;
+
+typedef struct optdef {
+    const char *name;
+    int has_arg;
+    unsigned cmds;
+    opt_id id;
+} optdef;
+
+static const optdef opts[] = {
+    {"--shape", 1, F | C, O_SHAPE},
+    {"--line", 1, F | C, O_LINE},
+    {"--lower", 1, F | C, O_LOWER},
+    {"--upper", 1, F | C, O_UPPER},
+    {"--alpha", 1, F | C | V, O_ALPHA},
+    {"--beta", 1, F | C | V, O_BETA},
+    {"--alphas", 1, F | C | V, O_ALPHAS},
+    {"--betas", 1, F | C | V, O_BETAS},
+    {"--margin", 1, F | V, O_MARGIN},
+    {"--slopes", 1, F | C | V, O_SLOPES},
+    {"--c1", 0, F | C, O_C1},
+    {"--form", 1, F | C, O_FORM},
+    {"--samples", 1, F | C | V, O_SAMPLES},
+    {"--at", 1, F, O_AT},
+    {"--derivative", 1, F, O_DERIV},
+    {"--extrapolate", 1, F, O_EXTRAP},
+    {"-o", 1, F | C | V, O_OUT},
+    {"--output", 1, F | C | V, O_OUT},
+    {"--json", 0, F | C | V, O_JSON},
+    {"--svg", 1, F | C | V, O_SVG},
+    {"--title", 1, F | C | V, O_TITLE},
+    {"--show-control", 0, F | C | V, O_SHOWCTL},
+    {"--points-only", 0, F | C | V, O_POINTSONLY},
+    {"--columns", 1, F | C, O_COLUMNS},
+    {"--no-stream", 0, F, O_NOSTREAM},
+    {"--closed", 0, V, O_CLOSED},
+    {"--param", 1, V, O_PARAM},
+    {"--box", 1, V, O_BOX},
+    {"--help", 0, F | C | V, O_HELP},
+    {"-h", 0, F | C | V, O_HELP},
+};
+
+/* ---- names ------------------------------------------------------------ */
+
+static const char *const shape_names[] = {"none", "positive", "above", "below", "between",
+                                          "monotone"};
+static const char *const slopes_names[] = {"arithmetic", "geometric", "harmonic",
+                                           "fritsch-carlson", "akima", "makima",
+                                           "user", "periodic"};
+static const char *const form_names[] = {"paper", "c1", "geometric"};
+static const char *const term_names[] = {"user", "margin", "lower-left", "lower-right",
+                                         "upper-left", "upper-right", "monotone", "certify",
+                                         "geometric"};
+static const char *const param_names[] = {"centripetal", "chord", "uniform"};
+static const char *const extrap_names[] = {"error", "clamp", "extend", "linear"};
+
+#define NELEM(a) (sizeof(a) / sizeof((a)[0]))
+
+const char *cli_cmd_name(cli_cmd c)
+{
+    return c == CLI_FIT ? "fit" : c == CLI_CERTIFY ? "certify" : "curve";
+}
+const char *cli_shape_name(ts_shape s)
+{
+    return (size_t)s < NELEM(shape_names) ? shape_names[s] : "?";
+}
+const char *cli_slopes_name(ts_slopes s)
+{
+    return (size_t)s < NELEM(slopes_names) ? slopes_names[s] : "?";
+}
+const char *cli_form_name(ts_form f)
+{
+    return (size_t)f < NELEM(form_names) ? form_names[f] : "?";
+}
+const char *cli_term_name(ts_term t)
+{
+    return (size_t)t < NELEM(term_names) ? term_names[t] : "?";
+}
+const char *cli_param_name(ts_param p)
+{
+    return (size_t)p < NELEM(param_names) ? param_names[p] : "?";
+}
+
+/* Index of s in names[0..n), or -1. */
+static int lookup(const char *s, const char *const *names, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (strcmp(s, names[i]) == 0)
+            return (int)i;
+    return -1;
+}
+
+/* ---- values ----------------------------------------------------------- */
+
+/* A whole-string number; allow_inf: ±inf accepted. 0 on failure. */
+static int parse_number(const char *s, size_t len, int allow_inf, double *v)
+{
+    const char *stop;
+    if (len == 0)
+        return 0;
+    ts_num_status st = ts_parse_double(s, s + len, v, &stop);
+    if (stop != s + len)
+        return 0;
+    if (st == TS_NUM_OK)
+        return 1;
+    if (st == TS_NUM_NONFINITE && allow_inf && isinf(*v))
+        return 1;
+    return 0;
+}
+
+/* Comma-separated numbers into a new array (at least one). 0 on failure
+ * (*bad = the offending field, or NULL for out of memory). */
+static int parse_list(const char *s, int allow_inf, double **out, size_t *n, char *bad,
+                      size_t badlen)
+{
+    size_t cnt = 1;
+    for (const char *p = s; *p; p++)
+        cnt += *p == ',';
+    double *a = malloc(cnt * sizeof *a);
+    if (!a) {
+        snprintf(bad, badlen, "(out of memory)");
+        return 0;
+    }
+    const char *p = s;
+    for (size_t i = 0; i < cnt; i++) {
+        const char *e = strchr(p, ',');
+        size_t len = e ? (size_t)(e - p) : strlen(p);
+        while (len && (*p == ' ' || *p == '\t'))
+            p++, len--;
+        while (len && (p[len - 1] == ' ' || p[len - 1] == '\t'))
+            len--;
+        if (!parse_number(p, len, allow_inf, &a[i])) {
+            snprintf(bad, badlen, "\"%.*s\"", (int)(len > 40 ? 40 : len), p);
+            free(a);
+            return 0;
+        }
+        p = e ? e + 1 : p + len;
+    }
+    *out = a;
+    *n = cnt;
+    return 1;
+}
+
+static int parse_size(const char *s, size_t *v)
+{
+    if (!*s)
+        return 0;
+    unsigned long long acc = 0;
+    for (const char *p = s; *p; p++) {
+        if (*p < '0' || *p > '9')
+            return 0;
+        if (acc > (unsigned long long)SIZE_MAX / 10)
+            return 0;
+        acc = acc * 10 + (unsigned long long)(*p - '0');
+        if (acc > (unsigned long long)SIZE_MAX)
+            return 0;
+    }
+    *v = (size_t)acc;
+    return 1;
+}
+
+static int parse_line_opt(cli_cmd cmd, const char *name, const char *s, ts_line *l)
+{
+    double *a = NULL;
+    size_t n = 0;
+    char bad[64];
+    if (!parse_list(s, 0, &a, &n, bad, sizeof bad))
+        return cli_usage(cmd, "%s expects M,C (slope and intercept of y = M*x + C), found %s in \"%s\"",
+                         name, bad, s);
+    if (n != 2) {
+        free(a);
+        return cli_usage(cmd, "%s expects two numbers M,C, found %zu in \"%s\"", name, n, s);
+    }
+    l->m = a[0];
+    l->c = a[1];
+    free(a);
+    return CLI_OK;
+}
+
+static int parse_positive_list(cli_cmd cmd, const char *name, const char *s, int allow_zero,
+                               double **out, size_t *n)
+{
+    char bad[64];
+    free(*out);
+    *out = NULL;
+    if (!parse_list(s, 0, out, n, bad, sizeof bad))
+        return cli_usage(cmd, "%s expects comma-separated numbers, found %s", name, bad);
+    for (size_t i = 0; i < *n; i++) {
+        double v = (*out)[i];
+        if (!(allow_zero ? v >= 0.0 : v > 0.0)) {
+            char b[TS_FMT_SIZE];
+            return cli_usage(cmd, "%s: value %zu is %s, must be %s", name, i + 1, cli_num(v, b),
+                             allow_zero ? ">= 0" : "> 0");
+        }
+    }
+    return CLI_OK;
+}
+
+static int parse_scalar(cli_cmd cmd, const char *name, const char *s, int allow_zero, double *v)
+{
+    if (!parse_number(s, strlen(s), 0, v))
+        return cli_usage(cmd, "%s expects a finite number, found \"%s\"", name, s);
+    if (!(allow_zero ? *v >= 0.0 : *v > 0.0))
+        return cli_usage(cmd, "%s must be %s, found %s", name, allow_zero ? ">= 0" : "> 0", s);
+    return CLI_OK;
+}
+
+static int parse_enum(cli_cmd cmd, const char *name, const char *s, const char *const *names,
+                      size_t n, size_t skip_mask, int *v)
+{
+    int k = lookup(s, names, n);
+    if (k >= 0 && !((skip_mask >> k) & 1u)) {
+        *v = k;
+        return CLI_OK;
+    }
+    char list[256] = "";
+    size_t len = 0;
+    for (size_t i = 0; i < n; i++) {
+        if ((skip_mask >> i) & 1u)
+            continue;
+        int w = snprintf(list + len, sizeof list - len, "%s%s", len ? "|" : "", names[i]);
+        if (w < 0 || (size_t)w >= sizeof list - len)
+            break;
+        len += (size_t)w;
+    }
+    return cli_usage(cmd, "%s: unknown value \"%s\" (expected %s)", name, s, list);
+}
+
+/* ---- parse ------------------------------------------------------------ */
+
+void cli_opts_free(cli_opts *o)
+{
+    if (!o)
+        return;
+    free(o->alphas);
+    free(o->betas);
+    o->alphas = o->betas = NULL;
+}
+
+static int apply(cli_cmd cmd, const optdef *d, const char *name, const char *v, cli_opts *o)
+{
+    int k, rc;
+    switch (d->id) {
+    case O_SHAPE:
+        rc = parse_enum(cmd, name, v, shape_names, NELEM(shape_names), 0, &k);
+        if (rc == CLI_OK) {
+            o->shape = (ts_shape)k;
+            o->shape_set = 1;
+        }
+        return rc;
+    case O_LINE:
+        o->has_line = 1;
+        return parse_line_opt(cmd, name, v, &o->line);
+    case O_LOWER:
+        o->has_lower = 1;
+        return parse_line_opt(cmd, name, v, &o->lower);
+    case O_UPPER:
+        o->has_upper = 1;
+        return parse_line_opt(cmd, name, v, &o->upper);
+    case O_ALPHA:
+        o->alpha_set = 1;
+        return parse_scalar(cmd, name, v, 0, &o->alpha);
+    case O_BETA:
+        o->beta_set = 1;
+        return parse_scalar(cmd, name, v, 1, &o->beta);
+    case O_ALPHAS:
+        return parse_positive_list(cmd, name, v, 0, &o->alphas, &o->n_alphas);
+    case O_BETAS:
+        return parse_positive_list(cmd, name, v, 1, &o->betas, &o->n_betas);
+    case O_MARGIN:
+        o->margin_set = 1;
+        return parse_scalar(cmd, name, v, 0, &o->margin);
+    case O_SLOPES:
+        /* "user" is not offered on the command line */
+        rc = parse_enum(cmd, name, v, slopes_names, NELEM(slopes_names),
+                        1u << TS_SLOPES_USER, &k);
+        if (rc == CLI_OK) {
+            o->slopes = (ts_slopes)k;
+            o->slopes_set = 1;
+        }
+        return rc;
+    case O_C1:
+        o->c1 = 1;
+        return CLI_OK;
+    case O_FORM:
+        rc = parse_enum(cmd, name, v, form_names, NELEM(form_names), 0, &k);
+        if (rc == CLI_OK) {
+            o->form = (ts_form)k;
+            o->form_set = 1;
+        }
+        return rc;
+    case O_SAMPLES:
+        if (!parse_size(v, &o->samples) || o->samples < 2 || o->samples > 100000000)
+            return cli_usage(cmd, "%s expects an integer from 2 to 100000000, found \"%s\"",
+                             name, v);
+        o->samples_set = 1;
+        return CLI_OK;
+    case O_AT:
+        o->at = v;
+        return CLI_OK;
+    case O_DERIV:
+        if (strcmp(v, "0") && strcmp(v, "1") && strcmp(v, "2"))
+            return cli_usage(cmd, "%s expects 0, 1 or 2, found \"%s\"", name, v);
+        o->deriv = v[0] - '0';
+        o->deriv_set = 1;
+        return CLI_OK;
+    case O_EXTRAP:
+        rc = parse_enum(cmd, name, v, extrap_names, NELEM(extrap_names), 0, &k);
+        if (rc == CLI_OK) {
+            o->extrap = (ts_extrap)k;
+            o->extrap_set = 1;
+        }
+        return rc;
+    case O_OUT:
+        if (!*v)
+            return cli_usage(cmd, "%s: empty file name", name);
+        o->out = v;
+        return CLI_OK;
+    case O_JSON:
+        o->json = 1;
+        return CLI_OK;
+    case O_SVG:
+        if (!*v || strcmp(v, "-") == 0)
+            return cli_usage(cmd, "%s needs a file name", name);
+        o->svg = v;
+        return CLI_OK;
+    case O_TITLE:
+        o->title = v;
+        return CLI_OK;
+    case O_SHOWCTL:
+        o->show_control = 1;
+        return CLI_OK;
+    case O_POINTSONLY:
+        o->points_only = 1;
+        return CLI_OK;
+    case O_COLUMNS: {
+        const char *comma = strchr(v, ',');
+        size_t a = 0, b = 0;
+        char tmp[32];
+        size_t la = comma ? (size_t)(comma - v) : 0;
+        if (!comma || la == 0 || la >= sizeof tmp)
+            return cli_usage(cmd, "%s expects X,Y (1-based column numbers), found \"%s\"", name, v);
+        memcpy(tmp, v, la);
+        tmp[la] = '\0';
+        if (!parse_size(tmp, &a) || !parse_size(comma + 1, &b) || a < 1 || b < 1)
+            return cli_usage(cmd, "%s expects X,Y (1-based column numbers), found \"%s\"", name, v);
+        if (a == b)
+            return cli_usage(cmd, "%s: X and Y must be different columns", name);
+        o->col_x = a - 1;
+        o->col_y = b - 1;
+        o->columns_set = 1;
+        return CLI_OK;
+    }
+    case O_NOSTREAM:
+        o->no_stream = 1;
+        return CLI_OK;
+    case O_CLOSED:
+        o->closed = 1;
+        return CLI_OK;
+    case O_PARAM:
+        rc = parse_enum(cmd, name, v, param_names, NELEM(param_names), 0, &k);
+        if (rc == CLI_OK) {
+            o->param = (ts_param)k;
+            o->param_set = 1;
+        }
+        return rc;
+    case O_BOX: {
+        double *a = NULL;
+        size_t n = 0;
+        char bad[64];
+        if (!parse_list(v, 1, &a, &n, bad, sizeof bad))
+            return cli_usage(cmd, "%s expects XMIN,XMAX,YMIN,YMAX[,ZMIN,ZMAX] (inf for none), found %s",
+                             name, bad);
+        if (n != 4 && n != 6) {
+            free(a);
+            return cli_usage(cmd, "%s expects 4 numbers (or 6 for 3-D data), found %zu", name, n);
+        }
+        for (size_t i = 0; i < n; i += 2) {
+            if (isinf(a[i]) && a[i] > 0.0) {
+                free(a);
+                return cli_usage(cmd, "%s: a lower bound cannot be +inf", name);
+            }
+            if (isinf(a[i + 1]) && a[i + 1] < 0.0) {
+                free(a);
+                return cli_usage(cmd, "%s: an upper bound cannot be -inf", name);
+            }
+            if (!(a[i] < a[i + 1])) {
+                free(a);
+                return cli_usage(cmd, "%s: each minimum must be below its maximum", name);
+            }
+        }
+        memcpy(o->box, a, n * sizeof *a);
+        o->n_box = n;
+        o->box_set = 1;
+        free(a);
+        return CLI_OK;
+    }
+    case O_HELP:
+        break;
+    }
+    return CLI_OK;
+}
+
+int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o)
+{
+    unsigned bit = cmd == CLI_FIT ? F : cmd == CLI_CERTIFY ? C : V;
+    int only_args = 0;
+    memset(o, 0, sizeof *o);
+    o->cmd = cmd;
+    o->samples = CLI_DEFAULT_SAMPLES;
+    o->slopes = TS_SLOPES_ARITHMETIC;
+    o->alpha = 1.0;
+    o->margin = TS_DEFAULT_MARGIN;
+    o->param = TS_PARAM_CENTRIPETAL;
+    for (int i = 0; i < argc; i++) {
+        const char *a = argv[i];
+        if (only_args || a[0] != '-' || strcmp(a, "-") == 0) {
+            if (o->data)
+                return cli_usage(cmd, "more than one data file (\"%s\" and \"%s\")", o->data, a);
+            o->data = a;
+            continue;
+        }
+        if (strcmp(a, "--") == 0) {
+            only_args = 1;
+            continue;
+        }
+        const char *eq = strncmp(a, "--", 2) == 0 ? strchr(a, '=') : NULL;
+        size_t nlen = eq ? (size_t)(eq - a) : strlen(a);
+        const optdef *d = NULL;
+        for (size_t k = 0; k < NELEM(opts); k++)
+            if (strlen(opts[k].name) == nlen && strncmp(opts[k].name, a, nlen) == 0) {
+                d = &opts[k];
+                break;
+            }
+        if (!d)
+            return cli_usage(cmd, "unknown option \"%.*s\"", (int)nlen, a);
+        if (!(d->cmds & bit))
+            return cli_usage(cmd, "option %s is not available for \"%s\"", d->name,
+                             cli_cmd_name(cmd));
+        if (d->id == O_HELP) {
+            cli_print_help(cmd);
+            return CLI_HELP;
+        }
+        const char *val = NULL;
+        if (d->has_arg) {
+            if (eq)
+                val = eq + 1;
+            else if (i + 1 < argc)
+                val = argv[++i];
+            else
+                return cli_usage(cmd, "option %s needs a value", d->name);
+        } else if (eq) {
+            return cli_usage(cmd, "option %s takes no value", d->name);
+        }
+        int rc = apply(cmd, d, d->name, val, o);
+        if (rc != CLI_OK)
+            return rc;
+    }
+    if (!o->data)
+        o->data = "-";
+    if (o->c1) {
+        if (o->form_set && o->form != TS_FORM_C1)
+            return cli_usage(cmd, "--c1 contradicts --form %s", cli_form_name(o->form));
+        o->form = TS_FORM_C1;
+        o->form_set = 1;
+    }
+    return CLI_OK;
+}
+
+/* ---- help ------------------------------------------------------------- */
+
+static const char exit_text[] =
+    "Exit status:\n"
+    "  0  success (certify: every interval certified)\n"
+    "  1  usage error: unknown option, bad option value, options that do not fit together\n"
+    "  2  bad data: malformed input (FILE:LINE:COLUMN), too few points, x not increasing,\n"
+    "     or data the scheme refuses (the point, its line and its x are named)\n"
+    "  3  infeasible constraint: no beta keeps an interval inside the region (interval named)\n"
+    "  4  certify: the curve leaves the region (violating intervals listed on stderr)\n"
+    "  5  I/O error: cannot read or write a file (also out of memory)\n"
+    "On failure nothing is written: -o and --svg files are written to a temporary file\n"
+    "and renamed into place only on success.  (Exception: a long fit streamed to standard\n"
+    "output, see STREAMING in trigspline(1).)\n";
+
+void cli_print_main_help(void)
+{
+    printf("Usage: trigspline COMMAND [DATA] [OPTIONS]\n"
+           "\n"
+           "Shape-preserving interpolation with the GC1 cubic trigonometric spline.\n"
+           "\n"
+           "Commands:\n"
+           "  fit      fit a spline through (x, f) data, optionally kept positive, above,\n"
+           "           below or between lines, or monotone; write samples, JSON, SVG\n"
+           "  certify  check a spline with your own alpha, beta against boundaries\n"
+           "  curve    parametric curve through 2-D or 3-D points (open or closed)\n"
+           "\n"
+           "  trigspline COMMAND --help   options of a command\n"
+           "  trigspline --version        print the version\n"
+           "\n"
+           "DATA is a CSV, TSV or whitespace-separated table with an optional header and\n"
+           "# comments; \"-\" or no DATA reads standard input.\n"
+           "\n%s",
+           exit_text);
+}
+
+void cli_print_help(cli_cmd cmd)
+{
+    if (cmd == CLI_FIT) {
+        printf(
+            "Usage: trigspline fit [DATA] [OPTIONS]\n"
+            "\n"
+            "Fit the spline through the points (x, f) of DATA (two numeric columns; \"-\" or\n"
+            "none: standard input) and write samples as CSV \"x,y\" (shortest round-trip\n"
+            "numbers), or a JSON report, and optionally an SVG plot.\n"
+            "\n"
+            "Shape (SPEC section 5):\n"
+            "  --shape none|positive|above|below|between|monotone   (default none)\n"
+            "  --line M,C          the line y = M*x + C for --shape above or below\n"
+            "  --lower M,C         lower line (alone: implies above)\n"
+            "  --upper M,C         upper line (alone: implies below; with --lower: between)\n"
+            "  --margin T          margin t added to beta (default 0.01; shape schemes only)\n"
+            "Parameters:\n"
+            "  --alpha A           alpha on every interval (default 1, > 0)\n"
+            "  --alphas A0,A1,...  alpha per interval (exactly one value per interval)\n"
+            "  --beta B            beta on every interval (default 0; only with --shape none)\n"
+            "  --betas B0,B1,...   beta per interval (only with --shape none)\n"
+            "  --slopes arithmetic|geometric|harmonic|fritsch-carlson|akima|makima|periodic\n"
+            "                      slope estimate at the knots (default arithmetic)\n"
+            "  --form paper|c1|geometric   spline form (default paper); --c1 = --form c1\n"
+            "Output:\n"
+            "  --samples N         points per interval, knots included (default 50)\n"
+            "  --at FILE           evaluate at the x values of FILE (first column) instead\n"
+            "  --derivative 0|1|2  print S, S' or S'' (default 0)\n"
+            "  --extrapolate error|clamp|extend|linear   queries of --at outside the data\n"
+            "                      (default error)\n"
+            "  -o, --output FILE   write there instead of standard output\n"
+            "  --json              a JSON report instead of CSV: knots, slopes, per interval\n"
+            "                      alpha, beta, control values and certificate\n"
+            "  --svg FILE          plot: data, curve, constraint lines with the forbidden\n"
+            "                      region shaded, legend\n"
+            "  --title TEXT        plot title\n"
+            "  --show-control      also plot the control polygon\n"
+            "  --points-only       plot only the data (and the constraint lines)\n"
+            "  --columns X,Y       take x and f from these columns (1-based) of a wider table\n"
+            "  --no-stream         never stream (see below)\n"
+            "\n"
+            "Long inputs are processed in constant memory when the output is CSV samples and\n"
+            "none of --json, --svg, --at, --alphas, --betas, --slopes periodic is given:\n"
+            "the data are read and checked in chunks as they stream.  An error found after\n"
+            "output has started is reported with its line; what was already written to\n"
+            "standard output is then incomplete (with -o the file is not created).\n"
+            "\n%s",
+            exit_text);
+    } else if (cmd == CLI_CERTIFY) {
+        printf(
+            "Usage: trigspline certify [DATA] --alpha A --beta B BOUNDARY [OPTIONS]\n"
+            "\n"
+            "Build the spline with your own alpha and beta (no scheme) and certify it: the\n"
+            "exact minimum distance to each boundary on every interval.\n"
+            "\n"
+            "Boundaries (at least one):\n"
+            "  --shape positive    the lower line y = 0\n"
+            "  --shape above --line M,C    lower line y = M*x + C (same as --lower M,C)\n"
+            "  --shape below --line M,C    upper line (same as --upper M,C)\n"
+            "  --lower M,C / --upper M,C   either or both (both: --shape between)\n"
+            "Parameters:\n"
+            "  --alpha A | --alphas A0,A1,...   (required, > 0)\n"
+            "  --beta B | --betas B0,B1,...     (required, >= 0)\n"
+            "  --slopes METHOD, --form paper|c1|geometric, --c1   as for fit\n"
+            "Output:\n"
+            "  a per-interval table (or --json, the same object as fit --json) on standard\n"
+            "  output or -o FILE; --svg FILE, --title TEXT, --show-control, --points-only and\n"
+            "  --samples N (for the plot and the JSON sample range) as for fit;\n"
+            "  --columns X,Y as for fit.\n"
+            "The violating intervals (index, x-range, minimum gap and where) are listed on\n"
+            "standard error and the exit status is 4; the report and plot are still\n"
+            "written (they are the result).\n"
+            "\n%s",
+            exit_text);
+    } else {
+        printf(
+            "Usage: trigspline curve [DATA] [OPTIONS]\n"
+            "\n"
+            "Parametric curve (SPEC section 7) through the points of DATA (2 or 3 columns).\n"
+            "Writes samples as CSV \"t,x,y\" (or \"t,x,y,z\").\n"
+            "\n"
+            "  --closed            closed curve (the first point may be repeated at the end)\n"
+            "  --param uniform|chord|centripetal   parameter knots (default centripetal)\n"
+            "  --alpha A, --beta B (defaults 1 and 0), --alphas/--betas per segment\n"
+            "  --slopes METHOD     as for fit (periodic: closed curves only)\n"
+            "  --box XMIN,XMAX,YMIN,YMAX[,ZMIN,ZMAX]   keep the curve inside the box\n"
+            "                      (inf / -inf: no bound on that side); beta is raised\n"
+            "                      where needed and the curve is certified\n"
+            "  --margin T          margin for the box rule (default 0.01)\n"
+            "  --samples N         points per segment, knots included (default 50)\n"
+            "  -o, --output FILE, --json, --svg FILE, --title TEXT, --show-control,\n"
+            "  --points-only       as for fit\n"
+            "\n%s",
+            exit_text);
+    }
+}
