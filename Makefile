@@ -39,8 +39,9 @@ bench: deps
 	  -lgsl -lgslcblas -lm -lpthread -o build-bench/bench
 	./build-bench/bench --cli build-bench/trigspline --out bench/RESULTS.md
 
+# The main job: reproduce the paper's numerical section (Figures 2-7) as one page.
 demo: build
-	./build/examples/table1
+	python3 scripts/paper_demo.py build/trigspline ../shared/data/paper out/paper
 
 clean:
 	rm -rf build build-asan build-bench out

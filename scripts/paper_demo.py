@@ -89,6 +89,8 @@ def interval_table(js):
 
 def panel(label, caption, args, note="", expect_fail=False):
     st, js, svg, err, cmd = run(args, "%s %s" % (label, caption))
+    if "--points-only" in args:
+        js = None  # a data panel: no curve, so no certificate to show
     shown = " ".join(shlex.quote(os.path.basename(a) if i == 0 or a.startswith(DATA) else a)
                      for i, a in enumerate(cmd[:-5]))
     parts = ['<div class="panel"><h4>(%s) %s</h4>' % (html.escape(label), html.escape(caption))]
@@ -167,20 +169,21 @@ if os.path.exists(notes_path):
     with open(notes_path, encoding="utf-8") as fh:
         txt = fh.read()
     m = re.search(r"<!-- demo-note -->(.*?)<!-- /demo-note -->", txt, re.S)
-    curve_note = html.escape((m.group(1) if m else "").strip())
+    curve_note = re.sub(r"`([^`]*)`", r"<code>\1</code>", html.escape((m.group(1) if m else "").strip()))
 
 for num, name in (("2", "fig2_closed.csv"), ("3", "fig3_closed.csv")):
     ps = []
-    for b in ("0.001", "0.01", "0.05", "1", "10"):
+    for b in ("0.001", "0.01", "0.05", "1", "10", "100"):
         extra = b not in ("0.001", "0.01", "0.05")
         cap = "α = 0.37, β = %s%s" % (b, " (beyond the paper: larger β)" if extra else "")
         ps.append(panel(chr(ord("a") + len(ps)), cap,
-                        ["curve", data(name), "--closed", "--alpha", "0.37", "--beta", b,
+                        ["curve", data(name), "--closed", "--param", "uniform", "--alpha", "0.37", "--beta", b,
                          "--show-control"])[0])
     sections.append(figure(num, "closed curve through %s" % name,
                            "The paper's closed example with α<sub>i</sub> = 0.37 and "
                            "β<sub>i</sub> ∈ {0.001, 0.01, 0.05}, plus two larger β to test its claim that "
-                           "the curve tends to a straight line as β grows. " + curve_note, ps))
+                           "the curve tends to a straight line as β grows (uniform parameter knots).</p>"
+                           '<p class="note"><b>What really happens.</b> ' + curve_note, ps))
 
 # ---- Figure 4: Table 1, positive ----------------------------------------
 t1 = data("table1_positive.csv")

@@ -1,35 +1,27 @@
 /* Batch evaluation kernels for the paper and C¹ forms (issue 6).
  *
- * ts__fast_batch works on blocks of TS_FAST_BLOCK queries:
- *  1. locate: a sorted block walks the cursor forward (galloping over gaps);
- *     an unsorted block runs one branch-free binary search per query, level
- *     by level over the whole block, so the cache misses of different
- *     queries overlap.  Same interval as ts__locate (largest i <= n-1 with
- *     x_i <= x: the right-hand interval at an inner knot).
- *  2. gather x_i, w_i = (π/2)/h_i (sp->fast, TS_FAST_STRIDE = 1), f_i, B1, B2,
- *     f_{i+1} into arrays on the stack (bounded: no allocation).
- *  3. a straight loop the compiler vectorises:
- *       θ = (x − x_i)·w_i                          (bitwise as eval.c)
- *       u = θ/2 ∈ [0, π/4]  (SPEC §1), z = u²
- *       σ = sin u, γ = cos u by the polynomials of bench/sincos_coeffs.py
- *           (truncation ≤ 5.4e-18; no range reduction needed)
- *       s = 2σγ,  c = (γ−σ)(γ+σ),  1−s = (γ−σ)²,  1−c = 2σ²   (no cancellation)
- *       S   = B0 + (1 − (1−s)³)(B1−B0) + s²(B2−B1) + (1−c)³(B3−B2)
- *             (Abel sum of SPEC §2: A1+A2+A3 = 1 − A0, A2+A3 = s², A3 = (1−c)³)
- *       S'  = 3(1−s)²c(B1−B0) + 2sc(B2−B1) + 3(1−c)²s(B3−B2)        SPEC (2.1)
- *       S'' = −(6(1−s)c² + 3(1−s)²s)(B1−B0) + 2(c²−s²)(B2−B1)
- *             + (6(1−c)s² + 3(1−c)²c)(B3−B2)
- *     times w (S') or w·w (S''), as eval.c.
+ * ts__fast_batch works on blocks of TS_FAST_BLOCK queries (no allocation: the
+ * block's scratch is on the stack, < 8 KiB):
+ *  1. stage: per query θ = (x − x_i)·w_i with w_i = (π/2)/h_i from sp->fast
+ *     (bitwise the θ of eval.c) and the interval's control values B0..B3.
+ *     The interval is ts__locate's (largest i <= n−1 with x_i <= x: the
+ *     right-hand one at an inner knot).  A sorted block walks the cursor,
+ *     keeping the current interval's values in registers and galloping over
+ *     gaps; an unsorted block runs one branch-free binary search per query,
+ *     all queries advancing one level at a time so their cache misses overlap.
+ *  2. a straight loop the compiler vectorises, θ in [0, π/2] (SPEC §1), no
+ *     range reduction: fast_trig gives s, c, 1−s, 1−c to <= 3u (u = 2⁻⁵³;
+ *     measured 1.3u), then SPEC §2 (value) or (2.1) and its θ-derivative,
+ *     times w or w·w as eval.c.
+ * Agreement with ts_eval_deriv: bounds derived and checked on 1e7 random
+ * points in tests/test_fast.c; measured |fast − plain| <= 3.9ε·M for the value
+ * (M = max|B_l| of the interval), <= 12ε·M·w for S', <= 35ε·M·w² for S''
+ * (both paths are equally far from a long-double reference).
  *
- * Agreement with ts_eval_deriv (bound derived in tests/test_fast.c, checked
- * there on 1e7 random points): |fast − plain| ≤ 8 ε·M for the value,
- * ≤ 8 ε·M·w for S', ≤ 16 ε·M·w² for S'', with ε = 2⁻⁵², M = max|B_l| of the
- * interval.  Measured maxima are printed by that test.
- *
- * On x86-64 with GCC or Clang the block kernel is also compiled for AVX2+FMA
- * and AVX-512F and picked at run time (__builtin_cpu_supports); everywhere
- * else, and with -DTS_FAST_PORTABLE, only the portable C version exists.
- * The geometric form (SPEC §4) is evaluated point by point by eval.c's path. */
+ * With GCC or Clang on x86-64 the pipeline is also compiled for AVX2+FMA and
+ * AVX-512F and chosen at run time (__builtin_cpu_supports); elsewhere, or with
+ * -DTS_FAST_PORTABLE, only the portable C version exists.  The geometric form
+ * (SPEC §4) goes point by point through ts_eval_deriv. */
 #include "ts_internal.h"
 
 #include <math.h>
@@ -48,7 +40,8 @@
 /* π/2 = TS_PIO2_HI + TS_PIO2_LO to ~1e-33 */
 #define TS_PIO2_HI 1.5707963267948966
 #define TS_PIO2_LO 6.123233995736766e-17
-/* bench/sincos_coeffs.py: sin u ≈ u + u z P(z), 1 − cos u ≈ z/2 − z² Q(z), u in [0, π/4] */
+/* bench/sincos_coeffs.py: sin u ≈ u + u z P(z), 1 − cos u ≈ z/2 − z² Q(z),
+ * z = u², u in [0, π/4]; truncation <= 5.4e-18 */
 #define TS_S1 -0.16666666666666605
 #define TS_S2 0.008333333333317107
 #define TS_S3 -0.00019841269826329964
@@ -64,15 +57,15 @@
 
 void ts__fast_prepare(ts_spline *sp)
 {
-    /* same expression as eval.c's eval_in, so θ is bitwise identical */
+    /* the expression of eval.c's eval_in, so θ is bitwise identical */
     for (size_t i = 0; i < sp->n; i++)
         sp->fast[i] = TS_HALF_PI / sp->h[i];
 }
 
 /* ---- locate ---------------------------------------------------------- */
 
-/* Largest k in [lo, hi-1] with xs[k] <= x, given xs[lo] <= x. */
-static size_t search_range(const double *xs, size_t lo, size_t hi, double x)
+/* Largest k in [lo, hi−1] with xs[k] <= x, given xs[lo] <= x. */
+TS_ALWAYS_INLINE size_t search_range(const double *xs, size_t lo, size_t hi, double x)
 {
     size_t len = hi - lo;
     while (len > 1) {
@@ -83,8 +76,8 @@ static size_t search_range(const double *xs, size_t lo, size_t hi, double x)
     return lo;
 }
 
-/* xs[i+1] <= x, i+1 < n: largest k <= n-1 with xs[k] <= x, by galloping. */
-static size_t gallop(const double *xs, size_t n, size_t i, double x)
+/* xs[i+1] <= x, i+1 < n: largest k <= n−1 with xs[k] <= x, by galloping. */
+TS_ALWAYS_INLINE size_t gallop(const double *xs, size_t n, size_t i, double x)
 {
     size_t lo = i + 1, step = 1;
     while (step < n - lo && xs[lo + step] <= x) {
@@ -95,37 +88,28 @@ static size_t gallop(const double *xs, size_t n, size_t i, double x)
     return search_range(xs, lo, hi, x);
 }
 
-/* Per query of a block: θ = (x − x_i)·w_i, w_i (derivatives only) and the
- * interval's control values B0..B3. */
+/* ---- stage ----------------------------------------------------------- */
+
+typedef struct fast_b4 {
+    double b0, b1, b2, b3;
+} fast_b4;
+
 typedef struct fast_stage {
-    double th[TS_FAST_BLOCK], w[TS_FAST_BLOCK];
-    double c0[TS_FAST_BLOCK], c1[TS_FAST_BLOCK], c2[TS_FAST_BLOCK], c3[TS_FAST_BLOCK];
+    double th[TS_FAST_BLOCK], w[TS_FAST_BLOCK]; /* w: derivatives only */
+    fast_b4 B[TS_FAST_BLOCK];
 } fast_stage;
 
-/* One interval's values, reloaded only when the interval changes. */
-typedef struct fast_iv {
-    double x0, x1, w, c0, c1, c2, c3;
-} fast_iv;
-
-static void load_iv(const ts_spline *sp, size_t i, fast_iv *v)
+TS_ALWAYS_INLINE fast_b4 control4(const ts_spline *sp, size_t i)
 {
-    v->x0 = sp->x[i];
-    v->x1 = i + 1 < sp->n ? sp->x[i + 1] : (double)INFINITY; /* the last interval never advances */
-    v->w = sp->fast[i];
-    v->c0 = sp->f[i];
-    v->c1 = sp->b1[i];
-    v->c2 = sp->b2[i];
-    v->c3 = sp->f[i + 1];
+    fast_b4 b = {sp->f[i], sp->b1[i], sp->b2[i], sp->f[i + 1]};
+    return b;
 }
 
-/* Stages q[0..nb) into st; i is the cursor; returns the last interval.
- * Sorted block: walk the cursor forward, galloping over gaps.  Otherwise one
- * branch-free binary search per query, all queries advancing one level at a
- * time so that their cache misses overlap. */
-static size_t stage_block(const ts_spline *sp, const double *q, size_t nb, int want_w,
-                          fast_stage *st, size_t i)
+/* Stages q[0..nb); i is the cursor; returns the last query's interval. */
+TS_ALWAYS_INLINE size_t stage_block(const ts_spline *sp, const double *q, size_t nb, int want_w,
+                                    fast_stage *st, size_t i)
 {
-    const double *xs = sp->x;
+    const double *xs = sp->x, *w = sp->fast;
     size_t n = sp->n;
     int sorted = 1;
     for (size_t j = 1; j < nb; j++)
@@ -133,23 +117,24 @@ static size_t stage_block(const ts_spline *sp, const double *q, size_t nb, int w
     if (sorted) {
         if (!(xs[i] <= q[0]))
             i = search_range(xs, 0, i + 1, q[0]);
-        fast_iv v;
-        load_iv(sp, i, &v);
+        /* the last interval never advances: x1 = +inf */
+        double x0 = xs[i], x1 = i + 1 < n ? xs[i + 1] : (double)INFINITY, wi = w[i];
+        fast_b4 b = control4(sp, i);
         for (size_t j = 0; j < nb; j++) {
             double x = q[j];
-            if (x >= v.x1) {
+            if (x >= x1) {
                 i++;
                 if (i + 1 < n && xs[i + 1] <= x)
                     i = gallop(xs, n, i, x);
-                load_iv(sp, i, &v);
+                x0 = xs[i];
+                x1 = i + 1 < n ? xs[i + 1] : (double)INFINITY;
+                wi = w[i];
+                b = control4(sp, i);
             }
-            st->th[j] = (x - v.x0) * v.w;
+            st->th[j] = (x - x0) * wi;
             if (want_w)
-                st->w[j] = v.w;
-            st->c0[j] = v.c0;
-            st->c1[j] = v.c1;
-            st->c2[j] = v.c2;
-            st->c3[j] = v.c3;
+                st->w[j] = wi;
+            st->B[j] = b;
         }
         return i;
     }
@@ -163,14 +148,10 @@ static size_t stage_block(const ts_spline *sp, const double *q, size_t nb, int w
         len -= half;
     }
     for (size_t j = 0; j < nb; j++) {
-        fast_iv v;
-        load_iv(sp, idx[j], &v);
-        st->th[j] = (q[j] - v.x0) * v.w;
-        st->w[j] = v.w;
-        st->c0[j] = v.c0;
-        st->c1[j] = v.c1;
-        st->c2[j] = v.c2;
-        st->c3[j] = v.c3;
+        size_t k = idx[j];
+        st->th[j] = (q[j] - xs[k]) * w[k];
+        st->w[j] = w[k];
+        st->B[j] = control4(sp, k);
     }
     return idx[nb - 1];
 }
@@ -197,21 +178,23 @@ TS_ALWAYS_INLINE void fast_trig(double th, double *s, double *c, double *ms, dou
     *mc = big ? oms : om;
 }
 
-TS_ALWAYS_INLINE void eval_body(int deriv, const fast_stage *st, size_t nb, double *y)
+TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, double *y)
 {
     if (deriv == 0) {
         for (size_t j = 0; j < nb; j++) {
             double s, c, ms, mc;
             fast_trig(st->th[j], &s, &c, &ms, &mc);
-            /* SPEC §2 */
-            y[j] = (ms * ms * ms) * st->c0[j] + (s * ms * (3.0 - s)) * st->c1[j] +
-                   (c * mc * (3.0 - c)) * st->c2[j] + (mc * mc * mc) * st->c3[j];
+            const fast_b4 *B = &st->B[j];
+            /* SPEC §2, the expressions of basis.c */
+            y[j] = (ms * ms * ms) * B->b0 + (s * ms * (3.0 - s)) * B->b1 +
+                   (c * mc * (3.0 - c)) * B->b2 + (mc * mc * mc) * B->b3;
         }
     } else if (deriv == 1) {
         for (size_t j = 0; j < nb; j++) {
             double s, c, ms, mc;
             fast_trig(st->th[j], &s, &c, &ms, &mc);
-            double d01 = st->c1[j] - st->c0[j], d12 = st->c2[j] - st->c1[j], d23 = st->c3[j] - st->c2[j];
+            const fast_b4 *B = &st->B[j];
+            double d01 = B->b1 - B->b0, d12 = B->b2 - B->b1, d23 = B->b3 - B->b2;
             /* SPEC (2.1) */
             double d = 3.0 * (ms * ms) * c * d01 + 2.0 * (s * c) * d12 + 3.0 * (mc * mc) * s * d23;
             y[j] = d * st->w[j];
@@ -220,7 +203,8 @@ TS_ALWAYS_INLINE void eval_body(int deriv, const fast_stage *st, size_t nb, doub
         for (size_t j = 0; j < nb; j++) {
             double s, c, ms, mc;
             fast_trig(st->th[j], &s, &c, &ms, &mc);
-            double d01 = st->c1[j] - st->c0[j], d12 = st->c2[j] - st->c1[j], d23 = st->c3[j] - st->c2[j];
+            const fast_b4 *B = &st->B[j];
+            double d01 = B->b1 - B->b0, d12 = B->b2 - B->b1, d23 = B->b3 - B->b2;
             /* d/dθ of (2.1) */
             double a0 = 6.0 * ms * (c * c) + 3.0 * (ms * ms) * s;
             double a3 = 6.0 * mc * (s * s) + 3.0 * (mc * mc) * c;
@@ -230,51 +214,60 @@ TS_ALWAYS_INLINE void eval_body(int deriv, const fast_stage *st, size_t nb, doub
     }
 }
 
-typedef void (*block_fn)(int, const fast_stage *, size_t, double *);
-
-static void eval_portable(int deriv, const fast_stage *st, size_t nb, double *y)
+/* The whole batch; i is the cursor; returns the last query's interval. */
+TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *xq, size_t m,
+                                 double *yq, size_t i)
 {
-    eval_body(deriv, st, nb, y);
+    fast_stage st;
+    for (size_t j0 = 0; j0 < m; j0 += TS_FAST_BLOCK) {
+        size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
+        i = stage_block(sp, xq + j0, nb, deriv > 0, &st, i);
+        eval_block(deriv, &st, nb, yq + j0);
+    }
+    return i;
+}
+
+typedef size_t (*pipeline_fn)(const ts_spline *, int, const double *, size_t, double *, size_t);
+
+static size_t pipeline_portable(const ts_spline *sp, int deriv, const double *xq, size_t m,
+                                double *yq, size_t i)
+{
+    return pipeline(sp, deriv, xq, m, yq, i);
 }
 
 #if TS_FAST_X86
-__attribute__((target("avx2,fma"))) static void eval_avx2(int deriv, const fast_stage *st,
-                                                          size_t nb, double *y)
+__attribute__((target("avx2,fma"))) static size_t
+pipeline_avx2(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t i)
 {
-    eval_body(deriv, st, nb, y);
+    return pipeline(sp, deriv, xq, m, yq, i);
 }
 
-__attribute__((target("avx512f,fma,prefer-vector-width=512"))) static void
-eval_avx512(int deriv, const fast_stage *st, size_t nb, double *y)
+__attribute__((target("avx512f,fma,prefer-vector-width=512"))) static size_t
+pipeline_avx512(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t i)
 {
-    eval_body(deriv, st, nb, y);
+    return pipeline(sp, deriv, xq, m, yq, i);
 }
 #endif
 
-/* isa: -1 best available, 0 portable, 1 AVX2+FMA, 2 AVX-512F; NULL if unavailable. */
-static block_fn pick(int isa)
+/* isa: −1 best available, 0 portable C, 1 AVX2+FMA, 2 AVX-512F; NULL if not here. */
+static pipeline_fn pick(int isa)
 {
     if (isa < -1 || isa > 2)
         return NULL;
 #if TS_FAST_X86
     __builtin_cpu_init();
-    int has512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("fma");
     int has2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
+    int has512 = has2 && __builtin_cpu_supports("avx512f");
     if ((isa == -1 || isa == 2) && has512)
-        return eval_avx512;
+        return pipeline_avx512;
     if ((isa == -1 || isa == 1) && has2)
-        return eval_avx2;
-    if (isa == 1 || isa == 2)
-        return NULL;
-#else
-    if (isa > 0)
-        return NULL;
+        return pipeline_avx2;
 #endif
-    return eval_portable;
+    return isa <= 0 ? pipeline_portable : NULL;
 }
 
 static void batch(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq,
-                  ts_cursor *cur, block_fn fn)
+                  ts_cursor *cur, pipeline_fn fn)
 {
     if (sp->form == TS_FORM_GEOMETRIC) {
         for (size_t j = 0; j < m; j++) {
@@ -284,13 +277,10 @@ static void batch(const ts_spline *sp, int deriv, const double *xq, size_t m, do
         }
         return;
     }
-    fast_stage st;
+    if (m == 0)
+        return;
     size_t i = cur && cur->interval < sp->n ? cur->interval : 0;
-    for (size_t j0 = 0; j0 < m; j0 += TS_FAST_BLOCK) {
-        size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
-        i = stage_block(sp, xq + j0, nb, deriv > 0, &st, i);
-        fn(deriv, &st, nb, yq + j0);
-    }
+    i = fn(sp, deriv, xq, m, yq, i);
     if (cur)
         cur->interval = i;
 }
@@ -304,7 +294,7 @@ void ts__fast_batch(const ts_spline *sp, int deriv, const double *xq, size_t m,
 int ts__fast_batch_isa(const ts_spline *sp, int deriv, const double *xq, size_t m,
                        double *yq, ts_cursor *cur, int isa)
 {
-    block_fn fn = pick(isa);
+    pipeline_fn fn = pick(isa);
     if (!fn)
         return 0;
     batch(sp, deriv, xq, m, yq, cur, fn);
