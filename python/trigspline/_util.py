@@ -136,6 +136,25 @@ def output_array(kind, shape, n):
     return ca, ca.owner
 
 
+def given_output(out, n):
+    """(CArray, out) writing straight into the caller's buffer: a writable
+    C-contiguous float64 numpy array or an array.array('d') of n elements."""
+    if np is not None and isinstance(out, np.ndarray):
+        if out.dtype != np.float64 or not out.flags.c_contiguous or not out.flags.writeable:
+            raise ValueError("out must be a writable C-contiguous float64 array")
+        if out.size != n:
+            raise ValueError("out has %d elements, the queries %d" % (out.size, n))
+        return CArray(out.ctypes.data_as(c_double_p), n, out), out
+    if isinstance(out, array.array) and out.typecode == "d":
+        if len(out) != n:
+            raise ValueError("out has %d elements, the queries %d" % (len(out), n))
+        if n == 0:
+            return c_doubles([]), out
+        addr, _ = out.buffer_info()
+        return CArray(ctypes.cast(addr, c_double_p), n, out), out
+    raise TypeError("out must be a numpy float64 array or an array.array('d')")
+
+
 def finish_output(kind, result, n):
     if kind == "list":
         return [result[i] for i in range(n)]

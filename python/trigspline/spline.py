@@ -5,12 +5,9 @@ import math
 from . import _ffi
 from ._ffi import lib
 from ._util import (EXTRAPS, FORMS, SHAPES, SLOPE_ALIASES, SLOPES, TERMS, c_doubles,
-                    enum_value, finish_output, float_list, input_array, is_scalar, num,
-                    output_array, to_float)
+                    enum_value, finish_output, float_list, given_output, input_array,
+                    is_scalar, num, output_array, to_float)
 from .errors import _S, TrigsplineError, domain_error, simple_error, spline_error, strerror
-
-_LINE_SHAPES = ("above", "below", "between")
-
 
 def _line(value, what):
     """(m, c) from any pair of numbers."""
@@ -292,13 +289,15 @@ class Spline(object):
         return list(B), list(X)
 
     # ---- evaluation -----------------------------------------------------
-    def __call__(self, x, derivative=0, *, threads=1):
+    def __call__(self, x, derivative=0, *, threads=1, out=None):
         """S(x), S'(x) or S''(x) (derivative = 0, 1, 2).
 
-        x: a number (returns a float), a numpy array (returns an array of the
-        same shape, evaluated in place without copying the input when it is
-        C-contiguous float64), an array.array('d') (returns one) or any other
-        sequence (returns a list).  threads != 1 splits a batch over threads
+        x: a number (returns a float), a numpy array (returns a new array of
+        the same shape; the input is read in place, without a copy, when it
+        is C-contiguous float64), an array.array('d') (returns one) or any
+        other sequence (returns a list).  out: a writable C-contiguous float64
+        numpy array or an array.array('d') with one element per query, filled
+        in place and returned.  threads != 1 splits a batch over threads
         (None or 0: all cores)."""
         h = self._handle()
         if derivative not in (0, 1, 2):
@@ -316,7 +315,11 @@ class Spline(object):
                 raise simple_error(st)
             return o[d].value
         xin, kind, shape = input_array(x, "x")
-        out, result = output_array(kind, shape, xin.n)
+        if out is None:
+            out, result = output_array(kind, shape, xin.n)
+        else:
+            out, result = given_output(out, xin.n)
+            kind = "given"
         err = _ffi.TsError()
         if threads == 1:
             st = lib.ts_eval_batch(h, d, xin.ptr, xin.n, out.ptr, None, ctypes.byref(err))
