@@ -53,7 +53,12 @@ void ts__basis_int(double theta, double s, double c, double I[4])
 
 void ts__seg_theta(const double B[4], double theta, int want, double out[3])
 {
-    double s = sin(theta), c = cos(theta), A[4];
+    ts__seg_sc(B, sin(theta), cos(theta), want, out);
+}
+
+void ts__seg_sc(const double B[4], double s, double c, int want, double out[3])
+{
+    double A[4];
     ts__basis(s, c, A);
     out[0] = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
     if (want > 0) {

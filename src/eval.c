@@ -47,8 +47,13 @@ static void eval_in(const ts_spline *sp, size_t i, double x, int want, double o[
     double h = sp->h[i], B[4];
     ts__B(sp, i, B);
     double w = TS_HALF_PI / h; /* dθ/dx */
-    double theta = (x - sp->x[i]) * w;
-    ts__seg_theta(B, theta, want, o);
+    double u = x - sp->x[i], v = sp->x[i + 1] - x;
+    /* θ from the nearer end: sin and cos of π/2 − θ' are exact at the right
+     * knot (s = 1, c = 0), so both knots are interpolated exactly. */
+    if (u <= v)
+        ts__seg_sc(B, sin(u * w), cos(u * w), want, o);
+    else
+        ts__seg_sc(B, cos(v * w), sin(v * w), want, o);
     o[1] *= w;
     o[2] *= w * w;
 }

@@ -9,9 +9,9 @@
 #define TS_PI 3.14159265358979323846
 #define TS_HALF_PI 1.57079632679489661923
 
-/* Doubles per interval reserved for fast.c's batch coefficients
- * (fast[i] = (π/2)/h_i). */
-#define TS_FAST_STRIDE 1
+/* Doubles per interval reserved for fast.c's batch coefficients: none (fast.c
+ * needs only x, h, f, b1, b2; every byte per knot costs construction time). */
+#define TS_FAST_STRIDE 0
 
 struct ts_spline {
     size_t n;            /* intervals */
@@ -45,6 +45,8 @@ void ts__basis_int(double theta, double s, double c, double I[4]);
 /* S, dS/dθ, d²S/dθ² of control values B at θ (out[0..2]; out[1], out[2]
  * computed only if want > 0, > 1). */
 void ts__seg_theta(const double B[4], double theta, int want, double out[3]);
+/* The same from (s, c) = (sin θ, cos θ) directly. */
+void ts__seg_sc(const double B[4], double s, double c, int want, double out[3]);
 
 /* ---- slopes.c (SPEC §6) -------------------------------------------- */
 /* Unchecked: x strictly increasing and finite, np >= 2, method valid. */

@@ -654,6 +654,8 @@ def gen_data(path, n, seed, kind):
                 f = 0.5 * x + rnd.uniform(0.08, 1.0)
             elif kind == "below":
                 f = 0.5 * x - rnd.uniform(0.08, 1.0)
+            elif kind == "spiky":  # gaps above y = 0.5x jump between tiny and large
+                f = 0.5 * x + rnd.choice([rnd.uniform(0.02, 0.1), rnd.uniform(3, 9)])
             elif kind == "tight":  # close above y = 0.5x: C1 repairs that travel
                 f = 0.5 * x + rnd.uniform(0.04, 0.3)
             elif kind == "between":  # inside 0.5x .. 0.5x + 2
@@ -697,6 +699,20 @@ def test_streaming_identical():
     rm, outm, errm = run(a + ["--no-stream"])
     check("stream C1 border rebuilt", "rebuilt" in errs, errs[:200])
     check("stream C1 border identical", rs == 0 and rm == 0 and outs == outm, errm[:200])
+    # infeasible intervals next to a chunk's cut (from its one-sided end slopes) are
+    # rebuilt with more context; real ones are still reported as in a whole build
+    gen_data(tmp("s_spiky.csv"), 300, 14, "spiky")
+    seen = ""
+    for sl in ("arithmetic", "akima"):
+        for form in ("paper", "c1"):
+            a = ["fit", tmp("s_spiky.csv"), "--shape", "above", "--line", "0.5,0", "--slopes", sl,
+                 "--form", form, "--samples", "3"]
+            rs, outs, errs = run(a, env={"TRIGSPLINE_CHUNK": "7", "TRIGSPLINE_DEBUG": "1"})
+            rm, outm, errm = run(a + ["--no-stream"])
+            seen += errs
+            check("stream spiky %s %s" % (sl, form), rs == rm and (rm != 0 or outs == outm)
+                  and errm in errs, "%d/%d %s | %s" % (rs, rm, errs[-200:], errm[:200]))
+    check("stream spiky: cut retries exercised", "right context" in seen, seen[:200])
     # default chunk size across several chunk borders, derivatives too
     gen_data(tmp("s_big.csv"), 12000, 5, "above")
     for extra in ([], ["--derivative", "2", "--c1"], ["--slopes", "akima", "--form",

@@ -184,8 +184,6 @@ static int check_output_opts(const cli_opts *o)
         return cli_usage(o->cmd, "--show-control and --points-only do not fit together");
     if (o->extrap_set && !o->at)
         return cli_usage(o->cmd, "--extrapolate only applies with --at FILE");
-    if (o->at && o->json && o->deriv_set && o->deriv != 0)
-        return CLI_OK;
     return CLI_OK;
 }
 
@@ -227,10 +225,8 @@ int cli_fit_options(const cli_opts *o, ts_options *opt)
         opt->beta = o->beta;
         opt->betas = o->betas;
         opt->n_betas = o->n_betas;
-        opt->certify = 0;
-        /* remember the boundaries in the unused fields' place: see certify_bounds */
-        (void)hl;
-        (void)hu;
+        /* the boundaries themselves: certify_bounds */
+        opt->lower.m = opt->lower.c = opt->upper.m = opt->upper.c = 0.0;
         return CLI_OK;
     }
     if ((rc = resolve_lines(o, &sh, &opt->lower, &hl, &opt->upper, &hu)) != CLI_OK)
@@ -477,7 +473,7 @@ static int plot_spline(const cli_opts *o, const char *name, const ts_spline *s, 
     st.color = COL_DATA;
     if (ps == TS_PLOT_OK)
         ps = ts_plot_add_points(p, ts_spline_x(s), ts_spline_f(s), n + 1, "data", &st);
-    if (ps == TS_PLOT_OK && bad && bad->n) {
+    if (ps == TS_PLOT_OK && bad && bad->n && !o->points_only) {
         memset(&st, 0, sizeof st);
         st.color = COL_BAD;
         st.marker_radius = 5.0;

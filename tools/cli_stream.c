@@ -231,7 +231,11 @@ static int chunk_build_right(stream *s, chunk *c)
             return rc;
         if (rc == ART_LEFT)
             return rc;
-        c->rctx *= 4;
+        c->rctx = c->rctx * 4 < CTX_MAX ? c->rctx * 4 : CTX_MAX;
+        if (s->debug)
+            fprintf(stderr, "trigspline: debug: chunk at interval %zu rebuilt with %zu points "
+                            "of right context (%s next to the cut)\n",
+                    c->e0, c->rctx, ts_strerror(c->st));
     }
 }
 
@@ -240,14 +244,16 @@ static int border_equal(const chunk *a, const chunk *b, size_t E)
 {
     size_t v = (a->rctx < b->lctx ? a->rctx : b->lctx) / 2;
     size_t lo = E > v ? E - v : 0, hi = E + v;
-    if (lo < a->wl)
-        lo = a->wl;
+    /* not beyond a's own intervals on the left (its left border was checked
+     * before) nor b's on the right */
+    if (lo < a->e0)
+        lo = a->e0;
     if (lo < b->wl)
         lo = b->wl;
+    if (hi > b->e1)
+        hi = b->e1;
     if (hi > a->wr)
         hi = a->wr;
-    if (hi > b->wr)
-        hi = b->wr;
     for (size_t g = lo; g < hi; g++) {
         double Ba[4], Xa[4], Bb[4], Xb[4], aa, ab;
         (void)ts_spline_control(a->s, g - a->wl, Ba, Xa);
@@ -386,7 +392,7 @@ int cli_fit_stream(const cli_opts *o, const ts_options *opt)
                 }
                 goto done;
             }
-            border *= 4;
+            border = border * 4 < CTX_MAX ? border * 4 : CTX_MAX;
             if (s.debug)
                 fprintf(stderr, "trigspline: debug: chunk border at interval %zu rebuilt with "
                                 "%zu points of context\n",
