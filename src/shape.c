@@ -184,19 +184,22 @@ ts_status ts__shape_apply(ts_spline *sp, const ts_options *opt, ts_error *err)
             /* SPEC §5 lower boundary: B1 - l > 0, B2 - l > 0 */
             double g0 = f[i] - line_at(&sp->lower, x[i]);
             double g1 = f[i + 1] - line_at(&sp->lower, x[i + 1]);
+            /* SPEC §4: geometric form, exact conditions Y_l - m X_l - c > 0 */
+            double ml = sp->form == TS_FORM_GEOMETRIC ? sp->lower.m : 0.0;
             if (g0 > 0.0)
-                TS_CONSIDER(-al - K * d[i] / g0, TS_TERM_LOWER_LEFT);
+                TS_CONSIDER(-al - K * (d[i] - ml) / g0, TS_TERM_LOWER_LEFT);
             if (g1 > 0.0)
-                TS_CONSIDER(-al + K * d[i + 1] / g1, TS_TERM_LOWER_RIGHT);
+                TS_CONSIDER(-al + K * (d[i + 1] - ml) / g1, TS_TERM_LOWER_RIGHT);
         }
         if (sp->has_upper) {
             /* SPEC §5 upper boundary, corrected signs (§5.3) */
             double G0 = line_at(&sp->upper, x[i]) - f[i];
             double G1 = line_at(&sp->upper, x[i + 1]) - f[i + 1];
+            double mu = sp->form == TS_FORM_GEOMETRIC ? sp->upper.m : 0.0;
             if (G0 > 0.0)
-                TS_CONSIDER(-al + K * d[i] / G0, TS_TERM_UPPER_LEFT);
+                TS_CONSIDER(-al + K * (d[i] - mu) / G0, TS_TERM_UPPER_LEFT);
             if (G1 > 0.0)
-                TS_CONSIDER(-al - K * d[i + 1] / G1, TS_TERM_UPPER_RIGHT);
+                TS_CONSIDER(-al - K * (d[i + 1] - mu) / G1, TS_TERM_UPPER_RIGHT);
         }
         if (shape == TS_SHAPE_MONOTONE) {
             /* SPEC §5.5: a_i >= 2(d_i + d_{i+1}) / (3π Δ_i) */
