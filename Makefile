@@ -40,6 +40,14 @@ bench: deps
 	./build-bench/bench --cli build-bench/trigspline --out bench/RESULTS.md
 
 # The main job: reproduce the paper's numerical section (Figures 2-7) as one page.
+# Convergence study (issue 7, docs/accuracy.md): prints the tables, rewrites the
+# results section of docs/accuracy.md and docs/accuracy.svg.  Compares with GSL.
+accuracy: build
+	@test -f /usr/include/gsl/gsl_interp.h || { apt-get update && apt-get install -y libgsl-dev; }
+	$(CC) -std=c11 -O2 -Wall -Wextra -Iinclude accuracy/accuracy.c build/libtrigspline.a \
+	  -lgsl -lgslcblas -lm -lpthread -o build/accuracy
+	./build/accuracy --doc docs/accuracy.md --svg docs/accuracy.svg
+
 demo: build
 	python3 scripts/paper_demo.py build/trigspline ../shared/data/paper out/paper
 

@@ -243,7 +243,8 @@ typedef enum ts_shape {
 typedef enum ts_extrap {
     TS_EXTRAP_ERROR = 0,  /* TS_ERR_DOMAIN (default) */
     TS_EXTRAP_CLAMP = 1,  /* value of the nearest end; derivatives 0 */
-    TS_EXTRAP_EXTEND = 2, /* the end segment's own formula continued (theta outside [0, pi/2]) */
+    TS_EXTRAP_EXTEND = 2, /* the end segment's own formula continued (theta outside [0, pi/2]);
+                             geometric form: the end's osculating parabola (see TS_FORM_GEOMETRIC) */
     TS_EXTRAP_LINEAR = 3  /* tangent line at the end (end value + one-sided end slope) */
 } ts_extrap;
 
@@ -447,7 +448,9 @@ ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size
                            double *yq, unsigned nthreads, ts_error *err);
 
 /*
- * Definite integral of S over [a, b] (b < a gives the negative), closed form.
+ * Definite integral of S over [a, b] (b < a gives the negative), closed form
+ * (geometric form: Gauss–Legendre exact to rounding inside an interval, see
+ * TS_FORM_GEOMETRIC).
  * a and b must lie in [x0, xn]: TS_ERR_DOMAIN otherwise (or NaN).  TS_ERR_NULL.
  */
 ts_status ts_integral(const ts_spline *s, double a, double b, double *out);
