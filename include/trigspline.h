@@ -389,7 +389,11 @@ typedef struct ts_interval_report {
  * positive intervals are also certified by B1, B2 >= 0 and B0, B3 > 0, and
  * an interval with a zero end (positive data with zeros) by all B_l >= 0;
  * its gap is then 0, attained at the zero knot.  Monotone intervals are
- * certified by a monotone control polygon and have no gap (NaN).
+ * certified by a monotone control polygon and have no gap (NaN).  In the
+ * geometric form a line interval (and ts_certify there) is also certified
+ * when every control gap Y_l - m X_l - c is positive (convex hull, SPEC §4),
+ * each evaluated to the rounding of the gap itself (fma and error-free sums),
+ * so a knot 1e-14 of |c| from the line is no obstacle; its guard likewise.
  */
 
 /* Report of interval i.  For shape schemes the boundaries are the scheme's

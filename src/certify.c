@@ -244,6 +244,36 @@ double ts__trig_min(const double C[4], double kappa, double *theta_min)
 /* Interval gaps                                                        */
 /* ------------------------------------------------------------------ */
 
+/* SPEC §4: one control gap sg·(Y − m X − c) of the geometric form, to the
+ * rounding of the gap itself (not of the line's size: a knot may lie 1e-14
+ * of |c| above the line).  m X = p + e exactly (fma), Y − p = s1 + e1 and
+ * s1 − c = s2 + e2 exactly (TwoSum), so the gap is s2 + e1 + e2 − e; the two
+ * roundings summing the small terms and the last one add
+ * ≤ u(1+u)(2(|e1| + |e2| + |e|) + |v|) < ε(...) (u = ε/2); *err is twice
+ * that, plus 4·2^-1074 for a subnormal e.  Overflow gives NaN/Inf: never
+ * above *err. */
+static double ctl_gap(double Y, double X, double m, double c, double sg, double *err)
+{
+    double p = m * X, e = fma(m, X, -p);
+    double s1 = Y - p, z1 = s1 - Y, e1 = (Y - (s1 - z1)) + (-p - z1);
+    double s2 = s1 - c, z2 = s2 - s1, e2 = (s1 - (s2 - z2)) + (-c - z2);
+    double v = s2 + ((e1 + e2) - e);
+    *err = 2.0 * TM_EPS * (fabs(e1) + fabs(e2) + fabs(e) + fabs(v)) + 4.0 * DBL_TRUE_MIN;
+    return sg * v;
+}
+
+/* SPEC §4, convex hull (S = Σ A_l Y_l, X = Σ A_l X_l, A_l >= 0, Σ A_l = 1):
+ * every control gap above its rounding proves the whole segment inside. */
+static int hull_inside(const double B[4], const double X[4], const ts_line *ln, int sign)
+{
+    int ok = 1;
+    for (int l = 0; l < 4; l++) {
+        double el, Cl = ctl_gap(B[l], X[l], ln->m, ln->c, sign > 0 ? 1.0 : -1.0, &el);
+        ok = ok && Cl > el;
+    }
+    return ok;
+}
+
 /* Gap of interval i with control values B (and abscissae X in the geometric
  * form, else NULL) to a line: sign +1 min of S − L, −1 min of L − S.
  * *guard receives the rounding guard of that value. */
@@ -255,12 +285,13 @@ static double gap_ctl(const ts_spline *sp, size_t i, const double B[4], const do
     for (int l = 0; l < 4; l++)
         if (fabs(B[l]) > bmax)
             bmax = fabs(B[l]);
+    double cerr = -1.0; /* geometric form: max rounding of the C_l */
     if (X) {
         /* SPEC §4: Y − L(X) = Σ A_l (Y_l − m X_l − c), exact */
         for (int l = 0; l < 4; l++) {
-            C[l] = sg * (B[l] - (m * X[l] + c));
-            if (fabs(X[l]) > xmax)
-                xmax = fabs(X[l]);
+            double el;
+            C[l] = ctl_gap(B[l], X[l], m, c, sg, &el);
+            cerr = el > cerr ? el : cerr;
         }
         kappa = 0.0;
     } else {
@@ -283,7 +314,7 @@ static double gap_ctl(const ts_spline *sp, size_t i, const double B[4], const do
         }
     }
     if (guard)
-        *guard = eb + 8.0 * TM_EPS * (bmax + fabs(m) * xmax + fabs(c));
+        *guard = eb + (X ? cerr : 8.0 * TM_EPS * (bmax + fabs(m) * xmax + fabs(c)));
     return g;
 }
 
@@ -320,13 +351,18 @@ typedef struct cert {
  *  positive, f_i, f_{i+1} > 0: B0, B3 > 0 and B1, B2 >= 0 give S > 0;
  *  positive with a zero end (promise S >= 0): all B_l >= 0;
  *  monotone: B monotone in the data's direction gives S' of that sign by
- *    (2.1) (and X monotone in the geometric form); no gaps (NaN);
- *  lines, geometric form only: every Y_l − m X_l − c above its guard. */
+ *    (2.1) (and X' > 0 in the geometric form); no gaps (NaN);
+ *  lines, geometric form only: every Y_l − m X_l − c above its rounding
+ *    (hull_inside); with exact, also a trig-min gap above its guard will do. */
 static int check_ctl(const ts_spline *sp, size_t i, const double B[4], const double *X,
                      int exact, cert *cr)
 {
     cr->glo = cr->alo = cr->gup = cr->aup = NAN;
     double f0 = sp->f[i], f1 = sp->f[i + 1], guard;
+    /* an overflowed control value (tiny a_i) proves nothing: S would be NaN */
+    for (int l = 0; l < 4; l++)
+        if (!isfinite(B[l]) || (X && !isfinite(X[l])))
+            return 0;
     if (sp->shape == TS_SHAPE_MONOTONE) {
         int ok;
         if (f1 > f0)
@@ -335,8 +371,15 @@ static int check_ctl(const ts_spline *sp, size_t i, const double B[4], const dou
             ok = B[0] >= B[1] && B[1] >= B[2] && B[2] >= B[3];
         else
             ok = B[0] == B[1] && B[1] == B[2] && B[2] == B[3];
-        if (X)
-            ok = ok && X[0] <= X[1] && X[1] <= X[2] && X[2] <= X[3];
+        if (X) {
+            /* X' > 0 by (2.1) when D0, D2 > 0 and D1 >= -min(D0, D2)/4: at
+             * a_i = 4/(3π) (TS_TERM_GEOMETRIC) D1 = h - 2k is 0 up to rounding.
+             * min over θ of [(1-s)²c + (1-c)²s]/(sc) is 0.2426 (θ = π/4),
+             * so X' >= sc·min(D0, D2)(3·0.2426 - 2/4) > 0 inside. */
+            double D0 = X[1] - X[0], D1 = X[2] - X[1], D2 = X[3] - X[2];
+            double dm = D0 < D2 ? D0 : D2;
+            ok = ok && ((D0 >= 0.0 && D1 >= 0.0 && D2 >= 0.0) || (dm > 0.0 && D1 >= -0.25 * dm));
+        }
         return ok;
     }
     if (sp->shape == TS_SHAPE_POSITIVE) {
@@ -354,18 +397,14 @@ static int check_ctl(const ts_spline *sp, size_t i, const double B[4], const dou
             continue;
         const ts_line *ln = side == 0 ? &sp->lower : &sp->upper;
         int sign = side == 0 ? 1 : -1;
+        /* geometric form: the control gaps are a proof by themselves */
+        int hull = X && hull_inside(B, X, ln, sign);
         if (exact) {
             double *g = side == 0 ? &cr->glo : &cr->gup, *a = side == 0 ? &cr->alo : &cr->aup;
             *g = gap_ctl(sp, i, B, X, ln, sign, a, &guard);
-            ok = ok && *g > guard;
+            ok = ok && (hull || *g > guard);
         } else {
-            /* geometric form: min over θ of Σ A_l C_l >= min_l C_l */
-            for (int l = 0; l < 4; l++) {
-                double xl = X ? X[l] : sp->x[i];
-                double Cl = sign * (B[l] - (ln->m * xl + ln->c));
-                double gl = 8.0 * TM_EPS * (fabs(B[l]) + fabs(ln->m * xl) + fabs(ln->c));
-                ok = ok && Cl > gl;
-            }
+            ok = ok && hull; /* only the geometric form gets here */
         }
     }
     return ok;
@@ -461,18 +500,23 @@ static ts_status repair(ts_spline *sp, size_t i, double t, int exact, ts_error *
     if (check_ctl(sp, i, B, geo ? X : NULL, exact, &cr)) {
         lo = a0;
         hi = 2.0 * a0;
-        while (!ok_at(sp, i, hi, exact)) {
-            lo = hi;
-            hi *= 2.0;
+        for (;;) { /* a_i stays <= TS_A_MAX: never an infinite a (k_i = 0) */
             if (!(hi <= TS_A_MAX))
                 return infeasible(sp, i, a0, err);
+            if (ok_at(sp, i, hi, exact))
+                break;
+            lo = hi;
+            hi *= 2.0;
         }
         amax = INFINITY;
     } else {
         if (geo)
             return infeasible(sp, i, a0, err);
         const double r = 0.6180339887498949;
+        /* u = 1/a in (0, 1/alpha]; a subnormal alpha would give ub = inf */
         double ua = 0.0, ub = 1.0 / al;
+        if (!(ub <= DBL_MAX))
+            ub = DBL_MAX;
         double u1 = ub - r * (ub - ua), u2 = ua + r * (ub - ua);
         double m1 = margin_at(sp, i, 1.0 / u1), m2 = margin_at(sp, i, 1.0 / u2);
         for (int it = 0; it < 90 && ub - ua > 1e-13 * ub; it++) {
@@ -491,6 +535,11 @@ static ts_status repair(ts_spline *sp, size_t i, double t, int exact, ts_error *
             }
         }
         amax = 1.0 / (m1 >= m2 ? u1 : u2);
+        if (!(amax <= TS_A_MAX)) {
+            if (!(al <= TS_A_MAX)) /* header: the a needed exceeds 1e307 */
+                return infeasible(sp, i, a0, err);
+            amax = TS_A_MAX;
+        }
         if (!ok_at(sp, i, amax, exact))
             return infeasible(sp, i, a0, err);
         if (ok_at(sp, i, al, exact)) {
@@ -514,6 +563,8 @@ static ts_status repair(ts_spline *sp, size_t i, double t, int exact, ts_error *
     double cand = hi + t;
     if (cand > amax)
         cand = 0.5 * (hi + amax);
+    if (!(cand <= TS_A_MAX)) /* a huge margin t */
+        cand = hi > TS_A_MAX ? hi : TS_A_MAX;
     if (!ok_at(sp, i, cand, exact) && !ok_at(sp, i, hi, exact))
         return infeasible(sp, i, a0, err);
     sp->term[i] = (unsigned char)TS_TERM_CERTIFY;
@@ -680,6 +731,8 @@ ts_status ts_certify(const ts_spline *s, const ts_line *lower, const ts_line *up
                      ts_interval_report *reports, ts_error *err)
 {
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    for (size_t i = 0; s && reports && i < s->n; i++) /* out-params reset first */
+        report_clear(&reports[i]);
     if (!s || (!lower && !upper)) {
         ts__error_set(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
         return TS_ERR_NULL;
@@ -696,15 +749,16 @@ ts_status ts_certify(const ts_spline *s, const ts_line *lower, const ts_line *up
         ts_interval_report r;
         report_base(s, i, &r);
         controls_of(s, i, B, X, &geo);
+        /* geometric form: the convex hull proof (hull_inside) also counts */
         if (lower) {
             r.has_lower = 1;
             r.gap_lower = gap_ctl(s, i, B, geo ? X : NULL, lower, 1, &r.at_lower, &guard);
-            ok = ok && r.gap_lower > guard;
+            ok = ok && (r.gap_lower > guard || (geo && hull_inside(B, X, lower, 1)));
         }
         if (upper) {
             r.has_upper = 1;
             r.gap_upper = gap_ctl(s, i, B, geo ? X : NULL, upper, -1, &r.at_upper, &guard);
-            ok = ok && r.gap_upper > guard;
+            ok = ok && (r.gap_upper > guard || (geo && hull_inside(B, X, upper, -1)));
         }
         r.certified = ok;
         if (!ok && first == TS_NO_INDEX)

@@ -247,6 +247,18 @@ static int seg_repair(ts_curve *c, size_t i)
     return 0;
 }
 
+static ts_status fail(ts_error *err, ts_status st, size_t index, ts_where where)
+{
+    ts__error_set(err, st, index, where);
+    return st;
+}
+
+/* Point of slot j of the periodic extension (slot CURVE_PAD is point 0). */
+static size_t ext_point(size_t j, size_t n)
+{
+    return (j + n * CURVE_PAD - CURVE_PAD) % n; /* n >= 3 for a closed curve */
+}
+
 /* SPEC §6 slopes of one coordinate.  Closed curves: the method applied to the
  * periodic extension (CURVE_PAD points each side), d_n = d_0 exactly. */
 static ts_status coord_slopes(const ts_curve *c, ts_slopes method, size_t k, double *ft,
@@ -269,27 +281,24 @@ static ts_status coord_slopes(const ts_curve *c, ts_slopes method, size_t k, dou
     double T = c->t[n] - c->t[0];
     size_t ne = n + 1 + 2 * CURVE_PAD;
     for (size_t j = 0; j < ne; j++) {
-        /* index j - CURVE_PAD, wrapped: r in [0, n), q periods */
-        long long jj = (long long)j - CURVE_PAD;
-        long long nn = (long long)n;
-        long long q = jj >= 0 ? jj / nn : -((-jj + nn - 1) / nn);
-        size_t r = (size_t)(jj - q * nn);
+        size_t r = ext_point(j, n);
+        long long q = ((long long)j - CURVE_PAD - (long long)r) / (long long)n; /* periods */
         te[j] = c->t[r] + (double)q * T;
         fe[j] = c->p[r * dim + k];
+        /* t_r + T can equal t_{r-1} + T when a step is far below ulp(T):
+         * ts__slopes needs strictly increasing knots */
+        if (j > 0 && !(te[j] > te[j - 1]))
+            return fail(err, TS_ERR_UNSORTED, r, TS_WHERE_POINT);
     }
-    st = ts__slopes(method, te, fe, ne, de, err);
-    if (st != TS_OK)
-        return st;
+    ts_error e2;
+    st = ts__slopes(method, te, fe, ne, de, &e2);
+    if (st != TS_OK) /* name the point, not the slot of the extension */
+        return fail(err, st, e2.where == TS_WHERE_POINT ? ext_point(e2.index, n) : e2.index,
+                    e2.where);
     for (size_t i = 0; i < n; i++)
         c->d[i * dim + k] = de[i + CURVE_PAD];
     c->d[n * dim + k] = c->d[k];
     return TS_OK;
-}
-
-static ts_status fail(ts_error *err, ts_status st, size_t index, ts_where where)
-{
-    ts__error_set(err, st, index, where);
-    return st;
 }
 
 ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
@@ -346,8 +355,9 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
             return fail(err, TS_ERR_ALPHA, i, TS_WHERE_INTERVAL);
     }
     for (size_t i = 0; i < n; i++) {
+        double a = opt->alphas ? opt->alphas[i] : opt->alpha;
         double b = opt->betas ? opt->betas[i] : opt->beta;
-        if (!(b >= 0.0 && isfin(b)))
+        if (!(b >= 0.0 && isfin(b) && isfin(a + b))) /* as TS_ERR_BETA of ts_spline_new */
             return fail(err, TS_ERR_BETA, i, TS_WHERE_INTERVAL);
     }
     int has_box = 0;
@@ -497,7 +507,7 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
                 }
         }
         double rule = opt->margin + best;
-        if (!isfin(rule)) {
+        if (!isfin(rule) || !isfin(a + rule)) {
             st = fail(err, TS_ERR_INFEASIBLE, i, TS_WHERE_INTERVAL);
             goto out;
         }
@@ -624,14 +634,18 @@ static void seg_eval(const ts_curve *c, size_t i, double delta, double *p, doubl
     double h = c->t[i + 1] - c->t[i], w = TS_HALF_PI / h;
     sincos_delta(delta, &s, &co);
     ts__basis(s, co, A);
+    /* a subnormal step (chord length of points ~1e-310 apart) makes w = inf:
+     * divide by h instead, so dP/dt stays finite (d²P/dt² ~ 1/h may not) */
+    int wf = isfin(w);
     for (size_t k = 0; k < c->dim; k++) {
         ctrl_coord(c, i, k, B);
         if (p)
             p[k] = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
         if (dp)
-            dp[k] = seg_d1(B, s, co) * w;
+            dp[k] = wf ? seg_d1(B, s, co) * w : seg_d1(B, s, co) * TS_HALF_PI / h;
         if (d2p)
-            d2p[k] = seg_d2(B, s, co) * w * w;
+            d2p[k] = wf ? seg_d2(B, s, co) * w * w
+                        : seg_d2(B, s, co) * TS_HALF_PI / h * TS_HALF_PI / h;
     }
 }
 
@@ -713,22 +727,26 @@ static const double gl_w[5] = {0.295524224714752870174, 0.269266719309996355091,
                                0.219086362515982043996, 0.149451349150580593146,
                                0.0666713443086881375936};
 
-/* |dP/dθ| of segment i at θ. */
-static double seg_speed(const ts_curve *c, size_t i, double theta)
+/* |dP/dθ| of segment i at θ, times 2^-e (control points scaled exactly by
+ * 2^-e <= 1/max|ctrl|, so differences and sums cannot overflow). */
+static double seg_speed(const ts_curve *c, size_t i, double theta, int e)
 {
     double s = sin(theta), co = cos(theta), v[3], B[4];
     for (size_t k = 0; k < c->dim; k++) {
         ctrl_coord(c, i, k, B);
+        for (int l = 0; l < 4; l++)
+            B[l] = ldexp(B[l], -e);
         v[k] = seg_d1(B, s, co);
     }
     return norm_dim(v, c->dim);
 }
 
-static double gl_seg(const ts_curve *c, size_t i, double a, double b)
+static double gl_seg(const ts_curve *c, size_t i, double a, double b, int e)
 {
     double m = 0.5 * (a + b), r = 0.5 * (b - a), sum = 0.0;
     for (int j = 0; j < 5; j++)
-        sum += gl_w[j] * (seg_speed(c, i, m - r * gl_x[j]) + seg_speed(c, i, m + r * gl_x[j]));
+        sum += gl_w[j] *
+               (seg_speed(c, i, m - r * gl_x[j], e) + seg_speed(c, i, m + r * gl_x[j], e));
     return r * sum;
 }
 
@@ -748,8 +766,13 @@ ts_status ts_curve_length(const ts_curve *c, double tol, double *len)
     double total = 0.0;
     for (size_t i = 0; i < c->n; i++) {
         struct { double a, b, I; int depth; } stk[LEN_DEPTH + 2];
-        int sp = 0, pieces = 0;
-        double whole = gl_seg(c, i, 0.0, TS_HALF_PI), seg = 0.0;
+        int sp = 0, pieces = 0, e = 0;
+        double cmax = 0.0;
+        for (size_t j = 0; j < 4 * c->dim; j++)
+            cmax = fmax(cmax, fabs(c->ctrl[i * 4 * c->dim + j]));
+        if (cmax > 0.0)
+            (void)frexp(cmax, &e);
+        double whole = gl_seg(c, i, 0.0, TS_HALF_PI, e), seg = 0.0;
         stk[sp].a = 0.0;
         stk[sp].b = TS_HALF_PI;
         stk[sp].I = whole;
@@ -760,21 +783,35 @@ ts_status ts_curve_length(const ts_curve *c, double tol, double *len)
             double a = stk[sp].a, b = stk[sp].b, I = stk[sp].I;
             int depth = stk[sp].depth;
             double mid = 0.5 * (a + b);
-            double L = gl_seg(c, i, a, mid), R = gl_seg(c, i, mid, b);
-            double fine = L + R, e = fabs(fine - I);
+            double L = gl_seg(c, i, a, mid, e), R = gl_seg(c, i, mid, b, e);
+            double fine = L + R, dif = fabs(fine - I);
             double scale = fmax(fine, whole * (b - a) / TS_HALF_PI);
             pieces++;
-            if (e <= tol * scale || depth >= LEN_DEPTH || pieces >= LEN_BUDGET) {
+            if (dif <= tol * scale || depth >= LEN_DEPTH || pieces >= LEN_BUDGET) {
                 seg += fine;
                 continue;
             }
             stk[sp].a = mid; stk[sp].b = b; stk[sp].I = R; stk[sp].depth = depth + 1; sp++;
             stk[sp].a = a; stk[sp].b = mid; stk[sp].I = L; stk[sp].depth = depth + 1; sp++;
         }
-        total += seg;
+        total += ldexp(seg, e); /* may overflow to inf, never NaN */
     }
     *len = total;
     return TS_OK;
+}
+
+/* Reports of a failed certify call: NaN values, nothing certified. */
+static void reports_clear(const ts_curve *c, ts_interval_report *reports)
+{
+    for (size_t j = 0; c && reports && j < c->n * c->dim; j++) {
+        ts_interval_report *r = &reports[j];
+        r->x0 = r->x1 = r->alpha = r->beta = r->a = NAN;
+        r->B[0] = r->B[1] = r->B[2] = r->B[3] = NAN;
+        r->term = TS_TERM_USER;
+        r->has_lower = r->has_upper = 0;
+        r->gap_lower = r->at_lower = r->gap_upper = r->at_upper = NAN;
+        r->certified = 0;
+    }
 }
 
 static ts_status certify_with(const ts_curve *c, const struct curve_box *bx,
@@ -825,6 +862,7 @@ ts_status ts_curve_certify_box(const ts_curve *c, const int has_lo[3], const dou
                                ts_interval_report *reports, ts_error *err)
 {
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    reports_clear(c, reports); /* out-params reset first */
     if (!c || (has_lo && !lo) || (has_hi && !hi))
         return fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
     struct curve_box bx;

@@ -134,21 +134,31 @@ ts_status ts_eval_batch(const ts_spline *s, int deriv, const double *xq, size_t 
         cur = &local;
     double x0 = s->x[0], xn = s->x[s->n];
     ts_status result = TS_OK;
-    size_t run = 0; /* start of the current run of in-range queries */
-    for (size_t j = 0; j <= m; j++) {
-        if (j < m && x0 <= xq[j] && xq[j] <= xn)
-            continue;
-        if (j > run)
-            ts__fast_batch(s, deriv, xq + run, j - run, yq + run, cur);
-        run = j + 1;
+    /* The kernels take every block of queries inside [x0, xn]; a block that
+     * holds a query outside (or NaN) is split into runs of in-range queries
+     * (kernels again) and single queries (eval_one). */
+    size_t j = 0;
+    while (j < m) {
+        j += ts__fast_batch(s, deriv, xq + j, m - j, yq + j, cur);
         if (j == m)
             break;
-        double o[3];
-        ts_status st = eval_one(s, xq[j], cur, deriv, o);
-        yq[j] = st == TS_OK ? o[deriv] : (double)NAN;
-        if (st != TS_OK && result == TS_OK) {
-            result = st;
-            ts__error_set(err, st, j, TS_WHERE_QUERY);
+        size_t end = m - j < TS_FAST_BLOCK ? m : j + TS_FAST_BLOCK;
+        size_t run = j; /* start of the current run of in-range queries */
+        for (; j <= end; j++) {
+            if (j < end && x0 <= xq[j] && xq[j] <= xn)
+                continue;
+            if (j > run)
+                ts__fast_batch(s, deriv, xq + run, j - run, yq + run, cur);
+            run = j + 1;
+            if (j == end)
+                break;
+            double o[3];
+            ts_status st = eval_one(s, xq[j], cur, deriv, o);
+            yq[j] = st == TS_OK ? o[deriv] : (double)NAN;
+            if (st != TS_OK && result == TS_OK) {
+                result = st;
+                ts__error_set(err, st, j, TS_WHERE_QUERY);
+            }
         }
     }
     return result;

@@ -1,33 +1,34 @@
 /* Batch evaluation kernels for the paper and C¹ forms (issue 6).
  *
- * ts__fast_batch works on blocks of TS_FAST_BLOCK queries (no allocation: the
- * block's scratch is on the stack, < 8 KiB):
- *  1. stage: per query θ = (x − x_i)·w_i with w_i = (π/2)/h_i from sp->fast
- *     (bitwise the θ of eval.c) and the interval's control values B0..B3.
- *     The interval is ts__locate's (largest i <= n−1 with x_i <= x: the
- *     right-hand one at an inner knot).  A sorted block walks the cursor,
- *     keeping the current interval's values in registers and galloping over
- *     gaps; an unsorted block runs one branch-free binary search per query,
- *     all queries advancing one level at a time so their cache misses overlap.
- *  2. a straight loop the compiler vectorises, θ in [0, π/2] (SPEC §1), no
- *     range reduction: fast_trig gives s, c, 1−s, 1−c to <= 3u (u = 2⁻⁵³;
- *     measured 1.3u), then SPEC §2 (value) or (2.1) and its θ-derivative,
- *     times w or w·w as eval.c.
- * Agreement with ts_eval_deriv: bounds derived and checked on 1e7 random
- * points in tests/test_fast.c; measured |fast − plain| <= 3.9ε·M for the value
- * (M = max|B_l| of the interval), <= 12ε·M·w for S', <= 35ε·M·w² for S''
- * (both paths are equally far from a long-double reference).
+ * ts__fast_batch works on blocks of TS_FAST_BLOCK queries; the block's scratch
+ * is on the stack (< 8 KiB), nothing is allocated.
+ *  1. check: a sorted block is inside [x0, xn] when its two ends are; an
+ *     unsorted one is checked query by query (NaN fails every comparison).
+ *     A block with a query outside goes back to eval.c.
+ *  2. stage: the interval is ts__locate's (largest i <= n−1 with x_i <= x:
+ *     the right-hand one at an inner knot).  A sorted block walks the cursor
+ *     with the current interval's values in registers, galloping over gaps;
+ *     an unsorted block runs one branch-free binary search per query, all
+ *     queries advancing a level at a time so their cache misses overlap.
+ *     Per query: tu = (x − x_i)·w, tv = (x_{i+1} − x)·w, w = (π/2)/h_i, and
+ *     B0..B3 — exactly the products eval.c's eval_in forms.
+ *  3. evaluate, in a straight loop the compiler vectorises: from the nearer
+ *     end as eval.c (ϑ = tu or tv <= π/4, no range reduction: SPEC §1), sin
+ *     and 1 − cos by polynomials, then SPEC §2 (value) or (2.1) and its
+ *     θ-derivative, times w or w·w.
+ * Agreement with ts_eval_deriv, derived and checked on 1e7 random points in
+ * tests/test_fast.c: measured |fast − plain| <= 3.9ε·M for the value
+ * (M = max|B_l| of the interval), 12ε·M·w for S', 35ε·M·w² for S''; a
+ * long-double reference finds both paths equally accurate.
  *
- * With GCC or Clang on x86-64 the pipeline is also compiled for AVX2+FMA and
- * AVX-512F and chosen at run time (__builtin_cpu_supports); elsewhere, or with
- * -DTS_FAST_PORTABLE, only the portable C version exists.  The geometric form
- * (SPEC §4) goes point by point through ts_eval_deriv. */
+ * With GCC or Clang on x86-64 the whole pipeline is also compiled for AVX2+FMA
+ * and for AVX-512F and chosen at run time (__builtin_cpu_supports); elsewhere,
+ * or with -DTS_FAST_PORTABLE, only the portable C version exists.  The
+ * geometric form (SPEC §4) goes point by point through ts_eval_deriv. */
 #include "ts_internal.h"
 
 #include <math.h>
 #include <stddef.h>
-
-#define TS_FAST_BLOCK 128
 
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(TS_FAST_PORTABLE)
 #define TS_FAST_X86 1
@@ -37,9 +38,6 @@
 #define TS_ALWAYS_INLINE static inline
 #endif
 
-/* π/2 = TS_PIO2_HI + TS_PIO2_LO to ~1e-33 */
-#define TS_PIO2_HI 1.5707963267948966
-#define TS_PIO2_LO 6.123233995736766e-17
 /* bench/sincos_coeffs.py: sin u ≈ u + u z P(z), 1 − cos u ≈ z/2 − z² Q(z),
  * z = u², u in [0, π/4]; truncation <= 5.4e-18 */
 #define TS_S1 -0.16666666666666605
@@ -55,11 +53,13 @@
 #define TS_C5 2.0875728820037434e-09
 #define TS_C6 -1.1359926181679004e-11
 
+/* Nothing to precompute (TS_FAST_STRIDE = 0): w_i = (π/2)/h_i is divided
+ * out once per interval change, with the expression of eval.c's eval_in, so θ
+ * is bitwise the same; storing it would cost more at construction (page
+ * faults) than the division costs here. */
 void ts__fast_prepare(ts_spline *sp)
 {
-    /* the expression of eval.c's eval_in, so θ is bitwise identical */
-    for (size_t i = 0; i < sp->n; i++)
-        sp->fast[i] = TS_HALF_PI / sp->h[i];
+    (void)sp;
 }
 
 /* ---- locate ---------------------------------------------------------- */
@@ -94,8 +94,14 @@ typedef struct fast_b4 {
     double b0, b1, b2, b3;
 } fast_b4;
 
+/* Per query: θ measured from both ends, tu = (x − x_i)·w and tv = (x_{i+1} − x)·w
+ * (w = (π/2)/h_i, dθ/dx; the products eval.c forms), and B0..B3.  The
+ * evaluation uses the nearer end, as eval.c: ϑ = min(tu, tv) <= π/4 and, from
+ * the right end, the control values reversed (SPEC §2: A3(θ) = A0(π/2 − θ),
+ * A2(θ) = A1(π/2 − θ)) and dϑ/dθ = −1.  Choosing in the vector loop keeps
+ * this loop free of data-dependent branches. */
 typedef struct fast_stage {
-    double th[TS_FAST_BLOCK], w[TS_FAST_BLOCK]; /* w: derivatives only */
+    double tu[TS_FAST_BLOCK], tv[TS_FAST_BLOCK], w[TS_FAST_BLOCK]; /* w: derivatives only */
     fast_b4 B[TS_FAST_BLOCK];
 } fast_stage;
 
@@ -105,39 +111,75 @@ TS_ALWAYS_INLINE fast_b4 control4(const ts_spline *sp, size_t i)
     return b;
 }
 
-/* Stages q[0..nb); i is the cursor; returns the last query's interval. */
-TS_ALWAYS_INLINE size_t stage_block(const ts_spline *sp, const double *q, size_t nb, int want_w,
-                                    fast_stage *st, size_t i)
+TS_ALWAYS_INLINE void stage_one(fast_stage *st, size_t j, double x, double x0, double x1, double w,
+                                fast_b4 b, int want_w)
 {
-    const double *xs = sp->x, *w = sp->fast;
+    st->tu[j] = (x - x0) * w;
+    st->tv[j] = (x1 - x) * w;
+    if (want_w)
+        st->w[j] = w;
+    st->B[j] = b;
+}
+
+/* Sorted q[0..nb), xs[i] <= q[0]: walk the cursor; the current interval's
+ * values stay in registers.  want_w is a constant at each call. */
+TS_ALWAYS_INLINE size_t stage_sorted(const ts_spline *sp, const double *q, size_t nb, int want_w,
+                                     fast_stage *st, size_t i)
+{
+    const double *xs = sp->x, *h = sp->h;
     size_t n = sp->n;
-    int sorted = 1;
+    double x0 = xs[i], x1 = xs[i + 1], wi = TS_HALF_PI / h[i];
+    double next = i + 1 < n ? x1 : (double)INFINITY; /* the last interval never advances */
+    fast_b4 b = control4(sp, i);
+    for (size_t j = 0; j < nb; j++) {
+        double x = q[j];
+        if (x >= next) {
+            i++;
+            if (i + 1 < n && xs[i + 1] <= x)
+                i = gallop(xs, n, i, x);
+            x0 = xs[i];
+            x1 = xs[i + 1];
+            next = i + 1 < n ? x1 : (double)INFINITY;
+            wi = TS_HALF_PI / h[i];
+            b = control4(sp, i);
+        }
+        stage_one(st, j, x, x0, x1, wi, b, want_w);
+    }
+    return i;
+}
+
+/* Every q[j] in [x0, xn] (none NaN). */
+TS_ALWAYS_INLINE int all_inside(const double *q, size_t nb, double x0, double xn)
+{
+    double outside = 0.0; /* a double flag: this form vectorises */
+    for (size_t j = 0; j < nb; j++)
+        outside = x0 <= q[j] && q[j] <= xn ? outside : 1.0;
+    return outside == 0.0;
+}
+
+/* Stages q[0..nb) (1 <= nb <= TS_FAST_BLOCK); *cur is the cursor, left on the
+ * last query's interval.  Returns 0, without staging, if a query is outside
+ * [x0, xn] or NaN. */
+TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb, int want_w,
+                                 fast_stage *st, size_t *cur)
+{
+    const double *xs = sp->x;
+    size_t n = sp->n, i = *cur;
+    /* flags kept as doubles: this form vectorises */
+    /* sorted (a NaN fails every comparison, so counts as unsorted): the ends
+     * tell whether all are inside [x0, xn]; otherwise each query is checked */
+    double x0 = xs[0], xn = xs[n], unsorted = 0.0; /* a double flag: this form vectorises */
     for (size_t j = 1; j < nb; j++)
-        sorted &= q[j - 1] <= q[j];
-    if (sorted) {
+        unsorted = q[j - 1] <= q[j] ? unsorted : 1.0;
+    if (unsorted == 0.0 ? !(x0 <= q[0] && q[nb - 1] <= xn) : !all_inside(q, nb, x0, xn))
+        return 0;
+    if (unsorted == 0.0) {
         if (!(xs[i] <= q[0]))
             i = search_range(xs, 0, i + 1, q[0]);
-        /* the last interval never advances: x1 = +inf */
-        double x0 = xs[i], x1 = i + 1 < n ? xs[i + 1] : (double)INFINITY, wi = w[i];
-        fast_b4 b = control4(sp, i);
-        for (size_t j = 0; j < nb; j++) {
-            double x = q[j];
-            if (x >= x1) {
-                i++;
-                if (i + 1 < n && xs[i + 1] <= x)
-                    i = gallop(xs, n, i, x);
-                x0 = xs[i];
-                x1 = i + 1 < n ? xs[i + 1] : (double)INFINITY;
-                wi = w[i];
-                b = control4(sp, i);
-            }
-            st->th[j] = (x - x0) * wi;
-            if (want_w)
-                st->w[j] = wi;
-            st->B[j] = b;
-        }
-        return i;
+        *cur = want_w ? stage_sorted(sp, q, nb, 1, st, i) : stage_sorted(sp, q, nb, 0, st, i);
+        return 1;
     }
+    /* one binary search per query, all advancing a level at a time */
     size_t idx[TS_FAST_BLOCK];
     for (size_t j = 0; j < nb; j++)
         idx[j] = 0;
@@ -148,63 +190,61 @@ TS_ALWAYS_INLINE size_t stage_block(const ts_spline *sp, const double *q, size_t
         len -= half;
     }
     for (size_t j = 0; j < nb; j++) {
-        size_t k = idx[j];
-        st->th[j] = (q[j] - xs[k]) * w[k];
-        st->w[j] = w[k];
-        st->B[j] = control4(sp, k);
+        i = idx[j];
+        stage_one(st, j, q[j], xs[i], xs[i + 1], TS_HALF_PI / sp->h[i], control4(sp, i), want_w);
     }
-    return idx[nb - 1];
+    *cur = i;
+    return 1;
 }
 
 /* ---- evaluate -------------------------------------------------------- */
 
-/* s = sin θ, c = cos θ, ms = 1 − s, mc = 1 − c for θ in [0, π/2] (a hair
- * beyond at x = x_{i+1}).  Above π/4 the polynomials take v = π/2 − θ (π/2 in
- * two parts; π/2 − θ is exact there): sin θ = cos v, cos θ = sin v.  1 − cos
- * is summed without the 1, so ms and mc carry no cancellation. */
-TS_ALWAYS_INLINE void fast_trig(double th, double *s, double *c, double *ms, double *mc)
+/* s = sin ϑ, c = cos ϑ, ms = 1 − s, mc = 1 − c for ϑ in [0, π/4] (a hair
+ * beyond by rounding).  1 − cos is summed without the 1, so mc carries no
+ * cancellation; 1 − s >= 0.29 has none either. */
+TS_ALWAYS_INLINE void fast_trig(double u, double *s, double *c, double *ms, double *mc)
 {
-    double v = (TS_PIO2_HI - th) + TS_PIO2_LO;
-    int big = v < th;
-    double u = big ? v : th, z = u * u;
+    double z = u * u;
     double ps = TS_S1 + z * (TS_S2 + z * (TS_S3 + z * (TS_S4 + z * (TS_S5 + z * TS_S6))));
     double pc = TS_C1 + z * (TS_C2 + z * (TS_C3 + z * (TS_C4 + z * (TS_C5 + z * TS_C6))));
-    double sn = u + u * (z * ps);       /* sin u */
-    double om = 0.5 * z - (z * z) * pc; /* 1 − cos u */
-    double cs = 1.0 - om, oms = 1.0 - sn;
-    *s = big ? cs : sn;
-    *c = big ? sn : cs;
-    *ms = big ? om : oms;
-    *mc = big ? oms : om;
+    *s = u + u * (z * ps);              /* sin u */
+    *mc = 0.5 * z - (z * z) * pc;       /* 1 − cos u */
+    *c = 1.0 - *mc;
+    *ms = 1.0 - *s;
 }
+
+/* Query j seen from its nearer end: ϑ, the control values B', and the sign
+ * of dϑ/dθ as ±1. */
+#define TS_FAST_NEAR(st, j)                                                        \
+    double tu = (st)->tu[j], tv = (st)->tv[j];                                     \
+    int left = tu <= tv;                                                           \
+    const fast_b4 *Bj = &(st)->B[j];                                               \
+    double B0 = left ? Bj->b0 : Bj->b3, B1 = left ? Bj->b1 : Bj->b2;               \
+    double B2 = left ? Bj->b2 : Bj->b1, B3 = left ? Bj->b3 : Bj->b0;               \
+    double s, c, ms, mc;                                                           \
+    fast_trig(left ? tu : tv, &s, &c, &ms, &mc)
 
 TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, double *y)
 {
     if (deriv == 0) {
         for (size_t j = 0; j < nb; j++) {
-            double s, c, ms, mc;
-            fast_trig(st->th[j], &s, &c, &ms, &mc);
-            const fast_b4 *B = &st->B[j];
+            TS_FAST_NEAR(st, j);
             /* SPEC §2, the expressions of basis.c */
-            y[j] = (ms * ms * ms) * B->b0 + (s * ms * (3.0 - s)) * B->b1 +
-                   (c * mc * (3.0 - c)) * B->b2 + (mc * mc * mc) * B->b3;
+            y[j] = (ms * ms * ms) * B0 + (s * ms * (3.0 - s)) * B1 + (c * mc * (3.0 - c)) * B2 +
+                   (mc * mc * mc) * B3;
         }
     } else if (deriv == 1) {
         for (size_t j = 0; j < nb; j++) {
-            double s, c, ms, mc;
-            fast_trig(st->th[j], &s, &c, &ms, &mc);
-            const fast_b4 *B = &st->B[j];
-            double d01 = B->b1 - B->b0, d12 = B->b2 - B->b1, d23 = B->b3 - B->b2;
+            TS_FAST_NEAR(st, j);
+            double d01 = B1 - B0, d12 = B2 - B1, d23 = B3 - B2;
             /* SPEC (2.1) */
             double d = 3.0 * (ms * ms) * c * d01 + 2.0 * (s * c) * d12 + 3.0 * (mc * mc) * s * d23;
-            y[j] = d * st->w[j];
+            y[j] = d * (left ? st->w[j] : -st->w[j]);
         }
     } else {
         for (size_t j = 0; j < nb; j++) {
-            double s, c, ms, mc;
-            fast_trig(st->th[j], &s, &c, &ms, &mc);
-            const fast_b4 *B = &st->B[j];
-            double d01 = B->b1 - B->b0, d12 = B->b2 - B->b1, d23 = B->b3 - B->b2;
+            TS_FAST_NEAR(st, j);
+            double d01 = B1 - B0, d12 = B2 - B1, d23 = B3 - B2;
             /* d/dθ of (2.1) */
             double a0 = 6.0 * ms * (c * c) + 3.0 * (ms * ms) * s;
             double a3 = 6.0 * mc * (s * s) + 3.0 * (mc * mc) * c;
@@ -214,38 +254,42 @@ TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, dou
     }
 }
 
-/* The whole batch; i is the cursor; returns the last query's interval. */
+/* The whole batch, or its prefix up to the first block with a query outside
+ * [x0, xn]; *cur is the cursor; returns the number of queries evaluated. */
 TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *xq, size_t m,
-                                 double *yq, size_t i)
+                                 double *yq, size_t *cur)
 {
     fast_stage st;
-    for (size_t j0 = 0; j0 < m; j0 += TS_FAST_BLOCK) {
+    size_t j0 = 0;
+    while (j0 < m) {
         size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
-        i = stage_block(sp, xq + j0, nb, deriv > 0, &st, i);
+        if (!stage_block(sp, xq + j0, nb, deriv > 0, &st, cur))
+            break;
         eval_block(deriv, &st, nb, yq + j0);
+        j0 += nb;
     }
-    return i;
+    return j0;
 }
 
-typedef size_t (*pipeline_fn)(const ts_spline *, int, const double *, size_t, double *, size_t);
+typedef size_t (*pipeline_fn)(const ts_spline *, int, const double *, size_t, double *, size_t *);
 
 static size_t pipeline_portable(const ts_spline *sp, int deriv, const double *xq, size_t m,
-                                double *yq, size_t i)
+                                double *yq, size_t *cur)
 {
-    return pipeline(sp, deriv, xq, m, yq, i);
+    return pipeline(sp, deriv, xq, m, yq, cur);
 }
 
 #if TS_FAST_X86
 __attribute__((target("avx2,fma"))) static size_t
-pipeline_avx2(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t i)
+pipeline_avx2(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur)
 {
-    return pipeline(sp, deriv, xq, m, yq, i);
+    return pipeline(sp, deriv, xq, m, yq, cur);
 }
 
 __attribute__((target("avx512f,fma,prefer-vector-width=512"))) static size_t
-pipeline_avx512(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t i)
+pipeline_avx512(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur)
 {
-    return pipeline(sp, deriv, xq, m, yq, i);
+    return pipeline(sp, deriv, xq, m, yq, cur);
 }
 #endif
 
@@ -266,37 +310,40 @@ static pipeline_fn pick(int isa)
     return isa <= 0 ? pipeline_portable : NULL;
 }
 
-static void batch(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq,
-                  ts_cursor *cur, pipeline_fn fn)
+static size_t batch(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq,
+                    ts_cursor *cur, pipeline_fn fn)
 {
+    double x0 = sp->x[0], xn = sp->x[sp->n];
     if (sp->form == TS_FORM_GEOMETRIC) {
-        for (size_t j = 0; j < m; j++) {
+        size_t j = 0;
+        for (; j < m && x0 <= xq[j] && xq[j] <= xn; j++) {
             double o[3];
             (void)ts_eval_deriv(sp, xq[j], cur, &o[0], &o[1], &o[2]);
             yq[j] = o[deriv];
         }
-        return;
+        return j;
     }
-    if (m == 0)
-        return;
     size_t i = cur && cur->interval < sp->n ? cur->interval : 0;
-    i = fn(sp, deriv, xq, m, yq, i);
-    if (cur)
+    size_t done = fn(sp, deriv, xq, m, yq, &i);
+    if (cur && done)
         cur->interval = i;
+    return done;
 }
 
-void ts__fast_batch(const ts_spline *sp, int deriv, const double *xq, size_t m,
-                    double *yq, ts_cursor *cur)
+size_t ts__fast_batch(const ts_spline *sp, int deriv, const double *xq, size_t m,
+                      double *yq, ts_cursor *cur)
 {
-    batch(sp, deriv, xq, m, yq, cur, pick(-1));
+    return batch(sp, deriv, xq, m, yq, cur, pick(-1));
 }
 
 int ts__fast_batch_isa(const ts_spline *sp, int deriv, const double *xq, size_t m,
-                       double *yq, ts_cursor *cur, int isa)
+                       double *yq, ts_cursor *cur, int isa, size_t *done)
 {
     pipeline_fn fn = pick(isa);
     if (!fn)
         return 0;
-    batch(sp, deriv, xq, m, yq, cur, fn);
+    size_t k = batch(sp, deriv, xq, m, yq, cur, fn);
+    if (done)
+        *done = k;
     return 1;
 }

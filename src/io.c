@@ -913,8 +913,11 @@ static void quote_text(char *dst, size_t dsz, const char *s, const char *e)
 {
     size_t k = 0, i, n = (size_t)(e - s);
     static const char hex[] = "0123456789abcdef";
-    if (dsz < 60)
+    if (dsz < 60) { /* never leave dst unterminated */
+        if (dsz)
+            dst[0] = 0;
         return;
+    }
     dst[k++] = '"';
     for (i = 0; i < n && i < 40; i++) {
         unsigned char ch = (unsigned char)s[i];

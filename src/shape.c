@@ -211,6 +211,8 @@ ts_status ts__shape_apply(ts_spline *sp, const ts_options *opt, ts_error *err)
         double beta = t + best;
         if (!(beta <= TS_BETA_CAP))
             beta = TS_BETA_CAP;
+        if (!(al + beta <= DBL_MAX)) /* alpha near DBL_MAX: keep a_i finite */
+            beta = DBL_MAX - al;
         sp->beta[i] = beta;
         sp->term[i] = (unsigned char)term;
     }

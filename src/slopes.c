@@ -2,6 +2,7 @@
  * in trigspline.h.  Secants are recomputed where needed: nothing is allocated. */
 #include "ts_internal.h"
 
+#include <float.h>
 #include <math.h>
 
 /* Δ_j, j = 0..n-1 (SPEC §1). */
@@ -15,11 +16,27 @@ static int same_sign(double p, double q)
     return (p > 0.0 && q > 0.0) || (p < 0.0 && q < 0.0);
 }
 
+/* a / (a + b) for widths a, b > 0, also when a + b overflows (x near ±DBL_MAX):
+ * halving both is exact there. */
+static double share(double a, double b)
+{
+    double s = a + b;
+    if (!(s <= DBL_MAX)) {
+        a *= 0.5;
+        b *= 0.5;
+        s = a + b;
+    }
+    return a / s;
+}
+
 /* SPEC §6 three-point end formula at the end whose interval has width h0 and
  * secant D0, next interval h1, D1. */
 static double end3(double h0, double h1, double D0, double D1)
 {
-    return D0 + (D0 - D1) * h0 / (h0 + h1);
+    double t = (D0 - D1) * h0 / (h0 + h1);
+    if (isfinite(h0 + h1) && isfinite((D0 - D1) * h0))
+        return D0 + t;
+    return D0 + (D0 - D1) * share(h0, h1); /* the same without overflow */
 }
 
 /* Weighted means of D0 = Δ_{i-1}, D1 = Δ_i with weights w0 + w1 = 1. */
@@ -62,13 +79,17 @@ static double mean_harm(double D0, double D1, double w0, double w1)
 static void weights_three_point(const double *x, size_t i, double *w0, double *w1)
 {
     double hl = x[i] - x[i - 1], hr = x[i + 1] - x[i];
-    *w0 = hr / (hl + hr);
-    *w1 = hl / (hl + hr);
+    *w0 = share(hr, hl);
+    *w1 = share(hl, hr);
 }
 
 static void weights_brodlie(const double *x, size_t i, double *w0, double *w1)
 {
     double hl = x[i] - x[i - 1], hr = x[i + 1] - x[i];
+    if (hl > 0x1p1000 || hr > 0x1p1000) { /* 3(hl + hr) could overflow; exact scaling */
+        hl *= 0x1p-4;
+        hr *= 0x1p-4;
+    }
     double a = 2.0 * hr + hl, b = hr + 2.0 * hl;
     *w0 = a / (a + b);
     *w1 = b / (a + b);
@@ -145,12 +166,19 @@ static void akima(const double *x, const double *f, size_t n, double *d, int mod
             d[i] = m1;
             continue;
         }
-        double w1 = fabs(m3 - m2), w2 = fabs(m1 - m0);
-        if (modified) { /* Moler 2019 */
-            w1 += 0.5 * fabs(m3 + m2);
-            w2 += 0.5 * fabs(m1 + m0);
+        double w1, w2, s;
+        for (double sc = 1.0;; sc = 0.125) { /* sc: huge secants, weights overflow */
+            double a0 = sc * m0, a1 = sc * m1, a2 = sc * m2, a3 = sc * m3;
+            w1 = fabs(a3 - a2);
+            w2 = fabs(a1 - a0);
+            if (modified) { /* Moler 2019 */
+                w1 += 0.5 * fabs(a3 + a2);
+                w2 += 0.5 * fabs(a1 + a0);
+            }
+            s = w1 + w2;
+            if (isfinite(s) || sc != 1.0)
+                break;
         }
-        double s = w1 + w2;
         if (s == 0.0) /* Akima's 0/0: the plain average */
             d[i] = 0.5 * m1 + 0.5 * m2;
         else
@@ -163,7 +191,7 @@ static void periodic(const double *x, const double *f, size_t n, double *d)
 {
     interior(x, f, n, d, mean_arith, weights_three_point);
     double hl = x[n] - x[n - 1], hr = x[1] - x[0];
-    double w0 = hr / (hl + hr), w1 = hl / (hl + hr);
+    double w0 = share(hr, hl), w1 = share(hl, hr);
     d[0] = mean_arith(secant(x, f, n - 1), secant(x, f, 0), w0, w1);
     d[n] = d[0];
 }
@@ -230,8 +258,8 @@ ts_status ts_slopes_compute(ts_slopes method, const double *x, const double *f,
     size_t idx = TS_NO_INDEX;
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
     if (!x || !f || !d) {
-        ts__error_set(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
-        return TS_ERR_NULL;
+        st = TS_ERR_NULL;
+        goto fail; /* d, if given, is still filled with NaN */
     }
     if (n_points < 2) {
         st = TS_ERR_TOO_FEW;
@@ -251,6 +279,13 @@ ts_status ts_slopes_compute(ts_slopes method, const double *x, const double *f,
             goto fail;
         }
     }
+    for (size_t i = 1; i < n_points; i++) {
+        if (!isfinite(x[i] - x[i - 1])) { /* as ts_spline_new: a width overflows */
+            st = TS_ERR_NONFINITE;
+            idx = i;
+            goto fail;
+        }
+    }
     if (!((int)method >= 0 && (int)method < TS_SLOPES_COUNT_) || method == TS_SLOPES_USER) {
         st = TS_ERR_OPTION;
         goto fail;
@@ -263,7 +298,7 @@ ts_status ts_slopes_compute(ts_slopes method, const double *x, const double *f,
     return st;
 fail:
     ts__error_set(err, st, idx, idx == TS_NO_INDEX ? TS_WHERE_NONE : TS_WHERE_POINT);
-    for (size_t i = 0; i < n_points; i++)
+    for (size_t i = 0; d && i < n_points; i++)
         d[i] = (double)NAN;
     return st;
 }

@@ -1,10 +1,14 @@
 /* Construction, accessors and status strings (SPEC §1, §3). */
+#define _DEFAULT_SOURCE /* MADV_HUGEPAGE */
 #include "ts_internal.h"
 
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 const char *ts_version(void)
 {
@@ -71,6 +75,29 @@ void *ts__calloc(size_t count, size_t size)
     return alloc_should_fail() ? NULL : calloc(count, size);
 }
 
+/* The spline's one block.  Large blocks are 2 MiB-aligned and marked for
+ * transparent huge pages where Linux offers them: first-touch page faults
+ * dominate construction time at large n (issue 6, bench/RESULTS.md), and huge
+ * pages cut them severalfold.  Freed with free() either way. */
+static void *alloc_block(size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    const size_t huge = (size_t)2 << 20;
+    if (bytes >= 4 * huge && bytes <= SIZE_MAX - huge) {
+        if (alloc_should_fail())
+            return NULL;
+        size_t rounded = (bytes + huge - 1) / huge * huge;
+        void *p = aligned_alloc(huge, rounded);
+        if (p) {
+            (void)madvise(p, rounded, MADV_HUGEPAGE); /* advice only: failure is harmless */
+            return p;
+        }
+        return malloc(bytes);
+    }
+#endif
+    return ts__malloc(bytes);
+}
+
 /* Record and return a failure. */
 static ts_status fail(ts_error *err, ts_status st, size_t index, ts_where where)
 {
@@ -93,43 +120,56 @@ void ts_options_init(ts_options *opt)
     opt->extrapolate = TS_EXTRAP_ERROR;
 }
 
-/* SPEC §3 (paper, C¹) and §4 (geometric) control values. */
+/* SPEC §3 (paper, C¹) and §4 (geometric) control values.  One loop per form,
+ * through restrict-qualified locals (no reloads through possible aliases;
+ * construction speed, issue 6); the arithmetic is the same expression by
+ * expression. */
 void ts__controls(ts_spline *sp, size_t i0, size_t i1)
 {
     const double K0 = 2.0 / (3.0 * TS_PI);
     size_t n = sp->n;
-    for (size_t i = i0; i < i1 && i < n; i++) {
-        double K = K0 * sp->h[i];
-        double a = sp->alpha[i] + sp->beta[i];
-        if (sp->form == TS_FORM_C1) {
+    if (i1 > n)
+        i1 = n;
+    const double *restrict x = sp->x, *restrict f = sp->f, *restrict d = sp->d;
+    const double *restrict h = sp->h, *restrict al = sp->alpha, *restrict be = sp->beta;
+    double *restrict b1 = sp->b1, *restrict b2 = sp->b2;
+    double *restrict xc1 = sp->xc1, *restrict xc2 = sp->xc2;
+    if (sp->form == TS_FORM_C1) {
+        for (size_t i = i0; i < i1; i++) {
+            double K = K0 * h[i];
+            double a = al[i] + be[i];
             /* SPEC §3 C¹ option: d̂_j = d_j / max(a_{j-1}, a_j), one-sided at the ends */
             double aL = a, aR = a;
             if (i > 0) {
-                double ap = sp->alpha[i - 1] + sp->beta[i - 1];
+                double ap = al[i - 1] + be[i - 1];
                 aL = ap > a ? ap : a;
             }
             if (i + 1 < n) {
-                double an = sp->alpha[i + 1] + sp->beta[i + 1];
+                double an = al[i + 1] + be[i + 1];
                 aR = an > a ? an : a;
             }
-            sp->b1[i] = sp->f[i] + K * (sp->d[i] / aL);
-            sp->b2[i] = sp->f[i + 1] - K * (sp->d[i + 1] / aR);
-        } else {
-            double k = K / a;
-            sp->b1[i] = sp->f[i] + k * sp->d[i];
-            sp->b2[i] = sp->f[i + 1] - k * sp->d[i + 1];
-            if (sp->form == TS_FORM_GEOMETRIC) {
-                /* SPEC §4: X = [x_i, x_i + k, x_{i+1} - k, x_{i+1}] */
-                sp->xc1[i] = sp->x[i] + k;
-                sp->xc2[i] = sp->x[i + 1] - k;
-            } else {
-                sp->xc1[i] = sp->x[i] + K;
-                sp->xc2[i] = sp->x[i + 1] - K;
-            }
+            b1[i] = f[i] + K * (d[i] / aL);
+            b2[i] = f[i + 1] - K * (d[i + 1] / aR);
+            xc1[i] = x[i] + K;
+            xc2[i] = x[i + 1] - K;
         }
-        if (sp->form == TS_FORM_C1) {
-            sp->xc1[i] = sp->x[i] + K;
-            sp->xc2[i] = sp->x[i + 1] - K;
+    } else if (sp->form == TS_FORM_GEOMETRIC) {
+        for (size_t i = i0; i < i1; i++) {
+            double k = K0 * h[i] / (al[i] + be[i]);
+            b1[i] = f[i] + k * d[i];
+            b2[i] = f[i + 1] - k * d[i + 1];
+            /* SPEC §4: X = [x_i, x_i + k, x_{i+1} - k, x_{i+1}] */
+            xc1[i] = x[i] + k;
+            xc2[i] = x[i + 1] - k;
+        }
+    } else {
+        for (size_t i = i0; i < i1; i++) {
+            double K = K0 * h[i];
+            double k = K / (al[i] + be[i]);
+            b1[i] = f[i] + k * d[i];
+            b2[i] = f[i + 1] - k * d[i + 1];
+            xc1[i] = x[i] + K;
+            xc2[i] = x[i + 1] - K;
         }
     }
 }
@@ -220,8 +260,10 @@ static ts_status build(ts_spline *sp, const ts_options *o, ts_error *err)
             return st;
     }
 
-    /* cumulative integrals for ts_integral */
-    sp->cum[0] = 0.0;
+    /* cumulative integrals for ts_integral (the running sum in a register:
+     * the same additions in the same order, without a store-to-load chain) */
+    double sum = 0.0;
+    sp->cum[0] = sum;
     for (size_t i = 0; i < n; i++) {
         double whole;
         if (sp->form == TS_FORM_GEOMETRIC) {
@@ -232,7 +274,8 @@ static ts_status build(ts_spline *sp, const ts_options *o, ts_error *err)
             whole = (2.0 * sp->h[i] / TS_PI) *
                     (e * (sp->f[i] + sp->f[i + 1]) + m * (sp->b1[i] + sp->b2[i]));
         }
-        sp->cum[i + 1] = sp->cum[i] + whole;
+        sum += whole;
+        sp->cum[i + 1] = sum;
     }
 
     ts__fast_prepare(sp);
@@ -280,7 +323,7 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
             return fail(err, TS_ERR_NONFINITE, i + 1, TS_WHERE_POINT);
 
     ts_spline *sp = ts__calloc(1, sizeof *sp);
-    double *blk = sp ? ts__malloc(bytes) : NULL;
+    double *blk = sp ? alloc_block(bytes) : NULL;
     if (!blk) {
         free(sp);
         return fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);

@@ -104,12 +104,19 @@ double ts__geo_integral(const ts_spline *sp, size_t i, double x);
 
 /* ---- fast.c (batch kernels) ------------------------------------------ */
 void ts__fast_prepare(ts_spline *sp);
-/* Evaluate sorted-or-not queries xq[0..m) (all inside [x0, xn], not NaN). */
-void ts__fast_batch(const ts_spline *sp, int deriv, const double *xq, size_t m,
-                    double *yq, ts_cursor *cur);
-/* The same with a chosen kernel (tests): isa 0 portable C, 1 x86-64 AVX2+FMA,
- * 2 AVX-512F.  Returns 0 (and does nothing) if that kernel is not available. */
+/* Queries are taken in blocks of TS_FAST_BLOCK. */
+#define TS_FAST_BLOCK 128
+/* Evaluate a prefix of xq[0..m) (any order) and return its length k: all of
+ * them when every query is inside [x0, xn]; else it stops before the first
+ * block holding a query outside or NaN (so xq[k..k+TS_FAST_BLOCK) holds one)
+ * and the caller handles that block.  cur (may be NULL) ends on the interval
+ * of query k-1. */
+size_t ts__fast_batch(const ts_spline *sp, int deriv, const double *xq, size_t m,
+                      double *yq, ts_cursor *cur);
+/* The same with a chosen kernel (tests, bench): isa 0 portable C, 1 x86-64
+ * AVX2+FMA, 2 AVX-512F (-1 the best).  Returns 0 (and does nothing) if that
+ * kernel is not available here, else 1 (*done, if not NULL, receives k). */
 int ts__fast_batch_isa(const ts_spline *sp, int deriv, const double *xq, size_t m,
-                       double *yq, ts_cursor *cur, int isa);
+                       double *yq, ts_cursor *cur, int isa, size_t *done);
 
 #endif
