@@ -33,6 +33,11 @@
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(TS_FAST_PORTABLE)
 #define TS_FAST_X86 1
 #define TS_ALWAYS_INLINE static inline __attribute__((always_inline))
+#if defined(__clang__)
+#define TS_TARGET_512 "avx512f,fma"
+#else /* GCC otherwise keeps 256-bit vectors */
+#define TS_TARGET_512 "avx512f,fma,prefer-vector-width=512"
+#endif
 #else
 #define TS_FAST_X86 0
 #define TS_ALWAYS_INLINE static inline
@@ -286,7 +291,7 @@ pipeline_avx2(const ts_spline *sp, int deriv, const double *xq, size_t m, double
     return pipeline(sp, deriv, xq, m, yq, cur);
 }
 
-__attribute__((target("avx512f,fma,prefer-vector-width=512"))) static size_t
+__attribute__((target(TS_TARGET_512))) static size_t
 pipeline_avx512(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur)
 {
     return pipeline(sp, deriv, xq, m, yq, cur);
