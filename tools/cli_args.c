@@ -255,7 +255,7 @@ void cli_opts_free(cli_opts *o)
 
 static int apply(cli_cmd cmd, const optdef *d, const char *name, const char *v, cli_opts *o)
 {
-    int k, rc;
+    int k = 0, rc;
     switch (d->id) {
     case O_SHAPE:
         rc = parse_enum(cmd, name, v, shape_names, NELEM(shape_names), 0, &k);
