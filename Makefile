@@ -8,8 +8,9 @@ all: build
 
 # Debian packages a target needs are installed by the target itself.
 deps:
-	@command -v cmake >/dev/null && command -v cc >/dev/null && command -v python3 >/dev/null || \
-	  { apt-get update && apt-get install -y cmake gcc make python3; }
+	@command -v cmake >/dev/null && command -v cc >/dev/null && command -v python3 >/dev/null && \
+	  command -v valgrind >/dev/null || \
+	  { apt-get update && apt-get install -y cmake gcc make python3 valgrind; }
 
 build: deps
 	$(CMAKE) -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null

@@ -34,6 +34,14 @@ for dir in "$@"; do
         run_one "$(basename "$dir")/$(basename "$t")" "$t"
     done
 done
+# Leak check of the core programs under valgrind (memcheck), when installed.
+if [ -n "$first" ] && command -v valgrind >/dev/null 2>&1; then
+    for name in test_core test_errors test_basis test_slopes test_shape test_geometric test_noalloc; do
+        [ -x "$first/tests/$name" ] || continue
+        run_one "valgrind/$name" valgrind -q --leak-check=full --errors-for-leak-kinds=all \
+            --error-exitcode=9 "$first/tests/$name"
+    done
+fi
 if [ -n "$first" ]; then
     for py in "$here"/test_*.py; do
         [ -f "$py" ] || continue
