@@ -304,8 +304,9 @@ void ts_options_init(ts_options *opt);
 
 /*
  * Estimate slopes d[0..n_points-1] by a method of SPEC §6 (not TS_SLOPES_USER).
- * Returns TS_OK, TS_ERR_NULL, TS_ERR_TOO_FEW, TS_ERR_NONFINITE,
- * TS_ERR_UNSORTED, TS_ERR_OPTION, TS_ERR_PERIODIC.
+ * Returns TS_OK, TS_ERR_NULL, TS_ERR_TOO_FEW, TS_ERR_NONFINITE (also when an
+ * interval width or a slope overflows; index = point), TS_ERR_UNSORTED,
+ * TS_ERR_OPTION, TS_ERR_PERIODIC.  On failure d (if not NULL) is filled with NaN.
  */
 ts_status ts_slopes_compute(ts_slopes method, const double *x, const double *f,
                             size_t n_points, double *d, ts_error *err);
@@ -411,7 +412,7 @@ int ts_spline_certified(const ts_spline *s);
  * TS_ERR_NULL).  reports, if not NULL, receives n entries.  Returns TS_OK
  * when every interval keeps lower < S < upper, TS_ERR_VIOLATED otherwise
  * (err->index = first violating interval), TS_ERR_NONFINITE for a non-finite
- * line, TS_ERR_NULL.
+ * line, TS_ERR_NULL.  reports are reset (NaN) before any check.
  */
 ts_status ts_certify(const ts_spline *s, const ts_line *lower, const ts_line *upper,
                      ts_interval_report *reports, ts_error *err);
@@ -545,7 +546,7 @@ void ts_curve_options_init(ts_curve_options *opt);
  *                      (index = point, or segment for control points)
  *   TS_ERR_LENGTH      alphas/betas given with n_* != segments
  *   TS_ERR_ALPHA       alpha_i <= 0 or not finite (index = segment)
- *   TS_ERR_BETA        beta_i < 0 or not finite (index = segment)
+ *   TS_ERR_BETA        beta_i < 0 or not finite, or alpha_i + beta_i overflows (index = segment)
  *   TS_ERR_MARGIN      a box with margin <= 0 or not finite
  *   TS_ERR_UNSORTED    two consecutive equal points, any parameterisation
  *                      (index = the second of the pair; for the seam of a closed
@@ -599,7 +600,8 @@ ts_status ts_curve_sample(const ts_curve *c, size_t m, double *out, size_t out_l
  * halves, so on smooth curves its relative error is far below tol (measured:
  * 6e-16 for every tol in [1e-14, 1e-3] on a 64-point circle, docs/curves.md);
  * near a point of zero speed inside a segment the error can approach tol.  Bisection stops at depth 48
- * or 20000 pieces per segment.  *len is NaN first.  TS_OK, TS_ERR_NULL. */
+ * or 20000 pieces per segment.  *len is NaN first; a length beyond the double
+ * range is +Inf, never NaN.  TS_OK, TS_ERR_NULL. */
 ts_status ts_curve_length(const ts_curve *c, double tol, double *len);
 
 /* Curve certificate against its box: exact minimum per segment and coordinate
@@ -615,7 +617,8 @@ ts_status ts_curve_certify(const ts_curve *c, ts_interval_report *reports, ts_er
  * > lo[k] where has_lo[k], < hi[k] where has_hi[k] (k < dim; has_lo/lo and
  * has_hi/hi may both be NULL pairs: that side is absent).  TS_OK,
  * TS_ERR_VIOLATED (index = first segment), TS_ERR_NONFINITE (an active bound),
- * TS_ERR_NULL (c NULL, or has_* given without its bounds). */
+ * TS_ERR_NULL (c NULL, or has_* given without its bounds).  reports are reset
+ * before any check. */
 ts_status ts_curve_certify_box(const ts_curve *c, const int has_lo[3], const double lo[3],
                                const int has_hi[3], const double hi[3],
                                ts_interval_report *reports, ts_error *err);

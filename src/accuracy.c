@@ -135,6 +135,9 @@ ts_status ts_error_bound(const ts_spline *s, double fprime_max, double fsecond_m
 {
     if (bound)
         *bound = NAN;
+    if (s && per_interval)
+        for (size_t i = 0; i < s->n; i++)
+            per_interval[i] = (double)NAN;
     if (!s || !bound)
         return TS_ERR_NULL;
     if (!isfinite(fprime_max) || (exact_slopes && isnan(fsecond_max)))

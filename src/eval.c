@@ -80,7 +80,7 @@ static ts_status eval_one(const ts_spline *sp, double x, ts_cursor *cur, int wan
         eval_in(sp, i, x, want, o);
         return TS_OK;
     case TS_EXTRAP_LINEAR: {
-        double e[3];
+        double e[3] = {0.0, 0.0, 0.0};
         eval_in(sp, i, xe, 1, e);
         o[0] = sp->f[left ? 0 : n] + e[1] * (x - xe);
         o[1] = e[1];
@@ -126,6 +126,8 @@ ts_status ts_eval_batch(const ts_spline *s, int deriv, const double *xq, size_t 
         return TS_ERR_NULL;
     }
     if (deriv < 0 || deriv > 2) {
+        for (size_t j = 0; j < m; j++)
+            yq[j] = (double)NAN;
         ts__error_set(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
         return TS_ERR_OPTION;
     }
