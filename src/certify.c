@@ -13,9 +13,14 @@
  *   3D0 − κ, D0 + 2D1/3 − κ, 4D1/3 − 6κ/5, 2D1 − 8κ/5, 8D1/3 − 12κ/5,
  *   8D1/3 + 4D2 − 4κ, 24D2 − 8κ.
  * Roots are isolated by Bernstein subdivision (Descartes' rule of signs:
- * 0 sign changes = no root, 1 = exactly one, bracketed and refined by the
- * Illinois method on the factored P), then g is evaluated at 0, 1 and every
- * root; the least value is the minimum.
+ * 0 sign changes = no root, 1 = exactly one, bracketed and refined by
+ * safeguarded Newton on the factored P), then g is evaluated at 0, 1 and
+ * every root; the least value is the minimum.  Only roots where P goes from
+ * − to + (minima of g) are refined: a maximum is never the least candidate.
+ * When the control polygon is monotone and κ has the other sign, g is
+ * monotone ((2.1)): no root, the minimum is at an end; that path (and that
+ * of no − before + among the coefficients) is also written out for a block
+ * of intervals at once (mono_certify), with the same operations.
  *
  * Rounding guard (ε = DBL_EPSILON, i.e. twice the unit roundoff).  Inputs
  * are scaled by a power of two (exact).  Three error sources:
@@ -36,10 +41,13 @@
 
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 #define TM_EPS DBL_EPSILON
 #define TM_MAXC 48   /* candidate slots: ≤ 2 ends + 6 roots + 6 deep leaves (+ split points) */
 #define TM_DEPTH 46  /* subdivision depth limit: width 2^-46 in t */
+#define TS_CERT_BLOCK 256 /* intervals per mono_certify call */
 
 typedef struct tm_ctx {
     double D0, D1, D2, k; /* scaled differences and κ */
@@ -68,38 +76,104 @@ static int sgn(double v)
     return (v > 0.0) - (v < 0.0);
 }
 
-/* One root of P in (lo, hi); sign of P just right of lo is s. */
-static void refine(tm_ctx *z, double lo, double hi, int s)
+/* de Casteljau at 1/2: b on [lo, hi] into l on [lo, mid], r on [mid, hi];
+ * written out (level k, entry j: wkj; no array shuffling through memory). */
+static void casteljau(const double b[7], double l[7], double r[7])
 {
-    double flo = p_eval(z, lo), fhi = p_eval(z, hi);
-    int illinois = sgn(flo) == s && sgn(fhi) == -s;
-    int side = 0;
-    for (int it = 0; it < 200 && hi - lo > 4.0 * TM_EPS; it++) {
-        double m = 0.5 * (lo + hi);
-        if (illinois && (it & 7) != 7) {
-            double r = (lo * fhi - hi * flo) / (fhi - flo);
-            if (r > lo && r < hi)
-                m = r;
-        }
-        double fm = p_eval(z, m);
-        int sm = sgn(fm);
-        if (sm == 0) {
-            lo = hi = m;
+#define TM_AV(p, q) (0.5 * ((p) + (q)))
+    double w10 = TM_AV(b[0], b[1]), w11 = TM_AV(b[1], b[2]), w12 = TM_AV(b[2], b[3]),
+           w13 = TM_AV(b[3], b[4]), w14 = TM_AV(b[4], b[5]), w15 = TM_AV(b[5], b[6]);
+    double w20 = TM_AV(w10, w11), w21 = TM_AV(w11, w12), w22 = TM_AV(w12, w13),
+           w23 = TM_AV(w13, w14), w24 = TM_AV(w14, w15);
+    double w30 = TM_AV(w20, w21), w31 = TM_AV(w21, w22), w32 = TM_AV(w22, w23),
+           w33 = TM_AV(w23, w24);
+    double w40 = TM_AV(w30, w31), w41 = TM_AV(w31, w32), w42 = TM_AV(w32, w33);
+    double w50 = TM_AV(w40, w41), w51 = TM_AV(w41, w42);
+    double w60 = TM_AV(w50, w51);
+#undef TM_AV
+    l[0] = b[0], l[1] = w10, l[2] = w20, l[3] = w30, l[4] = w40, l[5] = w50, l[6] = w60;
+    r[0] = w60, r[1] = w51, r[2] = w42, r[3] = w33, r[4] = w24, r[5] = w15, r[6] = b[6];
+}
+
+/* P (exactly as p_eval) and P' = −6D0(1−t)⁴(2+3t) + 4D1(1−5t⁴) + 120D2 t⁴
+ * − 6κt q² (derived by hand, checked with sympy) at t. */
+static double p_eval_d(const tm_ctx *z, double t, double *dp)
+{
+    double omt = 1.0 - t, opt = 1.0 + t, q = 1.0 + t * t;
+    double o2 = omt * omt, t2 = t * t, t4 = t2 * t2;
+    *dp = -6.0 * z->D0 * (o2 * o2) * (2.0 + 3.0 * t) + 4.0 * z->D1 * (1.0 - 5.0 * t4) +
+          120.0 * z->D2 * t4 - 6.0 * z->k * t * (q * q);
+    return 3.0 * z->D0 * (o2 * o2 * omt) * opt + 4.0 * z->D1 * t * omt * opt * q +
+           24.0 * z->D2 * (t2 * t2 * t) - z->k * (q * q * q);
+}
+
+/* One root of P in (lo, hi); sign of P just right of lo is s.  Newton's
+ * method inside the bracket, which every evaluation narrows; bisection when a
+ * step would leave the bracket or is not below half the step before the last
+ * (Numerical Recipes' rtsafe).  It ends, as plain bisection would, with a
+ * bracket below 4ε: once a step is below 2^-30 the next iterate is within
+ * ~step² (far below ε) of the root unless P'' is huge, and the points 2ε
+ * either side of it close the bracket (if not, the search goes on). */
+static void refine(tm_ctx *z, const double b[7], double lo, double hi, int s)
+{
+    const double w = 4.0 * TM_EPS;
+    /* start where the Bernstein polygon b (on [lo, hi]) crosses zero */
+    double t = 0.5 * (lo + hi), step = hi - lo, step_old = hi - lo;
+    for (int j = 0; j < 6; j++) {
+        if ((b[j] < 0.0 && b[j + 1] > 0.0) || (b[j] > 0.0 && b[j + 1] < 0.0)) {
+            double u = (j + b[j] / (b[j] - b[j + 1])) / 6.0, c = lo + (hi - lo) * u;
+            if (c > lo && c < hi)
+                t = c;
             break;
         }
-        if (sm == s) {
-            lo = m;
-            flo = fm;
-            if (side == -1)
-                fhi *= 0.5;
-            side = -1;
-        } else {
-            hi = m;
-            fhi = fm;
-            if (side == 1)
-                flo *= 0.5;
-            side = 1;
+    }
+    for (int it = 0; it < 200 && hi - lo > w; it++) {
+        double dp, f = p_eval_d(z, t, &dp);
+        int sf = sgn(f);
+        if (sf == 0) {
+            lo = hi = t;
+            break;
         }
+        if (sf == s)
+            lo = t;
+        else
+            hi = t;
+        double nt = t - f / dp, dn = fabs(nt - t);
+        if (dn <= 0x1p-30 && nt >= lo && nt <= hi) {
+            double pa = nt - 0.5 * w, pb = nt + 0.5 * w;
+            if (pa > lo) {
+                int sa = sgn(p_eval(z, pa));
+                if (sa == 0) {
+                    lo = hi = pa;
+                    break;
+                }
+                if (sa == s)
+                    lo = pa;
+                else
+                    hi = pa;
+            }
+            if (pb < hi) {
+                int sb = sgn(p_eval(z, pb));
+                if (sb == 0) {
+                    lo = hi = pb;
+                    break;
+                }
+                if (sb == s)
+                    lo = pb;
+                else
+                    hi = pb;
+            }
+            nt = 0.5 * (lo + hi);
+            step = step_old = hi - lo;
+        } else if (!(nt > lo && nt < hi && dn <= 0.5 * step_old)) { /* NaN: bisect too */
+            nt = 0.5 * (lo + hi);
+            step_old = step;
+            step = 0.5 * (hi - lo);
+        } else {
+            step_old = step;
+            step = dn;
+        }
+        t = nt;
     }
     add_cand(z, 0.5 * (lo + hi));
 }
@@ -107,22 +181,22 @@ static void refine(tm_ctx *z, double lo, double hi, int s)
 static void isolate(tm_ctx *z, const double b[7], double lo, double hi, int depth)
 {
     int var = 0, first = 0, last = 0;
-    for (int j = 0; j < 7; j++) {
+    for (int j = 0; j < 7; j++) { /* sign changes, zeros skipped (branch-free) */
         int s = sgn(b[j]);
-        if (!s)
-            continue;
-        if (last && s != last)
-            var++;
-        if (!first)
-            first = s;
-        last = s;
+        var += (s != 0) & (last != 0) & (s != last);
+        first = first != 0 ? first : s;
+        last = s != 0 ? s : last;
     }
     if (var == 0)
         return;
     if (depth > z->depth)
         z->depth = depth;
     if (var == 1) {
-        refine(z, lo, hi, first);
+        /* one simple root: a minimum of g only where P goes from - to +; a
+         * maximum (P from + to -) is never below both its neighbouring
+         * candidates (ends, minima), so it is not refined */
+        if (first < 0)
+            refine(z, b, lo, hi, first);
         return;
     }
     double mid = 0.5 * (lo + hi);
@@ -130,18 +204,8 @@ static void isolate(tm_ctx *z, const double b[7], double lo, double hi, int dept
         add_cand(z, mid);
         return;
     }
-    /* de Casteljau at 1/2 */
-    double w[7], l[7], r[7];
-    for (int j = 0; j < 7; j++)
-        w[j] = b[j];
-    l[0] = w[0];
-    r[6] = w[6];
-    for (int k = 1; k < 7; k++) {
-        for (int j = 0; j < 7 - k; j++)
-            w[j] = 0.5 * (w[j] + w[j + 1]);
-        l[k] = w[0];
-        r[6 - k] = w[6 - k];
-    }
+    double l[7], r[7];
+    casteljau(b, l, r);
     if (l[6] == 0.0)
         add_cand(z, mid);
     isolate(z, l, lo, mid, depth + 1);
@@ -162,59 +226,116 @@ static void basis_t(double t, double A[4])
 
 static double theta_of(double t)
 {
-    return t >= 1.0 ? TS_HALF_PI : 2.0 * atan(t);
+    return t >= 1.0 ? TS_HALF_PI : t == 0.0 ? 0.0 : 2.0 * atan(t); /* 2 atan 0 = 0 */
 }
 
-/* Exact min of g; *tbest its t, *errb the rounding guard (unscaled). */
-static double tmin_core(const double C[4], double kappa, double *theta, double *tbest,
-                        double *errb)
+/* frexp's exponent of a finite M > 0 (the call only for a subnormal M). */
+static int exponent_of(double M)
 {
-    double M = fabs(kappa);
-    int finite = isfinite(kappa);
-    for (int l = 0; l < 4; l++) {
-        finite = finite && isfinite(C[l]);
-        if (fabs(C[l]) > M)
-            M = fabs(C[l]);
+    uint64_t u;
+    memcpy(&u, &M, sizeof u);
+    int field = (int)((u >> 52) & 0x7ff);
+    if (field == 0) {
+        int e;
+        (void)frexp(M, &e);
+        return e;
     }
-    if (!finite) {
-        *theta = *tbest = *errb = NAN;
+    return field - 1022;
+}
+
+/* ldexp(x, k): one correctly rounded product by 2^k where 2^k is normal. */
+static double scale2(double x, int k)
+{
+    if (k >= -1022 && k <= 1023) {
+        uint64_t u = (uint64_t)(k + 1023) << 52;
+        double p;
+        memcpy(&p, &u, sizeof p);
+        return x * p;
+    }
+    return ldexp(x, k);
+}
+
+/* Exact min of g; *tbest its t, *theta (if not NULL) its θ, *errb the
+ * rounding guard (unscaled). */
+static double tmin_core(double C0, double C1, double C2, double C3, double kappa, double *theta,
+                        double *tbest, double *errb)
+{
+    /* scalars, not an array: a vector load of two separately stored
+     * elements stalls store forwarding */
+    double m0 = fabs(C0), m1 = fabs(C1), m2 = fabs(C2), m3 = fabs(C3), M = fabs(kappa);
+    if (!((m0 <= DBL_MAX) & (m1 <= DBL_MAX) & (m2 <= DBL_MAX) & (m3 <= DBL_MAX) & (M <= DBL_MAX))) {
+        if (theta)
+            *theta = NAN;
+        *tbest = *errb = NAN;
         return NAN;
     }
+    M = m0 > M ? m0 : M;
+    M = m1 > M ? m1 : M;
+    M = m2 > M ? m2 : M;
+    M = m3 > M ? m3 : M;
     if (M == 0.0) {
-        *theta = *tbest = *errb = 0.0;
+        if (theta)
+            *theta = 0.0;
+        *tbest = *errb = 0.0;
         return 0.0;
     }
-    int e;
-    (void)frexp(M, &e);
-    double Cs[4], ks = ldexp(kappa, -e);
-    for (int l = 0; l < 4; l++)
-        Cs[l] = ldexp(C[l], -e);
+    int e = exponent_of(M);
+    double c0, c1, c2, c3, ks, Ms;
+    if (e >= -1021 && e <= 1022) { /* 2^-e normal: one factor for all (as ldexp) */
+        double p = scale2(1.0, -e);
+        c0 = C0 * p, c1 = C1 * p, c2 = C2 * p, c3 = C3 * p, ks = kappa * p, Ms = M * p;
+    } else {
+        c0 = scale2(C0, -e), c1 = scale2(C1, -e), c2 = scale2(C2, -e), c3 = scale2(C3, -e);
+        ks = scale2(kappa, -e), Ms = scale2(M, -e);
+    }
     tm_ctx z;
-    z.D0 = Cs[1] - Cs[0];
-    z.D1 = Cs[2] - Cs[1];
-    z.D2 = Cs[3] - Cs[2];
+    z.D0 = c1 - c0;
+    z.D1 = c2 - c1;
+    z.D2 = c3 - c2;
     z.k = ks;
     z.nc = 0;
     z.depth = 0;
     double D0 = z.D0, D1 = z.D1, D2 = z.D2;
-    double b[7] = {3.0 * D0 - ks,
-                   D0 + (2.0 / 3.0) * D1 - ks,
-                   (4.0 / 3.0) * D1 - 1.2 * ks,
-                   2.0 * D1 - 1.6 * ks,
-                   (8.0 / 3.0) * D1 - 2.4 * ks,
-                   (8.0 / 3.0) * D1 + 4.0 * D2 - 4.0 * ks,
-                   24.0 * D2 - 8.0 * ks};
     double ak = fabs(ks), a0 = fabs(D0), a1 = fabs(D1), a2 = fabs(D2);
     double babs = 3.0 * a0 + 3.0 * a1 + 24.0 * a2 + 8.0 * ak;
     add_cand(&z, 0.0);
     add_cand(&z, 1.0);
-    isolate(&z, b, 0.0, 1.0, 0);
+    /* (2.1): a monotone control polygon with κ of the other sign makes g
+     * monotone; then every Bernstein coefficient below has one sign (also
+     * as computed: sums of rounded terms of one sign), no root, and the
+     * minimum is at an end.  Most intervals of real data are so. */
+    int mono = ((D0 >= 0.0) & (D1 >= 0.0) & (D2 >= 0.0) & (ks <= 0.0)) |
+               ((D0 <= 0.0) & (D1 <= 0.0) & (D2 <= 0.0) & (ks >= 0.0));
+    if (!mono) {
+        double b[7] = {3.0 * D0 - ks,
+                       D0 + (2.0 / 3.0) * D1 - ks,
+                       (4.0 / 3.0) * D1 - 1.2 * ks,
+                       2.0 * D1 - 1.6 * ks,
+                       (8.0 / 3.0) * D1 - 2.4 * ks,
+                       (8.0 / 3.0) * D1 + 4.0 * D2 - 4.0 * ks,
+                       24.0 * D2 - 8.0 * ks};
+        isolate(&z, b, 0.0, 1.0, 0);
+    }
 
-    double best = INFINITY, bt = 0.0;
-    for (int j = 0; j < z.nc; j++) {
+    /* the ends (candidates 0, 1) with basis_t's exact values there, A = e_0
+     * at t = 0, θ = 0, and A = e_3 at t = 1, θ = π/2; then the roots */
+    double g0 = 1.0 * c0 + 0.0 * c1 + 0.0 * c2 + 0.0 * c3;
+    double g1 = 0.0 * c0 + 0.0 * c1 + 0.0 * c2 + 1.0 * c3;
+    if (ks != 0.0) {
+        g0 -= ks * 0.0;
+        g1 -= ks * TS_HALF_PI;
+    }
+    double best = g1 < g0 ? g1 : g0, bt = g1 < g0 ? 1.0 : 0.0;
+    for (int j = 2; j < z.nc; j++) {
         double t = z.t[j], A[4];
-        basis_t(t, A);
-        double g = A[0] * Cs[0] + A[1] * Cs[1] + A[2] * Cs[2] + A[3] * Cs[3];
+        if (t == 0.0 || t == 1.0) { /* as above */
+            A[0] = t == 0.0 ? 1.0 : 0.0;
+            A[1] = A[2] = 0.0;
+            A[3] = 1.0 - A[0];
+        } else {
+            basis_t(t, A);
+        }
+        double g = A[0] * c0 + A[1] * c1 + A[2] * c2 + A[3] * c3;
         if (ks != 0.0)
             g -= ks * theta_of(t);
         if (g < best) {
@@ -222,22 +343,19 @@ static double tmin_core(const double C[4], double kappa, double *theta, double *
             bt = t;
         }
     }
-    double Ms = ldexp(M, -e);
     double eta = (6.0 * z.depth + 6.0) * TM_EPS * babs;
     double gd = 2.0 * (16.0 * TM_EPS * (Ms + TS_HALF_PI * ak) + 2.0 * eta);
     *tbest = bt;
-    *theta = theta_of(bt);
-    *errb = ldexp(gd, e);
-    return ldexp(best, e);
+    if (theta)
+        *theta = theta_of(bt);
+    *errb = scale2(gd, e);
+    return scale2(best, e);
 }
 
 double ts__trig_min(const double C[4], double kappa, double *theta_min)
 {
-    double t, eb, th;
-    double v = tmin_core(C, kappa, &th, &t, &eb);
-    if (theta_min)
-        *theta_min = th;
-    return v;
+    double t, eb;
+    return tmin_core(C[0], C[1], C[2], C[3], kappa, theta_min, &t, &eb);
 }
 
 /* ------------------------------------------------------------------ */
@@ -283,8 +401,7 @@ static double gap_ctl(const ts_spline *sp, size_t i, const double B[4], const do
     double C[4], kappa, theta, t, eb, m = ln->m, c = ln->c, sg = sign > 0 ? 1.0 : -1.0;
     double xi = sp->x[i], h = sp->h[i], bmax = 0.0, xmax = fabs(xi) + h;
     for (int l = 0; l < 4; l++)
-        if (fabs(B[l]) > bmax)
-            bmax = fabs(B[l]);
+        bmax = fabs(B[l]) > bmax ? fabs(B[l]) : bmax;
     double cerr = -1.0; /* geometric form: max rounding of the C_l */
     if (X) {
         /* SPEC §4: Y − L(X) = Σ A_l (Y_l − m X_l − c), exact */
@@ -295,13 +412,14 @@ static double gap_ctl(const ts_spline *sp, size_t i, const double B[4], const do
         }
         kappa = 0.0;
     } else {
-        /* SPEC §5: S − L = Σ A_l (B_l − L(x_i)) − (2mh/π) θ since Σ A_l = 1 */
+        /* SPEC §5: S − L = Σ A_l (B_l − L(x_i)) − (2mh/π) θ since Σ A_l = 1
+         * (m = 0: κ = ±0, the same as 0 below) */
         double L0 = m * xi + c;
         for (int l = 0; l < 4; l++)
             C[l] = sg * (B[l] - L0);
-        kappa = sg * m * (2.0 * h / TS_PI);
+        kappa = m != 0.0 ? sg * m * (2.0 * h / TS_PI) : 0.0;
     }
-    double g = tmin_core(C, kappa, &theta, &t, &eb);
+    double g = tmin_core(C[0], C[1], C[2], C[3], kappa, at && !X ? &theta : NULL, &t, &eb);
     if (at) {
         if (isnan(g)) {
             *at = NAN;
@@ -318,13 +436,14 @@ static double gap_ctl(const ts_spline *sp, size_t i, const double B[4], const do
     return g;
 }
 
+/* B of interval i; X (SPEC §4) only in the geometric form, the one that uses it. */
 static void controls_of(const ts_spline *sp, size_t i, double B[4], double X[4], int *geo)
 {
     ts__B(sp, i, B);
     *geo = sp->form == TS_FORM_GEOMETRIC;
     X[0] = sp->x[i];
-    X[1] = sp->xc1[i];
-    X[2] = sp->xc2[i];
+    X[1] = *geo ? sp->xc1[i] : (double)NAN;
+    X[2] = *geo ? sp->xc2[i] : (double)NAN;
     X[3] = sp->x[i + 1];
 }
 
@@ -345,7 +464,8 @@ typedef struct cert {
 } cert;
 
 /* Is interval i with controls B (X in the geometric form) inside the region
- * of sp's scheme?  exact: compute the trig-min certificates (into *cr);
+ * of sp's scheme?  exact: compute the trig-min certificates (into *cr, with
+ * the places of the minima if want_at: the report's, not the build's);
  * otherwise only the control-value test, which is a proof by itself
  * (S = Σ A_l B_l, A_l >= 0, Σ A_l = 1, SPEC §2):
  *  positive, f_i, f_{i+1} > 0: B0, B3 > 0 and B1, B2 >= 0 give S > 0;
@@ -355,7 +475,7 @@ typedef struct cert {
  *  lines, geometric form only: every Y_l − m X_l − c above its rounding
  *    (hull_inside); with exact, also a trig-min gap above its guard will do. */
 static int check_ctl(const ts_spline *sp, size_t i, const double B[4], const double *X,
-                     int exact, cert *cr)
+                     int exact, cert *cr, int want_at)
 {
     cr->glo = cr->alo = cr->gup = cr->aup = NAN;
     double f0 = sp->f[i], f1 = sp->f[i + 1], guard;
@@ -388,7 +508,7 @@ static int check_ctl(const ts_spline *sp, size_t i, const double B[4], const dou
                                   : (B[0] > 0.0 && B[3] > 0.0 && B[1] >= 0.0 && B[2] >= 0.0);
         if (!exact)
             return structural;
-        cr->glo = gap_ctl(sp, i, B, X, &sp->lower, 1, &cr->alo, &guard);
+        cr->glo = gap_ctl(sp, i, B, X, &sp->lower, 1, want_at ? &cr->alo : NULL, &guard);
         return structural || (!zero_end && cr->glo > guard);
     }
     int ok = 1;
@@ -401,7 +521,7 @@ static int check_ctl(const ts_spline *sp, size_t i, const double B[4], const dou
         int hull = X && hull_inside(B, X, ln, sign);
         if (exact) {
             double *g = side == 0 ? &cr->glo : &cr->gup, *a = side == 0 ? &cr->alo : &cr->aup;
-            *g = gap_ctl(sp, i, B, X, ln, sign, a, &guard);
+            *g = gap_ctl(sp, i, B, X, ln, sign, want_at ? a : NULL, &guard);
             ok = ok && (hull || *g > guard);
         } else {
             ok = ok && hull; /* only the geometric form gets here */
@@ -416,12 +536,7 @@ static int check_interval(ts_spline *sp, size_t i, int exact)
     int geo;
     cert cr;
     controls_of(sp, i, B, X, &geo);
-    int ok = check_ctl(sp, i, B, geo ? X : NULL, exact, &cr);
-    sp->gap_lo[i] = cr.glo;
-    sp->at_lo[i] = cr.alo;
-    sp->gap_up[i] = cr.gup;
-    sp->at_up[i] = cr.aup;
-    return ok;
+    return check_ctl(sp, i, B, geo ? X : NULL, exact, &cr, 0);
 }
 
 /* Set a_i (through beta_i) and recompute the controls it touches. */
@@ -497,7 +612,7 @@ static ts_status repair(ts_spline *sp, size_t i, double t, int exact, ts_error *
     X[0] = X[1] = sp->x[i];
     X[2] = X[3] = sp->x[i + 1];
     double lo, hi, amax;
-    if (check_ctl(sp, i, B, geo ? X : NULL, exact, &cr)) {
+    if (check_ctl(sp, i, B, geo ? X : NULL, exact, &cr, 0)) {
         lo = a0;
         hi = 2.0 * a0;
         for (;;) { /* a_i stays <= TS_A_MAX: never an infinite a (k_i = 0) */
@@ -615,24 +730,173 @@ static int relax_neighbours(ts_spline *sp, size_t i, int exact)
     return changed;
 }
 
-ts_status ts__certify_build(ts_spline *sp, const ts_options *opt, ts_error *err)
+/* opt->certify == 0 skips the trig-min certificates only where the
+ * control-value test is a proof (positive, monotone, geometric form) */
+int ts__certify_exact(const ts_options *opt)
 {
-    if (!sp || !opt)
-        return TS_ERR_NULL;
-    size_t n = sp->n;
-    sp->certified = 0;
-    sp->have_certs = 0;
-    if (sp->shape == TS_SHAPE_NONE)
-        return TS_OK;
-    int lines = sp->shape == TS_SHAPE_ABOVE || sp->shape == TS_SHAPE_BELOW ||
-                sp->shape == TS_SHAPE_BETWEEN;
-    /* opt->certify == 0 skips the trig-min certificates only where the
-     * control-value test is a proof (positive, monotone, geometric form) */
-    int exact = opt->certify != 0 || (lines && sp->form != TS_FORM_GEOMETRIC);
-    size_t budget = 16 * n + 64;
-    size_t i = 0;
-    while (i < n) {
-        if (check_interval(sp, i, exact)) {
+    int lines = opt->shape == TS_SHAPE_ABOVE || opt->shape == TS_SHAPE_BELOW ||
+                opt->shape == TS_SHAPE_BETWEEN;
+    return opt->certify != 0 || (lines && opt->form != TS_FORM_GEOMETRIC);
+}
+
+/* First interval in [i, i1) that check_ctl with exact == 0 would not pass,
+ * for the schemes whose control-value test is a bare sign test (paper and C¹
+ * forms; else i): the same decisions as check_ctl, in a loop that touches
+ * only the control values (issue 6).
+ *  positive: f_i >= 0 (ts__shape_apply checked the data) and finite, so
+ *    check_ctl's test is 0 <= B1, B2 <= DBL_MAX;
+ *  monotone: every B_l finite and B monotone in the interval's direction. */
+TS_VECTOR_LOOP static int ctl_nonnegative(const double *restrict b1, const double *restrict b2,
+                                          size_t i0, size_t i1)
+{
+    int ok = 1;
+    for (size_t i = i0; i < i1; i++)
+        ok &= (b1[i] >= 0.0) & (b1[i] <= DBL_MAX) & (b2[i] >= 0.0) & (b2[i] <= DBL_MAX);
+    return ok;
+}
+
+static size_t skip_proven(const ts_spline *sp, size_t i, size_t i1)
+{
+    if (sp->form == TS_FORM_GEOMETRIC)
+        return i;
+    const double *b1 = sp->b1, *b2 = sp->b2, *f = sp->f;
+    if (sp->shape == TS_SHAPE_POSITIVE) {
+        if (i < i1 && ctl_nonnegative(b1, b2, i, i1))
+            return i1; /* the whole range at once (a flag, so that it vectorises) */
+        while (i < i1 && b1[i] >= 0.0 && b1[i] <= DBL_MAX && b2[i] >= 0.0 && b2[i] <= DBL_MAX)
+            i++;
+    } else if (sp->shape == TS_SHAPE_MONOTONE) {
+        for (; i < i1; i++) {
+            double B0 = f[i], B1 = b1[i], B2 = b2[i], B3 = f[i + 1];
+            if (!(fabs(B1) <= DBL_MAX && fabs(B2) <= DBL_MAX))
+                break;
+            if (B3 > B0 ? !(B0 <= B1 && B1 <= B2 && B2 <= B3)
+                        : B3 < B0 ? !(B0 >= B1 && B1 >= B2 && B2 >= B3)
+                                  : !(B0 == B1 && B1 == B2 && B2 == B3))
+                break;
+        }
+    }
+    return i;
+}
+
+/* A block of exact certificates at once (issue 6): for each interval i in
+ * [i0, i1), ok[i] = 1 when check_ctl (exact, paper form, one boundary m x + c
+ * with sign sg; positive: the scheme's structural test too) would pass it
+ * through the path of tmin_core where the minimum is at an end (g monotone
+ * by (2.1), or no minimum inside: most intervals of real data), else 0 (not
+ * decided here: the general path then).  That path is written out operation
+ * by operation as gap_ctl and tmin_core do it (the same values), restricted
+ * to where it stays exact: finite controls, a normal M with 2^-e normal;
+ * branch-free, so that it vectorises. */
+TS_VECTOR_LOOP static void mono_certify(const double *restrict f, const double *restrict b1,
+                                        const double *restrict b2, const double *restrict x,
+                                        const double *restrict h, size_t i0, size_t i1,
+                                        double m, double c, double sg, int positive,
+                                        unsigned char *restrict ok)
+{
+    const double gm = 8.0 * TM_EPS, am = fabs(m), ac = fabs(c);
+    for (size_t i = i0; i < i1; i++) {
+        double B0 = f[i], B1 = b1[i], B2 = b2[i], B3 = f[i + 1];
+        double xi = x[i], hi = h[i], xmax = fabs(xi) + hi, bmax = 0.0;
+        bmax = fabs(B0) > bmax ? fabs(B0) : bmax;
+        bmax = fabs(B1) > bmax ? fabs(B1) : bmax;
+        bmax = fabs(B2) > bmax ? fabs(B2) : bmax;
+        bmax = fabs(B3) > bmax ? fabs(B3) : bmax;
+        int good = (fabs(B0) <= DBL_MAX) & (fabs(B1) <= DBL_MAX) & (fabs(B2) <= DBL_MAX) &
+                   (fabs(B3) <= DBL_MAX);
+        double L0 = m * xi + c;
+        double C0 = sg * (B0 - L0), C1 = sg * (B1 - L0), C2 = sg * (B2 - L0), C3 = sg * (B3 - L0);
+        /* gap_ctl has 0 for m = 0: ±0 here, the same from here on (|κ|, the
+         * signs of κ·2^-e, κ != 0 do not see the sign of a zero) */
+        double kappa = sg * m * (2.0 * hi / TS_PI);
+        /* tmin_core */
+        double m0 = fabs(C0), m1 = fabs(C1), m2 = fabs(C2), m3 = fabs(C3), M = fabs(kappa);
+        good &= (m0 <= DBL_MAX) & (m1 <= DBL_MAX) & (m2 <= DBL_MAX) & (m3 <= DBL_MAX) &
+                (M <= DBL_MAX);
+        M = m0 > M ? m0 : M;
+        M = m1 > M ? m1 : M;
+        M = m2 > M ? m2 : M;
+        M = m3 > M ? m3 : M;
+        uint64_t u;
+        memcpy(&u, &M, sizeof u);
+        int field = (int)((u >> 52) & 0x7ff), e = field - 1022; /* exponent_of, M normal */
+        good &= (field != 0) & (e >= -1021) & (e <= 1022);
+        int ec = good ? e : 0; /* keeps the factors below finite where not good */
+        uint64_t up = (uint64_t)(1023 - ec) << 52, ue = (uint64_t)(ec + 1023) << 52;
+        double p, q;
+        memcpy(&p, &up, sizeof p);
+        memcpy(&q, &ue, sizeof q);
+        double c0 = C0 * p, c1 = C1 * p, c2 = C2 * p, c3 = C3 * p, ks = kappa * p, Ms = M * p;
+        double D0 = c1 - c0, D1 = c2 - c1, D2 = c3 - c2;
+        double ak = fabs(ks), a0 = fabs(D0), a1 = fabs(D1), a2 = fabs(D2);
+        double babs = 3.0 * a0 + 3.0 * a1 + 24.0 * a2 + 8.0 * ak;
+        int mono = ((D0 >= 0.0) & (D1 >= 0.0) & (D2 >= 0.0) & (ks <= 0.0)) |
+                   ((D0 <= 0.0) & (D1 <= 0.0) & (D2 <= 0.0) & (ks >= 0.0));
+        /* isolate adds no candidate (and depth stays 0) unless a Bernstein
+         * coefficient < 0 comes before one > 0 (a sign change from - to +,
+         * where g has a minimum): then only the ends count */
+        double bb0 = 3.0 * D0 - ks, bb1 = D0 + (2.0 / 3.0) * D1 - ks,
+               bb2 = (4.0 / 3.0) * D1 - 1.2 * ks, bb3 = 2.0 * D1 - 1.6 * ks,
+               bb4 = (8.0 / 3.0) * D1 - 2.4 * ks, bb5 = (8.0 / 3.0) * D1 + 4.0 * D2 - 4.0 * ks,
+               bb6 = 24.0 * D2 - 8.0 * ks;
+        int neg = bb0 < 0.0, rise = 0;
+        rise |= neg & (bb1 > 0.0), neg |= bb1 < 0.0;
+        rise |= neg & (bb2 > 0.0), neg |= bb2 < 0.0;
+        rise |= neg & (bb3 > 0.0), neg |= bb3 < 0.0;
+        rise |= neg & (bb4 > 0.0), neg |= bb4 < 0.0;
+        rise |= neg & (bb5 > 0.0), neg |= bb5 < 0.0;
+        rise |= neg & (bb6 > 0.0);
+        good &= mono | !rise;
+        double g0 = 1.0 * c0 + 0.0 * c1 + 0.0 * c2 + 0.0 * c3;
+        double g1 = 0.0 * c0 + 0.0 * c1 + 0.0 * c2 + 1.0 * c3;
+        g0 = ks != 0.0 ? g0 - ks * 0.0 : g0;
+        g1 = ks != 0.0 ? g1 - ks * TS_HALF_PI : g1;
+        double best = g1 < g0 ? g1 : g0;
+        double eta = (6.0 * 0 + 6.0) * TM_EPS * babs; /* depth 0 */
+        double gd = 2.0 * (16.0 * TM_EPS * (Ms + TS_HALF_PI * ak) + 2.0 * eta);
+        double g = best * q, guard = gd * q + gm * (bmax + am * xmax + ac);
+        int pass = g > guard;
+        if (positive) {
+            double f0 = B0, f1 = B3;
+            int zero_end = !((f0 > 0.0) & (f1 > 0.0));
+            int structural = zero_end ? (B0 >= 0.0) & (B1 >= 0.0) & (B2 >= 0.0) & (B3 >= 0.0)
+                                      : (B0 > 0.0) & (B3 > 0.0) & (B1 >= 0.0) & (B2 >= 0.0);
+            pass = structural | ((!zero_end) & pass);
+        }
+        ok[i - i0] = (unsigned char)(good & pass & (M != 0.0));
+    }
+}
+
+/* The certification loop over [i0, i1).  In the paper and geometric forms
+ * every interval is checked (and repaired) on its own; the C¹ form steps back
+ * after a repair, so it runs once over [0, n). */
+static ts_status certify_loop(ts_spline *sp, const ts_options *opt, size_t i0, size_t i1,
+                              ts_error *err)
+{
+    int exact = ts__certify_exact(opt);
+    /* every repair moves on (paper, geometric) or may step back once (C¹) */
+    size_t budget = 16 * sp->n + 64;
+    size_t i = i0;
+    /* exact, paper form: mono_certify decides most intervals a block at a
+     * time (a repair there changes only its own interval) */
+    int batch = exact && sp->form == TS_FORM_PAPER && !(sp->has_lower && sp->has_upper) &&
+                (sp->has_lower || sp->has_upper);
+    unsigned char ok[TS_CERT_BLOCK];
+    size_t k0 = i, k1 = i; /* ok[] covers [k0, k1) */
+    while (i < i1) {
+        if (!exact) {
+            i = skip_proven(sp, i, i1);
+            if (i >= i1)
+                break;
+        }
+        if (batch && i >= k1) {
+            const ts_line *ln = sp->has_lower ? &sp->lower : &sp->upper;
+            k0 = i;
+            k1 = i1 - i > TS_CERT_BLOCK ? i + TS_CERT_BLOCK : i1;
+            mono_certify(sp->f, sp->b1, sp->b2, sp->x, sp->h, k0, k1, ln->m, ln->c,
+                         sp->has_lower ? 1.0 : -1.0, sp->shape == TS_SHAPE_POSITIVE, ok);
+        }
+        if ((batch && ok[i - k0]) || check_interval(sp, i, exact)) {
             i++;
             continue;
         }
@@ -654,9 +918,41 @@ ts_status ts__certify_build(ts_spline *sp, const ts_options *opt, ts_error *err)
         else
             i++;
     }
-    sp->have_certs = exact;
-    sp->certified = 1;
     return TS_OK;
+}
+
+ts_status ts__certify_range(ts_spline *sp, const ts_options *opt, size_t i0, size_t i1,
+                            ts_error *err)
+{
+    if (!sp || !opt || sp->form == TS_FORM_C1)
+        return TS_ERR_OPTION;
+    sp->certified = 0;
+    sp->have_certs = 0;
+    if (sp->shape == TS_SHAPE_NONE)
+        return TS_OK;
+    return certify_loop(sp, opt, i0, i1 < sp->n ? i1 : sp->n, err);
+}
+
+void ts__certify_done(ts_spline *sp, const ts_options *opt)
+{
+    if (sp->shape == TS_SHAPE_NONE)
+        return;
+    sp->have_certs = ts__certify_exact(opt);
+    sp->certified = 1;
+}
+
+ts_status ts__certify_build(ts_spline *sp, const ts_options *opt, ts_error *err)
+{
+    if (!sp || !opt)
+        return TS_ERR_NULL;
+    sp->certified = 0;
+    sp->have_certs = 0;
+    if (sp->shape == TS_SHAPE_NONE)
+        return TS_OK;
+    ts_status st = certify_loop(sp, opt, 0, sp->n, err);
+    if (st == TS_OK)
+        ts__certify_done(sp, opt);
+    return st;
 }
 
 /* ------------------------------------------------------------------ */
@@ -706,12 +1002,14 @@ ts_status ts_spline_report(const ts_spline *s, size_t i, ts_interval_report *rep
     controls_of(s, i, B, X, &geo);
     rep->has_lower = s->has_lower;
     rep->has_upper = s->has_upper;
-    rep->certified = s->certified && check_ctl(s, i, B, geo ? X : NULL, s->have_certs, &cr);
+    int ok = check_ctl(s, i, B, geo ? X : NULL, s->have_certs, &cr, 1); /* fills cr */
+    rep->certified = s->certified && ok;
     if (s->have_certs) {
-        rep->gap_lower = s->gap_lo[i];
-        rep->at_lower = s->at_lo[i];
-        rep->gap_upper = s->gap_up[i];
-        rep->at_upper = s->at_up[i];
+        /* the build's certificates, computed again (not stored: issue 6) */
+        rep->gap_lower = cr.glo;
+        rep->at_lower = cr.alo;
+        rep->gap_upper = cr.gup;
+        rep->at_upper = cr.aup;
     } else {
         /* certificates skipped at build (opt.certify = 0): compute them now */
         if (s->has_lower)

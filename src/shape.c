@@ -40,32 +40,53 @@ static int line_finite(const ts_line *l)
     return isfinite(l->m) && isfinite(l->c);
 }
 
-/* Check the data against the scheme; first offending point. */
-static ts_status check_data(const ts_spline *sp, ts_shape shape, ts_error *err)
+/* Direction of the data f[0..n]: sign of the first nonzero Δ_i (0: all flat). */
+static int data_dir(const double *f, size_t n)
 {
-    size_t np = sp->n + 1;
+    int dir = 0;
+    for (size_t i = 0; i < n && dir == 0; i++)
+        dir = (f[i + 1] > f[i]) - (f[i + 1] < f[i]);
+    return dir;
+}
+
+/* 1 if no f[p0..p1) is negative (or NaN); *zero: and whether one is 0.
+ * Flags, so that it vectorises. */
+TS_VECTOR_LOOP static int all_nonnegative(const double *restrict f, size_t p0, size_t p1, int *zero)
+{
+    int ok = 1, z = 0;
+    for (size_t i = p0; i < p1; i++) {
+        ok &= f[i] >= 0.0;
+        z |= f[i] == 0.0;
+    }
+    *zero = z;
+    return ok;
+}
+
+/* Check points [p0, p1) against the scheme; first offending point.  dir:
+ * data_dir (monotone only). */
+static ts_status check_data(const ts_spline *sp, ts_shape shape, int dir, size_t p0, size_t p1,
+                            ts_error *err)
+{
     const double *x = sp->x, *f = sp->f;
+    int zero;
     if (shape == TS_SHAPE_POSITIVE) {
-        for (size_t i = 0; i < np; i++)
+        if (all_nonnegative(f, p0, p1, &zero))
+            return TS_OK;
+        for (size_t i = p0; i < p1; i++)
             if (!(f[i] >= 0.0))
                 return fail(err, TS_ERR_NEGATIVE, i, TS_WHERE_POINT);
         return TS_OK;
     }
     if (shape == TS_SHAPE_MONOTONE) {
-        int dir = 0;
-        for (size_t i = 1; i < np; i++) {
+        for (size_t i = p0 > 1 ? p0 : 1; i < p1; i++) {
             double df = f[i] - f[i - 1];
             int s = (df > 0.0) - (df < 0.0);
-            if (s == 0)
-                continue;
-            if (dir == 0)
-                dir = s;
-            else if (s != dir)
+            if (s != 0 && s != dir) /* dir is the first nonzero s */
                 return fail(err, TS_ERR_NONMONOTONE, i, TS_WHERE_POINT);
         }
         return TS_OK;
     }
-    for (size_t i = 0; i < np; i++) {
+    for (size_t i = p0; i < p1; i++) {
         double lo = sp->has_lower ? line_at(&sp->lower, x[i]) : 0.0;
         double up = sp->has_upper ? line_at(&sp->upper, x[i]) : 0.0;
         if (sp->has_lower && sp->has_upper && !(lo < up))
@@ -78,14 +99,18 @@ static ts_status check_data(const ts_spline *sp, ts_shape shape, ts_error *err)
     return TS_OK;
 }
 
-/* SPEC §5.1: zero knots of non-negative data. */
-static ts_status zero_slopes(ts_spline *sp, const ts_options *opt, ts_error *err)
+/* SPEC §5.1: zero knots of non-negative data, points [p0, p1). */
+static ts_status zero_slopes(ts_spline *sp, const ts_options *opt, size_t p0, size_t p1,
+                             ts_error *err)
 {
     size_t n = sp->n;
     int user = opt->slopes == TS_SLOPES_USER;
     int periodic = opt->slopes == TS_SLOPES_PERIODIC;
     double *d = sp->d;
-    for (size_t i = 0; i <= n; i++) {
+    int zero;
+    if (all_nonnegative(sp->f, p0, p1, &zero) && !zero && !(periodic && p1 > n && sp->f[0] == 0.0))
+        return TS_OK; /* no zero knot here */
+    for (size_t i = p0; i < p1; i++) {
         if (sp->f[i] != 0.0)
             continue;
         int inner = (i > 0 && i < n) || periodic;
@@ -96,28 +121,42 @@ static ts_status zero_slopes(ts_spline *sp, const ts_options *opt, ts_error *err
             return fail(err, TS_ERR_ZERO_SLOPE, i, TS_WHERE_POINT);
         d[i] = 0.0;
     }
-    if (periodic && sp->f[0] == 0.0)
+    if (periodic && p1 > n && sp->f[0] == 0.0)
         d[0] = d[n] = 0.0;
     return TS_OK;
 }
 
-/* SPEC §5.5: wrong-sign slopes to 0, flat intervals get zero slopes. */
-static void monotone_slopes(ts_spline *sp)
+/* SPEC §5.5: wrong-sign slopes to 0, both slopes of a flat interval 0;
+ * points [p0, p1), dir = data_dir. */
+static void monotone_slopes(ts_spline *sp, int dir, size_t p0, size_t p1)
 {
     size_t n = sp->n;
-    double *d = sp->d, *f = sp->f;
-    int dir = 0;
-    for (size_t i = 0; i < n && dir == 0; i++)
-        dir = (f[i + 1] > f[i]) - (f[i + 1] < f[i]);
-    for (size_t i = 0; i <= n; i++)
+    double *d = sp->d;
+    const double *f = sp->f;
+    for (size_t i = p0; i < p1; i++) {
         if (dir * d[i] < 0.0 || dir == 0)
             d[i] = 0.0;
-    for (size_t i = 0; i < n; i++)
-        if (f[i + 1] == f[i])
-            d[i] = d[i + 1] = 0.0;
+        if ((i > 0 && f[i] == f[i - 1]) || (i < n && f[i + 1] == f[i]))
+            d[i] = 0.0;
+    }
 }
 
-ts_status ts__shape_apply(ts_spline *sp, const ts_options *opt, ts_error *err)
+/* margins t_i of SPEC §5, intervals [i0, i1) */
+static ts_status check_margins(const ts_options *opt, size_t i0, size_t i1, ts_error *err)
+{
+    double t0 = opt->margin;
+    if (!opt->margins && i0 < i1 && t0 > 0.0 && t0 <= DBL_MAX)
+        return TS_OK; /* one margin for all */
+    for (size_t i = i0; i < i1; i++) {
+        double t = opt->margins ? opt->margins[i] : opt->margin;
+        if (!(t > 0.0 && t <= DBL_MAX))
+            return fail(err, TS_ERR_MARGIN, i, TS_WHERE_INTERVAL);
+    }
+    return TS_OK;
+}
+
+/* Option and margin-array length checks. */
+static ts_status check_options(const ts_spline *sp, const ts_options *opt, ts_error *err)
 {
     if (!sp || !opt)
         return fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
@@ -125,18 +164,15 @@ ts_status ts__shape_apply(ts_spline *sp, const ts_options *opt, ts_error *err)
     if (!(shape == TS_SHAPE_POSITIVE || shape == TS_SHAPE_ABOVE || shape == TS_SHAPE_BELOW ||
           shape == TS_SHAPE_BETWEEN || shape == TS_SHAPE_MONOTONE))
         return fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
-    size_t n = sp->n;
-
-    /* margins t_i of SPEC §5 */
-    if (opt->margins && opt->n_margins != n)
+    if (opt->margins && opt->n_margins != sp->n)
         return fail(err, TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
-    for (size_t i = 0; i < n; i++) {
-        double t = opt->margins ? opt->margins[i] : opt->margin;
-        if (!(t > 0.0 && t <= DBL_MAX))
-            return fail(err, TS_ERR_MARGIN, i, TS_WHERE_INTERVAL);
-    }
+    return TS_OK;
+}
 
-    /* boundaries */
+/* Boundaries of the scheme into sp. */
+static ts_status boundaries(ts_spline *sp, const ts_options *opt, ts_error *err)
+{
+    ts_shape shape = opt->shape;
     sp->has_lower = shape == TS_SHAPE_POSITIVE || shape == TS_SHAPE_ABOVE ||
                     shape == TS_SHAPE_BETWEEN;
     sp->has_upper = shape == TS_SHAPE_BELOW || shape == TS_SHAPE_BETWEEN;
@@ -152,69 +188,172 @@ ts_status ts__shape_apply(ts_spline *sp, const ts_options *opt, ts_error *err)
             return fail(err, TS_ERR_NONFINITE, TS_NO_INDEX, TS_WHERE_NONE);
         sp->upper = opt->upper;
     }
+    return TS_OK;
+}
 
-    ts_status st = check_data(sp, shape, err);
+/* SPEC §5: beta_i = t_i + max{0, terms}; zero-gap knots drop their term.
+ * Each term is considered in turn and taken when strictly larger: below, one
+ * pass over a block per kind of term (lower line, upper line, monotone), then
+ * t_i and the caps, each a plain loop that vectorises (issue 6).  best[] is
+ * beta[] before the last pass. */
+/* The arrays of the passes (restrict parameters: through a struct GCC 12
+ * does not see that they do not alias, and does not vectorise). */
+#define TS_BETA_ARRAYS                                                         \
+    const double *restrict x, const double *restrict f, const double *restrict d, \
+        const double *restrict h, const double *restrict alpha, double *restrict best, \
+        unsigned char *restrict term
+#define TS_BETA_PASS(sp) (sp)->x, (sp)->f, (sp)->d, (sp)->h, (sp)->alpha, (sp)->beta, (sp)->term
+
+#define TS_K0 (2.0 / (3.0 * TS_PI))
+#define TS_CONSIDER(cond, val, code)                                           \
+    do {                                                                       \
+        double v_ = (val);                                                     \
+        int take_ = (cond) && v_ > b;                                          \
+        b = take_ ? v_ : b;                                                    \
+        t = take_ ? (code) : t;                                                \
+    } while (0)
+
+/* SPEC §5 lower boundary m x + c: B1 - l > 0, B2 - l > 0; in the geometric
+ * form (SPEC §4) the exact conditions Y_l - m X_l - c > 0 (ml = m, else 0). */
+TS_VECTOR_LOOP static void consider_lower(TS_BETA_ARRAYS, size_t i0, size_t i1, double m, double c,
+                                          double ml)
+{
+    for (size_t i = i0; i < i1; i++) {
+        double al = alpha[i], K = TS_K0 * h[i];
+        double g0 = f[i] - (m * x[i] + c), g1 = f[i + 1] - (m * x[i + 1] + c);
+        double b = best[i];
+        int t = term[i];
+        TS_CONSIDER(g0 > 0.0, -al - K * (d[i] - ml) / g0, TS_TERM_LOWER_LEFT);
+        TS_CONSIDER(g1 > 0.0, -al + K * (d[i + 1] - ml) / g1, TS_TERM_LOWER_RIGHT);
+        best[i] = b;
+        term[i] = (unsigned char)t;
+    }
+}
+
+/* SPEC §5 upper boundary, corrected signs (§5.3); mu as ml above. */
+TS_VECTOR_LOOP static void consider_upper(TS_BETA_ARRAYS, size_t i0, size_t i1, double m, double c,
+                                          double mu)
+{
+    for (size_t i = i0; i < i1; i++) {
+        double al = alpha[i], K = TS_K0 * h[i];
+        double G0 = (m * x[i] + c) - f[i], G1 = (m * x[i + 1] + c) - f[i + 1];
+        double b = best[i];
+        int t = term[i];
+        TS_CONSIDER(G0 > 0.0, -al + K * (d[i] - mu) / G0, TS_TERM_UPPER_LEFT);
+        TS_CONSIDER(G1 > 0.0, -al - K * (d[i + 1] - mu) / G1, TS_TERM_UPPER_RIGHT);
+        best[i] = b;
+        term[i] = (unsigned char)t;
+    }
+}
+
+/* SPEC §5.5: a_i >= 2(d_i + d_{i+1}) / (3π Δ_i) */
+TS_VECTOR_LOOP static void consider_monotone(TS_BETA_ARRAYS, size_t i0, size_t i1)
+{
+    (void)x;
+    for (size_t i = i0; i < i1; i++) {
+        double al = alpha[i], K = TS_K0 * h[i], df = f[i + 1] - f[i];
+        double b = best[i];
+        int t = term[i];
+        TS_CONSIDER(df != 0.0, K * (d[i] + d[i + 1]) / df - al, TS_TERM_MONOTONE);
+        best[i] = b;
+        term[i] = (unsigned char)t;
+    }
+}
+#undef TS_CONSIDER
+
+/* beta_i = t_i + best_i, capped (a_i finite for alpha near DBL_MAX) */
+TS_VECTOR_LOOP static void add_margins(const double *restrict alpha, double *restrict beta,
+                                       size_t i0, size_t i1, const double *restrict margins,
+                                       double margin)
+{
+#define TS_BETA(t)                                                             \
+    do {                                                                       \
+        double b = (t) + beta[i], al = alpha[i];                               \
+        b = b <= TS_BETA_CAP ? b : TS_BETA_CAP;                                \
+        beta[i] = al + b <= DBL_MAX ? b : DBL_MAX - al;                        \
+    } while (0)
+    if (margins) {
+        for (size_t i = i0; i < i1; i++)
+            TS_BETA(margins[i]);
+    } else {
+        for (size_t i = i0; i < i1; i++)
+            TS_BETA(margin);
+    }
+#undef TS_BETA
+}
+
+/* Intervals [i0, i1) (margins already checked). */
+static void betas(ts_spline *sp, const ts_options *opt, size_t i0, size_t i1)
+{
+    int geo = sp->form == TS_FORM_GEOMETRIC;
+    double *restrict best = sp->beta;
+    unsigned char *restrict term = sp->term;
+    for (size_t i = i0; i < i1; i++) {
+        best[i] = 0.0;
+        term[i] = (unsigned char)TS_TERM_MARGIN;
+    }
+    if (sp->has_lower)
+        consider_lower(TS_BETA_PASS(sp), i0, i1, sp->lower.m, sp->lower.c, geo ? sp->lower.m : 0.0);
+    if (sp->has_upper)
+        consider_upper(TS_BETA_PASS(sp), i0, i1, sp->upper.m, sp->upper.c, geo ? sp->upper.m : 0.0);
+    if (opt->shape == TS_SHAPE_MONOTONE)
+        consider_monotone(TS_BETA_PASS(sp), i0, i1);
+    add_margins(sp->alpha, sp->beta, i0, i1, opt->margins, opt->margin);
+}
+
+/* Slope adjustments of points [p0, p1) (their data already checked). */
+static ts_status adjust(ts_spline *sp, const ts_options *opt, int dir, size_t p0, size_t p1,
+                        ts_error *err)
+{
+    if (opt->shape == TS_SHAPE_POSITIVE)
+        return zero_slopes(sp, opt, p0, p1, err);
+    if (opt->shape == TS_SHAPE_MONOTONE)
+        monotone_slopes(sp, dir, p0, p1);
+    return TS_OK;
+}
+
+ts_status ts__shape_apply(ts_spline *sp, const ts_options *opt, ts_error *err)
+{
+    ts_status st = check_options(sp, opt, err);
+    if (st == TS_OK)
+        st = check_margins(opt, 0, sp->n, err);
+    if (st == TS_OK)
+        st = boundaries(sp, opt, err);
     if (st != TS_OK)
         return st;
-    if (shape == TS_SHAPE_POSITIVE) {
-        st = zero_slopes(sp, opt, err);
-        if (st != TS_OK)
-            return st;
-    } else if (shape == TS_SHAPE_MONOTONE) {
-        monotone_slopes(sp);
-    }
-
-    /* SPEC §5: beta_i = t_i + max{0, terms}; zero-gap knots drop their term */
-    const double K0 = 2.0 / (3.0 * TS_PI);
-    const double *x = sp->x, *f = sp->f, *d = sp->d;
-    for (size_t i = 0; i < n; i++) {
-        double t = opt->margins ? opt->margins[i] : opt->margin;
-        double al = sp->alpha[i], K = K0 * sp->h[i];
-        double best = 0.0, v;
-        ts_term term = TS_TERM_MARGIN;
-#define TS_CONSIDER(val, code)                                                 \
-    do {                                                                       \
-        v = (val);                                                             \
-        if (v > best) {                                                        \
-            best = v;                                                          \
-            term = (code);                                                     \
-        }                                                                      \
-    } while (0)
-        if (sp->has_lower) {
-            /* SPEC §5 lower boundary: B1 - l > 0, B2 - l > 0 */
-            double g0 = f[i] - line_at(&sp->lower, x[i]);
-            double g1 = f[i + 1] - line_at(&sp->lower, x[i + 1]);
-            /* SPEC §4: geometric form, exact conditions Y_l - m X_l - c > 0 */
-            double ml = sp->form == TS_FORM_GEOMETRIC ? sp->lower.m : 0.0;
-            if (g0 > 0.0)
-                TS_CONSIDER(-al - K * (d[i] - ml) / g0, TS_TERM_LOWER_LEFT);
-            if (g1 > 0.0)
-                TS_CONSIDER(-al + K * (d[i + 1] - ml) / g1, TS_TERM_LOWER_RIGHT);
-        }
-        if (sp->has_upper) {
-            /* SPEC §5 upper boundary, corrected signs (§5.3) */
-            double G0 = line_at(&sp->upper, x[i]) - f[i];
-            double G1 = line_at(&sp->upper, x[i + 1]) - f[i + 1];
-            double mu = sp->form == TS_FORM_GEOMETRIC ? sp->upper.m : 0.0;
-            if (G0 > 0.0)
-                TS_CONSIDER(-al + K * (d[i] - mu) / G0, TS_TERM_UPPER_LEFT);
-            if (G1 > 0.0)
-                TS_CONSIDER(-al - K * (d[i + 1] - mu) / G1, TS_TERM_UPPER_RIGHT);
-        }
-        if (shape == TS_SHAPE_MONOTONE) {
-            /* SPEC §5.5: a_i >= 2(d_i + d_{i+1}) / (3π Δ_i) */
-            double df = f[i + 1] - f[i];
-            if (df != 0.0)
-                TS_CONSIDER(K * (d[i] + d[i + 1]) / df - al, TS_TERM_MONOTONE);
-        }
-#undef TS_CONSIDER
-        double beta = t + best;
-        if (!(beta <= TS_BETA_CAP))
-            beta = TS_BETA_CAP;
-        if (!(al + beta <= DBL_MAX)) /* alpha near DBL_MAX: keep a_i finite */
-            beta = DBL_MAX - al;
-        sp->beta[i] = beta;
-        sp->term[i] = (unsigned char)term;
-    }
+    int dir = opt->shape == TS_SHAPE_MONOTONE ? data_dir(sp->f, sp->n) : 0;
+    size_t np = sp->n + 1;
+    /* every point checked before any slope is adjusted: the first error */
+    st = check_data(sp, opt->shape, dir, 0, np, err);
+    if (st == TS_OK)
+        st = adjust(sp, opt, dir, 0, np, err);
+    if (st != TS_OK)
+        return st;
+    betas(sp, opt, 0, sp->n);
     return TS_OK;
+}
+
+ts_status ts__shape_begin(ts_spline *sp, const ts_options *opt, const double *f, int *dir,
+                          ts_error *err)
+{
+    *dir = 0;
+    ts_status st = check_options(sp, opt, err);
+    if (st == TS_OK)
+        st = boundaries(sp, opt, err);
+    if (st == TS_OK && opt->shape == TS_SHAPE_MONOTONE)
+        *dir = data_dir(f, sp->n);
+    return st;
+}
+
+ts_status ts__shape_range(ts_spline *sp, const ts_options *opt, int dir, size_t p0, size_t p1,
+                          size_t i0, size_t i1, ts_error *err)
+{
+    ts_status st = check_margins(opt, i0, i1, err);
+    if (st == TS_OK)
+        st = check_data(sp, opt->shape, dir, p0, p1, err);
+    if (st == TS_OK)
+        st = adjust(sp, opt, dir, p0, p1, err);
+    if (st == TS_OK)
+        betas(sp, opt, i0, i1);
+    return st;
 }

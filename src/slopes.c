@@ -95,13 +95,18 @@ static void weights_brodlie(const double *x, size_t i, double *w0, double *w1)
     *w1 = b / (a + b);
 }
 
-/* Interior d_1..d_{n-1} by one of the three means with the given weights. */
+/* Interior d_i, i in [p0, p1) ∩ [1, n-1], by one of the three means with the
+ * given weights. */
 static void interior(const double *x, const double *f, size_t n, double *d,
                      double (*mean)(double, double, double, double),
-                     void (*weights)(const double *, size_t, double *, double *))
+                     void (*weights)(const double *, size_t, double *, double *), size_t p0,
+                     size_t p1)
 {
-    double Dl = secant(x, f, 0);
-    for (size_t i = 1; i < n; i++) {
+    size_t lo = p0 > 1 ? p0 : 1, hi = p1 < n ? p1 : n;
+    if (lo >= hi)
+        return;
+    double Dl = secant(x, f, lo - 1);
+    for (size_t i = lo; i < hi; i++) {
         double Dr = secant(x, f, i), w0, w1;
         weights(x, i, &w0, &w1);
         d[i] = mean(Dl, Dr, w0, w1);
@@ -109,12 +114,33 @@ static void interior(const double *x, const double *f, size_t n, double *d,
     }
 }
 
+/* The same for the arithmetic mean with three-point weights (the default):
+ * secant, share and mean_arith written out expression by expression (the
+ * same values), branch-free so that it vectorises (issue 6). */
+TS_VECTOR_LOOP static void interior_arith(const double *restrict x, const double *restrict f,
+                                          size_t n, double *restrict d, size_t p0, size_t p1)
+{
+    size_t lo = p0 > 1 ? p0 : 1, hi = p1 < n ? p1 : n;
+    for (size_t i = lo; i < hi; i++) {
+        double hl = x[i] - x[i - 1], hr = x[i + 1] - x[i];
+        double Dl = (f[i] - f[i - 1]) / hl, Dr = (f[i + 1] - f[i]) / hr;
+        /* share(): halve both widths when their sum overflows (exact) */
+        double sc = hr + hl <= DBL_MAX ? 1.0 : 0.5;
+        double a = sc * hr, b = sc * hl, s = a + b;
+        double w0 = a / s, w1 = b / s;
+        d[i] = Dl == Dr ? Dl : w0 * Dl + w1 * Dr;
+    }
+}
+
 /* Both ends by the three-point formula; limit 0: sign-limited (d = 0 unless d
  * has the sign of the end secant); limit 1: also Fritsch–Carlson/Moler's
  * |d| <= 3|Δ| when the two end secants differ in sign. */
-static void ends3(const double *x, const double *f, size_t n, double *d, int limit)
+static void ends3(const double *x, const double *f, size_t n, double *d, int limit, size_t p0,
+                  size_t p1)
 {
     for (int side = 0; side < 2; side++) {
+        if (side == 0 ? p0 > 0 : p1 <= n)
+            continue; /* that end is outside [p0, p1) */
         double h0, h1, D0, D1;
         if (side == 0) {
             h0 = x[1] - x[0];
@@ -156,9 +182,10 @@ static double akima_m(const double *x, const double *f, size_t n, long j)
     return 2.0 * g1 - a;
 }
 
-static void akima(const double *x, const double *f, size_t n, double *d, int modified)
+static void akima(const double *x, const double *f, size_t n, double *d, int modified, size_t p0,
+                  size_t p1)
 {
-    for (size_t i = 0; i <= n; i++) {
+    for (size_t i = p0; i < p1; i++) {
         long k = (long)i;
         double m0 = akima_m(x, f, n, k - 2), m1 = akima_m(x, f, n, k - 1);
         double m2 = akima_m(x, f, n, k), m3 = akima_m(x, f, n, k + 1);
@@ -187,13 +214,93 @@ static void akima(const double *x, const double *f, size_t n, double *d, int mod
 }
 
 /* SPEC §6 periodic: three-point mean, interval n-1 is the left neighbour of point 0. */
-static void periodic(const double *x, const double *f, size_t n, double *d)
+static void periodic(const double *x, const double *f, size_t n, double *d, size_t p0, size_t p1)
 {
-    interior(x, f, n, d, mean_arith, weights_three_point);
+    interior_arith(x, f, n, d, p0, p1);
+    if (p0 > 0 && p1 <= n)
+        return;
     double hl = x[n] - x[n - 1], hr = x[1] - x[0];
     double w0 = share(hr, hl), w1 = share(hl, hr);
-    d[0] = mean_arith(secant(x, f, n - 1), secant(x, f, 0), w0, w1);
-    d[n] = d[0];
+    double e = mean_arith(secant(x, f, n - 1), secant(x, f, 0), w0, w1);
+    if (p0 == 0)
+        d[0] = e;
+    if (p1 > n)
+        d[n] = e;
+}
+
+/* x, f finite, x strictly increasing with finite widths (np >= 2): one pass
+ * of flags, so that it vectorises; ts_slopes_compute's ordered checks then
+ * name the first offender. */
+TS_VECTOR_LOOP static int inputs_block(const double *restrict x, const double *restrict f,
+                                       size_t i0, size_t i1)
+{
+    int ok = 1;
+    for (size_t i = i0; i < i1; i++)
+        ok &= (fabs(x[i]) <= DBL_MAX) & (fabs(f[i]) <= DBL_MAX) & (x[i] > x[i - 1]) &
+              (x[i] - x[i - 1] <= DBL_MAX);
+    return ok;
+}
+
+static int inputs_ok(const double *x, const double *f, size_t np)
+{
+    int ok = fabs(x[0]) <= DBL_MAX && fabs(f[0]) <= DBL_MAX;
+    for (size_t i0 = 1; i0 < np && ok; i0 += 4096)
+        ok = inputs_block(x, f, i0, np - i0 > 4096 ? i0 + 4096 : np);
+    return ok;
+}
+
+/* 1 if every d[0..np) is finite. */
+TS_VECTOR_LOOP static int all_finite(const double *restrict d, size_t np)
+{
+    int ok = 1;
+    for (size_t i = 0; i < np; i++)
+        ok &= fabs(d[i]) <= DBL_MAX;
+    return ok;
+}
+
+void ts__slopes_range(ts_slopes method, const double *x, const double *f, size_t np, double *d,
+                      size_t p0, size_t p1)
+{
+    size_t n = np - 1;
+    if (p1 > np)
+        p1 = np;
+    if (p0 >= p1)
+        return;
+    if (n == 1) { /* SPEC §6: two points */
+        double D = secant(x, f, 0);
+        for (size_t i = p0; i < p1; i++)
+            d[i] = D;
+        return;
+    }
+    switch (method) {
+    case TS_SLOPES_GEOMETRIC:
+        interior(x, f, n, d, mean_geom, weights_three_point, p0, p1);
+        ends3(x, f, n, d, 0, p0, p1);
+        break;
+    case TS_SLOPES_HARMONIC:
+        interior(x, f, n, d, mean_harm, weights_three_point, p0, p1);
+        ends3(x, f, n, d, 0, p0, p1);
+        break;
+    case TS_SLOPES_FRITSCH_CARLSON:
+        interior(x, f, n, d, mean_harm, weights_brodlie, p0, p1);
+        ends3(x, f, n, d, 1, p0, p1);
+        break;
+    case TS_SLOPES_AKIMA:
+        akima(x, f, n, d, 0, p0, p1);
+        break;
+    case TS_SLOPES_MAKIMA:
+        akima(x, f, n, d, 1, p0, p1);
+        break;
+    case TS_SLOPES_PERIODIC:
+        periodic(x, f, n, d, p0, p1);
+        break;
+    case TS_SLOPES_ARITHMETIC:
+    case TS_SLOPES_USER:
+    default:
+        interior_arith(x, f, n, d, p0, p1);
+        ends3(x, f, n, d, -1, p0, p1);
+        break;
+    }
 }
 
 ts_status ts__slopes(ts_slopes method, const double *x, const double *f, size_t np,
@@ -208,40 +315,10 @@ ts_status ts__slopes(ts_slopes method, const double *x, const double *f, size_t 
         ts__error_set(err, TS_ERR_PERIODIC, n, TS_WHERE_POINT);
         return TS_ERR_PERIODIC;
     }
-    if (n == 1) { /* SPEC §6: two points */
-        d[0] = d[1] = secant(x, f, 0);
-    } else {
-        switch (method) {
-        case TS_SLOPES_GEOMETRIC:
-            interior(x, f, n, d, mean_geom, weights_three_point);
-            ends3(x, f, n, d, 0);
-            break;
-        case TS_SLOPES_HARMONIC:
-            interior(x, f, n, d, mean_harm, weights_three_point);
-            ends3(x, f, n, d, 0);
-            break;
-        case TS_SLOPES_FRITSCH_CARLSON:
-            interior(x, f, n, d, mean_harm, weights_brodlie);
-            ends3(x, f, n, d, 1);
-            break;
-        case TS_SLOPES_AKIMA:
-            akima(x, f, n, d, 0);
-            break;
-        case TS_SLOPES_MAKIMA:
-            akima(x, f, n, d, 1);
-            break;
-        case TS_SLOPES_PERIODIC:
-            periodic(x, f, n, d);
-            break;
-        case TS_SLOPES_ARITHMETIC:
-        case TS_SLOPES_USER:
-        default:
-            interior(x, f, n, d, mean_arith, weights_three_point);
-            ends3(x, f, n, d, -1);
-            break;
-        }
-    }
-    /* finite data can still overflow (huge f over a tiny h) */
+    ts__slopes_range(method, x, f, np, d, 0, np);
+    /* finite data can still overflow (huge f over a tiny h): the first one */
+    if (all_finite(d, np))
+        return TS_OK;
     for (size_t i = 0; i <= n; i++) {
         if (!isfinite(d[i])) {
             ts__error_set(err, TS_ERR_NONFINITE, i, TS_WHERE_POINT);
@@ -265,25 +342,27 @@ ts_status ts_slopes_compute(ts_slopes method, const double *x, const double *f,
         st = TS_ERR_TOO_FEW;
         goto fail;
     }
-    for (size_t i = 0; i < n_points; i++) {
-        if (!isfinite(x[i]) || !isfinite(f[i])) {
-            st = TS_ERR_NONFINITE;
-            idx = i;
-            goto fail;
+    if (!inputs_ok(x, f, n_points)) { /* the checks in order: the first offender */
+        for (size_t i = 0; i < n_points; i++) {
+            if (!isfinite(x[i]) || !isfinite(f[i])) {
+                st = TS_ERR_NONFINITE;
+                idx = i;
+                goto fail;
+            }
         }
-    }
-    for (size_t i = 1; i < n_points; i++) {
-        if (!(x[i] > x[i - 1])) {
-            st = TS_ERR_UNSORTED;
-            idx = i;
-            goto fail;
+        for (size_t i = 1; i < n_points; i++) {
+            if (!(x[i] > x[i - 1])) {
+                st = TS_ERR_UNSORTED;
+                idx = i;
+                goto fail;
+            }
         }
-    }
-    for (size_t i = 1; i < n_points; i++) {
-        if (!isfinite(x[i] - x[i - 1])) { /* as ts_spline_new: a width overflows */
-            st = TS_ERR_NONFINITE;
-            idx = i;
-            goto fail;
+        for (size_t i = 1; i < n_points; i++) {
+            if (!isfinite(x[i] - x[i - 1])) { /* as ts_spline_new: a width overflows */
+                st = TS_ERR_NONFINITE;
+                idx = i;
+                goto fail;
+            }
         }
     }
     if (!((int)method >= 0 && (int)method < TS_SLOPES_COUNT_) || method == TS_SLOPES_USER) {
