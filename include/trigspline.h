@@ -46,7 +46,9 @@ typedef enum ts_status {
     TS_ERR_NOMEM = 2,        /* allocation failed */
     TS_ERR_OVERFLOW = 3,     /* n * sizeof(...) would overflow size_t */
     TS_ERR_TOO_FEW = 4,      /* fewer than 2 points (n < 1 interval) */
-    TS_ERR_NONFINITE = 5,    /* NaN or ±Inf in x, f, slopes or line coefficients */
+    TS_ERR_NONFINITE = 5,    /* NaN or ±Inf in x, f, slopes or line coefficients; an interval width
+                                that overflows or is subnormal (index = its right point); control
+                                values that overflow (tiny alpha + beta; index = interval) */
     TS_ERR_UNSORTED = 6,     /* x not strictly increasing (unsorted or duplicate); index = i with x[i] <= x[i-1] */
     TS_ERR_ALPHA = 7,        /* alpha <= 0 or not finite; index = interval */
     TS_ERR_BETA = 8,         /* beta < 0 or not finite, or alpha + beta <= 0 or not finite; index = interval */

@@ -413,8 +413,8 @@ static ts_status build_blocked(ts_spline *sp, const ts_options *o, const double 
     return TS_OK;
 }
 
-static ts_status build(ts_spline *sp, const ts_options *o, const double *x, const double *f,
-                       ts_error *err)
+static ts_status build_all(ts_spline *sp, const ts_options *o, const double *x, const double *f,
+                           ts_error *err)
 {
     size_t n = sp->n, np = n + 1, done = 0;
     ts_status st;
@@ -479,6 +479,21 @@ static ts_status build(ts_spline *sp, const ts_options *o, const double *x, cons
     return TS_OK;
 }
 
+/* The build, then: control values must be finite (a tiny a_i with a large
+ * slope can overflow B1, B2; no shape scheme to catch it).  An integral that
+ * overflows is not an error: ts_integral then returns ±Inf. */
+static ts_status build(ts_spline *sp, const ts_options *o, const double *x, const double *f,
+                       ts_error *err)
+{
+    ts_status st = build_all(sp, o, x, f, err);
+    if (st != TS_OK)
+        return st;
+    for (size_t i = 0; i < sp->n; i++)
+        if (!(fabs(sp->b1[i]) <= DBL_MAX && fabs(sp->b2[i]) <= DBL_MAX))
+            return fail(err, TS_ERR_NONFINITE, i, TS_WHERE_INTERVAL);
+    return TS_OK;
+}
+
 /* x, f finite, x strictly increasing with finite widths: one pass for the
  * common case (ts_spline_new's ordered checks name the first offender). */
 TS_VECTOR_LOOP static int points_ok(const double *restrict x, const double *restrict f, size_t i0,
@@ -487,7 +502,7 @@ TS_VECTOR_LOOP static int points_ok(const double *restrict x, const double *rest
     int ok = 1;
     for (size_t i = i0; i < i1; i++)
         ok &= (fabs(x[i]) <= DBL_MAX) & (fabs(f[i]) <= DBL_MAX) & (x[i] > x[i - 1]) &
-              (x[i] - x[i - 1] <= DBL_MAX);
+              (x[i] - x[i - 1] <= DBL_MAX) & (x[i] - x[i - 1] >= DBL_MIN);
     return ok;
 }
 
@@ -540,8 +555,9 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
         for (size_t i = 1; i < n_points; i++)
             if (!(x[i] > x[i - 1]))
                 return fail(err, TS_ERR_UNSORTED, i, TS_WHERE_POINT);
+        /* widths must be finite and normal: dθ/dx = (π/2)/h must not overflow */
         for (size_t i = 0; i < n; i++)
-            if (!isfinite(x[i + 1] - x[i]))
+            if (!(x[i + 1] - x[i] <= DBL_MAX && x[i + 1] - x[i] >= DBL_MIN))
                 return fail(err, TS_ERR_NONFINITE, i + 1, TS_WHERE_POINT);
     }
 

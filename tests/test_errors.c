@@ -395,8 +395,34 @@ static void test_nomem(void)
     CHECK(failed >= 1);
 }
 
+/* Overflowing control values (tiny alpha, no scheme) and subnormal widths
+ * ((π/2)/h overflows) are refused: TS_ERR_NONFINITE with the interval /
+ * the right point of the width (review findings A and B). */
+static void test_overflowing_controls(void)
+{
+    static const double x[4] = {0, 1, 2, 3}, f[4] = {1, 2, 0, 3};
+    static const double x2[3] = {0, 1e-310, 1}, f2[3] = {1, 1, 3};
+    for (int form = TS_FORM_PAPER; form <= TS_FORM_C1; form++) {
+        ts_options o;
+        ts_options_init(&o);
+        o.form = (ts_form)form;
+        o.alpha = 1e-310;
+        ts_spline *s = NULL;
+        ts_error e;
+        ts_status st = ts_spline_new(x, f, 4, &o, &s, &e);
+        CHECKF(st == TS_ERR_NONFINITE && s == NULL && e.index == 0 && e.where == TS_WHERE_INTERVAL,
+               "form %d: %d index %zu", form, (int)st, e.index);
+    }
+    ts_spline *s = NULL;
+    ts_error e;
+    ts_status st = ts_spline_new(x2, f2, 3, NULL, &s, &e);
+    CHECKF(st == TS_ERR_NONFINITE && s == NULL && e.index == 1 && e.where == TS_WHERE_POINT, "%d index %zu",
+           (int)st, e.index);
+}
+
 int main(void)
 {
+    test_overflowing_controls();
     test_nomem();
     test_strerror();
     test_new();
