@@ -159,3 +159,38 @@ def finish_output(kind, result, n):
     if kind == "list":
         return [result[i] for i in range(n)]
     return result
+
+
+class Handle(object):
+    """Owner of one C handle: close() frees it (idempotent), also on garbage
+    collection and at the end of a with block.  Subclasses set _h, _free
+    (the C free function's name in the library) and _kind."""
+
+    _h = None
+    _free = None
+    _kind = "object"
+
+    def close(self):
+        """Free the C object now (later calls raise ValueError).  Idempotent."""
+        h, self._h = self._h, None
+        if h is not None and h.value:
+            from ._ffi import lib
+            getattr(lib, self._free)(h)
+
+    def __del__(self):
+        try:
+            self.close()
+        except Exception:  # interpreter shutdown: the library may be gone
+            pass
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
+    def _handle(self):
+        if self._h is None:
+            raise ValueError("this %s has been closed" % self._kind)
+        return self._h

@@ -3,7 +3,7 @@ import ctypes
 
 from . import _ffi
 from ._ffi import lib
-from ._util import (PARAMS, SLOPE_ALIASES, SLOPES, c_doubles, enum_value, float_list, is_scalar,
+from ._util import (Handle, PARAMS, SLOPE_ALIASES, SLOPES, c_doubles, enum_value, float_list, is_scalar,
                     np, num, to_float, WHERE_NAMES)
 from .errors import _S, TrigsplineError, simple_error, strerror
 from .spline import _per_interval, _report_dict
@@ -56,7 +56,7 @@ def _box(box, dim):
     return has_lo, lo, has_hi, hi
 
 
-class Curve(object):
+class Curve(Handle):
     """The trigonometric spline curve through points (rows of 2 or 3 coordinates).
 
     Curve(points, *, closed=False, param='centripetal', alpha=1.0, beta=0.0,
@@ -68,6 +68,9 @@ class Curve(object):
     box     one (lo, hi) pair per coordinate, None for an open side: each
             coordinate kept strictly inside (beta raised where needed, certified)
     """
+
+    _free = "ts_curve_free"
+    _kind = "Curve"
 
     def __init__(self, points, *, closed=False, param="centripetal", alpha=1.0, beta=0.0,
                  box=None, slopes="arithmetic", margin=None):
@@ -139,30 +142,6 @@ class Curve(object):
         return TrigsplineError(st, msg, idx, where)
 
     # ---- life time ------------------------------------------------------
-    def close(self):
-        """Free the C curve now (later calls raise ValueError).  Idempotent."""
-        h, self._h = getattr(self, "_h", None), None
-        if h is not None and h.value:
-            lib.ts_curve_free(h)
-
-    def __del__(self):
-        try:
-            self.close()
-        except Exception:
-            pass
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-        return False
-
-    def _handle(self):
-        if self._h is None:
-            raise ValueError("this Curve has been closed")
-        return self._h
-
     def __repr__(self):
         if self._h is None:
             return "<trigspline.Curve (freed)>"

@@ -4,7 +4,7 @@ import math
 
 from . import _ffi
 from ._ffi import lib
-from ._util import (EXTRAPS, FORMS, SHAPES, SLOPE_ALIASES, SLOPES, TERMS, c_doubles,
+from ._util import (Handle, EXTRAPS, FORMS, SHAPES, SLOPE_ALIASES, SLOPES, TERMS, c_doubles,
                     enum_value, finish_output, float_list, given_output, input_array,
                     is_scalar, num, output_array, to_float)
 from .errors import _S, TrigsplineError, domain_error, simple_error, spline_error, strerror
@@ -62,7 +62,7 @@ def estimate_slopes(x, f, method="arithmetic"):
     return [out.ptr[i] for i in range(len(xs))]
 
 
-class Spline(object):
+class Spline(Handle):
     """The spline through (x[i], f[i]).
 
     Spline(x, f, *, shape='none', alpha=1.0, beta=0.0, margin=None, line=None,
@@ -88,6 +88,9 @@ class Spline(object):
     Free the C object with close() or a with-block; it is also freed when the
     Spline is garbage collected.
     """
+
+    _free = "ts_spline_free"
+    _kind = "Spline"
 
     def __init__(self, x, f, *, shape="none", alpha=1.0, beta=0.0, margin=None, line=None,
                  lower=None, upper=None, slopes="arithmetic", form="paper",
@@ -196,30 +199,6 @@ class Spline(object):
         self._extrap = EXTRAPS[opt.extrapolate]
 
     # ---- life time ------------------------------------------------------
-    def close(self):
-        """Free the C spline now (later calls raise ValueError).  Idempotent."""
-        h, self._h = getattr(self, "_h", None), None
-        if h is not None and h.value:
-            lib.ts_spline_free(h)
-
-    def __del__(self):
-        try:
-            self.close()
-        except Exception:  # interpreter shutdown: the library may be gone
-            pass
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        self.close()
-        return False
-
-    def _handle(self):
-        if self._h is None:
-            raise ValueError("this Spline has been closed")
-        return self._h
-
     def __repr__(self):
         if self._h is None:
             return "<trigspline.Spline (closed)>"
