@@ -600,32 +600,6 @@ ts_status ts_curve_params(const ts_curve *c, size_t i, double *alpha, double *be
     return TS_OK;
 }
 
-/* Segment containing t in [t0, tn] (right-hand segment at inner knots). */
-static size_t curve_locate(const ts_curve *c, double t, ts_cursor *cur)
-{
-    size_t n = c->n;
-    if (cur && cur->interval < n) {
-        size_t i = cur->interval;
-        if (c->t[i] <= t && (t < c->t[i + 1] || i == n - 1))
-            return i;
-        if (i + 1 < n && c->t[i + 1] <= t && (t < c->t[i + 2] || i + 1 == n - 1)) {
-            cur->interval = i + 1;
-            return i + 1;
-        }
-    }
-    size_t lo = 0, hi = n; /* t[lo] <= t, answer in [lo, hi) */
-    while (hi - lo > 1) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (c->t[mid] <= t)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    if (cur)
-        cur->interval = lo;
-    return lo;
-}
-
 /* Point and derivatives of segment i at delta in [0, 1]. */
 static void seg_eval(const ts_curve *c, size_t i, double delta, double *p, double *dp,
                      double *d2p)
@@ -677,7 +651,7 @@ ts_status ts_curve_eval(const ts_curve *c, double t, ts_cursor *cur, double *p, 
     } else if (!(t0 <= t && t <= tn)) {
         return TS_ERR_DOMAIN;
     }
-    size_t i = curve_locate(c, t, cur);
+    size_t i = ts__search(c->t, c->n, t, cur); /* right-hand segment at inner knots */
     double delta = (t - c->t[i]) / (c->t[i + 1] - c->t[i]);
     if (delta < 0.0)
         delta = 0.0;

@@ -8,8 +8,11 @@
 
 size_t ts__locate(const ts_spline *sp, double x, ts_cursor *cur)
 {
-    const double *xs = sp->x;
-    size_t n = sp->n;
+    return ts__search(sp->x, sp->n, x, cur);
+}
+
+size_t ts__search(const double *xs, size_t n, double x, ts_cursor *cur)
+{
     if (cur) {
         size_t i = cur->interval;
         if (i < n && xs[i] <= x) {

@@ -100,6 +100,9 @@ static inline void ts__B(const ts_spline *sp, size_t i, double B[4])
 }
 /* Interval containing x (x already in [x0, xn]); hint may be NULL. */
 size_t ts__locate(const ts_spline *sp, double x, ts_cursor *cur);
+/* The same on any increasing knots xs[0..n] (n >= 1 intervals): the largest
+ * i <= n-1 with xs[i] <= x, trying the cursor and its successor first. */
+size_t ts__search(const double *xs, size_t n, double x, ts_cursor *cur);
 
 /* ---- shape.c (SPEC §5) ----------------------------------------------- */
 /* For opt->shape != TS_SHAPE_NONE: check the data against the scheme, adjust
