@@ -51,7 +51,7 @@ accuracy: build
 	./build/accuracy --doc docs/accuracy.md --svg docs/accuracy.svg
 
 demo: build
-	python3 scripts/paper_demo.py build/trigspline ../shared/data/paper out/paper
+	python3 scripts/paper_demo.py build/trigspline data/paper out/paper
 
 clean:
 	rm -rf build build-asan build-bench out

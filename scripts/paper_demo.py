@@ -337,7 +337,7 @@ page = """<!DOCTYPE html>
 <style>%s</style></head><body>
 <h1>Shape-preserving positive trigonometric spline curves — the numerical section, reproduced</h1>
 <p>Every panel below was made by the <code>trigspline</code> command shown above it, on the paper's data
-(<code>shared/data/paper/</code>). Tables list, per interval, the shape parameters and the <b>certificate</b>: the
+(<code>data/paper/</code>). Tables list, per interval, the shape parameters and the <b>certificate</b>: the
 exact minimum distance of the curve to each boundary on that interval (from the critical points of the
 trigonometric polynomial, not from samples) and where it is attained. Slopes: arithmetic mean (SPEC §6);
 margin t = 0.01 unless stated.</p>

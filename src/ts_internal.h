@@ -81,7 +81,9 @@ void ts__slopes_range(ts_slopes method, const double *x, const double *f, size_t
 /* Every allocation of the library goes through these.  Tests only: when
  * ts__test_fail_alloc > 0 it counts allocations down and the one that
  * brings it to 0 fails (to provoke TS_ERR_NOMEM).  Not thread-safe. */
+#ifdef TS_TEST_HOOKS
 extern long ts__test_fail_alloc;
+#endif
 void *ts__malloc(size_t bytes);
 void *ts__calloc(size_t count, size_t size);
 void ts__error_set(ts_error *err, ts_status st, size_t index, ts_where where);

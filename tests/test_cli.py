@@ -32,7 +32,7 @@ BUILD = sys.argv[1] if len(sys.argv) > 1 else "build"
 CLI = os.path.abspath(os.path.join(BUILD, "trigspline"))
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
-PAPER = os.path.join(REPO, "..", "shared", "data", "paper")
+PAPER = os.path.join(REPO, "data", "paper")
 FIX = os.path.join(HERE, "data")
 TMP = tempfile.mkdtemp(prefix="ts_cli_test_")
 

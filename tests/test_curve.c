@@ -1059,8 +1059,8 @@ static double chord_distance(const ts_curve *c)
 
 static void test_paper(void)
 {
-    const char *files[2] = {TS_SHARED_DIR "/data/paper/fig2_closed.csv",
-                            TS_SHARED_DIR "/data/paper/fig3_closed.csv"};
+    const char *files[2] = {TS_SOURCE_DIR "/data/paper/fig2_closed.csv",
+                            TS_SOURCE_DIR "/data/paper/fig3_closed.csv"};
     const double betas[3] = {0.001, 0.01, 0.05};
     for (int f = 0; f < 2; f++) {
         double P[64];
@@ -1106,8 +1106,8 @@ static void test_paper(void)
  * like 1/a, not to one straight line. */
 static void test_beta_limit(void)
 {
-    const char *files[2] = {TS_SHARED_DIR "/data/paper/fig2_closed.csv",
-                            TS_SHARED_DIR "/data/paper/fig3_closed.csv"};
+    const char *files[2] = {TS_SOURCE_DIR "/data/paper/fig2_closed.csv",
+                            TS_SOURCE_DIR "/data/paper/fig3_closed.csv"};
     const double betas[] = {0.001, 0.01, 0.05, 1, 10, 100, 1000, 10000};
     double s1 = (4 - sqrt(7.0)) / 3, maxA1 = s1 * (1 - s1) * (3 - s1);
     for (int f = 0; f < 2; f++) {

@@ -19,7 +19,7 @@ import xml.etree.ElementTree as ET
 build = sys.argv[1] if len(sys.argv) > 1 else "build"
 repo = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 cli = os.path.abspath(os.path.join(build, "trigspline"))
-data = os.path.join(repo, "..", "shared", "data", "paper")
+data = os.path.join(repo, "data", "paper")
 passed = failed = 0
 
 

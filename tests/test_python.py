@@ -9,7 +9,7 @@ Expected values come from outside the binding and the library:
     cc against include/ (skipped without a C compiler);
   - values, derivatives, integrals: SPEC §2/§3/§6 re-derived below in pure
     Python (math module), written from SPEC, not from the C code;
-  - shape schemes: the paper's tables (../shared/data/paper), checked on
+  - shape schemes: the paper's tables (data/paper), checked on
     dense samples and against the reported exact minima;
   - curves: knots recomputed from SPEC §7, the polygon/polyline length bounds.
 Last line: "test_python: N passed, M failed".
@@ -26,8 +26,7 @@ import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 REPO = os.path.dirname(HERE)
-SHARED = os.environ.get("TS_SHARED_DIR", os.path.join(REPO, "..", "shared"))
-PAPER = os.path.join(SHARED, "data", "paper")
+PAPER = os.path.join(REPO, "data", "paper")
 EPS = 2.0 ** -52
 
 passed = 0

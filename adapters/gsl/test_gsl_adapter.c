@@ -22,7 +22,7 @@ static void count_handler(const char *reason, const char *file, int line, int gs
     handler_calls++;
 }
 
-/* The paper's Table 1 (../shared/data/paper/table1_positive.csv). */
+/* The paper's Table 1 (data/paper/table1_positive.csv). */
 static const double T1x[] = {0, 2, 3, 5, 15, 25, 27, 28, 30};
 static const double T1f[] = {2, 1.58, 1.55, 1.54, 1.8, 1.54, 1.55, 1.58, 2};
 /* Non-uniform, positive, not monotone. */
