@@ -1,6 +1,6 @@
 /* SPEC §8: error constants and a-posteriori error bounds.  Derivations:
  * docs/accuracy.md §3. */
-#include "ts_internal.h"
+#include "internal.h"
 
 #include <math.h>
 

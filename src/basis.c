@@ -1,5 +1,5 @@
 /* SPEC §2: the cubic trigonometric basis, its derivatives and integrals. */
-#include "ts_internal.h"
+#include "internal.h"
 
 #include <math.h>
 

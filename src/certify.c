@@ -37,7 +37,7 @@
  * certificate adds the rounding of C_l = ±(B_l − L(x_i)) and of
  * κ = ±2mh/π: 8ε (max|B| + |m|(|x_i| + h) + |c|).
  */
-#include "ts_internal.h"
+#include "internal.h"
 
 #include <float.h>
 #include <math.h>

@@ -1,6 +1,6 @@
 /* SPEC §7: parametric curves (open/closed, 2-D/3-D), box constraints of SPEC §5
  * applied per coordinate with a shared beta per segment. */
-#include "ts_internal.h"
+#include "internal.h"
 
 #include <float.h>
 #include <math.h>

@@ -1,6 +1,6 @@
 /* Evaluation, batch evaluation and integrals (SPEC §2, §3). */
 #define _POSIX_C_SOURCE 200809L
-#include "ts_internal.h"
+#include "internal.h"
 
 #include <math.h>
 #include <pthread.h>

@@ -25,7 +25,7 @@
  * and for AVX-512F and chosen at run time (__builtin_cpu_supports); elsewhere,
  * or with -DTS_FAST_PORTABLE, only the portable C version exists.  The
  * geometric form (SPEC §4) goes point by point through ts_eval_deriv. */
-#include "ts_internal.h"
+#include "internal.h"
 
 #include <math.h>
 #include <stddef.h>

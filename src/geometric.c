@@ -1,6 +1,6 @@
 /* SPEC §4: the geometric form (X(θ), Y(θ)) with the same k_i in both
  * coordinates.  Derivations: docs/accuracy.md §1. */
-#include "ts_internal.h"
+#include "internal.h"
 
 #include <float.h>
 #include <math.h>

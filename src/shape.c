@@ -16,7 +16,7 @@
  * Data on a line are refused (TS_ERR_SIDE): unlike y = 0 for positive data,
  * touching a sloped line cannot be kept in the paper form.
  */
-#include "ts_internal.h"
+#include "internal.h"
 
 #include <float.h>
 #include <math.h>

@@ -1,6 +1,6 @@
 /* SPEC §6: slope estimates d_0..d_n.  Method details: comments at enum ts_slopes
  * in trigspline.h.  Secants are recomputed where needed: nothing is allocated. */
-#include "ts_internal.h"
+#include "internal.h"
 
 #include <float.h>
 #include <math.h>

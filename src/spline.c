@@ -1,6 +1,6 @@
 /* Construction, accessors and status strings (SPEC §1, §3). */
 #define _DEFAULT_SOURCE /* MADV_HUGEPAGE */
-#include "ts_internal.h"
+#include "internal.h"
 
 #include <float.h>
 #include <math.h>

@@ -1,5 +1,5 @@
 /* SPEC §2: the cubic trigonometric basis, through the internal functions of
- * src/ts_internal.h.  Expected values come from the SPEC's own definitions,
+ * src/internal.h.  Expected values come from the SPEC's own definitions,
  * re-typed here (A0 = (1-s)^3, A1 = 3s - 4s^2 + s^3, ...), from finite
  * differences and from Gauss–Legendre quadrature -- never from basis.c.
  *
@@ -13,7 +13,7 @@
  * rounding error <= 4ε·M0/h when each f is computed to within 4 ulp of M0.
  */
 #include "th.h"
-#include "ts_internal.h"
+#include "internal.h"
 
 #include <float.h>
 #include <math.h>

@@ -4,7 +4,7 @@
  * ts_spline_certified and their error paths. */
 #include "th.h"
 #include "trigspline.h"
-#include "ts_internal.h"
+#include "internal.h"
 
 #include <float.h>
 #include <math.h>

@@ -2,7 +2,7 @@
  * index and kind reported through ts_error (header: include/trigspline.h).
  * Expected statuses come from the header's per-function lists. */
 #include "th.h"
-#include "ts_internal.h"
+#include "internal.h"
 #include "trigspline.h"
 
 #include <math.h>
@@ -362,7 +362,7 @@ static void test_overflow(void)
     }
 }
 
-/* TS_ERR_NOMEM: the library's test hook (ts_internal.h) makes the k-th
+/* TS_ERR_NOMEM: the library's test hook (internal.h) makes the k-th
  * allocation fail; nothing may leak (ASan/valgrind) and *out stays NULL. */
 static void test_nomem(void)
 {

@@ -48,7 +48,7 @@
  */
 #include "th.h"
 #include "trigspline.h"
-#include "ts_internal.h"
+#include "internal.h"
 
 #include <float.h>
 #include <math.h>

@@ -9,7 +9,7 @@
  *    sets); its output is checked in as tests/ref/slopes_ref.h.
  */
 #include "th.h"
-#include "ts_internal.h"
+#include "internal.h"
 #include "trigspline.h"
 
 #include "ref/slopes_ref.h"

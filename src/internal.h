@@ -1,6 +1,6 @@
 /* Internal layout shared by the library's source files.  Not installed. */
-#ifndef TS_INTERNAL_H
-#define TS_INTERNAL_H
+#ifndef TS_SRC_INTERNAL_H
+#define TS_SRC_INTERNAL_H
 
 #include "trigspline.h"
 
