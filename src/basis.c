@@ -72,3 +72,31 @@ void ts__seg_sc(const double B[4], double s, double c, int want, double out[3])
         out[2] = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
     }
 }
+
+size_t ts__search(const double *xs, size_t n, double x, ts_cursor *cur)
+{
+    if (cur) {
+        size_t i = cur->interval;
+        if (i < n && xs[i] <= x) {
+            if (x < xs[i + 1] || (i + 1 == n))
+                return i;
+            /* sorted queries: try the next interval before searching */
+            if (i + 2 <= n && (x < xs[i + 2] || i + 2 == n)) {
+                cur->interval = i + 1;
+                return i + 1;
+            }
+        }
+    }
+    /* largest i in [0, n-1] with xs[i] <= x */
+    size_t lo = 0, hi = n; /* invariant: xs[lo] <= x, answer < hi */
+    while (hi - lo > 1) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (xs[mid] <= x)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    if (cur)
+        cur->interval = lo;
+    return lo;
+}

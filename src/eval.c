@@ -1,65 +1,11 @@
-/* Evaluation, batch evaluation and integrals (SPEC §2, §3). */
+/* Evaluation entry points: single, batch and threaded batch, integrals;
+ * each form is routed to its interval evaluator or batch kernel (SPEC §2–§4). */
 #define _POSIX_C_SOURCE 200809L
 #include "internal.h"
 
 #include <math.h>
 #include <pthread.h>
 #include <unistd.h>
-
-size_t ts__locate(const ts_spline *sp, double x, ts_cursor *cur)
-{
-    return ts__search(sp->x, sp->n, x, cur);
-}
-
-size_t ts__search(const double *xs, size_t n, double x, ts_cursor *cur)
-{
-    if (cur) {
-        size_t i = cur->interval;
-        if (i < n && xs[i] <= x) {
-            if (x < xs[i + 1] || (i + 1 == n))
-                return i;
-            /* sorted queries: try the next interval before searching */
-            if (i + 2 <= n && (x < xs[i + 2] || i + 2 == n)) {
-                cur->interval = i + 1;
-                return i + 1;
-            }
-        }
-    }
-    /* largest i in [0, n-1] with xs[i] <= x */
-    size_t lo = 0, hi = n; /* invariant: xs[lo] <= x, answer < hi */
-    while (hi - lo > 1) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (xs[mid] <= x)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    if (cur)
-        cur->interval = lo;
-    return lo;
-}
-
-/* Value and derivatives (in x) of interval i at x; x may lie outside the
- * interval (TS_EXTRAP_EXTEND). */
-static void eval_in(const ts_spline *sp, size_t i, double x, int want, double o[3])
-{
-    if (sp->form == TS_FORM_GEOMETRIC) {
-        ts__geo_eval(sp, i, x, want, o);
-        return;
-    }
-    double h = sp->h[i], B[4];
-    ts__B(sp, i, B);
-    double w = TS_HALF_PI / h; /* dθ/dx */
-    double u = x - sp->x[i], v = sp->x[i + 1] - x;
-    /* θ from the nearer end: sin and cos of π/2 − θ' are exact at the right
-     * knot (s = 1, c = 0), so both knots are interpolated exactly. */
-    if (u <= v)
-        ts__seg_sc(B, sin(u * w), cos(u * w), want, o);
-    else
-        ts__seg_sc(B, cos(v * w), sin(v * w), want, o);
-    o[1] *= w;
-    o[2] *= w * w;
-}
 
 static ts_status eval_one(const ts_spline *sp, double x, ts_cursor *cur, int want, double o[3])
 {
@@ -69,7 +15,7 @@ static ts_status eval_one(const ts_spline *sp, double x, ts_cursor *cur, int wan
     size_t n = sp->n;
     double x0 = sp->x[0], xn = sp->x[n];
     if (x0 <= x && x <= xn) {
-        eval_in(sp, ts__locate(sp, x, cur), x, want, o);
+        ts__interval_eval(sp, ts__locate(sp, x, cur), x, want, o);
         return TS_OK;
     }
     int left = x < x0;
@@ -80,11 +26,11 @@ static ts_status eval_one(const ts_spline *sp, double x, ts_cursor *cur, int wan
         o[0] = sp->f[left ? 0 : n];
         return TS_OK;
     case TS_EXTRAP_EXTEND:
-        eval_in(sp, i, x, want, o);
+        ts__interval_eval(sp, i, x, want, o);
         return TS_OK;
     case TS_EXTRAP_LINEAR: {
         double e[3] = {0.0, 0.0, 0.0};
-        eval_in(sp, i, xe, 1, e);
+        ts__interval_eval(sp, i, xe, 1, e);
         o[0] = sp->f[left ? 0 : n] + e[1] * (x - xe);
         o[1] = e[1];
         return TS_OK;
@@ -95,8 +41,8 @@ static ts_status eval_one(const ts_spline *sp, double x, ts_cursor *cur, int wan
     }
 }
 
-ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur,
-                        double *y, double *dy, double *d2y)
+static ts_status eval_deriv(const ts_spline *s, double x, ts_cursor *cur, double *y,
+                            double *dy, double *d2y)
 {
     double o[3] = {NAN, NAN, NAN};
     ts_status st = TS_ERR_NULL;
@@ -117,11 +63,17 @@ ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur,
 
 ts_status ts_eval(const ts_spline *s, double x, ts_cursor *cur, double *y)
 {
-    return ts_eval_deriv(s, x, cur, y, NULL, NULL);
+    return eval_deriv(s, x, cur, y, NULL, NULL);
 }
 
-ts_status ts_eval_batch(const ts_spline *s, int deriv, const double *xq, size_t m,
-                        double *yq, ts_cursor *cur, ts_error *err)
+ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur, double *y, double *dy,
+                        double *d2y)
+{
+    return eval_deriv(s, x, cur, y, dy, d2y);
+}
+
+static ts_status batch_eval(const ts_spline *s, int deriv, const double *xq, size_t m,
+                            double *yq, ts_cursor *cur, ts_error *err)
 {
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
     if (!s || (m && (!xq || !yq))) {
@@ -169,6 +121,12 @@ ts_status ts_eval_batch(const ts_spline *s, int deriv, const double *xq, size_t 
     return result;
 }
 
+ts_status ts_eval_batch(const ts_spline *s, int deriv, const double *xq, size_t m,
+                        double *yq, ts_cursor *cur, ts_error *err)
+{
+    return batch_eval(s, deriv, xq, m, yq, cur, err);
+}
+
 typedef struct mt_job {
     const ts_spline *s;
     int deriv;
@@ -182,7 +140,7 @@ typedef struct mt_job {
 static void *mt_run(void *arg)
 {
     mt_job *j = arg;
-    j->st = ts_eval_batch(j->s, j->deriv, j->xq, j->m, j->yq, NULL, &j->err);
+    j->st = batch_eval(j->s, j->deriv, j->xq, j->m, j->yq, NULL, &j->err);
     return NULL;
 }
 
@@ -198,9 +156,9 @@ ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size
     if (nthreads > TS_MT_MAX)
         nthreads = TS_MT_MAX;
     if (!s || nthreads <= 1 || m < 2 * (size_t)nthreads)
-        return ts_eval_batch(s, deriv, xq, m, yq, NULL, err);
+        return batch_eval(s, deriv, xq, m, yq, NULL, err);
     if (!xq || !yq || deriv < 0 || deriv > 2)
-        return ts_eval_batch(s, deriv, xq, m, yq, NULL, err);
+        return batch_eval(s, deriv, xq, m, yq, NULL, err);
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
     mt_job jobs[TS_MT_MAX];
     pthread_t th[TS_MT_MAX];
@@ -231,18 +189,6 @@ ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size
     return result;
 }
 
-/* ∫_{x_i}^{x} S on interval i, x in the interval. */
-static double partial(const ts_spline *sp, size_t i, double x)
-{
-    if (sp->form == TS_FORM_GEOMETRIC)
-        return ts__geo_integral(sp, i, x);
-    double h = sp->h[i], B[4], I[4];
-    double theta = TS_HALF_PI * (x - sp->x[i]) / h;
-    ts__B(sp, i, B);
-    ts__basis_int(theta, sin(theta), cos(theta), I);
-    return (2.0 * h / TS_PI) * (I[0] * B[0] + I[1] * B[1] + I[2] * B[2] + I[3] * B[3]);
-}
-
 ts_status ts_integral(const ts_spline *s, double a, double b, double *out)
 {
     if (out)
@@ -268,10 +214,10 @@ ts_status ts_integral(const ts_spline *s, double a, double b, double *out)
     ib = ts__locate(s, b, NULL);
     double r;
     if (ia == ib)
-        r = partial(s, ia, b) - partial(s, ia, a);
+        r = ts__interval_integral(s, ia, b) - ts__interval_integral(s, ia, a);
     else
-        r = (s->cum[ib] - s->cum[ia + 1]) + (s->cum[ia + 1] - s->cum[ia] - partial(s, ia, a)) +
-            partial(s, ib, b);
+        r = (s->cum[ib] - s->cum[ia + 1]) + (s->cum[ia + 1] - s->cum[ia] - ts__interval_integral(s, ia, a)) +
+            ts__interval_integral(s, ib, b);
     *out = sign * r;
     return TS_OK;
 }

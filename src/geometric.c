@@ -205,10 +205,9 @@ double ts__geo_integral(const ts_spline *sp, size_t i, double x)
 }
 
 /* SPEC §4 bound; the policy is documented at TS_FORM_GEOMETRIC. */
-ts_status ts__geo_check(ts_spline *sp, const ts_options *opt, ts_error *err)
+ts_status ts__geo_check(ts_spline *sp, size_t i0, size_t i1, ts_error *err)
 {
-    (void)opt;
-    for (size_t i = 0; i < sp->n; i++) {
+    for (size_t i = i0; i < i1; i++) {
         double al = sp->alpha[i], a = al + sp->beta[i];
         if (sp->shape == TS_SHAPE_NONE) {
             if (!(a >= TS_GEOMETRIC_A_MIN)) {

@@ -1,4 +1,21 @@
-/* Internal layout shared by the library's source files.  Not installed. */
+/* The library's internal header: the spline's layout and the internal
+ * functions, grouped by layer.  Not installed.
+ *
+ * Layers (a file includes this header and trigspline.h, and calls only
+ * functions of files in lower layers; no file calls a public entry point of
+ * the library; tools/check_layers.py checks both):
+ *   L0  status.c    status strings, the version, the error setter, allocation
+ *       basis.c     the basis, its derivatives and integrals, interval search
+ *       trigmin.c   exact minimum of a trigonometric polynomial minus a line
+ *   L1  slopes.c    slope estimates
+ *       controls.c  control values of every form
+ *       geometric.c the geometric form: X(θ) = x, value, integral, bound
+ *   L2  interval.c  one interval of any form: value, derivatives, integral
+ *       shape.c     the schemes' β rules and data checks
+ *       certificate.c  interval gaps, hull and control-value proofs (read-only)
+ *   L3  kernels.c   batch evaluation kernels
+ *       repair.c    certification at build time: raise β until certified
+ *   L4  spline.c, curve.c, eval.c, report.c, accuracy.c: the public API */
 #ifndef TS_SRC_INTERNAL_H
 #define TS_SRC_INTERNAL_H
 
@@ -6,7 +23,7 @@
 
 #include <stddef.h>
 
-/* Construction loops that vectorise (issue 6).  With GCC on x86-64 Linux
+/* Construction loops that vectorise.  With GCC on x86-64 Linux
  * they are compiled for x86-64-v4 (AVX-512), AVX2 and the baseline, one
  * picked at load time (ifunc), vectorised also at -O2, and without
  * trapping-math so that loops with selects vectorise.  Every version gives
@@ -28,10 +45,6 @@
 #define TS_PI 3.14159265358979323846
 #define TS_HALF_PI 1.57079632679489661923
 
-/* Doubles per interval reserved for fast.c's batch coefficients: none (fast.c
- * needs only x, h, f, b1, b2; every byte per knot costs construction time). */
-#define TS_FAST_STRIDE 0
-
 struct ts_spline {
     size_t n;            /* intervals */
     ts_form form;
@@ -51,10 +64,27 @@ struct ts_spline {
                           * other forms (X1 = x_i + K_i, X2 = x_{i+1} - K_i there) */
     unsigned char *term; /* n: ts_term */
     double *cum;         /* n+1: cum[i] = ∫_{x0}^{x_i} S dx (set last by spline.c) */
-    double *fast;        /* TS_FAST_STRIDE * n: fast.c coefficients */
 };
 
-/* ---- basis.c (SPEC §2) --------------------------------------------- */
+/* ==== L0 ============================================================ */
+
+/* ---- status.c -------------------------------------------------------- */
+void ts__error_set(ts_error *err, ts_status st, size_t index, ts_where where);
+/* ts__error_set, then return st. */
+ts_status ts__fail(ts_error *err, ts_status st, size_t index, ts_where where);
+/* Every allocation of the library goes through these.  With TS_TEST_HOOKS
+ * (trigspline_internal, tests only): when ts__test_fail_alloc > 0 it counts
+ * allocations down and the one that brings it to 0 fails (to provoke
+ * TS_ERR_NOMEM).  Not thread-safe. */
+#ifdef TS_TEST_HOOKS
+extern long ts__test_fail_alloc;
+#endif
+void *ts__malloc(size_t bytes);
+void *ts__calloc(size_t count, size_t size);
+/* A large block (the spline's arrays); freed with free(). */
+void *ts__alloc_block(size_t bytes);
+
+/* ---- basis.c (SPEC §2) ----------------------------------------------- */
 /* Basis A0..A3 at (s, c) = (sin θ, cos θ). */
 void ts__basis(double s, double c, double A[4]);
 /* dA/dθ and d²A/dθ². */
@@ -67,8 +97,30 @@ void ts__basis_int(double theta, double s, double c, double I[4]);
 void ts__seg_theta(const double B[4], double theta, int want, double out[3]);
 /* The same from (s, c) = (sin θ, cos θ) directly. */
 void ts__seg_sc(const double B[4], double s, double c, int want, double out[3]);
+/* On increasing knots xs[0..n] (n >= 1 intervals): the largest i <= n-1 with
+ * xs[i] <= x, trying the cursor (may be NULL) and its successor first. */
+size_t ts__search(const double *xs, size_t n, double x, ts_cursor *cur);
+/* The interval of a spline containing x (x already in [x0, xn]). */
+static inline size_t ts__locate(const ts_spline *sp, double x, ts_cursor *cur)
+{
+    return ts__search(sp->x, sp->n, x, cur);
+}
 
-/* ---- slopes.c (SPEC §6) -------------------------------------------- */
+/* ---- trigmin.c (SPEC §2, §5) ----------------------------------------- */
+/* Exact minimum over θ in [0, π/2] of g(θ) = Σ A_l(θ) C_l − κ θ.  Returns the
+ * minimum and stores its θ in *theta_min (may be NULL). */
+double ts__trig_min(const double C[4], double kappa, double *theta_min);
+/* The same; also *tbest, the t = tan(θ/2) of the minimum, and *errb, the
+ * rounding guard of the returned value (NaN for non-finite input). */
+double ts__trig_min_core(double C0, double C1, double C2, double C3, double kappa,
+                         double *theta, double *tbest, double *errb);
+/* Basis at t = tan(θ/2), without cancellation; θ = 2 atan t (exact ends). */
+void ts__basis_t(double t, double A[4]);
+double ts__theta_of(double t);
+
+/* ==== L1 ============================================================ */
+
+/* ---- slopes.c (SPEC §6) ---------------------------------------------- */
 /* Unchecked: x strictly increasing and finite, np >= 2, method valid. */
 ts_status ts__slopes(ts_slopes method, const double *x, const double *f, size_t np,
                      double *d, ts_error *err);
@@ -77,20 +129,10 @@ ts_status ts__slopes(ts_slopes method, const double *x, const double *f, size_t 
 void ts__slopes_range(ts_slopes method, const double *x, const double *f, size_t np, double *d,
                       size_t p0, size_t p1);
 
-/* ---- spline.c -------------------------------------------------------- */
-/* Every allocation of the library goes through these.  Tests only: when
- * ts__test_fail_alloc > 0 it counts allocations down and the one that
- * brings it to 0 fails (to provoke TS_ERR_NOMEM).  Not thread-safe. */
-#ifdef TS_TEST_HOOKS
-extern long ts__test_fail_alloc;
-#endif
-void *ts__malloc(size_t bytes);
-void *ts__calloc(size_t count, size_t size);
-void ts__error_set(ts_error *err, ts_status st, size_t index, ts_where where);
+/* ---- controls.c (SPEC §3, §4) ---------------------------------------- */
 /* Recompute b1, b2 (and xc1, xc2 in the geometric form) of intervals
- * i0..i1-1 from x, f, d, alpha, beta, per the form (SPEC §3, §4).  For the C¹
- * form the knots' d̂ depend on both neighbours, so callers pass the widened
- * range themselves. */
+ * i0..i1-1 from x, f, d, alpha, beta, per the form.  For the C¹ form the
+ * knots' d̂ depend on both neighbours, so callers pass the widened range. */
 void ts__controls(ts_spline *sp, size_t i0, size_t i1);
 /* The four control values of interval i. */
 static inline void ts__B(const ts_spline *sp, size_t i, double B[4])
@@ -100,61 +142,81 @@ static inline void ts__B(const ts_spline *sp, size_t i, double B[4])
     B[2] = sp->b2[i];
     B[3] = sp->f[i + 1];
 }
-/* Interval containing x (x already in [x0, xn]); hint may be NULL. */
-size_t ts__locate(const ts_spline *sp, double x, ts_cursor *cur);
-/* The same on any increasing knots xs[0..n] (n >= 1 intervals): the largest
- * i <= n-1 with xs[i] <= x, trying the cursor and its successor first. */
-size_t ts__search(const double *xs, size_t n, double x, ts_cursor *cur);
-
-/* ---- shape.c (SPEC §5) ----------------------------------------------- */
-/* For opt->shape != TS_SHAPE_NONE: check the data against the scheme, adjust
- * slopes where the scheme needs it (zeros, monotone sign fix), set beta[] and
- * term[], has_lower/has_upper/lower/upper.  alpha[] is already filled. */
-ts_status ts__shape_apply(ts_spline *sp, const ts_options *opt, ts_error *err);
-/* The same in blocks (construction, issue 6): ts__shape_begin checks the
- * options and sets the boundaries (*dir: the direction of the data f[0..n],
- * monotone; f: the caller's values, sp->f need not be filled yet);
- * ts__shape_range then checks margins of intervals [i0, i1), data of points
- * [p0, p1), adjusts their slopes (d there already computed) and sets beta[],
- * term[] of [i0, i1) (d up to i1 adjusted).  Values as ts__shape_apply; an
- * error need not be the one ts__shape_apply reports first. */
-ts_status ts__shape_begin(ts_spline *sp, const ts_options *opt, const double *f, int *dir,
-                          ts_error *err);
-ts_status ts__shape_range(ts_spline *sp, const ts_options *opt, int dir, size_t p0, size_t p1,
-                          size_t i0, size_t i1, ts_error *err);
-
-/* ---- certify.c (SPEC §5) --------------------------------------------- */
-/* Exact minimum over θ in [0, π/2] of g(θ) = Σ A_l(θ) C_l − κ θ.  Returns the
- * minimum and stores its θ in *theta_min. */
-double ts__trig_min(const double C[4], double kappa, double *theta_min);
-/* Gap of interval i to a lower line (sign +1: min of S − L) or an upper
- * line (sign −1: min of L − S), exact; *at receives x of the minimum. */
-double ts__interval_gap(const ts_spline *sp, size_t i, const ts_line *line, int sign, double *at);
-/* Does certification of a spline built with opt compute the exact trig-min
- * certificates?  (Only meaningful for opt->shape != TS_SHAPE_NONE.) */
-int ts__certify_exact(const ts_options *opt);
-/* Certify every interval of a freshly built shape spline, raising beta_i
- * where a gap is not positive (SPEC §5); sets certified and have_certs. */
-ts_status ts__certify_build(ts_spline *sp, const ts_options *opt, ts_error *err);
-/* The same in blocks (paper and geometric forms only, where every interval is
- * certified on its own; TS_ERR_OPTION for the C¹ form): ts__certify_range
- * certifies intervals [i0, i1) (their controls set), in order; after the last
- * block ts__certify_done sets certified and have_certs. */
-ts_status ts__certify_range(ts_spline *sp, const ts_options *opt, size_t i0, size_t i1,
-                            ts_error *err);
-void ts__certify_done(ts_spline *sp, const ts_options *opt);
 
 /* ---- geometric.c (SPEC §4) ------------------------------------------- */
-/* Called by ts_spline_new for TS_FORM_GEOMETRIC after beta[] is set and before
- * ts__controls: enforce the bound on a_i of SPEC §4 (raise beta_i or fail). */
-ts_status ts__geo_check(ts_spline *sp, const ts_options *opt, ts_error *err);
+/* The bound on a_i of SPEC §4 on intervals [i0, i1) (beta set, controls
+ * not yet): raise beta_i (shape schemes) or fail (TS_ERR_GEOMETRIC). */
+ts_status ts__geo_check(ts_spline *sp, size_t i0, size_t i1, ts_error *err);
 /* Value and derivatives in x of interval i of a geometric-form spline at x. */
 void ts__geo_eval(const ts_spline *sp, size_t i, double x, int want, double out[3]);
 /* ∫_{x_i}^{x} S dx' on interval i (x in the interval). */
 double ts__geo_integral(const ts_spline *sp, size_t i, double x);
 
-/* ---- fast.c (batch kernels) ------------------------------------------ */
-void ts__fast_prepare(ts_spline *sp);
+/* ==== L2 ============================================================ */
+
+/* ---- interval.c (SPEC §2–§4) ----------------------------------------- */
+/* Value and derivatives (in x; out[1], out[2] only if want > 0, > 1) of
+ * interval i at x, any form; x may lie outside the interval (extension). */
+void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double o[3]);
+/* ∫_{x_i}^{x} S on interval i, x in the interval. */
+double ts__interval_integral(const ts_spline *sp, size_t i, double x);
+
+/* ---- shape.c (SPEC §5) ----------------------------------------------- */
+/* ts__shape_begin checks the options and sets the boundaries (*dir: the
+ * direction of the data f[0..n], monotone; f: the caller's values, sp->f need
+ * not be filled yet); ts__shape_range then checks margins of intervals
+ * [i0, i1), data of points [p0, p1), adjusts their slopes (d there already
+ * computed: zeros, monotone sign fix) and sets beta[], term[] of [i0, i1). */
+ts_status ts__shape_begin(ts_spline *sp, const ts_options *opt, const double *f, int *dir,
+                          ts_error *err);
+ts_status ts__shape_range(ts_spline *sp, const ts_options *opt, int dir, size_t p0, size_t p1,
+                          size_t i0, size_t i1, ts_error *err);
+
+/* ---- certificate.c (SPEC §4, §5) -------------------------------------- */
+/* The exact gaps of one interval (NaN where absent or not computed). */
+typedef struct ts__cert {
+    double glo, alo, gup, aup;
+} ts__cert;
+/* B of interval i; X (SPEC §4) only in the geometric form (*geo = 1). */
+void ts__controls_of(const ts_spline *sp, size_t i, double B[4], double X[4], int *geo);
+/* Gap of a segment with control values B on [xi, xi + h] (paper and C¹
+ * forms, and curve coordinates) to the line ln: sign +1 min of S − L, −1 min
+ * of L − S, exact (ts__trig_min_core); *theta (and *tpar = tan(θ/2)) of the
+ * minimum, *guard its rounding guard, *proven = 1 when the line is constant
+ * and every control gap ±(B_l − c) is > 0 (a proof by itself: S − L =
+ * Σ A_l C_l, A_l >= 0, Σ A_l = 1).  Any out-pointer may be NULL. */
+double ts__gap_segment(const double B[4], double xi, double h, const ts_line *ln, int sign,
+                       double *theta, double *tpar, double *guard, int *proven);
+/* Gap of interval i with control values B (abscissae X in the geometric
+ * form, else NULL) to a line: sign +1 min of S − L, −1 min of L − S; *at its
+ * x, *guard (may be NULL) the rounding guard of the value. */
+double ts__gap_ctl(const ts_spline *sp, size_t i, const double B[4], const double *X,
+                   const ts_line *ln, int sign, double *at, double *guard);
+/* The same for interval i as stored. */
+double ts__interval_gap(const ts_spline *sp, size_t i, const ts_line *line, int sign, double *at);
+/* Geometric form: every control gap above its rounding (a proof by itself). */
+int ts__hull_inside(const double B[4], const double X[4], const ts_line *ln, int sign);
+/* Is interval i with controls B (X) inside the region of sp's scheme?  exact:
+ * with the trig-min certificates (into *cr, places if want_at); else only
+ * the control-value proof. */
+int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double *X, int exact,
+                  ts__cert *cr, int want_at);
+int ts__check_interval(const ts_spline *sp, size_t i, int exact);
+/* Does certification of a spline built with opt compute the exact trig-min
+ * certificates?  (Only meaningful for opt->shape != TS_SHAPE_NONE.) */
+int ts__certify_exact(const ts_options *opt);
+/* First interval in [i, i1) that ts__check_ctl (not exact) would not pass. */
+size_t ts__skip_proven(const ts_spline *sp, size_t i, size_t i1);
+/* ok[i - i0] = 1 where ts__check_ctl (exact, paper form, one boundary
+ * m x + c with sign sg) passes interval i by an end minimum, else 0. */
+void ts__mono_certify(const double *restrict f, const double *restrict b1,
+                      const double *restrict b2, const double *restrict x,
+                      const double *restrict h, size_t i0, size_t i1, double m, double c,
+                      double sg, int positive, unsigned char *restrict ok);
+
+/* ==== L3 ============================================================ */
+
+/* ---- kernels.c (batch kernels) ----------------------------------------- */
 /* Queries are taken in blocks of TS_FAST_BLOCK. */
 #define TS_FAST_BLOCK 128
 /* Evaluate a prefix of xq[0..m) (any order) and return its length k: all of
@@ -169,5 +231,33 @@ size_t ts__fast_batch(const ts_spline *sp, int deriv, const double *xq, size_t m
  * kernel is not available here, else 1 (*done, if not NULL, receives k). */
 int ts__fast_batch_isa(const ts_spline *sp, int deriv, const double *xq, size_t m,
                        double *yq, ts_cursor *cur, int isa, size_t *done);
+
+/* ---- repair.c (SPEC §5) ---------------------------------------------- */
+/* One interval (of a spline or a curve) as the repair search sees it. */
+typedef struct ts__repair_ops {
+    void *ctx;
+    void (*set_a)(void *ctx, size_t i, double a);  /* a_i = a; controls updated */
+    int (*inside)(void *ctx, size_t i);            /* certified as it stands */
+    int (*limit_inside)(void *ctx, size_t i);      /* certified in the limit a -> ∞ */
+    double (*margin)(void *ctx, size_t i);         /* min of gap − guard; NULL: none */
+} ts__repair_ops;
+/* SPEC §5: the a_i that certifies interval i, starting from a0 (alpha al).
+ *  - If the limit a -> ∞ is certified, a is raised: doubling, then bisection
+ *    to the smallest certified a (relative 1e-12), plus the margin t.
+ *  - Otherwise (a sloped line in the paper or C¹ form; ops with a margin)
+ *    the gap is concave in u = 1/a in the paper form (a minimum of functions
+ *    affine in u), so its maximum over a >= al is found by golden section; if
+ *    it is not certified no a is (TS_ERR_INFEASIBLE); else the smallest
+ *    certified a >= al, plus t towards the maximum.  In the C¹ form the gap
+ *    also depends on the neighbours' a (fixed here): a heuristic there.
+ * TS_OK with a_i set, or TS_ERR_INFEASIBLE with a_i = a0 again. */
+ts_status ts__repair_search(const ts__repair_ops *o, size_t i, double al, double a0, double t);
+/* Certify intervals [i0, i1) of a shape spline (their controls set), raising
+ * beta_i where a gap is not positive; in order.  The C¹ form steps back after
+ * a repair: call it once on [0, n).  After the last range ts__certify_done
+ * sets certified and have_certs. */
+ts_status ts__certify_range(ts_spline *sp, const ts_options *opt, size_t i0, size_t i1,
+                            ts_error *err);
+void ts__certify_done(ts_spline *sp, const ts_options *opt);
 
 #endif

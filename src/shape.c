@@ -312,27 +312,6 @@ static ts_status adjust(ts_spline *sp, const ts_options *opt, int dir, size_t p0
     return TS_OK;
 }
 
-ts_status ts__shape_apply(ts_spline *sp, const ts_options *opt, ts_error *err)
-{
-    ts_status st = check_options(sp, opt, err);
-    if (st == TS_OK)
-        st = check_margins(opt, 0, sp->n, err);
-    if (st == TS_OK)
-        st = boundaries(sp, opt, err);
-    if (st != TS_OK)
-        return st;
-    int dir = opt->shape == TS_SHAPE_MONOTONE ? data_dir(sp->f, sp->n) : 0;
-    size_t np = sp->n + 1;
-    /* every point checked before any slope is adjusted: the first error */
-    st = check_data(sp, opt->shape, dir, 0, np, err);
-    if (st == TS_OK)
-        st = adjust(sp, opt, dir, 0, np, err);
-    if (st != TS_OK)
-        return st;
-    betas(sp, opt, 0, sp->n);
-    return TS_OK;
-}
-
 ts_status ts__shape_begin(ts_spline *sp, const ts_options *opt, const double *f, int *dir,
                           ts_error *err)
 {

@@ -1,5 +1,5 @@
-/* Construction, accessors and status strings (SPEC §1, §3). */
-#define _DEFAULT_SOURCE /* MADV_HUGEPAGE */
+/* ts_spline_new: the one construction path for every form; accessors
+ * (SPEC §1, §3). */
 #include "internal.h"
 
 #include <float.h>
@@ -7,111 +7,6 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
-const char *ts_version(void)
-{
-    return "0.1.0";
-}
-
-static const char *const ts_messages[TS_STATUS_COUNT_] = {
-    [TS_OK] = "success",
-    [TS_ERR_NULL] = "a required pointer argument is NULL",
-    [TS_ERR_NOMEM] = "out of memory",
-    [TS_ERR_OVERFLOW] = "size overflow: too many points",
-    [TS_ERR_TOO_FEW] = "too few points: at least 2 are needed",
-    [TS_ERR_NONFINITE] = "NaN or infinite value in the input",
-    [TS_ERR_UNSORTED] = "x values are not strictly increasing (unsorted or duplicate)",
-    [TS_ERR_ALPHA] = "alpha must be finite and > 0",
-    [TS_ERR_BETA] = "beta must be finite and >= 0, and alpha + beta > 0",
-    [TS_ERR_MARGIN] = "margin must be finite and > 0",
-    [TS_ERR_LENGTH] = "a per-interval or per-point array has the wrong length",
-    [TS_ERR_OPTION] = "invalid option value or combination",
-    [TS_ERR_PERIODIC] = "periodic slopes need the first and last values equal",
-    [TS_ERR_DOMAIN] = "query is NaN or outside the data range",
-    [TS_ERR_NEGATIVE] = "negative data value for the positive scheme",
-    [TS_ERR_SIDE] = "a data point lies on or across a constraint line",
-    [TS_ERR_LINES] = "the lower line is not strictly below the upper line at a data point",
-    [TS_ERR_NONMONOTONE] = "data are not monotone",
-    [TS_ERR_INFEASIBLE] = "no beta keeps this interval inside the region",
-    [TS_ERR_VIOLATED] = "the spline leaves the region on some interval",
-    [TS_ERR_GEOMETRIC] = "alpha + beta below the geometric-form bound",
-    [TS_ERR_DIMENSION] = "curve dimension must be 2 or 3",
-    [TS_ERR_INDEX] = "index out of range",
-    [TS_ERR_ZERO_SLOPE] = "slope of the wrong sign at a knot on the boundary",
-};
-
-const char *ts_strerror(ts_status status)
-{
-    if ((unsigned)status < (unsigned)TS_STATUS_COUNT_ && ts_messages[status])
-        return ts_messages[status];
-    return "unknown status code";
-}
-
-void ts__error_set(ts_error *err, ts_status st, size_t index, ts_where where)
-{
-    if (err) {
-        err->status = st;
-        err->index = index;
-        err->where = where;
-    }
-}
-
-#ifdef TS_TEST_HOOKS
-long ts__test_fail_alloc;
-
-static int alloc_should_fail(void)
-{
-    return ts__test_fail_alloc > 0 && --ts__test_fail_alloc == 0;
-}
-#else
-static int alloc_should_fail(void)
-{
-    return 0;
-}
-#endif
-
-void *ts__malloc(size_t bytes)
-{
-    return alloc_should_fail() ? NULL : malloc(bytes);
-}
-
-void *ts__calloc(size_t count, size_t size)
-{
-    return alloc_should_fail() ? NULL : calloc(count, size);
-}
-
-/* The spline's one block.  Large blocks are 2 MiB-aligned and marked for
- * transparent huge pages where Linux offers them: first-touch page faults
- * dominate construction time at large n (issue 6, bench/RESULTS.md), and huge
- * pages cut them severalfold.  Freed with free() either way. */
-static void *alloc_block(size_t bytes)
-{
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    const size_t huge = (size_t)2 << 20;
-    if (bytes >= 4 * huge && bytes <= SIZE_MAX - huge) {
-        if (alloc_should_fail())
-            return NULL;
-        size_t rounded = (bytes + huge - 1) / huge * huge;
-        void *p = aligned_alloc(huge, rounded);
-        if (p) {
-            (void)madvise(p, rounded, MADV_HUGEPAGE); /* advice only: failure is harmless */
-            return p;
-        }
-        return malloc(bytes);
-    }
-#endif
-    return ts__malloc(bytes);
-}
-
-/* Record and return a failure. */
-static ts_status fail(ts_error *err, ts_status st, size_t index, ts_where where)
-{
-    ts__error_set(err, st, index, where);
-    return st;
-}
 
 void ts_options_init(ts_options *opt)
 {
@@ -126,99 +21,6 @@ void ts_options_init(ts_options *opt)
     opt->margin = TS_DEFAULT_MARGIN;
     opt->certify = 1;
     opt->extrapolate = TS_EXTRAP_ERROR;
-}
-
-/* SPEC §3 (paper, C¹) and §4 (geometric) control values, one loop per form
- * with the arrays as restrict parameters, so that they vectorise (issue 6). */
-#define TS_K0 (2.0 / (3.0 * TS_PI))
-
-TS_VECTOR_LOOP static void controls_paper(const double *restrict f, const double *restrict d,
-                                          const double *restrict h, const double *restrict al,
-                                          const double *restrict be, double *restrict b1,
-                                          double *restrict b2, size_t i0, size_t i1)
-{
-    for (size_t i = i0; i < i1; i++) {
-        double K = TS_K0 * h[i];
-        double k = K / (al[i] + be[i]);
-        b1[i] = f[i] + k * d[i];
-        b2[i] = f[i + 1] - k * d[i + 1];
-    }
-}
-
-TS_VECTOR_LOOP static void controls_geo(const double *restrict x, const double *restrict f,
-                                        const double *restrict d, const double *restrict h,
-                                        const double *restrict al, const double *restrict be,
-                                        double *restrict b1, double *restrict b2,
-                                        double *restrict xc1, double *restrict xc2, size_t i0,
-                                        size_t i1)
-{
-    for (size_t i = i0; i < i1; i++) {
-        double k = TS_K0 * h[i] / (al[i] + be[i]);
-        b1[i] = f[i] + k * d[i];
-        b2[i] = f[i + 1] - k * d[i + 1];
-        /* SPEC §4: X = [x_i, x_i + k, x_{i+1} - k, x_{i+1}] */
-        xc1[i] = x[i] + k;
-        xc2[i] = x[i + 1] - k;
-    }
-}
-
-/* SPEC §3 C¹ option: d̂_j = d_j / max(a_{j-1}, a_j), one-sided at the ends;
- * intervals [i0, i1) with both neighbours (0 < i0, i1 < n). */
-TS_VECTOR_LOOP static void controls_c1(const double *restrict f, const double *restrict d,
-                                       const double *restrict h, const double *restrict al,
-                                       const double *restrict be, double *restrict b1,
-                                       double *restrict b2, size_t i0, size_t i1)
-{
-    for (size_t i = i0; i < i1; i++) {
-        double K = TS_K0 * h[i];
-        double a = al[i] + be[i], ap = al[i - 1] + be[i - 1], an = al[i + 1] + be[i + 1];
-        double aL = ap > a ? ap : a, aR = an > a ? an : a;
-        b1[i] = f[i] + K * (d[i] / aL);
-        b2[i] = f[i + 1] - K * (d[i + 1] / aR);
-    }
-}
-
-/* The same for one interval, also at an end. */
-static void controls_c1_one(ts_spline *sp, size_t i)
-{
-    size_t n = sp->n;
-    const double *al = sp->alpha, *be = sp->beta;
-    double K = TS_K0 * sp->h[i];
-    double a = al[i] + be[i];
-    double aL = a, aR = a;
-    if (i > 0) {
-        double ap = al[i - 1] + be[i - 1];
-        aL = ap > a ? ap : a;
-    }
-    if (i + 1 < n) {
-        double an = al[i + 1] + be[i + 1];
-        aR = an > a ? an : a;
-    }
-    sp->b1[i] = sp->f[i] + K * (sp->d[i] / aL);
-    sp->b2[i] = sp->f[i + 1] - K * (sp->d[i + 1] / aR);
-}
-
-void ts__controls(ts_spline *sp, size_t i0, size_t i1)
-{
-    size_t n = sp->n;
-    if (i1 > n)
-        i1 = n;
-    if (i0 >= i1)
-        return;
-    if (sp->form == TS_FORM_C1) {
-        size_t m0 = i0 > 0 ? i0 : 1, m1 = i1 < n ? i1 : n - 1; /* both neighbours */
-        if (i0 == 0)
-            controls_c1_one(sp, 0);
-        if (m0 < m1)
-            controls_c1(sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, m0, m1);
-        if (i1 == n && n - 1 > 0)
-            controls_c1_one(sp, n - 1);
-    } else if (sp->form == TS_FORM_GEOMETRIC) {
-        controls_geo(sp->x, sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, sp->xc1,
-                     sp->xc2, i0, i1);
-    } else {
-        controls_paper(sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, i0, i1);
-    }
 }
 
 /* Overflow-checked a * b. */
@@ -286,7 +88,7 @@ static ts_status user_slopes(ts_spline *sp, const ts_options *o, size_t p0, size
 {
     for (size_t i = p0; i < p1; i++) {
         if (!isfinite(o->user_slopes[i]))
-            return fail(err, TS_ERR_NONFINITE, i, TS_WHERE_POINT);
+            return ts__fail(err, TS_ERR_NONFINITE, i, TS_WHERE_POINT);
         sp->d[i] = o->user_slopes[i];
     }
     return TS_OK;
@@ -298,7 +100,7 @@ static ts_status check_alpha(const ts_spline *sp, size_t i0, size_t i1, ts_error
         return TS_OK;
     for (size_t i = i0; i < i1; i++)
         if (!(sp->alpha[i] > 0.0 && isfinite(sp->alpha[i])))
-            return fail(err, TS_ERR_ALPHA, i, TS_WHERE_INTERVAL);
+            return ts__fail(err, TS_ERR_ALPHA, i, TS_WHERE_INTERVAL);
     return TS_OK;
 }
 
@@ -323,7 +125,7 @@ static ts_status check_beta(ts_spline *sp, size_t i0, size_t i1, ts_error *err)
     for (size_t i = i0; i < i1; i++) {
         double b = sp->beta[i];
         if (!(b >= 0.0 && isfinite(b) && sp->alpha[i] + b > 0.0 && isfinite(sp->alpha[i] + b)))
-            return fail(err, TS_ERR_BETA, i, TS_WHERE_INTERVAL);
+            return ts__fail(err, TS_ERR_BETA, i, TS_WHERE_INTERVAL);
         sp->term[i] = (unsigned char)TS_TERM_USER;
     }
     return TS_OK;
@@ -358,29 +160,45 @@ static double cumulate(ts_spline *sp, size_t i0, size_t i1, double sum)
     return sum;
 }
 
-/* Intervals per block of the blocked construction: its dozen arrays stay in
- * the L2 cache (~100 KiB) from the slopes to the integrals. */
+/* Intervals per block of the construction: its dozen arrays stay in the L2
+ * cache (~100 KiB) from the slopes to the integrals (docs/design.md). */
 #define TS_BLOCK 1024
 
-/* The paper form in blocks: every step of build() on TS_BLOCK intervals at a
- * time while their arrays are in cache, instead of one pass over all n per
- * step (issue 6: memory traffic dominated).  In the paper form each interval
- * depends only on its own knots (the slopes on the neighbours, read from the
- * caller's x, f), so every value is the one build() computes.  Returns TS_OK,
- * or anything else on any error (the errors of a block need not come in
- * build()'s order): build() then starts over in order and reports it. */
-static ts_status build_blocked(ts_spline *sp, const ts_options *o, const double *x, const double *f,
-                               size_t *done)
+/* The first non-finite d_i, i in [p0, p1) (there is one). */
+static ts_status nonfinite_slope(const ts_spline *sp, size_t p0, size_t p1, ts_error *err)
 {
-    size_t n = sp->n, np = n + 1;
+    size_t i = p0;
+    while (i + 1 < p1 && isfinite(sp->d[i]))
+        i++;
+    return ts__fail(err, TS_ERR_NONFINITE, i, TS_WHERE_POINT);
+}
+
+/* The one construction path, every form: the stages (SPEC §6 slopes, alpha,
+ * SPEC §5 beta by the scheme or the caller's beta, the SPEC §4 bound, SPEC §3
+ * and §4 controls, SPEC §5 certificates, integrals) run on TS_BLOCK intervals
+ * at a time while their arrays are in cache.  In the paper and geometric forms
+ * an interval depends only on its own knots (its slopes on the neighbours,
+ * read from the caller's x, f), so every stage completes in the block; in the
+ * C¹ form the controls of an interval depend on its neighbours' a_j, and the
+ * repair may step back, so controls, certificates and integrals run once
+ * after the blocks.  The first fault found is the one reported: the order is
+ * documented at ts_spline_new. */
+static ts_status build(ts_spline *sp, const ts_options *o, const double *x, const double *f,
+                       ts_error *err)
+{
+    size_t n = sp->n, np = n + 1, done = 0;
     int user = o->slopes == TS_SLOPES_USER, shaped = o->shape != TS_SHAPE_NONE, dir = 0;
+    int c1 = sp->form == TS_FORM_C1, geo = sp->form == TS_FORM_GEOMETRIC;
     ts_status st = TS_OK;
-    if (user ? !o->user_slopes || o->n_user_slopes != np
-             : o->slopes == TS_SLOPES_PERIODIC && !(f[0] == f[n]))
-        return TS_ERR_OPTION;
+    if (user && !o->user_slopes)
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    if (user && o->n_user_slopes != np)
+        return ts__fail(err, TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
+    if (o->slopes == TS_SLOPES_PERIODIC && !(f[0] == f[n]))
+        return ts__fail(err, TS_ERR_PERIODIC, n, TS_WHERE_POINT);
     if ((o->alphas && o->n_alphas != n) || (!shaped && o->betas && o->n_betas != n))
-        return TS_ERR_LENGTH;
-    if (shaped && (st = ts__shape_begin(sp, o, f, &dir, NULL)) != TS_OK)
+        return ts__fail(err, TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
+    if (shaped && (st = ts__shape_begin(sp, o, f, &dir, err)) != TS_OK)
         return st;
     double sum = 0.0;
     sp->cum[0] = sum;
@@ -388,116 +206,50 @@ static ts_status build_blocked(ts_spline *sp, const ts_options *o, const double 
         size_t i1 = n - i0 > TS_BLOCK ? i0 + TS_BLOCK : n;
         /* points p0..i1: d_{i1} is needed for interval i1 - 1 */
         size_t p0 = i0 ? i0 + 1 : 0, p1 = i1 + 1;
-        copy_points(sp, x, f, done, i1 + 2 < np ? i1 + 2 : np);
+        copy_points(sp, x, f, &done, i1 + 2 < np ? i1 + 2 : np);
         if (user) {
-            st = user_slopes(sp, o, p0, p1, NULL);
+            st = user_slopes(sp, o, p0, p1, err);
         } else {
             ts__slopes_range(o->slopes, x, f, np, sp->d, p0, p1);
             if (!all_finite(sp->d, p0, p1))
-                st = TS_ERR_NONFINITE;
+                st = nonfinite_slope(sp, p0, p1, err);
         }
         if (st != TS_OK)
             return st;
         fill(sp->alpha, i0, i1, o->alpha, o->alphas);
-        if ((st = check_alpha(sp, i0, i1, NULL)) != TS_OK)
+        if ((st = check_alpha(sp, i0, i1, err)) != TS_OK)
             return st;
         if (!shaped) {
             fill(sp->beta, i0, i1, o->beta, o->betas);
-            st = check_beta(sp, i0, i1, NULL);
+            st = check_beta(sp, i0, i1, err);
         } else {
-            st = ts__shape_range(sp, o, dir, p0, p1, i0, i1, NULL);
+            st = ts__shape_range(sp, o, dir, p0, p1, i0, i1, err);
         }
+        if (st == TS_OK && geo)
+            st = ts__geo_check(sp, i0, i1, err);
         if (st != TS_OK)
             return st;
+        if (c1)
+            continue;
         ts__controls(sp, i0, i1);
-        if (shaped && (st = ts__certify_range(sp, o, i0, i1, NULL)) != TS_OK)
+        if (shaped && (st = ts__certify_range(sp, o, i0, i1, err)) != TS_OK)
             return st;
         sum = cumulate(sp, i0, i1, sum);
     }
+    if (c1) {
+        ts__controls(sp, 0, n);
+        if (shaped && (st = ts__certify_range(sp, o, 0, n, err)) != TS_OK)
+            return st;
+        (void)cumulate(sp, 0, n, 0.0);
+    }
     if (shaped)
         ts__certify_done(sp, o);
-    ts__fast_prepare(sp);
-    return TS_OK;
-}
-
-static ts_status build_all(ts_spline *sp, const ts_options *o, const double *x, const double *f,
-                           ts_error *err)
-{
-    size_t n = sp->n, np = n + 1, done = 0;
-    ts_status st;
-
-    if (o->form == TS_FORM_PAPER && build_blocked(sp, o, x, f, &done) == TS_OK)
-        return TS_OK;
-    /* other forms, or an error: step by step over all n (the first error) */
-    copy_points(sp, x, f, &done, np);
-
-    /* SPEC §6: slopes */
-    if (o->slopes == TS_SLOPES_USER) {
-        if (!o->user_slopes)
-            return fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
-        if (o->n_user_slopes != np)
-            return fail(err, TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
-        st = user_slopes(sp, o, 0, np, err);
-        if (st != TS_OK)
-            return st;
-    } else {
-        if (o->slopes == TS_SLOPES_PERIODIC && !(sp->f[0] == sp->f[n]))
-            return fail(err, TS_ERR_PERIODIC, n, TS_WHERE_POINT);
-        st = ts__slopes(o->slopes, sp->x, sp->f, np, sp->d, err);
-        if (st != TS_OK)
-            return st;
-    }
-
-    if (o->alphas && o->n_alphas != n)
-        return fail(err, TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
-    fill(sp->alpha, 0, n, o->alpha, o->alphas);
-    st = check_alpha(sp, 0, n, err);
-    if (st != TS_OK)
-        return st;
-
-    if (o->shape == TS_SHAPE_NONE) {
-        if (o->betas && o->n_betas != n)
-            return fail(err, TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
-        fill(sp->beta, 0, n, o->beta, o->betas);
-        st = check_beta(sp, 0, n, err);
-    } else {
-        st = ts__shape_apply(sp, o, err);
-    }
-    if (st != TS_OK)
-        return st;
-
-    if (sp->form == TS_FORM_GEOMETRIC) {
-        st = ts__geo_check(sp, o, err);
-        if (st != TS_OK)
-            return st;
-    }
-
-    ts__controls(sp, 0, n);
-
-    if (o->shape != TS_SHAPE_NONE) {
-        st = ts__certify_build(sp, o, err);
-        if (st != TS_OK)
-            return st;
-    }
-
-    sp->cum[0] = 0.0;
-    (void)cumulate(sp, 0, n, 0.0);
-    ts__fast_prepare(sp);
-    return TS_OK;
-}
-
-/* The build, then: control values must be finite (a tiny a_i with a large
- * slope can overflow B1, B2; no shape scheme to catch it).  An integral that
- * overflows is not an error: ts_integral then returns ±Inf. */
-static ts_status build(ts_spline *sp, const ts_options *o, const double *x, const double *f,
-                       ts_error *err)
-{
-    ts_status st = build_all(sp, o, x, f, err);
-    if (st != TS_OK)
-        return st;
-    for (size_t i = 0; i < sp->n; i++)
+    /* control values must be finite (a tiny a_i with a large slope can
+     * overflow B1, B2 with no scheme to catch it); an integral that overflows
+     * is not an error: ts_integral then returns ±Inf */
+    for (size_t i = 0; i < n; i++)
         if (!(fabs(sp->b1[i]) <= DBL_MAX && fabs(sp->b2[i]) <= DBL_MAX))
-            return fail(err, TS_ERR_NONFINITE, i, TS_WHERE_INTERVAL);
+            return ts__fail(err, TS_ERR_NONFINITE, i, TS_WHERE_INTERVAL);
     return TS_OK;
 }
 
@@ -528,51 +280,51 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
     if (out)
         *out = NULL;
     if (!x || !f || !out)
-        return fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
     ts_options defaults;
     if (!opt) {
         ts_options_init(&defaults);
         opt = &defaults;
     }
     if (n_points < 2)
-        return fail(err, TS_ERR_TOO_FEW, TS_NO_INDEX, TS_WHERE_NONE);
+        return ts__fail(err, TS_ERR_TOO_FEW, TS_NO_INDEX, TS_WHERE_NONE);
     if ((unsigned)opt->form > (unsigned)TS_FORM_GEOMETRIC ||
         (unsigned)opt->slopes >= (unsigned)TS_SLOPES_COUNT_ ||
         (unsigned)opt->shape > (unsigned)TS_SHAPE_MONOTONE ||
         (unsigned)opt->extrapolate > (unsigned)TS_EXTRAP_LINEAR)
-        return fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
+        return ts__fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
 
     /* layout: 4 arrays of n+1 (x, f, d, cum), 5 of n (h, alpha, beta, b1, b2),
-     * 2 of n for the geometric form's X (xc1, xc2), fast, term bytes.  Only
+     * 2 of n for the geometric form's X (xc1, xc2), term bytes.  Only
      * what is used: every byte per knot costs construction time (issue 6). */
     int geo = opt->form == TS_FORM_GEOMETRIC;
-    size_t per_interval_arrays = 5 + (size_t)(2 * geo) + TS_FAST_STRIDE;
+    size_t per_interval_arrays = 5 + (size_t)(2 * geo);
     size_t n = n_points - 1, a, b, c, total, bytes;
     if (!mul_ok(n_points, 4, &a) || !mul_ok(n, per_interval_arrays, &b))
-        return fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
+        return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
     total = a + b;
     if (total < a || !mul_ok(total, sizeof(double), &c) || c + n < c)
-        return fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
+        return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
     bytes = c + n;
 
     if (!points_valid(x, f, n_points)) {
         for (size_t i = 0; i < n_points; i++)
             if (!isfinite(x[i]) || !isfinite(f[i]))
-                return fail(err, TS_ERR_NONFINITE, i, TS_WHERE_POINT);
+                return ts__fail(err, TS_ERR_NONFINITE, i, TS_WHERE_POINT);
         for (size_t i = 1; i < n_points; i++)
             if (!(x[i] > x[i - 1]))
-                return fail(err, TS_ERR_UNSORTED, i, TS_WHERE_POINT);
+                return ts__fail(err, TS_ERR_UNSORTED, i, TS_WHERE_POINT);
         /* widths must be finite and normal: dθ/dx = (π/2)/h must not overflow */
         for (size_t i = 0; i < n; i++)
             if (!(x[i + 1] - x[i] <= DBL_MAX && x[i + 1] - x[i] >= DBL_MIN))
-                return fail(err, TS_ERR_NONFINITE, i + 1, TS_WHERE_POINT);
+                return ts__fail(err, TS_ERR_NONFINITE, i + 1, TS_WHERE_POINT);
     }
 
     ts_spline *sp = ts__calloc(1, sizeof *sp);
-    double *blk = sp ? alloc_block(bytes) : NULL;
+    double *blk = sp ? ts__alloc_block(bytes) : NULL;
     if (!blk) {
         free(sp);
-        return fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
+        return ts__fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
     }
     sp->n = n;
     sp->form = opt->form;
@@ -592,7 +344,6 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
         sp->xc1 = p, p += n;
         sp->xc2 = p, p += n;
     }
-    sp->fast = p, p += n * TS_FAST_STRIDE;
     sp->term = (unsigned char *)p;
     ts_status st = build(sp, opt, x, f, err);
     if (st != TS_OK) {

@@ -24,7 +24,7 @@
  * With GCC or Clang on x86-64 the whole pipeline is also compiled for AVX2+FMA
  * and for AVX-512F and chosen at run time (__builtin_cpu_supports); elsewhere,
  * or with -DTS_FAST_PORTABLE, only the portable C version exists.  The
- * geometric form (SPEC §4) goes point by point through ts_eval_deriv. */
+ * geometric form (SPEC §4) goes point by point through ts__interval_eval. */
 #include "internal.h"
 
 #include <math.h>
@@ -58,14 +58,6 @@
 #define TS_C5 2.0875728820037434e-09
 #define TS_C6 -1.1359926181679004e-11
 
-/* Nothing to precompute (TS_FAST_STRIDE = 0): w_i = (π/2)/h_i is divided
- * out once per interval change, with the expression of eval.c's eval_in, so θ
- * is bitwise the same; storing it would cost more at construction (page
- * faults) than the division costs here. */
-void ts__fast_prepare(ts_spline *sp)
-{
-    (void)sp;
-}
 
 /* ---- locate ---------------------------------------------------------- */
 
@@ -323,7 +315,7 @@ static size_t batch(const ts_spline *sp, int deriv, const double *xq, size_t m, 
         size_t j = 0;
         for (; j < m && x0 <= xq[j] && xq[j] <= xn; j++) {
             double o[3];
-            (void)ts_eval_deriv(sp, xq[j], cur, &o[0], &o[1], &o[2]);
+            ts__interval_eval(sp, ts__search(sp->x, sp->n, xq[j], cur), xq[j], 2, o);
             yq[j] = o[deriv];
         }
         return j;

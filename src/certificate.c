@@ -1,0 +1,358 @@
+/* SPEC §4, §5: per-interval certificates of a shape spline: exact gaps to a
+ * line, the convex-hull and control-value proofs, their rounding guards.
+ * Read-only: nothing here changes a spline.  The interval certificate adds
+ * to the trigonometric minimum's guard (trigmin.c) the rounding of
+ * C_l = ±(B_l − L(x_i)) and of κ = ±2mh/π: 8ε (max|B| + |m|(|x_i| + h) + |c|). */
+#include "internal.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#define TM_EPS DBL_EPSILON
+
+/* ------------------------------------------------------------------ */
+/* Interval gaps                                                        */
+/* ------------------------------------------------------------------ */
+
+/* SPEC §4: one control gap sg·(Y − m X − c) of the geometric form, to the
+ * rounding of the gap itself (not of the line's size: a knot may lie 1e-14
+ * of |c| above the line).  m X = p + e exactly (fma), Y − p = s1 + e1 and
+ * s1 − c = s2 + e2 exactly (TwoSum), so the gap is s2 + e1 + e2 − e; the two
+ * roundings summing the small terms and the last one add
+ * ≤ u(1+u)(2(|e1| + |e2| + |e|) + |v|) < ε(...) (u = ε/2); *err is twice
+ * that, plus 4·2^-1074 for a subnormal e.  Overflow gives NaN/Inf: never
+ * above *err. */
+static double ctl_gap(double Y, double X, double m, double c, double sg, double *err)
+{
+    double p = m * X, e = fma(m, X, -p);
+    double s1 = Y - p, z1 = s1 - Y, e1 = (Y - (s1 - z1)) + (-p - z1);
+    double s2 = s1 - c, z2 = s2 - s1, e2 = (s1 - (s2 - z2)) + (-c - z2);
+    double v = s2 + ((e1 + e2) - e);
+    *err = 2.0 * TM_EPS * (fabs(e1) + fabs(e2) + fabs(e) + fabs(v)) + 4.0 * DBL_TRUE_MIN;
+    return sg * v;
+}
+
+/* SPEC §4, convex hull (S = Σ A_l Y_l, X = Σ A_l X_l, A_l >= 0, Σ A_l = 1):
+ * every control gap above its rounding proves the whole segment inside. */
+int ts__hull_inside(const double B[4], const double X[4], const ts_line *ln, int sign)
+{
+    int ok = 1;
+    for (int l = 0; l < 4; l++) {
+        double el, Cl = ctl_gap(B[l], X[l], ln->m, ln->c, sign > 0 ? 1.0 : -1.0, &el);
+        ok = ok && Cl > el;
+    }
+    return ok;
+}
+
+double ts__gap_segment(const double B[4], double xi, double h, const ts_line *ln, int sign,
+                       double *theta, double *tpar, double *guard, int *proven)
+{
+    double C[4], t, eb, m = ln->m, c = ln->c, sg = sign > 0 ? 1.0 : -1.0, th;
+    double bmax = 0.0, xmax = fabs(xi) + h;
+    for (int l = 0; l < 4; l++)
+        bmax = fabs(B[l]) > bmax ? fabs(B[l]) : bmax;
+    /* SPEC §5: S − L = Σ A_l (B_l − L(x_i)) − (2mh/π) θ since Σ A_l = 1
+     * (m = 0: κ = ±0, the same as 0 below) */
+    double L0 = m * xi + c;
+    int pos = 1;
+    for (int l = 0; l < 4; l++) {
+        C[l] = sg * (B[l] - L0);
+        pos = pos && C[l] > 0.0; /* the sign of a rounded difference is exact */
+    }
+    double kappa = m != 0.0 ? sg * m * (2.0 * h / TS_PI) : 0.0;
+    double g = ts__trig_min_core(C[0], C[1], C[2], C[3], kappa, &th, &t, &eb);
+    if (theta)
+        *theta = th;
+    if (tpar)
+        *tpar = t;
+    if (guard)
+        *guard = eb + 8.0 * TM_EPS * (bmax + fabs(m) * xmax + fabs(c));
+    /* a constant line (κ = 0) below every control value: S − L = Σ A_l C_l > 0 */
+    if (proven)
+        *proven = pos && m == 0.0;
+    return g;
+}
+
+/* Gap of interval i with control values B (and abscissae X in the geometric
+ * form, else NULL) to a line: sign +1 min of S − L, −1 min of L − S.
+ * *guard receives the rounding guard of that value. */
+double ts__gap_ctl(const ts_spline *sp, size_t i, const double B[4], const double *X,
+                   const ts_line *ln, int sign, double *at, double *guard)
+{
+    double xi = sp->x[i], h = sp->h[i];
+    if (!X) {
+        double theta, t;
+        double g = ts__gap_segment(B, xi, h, ln, sign, &theta, &t, guard, NULL);
+        if (at)
+            *at = isnan(g) ? (double)NAN : t >= 1.0 ? sp->x[i + 1] : xi + h * (theta / TS_HALF_PI);
+        return g;
+    }
+    /* SPEC §4: Y − L(X) = Σ A_l (Y_l − m X_l − c), exact */
+    double C[4], t, eb, cerr = -1.0, sg = sign > 0 ? 1.0 : -1.0;
+    for (int l = 0; l < 4; l++) {
+        double el;
+        C[l] = ctl_gap(B[l], X[l], ln->m, ln->c, sg, &el);
+        cerr = el > cerr ? el : cerr;
+    }
+    double g = ts__trig_min_core(C[0], C[1], C[2], C[3], 0.0, NULL, &t, &eb);
+    if (at) {
+        if (isnan(g)) {
+            *at = NAN;
+        } else {
+            double A[4];
+            ts__basis_t(t, A);
+            *at = A[0] * X[0] + A[1] * X[1] + A[2] * X[2] + A[3] * X[3];
+        }
+    }
+    if (guard)
+        *guard = eb + cerr;
+    return g;
+}
+
+/* B of interval i; X (SPEC §4) only in the geometric form, the one that uses it. */
+void ts__controls_of(const ts_spline *sp, size_t i, double B[4], double X[4], int *geo)
+{
+    ts__B(sp, i, B);
+    *geo = sp->form == TS_FORM_GEOMETRIC;
+    X[0] = sp->x[i];
+    X[1] = *geo ? sp->xc1[i] : (double)NAN;
+    X[2] = *geo ? sp->xc2[i] : (double)NAN;
+    X[3] = sp->x[i + 1];
+}
+
+double ts__interval_gap(const ts_spline *sp, size_t i, const ts_line *line, int sign, double *at)
+{
+    double B[4], X[4];
+    int geo;
+    ts__controls_of(sp, i, B, X, &geo);
+    return ts__gap_ctl(sp, i, B, geo ? X : NULL, line, sign, at, NULL);
+}
+
+/* ------------------------------------------------------------------ */
+/* Per-interval certificate of a shape spline                          */
+/* ------------------------------------------------------------------ */
+
+
+/* Is interval i with controls B (X in the geometric form) inside the region
+ * of sp's scheme?  exact: compute the trig-min certificates (into *cr, with
+ * the places of the minima if want_at: the report's, not the build's);
+ * otherwise only the control-value test, which is a proof by itself
+ * (S = Σ A_l B_l, A_l >= 0, Σ A_l = 1, SPEC §2):
+ *  positive, f_i, f_{i+1} > 0: B0, B3 > 0 and B1, B2 >= 0 give S > 0;
+ *  positive with a zero end (promise S >= 0): all B_l >= 0;
+ *  monotone: B monotone in the data's direction gives S' of that sign by
+ *    (2.1) (and X' > 0 in the geometric form); no gaps (NaN);
+ *  lines, geometric form only: every Y_l − m X_l − c above its rounding
+ *    (hull_inside); with exact, also a trig-min gap above its guard will do. */
+int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double *X,
+                  int exact, ts__cert *cr, int want_at)
+{
+    cr->glo = cr->alo = cr->gup = cr->aup = NAN;
+    double f0 = sp->f[i], f1 = sp->f[i + 1], guard;
+    /* an overflowed control value (tiny a_i) proves nothing: S would be NaN */
+    for (int l = 0; l < 4; l++)
+        if (!isfinite(B[l]) || (X && !isfinite(X[l])))
+            return 0;
+    if (sp->shape == TS_SHAPE_MONOTONE) {
+        int ok;
+        if (f1 > f0)
+            ok = B[0] <= B[1] && B[1] <= B[2] && B[2] <= B[3];
+        else if (f1 < f0)
+            ok = B[0] >= B[1] && B[1] >= B[2] && B[2] >= B[3];
+        else
+            ok = B[0] == B[1] && B[1] == B[2] && B[2] == B[3];
+        if (X) {
+            /* X' > 0 by (2.1) when D0, D2 > 0 and D1 >= -min(D0, D2)/4: at
+             * a_i = 4/(3π) (TS_TERM_GEOMETRIC) D1 = h - 2k is 0 up to rounding.
+             * min over θ of [(1-s)²c + (1-c)²s]/(sc) is 0.2426 (θ = π/4),
+             * so X' >= sc·min(D0, D2)(3·0.2426 - 2/4) > 0 inside. */
+            double D0 = X[1] - X[0], D1 = X[2] - X[1], D2 = X[3] - X[2];
+            double dm = D0 < D2 ? D0 : D2;
+            ok = ok && ((D0 >= 0.0 && D1 >= 0.0 && D2 >= 0.0) || (dm > 0.0 && D1 >= -0.25 * dm));
+        }
+        return ok;
+    }
+    if (sp->shape == TS_SHAPE_POSITIVE) {
+        int zero_end = !(f0 > 0.0 && f1 > 0.0);
+        int structural = zero_end ? (B[0] >= 0.0 && B[1] >= 0.0 && B[2] >= 0.0 && B[3] >= 0.0)
+                                  : (B[0] > 0.0 && B[3] > 0.0 && B[1] >= 0.0 && B[2] >= 0.0);
+        if (!exact)
+            return structural;
+        cr->glo = ts__gap_ctl(sp, i, B, X, &sp->lower, 1, want_at ? &cr->alo : NULL, &guard);
+        return structural || (!zero_end && cr->glo > guard);
+    }
+    int ok = 1;
+    for (int side = 0; side < 2; side++) {
+        if (!(side == 0 ? sp->has_lower : sp->has_upper))
+            continue;
+        const ts_line *ln = side == 0 ? &sp->lower : &sp->upper;
+        int sign = side == 0 ? 1 : -1;
+        /* geometric form: the control gaps are a proof by themselves */
+        int hull = X && ts__hull_inside(B, X, ln, sign);
+        if (exact) {
+            double *g = side == 0 ? &cr->glo : &cr->gup, *a = side == 0 ? &cr->alo : &cr->aup;
+            if (X) {
+                *g = ts__gap_ctl(sp, i, B, X, ln, sign, want_at ? a : NULL, &guard);
+            } else {
+                double theta, t, h = sp->h[i];
+                *g = ts__gap_segment(B, sp->x[i], h, ln, sign, &theta, &t, &guard, NULL);
+                if (want_at)
+                    *a = isnan(*g) ? (double)NAN
+                         : t >= 1.0 ? sp->x[i + 1] : sp->x[i] + h * (theta / TS_HALF_PI);
+            }
+            ok = ok && (hull || *g > guard);
+        } else {
+            ok = ok && hull; /* only the geometric form gets here */
+        }
+    }
+    return ok;
+}
+
+int ts__check_interval(const ts_spline *sp, size_t i, int exact)
+{
+    double B[4], X[4];
+    int geo;
+    ts__cert cr;
+    ts__controls_of(sp, i, B, X, &geo);
+    return ts__check_ctl(sp, i, B, geo ? X : NULL, exact, &cr, 0);
+}
+
+/* opt->certify == 0 skips the trig-min certificates only where the
+ * control-value test is a proof (positive, monotone, geometric form) */
+int ts__certify_exact(const ts_options *opt)
+{
+    int lines = opt->shape == TS_SHAPE_ABOVE || opt->shape == TS_SHAPE_BELOW ||
+                opt->shape == TS_SHAPE_BETWEEN;
+    return opt->certify != 0 || (lines && opt->form != TS_FORM_GEOMETRIC);
+}
+
+/* First interval in [i, i1) that check_ctl with exact == 0 would not pass,
+ * for the schemes whose control-value test is a bare sign test (paper and C¹
+ * forms; else i): the same decisions as check_ctl, in a loop that touches
+ * only the control values (issue 6).
+ *  positive: f_i >= 0 (ts__shape_apply checked the data) and finite, so
+ *    check_ctl's test is 0 <= B1, B2 <= DBL_MAX;
+ *  monotone: every B_l finite and B monotone in the interval's direction. */
+TS_VECTOR_LOOP static int ctl_nonnegative(const double *restrict b1, const double *restrict b2,
+                                          size_t i0, size_t i1)
+{
+    int ok = 1;
+    for (size_t i = i0; i < i1; i++)
+        ok &= (b1[i] >= 0.0) & (b1[i] <= DBL_MAX) & (b2[i] >= 0.0) & (b2[i] <= DBL_MAX);
+    return ok;
+}
+
+size_t ts__skip_proven(const ts_spline *sp, size_t i, size_t i1)
+{
+    if (sp->form == TS_FORM_GEOMETRIC)
+        return i;
+    const double *b1 = sp->b1, *b2 = sp->b2, *f = sp->f;
+    if (sp->shape == TS_SHAPE_POSITIVE) {
+        if (i < i1 && ctl_nonnegative(b1, b2, i, i1))
+            return i1; /* the whole range at once (a flag, so that it vectorises) */
+        while (i < i1 && b1[i] >= 0.0 && b1[i] <= DBL_MAX && b2[i] >= 0.0 && b2[i] <= DBL_MAX)
+            i++;
+    } else if (sp->shape == TS_SHAPE_MONOTONE) {
+        for (; i < i1; i++) {
+            double B0 = f[i], B1 = b1[i], B2 = b2[i], B3 = f[i + 1];
+            if (!(fabs(B1) <= DBL_MAX && fabs(B2) <= DBL_MAX))
+                break;
+            if (B3 > B0 ? !(B0 <= B1 && B1 <= B2 && B2 <= B3)
+                        : B3 < B0 ? !(B0 >= B1 && B1 >= B2 && B2 >= B3)
+                                  : !(B0 == B1 && B1 == B2 && B2 == B3))
+                break;
+        }
+    }
+    return i;
+}
+
+/* A block of exact certificates at once (issue 6): for each interval i in
+ * [i0, i1), ok[i] = 1 when check_ctl (exact, paper form, one boundary m x + c
+ * with sign sg; positive: the scheme's structural test too) would pass it
+ * through the path of tmin_core where the minimum is at an end (g monotone
+ * by (2.1), or no minimum inside: most intervals of real data), else 0 (not
+ * decided here: the general path then).  That path is written out operation
+ * by operation as gap_ctl and tmin_core do it (the same values), restricted
+ * to where it stays exact: finite controls, a normal M with 2^-e normal;
+ * branch-free, so that it vectorises. */
+TS_VECTOR_LOOP void ts__mono_certify(const double *restrict f, const double *restrict b1,
+                                        const double *restrict b2, const double *restrict x,
+                                        const double *restrict h, size_t i0, size_t i1,
+                                        double m, double c, double sg, int positive,
+                                        unsigned char *restrict ok)
+{
+    const double gm = 8.0 * TM_EPS, am = fabs(m), ac = fabs(c);
+    for (size_t i = i0; i < i1; i++) {
+        double B0 = f[i], B1 = b1[i], B2 = b2[i], B3 = f[i + 1];
+        double xi = x[i], hi = h[i], xmax = fabs(xi) + hi, bmax = 0.0;
+        bmax = fabs(B0) > bmax ? fabs(B0) : bmax;
+        bmax = fabs(B1) > bmax ? fabs(B1) : bmax;
+        bmax = fabs(B2) > bmax ? fabs(B2) : bmax;
+        bmax = fabs(B3) > bmax ? fabs(B3) : bmax;
+        int good = (fabs(B0) <= DBL_MAX) & (fabs(B1) <= DBL_MAX) & (fabs(B2) <= DBL_MAX) &
+                   (fabs(B3) <= DBL_MAX);
+        double L0 = m * xi + c;
+        double C0 = sg * (B0 - L0), C1 = sg * (B1 - L0), C2 = sg * (B2 - L0), C3 = sg * (B3 - L0);
+        /* gap_ctl has 0 for m = 0: ±0 here, the same from here on (|κ|, the
+         * signs of κ·2^-e, κ != 0 do not see the sign of a zero) */
+        double kappa = sg * m * (2.0 * hi / TS_PI);
+        /* tmin_core */
+        double m0 = fabs(C0), m1 = fabs(C1), m2 = fabs(C2), m3 = fabs(C3), M = fabs(kappa);
+        good &= (m0 <= DBL_MAX) & (m1 <= DBL_MAX) & (m2 <= DBL_MAX) & (m3 <= DBL_MAX) &
+                (M <= DBL_MAX);
+        M = m0 > M ? m0 : M;
+        M = m1 > M ? m1 : M;
+        M = m2 > M ? m2 : M;
+        M = m3 > M ? m3 : M;
+        uint64_t u;
+        memcpy(&u, &M, sizeof u);
+        int field = (int)((u >> 52) & 0x7ff), e = field - 1022; /* exponent_of, M normal */
+        good &= (field != 0) & (e >= -1021) & (e <= 1022);
+        int ec = good ? e : 0; /* keeps the factors below finite where not good */
+        uint64_t up = (uint64_t)(1023 - ec) << 52, ue = (uint64_t)(ec + 1023) << 52;
+        double p, q;
+        memcpy(&p, &up, sizeof p);
+        memcpy(&q, &ue, sizeof q);
+        double c0 = C0 * p, c1 = C1 * p, c2 = C2 * p, c3 = C3 * p, ks = kappa * p, Ms = M * p;
+        double D0 = c1 - c0, D1 = c2 - c1, D2 = c3 - c2;
+        double ak = fabs(ks), a0 = fabs(D0), a1 = fabs(D1), a2 = fabs(D2);
+        double babs = 3.0 * a0 + 3.0 * a1 + 24.0 * a2 + 8.0 * ak;
+        int mono = ((D0 >= 0.0) & (D1 >= 0.0) & (D2 >= 0.0) & (ks <= 0.0)) |
+                   ((D0 <= 0.0) & (D1 <= 0.0) & (D2 <= 0.0) & (ks >= 0.0));
+        /* isolate adds no candidate (and depth stays 0) unless a Bernstein
+         * coefficient < 0 comes before one > 0 (a sign change from - to +,
+         * where g has a minimum): then only the ends count */
+        double bb0 = 3.0 * D0 - ks, bb1 = D0 + (2.0 / 3.0) * D1 - ks,
+               bb2 = (4.0 / 3.0) * D1 - 1.2 * ks, bb3 = 2.0 * D1 - 1.6 * ks,
+               bb4 = (8.0 / 3.0) * D1 - 2.4 * ks, bb5 = (8.0 / 3.0) * D1 + 4.0 * D2 - 4.0 * ks,
+               bb6 = 24.0 * D2 - 8.0 * ks;
+        int neg = bb0 < 0.0, rise = 0;
+        rise |= neg & (bb1 > 0.0), neg |= bb1 < 0.0;
+        rise |= neg & (bb2 > 0.0), neg |= bb2 < 0.0;
+        rise |= neg & (bb3 > 0.0), neg |= bb3 < 0.0;
+        rise |= neg & (bb4 > 0.0), neg |= bb4 < 0.0;
+        rise |= neg & (bb5 > 0.0), neg |= bb5 < 0.0;
+        rise |= neg & (bb6 > 0.0);
+        good &= mono | !rise;
+        double g0 = 1.0 * c0 + 0.0 * c1 + 0.0 * c2 + 0.0 * c3;
+        double g1 = 0.0 * c0 + 0.0 * c1 + 0.0 * c2 + 1.0 * c3;
+        g0 = ks != 0.0 ? g0 - ks * 0.0 : g0;
+        g1 = ks != 0.0 ? g1 - ks * TS_HALF_PI : g1;
+        double best = g1 < g0 ? g1 : g0;
+        double eta = (6.0 * 0 + 6.0) * TM_EPS * babs; /* depth 0 */
+        double gd = 2.0 * (16.0 * TM_EPS * (Ms + TS_HALF_PI * ak) + 2.0 * eta);
+        double g = best * q, guard = gd * q + gm * (bmax + am * xmax + ac);
+        int pass = g > guard;
+        if (positive) {
+            double f0 = B0, f1 = B3;
+            int zero_end = !((f0 > 0.0) & (f1 > 0.0));
+            int structural = zero_end ? (B0 >= 0.0) & (B1 >= 0.0) & (B2 >= 0.0) & (B3 >= 0.0)
+                                      : (B0 > 0.0) & (B3 > 0.0) & (B1 >= 0.0) & (B2 >= 0.0);
+            pass = structural | ((!zero_end) & pass);
+        }
+        ok[i - i0] = (unsigned char)(good & pass & (M != 0.0));
+    }
+}
+

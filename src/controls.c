@@ -1,0 +1,97 @@
+/* Control values B1, B2 (and X1, X2 of the geometric form) of every form
+ * (docs/method.md §3, §4). */
+#include "internal.h"
+
+/* SPEC §3 (paper, C¹) and §4 (geometric) control values, one loop per form
+ * with the arrays as restrict parameters, so that they vectorise (issue 6). */
+#define TS_K0 (2.0 / (3.0 * TS_PI))
+
+TS_VECTOR_LOOP static void controls_paper(const double *restrict f, const double *restrict d,
+                                          const double *restrict h, const double *restrict al,
+                                          const double *restrict be, double *restrict b1,
+                                          double *restrict b2, size_t i0, size_t i1)
+{
+    for (size_t i = i0; i < i1; i++) {
+        double K = TS_K0 * h[i];
+        double k = K / (al[i] + be[i]);
+        b1[i] = f[i] + k * d[i];
+        b2[i] = f[i + 1] - k * d[i + 1];
+    }
+}
+
+TS_VECTOR_LOOP static void controls_geo(const double *restrict x, const double *restrict f,
+                                        const double *restrict d, const double *restrict h,
+                                        const double *restrict al, const double *restrict be,
+                                        double *restrict b1, double *restrict b2,
+                                        double *restrict xc1, double *restrict xc2, size_t i0,
+                                        size_t i1)
+{
+    for (size_t i = i0; i < i1; i++) {
+        double k = TS_K0 * h[i] / (al[i] + be[i]);
+        b1[i] = f[i] + k * d[i];
+        b2[i] = f[i + 1] - k * d[i + 1];
+        /* SPEC §4: X = [x_i, x_i + k, x_{i+1} - k, x_{i+1}] */
+        xc1[i] = x[i] + k;
+        xc2[i] = x[i + 1] - k;
+    }
+}
+
+/* SPEC §3 C¹ option: d̂_j = d_j / max(a_{j-1}, a_j), one-sided at the ends;
+ * intervals [i0, i1) with both neighbours (0 < i0, i1 < n). */
+TS_VECTOR_LOOP static void controls_c1(const double *restrict f, const double *restrict d,
+                                       const double *restrict h, const double *restrict al,
+                                       const double *restrict be, double *restrict b1,
+                                       double *restrict b2, size_t i0, size_t i1)
+{
+    for (size_t i = i0; i < i1; i++) {
+        double K = TS_K0 * h[i];
+        double a = al[i] + be[i], ap = al[i - 1] + be[i - 1], an = al[i + 1] + be[i + 1];
+        double aL = ap > a ? ap : a, aR = an > a ? an : a;
+        b1[i] = f[i] + K * (d[i] / aL);
+        b2[i] = f[i + 1] - K * (d[i + 1] / aR);
+    }
+}
+
+/* The same for one interval, also at an end. */
+static void controls_c1_one(ts_spline *sp, size_t i)
+{
+    size_t n = sp->n;
+    const double *al = sp->alpha, *be = sp->beta;
+    double K = TS_K0 * sp->h[i];
+    double a = al[i] + be[i];
+    double aL = a, aR = a;
+    if (i > 0) {
+        double ap = al[i - 1] + be[i - 1];
+        aL = ap > a ? ap : a;
+    }
+    if (i + 1 < n) {
+        double an = al[i + 1] + be[i + 1];
+        aR = an > a ? an : a;
+    }
+    sp->b1[i] = sp->f[i] + K * (sp->d[i] / aL);
+    sp->b2[i] = sp->f[i + 1] - K * (sp->d[i + 1] / aR);
+}
+
+void ts__controls(ts_spline *sp, size_t i0, size_t i1)
+{
+    size_t n = sp->n;
+    if (i1 > n)
+        i1 = n;
+    if (i0 >= i1)
+        return;
+    if (sp->form == TS_FORM_C1) {
+        size_t m0 = i0 > 0 ? i0 : 1, m1 = i1 < n ? i1 : n - 1; /* both neighbours */
+        if (i0 == 0)
+            controls_c1_one(sp, 0);
+        if (m0 < m1)
+            controls_c1(sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, m0, m1);
+        if (i1 == n && n - 1 > 0)
+            controls_c1_one(sp, n - 1);
+    } else if (sp->form == TS_FORM_GEOMETRIC) {
+        controls_geo(sp->x, sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, sp->xc1,
+                     sp->xc2, i0, i1);
+    } else {
+        controls_paper(sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, i0, i1);
+    }
+}
+

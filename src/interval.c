@@ -1,0 +1,40 @@
+/* One interval of a spline, any form: value, derivatives and integral
+ * (SPEC §2, §3; the geometric form in geometric.c, SPEC §4). */
+#include "internal.h"
+
+#include <math.h>
+
+/* Value and derivatives (in x) of interval i at x; x may lie outside the
+ * interval (TS_EXTRAP_EXTEND). */
+void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double o[3])
+{
+    if (sp->form == TS_FORM_GEOMETRIC) {
+        ts__geo_eval(sp, i, x, want, o);
+        return;
+    }
+    double h = sp->h[i], B[4];
+    ts__B(sp, i, B);
+    double w = TS_HALF_PI / h; /* dθ/dx */
+    double u = x - sp->x[i], v = sp->x[i + 1] - x;
+    /* θ from the nearer end: sin and cos of π/2 − θ' are exact at the right
+     * knot (s = 1, c = 0), so both knots are interpolated exactly. */
+    if (u <= v)
+        ts__seg_sc(B, sin(u * w), cos(u * w), want, o);
+    else
+        ts__seg_sc(B, cos(v * w), sin(v * w), want, o);
+    o[1] *= w;
+    o[2] *= w * w;
+}
+
+/* ∫_{x_i}^{x} S on interval i, x in the interval. */
+double ts__interval_integral(const ts_spline *sp, size_t i, double x)
+{
+    if (sp->form == TS_FORM_GEOMETRIC)
+        return ts__geo_integral(sp, i, x);
+    double h = sp->h[i], B[4], I[4];
+    double theta = TS_HALF_PI * (x - sp->x[i]) / h;
+    ts__B(sp, i, B);
+    ts__basis_int(theta, sin(theta), cos(theta), I);
+    return (2.0 * h / TS_PI) * (I[0] * B[0] + I[1] * B[1] + I[2] * B[2] + I[3] * B[3]);
+}
+

@@ -1,0 +1,300 @@
+/* SPEC §5: building a shape spline's certificates: every interval checked,
+ * beta_i raised where it is not certified (the repair). */
+#include "internal.h"
+
+#include <float.h>
+#include <math.h>
+
+#define TS_CERT_BLOCK 256 /* intervals per ts__mono_certify call */
+
+#define TS_A_MAX 1e307
+
+static int ok_at(const ts__repair_ops *o, size_t i, double a)
+{
+    o->set_a(o->ctx, i, a);
+    return o->inside(o->ctx, i);
+}
+
+static double margin_at(const ts__repair_ops *o, size_t i, double a)
+{
+    o->set_a(o->ctx, i, a);
+    return o->margin(o->ctx, i);
+}
+
+static ts_status infeasible(const ts__repair_ops *o, size_t i, double a0)
+{
+    o->set_a(o->ctx, i, a0);
+    return TS_ERR_INFEASIBLE;
+}
+
+ts_status ts__repair_search(const ts__repair_ops *o, size_t i, double al, double a0, double t)
+{
+    double lo, hi, amax;
+    if (o->limit_inside(o->ctx, i)) {
+        lo = a0;
+        hi = 2.0 * a0;
+        for (;;) { /* a_i stays <= TS_A_MAX: never an infinite a (k_i = 0) */
+            if (!(hi <= TS_A_MAX))
+                return infeasible(o, i, a0);
+            if (ok_at(o, i, hi))
+                break;
+            lo = hi;
+            hi *= 2.0;
+        }
+        amax = INFINITY;
+    } else {
+        if (!o->margin)
+            return infeasible(o, i, a0);
+        const double r = 0.6180339887498949;
+        /* u = 1/a in (0, 1/alpha]; a subnormal alpha would give ub = inf */
+        double ua = 0.0, ub = 1.0 / al;
+        if (!(ub <= DBL_MAX))
+            ub = DBL_MAX;
+        double u1 = ub - r * (ub - ua), u2 = ua + r * (ub - ua);
+        double m1 = margin_at(o, i, 1.0 / u1), m2 = margin_at(o, i, 1.0 / u2);
+        for (int it = 0; it < 90 && ub - ua > 1e-13 * ub; it++) {
+            if (m1 < m2) {
+                ua = u1;
+                u1 = u2;
+                m1 = m2;
+                u2 = ua + r * (ub - ua);
+                m2 = margin_at(o, i, 1.0 / u2);
+            } else {
+                ub = u2;
+                u2 = u1;
+                m2 = m1;
+                u1 = ub - r * (ub - ua);
+                m1 = margin_at(o, i, 1.0 / u1);
+            }
+        }
+        amax = 1.0 / (m1 >= m2 ? u1 : u2);
+        if (!(amax <= TS_A_MAX)) {
+            if (!(al <= TS_A_MAX)) /* header: the a needed exceeds 1e307 */
+                return infeasible(o, i, a0);
+            amax = TS_A_MAX;
+        }
+        if (!ok_at(o, i, amax))
+            return infeasible(o, i, a0);
+        if (ok_at(o, i, al)) {
+            lo = hi = al;
+        } else {
+            lo = al;
+            hi = amax;
+        }
+    }
+    /* bisection: lo fails, hi is certified */
+    for (int it = 0; it < 200 && lo != hi && fabs(hi - lo) > 1e-12 * hi; it++) {
+        double mid = lo + 0.5 * (hi - lo);
+        if (mid == lo || mid == hi)
+            break;
+        if (ok_at(o, i, mid))
+            hi = mid;
+        else
+            lo = mid;
+    }
+    /* the margin t, towards the best a, never past it */
+    double cand = hi + t;
+    if (cand > amax)
+        cand = 0.5 * (hi + amax);
+    if (!(cand <= TS_A_MAX)) /* a huge margin t */
+        cand = hi > TS_A_MAX ? hi : TS_A_MAX;
+    if (!ok_at(o, i, cand) && !ok_at(o, i, hi))
+        return infeasible(o, i, a0);
+    return TS_OK;
+}
+
+/* ---- the repair of a spline's interval -------------------------------- */
+
+typedef struct spline_ctx {
+    ts_spline *sp;
+    int exact;
+} spline_ctx;
+
+/* Set a_i (through beta_i) and recompute the controls it touches. */
+static void set_a(ts_spline *sp, size_t i, double a)
+{
+    size_t n = sp->n, i0 = i, i1 = i + 1;
+    sp->beta[i] = a - sp->alpha[i];
+    if (sp->form == TS_FORM_C1) {
+        /* d̂ of both knots changes (SPEC §3) */
+        i0 = i > 0 ? i - 1 : 0;
+        i1 = i + 2 < n ? i + 2 : n;
+    }
+    ts__controls(sp, i0, i1);
+}
+
+static void spline_set_a(void *ctx, size_t i, double a)
+{
+    set_a(((spline_ctx *)ctx)->sp, i, a);
+}
+
+static int spline_inside(void *ctx, size_t i)
+{
+    const spline_ctx *z = ctx;
+    return ts__check_interval(z->sp, i, z->exact);
+}
+
+/* The limit a -> ∞: S -> f_i c² + f_{i+1} s² (geometric form: the chord). */
+static int spline_limit_inside(void *ctx, size_t i)
+{
+    const spline_ctx *z = ctx;
+    const ts_spline *sp = z->sp;
+    double B[4], X[4];
+    ts__cert cr;
+    B[0] = B[1] = sp->f[i];
+    B[2] = B[3] = sp->f[i + 1];
+    X[0] = X[1] = sp->x[i];
+    X[2] = X[3] = sp->x[i + 1];
+    return ts__check_ctl(sp, i, B, sp->form == TS_FORM_GEOMETRIC ? X : NULL, z->exact, &cr, 0);
+}
+
+/* Certification margin of interval i (lines only): min over the active
+ * boundaries of gap − guard. */
+static double spline_margin(void *ctx, size_t i)
+{
+    const ts_spline *sp = ((spline_ctx *)ctx)->sp;
+    double B[4], X[4], r = INFINITY, guard, at;
+    int geo;
+    ts__controls_of(sp, i, B, X, &geo);
+    if (sp->has_lower) {
+        double g = ts__gap_ctl(sp, i, B, geo ? X : NULL, &sp->lower, 1, &at, &guard) - guard;
+        if (!(g >= r))
+            r = g;
+    }
+    if (sp->has_upper) {
+        double g = ts__gap_ctl(sp, i, B, geo ? X : NULL, &sp->upper, -1, &at, &guard) - guard;
+        if (!(g >= r))
+            r = g;
+    }
+    return r;
+}
+
+/* SPEC §5: raise beta_i until interval i is certified (ts__repair_search);
+ * the geometric form has no concave search (a line the chord crosses). */
+static ts_status repair(ts_spline *sp, size_t i, double t, int exact, ts_error *err)
+{
+    spline_ctx z = {sp, exact};
+    ts__repair_ops o = {&z, spline_set_a, spline_inside, spline_limit_inside,
+                        sp->form == TS_FORM_GEOMETRIC ? NULL : spline_margin};
+    ts_status st = ts__repair_search(&o, i, sp->alpha[i], sp->alpha[i] + sp->beta[i], t);
+    if (st != TS_OK)
+        return ts__fail(err, st, i, TS_WHERE_INTERVAL);
+    sp->term[i] = (unsigned char)TS_TERM_CERTIFY;
+    return TS_OK;
+}
+
+/* C¹ form: interval i could not be certified with its neighbours' a.  A
+ * neighbour j with a_j > a_i caps d̂ at the shared knot; lower a_j to the
+ * smallest value (>= alpha_j) that keeps j and its other neighbour
+ * certified.  Returns 1 if some a_j was lowered. */
+static int relax_neighbours(ts_spline *sp, size_t i, int exact)
+{
+    size_t n = sp->n;
+    double ai = sp->alpha[i] + sp->beta[i];
+    int changed = 0;
+    for (int side = 0; side < 2; side++) {
+        if ((side == 0 && i == 0) || (side == 1 && i + 1 >= n))
+            continue;
+        size_t j = side == 0 ? i - 1 : i + 1;
+        double aj = sp->alpha[j] + sp->beta[j];
+        if (!(aj > ai))
+            continue;
+        int has_o = side == 0 ? j > 0 : j + 1 < n;
+        size_t o = side == 0 ? j - 1 : j + 1;
+        double lo = sp->alpha[j], hi = aj;
+#define TS_J_OK(a) ((set_a(sp, j, (a)), ts__check_interval(sp, j, exact)) && (!has_o || ts__check_interval(sp, o, exact)))
+        if (TS_J_OK(lo)) {
+            hi = lo;
+        } else {
+            for (int it = 0; it < 100 && hi - lo > 1e-12 * hi; it++) {
+                double mid = lo + 0.5 * (hi - lo);
+                if (TS_J_OK(mid))
+                    hi = mid;
+                else
+                    lo = mid;
+            }
+        }
+#undef TS_J_OK
+        set_a(sp, j, hi);
+        (void)ts__check_interval(sp, j, exact);
+        if (has_o)
+            (void)ts__check_interval(sp, o, exact);
+        if (hi < aj) {
+            sp->term[j] = (unsigned char)TS_TERM_CERTIFY;
+            changed = 1;
+        }
+    }
+    return changed;
+}
+
+/* The certification loop over [i0, i1).  In the paper and geometric forms
+ * every interval is checked (and repaired) on its own; the C¹ form steps back
+ * after a repair, so it runs once over [0, n). */
+static ts_status certify_loop(ts_spline *sp, const ts_options *opt, size_t i0, size_t i1,
+                              ts_error *err)
+{
+    int exact = ts__certify_exact(opt);
+    /* every repair moves on (paper, geometric) or may step back once (C¹) */
+    size_t budget = 16 * sp->n + 64;
+    size_t i = i0;
+    /* exact, paper form: mono_certify decides most intervals a block at a
+     * time (a repair there changes only its own interval) */
+    int batch = exact && sp->form == TS_FORM_PAPER && !(sp->has_lower && sp->has_upper) &&
+                (sp->has_lower || sp->has_upper);
+    unsigned char ok[TS_CERT_BLOCK];
+    size_t k0 = i, k1 = i; /* ok[] covers [k0, k1) */
+    while (i < i1) {
+        if (!exact) {
+            i = ts__skip_proven(sp, i, i1);
+            if (i >= i1)
+                break;
+        }
+        if (batch && i >= k1) {
+            const ts_line *ln = sp->has_lower ? &sp->lower : &sp->upper;
+            k0 = i;
+            k1 = i1 - i > TS_CERT_BLOCK ? i + TS_CERT_BLOCK : i1;
+            ts__mono_certify(sp->f, sp->b1, sp->b2, sp->x, sp->h, k0, k1, ln->m, ln->c,
+                         sp->has_lower ? 1.0 : -1.0, sp->shape == TS_SHAPE_POSITIVE, ok);
+        }
+        if ((batch && ok[i - k0]) || ts__check_interval(sp, i, exact)) {
+            i++;
+            continue;
+        }
+        if (budget-- == 0) {
+            ts__error_set(err, TS_ERR_INFEASIBLE, i, TS_WHERE_INTERVAL);
+            return TS_ERR_INFEASIBLE;
+        }
+        double t = opt->margins ? opt->margins[i] : opt->margin;
+        ts_status st = repair(sp, i, t, exact, err);
+        if (st != TS_OK && sp->form == TS_FORM_C1 && relax_neighbours(sp, i, exact)) {
+            ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+            st = repair(sp, i, t, exact, err);
+        }
+        if (st != TS_OK)
+            return st;
+        /* C¹: the repair changed d̂_i, so re-check the left neighbour */
+        if (sp->form == TS_FORM_C1 && i > 0)
+            i--;
+        else
+            i++;
+    }
+    return TS_OK;
+}
+
+ts_status ts__certify_range(ts_spline *sp, const ts_options *opt, size_t i0, size_t i1,
+                            ts_error *err)
+{
+    sp->certified = 0;
+    sp->have_certs = 0;
+    if (sp->shape == TS_SHAPE_NONE)
+        return TS_OK;
+    return certify_loop(sp, opt, i0, i1 < sp->n ? i1 : sp->n, err);
+}
+
+void ts__certify_done(ts_spline *sp, const ts_options *opt)
+{
+    if (sp->shape == TS_SHAPE_NONE)
+        return;
+    sp->have_certs = ts__certify_exact(opt);
+    sp->certified = 1;
+}

@@ -1,0 +1,115 @@
+/* Status strings, the version, the error setter and the library's
+ * allocation (docs/method.md is not involved: this is bookkeeping). */
+#define _DEFAULT_SOURCE /* MADV_HUGEPAGE */
+#include "internal.h"
+
+#define TS_STR_(x) #x
+#define TS_STR(x) TS_STR_(x)
+#define TS_VERSION_STRING TS_STR(TS_VERSION_MAJOR) "." TS_STR(TS_VERSION_MINOR) "." TS_STR(TS_VERSION_PATCH)
+
+#include <stdint.h>
+#include <stdlib.h>
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+const char *ts_version(void)
+{
+    return TS_VERSION_STRING;
+}
+
+static const char *const ts_messages[TS_STATUS_COUNT_] = {
+    [TS_OK] = "success",
+    [TS_ERR_NULL] = "a required pointer argument is NULL",
+    [TS_ERR_NOMEM] = "out of memory",
+    [TS_ERR_OVERFLOW] = "size overflow: too many points",
+    [TS_ERR_TOO_FEW] = "too few points: at least 2 are needed",
+    [TS_ERR_NONFINITE] = "NaN or infinite value in the input",
+    [TS_ERR_UNSORTED] = "x values are not strictly increasing (unsorted or duplicate)",
+    [TS_ERR_ALPHA] = "alpha must be finite and > 0",
+    [TS_ERR_BETA] = "beta must be finite and >= 0, and alpha + beta > 0",
+    [TS_ERR_MARGIN] = "margin must be finite and > 0",
+    [TS_ERR_LENGTH] = "a per-interval or per-point array has the wrong length",
+    [TS_ERR_OPTION] = "invalid option value or combination",
+    [TS_ERR_PERIODIC] = "periodic slopes need the first and last values equal",
+    [TS_ERR_DOMAIN] = "query is NaN or outside the data range",
+    [TS_ERR_NEGATIVE] = "negative data value for the positive scheme",
+    [TS_ERR_SIDE] = "a data point lies on or across a constraint line",
+    [TS_ERR_LINES] = "the lower line is not strictly below the upper line at a data point",
+    [TS_ERR_NONMONOTONE] = "data are not monotone",
+    [TS_ERR_INFEASIBLE] = "no beta keeps this interval inside the region",
+    [TS_ERR_VIOLATED] = "the spline leaves the region on some interval",
+    [TS_ERR_GEOMETRIC] = "alpha + beta below the geometric-form bound",
+    [TS_ERR_DIMENSION] = "curve dimension must be 2 or 3",
+    [TS_ERR_INDEX] = "index out of range",
+    [TS_ERR_ZERO_SLOPE] = "slope of the wrong sign at a knot on the boundary",
+};
+
+const char *ts_strerror(ts_status status)
+{
+    if ((unsigned)status < (unsigned)TS_STATUS_COUNT_ && ts_messages[status])
+        return ts_messages[status];
+    return "unknown status code";
+}
+
+void ts__error_set(ts_error *err, ts_status st, size_t index, ts_where where)
+{
+    if (err) {
+        err->status = st;
+        err->index = index;
+        err->where = where;
+    }
+}
+
+#ifdef TS_TEST_HOOKS
+long ts__test_fail_alloc;
+
+static int alloc_should_fail(void)
+{
+    return ts__test_fail_alloc > 0 && --ts__test_fail_alloc == 0;
+}
+#else
+static int alloc_should_fail(void)
+{
+    return 0;
+}
+#endif
+
+void *ts__malloc(size_t bytes)
+{
+    return alloc_should_fail() ? NULL : malloc(bytes);
+}
+
+void *ts__calloc(size_t count, size_t size)
+{
+    return alloc_should_fail() ? NULL : calloc(count, size);
+}
+
+/* The spline's one block.  Large blocks are 2 MiB-aligned and marked for
+ * transparent huge pages where Linux offers them: first-touch page faults
+ * dominate construction time at large n (issue 6, bench/RESULTS.md), and huge
+ * pages cut them severalfold.  Freed with free() either way. */
+void *ts__alloc_block(size_t bytes)
+{
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    const size_t huge = (size_t)2 << 20;
+    if (bytes >= 4 * huge && bytes <= SIZE_MAX - huge) {
+        if (alloc_should_fail())
+            return NULL;
+        size_t rounded = (bytes + huge - 1) / huge * huge;
+        void *p = aligned_alloc(huge, rounded);
+        if (p) {
+            (void)madvise(p, rounded, MADV_HUGEPAGE); /* advice only: failure is harmless */
+            return p;
+        }
+        return malloc(bytes);
+    }
+#endif
+    return ts__malloc(bytes);
+}
+
+ts_status ts__fail(ts_error *err, ts_status st, size_t index, ts_where where)
+{
+    ts__error_set(err, st, index, where);
+    return st;
+}
