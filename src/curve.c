@@ -114,21 +114,6 @@ static void sincos_delta(double delta, double *s, double *c)
     *c = sin(TS_HALF_PI * (1.0 - delta));
 }
 
-/* SPEC §2, (2.1): dS/dθ from control differences, and its θ-derivative. */
-static double seg_d1(const double B[4], double s, double c)
-{
-    return 3.0 * (1.0 - s) * (1.0 - s) * c * (B[1] - B[0]) + 2.0 * s * c * (B[2] - B[1]) +
-           3.0 * (1.0 - c) * (1.0 - c) * s * (B[3] - B[2]);
-}
-
-static double seg_d2(const double B[4], double s, double c)
-{
-    double w0 = -3.0 * (1.0 - s) * (2.0 * c * c + s * (1.0 - s));
-    double w1 = 2.0 * (c * c - s * s);
-    double w2 = 3.0 * (1.0 - c) * (2.0 * s * s + c * (1.0 - c));
-    return w0 * (B[1] - B[0]) + w1 * (B[2] - B[1]) + w2 * (B[3] - B[2]);
-}
-
 /* Control values of coordinate k of segment i. */
 static void ctrl_coord(const ts_curve *c, size_t i, size_t k, double B[4])
 {
@@ -154,50 +139,26 @@ static void seg_controls(ts_curve *c, size_t i)
     }
 }
 
-/* One side of the box: C_l = ±(B_l − bound).  The segment is inside when
- * every C_l > 0 (a proof by itself: S − bound = Σ A_l C_l, A_l >= 0, Σ A_l = 1,
- * SPEC §2) or when the exact minimum (SPEC §5, ts__trig_min with κ = 0)
- * exceeds a rounding guard for g and for the C_l themselves (see certify.c:
- * <= 16ε max|C| per evaluation, doubled twice here, plus 8ε of the
- * subtraction).  *g receives the exact minimum, *th its θ. */
-static int side_ok(const double C[4], double bmax, double *g, double *th)
-{
-    int structural = 1;
-    double cmax = 0.0;
-    for (int l = 0; l < 4; l++) {
-        if (!(C[l] > 0.0))
-            structural = 0;
-        if (fabs(C[l]) > cmax)
-            cmax = fabs(C[l]);
-    }
-    *g = ts__trig_min(C, 0.0, th);
-    return structural || *g > 64.0 * DBL_EPSILON * cmax + 8.0 * DBL_EPSILON * bmax;
-}
-
-/* Exact gaps of coordinate k of segment i to the sides of box bx (SPEC §5
- * with constant lines).  Returns 1 when every active side is certified. */
+/* Exact gaps of coordinate k of segment i to the sides of box bx: the
+ * certificate of a spline interval against the constant lines y = lo[k],
+ * y = hi[k] (ts__gap_segment, SPEC §5), which also accepts every control
+ * gap > 0 as a proof.  Returns 1 when every active side is certified. */
 static int seg_gaps(const ts_curve *c, const struct curve_box *bx, size_t i, size_t k,
                     double *glo, double *tlo, double *ghi, double *thi)
 {
-    double B[4], C[4];
-    int ok = 1;
+    double B[4], h = c->t[i + 1] - c->t[i], guard;
+    int ok = 1, proven;
     ctrl_coord(c, i, k, B);
     *glo = *tlo = *ghi = *thi = NAN;
     if (bx->has_lo[k]) {
-        double bmax = fabs(bx->lo[k]);
-        for (int l = 0; l < 4; l++) {
-            C[l] = B[l] - bx->lo[k];
-            bmax = fmax(bmax, fabs(B[l]));
-        }
-        ok = side_ok(C, bmax, glo, tlo) && ok;
+        ts_line ln = {0.0, bx->lo[k]};
+        *glo = ts__gap_segment(B, c->t[i], h, &ln, 1, tlo, NULL, &guard, &proven);
+        ok = ok && (proven || *glo > guard);
     }
     if (bx->has_hi[k]) {
-        double bmax = fabs(bx->hi[k]);
-        for (int l = 0; l < 4; l++) {
-            C[l] = bx->hi[k] - B[l];
-            bmax = fmax(bmax, fabs(B[l]));
-        }
-        ok = side_ok(C, bmax, ghi, thi) && ok;
+        ts_line ln = {0.0, bx->hi[k]};
+        *ghi = ts__gap_segment(B, c->t[i], h, &ln, -1, thi, NULL, &guard, &proven);
+        ok = ok && (proven || *ghi > guard);
     }
     return ok;
 }
@@ -211,40 +172,31 @@ static int seg_certified(const ts_curve *c, size_t i)
     return 1;
 }
 
-/* SPEC §5 certificate repair: raise beta_i (doubling, then bisection on a_i)
- * until every gap of segment i is > 0.  0 on success, -1 if infeasible. */
-static int seg_repair(ts_curve *c, size_t i)
+/* The repair search of splines (ts__repair_search, SPEC §5) on segment i. */
+static void curve_set_a(void *ctx, size_t i, double a)
 {
-    double a_lo = c->alpha[i] + c->beta[i], a_hi = a_lo;
-    int found = 0;
-    for (int it = 0; it < 2200 && !found; it++) {
-        a_hi *= 2.0;
-        if (!isfin(a_hi))
-            break;
-        c->beta[i] = a_hi - c->alpha[i];
-        seg_controls(c, i);
-        if (seg_certified(c, i))
-            found = 1;
-        else
-            a_lo = a_hi;
-    }
-    if (!found) {
-        c->beta[i] = a_lo - c->alpha[i];
-        seg_controls(c, i);
-        return -1;
-    }
-    for (int it = 0; it < 60 && a_hi - a_lo > 1e-9 * a_hi; it++) {
-        double am = 0.5 * (a_lo + a_hi);
-        c->beta[i] = am - c->alpha[i];
-        seg_controls(c, i);
-        if (seg_certified(c, i))
-            a_hi = am;
-        else
-            a_lo = am;
-    }
-    c->beta[i] = a_hi - c->alpha[i];
+    ts_curve *c = ctx;
+    c->beta[i] = a - c->alpha[i];
     seg_controls(c, i);
-    return 0;
+}
+
+static int curve_inside(void *ctx, size_t i)
+{
+    return seg_certified(ctx, i);
+}
+
+/* a -> ∞: the chord, inside a box that holds both points */
+static int curve_limit_inside(void *ctx, size_t i)
+{
+    (void)ctx;
+    (void)i;
+    return 1;
+}
+
+static int seg_repair(ts_curve *c, size_t i, double t)
+{
+    ts__repair_ops o = {c, curve_set_a, curve_inside, curve_limit_inside, NULL};
+    return ts__repair_search(&o, i, c->alpha[i], c->alpha[i] + c->beta[i], t) == TS_OK ? 0 : -1;
 }
 
 static ts_status fail(ts_error *err, ts_status st, size_t index, ts_where where)
@@ -532,7 +484,7 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
         for (size_t i = 0; i < n; i++) {
             if (seg_certified(c, i))
                 continue;
-            if (seg_repair(c, i) != 0) {
+            if (seg_repair(c, i, opt->margin) != 0) {
                 st = fail(err, TS_ERR_INFEASIBLE, i, TS_WHERE_INTERVAL);
                 goto out;
             }
@@ -604,22 +556,22 @@ ts_status ts_curve_params(const ts_curve *c, size_t i, double *alpha, double *be
 static void seg_eval(const ts_curve *c, size_t i, double delta, double *p, double *dp,
                      double *d2p)
 {
-    double s, co, A[4], B[4];
+    double s, co, B[4], o[3];
     double h = c->t[i + 1] - c->t[i], w = TS_HALF_PI / h;
+    int want = d2p ? 2 : dp ? 1 : 0;
     sincos_delta(delta, &s, &co);
-    ts__basis(s, co, A);
     /* a subnormal step (chord length of points ~1e-310 apart) makes w = inf:
      * divide by h instead, so dP/dt stays finite (d²P/dt² ~ 1/h may not) */
     int wf = isfin(w);
     for (size_t k = 0; k < c->dim; k++) {
         ctrl_coord(c, i, k, B);
+        ts__seg_sc(B, s, co, want, o); /* SPEC §2, (2.1) */
         if (p)
-            p[k] = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
+            p[k] = o[0];
         if (dp)
-            dp[k] = wf ? seg_d1(B, s, co) * w : seg_d1(B, s, co) * TS_HALF_PI / h;
+            dp[k] = wf ? o[1] * w : o[1] * TS_HALF_PI / h;
         if (d2p)
-            d2p[k] = wf ? seg_d2(B, s, co) * w * w
-                        : seg_d2(B, s, co) * TS_HALF_PI / h * TS_HALF_PI / h;
+            d2p[k] = wf ? o[2] * w * w : o[2] * TS_HALF_PI / h * TS_HALF_PI / h;
     }
 }
 
@@ -705,12 +657,13 @@ static const double gl_w[5] = {0.295524224714752870174, 0.269266719309996355091,
  * 2^-e <= 1/max|ctrl|, so differences and sums cannot overflow). */
 static double seg_speed(const ts_curve *c, size_t i, double theta, int e)
 {
-    double s = sin(theta), co = cos(theta), v[3], B[4];
+    double s = sin(theta), co = cos(theta), v[3], B[4], o[3];
     for (size_t k = 0; k < c->dim; k++) {
         ctrl_coord(c, i, k, B);
         for (int l = 0; l < 4; l++)
             B[l] = ldexp(B[l], -e);
-        v[k] = seg_d1(B, s, co);
+        ts__seg_sc(B, s, co, 1, o);
+        v[k] = o[1];
     }
     return norm_dim(v, c->dim);
 }
