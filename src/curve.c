@@ -33,7 +33,7 @@ struct ts_curve {
  * widest stencil of SPEC §6 (Akima: two secants on each side). */
 #define CURVE_PAD 3
 
-void ts_curve_options_init(ts_curve_options *opt)
+static void curve_options_defaults(ts_curve_options *opt)
 {
     if (!opt)
         return;
@@ -54,7 +54,7 @@ void ts_curve_options_init(ts_curve_options *opt)
     opt->margin = TS_DEFAULT_MARGIN;
 }
 
-void ts_curve_free(ts_curve *c)
+static void curve_release(ts_curve *c)
 {
     if (!c)
         return;
@@ -265,7 +265,7 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
         return fail(err, TS_ERR_DIMENSION, TS_NO_INDEX, TS_WHERE_NONE);
     ts_curve_options defaults;
     if (!opt) {
-        ts_curve_options_init(&defaults);
+        curve_options_defaults(&defaults);
         opt = &defaults;
     }
     if (!((int)opt->param >= 0 && (int)opt->param <= (int)TS_PARAM_UNIFORM))
@@ -497,7 +497,7 @@ out:
     free(fe);
     free(de);
     if (st != TS_OK) {
-        ts_curve_free(c);
+        curve_release(c);
         return st;
     }
     *out = c;
@@ -809,4 +809,14 @@ ts_status ts_curve_certify_box(const ts_curve *c, const int has_lo[3], const dou
         }
     }
     return certify_with(c, &bx, reports, err);
+}
+
+void ts_curve_options_init(ts_curve_options *opt)
+{
+    curve_options_defaults(opt);
+}
+
+void ts_curve_free(ts_curve *c)
+{
+    curve_release(c);
 }

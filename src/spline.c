@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-void ts_options_init(ts_options *opt)
+static void options_defaults(ts_options *opt)
 {
     if (!opt)
         return;
@@ -160,6 +160,8 @@ static double cumulate(ts_spline *sp, size_t i0, size_t i1, double sum)
     return sum;
 }
 
+static void spline_release(ts_spline *s);
+
 /* Intervals per block of the construction: its dozen arrays stay in the L2
  * cache (~100 KiB) from the slopes to the integrals (docs/design.md). */
 #define TS_BLOCK 1024
@@ -283,7 +285,7 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
         return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
     ts_options defaults;
     if (!opt) {
-        ts_options_init(&defaults);
+        options_defaults(&defaults);
         opt = &defaults;
     }
     if (n_points < 2)
@@ -347,14 +349,14 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
     sp->term = (unsigned char *)p;
     ts_status st = build(sp, opt, x, f, err);
     if (st != TS_OK) {
-        ts_spline_free(sp);
+        spline_release(sp);
         return st;
     }
     *out = sp;
     return TS_OK;
 }
 
-void ts_spline_free(ts_spline *s)
+static void spline_release(ts_spline *s)
 {
     if (!s)
         return;
@@ -408,4 +410,14 @@ ts_status ts_spline_control(const ts_spline *s, size_t i, double B[4], double X[
         }
     }
     return TS_OK;
+}
+
+void ts_options_init(ts_options *opt)
+{
+    options_defaults(opt);
+}
+
+void ts_spline_free(ts_spline *s)
+{
+    spline_release(s);
 }
