@@ -12,6 +12,25 @@
 
 #define TM_EPS DBL_EPSILON
 
+/* SPEC §5.1 control-value proof (S = Σ A_l B_l, A_l >= 0, Σ A_l = 1, SPEC §2):
+ * f_i, f_{i+1} > 0 with B0, B3 > 0 and B1, B2 >= 0 give S > 0; with a zero
+ * end (promise S >= 0) all B_l >= 0.  Branch-free (used in vector loops). */
+static inline int positive_proof(double B0, double B1, double B2, double B3)
+{
+    int zero_end = !((B0 > 0.0) & (B3 > 0.0));
+    return zero_end ? (B0 >= 0.0) & (B1 >= 0.0) & (B2 >= 0.0) & (B3 >= 0.0)
+                    : (B0 > 0.0) & (B3 > 0.0) & (B1 >= 0.0) & (B2 >= 0.0);
+}
+
+/* SPEC §5.5: B monotone in the data's direction gives S' of that sign by
+ * (2.1); equal ends need equal control values. */
+static inline int monotone_proof(double B0, double B1, double B2, double B3)
+{
+    return B3 > B0   ? B0 <= B1 && B1 <= B2 && B2 <= B3
+           : B3 < B0 ? B0 >= B1 && B1 >= B2 && B2 >= B3
+                     : B0 == B1 && B1 == B2 && B2 == B3;
+}
+
 /* ------------------------------------------------------------------ */
 /* Interval gaps                                                        */
 /* ------------------------------------------------------------------ */
@@ -156,13 +175,7 @@ int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double
         if (!isfinite(B[l]) || (X && !isfinite(X[l])))
             return 0;
     if (sp->shape == TS_SHAPE_MONOTONE) {
-        int ok;
-        if (f1 > f0)
-            ok = B[0] <= B[1] && B[1] <= B[2] && B[2] <= B[3];
-        else if (f1 < f0)
-            ok = B[0] >= B[1] && B[1] >= B[2] && B[2] >= B[3];
-        else
-            ok = B[0] == B[1] && B[1] == B[2] && B[2] == B[3];
+        int ok = monotone_proof(B[0], B[1], B[2], B[3]);
         if (X) {
             /* X' > 0 by (2.1) when D0, D2 > 0 and D1 >= -min(D0, D2)/4: at
              * a_i = 4/(3π) (TS_TERM_GEOMETRIC) D1 = h - 2k is 0 up to rounding.
@@ -176,8 +189,7 @@ int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double
     }
     if (sp->shape == TS_SHAPE_POSITIVE) {
         int zero_end = !(f0 > 0.0 && f1 > 0.0);
-        int structural = zero_end ? (B[0] >= 0.0 && B[1] >= 0.0 && B[2] >= 0.0 && B[3] >= 0.0)
-                                  : (B[0] > 0.0 && B[3] > 0.0 && B[1] >= 0.0 && B[2] >= 0.0);
+        int structural = positive_proof(B[0], B[1], B[2], B[3]);
         if (!exact)
             return structural;
         cr->glo = ts__gap_ctl(sp, i, B, X, &sp->lower, 1, want_at ? &cr->alo : NULL, &guard);
@@ -228,43 +240,40 @@ int ts__certify_exact(const ts_options *opt)
     return opt->certify != 0 || (lines && opt->form != TS_FORM_GEOMETRIC);
 }
 
-/* First interval in [i, i1) that check_ctl with exact == 0 would not pass,
- * for the schemes whose control-value test is a bare sign test (paper and C¹
- * forms; else i): the same decisions as check_ctl, in a loop that touches
- * only the control values (issue 6).
- *  positive: f_i >= 0 (ts__shape_apply checked the data) and finite, so
- *    check_ctl's test is 0 <= B1, B2 <= DBL_MAX;
- *  monotone: every B_l finite and B monotone in the interval's direction. */
-TS_VECTOR_LOOP static int ctl_nonnegative(const double *restrict b1, const double *restrict b2,
-                                          size_t i0, size_t i1)
+/* The control-value proof of interval i, not exact (check_ctl with
+ * exact == 0): positive or monotone, paper and C¹ forms, finite controls. */
+static inline int proven(const double *restrict f, const double *restrict b1,
+                         const double *restrict b2, size_t i, int positive)
+{
+    double B0 = f[i], B1 = b1[i], B2 = b2[i], B3 = f[i + 1];
+    int finite = (fabs(B1) <= DBL_MAX) & (fabs(B2) <= DBL_MAX);
+    return finite & (positive ? positive_proof(B0, B1, B2, B3) : monotone_proof(B0, B1, B2, B3));
+}
+
+/* 1 if every interval of [i0, i1) is positive_proof'ed (a flag, so that it
+ * vectorises). */
+TS_VECTOR_LOOP static int all_proven_positive(const double *restrict f,
+                                              const double *restrict b1,
+                                              const double *restrict b2, size_t i0, size_t i1)
 {
     int ok = 1;
     for (size_t i = i0; i < i1; i++)
-        ok &= (b1[i] >= 0.0) & (b1[i] <= DBL_MAX) & (b2[i] >= 0.0) & (b2[i] <= DBL_MAX);
+        ok &= proven(f, b1, b2, i, 1);
     return ok;
 }
 
+/* First interval in [i, i1) that ts__check_ctl with exact == 0 would not
+ * pass, for the schemes whose control-value test is a bare sign test
+ * (positive and monotone; paper and C¹ forms; else i). */
 size_t ts__skip_proven(const ts_spline *sp, size_t i, size_t i1)
 {
-    if (sp->form == TS_FORM_GEOMETRIC)
+    int positive = sp->shape == TS_SHAPE_POSITIVE;
+    if (sp->form == TS_FORM_GEOMETRIC || !(positive || sp->shape == TS_SHAPE_MONOTONE))
         return i;
-    const double *b1 = sp->b1, *b2 = sp->b2, *f = sp->f;
-    if (sp->shape == TS_SHAPE_POSITIVE) {
-        if (i < i1 && ctl_nonnegative(b1, b2, i, i1))
-            return i1; /* the whole range at once (a flag, so that it vectorises) */
-        while (i < i1 && b1[i] >= 0.0 && b1[i] <= DBL_MAX && b2[i] >= 0.0 && b2[i] <= DBL_MAX)
-            i++;
-    } else if (sp->shape == TS_SHAPE_MONOTONE) {
-        for (; i < i1; i++) {
-            double B0 = f[i], B1 = b1[i], B2 = b2[i], B3 = f[i + 1];
-            if (!(fabs(B1) <= DBL_MAX && fabs(B2) <= DBL_MAX))
-                break;
-            if (B3 > B0 ? !(B0 <= B1 && B1 <= B2 && B2 <= B3)
-                        : B3 < B0 ? !(B0 >= B1 && B1 >= B2 && B2 >= B3)
-                                  : !(B0 == B1 && B1 == B2 && B2 == B3))
-                break;
-        }
-    }
+    if (positive && i < i1 && all_proven_positive(sp->f, sp->b1, sp->b2, i, i1))
+        return i1;
+    while (i < i1 && proven(sp->f, sp->b1, sp->b2, i, positive))
+        i++;
     return i;
 }
 
@@ -316,42 +325,14 @@ TS_VECTOR_LOOP void ts__mono_certify(const double *restrict f, const double *res
         memcpy(&p, &up, sizeof p);
         memcpy(&q, &ue, sizeof q);
         double c0 = C0 * p, c1 = C1 * p, c2 = C2 * p, c3 = C3 * p, ks = kappa * p, Ms = M * p;
-        double D0 = c1 - c0, D1 = c2 - c1, D2 = c3 - c2;
-        double ak = fabs(ks), a0 = fabs(D0), a1 = fabs(D1), a2 = fabs(D2);
-        double babs = 3.0 * a0 + 3.0 * a1 + 24.0 * a2 + 8.0 * ak;
-        int mono = ((D0 >= 0.0) & (D1 >= 0.0) & (D2 >= 0.0) & (ks <= 0.0)) |
-                   ((D0 <= 0.0) & (D1 <= 0.0) & (D2 <= 0.0) & (ks >= 0.0));
-        /* isolate adds no candidate (and depth stays 0) unless a Bernstein
-         * coefficient < 0 comes before one > 0 (a sign change from - to +,
-         * where g has a minimum): then only the ends count */
-        double bb0 = 3.0 * D0 - ks, bb1 = D0 + (2.0 / 3.0) * D1 - ks,
-               bb2 = (4.0 / 3.0) * D1 - 1.2 * ks, bb3 = 2.0 * D1 - 1.6 * ks,
-               bb4 = (8.0 / 3.0) * D1 - 2.4 * ks, bb5 = (8.0 / 3.0) * D1 + 4.0 * D2 - 4.0 * ks,
-               bb6 = 24.0 * D2 - 8.0 * ks;
-        int neg = bb0 < 0.0, rise = 0;
-        rise |= neg & (bb1 > 0.0), neg |= bb1 < 0.0;
-        rise |= neg & (bb2 > 0.0), neg |= bb2 < 0.0;
-        rise |= neg & (bb3 > 0.0), neg |= bb3 < 0.0;
-        rise |= neg & (bb4 > 0.0), neg |= bb4 < 0.0;
-        rise |= neg & (bb5 > 0.0), neg |= bb5 < 0.0;
-        rise |= neg & (bb6 > 0.0);
-        good &= mono | !rise;
-        double g0 = 1.0 * c0 + 0.0 * c1 + 0.0 * c2 + 0.0 * c3;
-        double g1 = 0.0 * c0 + 0.0 * c1 + 0.0 * c2 + 1.0 * c3;
-        g0 = ks != 0.0 ? g0 - ks * 0.0 : g0;
-        g1 = ks != 0.0 ? g1 - ks * TS_HALF_PI : g1;
-        double best = g1 < g0 ? g1 : g0;
-        double eta = (6.0 * 0 + 6.0) * TM_EPS * babs; /* depth 0 */
-        double gd = 2.0 * (16.0 * TM_EPS * (Ms + TS_HALF_PI * ak) + 2.0 * eta);
+        double b[7], best, babs;
+        int at1;
+        good &= ts__trig_min_ends(c0, c1, c2, c3, ks, b, &best, &at1, &babs);
+        double gd = ts__trig_min_guard(0, babs, Ms, fabs(ks));
         double g = best * q, guard = gd * q + gm * (bmax + am * xmax + ac);
         int pass = g > guard;
-        if (positive) {
-            double f0 = B0, f1 = B3;
-            int zero_end = !((f0 > 0.0) & (f1 > 0.0));
-            int structural = zero_end ? (B0 >= 0.0) & (B1 >= 0.0) & (B2 >= 0.0) & (B3 >= 0.0)
-                                      : (B0 > 0.0) & (B3 > 0.0) & (B1 >= 0.0) & (B2 >= 0.0);
-            pass = structural | ((!zero_end) & pass);
-        }
+        if (positive)
+            pass = positive_proof(B0, B1, B2, B3) | ((B0 > 0.0) & (B3 > 0.0) & pass);
         ok[i - i0] = (unsigned char)(good & pass & (M != 0.0));
     }
 }

@@ -21,6 +21,8 @@
 
 #include "trigspline.h"
 
+#include <float.h>
+#include <math.h>
 #include <stddef.h>
 
 /* Construction loops that vectorise.  With GCC on x86-64 Linux
@@ -114,6 +116,54 @@ double ts__trig_min(const double C[4], double kappa, double *theta_min);
  * rounding guard of the returned value (NaN for non-finite input). */
 double ts__trig_min_core(double C0, double C1, double C2, double C3, double kappa,
                          double *theta, double *tbest, double *errb);
+/* The rounding guard of ts__trig_min_core (scaled problem, subdivision depth
+ * reached, babs = 3|D0| + 3|D1| + 24|D2| + 8|κ|, Ms = max|c_l|, ak = |κ|). */
+static inline double ts__trig_min_guard(int depth, double babs, double Ms, double ak)
+{
+    double eta = (6.0 * depth + 6.0) * DBL_EPSILON * babs;
+    return 2.0 * (16.0 * DBL_EPSILON * (Ms + TS_HALF_PI * ak) + 2.0 * eta);
+}
+/* The first step of ts__trig_min_core on the scaled problem (c_l = C_l 2^-e,
+ * ks = κ 2^-e): the differences, the Bernstein coefficients b[7] of P, the
+ * end values.  Branch-free (certificate.c runs it over blocks of intervals).
+ * Returns 1 when the minimum is at an end — g monotone by (2.1), or no
+ * coefficient < 0 before one > 0, so no minimum inside — with *best the
+ * least end value, *at1 = 1 if it is at θ = π/2, and *babs for the guard;
+ * 0 when the roots must be isolated. */
+static inline int ts__trig_min_ends(double c0, double c1, double c2, double c3, double ks,
+                                    double b[7], double *best, int *at1, double *babs)
+{
+    double D0 = c1 - c0, D1 = c2 - c1, D2 = c3 - c2;
+    double ak = fabs(ks), a0 = fabs(D0), a1 = fabs(D1), a2 = fabs(D2);
+    *babs = 3.0 * a0 + 3.0 * a1 + 24.0 * a2 + 8.0 * ak;
+    /* (2.1): a monotone control polygon with κ of the other sign makes g
+     * monotone; then every Bernstein coefficient below has one sign (also as
+     * computed: sums of rounded terms of one sign), no root.  Most intervals
+     * of real data are so. */
+    int mono = ((D0 >= 0.0) & (D1 >= 0.0) & (D2 >= 0.0) & (ks <= 0.0)) |
+               ((D0 <= 0.0) & (D1 <= 0.0) & (D2 <= 0.0) & (ks >= 0.0));
+    b[0] = 3.0 * D0 - ks;
+    b[1] = D0 + (2.0 / 3.0) * D1 - ks;
+    b[2] = (4.0 / 3.0) * D1 - 1.2 * ks;
+    b[3] = 2.0 * D1 - 1.6 * ks;
+    b[4] = (8.0 / 3.0) * D1 - 2.4 * ks;
+    b[5] = (8.0 / 3.0) * D1 + 4.0 * D2 - 4.0 * ks;
+    b[6] = 24.0 * D2 - 8.0 * ks;
+    int neg = b[0] < 0.0, rise = 0;
+    for (int j = 1; j < 7; j++) {
+        rise |= neg & (b[j] > 0.0);
+        neg |= b[j] < 0.0;
+    }
+    /* the ends with ts__basis_t's exact values there: A = e_0 at t = 0,
+     * θ = 0, and A = e_3 at t = 1, θ = π/2 */
+    double g0 = 1.0 * c0 + 0.0 * c1 + 0.0 * c2 + 0.0 * c3;
+    double g1 = 0.0 * c0 + 0.0 * c1 + 0.0 * c2 + 1.0 * c3;
+    g0 = ks != 0.0 ? g0 - ks * 0.0 : g0;
+    g1 = ks != 0.0 ? g1 - ks * TS_HALF_PI : g1;
+    *at1 = g1 < g0;
+    *best = g1 < g0 ? g1 : g0;
+    return mono | !rise;
+}
 /* Basis at t = tan(θ/2), without cancellation; θ = 2 atan t (exact ends). */
 void ts__basis_t(double t, double A[4]);
 double ts__theta_of(double t);

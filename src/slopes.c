@@ -39,13 +39,17 @@ static double end3(double h0, double h1, double D0, double D1)
     return D0 + (D0 - D1) * share(h0, h1); /* the same without overflow */
 }
 
-/* Weighted means of D0 = Δ_{i-1}, D1 = Δ_i with weights w0 + w1 = 1. */
-static double mean_arith(double D0, double D1, double w0, double w1)
+/* SPEC §6 arithmetic mean of Dl = Δ_{i-1}, Dr = Δ_i with the three-point
+ * weights hr/(hl + hr), hl/(hl + hr); both widths halved (exactly) when their
+ * sum overflows, as share() does.  Branch-free, so that loops vectorise. */
+static inline double mean_arith3(double hl, double hr, double Dl, double Dr)
 {
-    if (D0 == D1)
-        return D0;
-    return w0 * D0 + w1 * D1;
+    double sc = hr + hl <= DBL_MAX ? 1.0 : 0.5;
+    double a = sc * hr, b = sc * hl, s = a + b;
+    return Dl == Dr ? Dl : (a / s) * Dl + (b / s) * Dr;
 }
+
+/* Weighted means of D0 = Δ_{i-1}, D1 = Δ_i with weights w0 + w1 = 1. */
 
 static double mean_geom(double D0, double D1, double w0, double w1)
 {
@@ -114,21 +118,15 @@ static void interior(const double *x, const double *f, size_t n, double *d,
     }
 }
 
-/* The same for the arithmetic mean with three-point weights (the default):
- * secant, share and mean_arith written out expression by expression (the
- * same values), branch-free so that it vectorises (issue 6). */
+/* The same for the arithmetic mean with three-point weights (the default),
+ * in a loop that vectorises. */
 TS_VECTOR_LOOP static void interior_arith(const double *restrict x, const double *restrict f,
                                           size_t n, double *restrict d, size_t p0, size_t p1)
 {
     size_t lo = p0 > 1 ? p0 : 1, hi = p1 < n ? p1 : n;
     for (size_t i = lo; i < hi; i++) {
         double hl = x[i] - x[i - 1], hr = x[i + 1] - x[i];
-        double Dl = (f[i] - f[i - 1]) / hl, Dr = (f[i + 1] - f[i]) / hr;
-        /* share(): halve both widths when their sum overflows (exact) */
-        double sc = hr + hl <= DBL_MAX ? 1.0 : 0.5;
-        double a = sc * hr, b = sc * hl, s = a + b;
-        double w0 = a / s, w1 = b / s;
-        d[i] = Dl == Dr ? Dl : w0 * Dl + w1 * Dr;
+        d[i] = mean_arith3(hl, hr, (f[i] - f[i - 1]) / hl, (f[i + 1] - f[i]) / hr);
     }
 }
 
@@ -219,9 +217,7 @@ static void periodic(const double *x, const double *f, size_t n, double *d, size
     interior_arith(x, f, n, d, p0, p1);
     if (p0 > 0 && p1 <= n)
         return;
-    double hl = x[n] - x[n - 1], hr = x[1] - x[0];
-    double w0 = share(hr, hl), w1 = share(hl, hr);
-    double e = mean_arith(secant(x, f, n - 1), secant(x, f, 0), w0, w1);
+    double e = mean_arith3(x[n] - x[n - 1], x[1] - x[0], secant(x, f, n - 1), secant(x, f, 0));
     if (p0 == 0)
         d[0] = e;
     if (p1 > n)

@@ -292,40 +292,18 @@ double ts__trig_min_core(double C0, double C1, double C2, double C3, double kapp
     z.k = ks;
     z.nc = 0;
     z.depth = 0;
-    double D0 = z.D0, D1 = z.D1, D2 = z.D2;
-    double ak = fabs(ks), a0 = fabs(D0), a1 = fabs(D1), a2 = fabs(D2);
-    double babs = 3.0 * a0 + 3.0 * a1 + 24.0 * a2 + 8.0 * ak;
-    add_cand(&z, 0.0);
-    add_cand(&z, 1.0);
-    /* (2.1): a monotone control polygon with κ of the other sign makes g
-     * monotone; then every Bernstein coefficient below has one sign (also
-     * as computed: sums of rounded terms of one sign), no root, and the
-     * minimum is at an end.  Most intervals of real data are so. */
-    int mono = ((D0 >= 0.0) & (D1 >= 0.0) & (D2 >= 0.0) & (ks <= 0.0)) |
-               ((D0 <= 0.0) & (D1 <= 0.0) & (D2 <= 0.0) & (ks >= 0.0));
-    if (!mono) {
-        double b[7] = {3.0 * D0 - ks,
-                       D0 + (2.0 / 3.0) * D1 - ks,
-                       (4.0 / 3.0) * D1 - 1.2 * ks,
-                       2.0 * D1 - 1.6 * ks,
-                       (8.0 / 3.0) * D1 - 2.4 * ks,
-                       (8.0 / 3.0) * D1 + 4.0 * D2 - 4.0 * ks,
-                       24.0 * D2 - 8.0 * ks};
+    double b[7], best, babs;
+    int at1;
+    if (!ts__trig_min_ends(c0, c1, c2, c3, ks, b, &best, &at1, &babs)) {
+        add_cand(&z, 0.0);
+        add_cand(&z, 1.0);
         isolate(&z, b, 0.0, 1.0, 0);
     }
-
-    /* the ends (candidates 0, 1) with basis_t's exact values there, A = e_0
-     * at t = 0, θ = 0, and A = e_3 at t = 1, θ = π/2; then the roots */
-    double g0 = 1.0 * c0 + 0.0 * c1 + 0.0 * c2 + 0.0 * c3;
-    double g1 = 0.0 * c0 + 0.0 * c1 + 0.0 * c2 + 1.0 * c3;
-    if (ks != 0.0) {
-        g0 -= ks * 0.0;
-        g1 -= ks * TS_HALF_PI;
-    }
-    double best = g1 < g0 ? g1 : g0, bt = g1 < g0 ? 1.0 : 0.0;
+    double bt = at1 ? 1.0 : 0.0;
+    /* the roots (candidates after the two ends) */
     for (int j = 2; j < z.nc; j++) {
         double t = z.t[j], A[4];
-        if (t == 0.0 || t == 1.0) { /* as above */
+        if (t == 0.0 || t == 1.0) { /* as at the ends */
             A[0] = t == 0.0 ? 1.0 : 0.0;
             A[1] = A[2] = 0.0;
             A[3] = 1.0 - A[0];
@@ -340,8 +318,7 @@ double ts__trig_min_core(double C0, double C1, double C2, double C3, double kapp
             bt = t;
         }
     }
-    double eta = (6.0 * z.depth + 6.0) * DBL_EPSILON * babs;
-    double gd = 2.0 * (16.0 * DBL_EPSILON * (Ms + TS_HALF_PI * ak) + 2.0 * eta);
+    double gd = ts__trig_min_guard(z.depth, babs, Ms, fabs(ks));
     *tbest = bt;
     if (theta)
         *theta = ts__theta_of(bt);
