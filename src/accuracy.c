@@ -110,7 +110,7 @@ static double bound_max(const bound_fn *b, const grid_tab *t)
 ts_status ts_error_constants_get(ts_form form, double a, ts_error_constants *c)
 {
     if (c)
-        c->first = c->line = c->second = NAN;
+        c->first = c->line = c->second = (double)NAN;
     if (!c)
         return TS_ERR_NULL;
     if ((unsigned)form > (unsigned)TS_FORM_GEOMETRIC || !(a > 0.0 && isfinite(a)))
@@ -134,7 +134,7 @@ ts_status ts_error_bound(const ts_spline *s, double fprime_max, double fsecond_m
                          int exact_slopes, double *bound, double *per_interval)
 {
     if (bound)
-        *bound = NAN;
+        *bound = (double)NAN;
     if (s && per_interval)
         for (size_t i = 0; i < s->n; i++)
             per_interval[i] = (double)NAN;
@@ -150,7 +150,7 @@ ts_status ts_error_bound(const ts_spline *s, double fprime_max, double fsecond_m
     const double K0 = 2.0 / (3.0 * TS_PI);
     size_t n = s->n;
     int geo = s->form == TS_FORM_GEOMETRIC;
-    double worst = 0.0, prev_key[3] = {NAN, NAN, NAN}, prev2 = 0.0;
+    double worst = 0.0, prev_key[3] = {(double)NAN, (double)NAN, (double)NAN}, prev2 = 0.0;
     for (size_t i = 0; i < n; i++) {
         double h = s->h[i], a = s->alpha[i] + s->beta[i], aL = a, aR = a;
         if (s->form == TS_FORM_C1) {

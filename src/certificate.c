@@ -118,7 +118,7 @@ double ts__gap_ctl(const ts_spline *sp, size_t i, const double B[4], const doubl
     double g = ts__trig_min_core(C[0], C[1], C[2], C[3], 0.0, NULL, &t, &eb);
     if (at) {
         if (isnan(g)) {
-            *at = NAN;
+            *at = (double)NAN;
         } else {
             double A[4];
             ts__basis_t(t, A);
@@ -168,7 +168,7 @@ double ts__interval_gap(const ts_spline *sp, size_t i, const ts_line *line, int 
 int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double *X,
                   int exact, ts__cert *cr, int want_at)
 {
-    cr->glo = cr->alo = cr->gup = cr->aup = NAN;
+    cr->glo = cr->alo = cr->gup = cr->aup = (double)NAN;
     double f0 = sp->f[i], f1 = sp->f[i + 1], guard;
     /* an overflowed control value (tiny a_i) proves nothing: S would be NaN */
     for (int l = 0; l < 4; l++)

@@ -149,7 +149,7 @@ static int seg_gaps(const ts_curve *c, const struct curve_box *bx, size_t i, siz
     double B[4], h = c->t[i + 1] - c->t[i], guard;
     int ok = 1, proven;
     ctrl_coord(c, i, k, B);
-    *glo = *tlo = *ghi = *thi = NAN;
+    *glo = *tlo = *ghi = *thi = (double)NAN;
     if (bx->has_lo[k]) {
         ts_line ln = {0.0, bx->lo[k]};
         *glo = ts__gap_segment(B, c->t[i], h, &ln, 1, tlo, NULL, &guard, &proven);
@@ -443,7 +443,7 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
         for (size_t k = 0; k < dim; k++) {
             double f0 = c->p[i * dim + k], f1 = c->p[(i + 1) * dim + k];
             double d0 = c->d[i * dim + k], d1 = c->d[(i + 1) * dim + k];
-            double cand[4] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY};
+            double cand[4] = {-(double)INFINITY, -(double)INFINITY, -(double)INFINITY, -(double)INFINITY};
             if (c->box.has_lo[k]) { /* SPEC §5 lower-boundary rule, l = lo[k] */
                 cand[0] = -a - K * d0 / (f0 - c->box.lo[k]);
                 cand[1] = -a + K * d1 / (f1 - c->box.lo[k]);
@@ -530,7 +530,7 @@ ts_status ts_curve_control(const ts_curve *c, size_t i, double *ctrl)
         return TS_ERR_NULL;
     if (i >= c->n) {
         for (size_t j = 0; j < 4 * c->dim; j++)
-            ctrl[j] = NAN;
+            ctrl[j] = (double)NAN;
         return TS_ERR_INDEX;
     }
     memcpy(ctrl, c->ctrl + i * 4 * c->dim, 4 * c->dim * sizeof(double));
@@ -540,9 +540,9 @@ ts_status ts_curve_control(const ts_curve *c, size_t i, double *ctrl)
 ts_status ts_curve_params(const ts_curve *c, size_t i, double *alpha, double *beta)
 {
     if (alpha)
-        *alpha = NAN;
+        *alpha = (double)NAN;
     if (beta)
-        *beta = NAN;
+        *beta = (double)NAN;
     if (!c || !alpha || !beta)
         return TS_ERR_NULL;
     if (i >= c->n)
@@ -582,11 +582,11 @@ ts_status ts_curve_eval(const ts_curve *c, double t, ts_cursor *cur, double *p, 
         return TS_ERR_NULL;
     for (size_t k = 0; k < c->dim; k++) {
         if (p)
-            p[k] = NAN;
+            p[k] = (double)NAN;
         if (dp)
-            dp[k] = NAN;
+            dp[k] = (double)NAN;
         if (d2p)
-            d2p[k] = NAN;
+            d2p[k] = (double)NAN;
     }
     double t0 = c->t[0], tn = c->t[c->n];
     if (!isfin(t))
@@ -683,7 +683,7 @@ static double gl_seg(const ts_curve *c, size_t i, double a, double b, int e)
 ts_status ts_curve_length(const ts_curve *c, double tol, double *len)
 {
     if (len)
-        *len = NAN;
+        *len = (double)NAN;
     if (!c || !len)
         return TS_ERR_NULL;
     if (!(tol > 0.0))
@@ -732,11 +732,11 @@ static void reports_clear(const ts_curve *c, ts_interval_report *reports)
 {
     for (size_t j = 0; c && reports && j < c->n * c->dim; j++) {
         ts_interval_report *r = &reports[j];
-        r->x0 = r->x1 = r->alpha = r->beta = r->a = NAN;
-        r->B[0] = r->B[1] = r->B[2] = r->B[3] = NAN;
+        r->x0 = r->x1 = r->alpha = r->beta = r->a = (double)NAN;
+        r->B[0] = r->B[1] = r->B[2] = r->B[3] = (double)NAN;
         r->term = TS_TERM_USER;
         r->has_lower = r->has_upper = 0;
-        r->gap_lower = r->at_lower = r->gap_upper = r->at_upper = NAN;
+        r->gap_lower = r->at_lower = r->gap_upper = r->at_upper = (double)NAN;
         r->certified = 0;
     }
 }

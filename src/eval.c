@@ -44,13 +44,13 @@ static ts_status eval_one(const ts_spline *sp, double x, ts_cursor *cur, int wan
 static ts_status eval_deriv(const ts_spline *s, double x, ts_cursor *cur, double *y,
                             double *dy, double *d2y)
 {
-    double o[3] = {NAN, NAN, NAN};
+    double o[3] = {(double)NAN, (double)NAN, (double)NAN};
     ts_status st = TS_ERR_NULL;
     if (s) {
         int want = d2y ? 2 : dy ? 1 : 0;
         st = eval_one(s, x, cur, want, o);
         if (st != TS_OK)
-            o[0] = o[1] = o[2] = NAN;
+            o[0] = o[1] = o[2] = (double)NAN;
     }
     if (y)
         *y = o[0];
@@ -192,7 +192,7 @@ ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size
 ts_status ts_integral(const ts_spline *s, double a, double b, double *out)
 {
     if (out)
-        *out = NAN;
+        *out = (double)NAN;
     if (!s || !out)
         return TS_ERR_NULL;
     double x0 = s->x[0], xn = s->x[s->n];

@@ -217,7 +217,7 @@ ts_status ts__geo_check(ts_spline *sp, size_t i0, size_t i1, ts_error *err)
         } else if (!(a >= TS_GEOMETRIC_A_RAISE)) {
             double b = TS_GEOMETRIC_A_RAISE - al;
             while (al + b < TS_GEOMETRIC_A_RAISE)
-                b = nextafter(b, INFINITY);
+                b = nextafter(b, (double)INFINITY);
             sp->beta[i] = b;
             sp->term[i] = (unsigned char)TS_TERM_GEOMETRIC;
         }

@@ -41,7 +41,7 @@ ts_status ts__repair_search(const ts__repair_ops *o, size_t i, double al, double
             lo = hi;
             hi *= 2.0;
         }
-        amax = INFINITY;
+        amax = (double)INFINITY;
     } else {
         if (!o->margin)
             return infeasible(o, i, a0);
@@ -153,7 +153,7 @@ static int spline_limit_inside(void *ctx, size_t i)
 static double spline_margin(void *ctx, size_t i)
 {
     const ts_spline *sp = ((spline_ctx *)ctx)->sp;
-    double B[4], X[4], r = INFINITY, guard, at;
+    double B[4], X[4], r = (double)INFINITY, guard, at;
     int geo;
     ts__controls_of(sp, i, B, X, &geo);
     if (sp->has_lower) {

@@ -17,17 +17,17 @@ static void report_base(const ts_spline *s, size_t i, ts_interval_report *rep)
     ts__controls_of(s, i, rep->B, X, &geo);
     rep->term = (ts_term)s->term[i];
     rep->has_lower = rep->has_upper = 0;
-    rep->gap_lower = rep->at_lower = rep->gap_upper = rep->at_upper = NAN;
+    rep->gap_lower = rep->at_lower = rep->gap_upper = rep->at_upper = (double)NAN;
     rep->certified = 0;
 }
 
 static void report_clear(ts_interval_report *rep)
 {
-    rep->x0 = rep->x1 = rep->alpha = rep->beta = rep->a = NAN;
-    rep->B[0] = rep->B[1] = rep->B[2] = rep->B[3] = NAN;
+    rep->x0 = rep->x1 = rep->alpha = rep->beta = rep->a = (double)NAN;
+    rep->B[0] = rep->B[1] = rep->B[2] = rep->B[3] = (double)NAN;
     rep->term = TS_TERM_USER;
     rep->has_lower = rep->has_upper = 0;
-    rep->gap_lower = rep->at_lower = rep->gap_upper = rep->at_upper = NAN;
+    rep->gap_lower = rep->at_lower = rep->gap_upper = rep->at_upper = (double)NAN;
     rep->certified = 0;
 }
 

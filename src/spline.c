@@ -377,7 +377,7 @@ ts_extrap ts_spline_extrapolation(const ts_spline *s) { return s ? s->extrap : T
 ts_status ts_spline_a(const ts_spline *s, size_t i, double *a)
 {
     if (a)
-        *a = NAN;
+        *a = (double)NAN;
     if (!s || !a)
         return TS_ERR_NULL;
     if (i >= s->n)
@@ -389,9 +389,9 @@ ts_status ts_spline_a(const ts_spline *s, size_t i, double *a)
 ts_status ts_spline_control(const ts_spline *s, size_t i, double B[4], double X[4])
 {
     if (B)
-        B[0] = B[1] = B[2] = B[3] = NAN;
+        B[0] = B[1] = B[2] = B[3] = (double)NAN;
     if (X)
-        X[0] = X[1] = X[2] = X[3] = NAN;
+        X[0] = X[1] = X[2] = X[3] = (double)NAN;
     if (!s || !B)
         return TS_ERR_NULL;
     if (i >= s->n)

@@ -262,9 +262,9 @@ double ts__trig_min_core(double C0, double C1, double C2, double C3, double kapp
     double m0 = fabs(C0), m1 = fabs(C1), m2 = fabs(C2), m3 = fabs(C3), M = fabs(kappa);
     if (!((m0 <= DBL_MAX) & (m1 <= DBL_MAX) & (m2 <= DBL_MAX) & (m3 <= DBL_MAX) & (M <= DBL_MAX))) {
         if (theta)
-            *theta = NAN;
-        *tbest = *errb = NAN;
-        return NAN;
+            *theta = (double)NAN;
+        *tbest = *errb = (double)NAN;
+        return (double)NAN;
     }
     M = m0 > M ? m0 : M;
     M = m1 > M ? m1 : M;
