@@ -1,4 +1,4 @@
-/* SPEC §8: error constants and a-posteriori error bounds.  Derivations:
+/* docs/method.md §8: error constants and a-posteriori error bounds.  Derivations:
  * docs/accuracy.md §3. */
 #include "internal.h"
 
@@ -154,7 +154,7 @@ ts_status ts_error_bound(const ts_spline *s, double fprime_max, double fsecond_m
     for (size_t i = 0; i < n; i++) {
         double h = s->h[i], a = s->alpha[i] + s->beta[i], aL = a, aR = a;
         if (s->form == TS_FORM_C1) {
-            /* SPEC §3 C¹ option: d̂ = d / max(a_{j−1}, a_j) */
+            /* docs/method.md §3 C¹ option: d̂ = d / max(a_{j−1}, a_j) */
             if (i > 0) {
                 double ap = s->alpha[i - 1] + s->beta[i - 1];
                 aL = ap > a ? ap : a;

@@ -1,9 +1,9 @@
-/* SPEC §2: the cubic trigonometric basis, its derivatives and integrals. */
+/* docs/method.md §2: the cubic trigonometric basis, its derivatives and integrals. */
 #include "internal.h"
 
 #include <math.h>
 
-/* 1 - s without cancellation near s = 1 (SPEC §2: 1 - s = c²/(1 + s)). */
+/* 1 - s without cancellation near s = 1 (docs/method.md §2: 1 - s = c²/(1 + s)). */
 static inline double one_minus(double s, double c)
 {
     return s > 0.5 ? c * c / (1.0 + s) : 1.0 - s;
@@ -62,7 +62,7 @@ void ts__seg_sc(const double B[4], double s, double c, int want, double out[3])
     ts__basis(s, c, A);
     out[0] = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
     if (want > 0) {
-        /* SPEC (2.1) */
+        /* docs/method.md (2.1) */
         double ms = one_minus(s, c), mc = one_minus(c, s);
         out[1] = 3.0 * ms * ms * c * (B[1] - B[0]) + 2.0 * s * c * (B[2] - B[1]) +
                  3.0 * mc * mc * s * (B[3] - B[2]);

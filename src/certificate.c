@@ -1,4 +1,4 @@
-/* SPEC §4, §5: per-interval certificates of a shape spline: exact gaps to a
+/* docs/method.md §4, §5: per-interval certificates of a shape spline: exact gaps to a
  * line, the convex-hull and control-value proofs, their rounding guards.
  * Read-only: nothing here changes a spline.  The interval certificate adds
  * to the trigonometric minimum's guard (trigmin.c) the rounding of
@@ -12,7 +12,7 @@
 
 #define TM_EPS DBL_EPSILON
 
-/* SPEC §5.1 control-value proof (S = Σ A_l B_l, A_l >= 0, Σ A_l = 1, SPEC §2):
+/* docs/method.md §5.1 control-value proof (S = Σ A_l B_l, A_l >= 0, Σ A_l = 1, docs/method.md §2):
  * f_i, f_{i+1} > 0 with B0, B3 > 0 and B1, B2 >= 0 give S > 0; with a zero
  * end (promise S >= 0) all B_l >= 0.  Branch-free (used in vector loops). */
 static inline int positive_proof(double B0, double B1, double B2, double B3)
@@ -22,7 +22,7 @@ static inline int positive_proof(double B0, double B1, double B2, double B3)
                     : (B0 > 0.0) & (B3 > 0.0) & (B1 >= 0.0) & (B2 >= 0.0);
 }
 
-/* SPEC §5.5: B monotone in the data's direction gives S' of that sign by
+/* docs/method.md §5.5: B monotone in the data's direction gives S' of that sign by
  * (2.1); equal ends need equal control values. */
 static inline int monotone_proof(double B0, double B1, double B2, double B3)
 {
@@ -35,7 +35,7 @@ static inline int monotone_proof(double B0, double B1, double B2, double B3)
 /* Interval gaps                                                        */
 /* ------------------------------------------------------------------ */
 
-/* SPEC §4: one control gap sg·(Y − m X − c) of the geometric form, to the
+/* docs/method.md §4: one control gap sg·(Y − m X − c) of the geometric form, to the
  * rounding of the gap itself (not of the line's size: a knot may lie 1e-14
  * of |c| above the line).  m X = p + e exactly (fma), Y − p = s1 + e1 and
  * s1 − c = s2 + e2 exactly (TwoSum), so the gap is s2 + e1 + e2 − e; the two
@@ -53,7 +53,7 @@ static double ctl_gap(double Y, double X, double m, double c, double sg, double 
     return sg * v;
 }
 
-/* SPEC §4, convex hull (S = Σ A_l Y_l, X = Σ A_l X_l, A_l >= 0, Σ A_l = 1):
+/* docs/method.md §4, convex hull (S = Σ A_l Y_l, X = Σ A_l X_l, A_l >= 0, Σ A_l = 1):
  * every control gap above its rounding proves the whole segment inside. */
 int ts__hull_inside(const double B[4], const double X[4], const ts_line *ln, int sign)
 {
@@ -72,7 +72,7 @@ double ts__gap_segment(const double B[4], double xi, double h, const ts_line *ln
     double bmax = 0.0, xmax = fabs(xi) + h;
     for (int l = 0; l < 4; l++)
         bmax = fabs(B[l]) > bmax ? fabs(B[l]) : bmax;
-    /* SPEC §5: S − L = Σ A_l (B_l − L(x_i)) − (2mh/π) θ since Σ A_l = 1
+    /* docs/method.md §5: S − L = Σ A_l (B_l − L(x_i)) − (2mh/π) θ since Σ A_l = 1
      * (m = 0: κ = ±0, the same as 0 below) */
     double L0 = m * xi + c;
     int pos = 1;
@@ -108,7 +108,7 @@ double ts__gap_ctl(const ts_spline *sp, size_t i, const double B[4], const doubl
             *at = isnan(g) ? (double)NAN : t >= 1.0 ? sp->x[i + 1] : xi + h * (theta / TS_HALF_PI);
         return g;
     }
-    /* SPEC §4: Y − L(X) = Σ A_l (Y_l − m X_l − c), exact */
+    /* docs/method.md §4: Y − L(X) = Σ A_l (Y_l − m X_l − c), exact */
     double C[4], t, eb, cerr = -1.0, sg = sign > 0 ? 1.0 : -1.0;
     for (int l = 0; l < 4; l++) {
         double el;
@@ -130,7 +130,7 @@ double ts__gap_ctl(const ts_spline *sp, size_t i, const double B[4], const doubl
     return g;
 }
 
-/* B of interval i; X (SPEC §4) only in the geometric form, the one that uses it. */
+/* B of interval i; X (docs/method.md §4) only in the geometric form, the one that uses it. */
 void ts__controls_of(const ts_spline *sp, size_t i, double B[4], double X[4], int *geo)
 {
     ts__B(sp, i, B);
@@ -158,7 +158,7 @@ double ts__interval_gap(const ts_spline *sp, size_t i, const ts_line *line, int 
  * of sp's scheme?  exact: compute the trig-min certificates (into *cr, with
  * the places of the minima if want_at: the report's, not the build's);
  * otherwise only the control-value test, which is a proof by itself
- * (S = Σ A_l B_l, A_l >= 0, Σ A_l = 1, SPEC §2):
+ * (S = Σ A_l B_l, A_l >= 0, Σ A_l = 1, docs/method.md §2):
  *  positive, f_i, f_{i+1} > 0: B0, B3 > 0 and B1, B2 >= 0 give S > 0;
  *  positive with a zero end (promise S >= 0): all B_l >= 0;
  *  monotone: B monotone in the data's direction gives S' of that sign by
@@ -277,7 +277,7 @@ size_t ts__skip_proven(const ts_spline *sp, size_t i, size_t i1)
     return i;
 }
 
-/* A block of exact certificates at once (issue 6): for each interval i in
+/* A block of exact certificates at once: for each interval i in
  * [i0, i1), ok[i] = 1 when check_ctl (exact, paper form, one boundary m x + c
  * with sign sg; positive: the scheme's structural test too) would pass it
  * through the path of tmin_core where the minimum is at an end (g monotone

@@ -2,8 +2,8 @@
  * (docs/method.md §3, §4). */
 #include "internal.h"
 
-/* SPEC §3 (paper, C¹) and §4 (geometric) control values, one loop per form
- * with the arrays as restrict parameters, so that they vectorise (issue 6). */
+/* docs/method.md §3 (paper, C¹) and §4 (geometric) control values, one loop per form
+ * with the arrays as restrict parameters, so that they vectorise. */
 #define TS_K0 (2.0 / (3.0 * TS_PI))
 
 TS_VECTOR_LOOP static void controls_paper(const double *restrict f, const double *restrict d,
@@ -30,13 +30,13 @@ TS_VECTOR_LOOP static void controls_geo(const double *restrict x, const double *
         double k = TS_K0 * h[i] / (al[i] + be[i]);
         b1[i] = f[i] + k * d[i];
         b2[i] = f[i + 1] - k * d[i + 1];
-        /* SPEC §4: X = [x_i, x_i + k, x_{i+1} - k, x_{i+1}] */
+        /* docs/method.md §4: X = [x_i, x_i + k, x_{i+1} - k, x_{i+1}] */
         xc1[i] = x[i] + k;
         xc2[i] = x[i + 1] - k;
     }
 }
 
-/* SPEC §3 C¹ option: d̂_j = d_j / max(a_{j-1}, a_j), one-sided at the ends;
+/* docs/method.md §3 C¹ option: d̂_j = d_j / max(a_{j-1}, a_j), one-sided at the ends;
  * intervals [i0, i1) with both neighbours (0 < i0, i1 < n). */
 TS_VECTOR_LOOP static void controls_c1(const double *restrict f, const double *restrict d,
                                        const double *restrict h, const double *restrict al,

@@ -1,4 +1,4 @@
-/* SPEC §7: parametric curves (open/closed, 2-D/3-D), box constraints of SPEC §5
+/* docs/method.md §7: parametric curves (open/closed, 2-D/3-D), box constraints of docs/method.md §5
  * applied per coordinate with a shared beta per segment. */
 #include "internal.h"
 
@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* Per-coordinate bounds (SPEC §5 with constant lines). */
+/* Per-coordinate bounds (docs/method.md §5 with constant lines). */
 struct curve_box {
     int has_lo[3], has_hi[3];
     double lo[3], hi[3];
@@ -30,7 +30,7 @@ struct ts_curve {
 };
 
 /* Padding of the periodic extension used for closed-curve slopes: covers the
- * widest stencil of SPEC §6 (Akima: two secants on each side). */
+ * widest stencil of docs/method.md §6 (Akima: two secants on each side). */
 #define CURVE_PAD 3
 
 static void curve_options_defaults(ts_curve_options *opt)
@@ -122,7 +122,7 @@ static void ctrl_coord(const ts_curve *c, size_t i, size_t k, double B[4])
         B[l] = q[(size_t)l * c->dim + k];
 }
 
-/* SPEC §3 control points of segment i from p, d, t, alpha, beta. */
+/* docs/method.md §3 control points of segment i from p, d, t, alpha, beta. */
 static void seg_controls(ts_curve *c, size_t i)
 {
     size_t dim = c->dim;
@@ -141,7 +141,7 @@ static void seg_controls(ts_curve *c, size_t i)
 
 /* Exact gaps of coordinate k of segment i to the sides of box bx: the
  * certificate of a spline interval against the constant lines y = lo[k],
- * y = hi[k] (ts__gap_segment, SPEC §5), which also accepts every control
+ * y = hi[k] (ts__gap_segment, docs/method.md §5), which also accepts every control
  * gap > 0 as a proof.  Returns 1 when every active side is certified. */
 static int seg_gaps(const ts_curve *c, const struct curve_box *bx, size_t i, size_t k,
                     double *glo, double *tlo, double *ghi, double *thi)
@@ -172,7 +172,7 @@ static int seg_certified(const ts_curve *c, size_t i)
     return 1;
 }
 
-/* The repair search of splines (ts__repair_search, SPEC §5) on segment i. */
+/* The repair search of splines (ts__repair_search, docs/method.md §5) on segment i. */
 static void curve_set_a(void *ctx, size_t i, double a)
 {
     ts_curve *c = ctx;
@@ -211,7 +211,7 @@ static size_t ext_point(size_t j, size_t n)
     return (j + n * CURVE_PAD - CURVE_PAD) % n; /* n >= 3 for a closed curve */
 }
 
-/* SPEC §6 slopes of one coordinate.  Closed curves: the method applied to the
+/* docs/method.md §6 slopes of one coordinate.  Closed curves: the method applied to the
  * periodic extension (CURVE_PAD points each side), d_n = d_0 exactly. */
 static ts_status coord_slopes(const ts_curve *c, ts_slopes method, size_t k, double *ft,
                               double *te, double *fe, double *de, ts_error *err)
@@ -344,7 +344,7 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
         if (same)
             return fail(err, TS_ERR_UNSORTED, m - 1, TS_WHERE_POINT);
     }
-    /* SPEC §5: every point strictly inside the box */
+    /* docs/method.md §5: every point strictly inside the box */
     for (size_t i = 0; i < m; i++)
         for (size_t k = 0; k < dim; k++) {
             double v = points[i * dim + k];
@@ -395,7 +395,7 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
     if (closed)
         memcpy(c->p + n * dim, points, dim * sizeof(double));
 
-    /* SPEC §7: parameter knots */
+    /* docs/method.md §7: parameter knots */
     c->t[0] = 0.0;
     for (size_t i = 0; i < n; i++) {
         double dv[3], h;
@@ -415,7 +415,7 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
         }
     }
 
-    /* SPEC §6: slopes per coordinate */
+    /* docs/method.md §6: slopes per coordinate */
     for (size_t k = 0; k < dim; k++) {
         st = coord_slopes(c, opt->slopes, k, ft, te, fe, de, err);
         if (st != TS_OK)
@@ -428,7 +428,7 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
                 goto out;
             }
 
-    /* alpha, beta: user values; with a box SPEC §5 per coordinate, shared max */
+    /* alpha, beta: user values; with a box docs/method.md §5 per coordinate, shared max */
     for (size_t i = 0; i < n; i++) {
         double a = opt->alphas ? opt->alphas[i] : opt->alpha;
         double b = opt->betas ? opt->betas[i] : opt->beta;
@@ -444,11 +444,11 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
             double f0 = c->p[i * dim + k], f1 = c->p[(i + 1) * dim + k];
             double d0 = c->d[i * dim + k], d1 = c->d[(i + 1) * dim + k];
             double cand[4] = {-(double)INFINITY, -(double)INFINITY, -(double)INFINITY, -(double)INFINITY};
-            if (c->box.has_lo[k]) { /* SPEC §5 lower-boundary rule, l = lo[k] */
+            if (c->box.has_lo[k]) { /* docs/method.md §5 lower-boundary rule, l = lo[k] */
                 cand[0] = -a - K * d0 / (f0 - c->box.lo[k]);
                 cand[1] = -a + K * d1 / (f1 - c->box.lo[k]);
             }
-            if (c->box.has_hi[k]) { /* SPEC §5 upper-boundary rule, u = hi[k] */
+            if (c->box.has_hi[k]) { /* docs/method.md §5 upper-boundary rule, u = hi[k] */
                 cand[2] = -a + K * d0 / (c->box.hi[k] - f0);
                 cand[3] = -a - K * d1 / (c->box.hi[k] - f1);
             }
@@ -469,7 +469,7 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
         }
     }
 
-    /* SPEC §3 control points */
+    /* docs/method.md §3 control points */
     for (size_t i = 0; i < n; i++) {
         seg_controls(c, i);
         for (size_t j = 0; j < 4 * dim; j++)
@@ -479,7 +479,7 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
             }
     }
 
-    /* SPEC §5: exact certificate per segment and coordinate, repair by bisection */
+    /* docs/method.md §5: exact certificate per segment and coordinate, repair by bisection */
     if (has_box)
         for (size_t i = 0; i < n; i++) {
             if (seg_certified(c, i))
@@ -565,7 +565,7 @@ static void seg_eval(const ts_curve *c, size_t i, double delta, double *p, doubl
     int wf = isfin(w);
     for (size_t k = 0; k < c->dim; k++) {
         ctrl_coord(c, i, k, B);
-        ts__seg_sc(B, s, co, want, o); /* SPEC §2, (2.1) */
+        ts__seg_sc(B, s, co, want, o); /* docs/method.md §2, (2.1) */
         if (p)
             p[k] = o[0];
         if (dp)

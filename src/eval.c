@@ -1,5 +1,5 @@
 /* Evaluation entry points: single, batch and threaded batch, integrals;
- * each form is routed to its interval evaluator or batch kernel (SPEC §2–§4). */
+ * each form is routed to its interval evaluator or batch kernel (docs/method.md §2–§4). */
 #define _POSIX_C_SOURCE 200809L
 #include "internal.h"
 

@@ -1,4 +1,4 @@
-/* SPEC §4: the geometric form (X(θ), Y(θ)) with the same k_i in both
+/* docs/method.md §4: the geometric form (X(θ), Y(θ)) with the same k_i in both
  * coordinates.  Derivations: docs/accuracy.md §1. */
 #include "internal.h"
 
@@ -204,7 +204,7 @@ double ts__geo_integral(const ts_spline *sp, size_t i, double x)
     return right ? geo_whole(sp, i) - part : part;
 }
 
-/* SPEC §4 bound; the policy is documented at TS_FORM_GEOMETRIC. */
+/* docs/method.md §4 bound; the policy is documented at TS_FORM_GEOMETRIC. */
 ts_status ts__geo_check(ts_spline *sp, size_t i0, size_t i1, ts_error *err)
 {
     for (size_t i = i0; i < i1; i++) {

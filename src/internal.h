@@ -62,7 +62,7 @@ struct ts_spline {
     double *h;           /* n: x[i+1] - x[i] */
     double *alpha, *beta;/* n */
     double *b1, *b2;     /* n: control values B1, B2 (B0 = f[i], B3 = f[i+1]) */
-    double *xc1, *xc2;   /* n: geometric form abscissae X1, X2 (SPEC §4); NULL in the
+    double *xc1, *xc2;   /* n: geometric form abscissae X1, X2 (docs/method.md §4); NULL in the
                           * other forms (X1 = x_i + K_i, X2 = x_{i+1} - K_i there) */
     unsigned char *term; /* n: ts_term */
     double *cum;         /* n+1: cum[i] = ∫_{x0}^{x_i} S dx (set last by spline.c) */
@@ -86,7 +86,7 @@ void *ts__calloc(size_t count, size_t size);
 /* A large block (the spline's arrays); freed with free(). */
 void *ts__alloc_block(size_t bytes);
 
-/* ---- basis.c (SPEC §2) ----------------------------------------------- */
+/* ---- basis.c (docs/method.md §2) ----------------------------------------------- */
 /* Basis A0..A3 at (s, c) = (sin θ, cos θ). */
 void ts__basis(double s, double c, double A[4]);
 /* dA/dθ and d²A/dθ². */
@@ -108,7 +108,7 @@ static inline size_t ts__locate(const ts_spline *sp, double x, ts_cursor *cur)
     return ts__search(sp->x, sp->n, x, cur);
 }
 
-/* ---- trigmin.c (SPEC §2, §5) ----------------------------------------- */
+/* ---- trigmin.c (docs/method.md §2, §5) ----------------------------------------- */
 /* Exact minimum over θ in [0, π/2] of g(θ) = Σ A_l(θ) C_l − κ θ.  Returns the
  * minimum and stores its θ in *theta_min (may be NULL). */
 double ts__trig_min(const double C[4], double kappa, double *theta_min);
@@ -170,7 +170,7 @@ double ts__theta_of(double t);
 
 /* ==== L1 ============================================================ */
 
-/* ---- slopes.c (SPEC §6) ---------------------------------------------- */
+/* ---- slopes.c (docs/method.md §6) ---------------------------------------------- */
 /* Unchecked: x strictly increasing and finite, np >= 2, method valid. */
 ts_status ts__slopes(ts_slopes method, const double *x, const double *f, size_t np,
                      double *d, ts_error *err);
@@ -179,7 +179,7 @@ ts_status ts__slopes(ts_slopes method, const double *x, const double *f, size_t 
 void ts__slopes_range(ts_slopes method, const double *x, const double *f, size_t np, double *d,
                       size_t p0, size_t p1);
 
-/* ---- controls.c (SPEC §3, §4) ---------------------------------------- */
+/* ---- controls.c (docs/method.md §3, §4) ---------------------------------------- */
 /* Recompute b1, b2 (and xc1, xc2 in the geometric form) of intervals
  * i0..i1-1 from x, f, d, alpha, beta, per the form.  For the C¹ form the
  * knots' d̂ depend on both neighbours, so callers pass the widened range. */
@@ -193,8 +193,8 @@ static inline void ts__B(const ts_spline *sp, size_t i, double B[4])
     B[3] = sp->f[i + 1];
 }
 
-/* ---- geometric.c (SPEC §4) ------------------------------------------- */
-/* The bound on a_i of SPEC §4 on intervals [i0, i1) (beta set, controls
+/* ---- geometric.c (docs/method.md §4) ------------------------------------------- */
+/* The bound on a_i of docs/method.md §4 on intervals [i0, i1) (beta set, controls
  * not yet): raise beta_i (shape schemes) or fail (TS_ERR_GEOMETRIC). */
 ts_status ts__geo_check(ts_spline *sp, size_t i0, size_t i1, ts_error *err);
 /* Value and derivatives in x of interval i of a geometric-form spline at x. */
@@ -204,14 +204,14 @@ double ts__geo_integral(const ts_spline *sp, size_t i, double x);
 
 /* ==== L2 ============================================================ */
 
-/* ---- interval.c (SPEC §2–§4) ----------------------------------------- */
+/* ---- interval.c (docs/method.md §2–§4) ----------------------------------------- */
 /* Value and derivatives (in x; out[1], out[2] only if want > 0, > 1) of
  * interval i at x, any form; x may lie outside the interval (extension). */
 void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double o[3]);
 /* ∫_{x_i}^{x} S on interval i, x in the interval. */
 double ts__interval_integral(const ts_spline *sp, size_t i, double x);
 
-/* ---- shape.c (SPEC §5) ----------------------------------------------- */
+/* ---- shape.c (docs/method.md §5) ----------------------------------------------- */
 /* ts__shape_begin checks the options and sets the boundaries (*dir: the
  * direction of the data f[0..n], monotone; f: the caller's values, sp->f need
  * not be filled yet); ts__shape_range then checks margins of intervals
@@ -222,12 +222,12 @@ ts_status ts__shape_begin(ts_spline *sp, const ts_options *opt, const double *f,
 ts_status ts__shape_range(ts_spline *sp, const ts_options *opt, int dir, size_t p0, size_t p1,
                           size_t i0, size_t i1, ts_error *err);
 
-/* ---- certificate.c (SPEC §4, §5) -------------------------------------- */
+/* ---- certificate.c (docs/method.md §4, §5) -------------------------------------- */
 /* The exact gaps of one interval (NaN where absent or not computed). */
 typedef struct ts__cert {
     double glo, alo, gup, aup;
 } ts__cert;
-/* B of interval i; X (SPEC §4) only in the geometric form (*geo = 1). */
+/* B of interval i; X (docs/method.md §4) only in the geometric form (*geo = 1). */
 void ts__controls_of(const ts_spline *sp, size_t i, double B[4], double X[4], int *geo);
 /* Gap of a segment with control values B on [xi, xi + h] (paper and C¹
  * forms, and curve coordinates) to the line ln: sign +1 min of S − L, −1 min
@@ -282,7 +282,7 @@ size_t ts__fast_batch(const ts_spline *sp, int deriv, const double *xq, size_t m
 int ts__fast_batch_isa(const ts_spline *sp, int deriv, const double *xq, size_t m,
                        double *yq, ts_cursor *cur, int isa, size_t *done);
 
-/* ---- repair.c (SPEC §5) ---------------------------------------------- */
+/* ---- repair.c (docs/method.md §5) ---------------------------------------------- */
 /* One interval (of a spline or a curve) as the repair search sees it. */
 typedef struct ts__repair_ops {
     void *ctx;
@@ -291,7 +291,7 @@ typedef struct ts__repair_ops {
     int (*limit_inside)(void *ctx, size_t i);      /* certified in the limit a -> ∞ */
     double (*margin)(void *ctx, size_t i);         /* min of gap − guard; NULL: none */
 } ts__repair_ops;
-/* SPEC §5: the a_i that certifies interval i, starting from a0 (alpha al).
+/* docs/method.md §5: the a_i that certifies interval i, starting from a0 (alpha al).
  *  - If the limit a -> ∞ is certified, a is raised: doubling, then bisection
  *    to the smallest certified a (relative 1e-12), plus the margin t.
  *  - Otherwise (a sloped line in the paper or C¹ form; ops with a margin)

@@ -1,5 +1,5 @@
 /* One interval of a spline, any form: value, derivatives and integral
- * (SPEC §2, §3; the geometric form in geometric.c, SPEC §4). */
+ * (docs/method.md §2, §3; the geometric form in geometric.c, docs/method.md §4). */
 #include "internal.h"
 
 #include <math.h>

@@ -1,4 +1,4 @@
-/* Batch evaluation kernels for the paper and C¹ forms (issue 6).
+/* Batch evaluation kernels for the paper and C¹ forms.
  *
  * ts__fast_batch works on blocks of TS_FAST_BLOCK queries; the block's scratch
  * is on the stack (< 8 KiB), nothing is allocated.
@@ -13,8 +13,8 @@
  *     Per query: tu = (x − x_i)·w, tv = (x_{i+1} − x)·w, w = (π/2)/h_i, and
  *     B0..B3 — exactly the products eval.c's eval_in forms.
  *  3. evaluate, in a straight loop the compiler vectorises: from the nearer
- *     end as eval.c (ϑ = tu or tv <= π/4, no range reduction: SPEC §1), sin
- *     and 1 − cos by polynomials, then SPEC §2 (value) or (2.1) and its
+ *     end as eval.c (ϑ = tu or tv <= π/4, no range reduction: docs/method.md §1), sin
+ *     and 1 − cos by polynomials, then docs/method.md §2 (value) or (2.1) and its
  *     θ-derivative, times w or w·w.
  * Agreement with ts_eval_deriv, derived and checked on 1e7 random points in
  * tests/test_fast.c: measured |fast − plain| <= 3.9ε·M for the value
@@ -24,7 +24,7 @@
  * With GCC or Clang on x86-64 the whole pipeline is also compiled for AVX2+FMA
  * and for AVX-512F and chosen at run time (__builtin_cpu_supports); elsewhere,
  * or with -DTS_FAST_PORTABLE, only the portable C version exists.  The
- * geometric form (SPEC §4) goes point by point through ts__interval_eval. */
+ * geometric form (docs/method.md §4) goes point by point through ts__interval_eval. */
 #include "internal.h"
 
 #include <math.h>
@@ -94,7 +94,7 @@ typedef struct fast_b4 {
 /* Per query: θ measured from both ends, tu = (x − x_i)·w and tv = (x_{i+1} − x)·w
  * (w = (π/2)/h_i, dθ/dx; the products eval.c forms), and B0..B3.  The
  * evaluation uses the nearer end, as eval.c: ϑ = min(tu, tv) <= π/4 and, from
- * the right end, the control values reversed (SPEC §2: A3(θ) = A0(π/2 − θ),
+ * the right end, the control values reversed (docs/method.md §2: A3(θ) = A0(π/2 − θ),
  * A2(θ) = A1(π/2 − θ)) and dϑ/dθ = −1.  Choosing in the vector loop keeps
  * this loop free of data-dependent branches. */
 typedef struct fast_stage {
@@ -226,7 +226,7 @@ TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, dou
     if (deriv == 0) {
         for (size_t j = 0; j < nb; j++) {
             TS_FAST_NEAR(st, j);
-            /* SPEC §2, the expressions of basis.c */
+            /* docs/method.md §2, the expressions of basis.c */
             y[j] = (ms * ms * ms) * B0 + (s * ms * (3.0 - s)) * B1 + (c * mc * (3.0 - c)) * B2 +
                    (mc * mc * mc) * B3;
         }
@@ -234,7 +234,7 @@ TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, dou
         for (size_t j = 0; j < nb; j++) {
             TS_FAST_NEAR(st, j);
             double d01 = B1 - B0, d12 = B2 - B1, d23 = B3 - B2;
-            /* SPEC (2.1) */
+            /* docs/method.md (2.1) */
             double d = 3.0 * (ms * ms) * c * d01 + 2.0 * (s * c) * d12 + 3.0 * (mc * mc) * s * d23;
             y[j] = d * (left ? st->w[j] : -st->w[j]);
         }

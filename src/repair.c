@@ -1,4 +1,4 @@
-/* SPEC §5: building a shape spline's certificates: every interval checked,
+/* docs/method.md §5: building a shape spline's certificates: every interval checked,
  * beta_i raised where it is not certified (the repair). */
 #include "internal.h"
 
@@ -116,7 +116,7 @@ static void set_a(ts_spline *sp, size_t i, double a)
     size_t n = sp->n, i0 = i, i1 = i + 1;
     sp->beta[i] = a - sp->alpha[i];
     if (sp->form == TS_FORM_C1) {
-        /* d̂ of both knots changes (SPEC §3) */
+        /* d̂ of both knots changes (docs/method.md §3) */
         i0 = i > 0 ? i - 1 : 0;
         i1 = i + 2 < n ? i + 2 : n;
     }
@@ -169,7 +169,7 @@ static double spline_margin(void *ctx, size_t i)
     return r;
 }
 
-/* SPEC §5: raise beta_i until interval i is certified (ts__repair_search);
+/* docs/method.md §5: raise beta_i until interval i is certified (ts__repair_search);
  * the geometric form has no concave search (a line the chord crosses). */
 static ts_status repair(ts_spline *sp, size_t i, double t, int exact, ts_error *err)
 {

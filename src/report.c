@@ -1,5 +1,5 @@
 /* Per-interval reports and certification of a built spline against given
- * lines (SPEC §5). */
+ * lines (docs/method.md §5). */
 #include "internal.h"
 
 #include <math.h>
@@ -51,7 +51,7 @@ ts_status ts_spline_report(const ts_spline *s, size_t i, ts_interval_report *rep
     int ok = ts__check_ctl(s, i, B, geo ? X : NULL, s->have_certs, &cr, 1); /* fills cr */
     rep->certified = s->certified && ok;
     if (s->have_certs) {
-        /* the build's certificates, computed again (not stored: issue 6) */
+        /* the build's certificates, computed again (not stored: construction speed) */
         rep->gap_lower = cr.glo;
         rep->at_lower = cr.alo;
         rep->gap_upper = cr.gup;

@@ -1,4 +1,4 @@
-/* SPEC §5: shape schemes choose beta_i.
+/* docs/method.md §5: shape schemes choose beta_i.
  *
  * Order of checks (each error names the first offender): margins
  * (TS_ERR_LENGTH, TS_ERR_MARGIN/interval), lines (TS_ERR_NONFINITE), data vs
@@ -6,13 +6,13 @@
  * the same point, TS_ERR_NONMONOTONE), slopes at zero knots
  * (TS_ERR_ZERO_SLOPE, user slopes only).
  *
- * Slope adjustments (SPEC §5.1, §5.5):
+ * Slope adjustments (docs/method.md §5.1, §5.5):
  *  - positive, f_i = 0: inner knot d_i = 0; d_0 >= 0, d_n <= 0 at the ends
  *    (periodic slopes: the ends are one inner knot, d_0 = d_n = 0).  Estimated
  *    slopes are set so; user slopes that break it are refused with
  *    TS_ERR_ZERO_SLOPE (the user asked for a curve that must cross zero).
  *  - monotone: slopes of the wrong sign are set to 0 (user slopes too, as
- *    SPEC §5.5 says), and both slopes of a flat interval (Δ_i = 0) are 0.
+ *    docs/method.md §5.5 says), and both slopes of a flat interval (Δ_i = 0) are 0.
  * Data on a line are refused (TS_ERR_SIDE): unlike y = 0 for positive data,
  * touching a sloped line cannot be kept in the paper form.
  */
@@ -99,7 +99,7 @@ static ts_status check_data(const ts_spline *sp, ts_shape shape, int dir, size_t
     return TS_OK;
 }
 
-/* SPEC §5.1: zero knots of non-negative data, points [p0, p1). */
+/* docs/method.md §5.1: zero knots of non-negative data, points [p0, p1). */
 static ts_status zero_slopes(ts_spline *sp, const ts_options *opt, size_t p0, size_t p1,
                              ts_error *err)
 {
@@ -126,7 +126,7 @@ static ts_status zero_slopes(ts_spline *sp, const ts_options *opt, size_t p0, si
     return TS_OK;
 }
 
-/* SPEC §5.5: wrong-sign slopes to 0, both slopes of a flat interval 0;
+/* docs/method.md §5.5: wrong-sign slopes to 0, both slopes of a flat interval 0;
  * points [p0, p1), dir = data_dir. */
 static void monotone_slopes(ts_spline *sp, int dir, size_t p0, size_t p1)
 {
@@ -141,7 +141,7 @@ static void monotone_slopes(ts_spline *sp, int dir, size_t p0, size_t p1)
     }
 }
 
-/* margins t_i of SPEC §5, intervals [i0, i1) */
+/* margins t_i of docs/method.md §5, intervals [i0, i1) */
 static ts_status check_margins(const ts_options *opt, size_t i0, size_t i1, ts_error *err)
 {
     double t0 = opt->margin;
@@ -191,10 +191,10 @@ static ts_status boundaries(ts_spline *sp, const ts_options *opt, ts_error *err)
     return TS_OK;
 }
 
-/* SPEC §5: beta_i = t_i + max{0, terms}; zero-gap knots drop their term.
+/* docs/method.md §5: beta_i = t_i + max{0, terms}; zero-gap knots drop their term.
  * Each term is considered in turn and taken when strictly larger: below, one
  * pass over a block per kind of term (lower line, upper line, monotone), then
- * t_i and the caps, each a plain loop that vectorises (issue 6).  best[] is
+ * t_i and the caps, each a plain loop that vectorises.  best[] is
  * beta[] before the last pass. */
 /* The arrays of the passes (restrict parameters: through a struct GCC 12
  * does not see that they do not alias, and does not vectorise). */
@@ -213,8 +213,8 @@ static ts_status boundaries(ts_spline *sp, const ts_options *opt, ts_error *err)
         t = take_ ? (code) : t;                                                \
     } while (0)
 
-/* SPEC §5 lower boundary m x + c: B1 - l > 0, B2 - l > 0; in the geometric
- * form (SPEC §4) the exact conditions Y_l - m X_l - c > 0 (ml = m, else 0). */
+/* docs/method.md §5 lower boundary m x + c: B1 - l > 0, B2 - l > 0; in the geometric
+ * form (docs/method.md §4) the exact conditions Y_l - m X_l - c > 0 (ml = m, else 0). */
 TS_VECTOR_LOOP static void consider_lower(TS_BETA_ARRAYS, size_t i0, size_t i1, double m, double c,
                                           double ml)
 {
@@ -230,7 +230,7 @@ TS_VECTOR_LOOP static void consider_lower(TS_BETA_ARRAYS, size_t i0, size_t i1, 
     }
 }
 
-/* SPEC §5 upper boundary, corrected signs (§5.3); mu as ml above. */
+/* docs/method.md §5 upper boundary, corrected signs (§5.3); mu as ml above. */
 TS_VECTOR_LOOP static void consider_upper(TS_BETA_ARRAYS, size_t i0, size_t i1, double m, double c,
                                           double mu)
 {
@@ -246,7 +246,7 @@ TS_VECTOR_LOOP static void consider_upper(TS_BETA_ARRAYS, size_t i0, size_t i1, 
     }
 }
 
-/* SPEC §5.5: a_i >= 2(d_i + d_{i+1}) / (3π Δ_i) */
+/* docs/method.md §5.5: a_i >= 2(d_i + d_{i+1}) / (3π Δ_i) */
 TS_VECTOR_LOOP static void consider_monotone(TS_BETA_ARRAYS, size_t i0, size_t i1)
 {
     (void)x;

@@ -1,11 +1,11 @@
-/* SPEC §6: slope estimates d_0..d_n.  Method details: comments at enum ts_slopes
+/* docs/method.md §6: slope estimates d_0..d_n.  Method details: comments at enum ts_slopes
  * in trigspline.h.  Secants are recomputed where needed: nothing is allocated. */
 #include "internal.h"
 
 #include <float.h>
 #include <math.h>
 
-/* Δ_j, j = 0..n-1 (SPEC §1). */
+/* Δ_j, j = 0..n-1 (docs/method.md §1). */
 static double secant(const double *x, const double *f, size_t j)
 {
     return (f[j + 1] - f[j]) / (x[j + 1] - x[j]);
@@ -29,7 +29,7 @@ static double share(double a, double b)
     return a / s;
 }
 
-/* SPEC §6 three-point end formula at the end whose interval has width h0 and
+/* docs/method.md §6 three-point end formula at the end whose interval has width h0 and
  * secant D0, next interval h1, D1. */
 static double end3(double h0, double h1, double D0, double D1)
 {
@@ -39,7 +39,7 @@ static double end3(double h0, double h1, double D0, double D1)
     return D0 + (D0 - D1) * share(h0, h1); /* the same without overflow */
 }
 
-/* SPEC §6 arithmetic mean of Dl = Δ_{i-1}, Dr = Δ_i with the three-point
+/* docs/method.md §6 arithmetic mean of Dl = Δ_{i-1}, Dr = Δ_i with the three-point
  * weights hr/(hl + hr), hl/(hl + hr); both widths halved (exactly) when their
  * sum overflows, as share() does.  Branch-free, so that loops vectorise. */
 static inline double mean_arith3(double hl, double hr, double Dl, double Dr)
@@ -211,7 +211,7 @@ static void akima(const double *x, const double *f, size_t n, double *d, int mod
     }
 }
 
-/* SPEC §6 periodic: three-point mean, interval n-1 is the left neighbour of point 0. */
+/* docs/method.md §6 periodic: three-point mean, interval n-1 is the left neighbour of point 0. */
 static void periodic(const double *x, const double *f, size_t n, double *d, size_t p0, size_t p1)
 {
     interior_arith(x, f, n, d, p0, p1);
@@ -262,7 +262,7 @@ void ts__slopes_range(ts_slopes method, const double *x, const double *f, size_t
         p1 = np;
     if (p0 >= p1)
         return;
-    if (n == 1) { /* SPEC §6: two points */
+    if (n == 1) { /* docs/method.md §6: two points */
         double D = secant(x, f, 0);
         for (size_t i = p0; i < p1; i++)
             d[i] = D;

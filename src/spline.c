@@ -1,5 +1,5 @@
 /* ts_spline_new: the one construction path for every form; accessors
- * (SPEC §1, §3). */
+ * (docs/method.md §1, §3). */
 #include "internal.h"
 
 #include <float.h>
@@ -82,7 +82,7 @@ static void copy_points(ts_spline *sp, const double *x, const double *f, size_t 
     *done = upto;
 }
 
-/* SPEC §6 user slopes, points [p0, p1) (array checked non-NULL, length np). */
+/* docs/method.md §6 user slopes, points [p0, p1) (array checked non-NULL, length np). */
 static ts_status user_slopes(ts_spline *sp, const ts_options *o, size_t p0, size_t p1,
                              ts_error *err)
 {
@@ -175,9 +175,9 @@ static ts_status nonfinite_slope(const ts_spline *sp, size_t p0, size_t p1, ts_e
     return ts__fail(err, TS_ERR_NONFINITE, i, TS_WHERE_POINT);
 }
 
-/* The one construction path, every form: the stages (SPEC §6 slopes, alpha,
- * SPEC §5 beta by the scheme or the caller's beta, the SPEC §4 bound, SPEC §3
- * and §4 controls, SPEC §5 certificates, integrals) run on TS_BLOCK intervals
+/* The one construction path, every form: the stages (docs/method.md §6 slopes, alpha,
+ * docs/method.md §5 beta by the scheme or the caller's beta, the docs/method.md §4 bound, docs/method.md §3
+ * and §4 controls, docs/method.md §5 certificates, integrals) run on TS_BLOCK intervals
  * at a time while their arrays are in cache.  In the paper and geometric forms
  * an interval depends only on its own knots (its slopes on the neighbours,
  * read from the caller's x, f), so every stage completes in the block; in the
@@ -298,7 +298,7 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
 
     /* layout: 4 arrays of n+1 (x, f, d, cum), 5 of n (h, alpha, beta, b1, b2),
      * 2 of n for the geometric form's X (xc1, xc2), term bytes.  Only
-     * what is used: every byte per knot costs construction time (issue 6). */
+     * what is used: every byte per knot costs construction time. */
     int geo = opt->form == TS_FORM_GEOMETRIC;
     size_t per_interval_arrays = 5 + (size_t)(2 * geo);
     size_t n = n_points - 1, a, b, c, total, bytes;
@@ -403,7 +403,7 @@ ts_status ts_spline_control(const ts_spline *s, size_t i, double B[4], double X[
         if (s->form == TS_FORM_GEOMETRIC) {
             X[1] = s->xc1[i];
             X[2] = s->xc2[i];
-        } else { /* SPEC §3: X = [x_i, x_i + K_i, x_{i+1} - K_i, x_{i+1}], as ts__controls had */
+        } else { /* docs/method.md §3: X = [x_i, x_i + K_i, x_{i+1} - K_i, x_{i+1}], as ts__controls had */
             double K = 2.0 / (3.0 * TS_PI) * s->h[i];
             X[1] = s->x[i] + K;
             X[2] = s->x[i + 1] - K;

@@ -87,7 +87,7 @@ void *ts__calloc(size_t count, size_t size)
 
 /* The spline's one block.  Large blocks are 2 MiB-aligned and marked for
  * transparent huge pages where Linux offers them: first-touch page faults
- * dominate construction time at large n (issue 6, bench/RESULTS.md), and huge
+ * dominate construction time at large n (bench/RESULTS.md), and huge
  * pages cut them severalfold.  Freed with free() either way. */
 void *ts__alloc_block(size_t bytes)
 {

@@ -1,10 +1,10 @@
-/* SPEC §2, §5: the exact minimum of a degree-3 trigonometric polynomial
+/* docs/method.md §2, §5: the exact minimum of a degree-3 trigonometric polynomial
  * minus a linear function, with its rounding guard.
  *
  * Minimum of g(θ) = Σ A_l(θ) C_l − κθ on [0, π/2].  With t = tan(θ/2) in
  * [0, 1]: s = 2t/q, c = (1−t²)/q, 1−s = (1−t)²/q, 1−c = 2t²/q (q = 1+t²),
  * so every A_l is a product of non-negative factors computed without
- * cancellation, and (SPEC (2.1))
+ * cancellation, and (docs/method.md (2.1))
  *   P(t) = q³ g'(θ) = 3D0 (1−t)⁵(1+t) + 4D1 t(1−t⁴) + 24D2 t⁵ − κ q³,
  * D_l = C_{l+1} − C_l, a polynomial of degree ≤ 6.  Its Bernstein
  * coefficients on [0, 1] are (exact rationals, derived by hand and checked
@@ -209,7 +209,7 @@ static void isolate(tm_ctx *z, const double b[7], double lo, double hi, int dept
     isolate(z, r, mid, hi, depth + 1);
 }
 
-/* Basis at t = tan(θ/2) (SPEC §2), cancellation-free. */
+/* Basis at t = tan(θ/2) (docs/method.md §2), cancellation-free. */
 void ts__basis_t(double t, double A[4])
 {
     double t2 = t * t, q = 1.0 + t2;
