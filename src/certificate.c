@@ -12,19 +12,18 @@
 
 #define TM_EPS DBL_EPSILON
 
-/* docs/method.md §5.1 control-value proof (S = Σ A_l B_l, A_l >= 0, Σ A_l = 1, docs/method.md §2):
- * f_i, f_{i+1} > 0 with B0, B3 > 0 and B1, B2 >= 0 give S > 0; with a zero
- * end (promise S >= 0) all B_l >= 0.  Branch-free (used in vector loops). */
-static inline int positive_proof(double B0, double B1, double B2, double B3)
+/* docs/method.md §5.1 control-value proof (S = Σ A_l B_l, A_l >= 0,
+ * Σ A_l = 1): f_i, f_{i+1} > 0 with B1, B2 >= 0 give S > 0, and with a zero
+ * end (promise S >= 0) all B_l >= 0 give S >= 0; both read: every B_l >= 0.
+ * Branch-free (used in vector loops). */
+TS_INLINE int positive_proof(double B0, double B1, double B2, double B3)
 {
-    int zero_end = !((B0 > 0.0) & (B3 > 0.0));
-    return zero_end ? (B0 >= 0.0) & (B1 >= 0.0) & (B2 >= 0.0) & (B3 >= 0.0)
-                    : (B0 > 0.0) & (B3 > 0.0) & (B1 >= 0.0) & (B2 >= 0.0);
+    return (B0 >= 0.0) & (B1 >= 0.0) & (B2 >= 0.0) & (B3 >= 0.0);
 }
 
 /* docs/method.md §5.5: B monotone in the data's direction gives S' of that sign by
  * (2.1); equal ends need equal control values. */
-static inline int monotone_proof(double B0, double B1, double B2, double B3)
+TS_INLINE int monotone_proof(double B0, double B1, double B2, double B3)
 {
     return B3 > B0   ? B0 <= B1 && B1 <= B2 && B2 <= B3
            : B3 < B0 ? B0 >= B1 && B1 >= B2 && B2 >= B3
@@ -242,7 +241,7 @@ int ts__certify_exact(const ts_options *opt)
 
 /* The control-value proof of interval i, not exact (check_ctl with
  * exact == 0): positive or monotone, paper and C¹ forms, finite controls. */
-static inline int proven(const double *restrict f, const double *restrict b1,
+TS_INLINE int proven(const double *restrict f, const double *restrict b1,
                          const double *restrict b2, size_t i, int positive)
 {
     double B0 = f[i], B1 = b1[i], B2 = b2[i], B3 = f[i + 1];
@@ -326,13 +325,14 @@ TS_VECTOR_LOOP void ts__mono_certify(const double *restrict f, const double *res
         memcpy(&q, &ue, sizeof q);
         double c0 = C0 * p, c1 = C1 * p, c2 = C2 * p, c3 = C3 * p, ks = kappa * p, Ms = M * p;
         double b[7], best, babs;
-        int at1;
+        double at1;
         good &= ts__trig_min_ends(c0, c1, c2, c3, ks, b, &best, &at1, &babs);
         double gd = ts__trig_min_guard(0, babs, Ms, fabs(ks));
         double g = best * q, guard = gd * q + gm * (bmax + am * xmax + ac);
         int pass = g > guard;
-        if (positive)
-            pass = positive_proof(B0, B1, B2, B3) | ((B0 > 0.0) & (B3 > 0.0) & pass);
+        /* positive: the control-value proof, or (both ends > 0) the gap */
+        int ends_pos = (B0 > 0.0) & (B3 > 0.0);
+        pass = (positive & positive_proof(B0, B1, B2, B3)) | (((positive == 0) | ends_pos) & pass);
         ok[i - i0] = (unsigned char)(good & pass & (M != 0.0));
     }
 }

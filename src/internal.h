@@ -44,6 +44,15 @@
 #define TS_VECTOR_LOOP
 #endif
 
+/* Small functions shared by a vector loop and a scalar path: always
+ * inlined, also into the TS_VECTOR_LOOP functions (whose optimize attribute
+ * would otherwise refuse an ordinary inline function). */
+#if defined(__GNUC__)
+#define TS_INLINE static inline __attribute__((always_inline))
+#else
+#define TS_INLINE static inline
+#endif
+
 #define TS_PI 3.14159265358979323846
 #define TS_HALF_PI 1.57079632679489661923
 
@@ -118,7 +127,7 @@ double ts__trig_min_core(double C0, double C1, double C2, double C3, double kapp
                          double *theta, double *tbest, double *errb);
 /* The rounding guard of ts__trig_min_core (scaled problem, subdivision depth
  * reached, babs = 3|D0| + 3|D1| + 24|D2| + 8|κ|, Ms = max|c_l|, ak = |κ|). */
-static inline double ts__trig_min_guard(int depth, double babs, double Ms, double ak)
+TS_INLINE double ts__trig_min_guard(int depth, double babs, double Ms, double ak)
 {
     double eta = (6.0 * depth + 6.0) * DBL_EPSILON * babs;
     return 2.0 * (16.0 * DBL_EPSILON * (Ms + TS_HALF_PI * ak) + 2.0 * eta);
@@ -128,10 +137,11 @@ static inline double ts__trig_min_guard(int depth, double babs, double Ms, doubl
  * end values.  Branch-free (certificate.c runs it over blocks of intervals).
  * Returns 1 when the minimum is at an end — g monotone by (2.1), or no
  * coefficient < 0 before one > 0, so no minimum inside — with *best the
- * least end value, *at1 = 1 if it is at θ = π/2, and *babs for the guard;
+ * least end value, *at1 = 1.0 if it is at θ = π/2 (else 0.0), and *babs
+ * for the guard;
  * 0 when the roots must be isolated. */
-static inline int ts__trig_min_ends(double c0, double c1, double c2, double c3, double ks,
-                                    double b[7], double *best, int *at1, double *babs)
+TS_INLINE int ts__trig_min_ends(double c0, double c1, double c2, double c3, double ks,
+                                    double b[7], double *best, double *at1, double *babs)
 {
     double D0 = c1 - c0, D1 = c2 - c1, D2 = c3 - c2;
     double ak = fabs(ks), a0 = fabs(D0), a1 = fabs(D1), a2 = fabs(D2);
@@ -149,18 +159,20 @@ static inline int ts__trig_min_ends(double c0, double c1, double c2, double c3, 
     b[4] = (8.0 / 3.0) * D1 - 2.4 * ks;
     b[5] = (8.0 / 3.0) * D1 + 4.0 * D2 - 4.0 * ks;
     b[6] = 24.0 * D2 - 8.0 * ks;
-    int neg = b[0] < 0.0, rise = 0;
-    for (int j = 1; j < 7; j++) {
-        rise |= neg & (b[j] > 0.0);
-        neg |= b[j] < 0.0;
-    }
+    int neg = b[0] < 0.0, rise = 0; /* written out: a loop here would not vectorise */
+    rise |= neg & (b[1] > 0.0), neg |= b[1] < 0.0;
+    rise |= neg & (b[2] > 0.0), neg |= b[2] < 0.0;
+    rise |= neg & (b[3] > 0.0), neg |= b[3] < 0.0;
+    rise |= neg & (b[4] > 0.0), neg |= b[4] < 0.0;
+    rise |= neg & (b[5] > 0.0), neg |= b[5] < 0.0;
+    rise |= neg & (b[6] > 0.0);
     /* the ends with ts__basis_t's exact values there: A = e_0 at t = 0,
      * θ = 0, and A = e_3 at t = 1, θ = π/2 */
     double g0 = 1.0 * c0 + 0.0 * c1 + 0.0 * c2 + 0.0 * c3;
     double g1 = 0.0 * c0 + 0.0 * c1 + 0.0 * c2 + 1.0 * c3;
     g0 = ks != 0.0 ? g0 - ks * 0.0 : g0;
     g1 = ks != 0.0 ? g1 - ks * TS_HALF_PI : g1;
-    *at1 = g1 < g0;
+    *at1 = g1 < g0 ? 1.0 : 0.0;
     *best = g1 < g0 ? g1 : g0;
     return mono | !rise;
 }

@@ -42,7 +42,7 @@ static double end3(double h0, double h1, double D0, double D1)
 /* docs/method.md §6 arithmetic mean of Dl = Δ_{i-1}, Dr = Δ_i with the three-point
  * weights hr/(hl + hr), hl/(hl + hr); both widths halved (exactly) when their
  * sum overflows, as share() does.  Branch-free, so that loops vectorise. */
-static inline double mean_arith3(double hl, double hr, double Dl, double Dr)
+TS_INLINE double mean_arith3(double hl, double hr, double Dl, double Dr)
 {
     double sc = hr + hl <= DBL_MAX ? 1.0 : 0.5;
     double a = sc * hr, b = sc * hl, s = a + b;

@@ -293,13 +293,13 @@ double ts__trig_min_core(double C0, double C1, double C2, double C3, double kapp
     z.nc = 0;
     z.depth = 0;
     double b[7], best, babs;
-    int at1;
+    double at1;
     if (!ts__trig_min_ends(c0, c1, c2, c3, ks, b, &best, &at1, &babs)) {
         add_cand(&z, 0.0);
         add_cand(&z, 1.0);
         isolate(&z, b, 0.0, 1.0, 0);
     }
-    double bt = at1 ? 1.0 : 0.0;
+    double bt = at1;
     /* the roots (candidates after the two ends) */
     for (int j = 2; j < z.nc; j++) {
         double t = z.t[j], A[4];
