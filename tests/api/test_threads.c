@@ -145,7 +145,7 @@ static void make_splines(void)
         ts_status st = ts_spline_new(R->x, R->f, NP, &R->opt, &R->s, &e);
         CHECKF(st == TS_OK, "spline %d: %s at %zu", k, ts_strerror(st), e.index);
         if (st != TS_OK)
-            exit(th_report("test_review_threads"));
+            exit(th_report("test_threads"));
         double x0 = R->x[0], xn = R->x[NP - 1], w = xn - x0;
         for (int j = 0; j < NQ; j++) {
             double u = urand();
@@ -220,7 +220,7 @@ static void make_curves(void)
         ts_status st = ts_curve_new(pts, np, R->dim, &co, &R->c, &e);
         CHECKF(st == TS_OK, "curve %d: %s at %zu", k, ts_strerror(st), e.index);
         if (st != TS_OK)
-            exit(th_report("test_review_threads"));
+            exit(th_report("test_threads"));
         const double *t = ts_curve_knots(R->c);
         double tn = t[ts_curve_segments(R->c)];
         for (int j = 0; j < NCQ; j++) {
@@ -407,5 +407,5 @@ int main(void)
         ts_spline_free(S[k].s);
     for (int k = 0; k < NCRV; k++)
         ts_curve_free(C[k].c);
-    return th_report("test_review_threads");
+    return th_report("test_threads");
 }

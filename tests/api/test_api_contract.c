@@ -419,5 +419,5 @@ int main(void)
     curve_length_scaled();
     curve_tiny_steps();
     curve_params_and_reports();
-    return th_report("test_review_api");
+    return th_report("test_api_contract");
 }
