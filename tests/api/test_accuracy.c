@@ -4,6 +4,7 @@
  * study's functions, the measured orders within derived limits, lines in
  * every form. */
 #include "th.h"
+#include "common/th_rng.h"
 #include "trigspline.h"
 
 #include <float.h>
@@ -36,12 +37,6 @@ static const fun funs[4] = {
     {0.0, 1.0, f_pos, fp_pos, 1.4, 2.0},
 };
 
-static unsigned long long rs;
-static double urand(void)
-{
-    rs = rs * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(rs >> 11) / 9007199254740992.0;
-}
 
 /* Build on n intervals (grid uniform or perturbed ±35% h), slopes exact or
  * a method, a > 0 scalar or a < 0: per-interval log-uniform in [0.5, 2].
@@ -54,17 +49,17 @@ static double study(const fun *F, size_t n, int pert, ts_form form, ts_slopes sl
     double *d = malloc((n + 1) * sizeof *d), *al = malloc(n * sizeof *al);
     double e = NAN, h = (F->hi - F->lo) / (double)n;
     *bound = NAN;
-    rs = 12345u + n;
+    th_seed(12345u + n);
     for (size_t i = 0; i <= n; i++)
         x[i] = F->lo + h * (double)i;
     if (pert)
         for (size_t i = 1; i < n; i++)
-            x[i] += 0.35 * h * (2 * urand() - 1);
+            x[i] += 0.35 * h * (2 * th_unit() - 1);
     x[n] = F->hi;
     for (size_t i = 0; i <= n; i++)
         f[i] = F->f(x[i]), d[i] = F->fp(x[i]);
     for (size_t i = 0; i < n; i++)
-        al[i] = 0.5 * pow(4.0, urand());
+        al[i] = 0.5 * pow(4.0, th_unit());
     if (sl != TS_SLOPES_USER)
         CHECK(ts_slopes_compute(sl, x, f, n + 1, d, NULL) == TS_OK);
     ts_options o;

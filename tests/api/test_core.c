@@ -23,6 +23,7 @@
  * magnitude <= (x_n - x_0)·M: tol 1e-13·M·(x_n - x_0).
  */
 #include "th.h"
+#include "common/th_rng.h"
 #include "trigspline.h"
 
 #include <float.h>
@@ -359,12 +360,11 @@ static void case_end(tcase *tc)
                tc->name);
 
         /* integral additivity on a pseudo-random set of triples */
-        unsigned seed = 777u;
+        th_rng gen = TH_RNG_INIT(777u);
         for (int k = 0; k < 60; k++) {
             double u[3];
             for (int m = 0; m < 3; m++) {
-                seed = seed * 1664525u + 1013904223u;
-                u[m] = x0 + L * ((double)(seed >> 8) / 16777216.0);
+                u[m] = x0 + L * th_rng_unit(&gen);
             }
             if (k % 5 == 0)
                 u[1] = tc->x[(size_t)k % (n + 1)]; /* a knot in the middle */

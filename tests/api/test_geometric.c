@@ -3,6 +3,7 @@
  * Reference values: tests/ref/accuracy_ref.csv from tests/ref/accuracy_ref.py
  * (mpmath, 40 digits, written from SPEC §2-§4 without the library). */
 #include "th.h"
+#include "common/th_rng.h"
 #include "trigspline.h"
 
 #include <float.h>
@@ -154,28 +155,22 @@ static void test_reference(void)
 }
 
 /* ---- property tests -------------------------------------------------- */
-static unsigned long rng = 88172645463325252UL;
-static double urand(void)
-{
-    rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
-    return (double)(rng >> 11) / 9007199254740992.0;
-}
 
 /* Lines are reproduced to rounding: Y − mX − c = Σ A_l (Y_l − m X_l − c) = 0
  * (SPEC §4), so only the rounding of the control values and of θ(x) remains. */
 static void test_lines(void)
 {
     for (int rep = 0; rep < 40; rep++) {
-        size_t np = 2 + (size_t)(urand() * 12);
+        size_t np = 2 + (size_t)(th_unit() * 12);
         double x[16], f[16], d[16], al[16], be[16];
-        double m = (urand() - 0.5) * 20, c = (urand() - 0.5) * 10, sc = rep % 3 == 0 ? 1e-6 : 1.0;
-        x[0] = (urand() - 0.5) * 4 * sc;
+        double m = (th_unit() - 0.5) * 20, c = (th_unit() - 0.5) * 10, sc = rep % 3 == 0 ? 1e-6 : 1.0;
+        x[0] = (th_unit() - 0.5) * 4 * sc;
         for (size_t i = 1; i < np; i++)
-            x[i] = x[i - 1] + (0.01 + urand()) * sc;
+            x[i] = x[i - 1] + (0.01 + th_unit()) * sc;
         for (size_t i = 0; i < np; i++)
             f[i] = m * x[i] + c, d[i] = m;
         for (size_t i = 0; i + 1 < np; i++) {
-            al[i] = rep % 4 == 0 ? TS_GEOMETRIC_A_MIN : 0.5 + 10 * urand();
+            al[i] = rep % 4 == 0 ? TS_GEOMETRIC_A_MIN : 0.5 + 10 * th_unit();
             be[i] = 0;
         }
         ts_spline *s = geo_new(x, f, d, np, al, be, TS_EXTRAP_ERROR);
@@ -203,15 +198,15 @@ static void test_lines(void)
 static void test_knot_slopes(void)
 {
     for (int rep = 0; rep < 30; rep++) {
-        size_t np = 3 + (size_t)(urand() * 10);
+        size_t np = 3 + (size_t)(th_unit() * 10);
         double x[16], f[16], d[16], al[16], be[16];
-        x[0] = urand();
+        x[0] = th_unit();
         for (size_t i = 1; i < np; i++)
-            x[i] = x[i - 1] + 0.05 + 3 * urand();
+            x[i] = x[i - 1] + 0.05 + 3 * th_unit();
         for (size_t i = 0; i < np; i++)
-            f[i] = 5 * (urand() - 0.5), d[i] = 8 * (urand() - 0.5);
+            f[i] = 5 * (th_unit() - 0.5), d[i] = 8 * (th_unit() - 0.5);
         for (size_t i = 0; i + 1 < np; i++)
-            al[i] = rep % 2 ? TS_GEOMETRIC_A_MIN : 0.4 + 5 * urand(), be[i] = rep % 3 ? 0 : urand();
+            al[i] = rep % 2 ? TS_GEOMETRIC_A_MIN : 0.4 + 5 * th_unit(), be[i] = rep % 3 ? 0 : th_unit();
         ts_spline *s = geo_new(x, f, d, np, al, be, TS_EXTRAP_ERROR);
         if (!s)
             continue;

@@ -43,6 +43,7 @@
  * Seed: fixed (TS_PROP_SEED); each set is reproducible from (scheme, form, k).
  */
 #include "th.h"
+#include "common/th_rng.h"
 #include "trigspline.h"
 
 #include <float.h>
@@ -74,25 +75,12 @@
 static const double PI = 3.14159265358979323846;
 static const double HALF_PI = 1.57079632679489661923;
 
-static unsigned long long rs;
+/* each set's stream: the default generator seeded from (scheme, form, k) */
 static void seed(unsigned scheme, unsigned form, unsigned k)
 {
-    rs = ((unsigned long long)TS_PROP_SEED << 32) ^ ((unsigned long long)scheme << 24) ^
-         ((unsigned long long)form << 20) ^ (unsigned long long)k;
-    rs = rs * 0x9E3779B97F4A7C15ULL + 1;
-    if (!rs)
-        rs = 1;
+    th_seed(((uint64_t)TS_PROP_SEED << 32) ^ ((uint64_t)scheme << 24) ^ ((uint64_t)form << 20) ^
+            (uint64_t)k);
 }
-static double urand(void)
-{
-    rs ^= rs >> 12;
-    rs ^= rs << 25;
-    rs ^= rs >> 27;
-    return (double)((rs * 2685821657736338717ULL) >> 11) * 0x1.0p-53;
-}
-static double uni(double a, double b) { return a + (b - a) * urand(); }
-static double logu(double a, double b) { return exp(uni(log(a), log(b))); }
-static int chance(double p) { return urand() < p; }
 
 static double line_at(const ts_line *l, double x) { return l->m * x + l->c; }
 
@@ -175,19 +163,19 @@ static int knot_outside(const dataset *D, size_t j, int scheme)
  * jumps and flat runs; scaled by 10^[-3, 3] factors */
 static void profile(size_t np, double *p, int allow_zero, double p_near)
 {
-    double v = logu(1e-3, 1e3);
+    double v = th_logu(1e-3, 1e3);
     for (size_t i = 0; i < np; i++) {
-        double r = urand();
+        double r = th_unit();
         if (i > 0 && r < 0.15) {
             v = p[i - 1]; /* flat run */
         } else if (r < 0.30) {
-            v = logu(1e-3, 1e3); /* steep jump */
+            v = th_logu(1e-3, 1e3); /* steep jump */
         } else if (r < 0.30 + p_near) {
-            v = logu(1e-12, 1e-6); /* near the boundary */
+            v = th_logu(1e-12, 1e-6); /* near the boundary */
         } else if (allow_zero && r < 0.40 + p_near) {
             v = 0.0;
         } else if (i > 0) {
-            v = fabs(p[i - 1] == 0 ? logu(1e-3, 1) : p[i - 1] * logu(0.3, 3));
+            v = fabs(p[i - 1] == 0 ? th_logu(1e-3, 1) : p[i - 1] * th_logu(0.3, 3));
         }
         p[i] = v;
     }
@@ -205,19 +193,19 @@ static void gen(dataset *D, int scheme, int form)
     ts_options_init(o);
     o->form = (ts_form)form;
     o->shape = (ts_shape)scheme;
-    double r = urand();
-    size_t n = r < 0.08 ? 1 : r < 0.85 ? (size_t)uni(2, 17) : (size_t)uni(17, NMAX + 1);
+    double r = th_unit();
+    size_t n = r < 0.08 ? 1 : r < 0.85 ? (size_t)th_range(2, 17) : (size_t)th_range(17, NMAX + 1);
     if (n > NMAX)
         n = NMAX;
     D->n = n;
     size_t np = n + 1;
     /* x: offset and spacing scale over many decades, non-uniform steps */
-    double H = logu(1e-3, 1e3);
-    D->x[0] = uni(-1e3, 1e3) * (chance(0.5) ? 1.0 : H);
+    double H = th_logu(1e-3, 1e3);
+    D->x[0] = th_range(-1e3, 1e3) * (th_chance(0.5) ? 1.0 : H);
     for (size_t i = 1; i < np; i++)
-        D->x[i] = D->x[i - 1] + H * logu(1e-2, 1e1);
+        D->x[i] = D->x[i - 1] + H * th_logu(1e-2, 1e1);
     double p[NMAX + 1];
-    double V = logu(1e-4, 1e4);
+    double V = th_logu(1e-4, 1e4);
     switch (scheme) {
     case TS_SHAPE_POSITIVE:
         profile(np, p, 1, 0.1);
@@ -228,8 +216,8 @@ static void gen(dataset *D, int scheme, int form)
     case TS_SHAPE_BELOW: {
         ts_line L;
         double xspan = D->x[n] - D->x[0];
-        L.m = chance(0.3) ? 0.0 : (chance(0.5) ? 1 : -1) * V / xspan * logu(1e-3, 1e2);
-        L.c = uni(-1, 1) * V * 10 - L.m * D->x[0];
+        L.m = th_chance(0.3) ? 0.0 : (th_chance(0.5) ? 1 : -1) * V / xspan * th_logu(1e-3, 1e2);
+        L.c = th_range(-1, 1) * V * 10 - L.m * D->x[0];
         /* near-boundary points next to a sloped line are infeasible in the
          * paper form whenever |m| h >> gap (SPEC §5): fewer of them there */
         profile(np, p, 0, L.m == 0 ? 0.1 : 0.005);
@@ -238,8 +226,8 @@ static void gen(dataset *D, int scheme, int form)
             /* mostly keep the gap at least a fraction of |m| h: otherwise
              * the paper form cannot follow the line (SPEC §5, the limit
              * curve misses a line by up to 0.105 |m| h) */
-            if (chance(0.9))
-                g += fabs(L.m) * hmax(D, i) * logu(0.15, 3);
+            if (th_chance(0.9))
+                g += fabs(L.m) * hmax(D, i) * th_logu(0.15, 3);
             D->f[i] = scheme == TS_SHAPE_ABOVE ? line_at(&L, D->x[i]) + g : line_at(&L, D->x[i]) - g;
             /* rounding could put a tiny gap on the line: keep it a gap */
             double gg = scheme == TS_SHAPE_ABOVE ? D->f[i] - line_at(&L, D->x[i])
@@ -256,21 +244,21 @@ static void gen(dataset *D, int scheme, int form)
     case TS_SHAPE_BETWEEN: {
         ts_line L, U;
         double xspan = D->x[n] - D->x[0];
-        L.m = chance(0.3) ? 0.0 : (chance(0.5) ? 1 : -1) * V / xspan * logu(1e-3, 1e1);
-        L.c = uni(-1, 1) * V * 10 - L.m * D->x[0];
+        L.m = th_chance(0.3) ? 0.0 : (th_chance(0.5) ? 1 : -1) * V / xspan * th_logu(1e-3, 1e1);
+        L.c = th_range(-1, 1) * V * 10 - L.m * D->x[0];
         /* band width positive at both ends, so at every data point */
-        double w0 = V * logu(1e-1, 1e1), w1 = chance(0.3) ? w0 : V * logu(1e-1, 1e1);
+        double w0 = V * th_logu(1e-1, 1e1), w1 = th_chance(0.3) ? w0 : V * th_logu(1e-1, 1e1);
         U.m = L.m + (w1 - w0) / xspan;
         U.c = line_at(&L, D->x[0]) + w0 - U.m * D->x[0];
         profile(np, p, 0, L.m == 0 && U.m == 0 ? 0.1 : 0.005);
         for (size_t i = 0; i < np; i++) {
             double lo = line_at(&L, D->x[i]), up = line_at(&U, D->x[i]), w = up - lo;
             double q = p[i] / (1 + p[i]); /* in (0, 1), some very near 0 */
-            if (chance(L.m == 0 && U.m == 0 ? 0.1 : 0.005))
+            if (th_chance(L.m == 0 && U.m == 0 ? 0.1 : 0.005))
                 q = 1 - q * 1e-6; /* near the upper line */
             /* as for one line: mostly a gap of a fraction of |m| h to each */
             double gl = fabs(L.m) * hmax(D, i) * 0.15, gu = fabs(U.m) * hmax(D, i) * 0.15;
-            if (chance(0.85) && gl + gu < w) {
+            if (th_chance(0.85) && gl + gu < w) {
                 double qa = gl / w, qb = 1 - gu / w;
                 q = qa + (qb - qa) * q;
             }
@@ -284,34 +272,34 @@ static void gen(dataset *D, int scheme, int form)
         break;
     }
     default: { /* monotone */
-        int dir = chance(0.5) ? 1 : -1;
+        int dir = th_chance(0.5) ? 1 : -1;
         profile(np, p, 1, 0.1);
-        D->f[0] = uni(-1, 1) * V;
+        D->f[0] = th_range(-1, 1) * V;
         for (size_t i = 1; i < np; i++)
-            D->f[i] = D->f[i - 1] + dir * V * (chance(0.2) ? 0.0 : p[i]);
+            D->f[i] = D->f[i - 1] + dir * V * (th_chance(0.2) ? 0.0 : p[i]);
         break;
     }
     }
     /* alpha log-uniform in [1e-4, 10], scalar or per interval */
-    if (chance(0.5)) {
-        o->alpha = logu(1e-4, 10);
+    if (th_chance(0.5)) {
+        o->alpha = th_logu(1e-4, 10);
     } else {
         for (size_t i = 0; i < n; i++)
-            D->alphas[i] = logu(1e-4, 10);
+            D->alphas[i] = th_logu(1e-4, 10);
         o->alphas = D->alphas;
         o->n_alphas = n;
     }
-    if (chance(0.3)) {
+    if (th_chance(0.3)) {
         for (size_t i = 0; i < n; i++)
-            D->margins[i] = logu(1e-6, 1);
+            D->margins[i] = th_logu(1e-6, 1);
         o->margins = D->margins;
         o->n_margins = n;
     }
     /* user slopes sometimes: random, sign-valid at zero knots */
-    if (chance(0.25)) {
+    if (th_chance(0.25)) {
         double sc = V / H;
         for (size_t i = 0; i < np; i++) {
-            double d = uni(-3, 3) * sc * logu(1e-2, 1e2);
+            double d = th_range(-3, 3) * sc * th_logu(1e-2, 1e2);
             if (scheme == TS_SHAPE_POSITIVE && D->f[i] == 0)
                 d = i == 0 ? fabs(d) : i == n ? -fabs(d) : 0.0;
             D->us[i] = d;
@@ -666,7 +654,7 @@ static void control(const dataset *D, int scheme, stats *st)
     o.shape = TS_SHAPE_NONE;
     o.alphas = NULL;
     o.margins = NULL;
-    o.alpha = geo ? logu(TS_GEOMETRIC_A_MIN, 0.45) : logu(1e-4, 0.05);
+    o.alpha = geo ? th_logu(TS_GEOMETRIC_A_MIN, 0.45) : th_logu(1e-4, 0.05);
     o.beta = 0;
     ts_spline *s = NULL;
     if (ts_spline_new(D->x, D->f, D->n + 1, &o, &s, NULL) != TS_OK) {

@@ -28,6 +28,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include "th.h"
+#include "common/th_rng.h"
 #include "trigspline.h"
 
 #include <float.h>
@@ -57,64 +58,17 @@
 
 /* ---- random -------------------------------------------------------------- */
 
-static uint64_t rs = 0x2545F4914F6CDD1Dull;
-static uint64_t r64(void)
-{
-    rs ^= rs >> 12;
-    rs ^= rs << 25;
-    rs ^= rs >> 27;
-    return rs * 0x2545F4914F6CDD1Dull;
-}
-static double ru(void) /* [0, 1) */
-{
-    return (double)(r64() >> 11) / 9007199254740992.0;
-}
-static size_t rn(size_t n) /* [0, n) */
-{
-    return n ? (size_t)(r64() % n) : 0;
-}
-static int chance(double p)
-{
-    return ru() < p;
-}
-static double rlog(double lo, double hi) /* log-uniform in [lo, hi] */
-{
-    return lo * pow(hi / lo, ru());
-}
-
-/* Hostile doubles. */
-static double garbage(void)
-{
-    switch (rn(14)) {
-    case 0: return NAN;
-    case 1: return INFINITY;
-    case 2: return -INFINITY;
-    case 3: return chance(0.5) ? DBL_MAX : -DBL_MAX;
-    case 4: return ldexp((double)rn(1000) + 1.0, -1074);       /* subnormal */
-    case 5: return chance(0.5) ? DBL_MIN : -DBL_MIN;
-    case 6: return chance(0.5) ? 0.0 : -0.0;
-    case 7: return (chance(0.5) ? 1 : -1) * rlog(1e250, 1e308); /* huge */
-    case 8: return (chance(0.5) ? 1 : -1) * rlog(1e-320, 1e-250); /* tiny */
-    case 9: {
-        uint64_t b = r64();
-        double v;
-        memcpy(&v, &b, sizeof v);
-        return v;
-    }
-    case 10: return -1.0;
-    case 11: return 5e-324;
-    default: return ru() * 20.0 - 10.0;
-    }
-}
+/* th_rng.h: the default generator (seeded in main); th_hostile() gives the
+ * hostile doubles (NaN, infinities, extremes, subnormals, random bits). */
 
 /* A garbage int for an enum field (out of range or valid). */
 static int enum_val(int count)
 {
-    switch (rn(12)) {
+    switch (th_below(12)) {
     case 0: return count;
     case 1: return -1;
     case 2: return 1000;
-    default: return (int)rn((size_t)count);
+    default: return (int)th_below((size_t)count);
     }
 }
 
@@ -188,26 +142,26 @@ typedef struct sdata {
 
 static void gen_spline_data(sdata *D, int shape_hint)
 {
-    size_t np = chance(0.05) ? rn(3) : 2 + rn(chance(0.8) ? 12 : MAXP - 1);
+    size_t np = th_chance(0.05) ? th_below(3) : 2 + th_below(th_chance(0.8) ? 12 : MAXP - 1);
     D->np = np;
-    double x0 = chance(0.7) ? ru() * 10 - 5 : garbage();
+    double x0 = th_chance(0.7) ? th_unit() * 10 - 5 : th_hostile();
     if (!isfinite(x0))
         x0 = 0.0;
-    double step = chance(0.8) ? rlog(1e-3, 1e3) : rlog(1e-300, 1e300);
-    double fs = chance(0.8) ? rlog(1e-2, 1e2) : rlog(1e-300, 1e300);
-    double x = x0, acc = 0.0, sgn = chance(0.5) ? 1.0 : -1.0;
-    D->lo = (ts_line){(ru() - 0.5) * 2, ru() * 4 - 2};
-    D->up = (ts_line){D->lo.m + (chance(0.5) ? 0 : (ru() - 0.5)), D->lo.c + rlog(0.1, 10)};
+    double step = th_chance(0.8) ? th_logu(1e-3, 1e3) : th_logu(1e-300, 1e300);
+    double fs = th_chance(0.8) ? th_logu(1e-2, 1e2) : th_logu(1e-300, 1e300);
+    double x = x0, acc = 0.0, sgn = th_chance(0.5) ? 1.0 : -1.0;
+    D->lo = (ts_line){(th_unit() - 0.5) * 2, th_unit() * 4 - 2};
+    D->up = (ts_line){D->lo.m + (th_chance(0.5) ? 0 : (th_unit() - 0.5)), D->lo.c + th_logu(0.1, 10)};
     for (size_t i = 0; i < np; i++) {
         D->x[i] = x;
-        x += step * (chance(0.9) ? 0.1 + ru() : rlog(1e-6, 1e6));
+        x += step * (th_chance(0.9) ? 0.1 + th_unit() : th_logu(1e-6, 1e6));
         double v;
         switch (shape_hint) {
         case TS_SHAPE_POSITIVE:
-            v = chance(0.15) ? 0.0 : fs * ru() * ru();
+            v = th_chance(0.15) ? 0.0 : fs * th_unit() * th_unit();
             break;
         case TS_SHAPE_MONOTONE:
-            acc += chance(0.2) ? 0.0 : fs * ru();
+            acc += th_chance(0.2) ? 0.0 : fs * th_unit();
             v = sgn * acc;
             break;
         case TS_SHAPE_ABOVE:
@@ -215,29 +169,29 @@ static void gen_spline_data(sdata *D, int shape_hint)
         case TS_SHAPE_BETWEEN: {
             double L = D->lo.m * D->x[i] + D->lo.c, U = D->up.m * D->x[i] + D->up.c;
             if (shape_hint == TS_SHAPE_ABOVE)
-                v = L + fs * (1e-6 + ru());
+                v = L + fs * (1e-6 + th_unit());
             else if (shape_hint == TS_SHAPE_BELOW)
-                v = U - fs * (1e-6 + ru());
+                v = U - fs * (1e-6 + th_unit());
             else
-                v = L + (U - L) * (0.01 + 0.98 * ru());
+                v = L + (U - L) * (0.01 + 0.98 * th_unit());
             break;
         }
         default:
-            v = fs * (ru() * 2 - 1);
+            v = fs * (th_unit() * 2 - 1);
         }
         D->f[i] = v;
     }
     /* corruption */
-    if (np && chance(0.15)) {
-        size_t i = rn(np);
-        if (chance(0.5))
-            D->x[i] = garbage();
+    if (np && th_chance(0.15)) {
+        size_t i = th_below(np);
+        if (th_chance(0.5))
+            D->x[i] = th_hostile();
         else
-            D->f[i] = garbage();
+            D->f[i] = th_hostile();
     }
-    if (np > 1 && chance(0.05)) { /* duplicate or swap */
-        size_t i = 1 + rn(np - 1);
-        if (chance(0.5))
+    if (np > 1 && th_chance(0.05)) { /* duplicate or swap */
+        size_t i = 1 + th_below(np - 1);
+        if (th_chance(0.5))
             D->x[i] = D->x[i - 1];
         else {
             double t = D->x[i];
@@ -245,11 +199,11 @@ static void gen_spline_data(sdata *D, int shape_hint)
             D->x[i - 1] = t;
         }
     }
-    if (np && chance(0.05))
-        D->f[rn(np)] *= -1.0; /* breaks positivity / monotonicity */
-    if (chance(0.05)) {
-        D->lo.m = garbage();
-        D->up.c = garbage();
+    if (np && th_chance(0.05))
+        D->f[th_below(np)] *= -1.0; /* breaks positivity / monotonicity */
+    if (th_chance(0.05)) {
+        D->lo.m = th_hostile();
+        D->up.c = th_hostile();
     }
 }
 
@@ -462,7 +416,7 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
         }
     }
     /* reports */
-    for (size_t i = 0; i <= n; i += 1 + rn(4)) {
+    for (size_t i = 0; i <= n; i += 1 + th_below(4)) {
         ts_interval_report r;
         ts_status st = ts_spline_report(s, i, &r);
         CHECK(in_set(st, SET_INDEXED) && (i < n ? st == TS_OK : st == TS_ERR_INDEX));
@@ -479,11 +433,11 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
     ts_status sq[NQ];
     double x0 = xs[0], xn = xs[n], w = xn - x0;
     ts_extrap ex = ts_spline_extrapolation(s);
-    ts_cursor cur = {rn(3) ? rn(n + 3) : (size_t)-1}; /* even a stale cursor is fine */
+    ts_cursor cur = {th_below(3) ? th_below(n + 3) : (size_t)-1}; /* even a stale cursor is fine */
     for (int j = 0; j < NQ; j++) {
-        q[j] = chance(0.7) ? x0 + w * ru() : chance(0.5) ? x0 + w * (ru() * 3 - 1) : garbage();
+        q[j] = th_chance(0.7) ? x0 + w * th_unit() : th_chance(0.5) ? x0 + w * (th_unit() * 3 - 1) : th_hostile();
         double y, dy, d2y;
-        ts_status st = ts_eval_deriv(s, q[j], chance(0.5) ? &cur : NULL, &y, &dy, &d2y);
+        ts_status st = ts_eval_deriv(s, q[j], th_chance(0.5) ? &cur : NULL, &y, &dy, &d2y);
         sq[j] = st;
         CHECK(in_set(st, SET_EVAL));
         int valid = !isnan(q[j]) &&
@@ -495,9 +449,9 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
         else if (x0 <= q[j] && q[j] <= xn && finite)
             CHECKF(isfinite(y), "S(%.17g) = %g inside the data", q[j], y);
     }
-    int deriv = chance(0.9) ? (int)rn(3) : (chance(0.5) ? 3 : -1);
+    int deriv = th_chance(0.9) ? (int)th_below(3) : (th_chance(0.5) ? 3 : -1);
     ts_error e;
-    ts_status stb = ts_eval_batch(s, deriv, q, NQ, yb, chance(0.5) ? &cur : NULL, &e);
+    ts_status stb = ts_eval_batch(s, deriv, q, NQ, yb, th_chance(0.5) ? &cur : NULL, &e);
     CHECK(in_set(stb, SET_BATCH));
     if (deriv < 0 || deriv > 2) {
         CHECK(stb == TS_ERR_OPTION);
@@ -525,10 +479,10 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
     }
     /* ts_certify with random lines */
     {
-        ts_line a = {chance(0.9) ? ru() - 0.5 : garbage(), chance(0.9) ? ru() * 4 - 2 : garbage()};
+        ts_line a = {th_chance(0.9) ? th_unit() - 0.5 : th_hostile(), th_chance(0.9) ? th_unit() * 4 - 2 : th_hostile()};
         ts_line b = {a.m, a.c + 1};
-        ts_interval_report *rep = chance(0.5) ? malloc(n * sizeof *rep) : NULL;
-        int which = (int)rn(4);
+        ts_interval_report *rep = th_chance(0.5) ? malloc(n * sizeof *rep) : NULL;
+        int which = (int)th_below(4);
         ts_status st = ts_certify(s, which & 1 ? &a : NULL, which & 2 ? &b : NULL, rep, &e);
         CHECK(in_set(st, SET_CERTIFY) && real_message(st) && err_ok(&e, st, np, n));
         CHECK(which != 0 || st == TS_ERR_NULL);
@@ -538,9 +492,9 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
     }
     /* error bound (crash safety and statuses only) */
     {
-        double bound, *per = chance(0.5) ? malloc(n * sizeof *per) : NULL;
-        ts_status st = ts_error_bound(s, chance(0.8) ? rlog(1e-3, 1e3) : garbage(),
-                                      chance(0.8) ? rlog(1e-3, 1e3) : garbage(), (int)rn(2),
+        double bound, *per = th_chance(0.5) ? malloc(n * sizeof *per) : NULL;
+        ts_status st = ts_error_bound(s, th_chance(0.8) ? th_logu(1e-3, 1e3) : th_hostile(),
+                                      th_chance(0.8) ? th_logu(1e-3, 1e3) : th_hostile(), (int)th_below(2),
                                       &bound, per);
         CHECK(in_set(st, SET_BOUND));
         if (st != TS_OK)
@@ -582,54 +536,54 @@ static void fuzz_splines(void)
 {
     sdata D;
     for (int it = 0; it < N_SPLINE; it++) {
-        int hint = (int)rn(6);
+        int hint = (int)th_below(6);
         gen_spline_data(&D, hint);
         size_t np = D.np, n = np ? np - 1 : 0;
         ts_options o;
         ts_options_init(&o);
-        o.form = (ts_form)(chance(0.9) ? (int)rn(3) : enum_val(3));
-        o.slopes = (ts_slopes)(chance(0.9) ? (int)rn(TS_SLOPES_COUNT_) : enum_val(TS_SLOPES_COUNT_));
-        o.shape = (ts_shape)(chance(0.7) ? hint : chance(0.9) ? (int)rn(6) : enum_val(6));
-        o.extrapolate = (ts_extrap)(chance(0.9) ? (int)rn(4) : enum_val(4));
-        o.alpha = chance(0.85) ? rlog(1e-3, 10) : garbage();
-        o.beta = chance(0.85) ? (chance(0.3) ? 0.0 : rlog(1e-3, 10)) : garbage();
-        o.margin = chance(0.9) ? rlog(1e-6, 1) : garbage();
-        o.certify = (int)rn(3);
+        o.form = (ts_form)(th_chance(0.9) ? (int)th_below(3) : enum_val(3));
+        o.slopes = (ts_slopes)(th_chance(0.9) ? (int)th_below(TS_SLOPES_COUNT_) : enum_val(TS_SLOPES_COUNT_));
+        o.shape = (ts_shape)(th_chance(0.7) ? hint : th_chance(0.9) ? (int)th_below(6) : enum_val(6));
+        o.extrapolate = (ts_extrap)(th_chance(0.9) ? (int)th_below(4) : enum_val(4));
+        o.alpha = th_chance(0.85) ? th_logu(1e-3, 10) : th_hostile();
+        o.beta = th_chance(0.85) ? (th_chance(0.3) ? 0.0 : th_logu(1e-3, 10)) : th_hostile();
+        o.margin = th_chance(0.9) ? th_logu(1e-6, 1) : th_hostile();
+        o.certify = (int)th_below(3);
         o.lower = D.lo;
         o.upper = D.up;
-        if (o.slopes == TS_SLOPES_PERIODIC && np && chance(0.7))
+        if (o.slopes == TS_SLOPES_PERIODIC && np && th_chance(0.7))
             D.f[np - 1] = D.f[0];
-        if (chance(0.15)) {
-            size_t len = chance(0.9) ? n : n + 1;
+        if (th_chance(0.15)) {
+            size_t len = th_chance(0.9) ? n : n + 1;
             for (size_t i = 0; i < len; i++)
-                D.alphas[i] = chance(0.97) ? rlog(1e-3, 10) : garbage();
+                D.alphas[i] = th_chance(0.97) ? th_logu(1e-3, 10) : th_hostile();
             o.alphas = D.alphas;
             o.n_alphas = len;
         }
-        if (chance(0.15)) {
-            size_t len = chance(0.9) ? n : n + 1;
+        if (th_chance(0.15)) {
+            size_t len = th_chance(0.9) ? n : n + 1;
             for (size_t i = 0; i < len; i++)
-                D.betas[i] = chance(0.97) ? rlog(1e-3, 10) : garbage();
+                D.betas[i] = th_chance(0.97) ? th_logu(1e-3, 10) : th_hostile();
             o.betas = D.betas;
             o.n_betas = len;
         }
-        if (chance(0.1)) {
-            size_t len = chance(0.9) ? n : 0;
+        if (th_chance(0.1)) {
+            size_t len = th_chance(0.9) ? n : 0;
             for (size_t i = 0; i < len; i++)
-                D.margins[i] = chance(0.97) ? rlog(1e-6, 1) : garbage();
+                D.margins[i] = th_chance(0.97) ? th_logu(1e-6, 1) : th_hostile();
             o.margins = D.margins;
             o.n_margins = len;
         }
-        if (o.slopes == TS_SLOPES_USER && chance(0.95)) {
-            size_t len = chance(0.9) ? np : n;
+        if (o.slopes == TS_SLOPES_USER && th_chance(0.95)) {
+            size_t len = th_chance(0.9) ? np : n;
             for (size_t i = 0; i < len; i++)
-                D.user[i] = chance(0.97) ? (ru() - 0.5) * 10 : garbage();
+                D.user[i] = th_chance(0.97) ? (th_unit() - 0.5) * 10 : th_hostile();
             o.user_slopes = D.user;
             o.n_user_slopes = len;
         }
         ts_spline *s = (ts_spline *)&D; /* must be overwritten with NULL */
         ts_error e;
-        int use_opt = !chance(0.03);
+        int use_opt = !th_chance(0.03);
         ts_status st = ts_spline_new(D.x, D.f, np, use_opt ? &o : NULL, &s, &e);
         CHECK(in_set(st, SET_SPLINE_NEW) && real_message(st));
         CHECKF(err_ok(&e, st, np, n), "status %d err {%d, %zu, %d}", (int)st, (int)e.status,
@@ -665,8 +619,8 @@ static void fuzz_splines(void)
 
         /* ts_slopes_compute on the same data */
         double d[MAXP];
-        ts_slopes m = (ts_slopes)(chance(0.9) ? (int)rn(TS_SLOPES_COUNT_) : enum_val(8));
-        st = ts_slopes_compute(m, chance(0.02) ? NULL : D.x, D.f, np, d, &e);
+        ts_slopes m = (ts_slopes)(th_chance(0.9) ? (int)th_below(TS_SLOPES_COUNT_) : enum_val(8));
+        st = ts_slopes_compute(m, th_chance(0.02) ? NULL : D.x, D.f, np, d, &e);
         CHECK(in_set(st, SET_SLOPES) && err_ok(&e, st, np, n));
         int all_nan = 1, all_fin = 1;
         for (size_t i = 0; i < np; i++) {
@@ -684,47 +638,47 @@ static void fuzz_curves(void)
 {
     double pts[MAXP * 4], alphas[MAXP + 1], betas[MAXP + 1];
     for (int it = 0; it < N_CURVE; it++) {
-        size_t dim = chance(0.95) ? 2 + rn(2) : rn(5);
-        size_t np = chance(0.05) ? rn(3) : 2 + rn(chance(0.8) ? 10 : 30);
+        size_t dim = th_chance(0.95) ? 2 + th_below(2) : th_below(5);
+        size_t np = th_chance(0.05) ? th_below(3) : 2 + th_below(th_chance(0.8) ? 10 : 30);
         size_t stride = dim ? dim : 1;
-        double sc = chance(0.85) ? rlog(1e-3, 1e3) : rlog(1e-300, 1e300);
+        double sc = th_chance(0.85) ? th_logu(1e-3, 1e3) : th_logu(1e-300, 1e300);
         double p[4] = {0, 0, 0, 0};
         for (size_t i = 0; i < np; i++)
             for (size_t k = 0; k < stride; k++) {
-                p[k] += sc * (ru() * 2 - 1);
-                pts[i * stride + k] = chance(0.3) ? sc * (ru() * 2 - 1) : p[k];
+                p[k] += sc * (th_unit() * 2 - 1);
+                pts[i * stride + k] = th_chance(0.3) ? sc * (th_unit() * 2 - 1) : p[k];
             }
-        if (np && chance(0.1))
-            pts[rn(np * stride)] = garbage();
-        if (np > 1 && chance(0.05)) { /* a repeated point */
-            size_t i = 1 + rn(np - 1);
+        if (np && th_chance(0.1))
+            pts[th_below(np * stride)] = th_hostile();
+        if (np > 1 && th_chance(0.05)) { /* a repeated point */
+            size_t i = 1 + th_below(np - 1);
             memcpy(pts + i * stride, pts + (i - 1) * stride, stride * sizeof(double));
         }
         ts_curve_options co;
         ts_curve_options_init(&co);
-        co.param = (ts_param)(chance(0.9) ? (int)rn(3) : enum_val(3));
-        co.closed = (int)rn(2);
-        if (co.closed && np > 2 && chance(0.5)) /* first point repeated at the end */
+        co.param = (ts_param)(th_chance(0.9) ? (int)th_below(3) : enum_val(3));
+        co.closed = (int)th_below(2);
+        if (co.closed && np > 2 && th_chance(0.5)) /* first point repeated at the end */
             memcpy(pts + (np - 1) * stride, pts, stride * sizeof(double));
-        co.slopes = (ts_slopes)(chance(0.9) ? (int)rn(TS_SLOPES_COUNT_) : enum_val(8));
-        co.alpha = chance(0.9) ? rlog(1e-2, 10) : garbage();
-        co.beta = chance(0.9) ? (chance(0.5) ? 0 : rlog(1e-3, 10)) : garbage();
+        co.slopes = (ts_slopes)(th_chance(0.9) ? (int)th_below(TS_SLOPES_COUNT_) : enum_val(8));
+        co.alpha = th_chance(0.9) ? th_logu(1e-2, 10) : th_hostile();
+        co.beta = th_chance(0.9) ? (th_chance(0.5) ? 0 : th_logu(1e-3, 10)) : th_hostile();
         size_t seg = co.closed ? np : (np ? np - 1 : 0);
-        if (chance(0.1)) {
-            size_t len = chance(0.7) ? seg : seg + 1;
+        if (th_chance(0.1)) {
+            size_t len = th_chance(0.7) ? seg : seg + 1;
             for (size_t i = 0; i < len && i <= MAXP; i++)
-                alphas[i] = chance(0.95) ? rlog(1e-2, 10) : garbage();
+                alphas[i] = th_chance(0.95) ? th_logu(1e-2, 10) : th_hostile();
             co.alphas = alphas;
             co.n_alphas = len;
         }
-        if (chance(0.1)) {
-            size_t len = chance(0.7) ? seg : seg + 1;
+        if (th_chance(0.1)) {
+            size_t len = th_chance(0.7) ? seg : seg + 1;
             for (size_t i = 0; i < len && i <= MAXP; i++)
-                betas[i] = chance(0.95) ? rlog(1e-3, 10) : garbage();
+                betas[i] = th_chance(0.95) ? th_logu(1e-3, 10) : th_hostile();
             co.betas = betas;
             co.n_betas = len;
         }
-        int box = chance(0.4);
+        int box = th_chance(0.4);
         if (box) {
             for (size_t k = 0; k < 3 && k < stride; k++) {
                 double mn = INFINITY, mx = -INFINITY;
@@ -732,17 +686,17 @@ static void fuzz_curves(void)
                     mn = fmin(mn, pts[i * stride + k]);
                     mx = fmax(mx, pts[i * stride + k]);
                 }
-                double pad = chance(0.5) ? (mx - mn) * rlog(1e-4, 1) : sc * 1e-9;
-                co.has_lo[k] = chance(0.7);
-                co.has_hi[k] = chance(0.7);
-                co.lo[k] = chance(0.97) ? mn - pad : garbage();
-                co.hi[k] = chance(0.97) ? mx + pad : garbage();
+                double pad = th_chance(0.5) ? (mx - mn) * th_logu(1e-4, 1) : sc * 1e-9;
+                co.has_lo[k] = th_chance(0.7);
+                co.has_hi[k] = th_chance(0.7);
+                co.lo[k] = th_chance(0.97) ? mn - pad : th_hostile();
+                co.hi[k] = th_chance(0.97) ? mx + pad : th_hostile();
             }
-            co.margin = chance(0.95) ? rlog(1e-6, 1) : garbage();
+            co.margin = th_chance(0.95) ? th_logu(1e-6, 1) : th_hostile();
         }
         ts_curve *c = (ts_curve *)pts;
         ts_error e;
-        int use_opt = !chance(0.03);
+        int use_opt = !th_chance(0.03);
         ts_status st = ts_curve_new(pts, np, dim, use_opt ? &co : NULL, &c, &e);
         CHECK(in_set(st, SET_CURVE_NEW) && real_message(st));
         CHECKF(err_ok(&e, st, np, np + 1), "curve status %d err {%d, %zu, %d}", (int)st,
@@ -816,7 +770,7 @@ static void fuzz_curves(void)
             CHECKF(sc2 == TS_OK, "curve with a box not certified: %s at %zu", ts_strerror(sc2),
                    e.index);
         }
-        size_t rows = 0, m = 2 + rn(6);
+        size_t rows = 0, m = 2 + th_below(6);
         ts_status ss = ts_curve_sample(c, m, NULL, 0, &rows);
         CHECK(in_set(ss, SET_SAMPLE) && ss == TS_ERR_LENGTH && rows == n * (m - 1) + 1);
         double *buf = malloc(rows * (1 + dim) * sizeof *buf);
@@ -840,7 +794,7 @@ static void fuzz_curves(void)
             free(buf);
         }
         CHECK(ts_curve_sample(c, 1, NULL, 0, &rows) == TS_ERR_OPTION && rows == 0);
-        double len, tol = chance(0.8) ? rlog(1e-14, 1e-3) : garbage();
+        double len, tol = th_chance(0.8) ? th_logu(1e-14, 1e-3) : th_hostile();
         ts_status sl = ts_curve_length(c, tol, &len);
         CHECKF(sl == TS_OK && len >= 0, "curve length %g", len);
         if (!(sl == TS_OK && len >= 0)) {
@@ -850,9 +804,9 @@ static void fuzz_curves(void)
             dump_doubles("pts", pts, np * stride);
         }
         for (int j = 0; j < 6; j++) {
-            double tt = chance(0.7) ? t[n] * (ru() * 1.4 - 0.2) : garbage(), P[3], dP[3], d2P[3];
-            ts_cursor cur = {rn(n + 2)};
-            ts_status se = ts_curve_eval(c, tt, chance(0.5) ? &cur : NULL, P, dP, d2P);
+            double tt = th_chance(0.7) ? t[n] * (th_unit() * 1.4 - 0.2) : th_hostile(), P[3], dP[3], d2P[3];
+            ts_cursor cur = {th_below(n + 2)};
+            ts_status se = ts_curve_eval(c, tt, th_chance(0.5) ? &cur : NULL, P, dP, d2P);
             CHECK(in_set(se, SET_EVAL));
             int valid = isfinite(tt) && (ts_curve_closed(c) || (t[0] <= tt && tt <= t[n]));
             CHECKF(valid == (se == TS_OK), "curve t %.17g: status %d", tt, (int)se);
@@ -860,10 +814,10 @@ static void fuzz_curves(void)
                 CHECK(isnan(P[0]) && isnan(dP[0]) && isnan(d2P[0]));
         }
         {
-            int hl[3] = {(int)rn(2), (int)rn(2), (int)rn(2)}, hh[3] = {(int)rn(2), (int)rn(2), 1};
-            double lo[3] = {garbage(), -1e300, -1}, hi[3] = {1e300, garbage(), 1};
-            ts_interval_report *rep = chance(0.5) ? malloc(n * dim * sizeof *rep) : NULL;
-            int which = (int)rn(4);
+            int hl[3] = {(int)th_below(2), (int)th_below(2), (int)th_below(2)}, hh[3] = {(int)th_below(2), (int)th_below(2), 1};
+            double lo[3] = {th_hostile(), -1e300, -1}, hi[3] = {1e300, th_hostile(), 1};
+            ts_interval_report *rep = th_chance(0.5) ? malloc(n * dim * sizeof *rep) : NULL;
+            int which = (int)th_below(4);
             ts_status sb = ts_curve_certify_box(c, which & 1 ? hl : NULL, which & 1 ? lo : NULL,
                                                 which & 2 ? hh : NULL, which & 2 ? hi : NULL,
                                                 rep, &e);
@@ -877,8 +831,7 @@ static void fuzz_curves(void)
 int main(void)
 {
     const char *seed = getenv("TS_FUZZ_SEED"); /* exploring other seeds by hand */
-    if (seed)
-        rs = strtoull(seed, NULL, 10) * 2 + 1;
+    th_seed(seed ? strtoull(seed, NULL, 10) : 0x2545F4914F6CDD1Du);
     fuzz_splines();
     fuzz_curves();
     /* the test exercised success paths, not only errors */

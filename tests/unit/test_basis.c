@@ -13,6 +13,7 @@
  * rounding error <= 4ε·M0/h when each f is computed to within 4 ulp of M0.
  */
 #include "th.h"
+#include "common/th_rng.h"
 #include "internal.h"
 
 #include <float.h>
@@ -256,14 +257,13 @@ int main(void)
      * (any θ).  FD of S' (h = 1e-5): h²/6·max|S''''| + 4ε·max|S'|/h with
      * max|S''''| <= 4·M4·max|B|, max|S'| <= 4·M1·max|B|. */
     {
-        unsigned seed = 12345u;
+        th_rng gen = TH_RNG_INIT(12345u);
         int ok0 = 1, ok1 = 1, ok2 = 1, okw = 1;
         double w0 = 0, w1 = 0, w2 = 0;
         for (int trial = 0; trial < 300; trial++) {
             double B[4], mb = 0;
             for (int l = 0; l < 4; l++) {
-                seed = seed * 1103515245u + 12345u;
-                B[l] = ((double)(seed >> 8) / 16777216.0 - 0.5) * 20.0;
+                B[l] = th_rng_range(&gen, -10.0, 10.0);
                 if (fabs(B[l]) > mb)
                     mb = fabs(B[l]);
             }

@@ -3,6 +3,7 @@
  * gaps against dense sampling of ts_eval; ts_certify, ts_spline_report,
  * ts_spline_certified and their error paths. */
 #include "th.h"
+#include "common/th_rng.h"
 #include "trigspline.h"
 #include "internal.h"
 
@@ -14,15 +15,6 @@
 #define EPS DBL_EPSILON
 static const double HALF_PI = 1.57079632679489661923;
 
-static unsigned long long rng_state = 0x9E3779B97F4A7C15ULL;
-static double urand(void) /* [0, 1) xorshift64* */
-{
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return (double)((rng_state * 2685821657736338717ULL) >> 11) * 0x1.0p-53;
-}
-static double uni(double a, double b) { return a + (b - a) * urand(); }
 
 /* g(θ) from SPEC §2 written out with libm sin/cos (not certify.c's form) */
 static double g_ref(const double C[4], double k, double th)
@@ -115,10 +107,10 @@ static void test_closed_forms(void)
 static void test_scaling(void)
 {
     for (int r = 0; r < 200; r++) {
-        double C[4], k = uni(-2, 2), th0, th1, Cs[4];
+        double C[4], k = th_range(-2, 2), th0, th1, Cs[4];
         for (int l = 0; l < 4; l++)
-            C[l] = uni(-1, 1);
-        int e = (int)uni(-900, 900);
+            C[l] = th_range(-1, 1);
+        int e = (int)th_range(-900, 900);
         for (int l = 0; l < 4; l++)
             Cs[l] = ldexp(C[l], e);
         double v0 = ts__trig_min(C, k, &th0);
@@ -170,21 +162,21 @@ static void test_brute(void)
     int fails = 0;
     for (int r = 0; r < 3000; r++) {
         double C[4], k, th;
-        double sc = pow(10.0, uni(-6, 6));
+        double sc = pow(10.0, th_range(-6, 6));
         int kind = r % 4;
         for (int l = 0; l < 4; l++)
-            C[l] = uni(-1, 1) * sc;
+            C[l] = th_range(-1, 1) * sc;
         if (kind == 1) { /* near-constant: tiny differences on a big offset */
             for (int l = 0; l < 4; l++)
-                C[l] = sc * (1 + 1e-9 * uni(-1, 1));
+                C[l] = sc * (1 + 1e-9 * th_range(-1, 1));
         } else if (kind == 2) { /* spline-like, positive and small slopes */
-            double f0 = uni(0.01, 1) * sc, f1 = uni(0.01, 1) * sc;
+            double f0 = th_range(0.01, 1) * sc, f1 = th_range(0.01, 1) * sc;
             C[0] = f0;
-            C[1] = f0 + uni(-1, 1) * sc;
-            C[2] = f1 - uni(-1, 1) * sc;
+            C[1] = f0 + th_range(-1, 1) * sc;
+            C[2] = f1 - th_range(-1, 1) * sc;
             C[3] = f1;
         }
-        k = (r % 3 == 0) ? 0.0 : uni(-3, 3) * sc;
+        k = (r % 3 == 0) ? 0.0 : th_range(-3, 3) * sc;
         double v = ts__trig_min(C, k, &th);
         double dmin = INFINITY;
         for (int j = 0; j <= N; j++) {

@@ -47,6 +47,7 @@
  * ts_eval_batch / ts_eval_batch_mt against the kernel.
  */
 #include "th.h"
+#include "common/th_rng.h"
 #include "trigspline.h"
 #include "internal.h"
 
@@ -74,14 +75,6 @@
 #define TOL2 1600.0
 #define NREF 8 /* long-double check on every NREF-th query */
 
-static uint64_t rng = 0x243F6A8885A308D3u;
-static double urand(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return (double)(rng >> 11) * 0x1p-53;
-}
 
 /* Long-double S^(k) at θ of control values B (SPEC §2, (2.1)); derivatives in θ. */
 static long double ref_theta(const double B[4], long double th, int k)
@@ -131,14 +124,14 @@ static ts_spline *random_spline(size_t np, int kind, int form)
     }
     x[0] = kind == 2 ? 1e6 : -3.0;
     for (size_t i = 1; i < np; i++)
-        x[i] = x[i - 1] + (kind == 1 ? pow(10.0, -3.0 + 6.0 * urand()) : 0.2 + urand());
+        x[i] = x[i - 1] + (kind == 1 ? pow(10.0, -3.0 + 6.0 * th_unit()) : 0.2 + th_unit());
     for (size_t i = 0; i < np; i++) {
         double base = kind == 2 ? 1e6 : kind == 3 ? -500.0 : 0.0;
-        f[i] = base + (kind == 2 ? 1e-3 : 10.0) * (urand() - 0.5);
-        d[i] = (kind == 3 ? 1e4 : 5.0) * (urand() - 0.5);
+        f[i] = base + (kind == 2 ? 1e-3 : 10.0) * (th_unit() - 0.5);
+        d[i] = (kind == 3 ? 1e4 : 5.0) * (th_unit() - 0.5);
     }
     for (size_t i = 0; i + 1 < np; i++)
-        al[i] = pow(10.0, -2.0 + 4.0 * urand());
+        al[i] = pow(10.0, -2.0 + 4.0 * th_unit());
     ts_options o;
     ts_options_init(&o);
     o.form = form ? TS_FORM_C1 : TS_FORM_PAPER;
@@ -274,7 +267,7 @@ static void accuracy(void)
             printf("test_fast: kernel %d not available on this CPU (skipped)\n", isa);
     }
     CHECK(have[0]); /* the portable kernel always exists */
-    rng = 0x243F6A8885A308D3u;
+    th_seed(0x243F6A8885A308D3u);
     for (int kind = 0; kind < 6; kind++) {
         ts_spline *s = random_spline(kind == 5 ? 20001 : 201, kind % 4, kind >= 4);
         if (!s)
@@ -289,9 +282,9 @@ static void accuracy(void)
             }
             for (size_t j = 0; j < per; j++) {
                 if (j % 97 == 0) /* knots exactly: the right-hand interval */
-                    Q.q[j] = X[(size_t)(urand() * (double)(n + 1)) % (n + 1)];
+                    Q.q[j] = X[(size_t)(th_unit() * (double)(n + 1)) % (n + 1)];
                 else
-                    Q.q[j] = X[0] + (X[n] - X[0]) * urand();
+                    Q.q[j] = X[0] + (X[n] - X[0]) * th_unit();
             }
             if (sorted)
                 qsort(Q.q, per, sizeof *Q.q, cmp_double);
@@ -339,9 +332,9 @@ static ts_spline *small_spline(size_t np, ts_form form)
     }
     x[0] = -1.0;
     for (size_t i = 1; i < np; i++)
-        x[i] = x[i - 1] + 0.1 + urand();
+        x[i] = x[i - 1] + 0.1 + th_unit();
     for (size_t i = 0; i < np; i++)
-        f[i] = 3.0 + 2.0 * sin(x[i]) + urand();
+        f[i] = 3.0 + 2.0 * sin(x[i]) + th_unit();
     ts_options o;
     ts_options_init(&o);
     o.form = form;
@@ -367,7 +360,7 @@ static int close_value(const ts_spline *s, double x, double a, double b)
 
 static void structure(void)
 {
-    rng = 0x9E3779B97F4A7C15u;
+    th_seed(0x9E3779B97F4A7C15u);
     ts_spline *s = small_spline(301, TS_FORM_PAPER);
     if (!s)
         return;
@@ -437,7 +430,7 @@ static void structure(void)
     }
     /* an unsorted block with a NaN: stops before it; a NaN first: nothing */
     for (size_t j = 0; j < M; j++)
-        q[j] = X[0] + (X[n] - X[0]) * urand();
+        q[j] = X[0] + (X[n] - X[0]) * th_unit();
     q[200] = NAN;
     CHECK(ts__fast_batch(s, 0, q, M, y, NULL) == 128);
     q[0] = NAN;
@@ -447,7 +440,7 @@ static void structure(void)
      * valid queries (one kernel), for every derivative and query order */
     for (int order = 0; order < 3; order++) {
         for (size_t j = 0; j < M; j++)
-            q[j] = X[0] + (X[n] - X[0]) * urand();
+            q[j] = X[0] + (X[n] - X[0]) * th_unit();
         if (order == 1)
             qsort(q, M, sizeof *q, cmp_double);
         if (order == 2) { /* descending */
@@ -477,7 +470,7 @@ static void structure(void)
         X = ts_spline_x(s);
         n = ts_spline_intervals(s);
         for (size_t j = 0; j < M; j++)
-            q[j] = X[0] + (X[n] - X[0]) * urand() * urand(); /* dense near x0, sparse later */
+            q[j] = X[0] + (X[n] - X[0]) * th_unit() * th_unit(); /* dense near x0, sparse later */
         qsort(q, M, sizeof *q, cmp_double);
         ts_cursor c = {n - 1}; /* ahead of the first query: searched back */
         CHECK(ts__fast_batch(s, 0, q, M, y, &c) == M);
@@ -518,7 +511,7 @@ static void structure(void)
     X = ts_spline_x(s);
     n = ts_spline_intervals(s);
     for (size_t j = 0; j < M; j++)
-        q[j] = X[0] + (X[n] - X[0]) * urand();
+        q[j] = X[0] + (X[n] - X[0]) * th_unit();
     double keep = q[700];
     for (int deriv = 0; deriv <= 2; deriv++) {
         ts_cursor c = TS_CURSOR_INIT;

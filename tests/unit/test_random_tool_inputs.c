@@ -15,6 +15,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include "th.h"
+#include "common/th_rng.h"
 #include "ts_io.h"
 #include "ts_plot.h"
 
@@ -44,64 +45,17 @@
 
 /* ---- random -------------------------------------------------------------- */
 
-static uint64_t rs = 0x2545F4914F6CDD1Dull;
-static uint64_t r64(void)
-{
-    rs ^= rs >> 12;
-    rs ^= rs << 25;
-    rs ^= rs >> 27;
-    return rs * 0x2545F4914F6CDD1Dull;
-}
-static double ru(void) /* [0, 1) */
-{
-    return (double)(r64() >> 11) / 9007199254740992.0;
-}
-static size_t rn(size_t n) /* [0, n) */
-{
-    return n ? (size_t)(r64() % n) : 0;
-}
-static int chance(double p)
-{
-    return ru() < p;
-}
-static double rlog(double lo, double hi) /* log-uniform in [lo, hi] */
-{
-    return lo * pow(hi / lo, ru());
-}
-
-/* Hostile doubles. */
-static double garbage(void)
-{
-    switch (rn(14)) {
-    case 0: return NAN;
-    case 1: return INFINITY;
-    case 2: return -INFINITY;
-    case 3: return chance(0.5) ? DBL_MAX : -DBL_MAX;
-    case 4: return ldexp((double)rn(1000) + 1.0, -1074);       /* subnormal */
-    case 5: return chance(0.5) ? DBL_MIN : -DBL_MIN;
-    case 6: return chance(0.5) ? 0.0 : -0.0;
-    case 7: return (chance(0.5) ? 1 : -1) * rlog(1e250, 1e308); /* huge */
-    case 8: return (chance(0.5) ? 1 : -1) * rlog(1e-320, 1e-250); /* tiny */
-    case 9: {
-        uint64_t b = r64();
-        double v;
-        memcpy(&v, &b, sizeof v);
-        return v;
-    }
-    case 10: return -1.0;
-    case 11: return 5e-324;
-    default: return ru() * 20.0 - 10.0;
-    }
-}
+/* th_rng.h: the default generator (seeded in main); th_hostile() gives the
+ * hostile doubles (NaN, infinities, extremes, subnormals, random bits). */
 
 /* A garbage int for an enum field (out of range or valid). */
 static int enum_val(int count)
 {
-    switch (rn(12)) {
+    switch (th_below(12)) {
     case 0: return count;
     case 1: return -1;
     case 2: return 1000;
-    default: return (int)rn((size_t)count);
+    default: return (int)th_below((size_t)count);
     }
 }
 
@@ -116,40 +70,40 @@ static const char alphabet[] = "0123456789012345.,,-+eE  \t\r\n\n#nanif\"xa\xef\
 static size_t gen_bytes(char *b, size_t cap)
 {
     size_t len = 0;
-    if (chance(0.5)) { /* a valid table, then mutations */
-        size_t rows = 1 + rn(6), cols = 1 + rn(3);
-        int delim = (int)rn(3);
+    if (th_chance(0.5)) { /* a valid table, then mutations */
+        size_t rows = 1 + th_below(6), cols = 1 + th_below(3);
+        int delim = (int)th_below(3);
         const char dc = delim == 0 ? ',' : delim == 1 ? '\t' : ' ';
-        if (chance(0.3))
+        if (th_chance(0.3))
             len += (size_t)snprintf(b + len, cap - len, "x%cy%cz\n", dc, dc);
         for (size_t r = 0; r < rows && len + 80 < cap; r++) {
             for (size_t c = 0; c < cols; c++) {
                 char nb[TS_FMT_SIZE];
-                size_t l = ts_format_double(chance(0.9) ? ru() * 200 - 100 : garbage(), nb);
+                size_t l = ts_format_double(th_chance(0.9) ? th_unit() * 200 - 100 : th_hostile(), nb);
                 memcpy(b + len, nb, l);
                 len += l;
-                b[len++] = c + 1 < cols ? dc : (chance(0.2) ? '\r' : '\n');
+                b[len++] = c + 1 < cols ? dc : (th_chance(0.2) ? '\r' : '\n');
                 if (b[len - 1] == '\r')
                     b[len++] = '\n';
             }
         }
-        for (int k = (int)rn(4); k > 0 && len; k--) {
-            size_t i = rn(len);
-            switch (rn(3)) {
-            case 0: b[i] = alphabet[rn(sizeof alphabet - 1)]; break;
+        for (int k = (int)th_below(4); k > 0 && len; k--) {
+            size_t i = th_below(len);
+            switch (th_below(3)) {
+            case 0: b[i] = alphabet[th_below(sizeof alphabet - 1)]; break;
             case 1: memmove(b + i, b + i + 1, len - i - 1), len--; break;
             default:
                 if (len + 1 < cap) {
                     memmove(b + i + 1, b + i, len - i);
-                    b[i] = (char)(chance(0.9) ? alphabet[rn(sizeof alphabet - 1)] : (char)r64());
+                    b[i] = (char)(th_chance(0.9) ? alphabet[th_below(sizeof alphabet - 1)] : (char)th_u64());
                     len++;
                 }
             }
         }
     } else {
-        len = rn(cap < 300 ? cap : 300);
+        len = th_below(cap < 300 ? cap : 300);
         for (size_t i = 0; i < len; i++)
-            b[i] = chance(0.95) ? alphabet[rn(sizeof alphabet - 1)] : (char)r64();
+            b[i] = th_chance(0.95) ? alphabet[th_below(sizeof alphabet - 1)] : (char)th_u64();
     }
     return len;
 }
@@ -173,13 +127,13 @@ static void fuzz_tables(void)
         size_t len = gen_bytes(b, sizeof b);
         ts_read_options ro;
         ts_read_options_init(&ro);
-        ro.delim = (ts_delim)(chance(0.9) ? (int)rn(4) : enum_val(4));
-        ro.header = (ts_header)(chance(0.9) ? (int)rn(3) : enum_val(3));
-        ro.ncols = chance(0.7) ? 0 : rn(5);
-        ro.max_line = chance(0.5) ? TS_IO_MAX_LINE : chance(0.9) ? 16 + rn(100) : rn(16);
-        ro.buffer_size = chance(0.5) ? TS_IO_BUFFER : chance(0.9) ? 16 + rn(64) : rn(16);
-        ro.track_lines = (int)rn(2);
-        const ts_read_options *op = chance(0.95) ? &ro : NULL;
+        ro.delim = (ts_delim)(th_chance(0.9) ? (int)th_below(4) : enum_val(4));
+        ro.header = (ts_header)(th_chance(0.9) ? (int)th_below(3) : enum_val(3));
+        ro.ncols = th_chance(0.7) ? 0 : th_below(5);
+        ro.max_line = th_chance(0.5) ? TS_IO_MAX_LINE : th_chance(0.9) ? 16 + th_below(100) : th_below(16);
+        ro.buffer_size = th_chance(0.5) ? TS_IO_BUFFER : th_chance(0.9) ? 16 + th_below(64) : th_below(16);
+        ro.track_lines = (int)th_below(2);
+        const ts_read_options *op = th_chance(0.95) ? &ro : NULL;
 
         FILE *fp = open_bytes(b, len);
         if (!fp)
@@ -256,12 +210,12 @@ static void fuzz_numbers(void)
     static const char nchars[] = "0123456789012345678901234567890.-+eE.nNaAiIfFtTyY x";
     for (int it = 0; it < N_NUMBER; it++) {
         /* text: exact-size heap buffer, not NUL-terminated (ASan sees overreads) */
-        size_t len = rn(chance(0.9) ? 30 : 800);
+        size_t len = th_below(th_chance(0.9) ? 30 : 800);
         char *s = malloc(len ? len : 1);
         if (!s)
             continue;
         for (size_t i = 0; i < len; i++)
-            s[i] = chance(0.97) ? nchars[rn(sizeof nchars - 1)] : (char)r64();
+            s[i] = th_chance(0.97) ? nchars[th_below(sizeof nchars - 1)] : (char)th_u64();
         double v = 123.0;
         const char *stop = NULL;
         ts_num_status st = ts_parse_double(s, s + len, &v, &stop);
@@ -284,11 +238,11 @@ static void fuzz_numbers(void)
         free(s);
 
         /* shortest format round-trips */
-        uint64_t bits = r64();
+        uint64_t bits = th_u64();
         double d;
         memcpy(&d, &bits, sizeof d);
-        if (chance(0.2))
-            d = garbage();
+        if (th_chance(0.2))
+            d = th_hostile();
         char buf[TS_FMT_SIZE];
         memset(buf, 'Z', sizeof buf);
         size_t fl = ts_format_double(d, buf);
@@ -327,9 +281,9 @@ static void fuzz_plots(void)
     for (int it = 0; it < N_PLOT; it++) {
         /* ticks */
         ts_plot_ticks tk;
-        double lo = chance(0.6) ? (ru() - 0.5) * rlog(1e-6, 1e12) : garbage();
-        double hi = chance(0.8) ? lo + rlog(1e-15, 1e6) * (fabs(lo) + 1) : garbage();
-        ts_plot_range_mode mode = (ts_plot_range_mode)(chance(0.9) ? (int)rn(2) : enum_val(2));
+        double lo = th_chance(0.6) ? (th_unit() - 0.5) * th_logu(1e-6, 1e12) : th_hostile();
+        double hi = th_chance(0.8) ? lo + th_logu(1e-15, 1e6) * (fabs(lo) + 1) : th_hostile();
+        ts_plot_range_mode mode = (ts_plot_range_mode)(th_chance(0.9) ? (int)th_below(2) : enum_val(2));
         ts_plot_status st = ts_plot_ticks_compute(lo, hi, mode, &tk);
         CHECK(plot_in(st, OK_ARG));
         if (st == TS_PLOT_OK) {
@@ -344,43 +298,43 @@ static void fuzz_plots(void)
         }
         /* a plot */
         ts_plot *p = NULL;
-        unsigned w = chance(0.9) ? 0 : (unsigned)rn(20000), h = chance(0.9) ? 0 : (unsigned)rn(20000);
+        unsigned w = th_chance(0.9) ? 0 : (unsigned)th_below(20000), h = th_chance(0.9) ? 0 : (unsigned)th_below(20000);
         st = ts_plot_new(w, h, &p);
         CHECK(plot_in(st, OK_ARG) && (st == TS_PLOT_OK) == (p != NULL));
         if (!p)
             continue;
-        CHECK(plot_in(ts_plot_set_title(p, chance(0.8) ? texts[rn(5)] : NULL), PSET(TS_PLOT_OK)));
-        CHECK(plot_in(ts_plot_set_labels(p, texts[rn(5)], texts[rn(5)]), PSET(TS_PLOT_OK)));
-        if (chance(0.3))
-            CHECK(plot_in(ts_plot_set_xrange(p, garbage(), garbage()), OK_ARG));
-        if (chance(0.3))
-            CHECK(plot_in(ts_plot_set_yrange(p, ru(), ru() + ru()), OK_ARG));
-        CHECK(ts_plot_set_equal_aspect(p, (int)rn(2)) == TS_PLOT_OK);
+        CHECK(plot_in(ts_plot_set_title(p, th_chance(0.8) ? texts[th_below(5)] : NULL), PSET(TS_PLOT_OK)));
+        CHECK(plot_in(ts_plot_set_labels(p, texts[th_below(5)], texts[th_below(5)]), PSET(TS_PLOT_OK)));
+        if (th_chance(0.3))
+            CHECK(plot_in(ts_plot_set_xrange(p, th_hostile(), th_hostile()), OK_ARG));
+        if (th_chance(0.3))
+            CHECK(plot_in(ts_plot_set_yrange(p, th_unit(), th_unit() + th_unit()), OK_ARG));
+        CHECK(ts_plot_set_equal_aspect(p, (int)th_below(2)) == TS_PLOT_OK);
         CHECK(plot_in(ts_plot_set_legend(p, (ts_plot_legend)enum_val(7)), OK_ARG));
-        CHECK(ts_plot_set_xml_declaration(p, (int)rn(2)) == TS_PLOT_OK);
-        CHECK(ts_plot_set_grid(p, (int)rn(2)) == TS_PLOT_OK);
-        CHECK(plot_in(ts_plot_set_simplify(p, chance(0.8) ? ru() : garbage()), OK_ARG));
-        for (int k = (int)rn(6); k > 0; k--) {
-            size_t n = rn(200);
-            double sc = chance(0.8) ? rlog(1e-3, 1e3) : rlog(1e-300, 1e300);
+        CHECK(ts_plot_set_xml_declaration(p, (int)th_below(2)) == TS_PLOT_OK);
+        CHECK(ts_plot_set_grid(p, (int)th_below(2)) == TS_PLOT_OK);
+        CHECK(plot_in(ts_plot_set_simplify(p, th_chance(0.8) ? th_unit() : th_hostile()), OK_ARG));
+        for (int k = (int)th_below(6); k > 0; k--) {
+            size_t n = th_below(200);
+            double sc = th_chance(0.8) ? th_logu(1e-3, 1e3) : th_logu(1e-300, 1e300);
             for (size_t i = 0; i < n; i++) {
-                x[i] = chance(0.95) ? sc * (double)i : garbage();
-                y[i] = chance(0.95) ? sc * sin((double)i) : garbage();
+                x[i] = th_chance(0.95) ? sc * (double)i : th_hostile();
+                y[i] = th_chance(0.95) ? sc * sin((double)i) : th_hostile();
             }
-            ts_plot_style sty = {colors[rn(9)], chance(0.9) ? ru() * 5 : garbage(), (int)rn(4) - 1,
-                                 chance(0.9) ? ru() * 5 : garbage(), (int)rn(2), ru()};
-            const ts_plot_style *sp = chance(0.5) ? &sty : NULL;
-            const char *lab = texts[rn(5)];
-            switch (rn(7)) {
+            ts_plot_style sty = {colors[th_below(9)], th_chance(0.9) ? th_unit() * 5 : th_hostile(), (int)th_below(4) - 1,
+                                 th_chance(0.9) ? th_unit() * 5 : th_hostile(), (int)th_below(2), th_unit()};
+            const ts_plot_style *sp = th_chance(0.5) ? &sty : NULL;
+            const char *lab = texts[th_below(5)];
+            switch (th_below(7)) {
             case 0: st = ts_plot_add_points(p, x, y, n, lab, sp); break;
             case 1: st = ts_plot_add_polyline(p, x, y, n, lab, sp); break;
             case 2: st = ts_plot_add_polygon(p, x, y, n, lab, sp); break;
-            case 3: st = ts_plot_add_line(p, garbage(), garbage(), lab, sp); break;
+            case 3: st = ts_plot_add_line(p, th_hostile(), th_hostile(), lab, sp); break;
             case 4:
-                st = ts_plot_add_region(p, (ts_plot_side)enum_val(2), ru() - 0.5,
-                                        chance(0.9) ? ru() : garbage(), lab, sp);
+                st = ts_plot_add_region(p, (ts_plot_side)enum_val(2), th_unit() - 0.5,
+                                        th_chance(0.9) ? th_unit() : th_hostile(), lab, sp);
                 break;
-            case 5: st = ts_plot_add_floor(p, garbage(), lab, sp); break;
+            case 5: st = ts_plot_add_floor(p, th_hostile(), lab, sp); break;
             default: st = ts_plot_add_polyline(p, n ? x : NULL, y, n, lab, sp); break;
             }
             CHECK(plot_in(st, SERIES));
@@ -411,8 +365,7 @@ static void fuzz_plots(void)
 int main(void)
 {
     const char *seed = getenv("TS_FUZZ_SEED"); /* exploring other seeds by hand */
-    if (seed)
-        rs = strtoull(seed, NULL, 10) * 2 + 1;
+    th_seed(seed ? strtoull(seed, NULL, 10) : 0x5EED7001u);
     fuzz_tables();
     fuzz_numbers();
     fuzz_plots();
