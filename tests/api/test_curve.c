@@ -3,6 +3,7 @@
  * geometry (convex hulls, affine maps, circles) or from the mpmath script
  * tests/ref/curve_circle_length.py. */
 #include "th.h"
+#include "common/th_basis.h"
 #include "common/th_rng.h"
 #include "trigspline.h"
 
@@ -16,15 +17,7 @@
 #define MAXP 40
 
 /* ---- test-side SPEC formulas ---------------------------------------- */
-/* SPEC §2 basis and (2.1). */
-static void tk_basis(double th, double A[4])
-{
-    double s = sin(th), c = cos(th);
-    A[0] = (1 - s) * (1 - s) * (1 - s);
-    A[1] = 3 * s - 4 * s * s + s * s * s;
-    A[2] = 3 * c - 4 * c * c + c * c * c;
-    A[3] = (1 - c) * (1 - c) * (1 - c);
-}
+/* SPEC §2 basis: th_basis (common/th_basis.h). */
 
 /* SPEC §7 knots of m points (closed: m distinct points, m segments). */
 static size_t tk_knots(const double *P, size_t m, size_t dim, int closed, ts_param par,
@@ -565,7 +558,7 @@ static void test_convex_hull(void)
                 size = fmax(size, vnorm(q + (size_t)l * dim, dim));
             for (int j = 0; j <= 50; j++) {
                 double delta = j / 50.0, th = PI / 2 * delta, A[4], p[3], sum = 0;
-                tk_basis(th, A);
+                th_basis(th, A);
                 for (int l = 0; l < 4; l++) {
                     sum += A[l];
                     if (!(A[l] >= -1e-15))

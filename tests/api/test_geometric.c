@@ -3,6 +3,7 @@
  * Reference values: tests/ref/accuracy_ref.csv from tests/ref/accuracy_ref.py
  * (mpmath, 40 digits, written from SPEC §2-§4 without the library). */
 #include "th.h"
+#include "common/th_basis.h"
 #include "common/th_rng.h"
 #include "trigspline.h"
 
@@ -15,15 +16,7 @@
 #define TS_HALF_PI_T 1.57079632679489661923
 #define MAXP 64
 
-/* SPEC §2 basis, written again here (not the library's). */
-static void basis(double t, double A[4])
-{
-    double s = sin(t), c = cos(t);
-    A[0] = (1 - s) * (1 - s) * (1 - s);
-    A[1] = s * (1 - s) * (3 - s);
-    A[2] = c * (1 - c) * (3 - c);
-    A[3] = (1 - c) * (1 - c) * (1 - c);
-}
+/* SPEC §2 basis: th_basis of common/th_basis.h (not the library's). */
 
 static ts_spline *geo_new(const double *x, const double *f, const double *d, size_t np,
                           const double *al, const double *be, ts_extrap ex)
@@ -252,7 +245,7 @@ static void test_roundtrip(void)
                     S = fmax(S, fabs(B[l]));
                 for (int j = 0; j <= 400; j++) {
                     double t = TS_HALF_PI_T * j / 400.0, A[4], y, dy;
-                    basis(t, A);
+                    th_basis(t, A);
                     double xx = A[0] * X[0] + A[1] * X[1] + A[2] * X[2] + A[3] * X[3];
                     double yy = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
                     if (j == 0)

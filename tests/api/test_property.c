@@ -43,6 +43,7 @@
  * Seed: fixed (TS_PROP_SEED); each set is reproducible from (scheme, form, k).
  */
 #include "th.h"
+#include "common/th_basis.h"
 #include "common/th_rng.h"
 #include "trigspline.h"
 
@@ -315,10 +316,7 @@ static double curve_min(const double B[4], double x0, double h, const ts_line *L
 {
     double mn = INFINITY;
     for (int j = 0; j <= M; j++) {
-        double th = HALF_PI * j / M, s = sin(th), c = cos(th);
-        double A0 = (1 - s) * (1 - s) * (1 - s), A1 = 3 * s - 4 * s * s + s * s * s;
-        double A2 = 3 * c - 4 * c * c + c * c * c, A3 = (1 - c) * (1 - c) * (1 - c);
-        double y = A0 * B[0] + A1 * B[1] + A2 * B[2] + A3 * B[3];
+        double y = th_seg(B, HALF_PI * j / M);
         double g = sign * (y - line_at(L, x0 + h * j / M));
         mn = g < mn ? g : mn;
     }
@@ -339,14 +337,6 @@ typedef struct stats {
     double worst_rule;  /* geometric form: largest rule_ratio of a repaired interval, in ε */
 } stats;
 
-static void basis(double th, double A[4])
-{
-    double s = sin(th), c = cos(th);
-    A[0] = (1 - s) * (1 - s) * (1 - s);
-    A[1] = 3 * s - 4 * s * s + s * s * s;
-    A[2] = 3 * c - 4 * c * c + c * c * c;
-    A[3] = (1 - c) * (1 - c) * (1 - c);
-}
 
 /* Geometric form: the sampled minimum over θ_j = (π/2) j/SAMPLES of
  * g(θ) = sign·(Y(θ) − m X(θ) − c) = Σ A_l C_l, C_l = sign·(Y_l − m X_l − c)
@@ -362,7 +352,7 @@ static double theta_min(const double B[4], const double X[4], const ts_line *L, 
     for (int l = 0; l < 4; l++)
         C[l] = sign * (B[l] - line_at(L, X[l]));
     for (int j = 0; j <= SAMPLES; j++) {
-        basis(HALF_PI * j / SAMPLES, A);
+        th_basis(HALF_PI * j / SAMPLES, A);
         double g = A[0] * C[0] + A[1] * C[1] + A[2] * C[2] + A[3] * C[3];
         mn = g < mn ? g : mn;
     }
@@ -434,7 +424,7 @@ static int fill_queries(const ts_spline *s, int ns)
 static void geo_point(const double B[4], const double X[4], int j, double *px, double *py)
 {
     double A[4];
-    basis(HALF_PI * j / SAMPLES, A);
+    th_basis(HALF_PI * j / SAMPLES, A);
     *px = A[0] * X[0] + A[1] * X[1] + A[2] * X[2] + A[3] * X[3];
     *py = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
 }

@@ -3,6 +3,7 @@
  * gaps against dense sampling of ts_eval; ts_certify, ts_spline_report,
  * ts_spline_certified and their error paths. */
 #include "th.h"
+#include "common/th_basis.h"
 #include "common/th_rng.h"
 #include "trigspline.h"
 #include "internal.h"
@@ -19,10 +20,7 @@ static const double HALF_PI = 1.57079632679489661923;
 /* g(θ) from SPEC §2 written out with libm sin/cos (not certify.c's form) */
 static double g_ref(const double C[4], double k, double th)
 {
-    double s = sin(th), c = cos(th);
-    double A0 = (1 - s) * (1 - s) * (1 - s), A1 = 3 * s - 4 * s * s + s * s * s;
-    double A2 = 3 * c - 4 * c * c + c * c * c, A3 = (1 - c) * (1 - c) * (1 - c);
-    return A0 * C[0] + A1 * C[1] + A2 * C[2] + A3 * C[3] - k * th;
+    return th_seg(C, th) - k * th;
 }
 
 static double maxabs(const double C[4], double k)
