@@ -62,7 +62,7 @@ static void compare(const fix *F, int deriv, const double *xq, size_t m, ts_curs
     if (!yq || !ref) {
         free(yq);
         free(ref);
-        CHECK(!"out of memory in the test");
+        CHECKF(0, "out of memory in the test");
         return;
     }
     size_t first_bad = TS_NO_INDEX;
@@ -163,16 +163,16 @@ static void run_sets(const fix *F)
             what = "sorted+invalid";
             for (size_t j = 0; j < m; j++)
                 xq[j] = F->x0 - 0.5 * F->h0 + (L + 0.5 * F->h0 + 1.2 * F->hn) * (double)j / (double)(m - 1);
-            xq[17] = NAN;
-            xq[500] = NAN;
-            xq[m - 1] = NAN;
+            xq[17] = TH_NAN;
+            xq[500] = TH_NAN;
+            xq[m - 1] = TH_NAN;
             break;
         case 5: /* random with invalid queries, first invalid late */
             what = "random+invalid";
             for (size_t j = 0; j < m; j++)
                 xq[j] = F->x0 + L * th_unit();
             xq[700] = F->xn + 0.25 * F->hn;
-            xq[701] = NAN;
+            xq[701] = TH_NAN;
             xq[900] = F->x0 - 1e-3 * F->h0;
             xq[1100] = F->x0 - 1e6 * F->h0;
             xq[1150] = HUGE_VAL;
@@ -186,8 +186,8 @@ static void run_sets(const fix *F)
                 size_t j = 0;
                 for (size_t i = 0; i <= F->n && j + 3 <= m; i++) {
                     xq[j++] = X[i];
-                    xq[j++] = nextafter(X[i], -INFINITY);
-                    xq[j++] = nextafter(X[i], INFINITY);
+                    xq[j++] = nextafter(X[i], -TH_INF);
+                    xq[j++] = nextafter(X[i], TH_INF);
                 }
                 m = j;
             }
@@ -230,6 +230,7 @@ int main(void)
             o.alphas = al, o.n_alphas = NP - 1;
             o.betas = be, o.n_betas = NP - 1;
             o.extrapolate = exs[e];
+            TH_CASE(names[form][e]);
             fix F;
             memset(&F, 0, sizeof F);
             F.name = names[form][e];
@@ -240,7 +241,7 @@ int main(void)
             F.n = NP - 1;
             F.x0 = x[0], F.xn = x[NP - 1];
             F.h0 = x[1] - x[0], F.hn = x[NP - 1] - x[NP - 2];
-            double hmin = INFINITY, sc = 1;
+            double hmin = TH_INF, sc = 1;
             for (size_t i = 0; i < F.n; i++) {
                 double B[4];
                 hmin = fmin(hmin, x[i + 1] - x[i]);
@@ -259,6 +260,7 @@ int main(void)
         }
     }
     /* a two-point spline: one interval, every query in it or outside */
+    TH_CASE("two points");
     {
         double x2[2] = {1.0, 2.5}, f2[2] = {-1.0, 3.0};
         ts_options o;

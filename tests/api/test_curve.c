@@ -1,5 +1,5 @@
-/* Parametric curves (SPEC §7, issue 5).  Expected values are re-derived here
- * from SPEC §2, §3, §5, §6 (test-side implementation below, "tk_"), from
+/* Parametric curves (docs/method.md §7).  Expected values are re-derived here
+ * from docs/method.md §2, §3, §5, §6 (test-side implementation below, "tk_"), from
  * geometry (convex hulls, affine maps, circles) or from the mpmath script
  * tests/ref/curve_circle_length.py. */
 #include "th.h"
@@ -16,10 +16,10 @@
 #define PI 3.14159265358979323846
 #define MAXP 40
 
-/* ---- test-side SPEC formulas ---------------------------------------- */
-/* SPEC §2 basis: th_basis (common/th_basis.h). */
+/* ---- test-side formulas of docs/method.md ---------------------------------------- */
+/* docs/method.md §2 basis: th_basis (common/th_basis.h). */
 
-/* SPEC §7 knots of m points (closed: m distinct points, m segments). */
+/* docs/method.md §7 knots of m points (closed: m distinct points, m segments). */
 static size_t tk_knots(const double *P, size_t m, size_t dim, int closed, ts_param par,
                        double *t)
 {
@@ -36,7 +36,7 @@ static size_t tk_knots(const double *P, size_t m, size_t dim, int closed, ts_par
     return n;
 }
 
-/* SPEC §6 arithmetic mean per coordinate; closed: periodic three-point mean. */
+/* docs/method.md §6 arithmetic mean per coordinate; closed: periodic three-point mean. */
 static void tk_slopes(const double *P, size_t m, size_t dim, int closed, const double *t,
                       double *d)
 {
@@ -70,7 +70,7 @@ static void tk_slopes(const double *P, size_t m, size_t dim, int closed, const d
     }
 }
 
-/* SPEC §3 control points of segment i. */
+/* docs/method.md §3 control points of segment i. */
 static void tk_ctrl(const double *P, size_t m, size_t dim, const double *t, const double *d,
                     size_t i, double a, double *q)
 {
@@ -142,7 +142,7 @@ static void test_defaults(void)
     CHECK(ts_curve_closed(NULL) == 0);
 }
 
-/* ---- construction against the test-side SPEC formulas ---------------- */
+/* ---- construction against the test-side formulas of docs/method.md ---------------- */
 /* Knots and control points of random open/closed 2-D/3-D curves, all three
  * parameterisations, per-segment alpha/beta.  Tolerance 1e-12 relative: a
  * handful of rounded operations (~1e-15 each) amplified by at most ~100 by
@@ -214,7 +214,7 @@ static void test_build_matches_spec(void)
         }
         ts_curve_free(c);
     }
-    CHECKF(bad == 0, "%d of %d control values/knots off the SPEC formulas", bad, total);
+    CHECKF(bad == 0, "%d of %d control values/knots off the docs/method.md formulas", bad, total);
 }
 
 /* ---- interpolation and GC¹ ------------------------------------------ */
@@ -260,7 +260,7 @@ static void test_interp_gc1(void)
                 if (!(fabs(p[k] - P[(m - 1) * dim + k]) <= 4e-16))
                     worst_interp++;
         }
-        /* tangents at inner knots (and the seam): SPEC (2.1) at the segment
+        /* tangents at inner knots (and the seam): docs/method.md (2.1) at the segment
          * ends gives dP/dt = 3(B1-B0)(pi/2)/h_i on the right and 3(B3-B2)(pi/2)/h_{i-1}
          * on the left; expected d_i/a_i and d_i/a_{i-1}. */
         size_t first = closed ? 0 : 1;
@@ -363,7 +363,7 @@ static void test_affine(void)
     /* Tolerances: points of size <= ~10 after the map; the curve is a linear
      * function of the data with coefficients O(1), so rounding ~1e-15 * 10 *
      * a few hundred operations stays below 1e-11. */
-    double worst_aff = 0, worst_sim = 0, worst_axis = 0, min_shear = INFINITY, min_akima_rot = INFINITY;
+    double worst_aff = 0, worst_sim = 0, worst_axis = 0, min_shear = TH_INF, min_akima_rot = TH_INF;
     for (int rep = 0; rep < 120; rep++) {
         size_t dim = 2 + (size_t)(rep % 2);
         int closed = (rep / 2) % 2;
@@ -487,7 +487,7 @@ static int in_hull(const double *q, size_t dim, const double *p, double tol)
                 if (len == 0)
                     continue;
                 nx /= len; ny /= len;
-                double mn = INFINITY, mx = -INFINITY;
+                double mn = TH_INF, mx = -TH_INF;
                 for (int r = 0; r < 4; r++) {
                     double v = nx * (q[2 * r] - q[2 * j]) + ny * (q[2 * r + 1] - q[2 * j + 1]);
                     mn = fmin(mn, v);
@@ -515,7 +515,7 @@ static int in_hull(const double *q, size_t dim, const double *p, double tol)
                 double len = vnorm(nrm, 3);
                 if (len < 1e-9)
                     continue; /* degenerate triple: covered by the others */
-                double mn = INFINITY, mx = -INFINITY;
+                double mn = TH_INF, mx = -TH_INF;
                 for (int r = 0; r < 4; r++) {
                     double v = 0;
                     for (int k = 0; k < 3; k++)
@@ -570,7 +570,7 @@ static void test_convex_hull(void)
                 if (t > kn[i + 1])
                     t = kn[i + 1];
                 ts_curve_eval(c, t, NULL, p, NULL, NULL);
-                /* the point is sum_l A_l q_l (SPEC §2/§3); t rounding moves theta
+                /* the point is sum_l A_l q_l (docs/method.md §2/§3); t rounding moves theta
                  * by ~1e-16 relative, the point by ~1e-15 * size */
                 for (size_t k = 0; k < dim; k++) {
                     double e = 0;
@@ -691,7 +691,7 @@ static void test_sample(void)
 }
 
 /* ---- box constraints --------------------------------------------------- */
-/* SPEC §5 rule re-derived per coordinate for the constant lines lo, hi. */
+/* docs/method.md §5 rule re-derived per coordinate for the constant lines lo, hi. */
 static double tk_box_beta(const double *P, size_t m, size_t dim, const double *t, const double *d,
                           size_t i, double alpha, const double *lo, const double *hi, double margin)
 {
@@ -743,7 +743,7 @@ static void test_box(void)
         }
         size_t n = tk_knots(P, m, dim, 1, o.param, t);
         tk_slopes(P, m, dim, 1, t, d);
-        /* beta_i is the test-side SPEC §5 value (the certificate never needs to
+        /* beta_i is the test-side docs/method.md §5 value (the certificate never needs to
          * raise it: the rule is rigorous for a constant bound); relative
          * tolerance 1e-9 covers the knots/slopes rounding through 1/gap >= 1e3 */
         for (size_t i = 0; i < n; i++) {
@@ -752,7 +752,7 @@ static void test_box(void)
             if (!(fabs(b - be) <= 1e-9 * (1 + be)))
                 beta_bad++;
             /* proof independent of the certificate: every control value inside
-             * the box, so the segment is (convex hull, SPEC §2) */
+             * the box, so the segment is (convex hull, docs/method.md §2) */
             double q[12];
             ts_curve_control(c, i, q);
             for (int l = 0; l < 4; l++)
@@ -822,7 +822,7 @@ static void test_box(void)
         for (size_t i = 0; i < n; i++)
             for (size_t k = 0; k < dim; k++) {
                 const ts_interval_report *r = &nr[i * dim + k];
-                double smin_lo = INFINITY, smin_hi = INFINITY, spread = 0;
+                double smin_lo = TH_INF, smin_hi = TH_INF, spread = 0;
                 for (size_t j = 0; j <= 64; j++) {
                     double v = buf[(i * 64 + j) * (1 + dim) + 1 + k];
                     smin_lo = fmin(smin_lo, v - lo[k]);
@@ -854,7 +854,7 @@ static void test_box(void)
         ts_curve_free(c);
     }
     CHECKF(fail_build == 0, "%ld box builds failed", fail_build);
-    CHECKF(beta_bad == 0, "%ld beta_i differ from the SPEC §5 rule", beta_bad);
+    CHECKF(beta_bad == 0, "%ld beta_i differ from the docs/method.md §5 rule", beta_bad);
     CHECKF(ctrl_out == 0, "%ld control values outside the box", ctrl_out);
     CHECKF(cert_bad == 0, "%ld certificates failed", cert_bad);
     CHECKF(sample_out == 0, "%ld samples outside the box", sample_out);
@@ -871,7 +871,7 @@ static void test_box(void)
            neg_flagged, neg_left_a1);
 }
 
-/* A point one ulp above the floor: the SPEC §5 value of beta puts B1 within
+/* A point one ulp above the floor: the docs/method.md §5 value of beta puts B1 within
  * rounding of the floor (B1 rounds onto it), the certificate cannot tell
  * the true minimum (~2e-16) from rounding, so beta is raised by the repair
  * until B1 rounds back above the floor. */
@@ -906,7 +906,7 @@ static void test_box_repair(void)
 
 /* ---- arc length -------------------------------------------------------- */
 /* Reference: tests/ref/curve_circle_length.py (mpmath, 40 digits, independent
- * re-implementation of SPEC §3/§6/§7 + tanh-sinh quadrature): the closed
+ * re-implementation of docs/method.md §3/§6/§7 + tanh-sinh quadrature): the closed
  * curve through 64 points on the circle of radius 2 about (0.5, -0.25), a = 1. */
 #define CIRCLE_REF_A1 12.56507548223316027439503
 #define CIRCLE_REF_A037 12.57944799273693385578196
@@ -947,7 +947,7 @@ static void test_length(void)
     ts_curve *c = build(P, 64, 2, &o);
     if (!c)
         return;
-    double L = NAN, L6 = NAN, Ld = NAN;
+    double L = TH_NAN, L6 = TH_NAN, Ld = TH_NAN;
     CHECK(ts_curve_length(c, 1e-12, &L) == TS_OK);
     CHECK(ts_curve_length(c, 1e-6, &L6) == TS_OK);
     CHECK(ts_curve_length(c, 0, &Ld) == TS_OK); /* default 1e-12 */
@@ -993,7 +993,7 @@ static void test_length(void)
         CHECK_CLOSE(L, CIRCLE_REF_A1, 1e-11 * CIRCLE_REF_A1);
     }
     ts_curve_free(c);
-    double nan_tol = NAN;
+    double nan_tol = TH_NAN;
     c = build(P, 64, 2, &o);
     if (c) {
         CHECK(ts_curve_length(c, nan_tol, &L) == TS_OK);
@@ -1005,7 +1005,7 @@ static void test_length(void)
     ts_curve_free(c);
 }
 
-/* ---- the paper's closed examples (SPEC §7, Figures 2-3) ---------------- */
+/* ---- the paper's closed examples (docs/method.md §7, Figures 2-3) ---------------- */
 static size_t load_csv(const char *path, double *P, size_t max)
 {
     FILE *f = fopen(path, "r");
@@ -1090,7 +1090,7 @@ static void test_paper(void)
 }
 
 /* ---- does the curve "converge to a straight line" as beta grows? ------- */
-/* SPEC §3: P(θ) - (P_i c² + P_{i+1} s²) = k (d_i A1 - d_{i+1} A2), k = 2h/(3 pi a),
+/* docs/method.md §3: P(θ) - (P_i c² + P_{i+1} s²) = k (d_i A1 - d_{i+1} A2), k = 2h/(3 pi a),
  * so every point is within k (|d_i| + |d_{i+1}|) max A1 of the chord, max A1 =
  * A1 at s = (4 - sqrt 7)/3 = 0.63113: the curve tends to the polygon P_0 P_1 ..
  * like 1/a, not to one straight line. */
@@ -1106,7 +1106,7 @@ static void test_beta_limit(void)
         if (np != 5)
             continue;
         printf("%s (uniform knots, alpha 0.37): max distance from the chords:\n", f ? "fig3" : "fig2");
-        double prev = NAN;
+        double prev = TH_NAN;
         for (size_t b = 0; b < sizeof betas / sizeof betas[0]; b++) {
             ts_curve_options o;
             ts_curve_options_init(&o);
@@ -1128,7 +1128,7 @@ static void test_beta_limit(void)
             CHECKF(dist <= bound * (1 + 1e-9), "beta %g: distance %g above bound %g", betas[b], dist, bound);
             if (betas[b] >= 10) /* 1/a decay: a grows x10, distance drops x10 +- 1% */
                 CHECK_CLOSE(prev / dist, (0.37 + betas[b]) / (0.37 + betas[b - 1]), 0.01 * (0.37 + betas[b]) / (0.37 + betas[b - 1]));
-            double len = NAN, per = 0;
+            double len = TH_NAN, per = 0;
             ts_curve_length(c, 1e-10, &len);
             for (size_t i = 0; i < 4; i++)
                 per += hypot(P[2 * i + 2] - P[2 * i], P[2 * i + 3] - P[2 * i + 1]);
@@ -1183,9 +1183,9 @@ static void test_errors(void)
     }
     NEW_EXPECT(P, SIZE_MAX / 8, 2, NULL, TS_ERR_OVERFLOW, TS_NO_INDEX);
     {
-        double Q[] = {0, 0, 1, 0, 1, NAN, 0, 1};
+        double Q[] = {0, 0, 1, 0, 1, TH_NAN, 0, 1};
         NEW_EXPECT(Q, 4, 2, NULL, TS_ERR_NONFINITE, 2);
-        Q[5] = INFINITY;
+        Q[5] = TH_INF;
         NEW_EXPECT(Q, 4, 2, NULL, TS_ERR_NONFINITE, 2);
         double H[] = {-1e308, 0, 1e308, 0, 1e308, 1};
         ts_curve_options_init(&o);
@@ -1198,7 +1198,7 @@ static void test_errors(void)
     }
     ts_curve_options_init(&o);
     o.has_lo[1] = 1;
-    o.lo[1] = NAN;
+    o.lo[1] = TH_NAN;
     NEW_EXPECT(P, 4, 2, &o, TS_ERR_NONFINITE, TS_NO_INDEX);
     {
         double al[3] = {1, 1, 1};
@@ -1218,7 +1218,7 @@ static void test_errors(void)
         o.alphas = al;
         o.n_alphas = 3;
         NEW_EXPECT(P, 4, 2, &o, TS_ERR_ALPHA, 1);
-        al[1] = NAN;
+        al[1] = TH_NAN;
         NEW_EXPECT(P, 4, 2, &o, TS_ERR_ALPHA, 1);
         ts_curve_options_init(&o);
         o.alpha = -1;
@@ -1229,7 +1229,7 @@ static void test_errors(void)
         o.n_betas = 3;
         NEW_EXPECT(P, 4, 2, &o, TS_ERR_BETA, 2);
         ts_curve_options_init(&o);
-        o.beta = INFINITY;
+        o.beta = TH_INF;
         NEW_EXPECT(P, 4, 2, &o, TS_ERR_BETA, 0);
     }
     ts_curve_options_init(&o);
@@ -1237,7 +1237,7 @@ static void test_errors(void)
     o.hi[0] = 5;
     o.margin = 0;
     NEW_EXPECT(P, 4, 2, &o, TS_ERR_MARGIN, TS_NO_INDEX);
-    o.margin = NAN;
+    o.margin = TH_NAN;
     NEW_EXPECT(P, 4, 2, &o, TS_ERR_MARGIN, TS_NO_INDEX);
     o.has_hi[0] = 0;
     CHECK(ts_curve_new(P, 4, 2, &o, &c, &e) == TS_OK); /* margin unused without a box */
@@ -1270,7 +1270,7 @@ static void test_errors(void)
     CHECK(ts_curve_new(P, 4, 2, &o, &c, &e) == TS_OK);
     ts_curve_free(c);
     {
-        /* gaps from 1e-300 to 1e300: the SPEC §5 value of beta overflows */
+        /* gaps from 1e-300 to 1e300: the docs/method.md §5 value of beta overflows */
         double Q[] = {0, 1e-300, 1, 1e300, 2, 1e-300};
         ts_curve_options_init(&o);
         o.closed = 1;
@@ -1297,7 +1297,7 @@ static void test_errors(void)
     CHECK(ts_curve_eval(c, kn[3] + 1e-9, NULL, p, dp, d2p) == TS_ERR_DOMAIN && isnan(p[0]) &&
           isnan(dp[1]) && isnan(d2p[0]));
     CHECK(ts_curve_eval(c, -1e-300, NULL, p, NULL, NULL) == TS_ERR_DOMAIN);
-    CHECK(ts_curve_eval(c, NAN, NULL, p, NULL, NULL) == TS_ERR_DOMAIN);
+    CHECK(ts_curve_eval(c, TH_NAN, NULL, p, NULL, NULL) == TS_ERR_DOMAIN);
     CHECK(ts_curve_eval(NULL, 0.5, NULL, p, NULL, NULL) == TS_ERR_NULL);
     CHECK(ts_curve_eval(c, 0.5, NULL, NULL, NULL, NULL) == TS_OK);
     ts_cursor cur = {12345};
@@ -1323,7 +1323,7 @@ static void test_errors(void)
     }
     lo[0] = 0.2; /* x = 0 data point: certainly violated in segment 0 */
     CHECK(ts_curve_certify_box(c, hl, lo, NULL, NULL, NULL, &e) == TS_ERR_VIOLATED && e.index == 0);
-    lo[0] = NAN;
+    lo[0] = TH_NAN;
     CHECK(ts_curve_certify_box(c, hl, lo, NULL, NULL, NULL, &e) == TS_ERR_NONFINITE);
     CHECK(ts_curve_certify_box(c, hl, NULL, NULL, NULL, NULL, &e) == TS_ERR_NULL);
     CHECK(ts_curve_certify_box(NULL, NULL, NULL, NULL, NULL, NULL, &e) == TS_ERR_NULL);
@@ -1404,19 +1404,33 @@ static void test_slope_methods(void)
 
 int main(void)
 {
+    TH_CASE("defaults");
     test_defaults();
+    TH_CASE("build_matches_spec");
     test_build_matches_spec();
+    TH_CASE("interp_gc1");
     test_interp_gc1();
+    TH_CASE("affine");
     test_affine();
+    TH_CASE("convex_hull");
     test_convex_hull();
+    TH_CASE("seam");
     test_seam();
+    TH_CASE("sample");
     test_sample();
+    TH_CASE("box");
     test_box();
+    TH_CASE("box_repair");
     test_box_repair();
+    TH_CASE("length");
     test_length();
+    TH_CASE("paper");
     test_paper();
+    TH_CASE("beta_limit");
     test_beta_limit();
+    TH_CASE("errors");
     test_errors();
+    TH_CASE("slope_methods");
     test_slope_methods();
     return th_report("test_curve");
 }

@@ -1,7 +1,7 @@
-/* Geometric form (SPEC §4): evaluation, derivatives, integral, extrapolation,
+/* Geometric form (docs/method.md §4): evaluation, derivatives, integral, extrapolation,
  * the bound on a_i, lines, knot slopes, batch, shape schemes and certificates.
  * Reference values: tests/ref/accuracy_ref.csv from tests/ref/accuracy_ref.py
- * (mpmath, 40 digits, written from SPEC §2-§4 without the library). */
+ * (mpmath, 40 digits, written from docs/method.md §2-§4 without the library). */
 #include "th.h"
 #include "common/th_basis.h"
 #include "common/th_rng.h"
@@ -16,7 +16,7 @@
 #define TS_HALF_PI_T 1.57079632679489661923
 #define MAXP 64
 
-/* SPEC §2 basis: th_basis of common/th_basis.h (not the library's). */
+/* docs/method.md §2 basis: th_basis of common/th_basis.h (not the library's). */
 
 static ts_spline *geo_new(const double *x, const double *f, const double *d, size_t np,
                           const double *al, const double *be, ts_extrap ex)
@@ -81,7 +81,7 @@ static void test_reference(void)
             s = geo_new(x, f, d, np, al, be, TS_EXTRAP_EXTEND);
             ncase++;
             /* scale of the values: max |B_l| over the intervals */
-            S = 0, hmin = INFINITY, hmax = 0;
+            S = 0, hmin = TH_INF, hmax = 0;
             for (size_t i = 0; s && i + 1 < np; i++) {
                 double B[4], h = x[i + 1] - x[i];
                 ts_spline_control(s, i, B, NULL);
@@ -150,7 +150,7 @@ static void test_reference(void)
 /* ---- property tests -------------------------------------------------- */
 
 /* Lines are reproduced to rounding: Y − mX − c = Σ A_l (Y_l − m X_l − c) = 0
- * (SPEC §4), so only the rounding of the control values and of θ(x) remains. */
+ * (docs/method.md §4), so only the rounding of the control values and of θ(x) remains. */
 static void test_lines(void)
 {
     for (int rep = 0; rep < 40; rep++) {
@@ -187,7 +187,7 @@ static void test_lines(void)
     }
 }
 
-/* The slope of the graph is d_i at both ends of every interval (SPEC §4). */
+/* The slope of the graph is d_i at both ends of every interval (docs/method.md §4). */
 static void test_knot_slopes(void)
 {
     for (int rep = 0; rep < 30; rep++) {
@@ -212,7 +212,7 @@ static void test_knot_slopes(void)
             CHECK_CLOSE(dy, d[i], 8 * EPS * (fabs(d[i]) + 10 / h));
             if (i > 0 && i + 1 < np) {
                 /* from the left, one ulp before the knot: y' moves by y''·ulp */
-                double xl = nextafter(x[i], -INFINITY);
+                double xl = nextafter(x[i], -TH_INF);
                 ts_eval_deriv(s, xl, NULL, &yl, &dyl, &d2l);
                 CHECK_CLOSE(dyl, d[i], 8 * EPS * (fabs(d[i]) + 10 / h) + 2 * fabs(d2l) * (x[i] - xl));
             }
@@ -222,7 +222,7 @@ static void test_knot_slopes(void)
 }
 
 /* Round trip through the control polygon: for θ on a grid, (X(θ), Y(θ)) from
- * the SPEC §2 basis in this file must be a point of the evaluated graph.
+ * the docs/method.md §2 basis in this file must be a point of the evaluated graph.
  * Hostile cases: a at the bound, tiny and huge h, x at the ends. */
 static void test_roundtrip(void)
 {
@@ -403,7 +403,7 @@ static void test_batch_integral(void)
 static double sample_min_gap(const ts_spline *s, size_t i, const ts_line *L, int sign, int m)
 {
     const double *x = ts_spline_x(s);
-    double best = INFINITY;
+    double best = TH_INF;
     for (int j = 0; j <= m; j++) {
         double xx = x[i] + (x[i + 1] - x[i]) * j / (double)m, y;
         ts_eval(s, xx, NULL, &y);
@@ -445,14 +445,14 @@ static void test_shapes(void)
         CHECK(ts_spline_certified(s) == 1);
         ts_spline_free(s);
     }
-    /* monotone data (SPEC §5.5: B1 <= B2 with X increasing) */
+    /* monotone data (docs/method.md §5.5: B1 <= B2 with X increasing) */
     double x2[] = {0, 1, 2, 3, 4, 5, 6, 7}, f2[] = {0, 0.1, 0.2, 3, 3.1, 3.1, 8, 8.05};
     o.shape = TS_SHAPE_MONOTONE;
     o.alpha = 0.2;
     st = ts_spline_new(x2, f2, 8, &o, &s, NULL);
     CHECKF(st == TS_OK, "monotone/geometric: %s", ts_strerror(st));
     if (s) {
-        double prev = -INFINITY, y;
+        double prev = -TH_INF, y;
         int mono = 1;
         for (int j = 0; j <= 7000; j++) {
             ts_eval(s, 7.0 * j / 7000, NULL, &y);
@@ -511,14 +511,23 @@ static void test_certify(void)
 
 int main(void)
 {
+    TH_CASE("reference");
     test_reference();
+    TH_CASE("lines");
     test_lines();
+    TH_CASE("knot_slopes");
     test_knot_slopes();
+    TH_CASE("roundtrip");
     test_roundtrip();
+    TH_CASE("bound");
     test_bound();
+    TH_CASE("steep");
     test_steep();
+    TH_CASE("batch_integral");
     test_batch_integral();
+    TH_CASE("shapes");
     test_shapes();
+    TH_CASE("certify");
     test_certify();
     return th_report("test_geometric");
 }

@@ -1,5 +1,5 @@
-/* Seeded property test of the shape schemes (SPEC §5) in the paper, C¹ and
- * geometric forms (SPEC §3, §4).
+/* Seeded property test of the shape schemes (docs/method.md §5) in the paper, C¹ and
+ * geometric forms (docs/method.md §3, §4).
  *
  * For each scheme (positive with zeros, above, below, between, monotone) and
  * form, TS_PROP_SETS random data sets (10,000 in a normal build): non-uniform
@@ -11,7 +11,7 @@
  *    claim is checked: paper and C¹ forms, the limit curve of that interval
  *    is not inside, and in the paper form no a on a grid from alpha to
  *    1e6·alpha is; geometric form, where the limit a -> ∞ is the chord with
- *    gap g_i c² + g_{i+1} s² (SPEC §4), one of its knots is on or across
+ *    gap g_i c² + g_{i+1} s² (docs/method.md §4), one of its knots is on or across
  *    the line in exact arithmetic although f - (m x + c) > 0 in floating
  *    point passed the data check);
  *  - certified; every certificate > 0 (>= 0 at a zero knot of positive data);
@@ -220,12 +220,12 @@ static void gen(dataset *D, int scheme, int form)
         L.m = th_chance(0.3) ? 0.0 : (th_chance(0.5) ? 1 : -1) * V / xspan * th_logu(1e-3, 1e2);
         L.c = th_range(-1, 1) * V * 10 - L.m * D->x[0];
         /* near-boundary points next to a sloped line are infeasible in the
-         * paper form whenever |m| h >> gap (SPEC §5): fewer of them there */
+         * paper form whenever |m| h >> gap (docs/method.md §5): fewer of them there */
         profile(np, p, 0, L.m == 0 ? 0.1 : 0.005);
         for (size_t i = 0; i < np; i++) {
             double g = V * p[i];
             /* mostly keep the gap at least a fraction of |m| h: otherwise
-             * the paper form cannot follow the line (SPEC §5, the limit
+             * the paper form cannot follow the line (docs/method.md §5, the limit
              * curve misses a line by up to 0.105 |m| h) */
             if (th_chance(0.9))
                 g += fabs(L.m) * hmax(D, i) * th_logu(0.15, 3);
@@ -314,7 +314,7 @@ static void gen(dataset *D, int scheme, int form)
 /* control values of a paper-form interval at a (for the infeasibility check) */
 static double curve_min(const double B[4], double x0, double h, const ts_line *L, int sign, int M)
 {
-    double mn = INFINITY;
+    double mn = TH_INF;
     for (int j = 0; j <= M; j++) {
         double y = th_seg(B, HALF_PI * j / M);
         double g = sign * (y - line_at(L, x0 + h * j / M));
@@ -340,15 +340,15 @@ typedef struct stats {
 
 /* Geometric form: the sampled minimum over θ_j = (π/2) j/SAMPLES of
  * g(θ) = sign·(Y(θ) − m X(θ) − c) = Σ A_l C_l, C_l = sign·(Y_l − m X_l − c)
- * (SPEC §4: Σ A_l = 1), from the control values alone; *ts receives the
+ * (docs/method.md §4: Σ A_l = 1), from the control values alone; *ts receives the
  * sampling bound ½ max|g''| (Δθ/2)²: g'' = Σ A_l'' (C_l − C_0) and
- * max |A_l''| on [0, π/2] is 6, 8, 8, 6 (at the ends; SPEC §2 by hand, checked
+ * max |A_l''| on [0, π/2] is 6, 8, 8, 6 (at the ends; docs/method.md §2 by hand, checked
  * on a fine grid with numpy).  Every minimum is within Δθ/2 of a sample and
  * g' = 0 there unless it is at an end, which is a sample. */
 static double theta_min(const double B[4], const double X[4], const ts_line *L, int sign,
                         double *ts)
 {
-    double C[4], mn = INFINITY, A[4];
+    double C[4], mn = TH_INF, A[4];
     for (int l = 0; l < 4; l++)
         C[l] = sign * (B[l] - line_at(L, X[l]));
     for (int j = 0; j <= SAMPLES; j++) {
@@ -363,7 +363,7 @@ static double theta_min(const double B[4], const double X[4], const ts_line *L, 
 }
 
 /* Geometric form, interval i of a built spline: redo the closed-form rule of
- * SPEC §5 with d − m for the lines (SPEC §4: C_1 = g_i + k(d_i − m) > 0,
+ * docs/method.md §5 with d − m for the lines (docs/method.md §4: C_1 = g_i + k(d_i − m) > 0,
  * C_2 = g_{i+1} − k(d_{i+1} − m) > 0 for a lower line, signs swapped for an
  * upper one), beta = t + max{0, terms}, a raised to 4/(3π) (TS_FORM_GEOMETRIC),
  * with the slopes the spline used; return the smallest C_1, C_2 at that a, each
@@ -392,7 +392,7 @@ static double rule_ratio(const ts_spline *s, const dataset *D, size_t i, int sch
     double a = al + t + best;
     if (!(a >= TS_GEOMETRIC_A_RAISE))
         a = TS_GEOMETRIC_A_RAISE;
-    double kk = K / a, r = INFINITY;
+    double kk = K / a, r = TH_INF;
     for (int k = 0; k < nl; k++) {
         double mm = L[k].m, cc = fabs(L[k].c);
         double C1 = g0[k] + sg[k] * kk * (d[i] - mm), C2 = g1[k] - sg[k] * kk * (d[i + 1] - mm);
@@ -420,7 +420,7 @@ static int fill_queries(const ts_spline *s, int ns)
 }
 
 /* Geometric form: the point (X(θ), Y(θ)) of interval i's parametric curve at
- * θ_j = (π/2) j/SAMPLES from its control values (SPEC §4). */
+ * θ_j = (π/2) j/SAMPLES from its control values (docs/method.md §4). */
 static void geo_point(const double B[4], const double X[4], int j, double *px, double *py)
 {
     double A[4];
@@ -478,7 +478,7 @@ static long check_spline(const ts_spline *s, const dataset *D, int scheme, int f
         } else {
             /* knots: θ = 0 exactly at x_i, so S = B0 = f_i up to the batch
              * kernel's 8 ε·M (fast.c); at x_n, θ = h·((π/2)/h) is off π/2 by
-             * ≤ 3 ε·π/2 and |dS/dθ| ≤ 3(|D0|+|D1|+|D2|) ≤ 18 M (SPEC (2.1)):
+             * ≤ 3 ε·π/2 and |dS/dθ| ≤ 3(|D0|+|D1|+|D2|) ≤ 18 M (docs/method.md (2.1)):
              * 8 εM + 16 εM (ts_eval) + 85 εM < 128 ε·M */
             CHECK(fabs(ys[0] - f[i]) <= 8 * EPS * bsc);
             if (i + 1 == n)
@@ -547,7 +547,7 @@ static long check_spline(const ts_spline *s, const dataset *D, int scheme, int f
              * |m| h); the sampling bound is checked in θ instead (theta_min) */
             double sc = scale_of(r.B, &ln, x[i], x[i + 1]);
             double te = 256 * EPS * sc;
-            double mn = INFINITY;
+            double mn = TH_INF;
             for (int j = 0; j <= ns; j++) {
                 double g = sign * (ys[j] - line_at(&ln, xs[j]));
                 mn = g < mn ? g : mn;
@@ -600,7 +600,7 @@ static void check_infeasible(const dataset *D, size_t j, int form)
                                D->o.shape != TS_SHAPE_ABOVE ? &D->o.upper : NULL};
     /* limit a -> ∞ not inside (within rounding and sampling) */
     double Bl[4] = {D->f[j], D->f[j], D->f[j + 1], D->f[j + 1]};
-    double worst = INFINITY;
+    double worst = TH_INF;
     for (int k = 0; k < 2; k++) {
         if (!lines[k])
             continue;
@@ -615,7 +615,7 @@ static void check_infeasible(const dataset *D, size_t j, int form)
     int any = 0;
     for (double a = al; a <= 1e6 * al && !any; a *= 1.25) {
         double B[4] = {D->f[j], D->f[j] + K * d[j] / a, D->f[j + 1] - K * d[j + 1] / a, D->f[j + 1]};
-        double mn = INFINITY;
+        double mn = TH_INF;
         for (int k = 0; k < 2; k++) {
             if (!lines[k])
                 continue;
@@ -747,7 +747,7 @@ static void regressions(void)
     /* f2b[l] = L(x_l) + a few ulps, L = 0.5 x + 10 (exact at these x) */
     for (int l = 0; l < 4; l++) {
         double L = 0.5 * x2[l] + 10;
-        f2b[l] = l == 2 ? f2[l] : nextafter(nextafter(nextafter(L, INFINITY), INFINITY), INFINITY);
+        f2b[l] = l == 2 ? f2[l] : nextafter(nextafter(nextafter(L, TH_INF), TH_INF), TH_INF);
     }
     for (int c = 0; c < 4; c++) {
         ts_options o;
@@ -813,8 +813,10 @@ static void regressions(void)
 int main(void)
 {
     static dataset D;
+    TH_CASE("regressions");
     regressions();
     for (int scheme = TS_SHAPE_POSITIVE; scheme <= TS_SHAPE_MONOTONE; scheme++) {
+        TH_CASE(names[scheme]);
         for (int form = 0; form < NFORMS; form++) {
             stats st = {0, 0, 0, 0, 0, 0, 0, 0.0};
             long fail0 = th_fail_;
@@ -838,7 +840,7 @@ int main(void)
                     st.infeasible++;
                     CHECK(e.where == TS_WHERE_INTERVAL && e.index < D.n);
                     if (e.index < D.n && form == TS_FORM_GEOMETRIC)
-                        /* SPEC §4: with both knots inside, the chord (a -> ∞)
+                        /* docs/method.md §4: with both knots inside, the chord (a -> ∞)
                          * has gap g_i c² + g_{i+1} s² > 0 and the closed-form
                          * rule puts every control gap inside: never infeasible */
                         CHECKF(knot_outside(&D, e.index, scheme),

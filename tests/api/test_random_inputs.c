@@ -349,7 +349,7 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
            "n %zu)", (int)o->form, (int)o->shape, n);
     /* knots */
     for (size_t i = 0; i < np; i++) {
-        double y = NAN;
+        double y = TH_NAN;
         ts_status st = ts_eval(s, xs[i], NULL, &y);
         double M = fmax(max_abs_B(s, i < n ? i : n - 1), i ? max_abs_B(s, i - 1) : 0.0);
         CHECKF(st == TS_OK && fabs(y - fs[i]) <= 16 * EPS * M,
@@ -364,7 +364,7 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
         int dir = 0;
         for (size_t i = 0; i < n && !dir; i++)
             dir = (fs[i + 1] > fs[i]) - (fs[i + 1] < fs[i]);
-        double prev = NAN, prevM = 0.0;
+        double prev = TH_NAN, prevM = 0.0;
         int bad = 0;
         for (size_t i = 0; i < n; i++) {
             double M = max_abs_B(s, i), h = xs[i + 1] - xs[i];
@@ -681,7 +681,7 @@ static void fuzz_curves(void)
         int box = th_chance(0.4);
         if (box) {
             for (size_t k = 0; k < 3 && k < stride; k++) {
-                double mn = INFINITY, mx = -INFINITY;
+                double mn = TH_INF, mx = -TH_INF;
                 for (size_t i = 0; i < np; i++) {
                     mn = fmin(mn, pts[i * stride + k]);
                     mx = fmax(mx, pts[i * stride + k]);
@@ -832,7 +832,9 @@ int main(void)
 {
     const char *seed = getenv("TS_FUZZ_SEED"); /* exploring other seeds by hand */
     th_seed(seed ? strtoull(seed, NULL, 10) : 0x2545F4914F6CDD1Du);
+    TH_CASE("fuzz_splines");
     fuzz_splines();
+    TH_CASE("fuzz_curves");
     fuzz_curves();
     /* the test exercised success paths, not only errors */
     for (int k = 0; k < 6; k++)

@@ -143,7 +143,7 @@ static void make_splines(void)
         for (int j = 0; j < NQ; j++) {
             double u = th_unit();
             R->q[j] = j % 97 == 0 ? R->x[(size_t)(th_unit() * NP) % NP]       /* knots */
-                      : j % 389 == 1 ? (double)NAN
+                      : j % 389 == 1 ? TH_NAN
                       : x0 - 0.05 * w + 1.1 * w * u;                       /* some outside */
         }
         /* insertion sort of the indices by value, NaN last */
@@ -351,6 +351,7 @@ static void *worker(void *arg)
 
 int main(void)
 {
+    TH_CASE("fixtures");
     make_splines();
     make_curves();
 
@@ -373,6 +374,7 @@ int main(void)
     }
     CHECK(ts_curve_certify(C[0].c, NULL, NULL) == TS_OK);
 
+    TH_CASE("threads");
     pthread_t th[NTH];
     static out_thread outs[NTH];
     CHECK(pthread_barrier_init(&barrier, NULL, NTH) == 0);

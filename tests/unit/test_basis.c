@@ -1,5 +1,5 @@
-/* SPEC §2: the cubic trigonometric basis, through the internal functions of
- * src/internal.h.  Expected values come from the SPEC's own definitions,
+/* docs/method.md §2: the cubic trigonometric basis, through the internal functions of
+ * src/internal.h.  Expected values come from the definitions of docs/method.md,
  * re-typed here (A0 = (1-s)^3, A1 = 3s - 4s^2 + s^3, ...), from finite
  * differences and from Gauss–Legendre quadrature -- never from basis.c.
  *
@@ -80,6 +80,7 @@ int main(void)
     const double HP = TH_HALF_PI;
     const int N = 2000;
     gl_init();
+    TH_CASE("quadrature");
     /* sanity of the quadrature itself: ∫_0^π/2 cos² = π/4 */
     {
         double sum = 0;
@@ -90,6 +91,7 @@ int main(void)
         CHECK_CLOSE(sum, TH_PI / 4, 1e-15);
     }
 
+    TH_CASE("identities");
     /* Identities on a dense grid of [0, π/2], plus slightly outside (the
      * extension uses the same formulas).  Rounding: each A_l is a product of
      * three factors <= 3, so its error is a few ulp of M0 -> tolerance 8ε·M0 for
@@ -116,7 +118,7 @@ int main(void)
     CHECKF(pou, "sum A_l = 1 on [0, pi/2]");
     CHECKF(pair01, "A0 + A1 = c^2");
     CHECKF(pair23, "A2 + A3 = s^2");
-    CHECKF(vs_ref, "basis = SPEC §2 definitions");
+    CHECKF(vs_ref, "basis = docs/method.md §2 definitions");
     for (int k = -200; k <= 200; k++) { /* θ in [-2π, 2π]: extension */
         double t = 0.01 * TH_PI * k, A[4], R[4];
         lib_basis(t, A);
@@ -126,6 +128,7 @@ int main(void)
         CHECK_CLOSE(A[0] + A[1] + A[2] + A[3], 1.0, 8 * EPS * M0);
     }
 
+    TH_CASE("end values");
     /* End values: A0(0) = A3(π/2) = 1, all other ends 0 (exact s, c). */
     {
         double A[4];
@@ -133,7 +136,7 @@ int main(void)
         CHECK(A[0] == 1.0 && A[1] == 0.0 && A[2] == 0.0 && A[3] == 0.0);
         ts__basis(1.0, 0.0, A);
         CHECK(A[0] == 0.0 && A[1] == 0.0 && A[2] == 0.0 && A[3] == 1.0);
-        /* derivatives at the ends (SPEC §2 formulas): A'(0) = (-3, 3, 0, 0),
+        /* derivatives at the ends (docs/method.md §2 formulas): A'(0) = (-3, 3, 0, 0),
          * A'(π/2) = (0, 0, -3, 3) */
         ts__basis_d1(0.0, 1.0, A);
         CHECK(A[0] == -3.0 && A[1] == 3.0 && A[2] == 0.0 && A[3] == 0.0);
@@ -141,7 +144,8 @@ int main(void)
         CHECK(A[0] == 0.0 && A[1] == 0.0 && A[2] == -3.0 && A[3] == 3.0);
     }
 
-    /* First derivatives: vs the SPEC formulas and vs central differences
+    TH_CASE("derivatives");
+    /* First derivatives: vs the docs/method.md formulas and vs central differences
      * (h = 1e-5: h²/6·M3 + 4ε·M0/h = 4.4e-10 + 7.1e-10 -> 1.2e-9).  Second
      * derivatives: vs the hand-derived formulas and vs central differences of
      * the library's first derivative (h²/6·M4 + 4ε·M1/h = 9.3e-10 + 7.6e-10). */
@@ -177,7 +181,7 @@ int main(void)
                     worst2 = fabs(D2[l] - fd2);
             }
         }
-        CHECKF(ok_f1, "A' = SPEC §2 formulas");
+        CHECKF(ok_f1, "A' = docs/method.md §2 formulas");
         CHECKF(ok_fd1, "A' vs finite differences: worst %.3g, tol %.3g", worst1, tol1);
         CHECKF(ok_f2, "A'' = hand-derived formulas");
         CHECKF(ok_fd2, "A'' vs finite differences: worst %.3g, tol %.3g", worst2, tol2);
@@ -189,6 +193,7 @@ int main(void)
         CHECK_CLOSE(D[0] + D[1] + D[2] + D[3], 0.0, 32 * EPS * 16.75);
     }
 
+    TH_CASE("integrals");
     /* Integrals ∫_0^θ A_l vs Gauss–Legendre (error < 1e-29 + rounding;
      * tolerance 1e-14 covers the closed form's cancellation, which is a few
      * ulp of θ·M0), and the exact values on [0, π/2] derived by hand:
@@ -226,6 +231,7 @@ int main(void)
         CHECK_CLOSE(I[2] + I[3], t / 2 - sin(2 * t) / 4, 1e-15);
     }
 
+    TH_CASE("seg_theta");
     /* ts__seg_theta: S = Σ A_l B_l, dS/dθ = (2.1), d²S/dθ² vs finite
      * differences of dS/dθ, for random control values and θ in and outside
      * [0, π/2].  Rounding tolerance: 16ε·(Σ|A_l|)·max|B| with Σ|A_l| <= 4·M0
@@ -246,7 +252,7 @@ int main(void)
             double s = sin(t), c = cos(t), R[4], out[3];
             th_basis(t, R);
             double S = R[0] * B[0] + R[1] * B[1] + R[2] * B[2] + R[3] * B[3];
-            /* SPEC (2.1) typed from the text */
+            /* docs/method.md (2.1) typed from the text */
             double dS = th_seg_d1(B, t);
             double R1[4];
             th_basis_d1(t, R1);
@@ -263,7 +269,7 @@ int main(void)
                 ok0 = 0;
             if (!(fabs(out[1] - dS) <= tr))
                 ok1 = 0;
-            if (!(fabs(dS - dS2) <= tr)) /* (2.1) = Σ A_l' B_l: checks the SPEC text too */
+            if (!(fabs(dS - dS2) <= tr)) /* (2.1) = Σ A_l' B_l: checks the text of docs/method.md too */
                 okw = 0;
             if (!(fabs(out[2] - fd2) <= tfd))
                 ok2 = 0;
