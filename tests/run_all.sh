@@ -1,7 +1,10 @@
 #!/usr/bin/env bash
-# Runs every test program of each build directory given, and the script tests
-# (tests/*.py) against the first; prints each program's line and, last, the
-# sum as "total: N passed, M failed".  Exit status 0 only if nothing failed.
+# Runs every test program of each build directory given (BUILD/tests/test_*:
+# the programs of tests/api/, tests/unit/, tests/tools/ all land there), the
+# valgrind leak checks, and the script tests (tests/test_*.py and
+# tests/tools/test_*.py) against the first; prints each program's line and,
+# last, the sum as "total: N passed, M failed".  Exit status 0 only if nothing
+# failed.
 set -u
 here=$(cd "$(dirname "$0")" && pwd)
 pass=0; fail=0; status=0
@@ -43,7 +46,7 @@ if [ -n "$first" ] && command -v valgrind >/dev/null 2>&1; then
     done
 fi
 if [ -n "$first" ]; then
-    for py in "$here"/test_*.py; do
+    for py in "$here"/test_*.py "$here"/tools/test_*.py; do
         [ -f "$py" ] || continue
         run_one "script/$(basename "$py")" python3 "$py" "$first"
     done

@@ -6,7 +6,7 @@ directory and checks it (standard library only).
 - Figures 2-7 are all there, each panel with its command line;
 - every constrained panel made by `fit` is certified, every `certify` panel
   whose paper parameters or chosen ones leave the region says so (exit 4);
-- the notes on the paper's differences (SPEC §9) are present.
+- the notes on the paper's differences (docs/method.md §9) are present.
 Prints "N passed, M failed" last.
 """
 import os

@@ -7,11 +7,11 @@ Standard library only; the numpy checks run only when numpy is importable.
 Expected values come from outside the binding and the library:
   - struct layouts: sizeof/offsetof printed by a C program compiled here with
     cc against include/ (skipped without a C compiler);
-  - values, derivatives, integrals: SPEC §2/§3/§6 re-derived below in pure
-    Python (math module), written from SPEC, not from the C code;
+  - values, derivatives, integrals: docs/method.md §2/§3/§6 re-derived below in pure
+    Python (math module), written from docs/method.md, not from the C code;
   - shape schemes: the paper's tables (data/paper), checked on
     dense samples and against the reported exact minima;
-  - curves: knots recomputed from SPEC §7, the polygon/polyline length bounds.
+  - curves: knots recomputed from docs/method.md §7, the polygon/polyline length bounds.
 Last line: "test_python: N passed, M failed".
 """
 import array
@@ -72,12 +72,12 @@ def read_csv(name):
 
 
 # ---------------------------------------------------------------------------
-# SPEC §2, §3, §6 re-derived (pure Python)
+# docs/method.md §2, §3, §6 re-derived (pure Python)
 
 def ref_basis(th):
     s, c = math.sin(th), math.cos(th)
     A = [(1 - s) ** 3, 3 * s - 4 * s * s + s ** 3, 3 * c - 4 * c * c + c ** 3, (1 - c) ** 3]
-    # first derivatives in theta: SPEC §2
+    # first derivatives in theta: docs/method.md §2
     A1 = [-3 * (1 - s) ** 2 * c, c * (3 - 8 * s + 3 * s * s),
           -s * (3 - 8 * c + 3 * c * c), 3 * (1 - c) ** 2 * s]
     # second derivatives: the derivatives of the lines above, by hand
@@ -89,7 +89,7 @@ def ref_basis(th):
 
 
 def ref_slopes(x, f):
-    """SPEC §6 three-point arithmetic mean with its end formulas."""
+    """docs/method.md §6 three-point arithmetic mean with its end formulas."""
     n = len(x) - 1
     h = [x[i + 1] - x[i] for i in range(n)]
     D = [(f[i + 1] - f[i]) / h[i] for i in range(n)]
@@ -104,7 +104,7 @@ def ref_slopes(x, f):
 
 
 class RefSpline(object):
-    """SPEC §3 paper form (c1=False) or the C¹ option (c1=True)."""
+    """docs/method.md §3 paper form (c1=False) or the C¹ option (c1=True)."""
 
     def __init__(self, x, f, alpha, beta, c1=False, d=None):
         self.x, self.f = x, f
@@ -215,7 +215,7 @@ def test_layout(ffi):
 
 
 def test_values(ts):
-    """Values, derivatives and integrals vs the SPEC §3 re-derivation."""
+    """Values, derivatives and integrals vs the docs/method.md §3 re-derivation."""
     x = [0.0, 0.7, 1.5, 3.1, 4.0, 6.2]
     f = [1.0, 2.2, 1.7, 3.5, 0.4, 2.0]
     al = [1.0, 0.5, 2.0, 0.8, 1.3]
@@ -244,7 +244,7 @@ def test_values(ts):
         for i, xv in enumerate(x):
             close(s(xv), f[i], tol0, "%s interpolates point %d" % (form, i))
         if form == "paper":
-            # SPEC §3: S'(x_i+) = d_i/a_i and S'(x_{i+1}-) = d_{i+1}/a_i
+            # docs/method.md §3: S'(x_i+) = d_i/a_i and S'(x_{i+1}-) = d_{i+1}/a_i
             for i in range(len(x) - 1):
                 a = al[i] + be[i]
                 close(s(x[i], 1), ref.d[i] / a, tol1, "S'(x_%d+) = d/a" % i)
@@ -288,7 +288,7 @@ def test_values(ts):
         sm = ts.Spline(x, f, slopes=m)
         check(sm.slopes == tuple(ts.estimate_slopes(x, f, m)), "slopes=%s via estimate_slopes" % m)
     close(ts.estimate_slopes(x, f)[2], ref_slopes(x, f)[2], 1e-14, "estimate_slopes arithmetic")
-    # extrapolation policies (SPEC-independent definitions from the header)
+    # extrapolation policies (definitions from the header, not from docs/method.md)
     sc = ts.Spline(x, f, extrapolate="clamp")
     check(sc(-3.0) == f[0] and sc(9.0) == f[-1] and sc(-3.0, 1) == 0.0, "clamp")
     check(sc(float("inf")) == f[-1], "clamp accepts +inf")
@@ -323,7 +323,7 @@ def test_positive(ts):
         check(all(abs(r["a"] - (r["alpha"] + r["beta"])) <= 1e-15 * r["a"] for r in rep),
               "report a = alpha + beta")
         check(all(r["beta"] >= 0.01 * (1 - 1e-15) for r in rep),
-              "beta >= margin t = 0.01 (SPEC §5)")
+              "beta >= margin t = 0.01 (docs/method.md §5)")
         xs, ys = dense(s)
         check(min(ys) >= 0.0, "Table 1 alpha=%g: min of 20001 samples %r >= 0" % (alpha, min(ys)))
         # the exact minimum is attained where reported and no sample lies below it
@@ -337,7 +337,7 @@ def test_positive(ts):
         ok, reps = s.certify(lower=(0.0, 0.0), report=True)
         check(ok and len(reps) == len(rep), "certify(lower=0, report=True)")
         s.close()
-    # without the scheme the same data go negative at small alpha (SPEC §9.6:
+    # without the scheme the same data go negative at small alpha (docs/method.md §9.6:
     # one a for all intervals: minimum -6.2 at a = 0.01)
     u = ts.Spline(x, f, alpha=0.01)
     xs, ys = dense(u)
@@ -347,7 +347,7 @@ def test_positive(ts):
     worst = min(r["gap_lower"] for r in reps)
     check(worst <= min(ys) + 1e-9 and worst > min(ys) - 0.5,
           "exact minimum %r <= sampled minimum %r" % (worst, min(ys)))
-    close(worst, -6.2, 0.05, "SPEC §9.6: minimum about -6.2 at a = 0.01")
+    close(worst, -6.2, 0.05, "docs/method.md §9.6: minimum about -6.2 at a = 0.01")
     check(not all(r["certified"] for r in reps), "report marks violated intervals")
     u.close()
 
@@ -381,7 +381,7 @@ def test_errors(ts):
     check(issubclass(E, ValueError), "TrigsplineError is a ValueError")
     rows = read_csv("table2_above_line.csv")
     x, f = [r[0] for r in rows], [r[1] for r in rows]
-    # SPEC §9.5: Table 2 is not above y = 0.31x + 1; the first offender is x = 1
+    # docs/method.md §9.5: Table 2 is not above y = 0.31x + 1; the first offender is x = 1
     e = raises(lambda: ts.Spline(x, f, shape="above", line=(0.31, 1.0)), E, "Table 2 refused")
     if e:
         check(e.status == 15 and e.name == "TS_ERR_SIDE", "TS_ERR_SIDE (%r)" % e)
@@ -555,11 +555,11 @@ def test_curve(ts):
     E = ts.TrigsplineError
     for name in ("fig2_closed.csv", "fig3_closed.csv"):
         pts = [tuple(r) for r in read_csv(name)]
-        for beta in (0.001, 0.01, 0.05):  # SPEC §7 / Figures 2-3
+        for beta in (0.001, 0.01, 0.05):  # docs/method.md §7 / Figures 2-3
             c = ts.Curve(pts, closed=True, alpha=0.37, beta=beta)
             m = len(pts) - 1  # first point repeated at the end
             check(c.closed and c.segments == m and c.dim == 2, "%s closed, %d segments" % (name, m))
-            # SPEC §7 centripetal knots recomputed
+            # docs/method.md §7 centripetal knots recomputed
             t = [0.0]
             for i in range(m):
                 dx = pts[i + 1][0] - pts[i][0]
@@ -576,7 +576,7 @@ def test_curve(ts):
                 a, b = c(tv), c(tv + T)
                 check(all(abs(a[k] - b[k]) <= 1e-12 * 4 for k in range(2)), "periodic wrap")
             # seam: same a everywhere -> C¹ in t; the derivative at t_0 from
-            # segment 0 is d_0/a with d_0 the periodic three-point mean (SPEC §6)
+            # segment 0 is d_0/a with d_0 the periodic three-point mean (docs/method.md §6)
             a_ = 0.37 + beta
             h0, hl = kn[1] - kn[0], kn[m] - kn[m - 1]
             for k in range(2):

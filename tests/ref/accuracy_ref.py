@@ -1,10 +1,10 @@
 #!/usr/bin/python3
-"""Independent high-precision reference for the geometric form (SPEC §4) and
-the error constants (SPEC §8, docs/accuracy.md).
+"""Independent high-precision reference for the geometric form (docs/method.md §4) and
+the error constants (docs/method.md §8, docs/accuracy.md).
 
-Written from SPEC.md with mpmath at 40 significant digits; it does not use
-the C library.  Its output is checked in and read by tests/test_geometric.c
-and tests/test_accuracy.c; `make test` does NOT run it.  Regenerate
+Written from docs/method.md with mpmath at 40 significant digits; it does not use
+the C library.  Its output is checked in and read by tests/api/test_geometric.c
+and tests/api/test_accuracy.c; `make test` does NOT run it.  Regenerate
 (deterministic, ~1 min) with
 
     /usr/bin/python3 tests/ref/accuracy_ref.py > tests/ref/accuracy_ref.csv
@@ -170,7 +170,7 @@ def emit_case(name, x, f, d, alpha, beta, fracs, ints):
 # ---- error constants -------------------------------------------------------
 
 def spline_paper(g0, g1, d0, d1, kap, th):
-    """Paper-form spline on [0, 1] at th (SPEC §3)."""
+    """Paper-form spline on [0, 1] at th (docs/method.md §3)."""
     return seg(th, [g0, g0 + kap * d0, g1 - kap * d1, g1])
 
 

@@ -1,10 +1,10 @@
 #!/usr/bin/python3
-"""Independent high-precision reference for ts__trig_min (SPEC §2, §5).
+"""Independent high-precision reference for ts__trig_min (docs/method.md §2, §5).
 
 For control values C0..C3 and kappa, the exact minimum over theta in [0, pi/2] of
 
     g(theta) = sum_l A_l(theta) C_l - kappa * theta,
-    A0 = (1-s)^3, A1 = 3s - 4s^2 + s^3, A2 = 3c - 4c^2 + c^3, A3 = (1-c)^3  (SPEC §2)
+    A0 = (1-s)^3, A1 = 3s - 4s^2 + s^3, A2 = 3c - 4c^2 + c^3, A3 = (1-c)^3  (docs/method.md §2)
 
 computed with mpmath at 60 digits WITHOUT the C library's method: g'(theta) is
 written as a trigonometric polynomial and its zeros are found from the

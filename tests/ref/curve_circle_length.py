@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
-"""Reference arc length for tests/test_curve.c (issue 5), independent of the C code.
+"""Reference arc length for tests/api/test_curve.c, independent of the C code.
 
-The closed curve through N points on a circle of radius r, built from SPEC §3, §6, §7
+The closed curve through N points on a circle of radius r, built from docs/method.md §3, §6, §7
 re-derived here: knots (all steps equal, so every parameterisation gives the same
 curve up to a scale of t), periodic three-point-mean slopes per coordinate, control
 points P_i, P_i + k d_i, P_{i+1} - k d_{i+1}, k = 2h/(3 pi a).  Length of each segment
-= integral over theta in [0, pi/2] of |dP/dtheta| with dP/dtheta from SPEC (2.1), by
+= integral over theta in [0, pi/2] of |dP/dtheta| with dP/dtheta from docs/method.md (2.1), by
 mpmath.quad (tanh-sinh) at 40 digits.  Prints one line per a value.
 
 Usage: /usr/bin/python3 tests/ref/curve_circle_length.py   (needs python3-mpmath)
@@ -19,7 +19,7 @@ def curve_length(pts, a):
     n = len(pts)  # closed: n segments
     dim = len(pts[0])
     h = [mp.mpf(1)] * n  # equal steps (scale of t cancels in the length)
-    # periodic three-point mean (SPEC §6), per coordinate
+    # periodic three-point mean (docs/method.md §6), per coordinate
     d = []
     for i in range(n):
         hm, hp = h[i - 1], h[i]

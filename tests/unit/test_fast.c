@@ -1,8 +1,8 @@
-/* The batch kernels of src/fast.c against plain ts_eval_deriv (issue 6).
+/* The batch kernels of src/fast.c against plain ts_eval_deriv.
  *
  * Expected values: ts_eval_deriv (the plain path, itself checked against the
  * mpmath reference in test_core.c); the knot values f_i exactly; a
- * long-double evaluation of SPEC §2/(2.1) written here says which side an
+ * long-double evaluation of docs/method.md §2/(2.1) written here says which side an
  * error is on (printed, not asserted).
  *
  * Tolerances: a first-order worst-case bound (u = 2⁻⁵³, ε = 2u = DBL_EPSILON,
@@ -12,7 +12,7 @@
  * differs -- except when (x − x_i)·w and (x_{i+1} − x)·w round to the same
  * value although x − x_i > x_{i+1} − x: fast.c then takes the left end and
  * eval.c the right, two angles <= 2 ulp(π/4) apart, which adds <= |S'|·4u·w^k
- * with |dS/dθ| <= 14M, |d²S/dθ²| <= 56M, |d³S/dθ³| <= 196M (SPEC §2, |D_k| <= 2M).
+ * with |dS/dθ| <= 14M, |d²S/dθ²| <= 56M, |d³S/dθ³| <= 196M (docs/method.md §2, |D_k| <= 2M).
  *  Inputs.  fast.c: polynomials of bench/sincos_coeffs.py (truncation
  *    <= 0.05u; correction term <= 0.081 with relative error <= 5u; final
  *    rounding <= 0.71u), 1 − cos summed without the 1, then c = 1 − (1 − cos),
@@ -24,7 +24,7 @@
  *    A2, A3 alike.  Σ|ΔA_l|·M + 4 product and 3 sum roundings (each <= u·M):
  *    <= 49.4u·M per path; both paths and the tie term (56u·M):
  *    <= 155u·M = 77ε·M:  TOL0 = 80.
- *  S' (SPEC (2.1)): weights 3(1−s)²c, 2sc, 3(1−c)²s (<= 3, 1, 3) carry
+ *  S' (docs/method.md (2.1)): weights 3(1−s)²c, 2sc, 3(1−c)²s (<= 3, 1, 3) carry
  *    <= 36u, 9.5u, 36u; times D_k = B_k − B_{k−1} (|D_k| <= 2M, one rounding),
  *    2 sums over <= 14M, one product by w: <= 233u·M·w per path; with the tie
  *    term (224u): <= 690u = 345ε:  TOL1 = 360.
@@ -47,6 +47,7 @@
  * ts_eval_batch / ts_eval_batch_mt against the kernel.
  */
 #include "th.h"
+#include "common/th_rng.h"
 #include "trigspline.h"
 #include "internal.h"
 
@@ -74,20 +75,13 @@
 #define TOL2 1600.0
 #define NREF 8 /* long-double check on every NREF-th query */
 
-static uint64_t rng = 0x243F6A8885A308D3u;
-static double urand(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return (double)(rng >> 11) * 0x1p-53;
-}
 
-/* Long-double S^(k) at θ of control values B (SPEC §2, (2.1)); derivatives in θ. */
+/* Long-double S^(k) at θ of control values B (docs/method.md §2, (2.1)); derivatives in θ. */
 static long double ref_theta(const double B[4], long double th, int k)
 {
     long double s = sinl(th), c = cosl(th), ms = 1.0L - s, mc = 1.0L - c;
-    long double b0 = B[0], b1 = B[1], b2 = B[2], b3 = B[3];
+    long double b0 = (long double)B[0], b1 = (long double)B[1], b2 = (long double)B[2],
+                b3 = (long double)B[3];
     if (k == 0)
         return ms * ms * ms * b0 + s * ms * (3 - s) * b1 + c * mc * (3 - c) * b2 + mc * mc * mc * b3;
     if (k == 1)
@@ -126,19 +120,19 @@ static ts_spline *random_spline(size_t np, int kind, int form)
     double *al = malloc((np - 1) * sizeof *al);
     ts_spline *s = NULL;
     if (!x || !f || !d || !al) {
-        CHECK(!"out of memory in the test");
+        CHECKF(0, "out of memory in the test");
         goto done;
     }
     x[0] = kind == 2 ? 1e6 : -3.0;
     for (size_t i = 1; i < np; i++)
-        x[i] = x[i - 1] + (kind == 1 ? pow(10.0, -3.0 + 6.0 * urand()) : 0.2 + urand());
+        x[i] = x[i - 1] + (kind == 1 ? pow(10.0, -3.0 + 6.0 * th_unit()) : 0.2 + th_unit());
     for (size_t i = 0; i < np; i++) {
         double base = kind == 2 ? 1e6 : kind == 3 ? -500.0 : 0.0;
-        f[i] = base + (kind == 2 ? 1e-3 : 10.0) * (urand() - 0.5);
-        d[i] = (kind == 3 ? 1e4 : 5.0) * (urand() - 0.5);
+        f[i] = base + (kind == 2 ? 1e-3 : 10.0) * (th_unit() - 0.5);
+        d[i] = (kind == 3 ? 1e4 : 5.0) * (th_unit() - 0.5);
     }
     for (size_t i = 0; i + 1 < np; i++)
-        al[i] = pow(10.0, -2.0 + 4.0 * urand());
+        al[i] = pow(10.0, -2.0 + 4.0 * th_unit());
     ts_options o;
     ts_options_init(&o);
     o.form = form ? TS_FORM_C1 : TS_FORM_PAPER;
@@ -195,7 +189,7 @@ static int qset_fill(qset *Q)
             long double th = u <= v ? (long double)(u * w) : 1.57079632679489661923132169163975144L - (long double)(v * w);
             for (int k = 0; k < 3; k++)
                 Q->lref[k][j / NREF] = ref_theta(B, th, k) * (k == 0 ? 1.0L : k == 1 ? (long double)w
-                                                                                   : (long double)w * w);
+                                                                                   : (long double)w * (long double)w);
         }
     }
     CHECKF(bad == 0, "%s: ts_eval_deriv failed at %ld queries", Q->what, bad);
@@ -216,7 +210,7 @@ static void compare(const qset *Q, size_t m, int deriv, int isa, stats *S)
 {
     double *y = malloc(m * sizeof *y);
     if (!y) {
-        CHECK(!"out of memory in the test");
+        CHECKF(0, "out of memory in the test");
         return;
     }
     ts_cursor cur = TS_CURSOR_INIT;
@@ -274,7 +268,7 @@ static void accuracy(void)
             printf("test_fast: kernel %d not available on this CPU (skipped)\n", isa);
     }
     CHECK(have[0]); /* the portable kernel always exists */
-    rng = 0x243F6A8885A308D3u;
+    th_seed(0x243F6A8885A308D3u);
     for (int kind = 0; kind < 6; kind++) {
         ts_spline *s = random_spline(kind == 5 ? 20001 : 201, kind % 4, kind >= 4);
         if (!s)
@@ -284,14 +278,14 @@ static void accuracy(void)
         for (int sorted = 0; sorted <= 1; sorted++) {
             qset Q = {s, per, sorted ? "sorted" : "random", malloc(per * sizeof(double)), {0}, {0}, {0}};
             if (!Q.q) {
-                CHECK(!"out of memory in the test");
+                CHECKF(0, "out of memory in the test");
                 continue;
             }
             for (size_t j = 0; j < per; j++) {
                 if (j % 97 == 0) /* knots exactly: the right-hand interval */
-                    Q.q[j] = X[(size_t)(urand() * (double)(n + 1)) % (n + 1)];
+                    Q.q[j] = X[(size_t)(th_unit() * (double)(n + 1)) % (n + 1)];
                 else
-                    Q.q[j] = X[0] + (X[n] - X[0]) * urand();
+                    Q.q[j] = X[0] + (X[n] - X[0]) * th_unit();
             }
             if (sorted)
                 qsort(Q.q, per, sizeof *Q.q, cmp_double);
@@ -304,7 +298,7 @@ static void accuracy(void)
                     compare(&Q, per / 5, 2, isa, &S[isa]);
                 }
             } else {
-                CHECK(!"out of memory in the test");
+                CHECKF(0, "out of memory in the test");
             }
             qset_free(&Q);
             free(Q.q);
@@ -332,16 +326,16 @@ static ts_spline *small_spline(size_t np, ts_form form)
     double *x = malloc(np * sizeof *x), *f = malloc(np * sizeof *f);
     ts_spline *s = NULL;
     if (!x || !f) {
-        CHECK(!"out of memory in the test");
+        CHECKF(0, "out of memory in the test");
         free(x);
         free(f);
         return NULL;
     }
     x[0] = -1.0;
     for (size_t i = 1; i < np; i++)
-        x[i] = x[i - 1] + 0.1 + urand();
+        x[i] = x[i - 1] + 0.1 + th_unit();
     for (size_t i = 0; i < np; i++)
-        f[i] = 3.0 + 2.0 * sin(x[i]) + urand();
+        f[i] = 3.0 + 2.0 * sin(x[i]) + th_unit();
     ts_options o;
     ts_options_init(&o);
     o.form = form;
@@ -367,7 +361,7 @@ static int close_value(const ts_spline *s, double x, double a, double b)
 
 static void structure(void)
 {
-    rng = 0x9E3779B97F4A7C15u;
+    th_seed(0x9E3779B97F4A7C15u);
     ts_spline *s = small_spline(301, TS_FORM_PAPER);
     if (!s)
         return;
@@ -403,7 +397,7 @@ static void structure(void)
     for (size_t j = 0; j < M; j++)
         q[j] = X[0] + (X[n] - X[0]) * ((double)j / (double)(M - 1));
     q[M - 1] = X[n]; /* (the division can round past x_n) */
-    const double bad[4] = {NAN, X[n] + 1.0, X[0] - 1e-9, -HUGE_VAL};
+    const double bad[4] = {TH_NAN, X[n] + 1.0, X[0] - 1e-9, -HUGE_VAL};
     for (int b = 0; b < 4; b++) {
         double keep = q[300];
         q[300] = bad[b];
@@ -437,17 +431,17 @@ static void structure(void)
     }
     /* an unsorted block with a NaN: stops before it; a NaN first: nothing */
     for (size_t j = 0; j < M; j++)
-        q[j] = X[0] + (X[n] - X[0]) * urand();
-    q[200] = NAN;
+        q[j] = X[0] + (X[n] - X[0]) * th_unit();
+    q[200] = TH_NAN;
     CHECK(ts__fast_batch(s, 0, q, M, y, NULL) == 128);
-    q[0] = NAN;
+    q[0] = TH_NAN;
     CHECK(ts__fast_batch(s, 0, q, M, y, NULL) == 0);
 
     /* ts_eval_batch, ts_eval_batch_mt and the best kernel agree bitwise on
      * valid queries (one kernel), for every derivative and query order */
     for (int order = 0; order < 3; order++) {
         for (size_t j = 0; j < M; j++)
-            q[j] = X[0] + (X[n] - X[0]) * urand();
+            q[j] = X[0] + (X[n] - X[0]) * th_unit();
         if (order == 1)
             qsort(q, M, sizeof *q, cmp_double);
         if (order == 2) { /* descending */
@@ -477,7 +471,7 @@ static void structure(void)
         X = ts_spline_x(s);
         n = ts_spline_intervals(s);
         for (size_t j = 0; j < M; j++)
-            q[j] = X[0] + (X[n] - X[0]) * urand() * urand(); /* dense near x0, sparse later */
+            q[j] = X[0] + (X[n] - X[0]) * th_unit() * th_unit(); /* dense near x0, sparse later */
         qsort(q, M, sizeof *q, cmp_double);
         ts_cursor c = {n - 1}; /* ahead of the first query: searched back */
         CHECK(ts__fast_batch(s, 0, q, M, y, &c) == M);
@@ -518,11 +512,11 @@ static void structure(void)
     X = ts_spline_x(s);
     n = ts_spline_intervals(s);
     for (size_t j = 0; j < M; j++)
-        q[j] = X[0] + (X[n] - X[0]) * urand();
+        q[j] = X[0] + (X[n] - X[0]) * th_unit();
     double keep = q[700];
     for (int deriv = 0; deriv <= 2; deriv++) {
         ts_cursor c = TS_CURSOR_INIT;
-        q[700] = deriv == 1 ? (double)NAN : keep; /* S': stops at a NaN */
+        q[700] = deriv == 1 ? TH_NAN : keep; /* S': stops at a NaN */
         size_t k = ts__fast_batch(s, deriv, q, M, y, &c);
         CHECK(k == (deriv == 1 ? 700 : M));
         int same = 1;
@@ -539,7 +533,9 @@ static void structure(void)
 
 int main(void)
 {
+    TH_CASE("structure");
     structure();
+    TH_CASE("accuracy");
     accuracy();
     return th_report("test_fast");
 }

@@ -1,8 +1,10 @@
-/* Certificates (SPEC §2, §5): ts__trig_min against closed forms, an mpmath
+/* Certificates (docs/method.md §2, §5): ts__trig_min against closed forms, an mpmath
  * reference (tests/ref/certify_trigmin_ref.py) and brute force; interval
  * gaps against dense sampling of ts_eval; ts_certify, ts_spline_report,
  * ts_spline_certified and their error paths. */
 #include "th.h"
+#include "common/th_basis.h"
+#include "common/th_rng.h"
 #include "trigspline.h"
 #include "internal.h"
 
@@ -14,23 +16,11 @@
 #define EPS DBL_EPSILON
 static const double HALF_PI = 1.57079632679489661923;
 
-static unsigned long long rng_state = 0x9E3779B97F4A7C15ULL;
-static double urand(void) /* [0, 1) xorshift64* */
-{
-    rng_state ^= rng_state >> 12;
-    rng_state ^= rng_state << 25;
-    rng_state ^= rng_state >> 27;
-    return (double)((rng_state * 2685821657736338717ULL) >> 11) * 0x1.0p-53;
-}
-static double uni(double a, double b) { return a + (b - a) * urand(); }
 
-/* g(θ) from SPEC §2 written out with libm sin/cos (not certify.c's form) */
+/* g(θ) from docs/method.md §2 written out with libm sin/cos (not certify.c's form) */
 static double g_ref(const double C[4], double k, double th)
 {
-    double s = sin(th), c = cos(th);
-    double A0 = (1 - s) * (1 - s) * (1 - s), A1 = 3 * s - 4 * s * s + s * s * s;
-    double A2 = 3 * c - 4 * c * c + c * c * c, A3 = (1 - c) * (1 - c) * (1 - c);
-    return A0 * C[0] + A1 * C[1] + A2 * C[2] + A3 * C[3] - k * th;
+    return th_seg(C, th) - k * th;
 }
 
 static double maxabs(const double C[4], double k)
@@ -81,7 +71,7 @@ static void test_closed_forms(void)
     double C3[4] = {0, 0, 0, 0};
     v = ts__trig_min(C3, 0.0, &th);
     CHECK(v == 0.0 && th == 0.0);
-    /* monotone control polygon: S monotone (SPEC (2.1)), min at an end */
+    /* monotone control polygon: S monotone (docs/method.md (2.1)), min at an end */
     double C4[4] = {1, 2, 3, 4};
     v = ts__trig_min(C4, 0.0, &th);
     CHECK(v == 1.0 && th == 0.0);
@@ -89,22 +79,22 @@ static void test_closed_forms(void)
     v = ts__trig_min(C5, 0.0, &th);
     CHECK_CLOSE(v, 1.0, 4 * EPS);
     CHECK(th == HALF_PI);
-    /* the paper form misses the line y = x (SPEC §5): B = x-values of the
+    /* the paper form misses the line y = x (docs/method.md §5): B = x-values of the
      * line at k = 2h/(3π) (a = 1, d = 1, h = 1), L(x) = x: C_l = B_l − 0,
-     * κ = 2/π; its minimum is −0.00345 (SPEC §5, §8: "missed by up to
+     * κ = 2/π; its minimum is −0.00345 (docs/method.md §5, §8: "missed by up to
      * 0.00345·h"); computed here by brute force too below */
     double k = 2.0 / (3.0 * 3.14159265358979323846);
     double C6[4] = {0, k, 1 - k, 1};
     v = ts__trig_min(C6, 2.0 / 3.14159265358979323846, &th);
     CHECK(v < -0.0034 && v > -0.0035);
     /* NaN and infinities propagate to NaN */
-    double C7[4] = {1, NAN, 0, 1};
+    double C7[4] = {1, TH_NAN, 0, 1};
     v = ts__trig_min(C7, 0.0, &th);
     CHECK(isnan(v) && isnan(th));
-    double C8[4] = {1, INFINITY, 0, 1};
+    double C8[4] = {1, TH_INF, 0, 1};
     v = ts__trig_min(C8, 0.0, &th);
     CHECK(isnan(v));
-    v = ts__trig_min(C1, NAN, &th);
+    v = ts__trig_min(C1, TH_NAN, &th);
     CHECK(isnan(v));
     /* NULL theta allowed */
     v = ts__trig_min(C1, 0.0, NULL);
@@ -115,10 +105,10 @@ static void test_closed_forms(void)
 static void test_scaling(void)
 {
     for (int r = 0; r < 200; r++) {
-        double C[4], k = uni(-2, 2), th0, th1, Cs[4];
+        double C[4], k = th_range(-2, 2), th0, th1, Cs[4];
         for (int l = 0; l < 4; l++)
-            C[l] = uni(-1, 1);
-        int e = (int)uni(-900, 900);
+            C[l] = th_range(-1, 1);
+        int e = (int)th_range(-900, 900);
         for (int l = 0; l < 4; l++)
             Cs[l] = ldexp(C[l], e);
         double v0 = ts__trig_min(C, k, &th0);
@@ -170,23 +160,23 @@ static void test_brute(void)
     int fails = 0;
     for (int r = 0; r < 3000; r++) {
         double C[4], k, th;
-        double sc = pow(10.0, uni(-6, 6));
+        double sc = pow(10.0, th_range(-6, 6));
         int kind = r % 4;
         for (int l = 0; l < 4; l++)
-            C[l] = uni(-1, 1) * sc;
+            C[l] = th_range(-1, 1) * sc;
         if (kind == 1) { /* near-constant: tiny differences on a big offset */
             for (int l = 0; l < 4; l++)
-                C[l] = sc * (1 + 1e-9 * uni(-1, 1));
+                C[l] = sc * (1 + 1e-9 * th_range(-1, 1));
         } else if (kind == 2) { /* spline-like, positive and small slopes */
-            double f0 = uni(0.01, 1) * sc, f1 = uni(0.01, 1) * sc;
+            double f0 = th_range(0.01, 1) * sc, f1 = th_range(0.01, 1) * sc;
             C[0] = f0;
-            C[1] = f0 + uni(-1, 1) * sc;
-            C[2] = f1 - uni(-1, 1) * sc;
+            C[1] = f0 + th_range(-1, 1) * sc;
+            C[2] = f1 - th_range(-1, 1) * sc;
             C[3] = f1;
         }
-        k = (r % 3 == 0) ? 0.0 : uni(-3, 3) * sc;
+        k = (r % 3 == 0) ? 0.0 : th_range(-3, 3) * sc;
         double v = ts__trig_min(C, k, &th);
-        double dmin = INFINITY;
+        double dmin = TH_INF;
         for (int j = 0; j <= N; j++) {
             double g = g_ref(C, k, j * D);
             dmin = g < dmin ? g : dmin;
@@ -209,7 +199,7 @@ static double line_at(const ts_line *l, double x) { return l->m * x + l->c; }
 static double dense_gap(const ts_spline *s, size_t i, const ts_line *ln, int sign, int M)
 {
     const double *x = ts_spline_x(s);
-    double mn = INFINITY;
+    double mn = TH_INF;
     for (int j = 0; j <= M; j++) {
         double xx = j == M ? x[i + 1] : x[i] + (x[i + 1] - x[i]) * j / M, y;
         ts_eval(s, xx, NULL, &y);
@@ -279,13 +269,13 @@ static void test_certify_api(void)
 {
     ts_options o;
     ts_options_init(&o);
-    o.alpha = 0.001; /* small a: Table 3 overshoots y = x + 2.5 (SPEC §5.3) */
+    o.alpha = 0.001; /* small a: Table 3 overshoots y = x + 2.5 (docs/method.md §5.3) */
     ts_spline *s = NULL;
     ts_error e;
     CHECK(ts_spline_new(X3, F3, 5, &o, &s, &e) == TS_OK);
     if (!s)
         return;
-    ts_line up = {1.0, 2.5}, lo = {0.0, -1000.0}, bad = {NAN, 0.0}, bad2 = {0.0, INFINITY};
+    ts_line up = {1.0, 2.5}, lo = {0.0, -1000.0}, bad = {TH_NAN, 0.0}, bad2 = {0.0, TH_INF};
     ts_interval_report rep[4];
     ts_status st = ts_certify(s, NULL, &up, rep, &e);
     CHECK(st == TS_ERR_VIOLATED);
@@ -330,7 +320,7 @@ static void test_certify_api(void)
     ts_spline_free(s);
 }
 
-/* Geometric form (SPEC §4): the gap is the trig minimum of
+/* Geometric form (docs/method.md §4): the gap is the trig minimum of
  * C_l = ±(Y_l − m X_l − c) with κ = 0; checked against a brute-force scan
  * of the parametric curve built here from the control points (not through
  * geometric.c's evaluation), and its location X(θ*). */
@@ -362,7 +352,7 @@ static void test_geometric_gap(void)
                     }
                     double g = ts__interval_gap(s, i, &lines[k], sign, &at);
                     const int N = 4000;
-                    double D = HALF_PI / N, mn = INFINITY;
+                    double D = HALF_PI / N, mn = TH_INF;
                     for (int j = 0; j <= N; j++) {
                         double v = g_ref(C, 0.0, j * D);
                         mn = v < mn ? v : mn;
@@ -397,12 +387,19 @@ static void test_geometric_gap(void)
 
 int main(void)
 {
+    TH_CASE("closed_forms");
     test_closed_forms();
+    TH_CASE("scaling");
     test_scaling();
+    TH_CASE("reference");
     test_reference();
+    TH_CASE("brute");
     test_brute();
+    TH_CASE("gaps_vs_dense");
     test_gaps_vs_dense();
+    TH_CASE("certify_api");
     test_certify_api();
+    TH_CASE("geometric_gap");
     test_geometric_gap();
     return th_report("test_certify");
 }

@@ -1,5 +1,5 @@
-/* Seeded property test of the shape schemes (SPEC §5) in the paper, C¹ and
- * geometric forms (SPEC §3, §4).
+/* Seeded property test of the shape schemes (docs/method.md §5) in the paper, C¹ and
+ * geometric forms (docs/method.md §3, §4).
  *
  * For each scheme (positive with zeros, above, below, between, monotone) and
  * form, TS_PROP_SETS random data sets (10,000 in a normal build): non-uniform
@@ -11,7 +11,7 @@
  *    claim is checked: paper and C¹ forms, the limit curve of that interval
  *    is not inside, and in the paper form no a on a grid from alpha to
  *    1e6·alpha is; geometric form, where the limit a -> ∞ is the chord with
- *    gap g_i c² + g_{i+1} s² (SPEC §4), one of its knots is on or across
+ *    gap g_i c² + g_{i+1} s² (docs/method.md §4), one of its knots is on or across
  *    the line in exact arithmetic although f - (m x + c) > 0 in floating
  *    point passed the data check);
  *  - certified; every certificate > 0 (>= 0 at a zero knot of positive data);
@@ -43,6 +43,8 @@
  * Seed: fixed (TS_PROP_SEED); each set is reproducible from (scheme, form, k).
  */
 #include "th.h"
+#include "common/th_basis.h"
+#include "common/th_rng.h"
 #include "trigspline.h"
 
 #include <float.h>
@@ -74,25 +76,12 @@
 static const double PI = 3.14159265358979323846;
 static const double HALF_PI = 1.57079632679489661923;
 
-static unsigned long long rs;
+/* each set's stream: the default generator seeded from (scheme, form, k) */
 static void seed(unsigned scheme, unsigned form, unsigned k)
 {
-    rs = ((unsigned long long)TS_PROP_SEED << 32) ^ ((unsigned long long)scheme << 24) ^
-         ((unsigned long long)form << 20) ^ (unsigned long long)k;
-    rs = rs * 0x9E3779B97F4A7C15ULL + 1;
-    if (!rs)
-        rs = 1;
+    th_seed(((uint64_t)TS_PROP_SEED << 32) ^ ((uint64_t)scheme << 24) ^ ((uint64_t)form << 20) ^
+            (uint64_t)k);
 }
-static double urand(void)
-{
-    rs ^= rs >> 12;
-    rs ^= rs << 25;
-    rs ^= rs >> 27;
-    return (double)((rs * 2685821657736338717ULL) >> 11) * 0x1.0p-53;
-}
-static double uni(double a, double b) { return a + (b - a) * urand(); }
-static double logu(double a, double b) { return exp(uni(log(a), log(b))); }
-static int chance(double p) { return urand() < p; }
 
 static double line_at(const ts_line *l, double x) { return l->m * x + l->c; }
 
@@ -175,19 +164,19 @@ static int knot_outside(const dataset *D, size_t j, int scheme)
  * jumps and flat runs; scaled by 10^[-3, 3] factors */
 static void profile(size_t np, double *p, int allow_zero, double p_near)
 {
-    double v = logu(1e-3, 1e3);
+    double v = th_logu(1e-3, 1e3);
     for (size_t i = 0; i < np; i++) {
-        double r = urand();
+        double r = th_unit();
         if (i > 0 && r < 0.15) {
             v = p[i - 1]; /* flat run */
         } else if (r < 0.30) {
-            v = logu(1e-3, 1e3); /* steep jump */
+            v = th_logu(1e-3, 1e3); /* steep jump */
         } else if (r < 0.30 + p_near) {
-            v = logu(1e-12, 1e-6); /* near the boundary */
+            v = th_logu(1e-12, 1e-6); /* near the boundary */
         } else if (allow_zero && r < 0.40 + p_near) {
             v = 0.0;
         } else if (i > 0) {
-            v = fabs(p[i - 1] == 0 ? logu(1e-3, 1) : p[i - 1] * logu(0.3, 3));
+            v = fabs(p[i - 1] == 0 ? th_logu(1e-3, 1) : p[i - 1] * th_logu(0.3, 3));
         }
         p[i] = v;
     }
@@ -205,19 +194,19 @@ static void gen(dataset *D, int scheme, int form)
     ts_options_init(o);
     o->form = (ts_form)form;
     o->shape = (ts_shape)scheme;
-    double r = urand();
-    size_t n = r < 0.08 ? 1 : r < 0.85 ? (size_t)uni(2, 17) : (size_t)uni(17, NMAX + 1);
+    double r = th_unit();
+    size_t n = r < 0.08 ? 1 : r < 0.85 ? (size_t)th_range(2, 17) : (size_t)th_range(17, NMAX + 1);
     if (n > NMAX)
         n = NMAX;
     D->n = n;
     size_t np = n + 1;
     /* x: offset and spacing scale over many decades, non-uniform steps */
-    double H = logu(1e-3, 1e3);
-    D->x[0] = uni(-1e3, 1e3) * (chance(0.5) ? 1.0 : H);
+    double H = th_logu(1e-3, 1e3);
+    D->x[0] = th_range(-1e3, 1e3) * (th_chance(0.5) ? 1.0 : H);
     for (size_t i = 1; i < np; i++)
-        D->x[i] = D->x[i - 1] + H * logu(1e-2, 1e1);
+        D->x[i] = D->x[i - 1] + H * th_logu(1e-2, 1e1);
     double p[NMAX + 1];
-    double V = logu(1e-4, 1e4);
+    double V = th_logu(1e-4, 1e4);
     switch (scheme) {
     case TS_SHAPE_POSITIVE:
         profile(np, p, 1, 0.1);
@@ -228,18 +217,18 @@ static void gen(dataset *D, int scheme, int form)
     case TS_SHAPE_BELOW: {
         ts_line L;
         double xspan = D->x[n] - D->x[0];
-        L.m = chance(0.3) ? 0.0 : (chance(0.5) ? 1 : -1) * V / xspan * logu(1e-3, 1e2);
-        L.c = uni(-1, 1) * V * 10 - L.m * D->x[0];
+        L.m = th_chance(0.3) ? 0.0 : (th_chance(0.5) ? 1 : -1) * V / xspan * th_logu(1e-3, 1e2);
+        L.c = th_range(-1, 1) * V * 10 - L.m * D->x[0];
         /* near-boundary points next to a sloped line are infeasible in the
-         * paper form whenever |m| h >> gap (SPEC §5): fewer of them there */
+         * paper form whenever |m| h >> gap (docs/method.md §5): fewer of them there */
         profile(np, p, 0, L.m == 0 ? 0.1 : 0.005);
         for (size_t i = 0; i < np; i++) {
             double g = V * p[i];
             /* mostly keep the gap at least a fraction of |m| h: otherwise
-             * the paper form cannot follow the line (SPEC §5, the limit
+             * the paper form cannot follow the line (docs/method.md §5, the limit
              * curve misses a line by up to 0.105 |m| h) */
-            if (chance(0.9))
-                g += fabs(L.m) * hmax(D, i) * logu(0.15, 3);
+            if (th_chance(0.9))
+                g += fabs(L.m) * hmax(D, i) * th_logu(0.15, 3);
             D->f[i] = scheme == TS_SHAPE_ABOVE ? line_at(&L, D->x[i]) + g : line_at(&L, D->x[i]) - g;
             /* rounding could put a tiny gap on the line: keep it a gap */
             double gg = scheme == TS_SHAPE_ABOVE ? D->f[i] - line_at(&L, D->x[i])
@@ -256,21 +245,21 @@ static void gen(dataset *D, int scheme, int form)
     case TS_SHAPE_BETWEEN: {
         ts_line L, U;
         double xspan = D->x[n] - D->x[0];
-        L.m = chance(0.3) ? 0.0 : (chance(0.5) ? 1 : -1) * V / xspan * logu(1e-3, 1e1);
-        L.c = uni(-1, 1) * V * 10 - L.m * D->x[0];
+        L.m = th_chance(0.3) ? 0.0 : (th_chance(0.5) ? 1 : -1) * V / xspan * th_logu(1e-3, 1e1);
+        L.c = th_range(-1, 1) * V * 10 - L.m * D->x[0];
         /* band width positive at both ends, so at every data point */
-        double w0 = V * logu(1e-1, 1e1), w1 = chance(0.3) ? w0 : V * logu(1e-1, 1e1);
+        double w0 = V * th_logu(1e-1, 1e1), w1 = th_chance(0.3) ? w0 : V * th_logu(1e-1, 1e1);
         U.m = L.m + (w1 - w0) / xspan;
         U.c = line_at(&L, D->x[0]) + w0 - U.m * D->x[0];
         profile(np, p, 0, L.m == 0 && U.m == 0 ? 0.1 : 0.005);
         for (size_t i = 0; i < np; i++) {
             double lo = line_at(&L, D->x[i]), up = line_at(&U, D->x[i]), w = up - lo;
             double q = p[i] / (1 + p[i]); /* in (0, 1), some very near 0 */
-            if (chance(L.m == 0 && U.m == 0 ? 0.1 : 0.005))
+            if (th_chance(L.m == 0 && U.m == 0 ? 0.1 : 0.005))
                 q = 1 - q * 1e-6; /* near the upper line */
             /* as for one line: mostly a gap of a fraction of |m| h to each */
             double gl = fabs(L.m) * hmax(D, i) * 0.15, gu = fabs(U.m) * hmax(D, i) * 0.15;
-            if (chance(0.85) && gl + gu < w) {
+            if (th_chance(0.85) && gl + gu < w) {
                 double qa = gl / w, qb = 1 - gu / w;
                 q = qa + (qb - qa) * q;
             }
@@ -284,34 +273,34 @@ static void gen(dataset *D, int scheme, int form)
         break;
     }
     default: { /* monotone */
-        int dir = chance(0.5) ? 1 : -1;
+        int dir = th_chance(0.5) ? 1 : -1;
         profile(np, p, 1, 0.1);
-        D->f[0] = uni(-1, 1) * V;
+        D->f[0] = th_range(-1, 1) * V;
         for (size_t i = 1; i < np; i++)
-            D->f[i] = D->f[i - 1] + dir * V * (chance(0.2) ? 0.0 : p[i]);
+            D->f[i] = D->f[i - 1] + dir * V * (th_chance(0.2) ? 0.0 : p[i]);
         break;
     }
     }
     /* alpha log-uniform in [1e-4, 10], scalar or per interval */
-    if (chance(0.5)) {
-        o->alpha = logu(1e-4, 10);
+    if (th_chance(0.5)) {
+        o->alpha = th_logu(1e-4, 10);
     } else {
         for (size_t i = 0; i < n; i++)
-            D->alphas[i] = logu(1e-4, 10);
+            D->alphas[i] = th_logu(1e-4, 10);
         o->alphas = D->alphas;
         o->n_alphas = n;
     }
-    if (chance(0.3)) {
+    if (th_chance(0.3)) {
         for (size_t i = 0; i < n; i++)
-            D->margins[i] = logu(1e-6, 1);
+            D->margins[i] = th_logu(1e-6, 1);
         o->margins = D->margins;
         o->n_margins = n;
     }
     /* user slopes sometimes: random, sign-valid at zero knots */
-    if (chance(0.25)) {
+    if (th_chance(0.25)) {
         double sc = V / H;
         for (size_t i = 0; i < np; i++) {
-            double d = uni(-3, 3) * sc * logu(1e-2, 1e2);
+            double d = th_range(-3, 3) * sc * th_logu(1e-2, 1e2);
             if (scheme == TS_SHAPE_POSITIVE && D->f[i] == 0)
                 d = i == 0 ? fabs(d) : i == n ? -fabs(d) : 0.0;
             D->us[i] = d;
@@ -325,12 +314,9 @@ static void gen(dataset *D, int scheme, int form)
 /* control values of a paper-form interval at a (for the infeasibility check) */
 static double curve_min(const double B[4], double x0, double h, const ts_line *L, int sign, int M)
 {
-    double mn = INFINITY;
+    double mn = TH_INF;
     for (int j = 0; j <= M; j++) {
-        double th = HALF_PI * j / M, s = sin(th), c = cos(th);
-        double A0 = (1 - s) * (1 - s) * (1 - s), A1 = 3 * s - 4 * s * s + s * s * s;
-        double A2 = 3 * c - 4 * c * c + c * c * c, A3 = (1 - c) * (1 - c) * (1 - c);
-        double y = A0 * B[0] + A1 * B[1] + A2 * B[2] + A3 * B[3];
+        double y = th_seg(B, HALF_PI * j / M);
         double g = sign * (y - line_at(L, x0 + h * j / M));
         mn = g < mn ? g : mn;
     }
@@ -351,30 +337,22 @@ typedef struct stats {
     double worst_rule;  /* geometric form: largest rule_ratio of a repaired interval, in ε */
 } stats;
 
-static void basis(double th, double A[4])
-{
-    double s = sin(th), c = cos(th);
-    A[0] = (1 - s) * (1 - s) * (1 - s);
-    A[1] = 3 * s - 4 * s * s + s * s * s;
-    A[2] = 3 * c - 4 * c * c + c * c * c;
-    A[3] = (1 - c) * (1 - c) * (1 - c);
-}
 
 /* Geometric form: the sampled minimum over θ_j = (π/2) j/SAMPLES of
  * g(θ) = sign·(Y(θ) − m X(θ) − c) = Σ A_l C_l, C_l = sign·(Y_l − m X_l − c)
- * (SPEC §4: Σ A_l = 1), from the control values alone; *ts receives the
+ * (docs/method.md §4: Σ A_l = 1), from the control values alone; *ts receives the
  * sampling bound ½ max|g''| (Δθ/2)²: g'' = Σ A_l'' (C_l − C_0) and
- * max |A_l''| on [0, π/2] is 6, 8, 8, 6 (at the ends; SPEC §2 by hand, checked
+ * max |A_l''| on [0, π/2] is 6, 8, 8, 6 (at the ends; docs/method.md §2 by hand, checked
  * on a fine grid with numpy).  Every minimum is within Δθ/2 of a sample and
  * g' = 0 there unless it is at an end, which is a sample. */
 static double theta_min(const double B[4], const double X[4], const ts_line *L, int sign,
                         double *ts)
 {
-    double C[4], mn = INFINITY, A[4];
+    double C[4], mn = TH_INF, A[4];
     for (int l = 0; l < 4; l++)
         C[l] = sign * (B[l] - line_at(L, X[l]));
     for (int j = 0; j <= SAMPLES; j++) {
-        basis(HALF_PI * j / SAMPLES, A);
+        th_basis(HALF_PI * j / SAMPLES, A);
         double g = A[0] * C[0] + A[1] * C[1] + A[2] * C[2] + A[3] * C[3];
         mn = g < mn ? g : mn;
     }
@@ -385,7 +363,7 @@ static double theta_min(const double B[4], const double X[4], const ts_line *L, 
 }
 
 /* Geometric form, interval i of a built spline: redo the closed-form rule of
- * SPEC §5 with d − m for the lines (SPEC §4: C_1 = g_i + k(d_i − m) > 0,
+ * docs/method.md §5 with d − m for the lines (docs/method.md §4: C_1 = g_i + k(d_i − m) > 0,
  * C_2 = g_{i+1} − k(d_{i+1} − m) > 0 for a lower line, signs swapped for an
  * upper one), beta = t + max{0, terms}, a raised to 4/(3π) (TS_FORM_GEOMETRIC),
  * with the slopes the spline used; return the smallest C_1, C_2 at that a, each
@@ -414,7 +392,7 @@ static double rule_ratio(const ts_spline *s, const dataset *D, size_t i, int sch
     double a = al + t + best;
     if (!(a >= TS_GEOMETRIC_A_RAISE))
         a = TS_GEOMETRIC_A_RAISE;
-    double kk = K / a, r = INFINITY;
+    double kk = K / a, r = TH_INF;
     for (int k = 0; k < nl; k++) {
         double mm = L[k].m, cc = fabs(L[k].c);
         double C1 = g0[k] + sg[k] * kk * (d[i] - mm), C2 = g1[k] - sg[k] * kk * (d[i + 1] - mm);
@@ -442,11 +420,11 @@ static int fill_queries(const ts_spline *s, int ns)
 }
 
 /* Geometric form: the point (X(θ), Y(θ)) of interval i's parametric curve at
- * θ_j = (π/2) j/SAMPLES from its control values (SPEC §4). */
+ * θ_j = (π/2) j/SAMPLES from its control values (docs/method.md §4). */
 static void geo_point(const double B[4], const double X[4], int j, double *px, double *py)
 {
     double A[4];
-    basis(HALF_PI * j / SAMPLES, A);
+    th_basis(HALF_PI * j / SAMPLES, A);
     *px = A[0] * X[0] + A[1] * X[1] + A[2] * X[2] + A[3] * X[3];
     *py = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
 }
@@ -500,7 +478,7 @@ static long check_spline(const ts_spline *s, const dataset *D, int scheme, int f
         } else {
             /* knots: θ = 0 exactly at x_i, so S = B0 = f_i up to the batch
              * kernel's 8 ε·M (fast.c); at x_n, θ = h·((π/2)/h) is off π/2 by
-             * ≤ 3 ε·π/2 and |dS/dθ| ≤ 3(|D0|+|D1|+|D2|) ≤ 18 M (SPEC (2.1)):
+             * ≤ 3 ε·π/2 and |dS/dθ| ≤ 3(|D0|+|D1|+|D2|) ≤ 18 M (docs/method.md (2.1)):
              * 8 εM + 16 εM (ts_eval) + 85 εM < 128 ε·M */
             CHECK(fabs(ys[0] - f[i]) <= 8 * EPS * bsc);
             if (i + 1 == n)
@@ -569,7 +547,7 @@ static long check_spline(const ts_spline *s, const dataset *D, int scheme, int f
              * |m| h); the sampling bound is checked in θ instead (theta_min) */
             double sc = scale_of(r.B, &ln, x[i], x[i + 1]);
             double te = 256 * EPS * sc;
-            double mn = INFINITY;
+            double mn = TH_INF;
             for (int j = 0; j <= ns; j++) {
                 double g = sign * (ys[j] - line_at(&ln, xs[j]));
                 mn = g < mn ? g : mn;
@@ -622,7 +600,7 @@ static void check_infeasible(const dataset *D, size_t j, int form)
                                D->o.shape != TS_SHAPE_ABOVE ? &D->o.upper : NULL};
     /* limit a -> ∞ not inside (within rounding and sampling) */
     double Bl[4] = {D->f[j], D->f[j], D->f[j + 1], D->f[j + 1]};
-    double worst = INFINITY;
+    double worst = TH_INF;
     for (int k = 0; k < 2; k++) {
         if (!lines[k])
             continue;
@@ -637,7 +615,7 @@ static void check_infeasible(const dataset *D, size_t j, int form)
     int any = 0;
     for (double a = al; a <= 1e6 * al && !any; a *= 1.25) {
         double B[4] = {D->f[j], D->f[j] + K * d[j] / a, D->f[j + 1] - K * d[j + 1] / a, D->f[j + 1]};
-        double mn = INFINITY;
+        double mn = TH_INF;
         for (int k = 0; k < 2; k++) {
             if (!lines[k])
                 continue;
@@ -666,7 +644,7 @@ static void control(const dataset *D, int scheme, stats *st)
     o.shape = TS_SHAPE_NONE;
     o.alphas = NULL;
     o.margins = NULL;
-    o.alpha = geo ? logu(TS_GEOMETRIC_A_MIN, 0.45) : logu(1e-4, 0.05);
+    o.alpha = geo ? th_logu(TS_GEOMETRIC_A_MIN, 0.45) : th_logu(1e-4, 0.05);
     o.beta = 0;
     ts_spline *s = NULL;
     if (ts_spline_new(D->x, D->f, D->n + 1, &o, &s, NULL) != TS_OK) {
@@ -769,7 +747,7 @@ static void regressions(void)
     /* f2b[l] = L(x_l) + a few ulps, L = 0.5 x + 10 (exact at these x) */
     for (int l = 0; l < 4; l++) {
         double L = 0.5 * x2[l] + 10;
-        f2b[l] = l == 2 ? f2[l] : nextafter(nextafter(nextafter(L, INFINITY), INFINITY), INFINITY);
+        f2b[l] = l == 2 ? f2[l] : nextafter(nextafter(nextafter(L, TH_INF), TH_INF), TH_INF);
     }
     for (int c = 0; c < 4; c++) {
         ts_options o;
@@ -835,8 +813,10 @@ static void regressions(void)
 int main(void)
 {
     static dataset D;
+    TH_CASE("regressions");
     regressions();
     for (int scheme = TS_SHAPE_POSITIVE; scheme <= TS_SHAPE_MONOTONE; scheme++) {
+        TH_CASE(names[scheme]);
         for (int form = 0; form < NFORMS; form++) {
             stats st = {0, 0, 0, 0, 0, 0, 0, 0.0};
             long fail0 = th_fail_;
@@ -860,7 +840,7 @@ int main(void)
                     st.infeasible++;
                     CHECK(e.where == TS_WHERE_INTERVAL && e.index < D.n);
                     if (e.index < D.n && form == TS_FORM_GEOMETRIC)
-                        /* SPEC §4: with both knots inside, the chord (a -> ∞)
+                        /* docs/method.md §4: with both knots inside, the chord (a -> ∞)
                          * has gap g_i c² + g_{i+1} s² > 0 and the closed-form
                          * rule puts every control gap inside: never infeasible */
                         CHECKF(knot_outside(&D, e.index, scheme),

@@ -1,11 +1,11 @@
-/* The core spline (SPEC §3, §6) against an independent reference.
+/* The core spline (docs/method.md §3, §6) against an independent reference.
  *
  * Expected values:
  *  - tests/ref/core_ref.csv, written by tests/ref/reference.py (mpmath, 40
- *    digits, SPEC §3 recomputed from scratch; derivatives by mpmath.diff and
+ *    digits, docs/method.md §3 recomputed from scratch; derivatives by mpmath.diff and
  *    integrals by mpmath.quad of the script's own S).  Regenerate with
  *      /usr/bin/python3 tests/ref/reference.py > tests/ref/core_ref.csv
- *  - SPEC formulas re-derived here (control values, end slopes d_i/a_i,
+ *  - docs/method.md formulas re-derived here (control values, end slopes d_i/a_i,
  *    d_{i+1}/a_i, the C¹ option's d̂), and finite differences.
  *
  * Tolerances.  Let M = max(1, max |B_l| over all intervals) ("scale" in the
@@ -23,6 +23,7 @@
  * magnitude <= (x_n - x_0)·M: tol 1e-13·M·(x_n - x_0).
  */
 #include "th.h"
+#include "common/th_rng.h"
 #include "trigspline.h"
 
 #include <float.h>
@@ -105,7 +106,7 @@ static double alpha_i(const tcase *tc, size_t i) { return tc->nal == 1 ? tc->al[
 static double beta_i(const tcase *tc, size_t i) { return tc->nbe == 1 ? tc->be[0] : tc->be[i]; }
 static double a_i(const tcase *tc, size_t i) { return alpha_i(tc, i) + beta_i(tc, i); }
 
-/* SPEC §3 C¹ option: d̂_j = d_j / max(a_{j-1}, a_j), one-sided at the ends. */
+/* docs/method.md §3 C¹ option: d̂_j = d_j / max(a_{j-1}, a_j), one-sided at the ends. */
 static double dhat(const tcase *tc, const double *d, size_t j)
 {
     if (j == 0)
@@ -171,7 +172,7 @@ static void case_begin(tcase *tc)
     CHECK(X && F && D && AL && BE);
     if (!(X && F && D && AL && BE))
         return;
-    double hmin = INFINITY;
+    double hmin = TH_INF;
     for (size_t i = 0; i < n; i++)
         hmin = fmin(hmin, h_of(tc, i));
     for (size_t j = 0; j <= n; j++) {
@@ -184,10 +185,10 @@ static void case_begin(tcase *tc)
     }
     for (size_t i = 0; i < n; i++) {
         CHECKF(AL[i] == alpha_i(tc, i) && BE[i] == beta_i(tc, i), "%s: alpha/beta %zu", tc->name, i);
-        double a = NAN;
+        double a = TH_NAN;
         CHECK(ts_spline_a(sp, i, &a) == TS_OK);
         CHECK_CLOSE(a, a_i(tc, i), 2 * EPS * a_i(tc, i));
-        /* control values re-derived from SPEC §3 with the slopes the spline used */
+        /* control values re-derived from docs/method.md §3 with the slopes the spline used */
         double B[4], Xc[4], h = h_of(tc, i), K = 2 * h / (3 * PI);
         double e1 = tc->f[i] + K * slope_start(tc, D, i), e2 = tc->f[i + 1] - K * slope_end(tc, D, i);
         CHECK(ts_spline_control(sp, i, B, Xc) == TS_OK);
@@ -213,13 +214,13 @@ static void case_begin(tcase *tc)
     /* ---- every knot is interpolated (θ = 0 exactly at x_i; at x_n θ is π/2
      * up to rounding: 4ε·M) */
     for (size_t j = 0; j <= n; j++) {
-        double y = NAN;
+        double y = TH_NAN;
         CHECK(ts_eval(sp, tc->x[j], NULL, &y) == TS_OK);
         CHECKF(fabs(y - tc->f[j]) <= 4 * EPS * tc->scale, "%s: S(x_%zu) = %.17g, f = %.17g", tc->name, j, y,
                tc->f[j]);
     }
 
-    /* ---- both end slopes of every interval (SPEC §3: d_i/a_i and d_{i+1}/a_i;
+    /* ---- both end slopes of every interval (docs/method.md §3: d_i/a_i and d_{i+1}/a_i;
      * C¹: d̂_i, d̂_{i+1}).  This catches the paper's printed "+" in B2, which
      * makes the right end slope -d_{i+1}/a_i. */
     for (size_t i = 0; i < n; i++) {
@@ -244,7 +245,7 @@ static void case_begin(tcase *tc)
                    "%s: S'(x_n) = %.17g want %.17g", tc->name, gn, wantr);
         }
         /* C¹ option: left and right derivatives equal at inner knots; paper
-         * form: the jump is d_j (1/a_i - 1/a_{i+1}) (SPEC §3) */
+         * form: the jump is d_j (1/a_i - 1/a_{i+1}) (docs/method.md §3) */
         if (i + 1 < n) {
             double right = deriv_at(sp, tc->x[i + 1]);
             double jump = tc->form ? 0.0 : D[i + 1] / a_i(tc, i + 1) - D[i + 1] / a_i(tc, i);
@@ -262,9 +263,9 @@ static void check_knot_ref(tcase *tc, size_t j, double left, double right)
     if (!tc->sp || j > tc->n)
         return;
     const double *D = ts_spline_slopes(tc->sp);
-    /* the SPEC formula with the library's slopes vs the mpmath derivative of the
+    /* the docs/method.md formula with the library's slopes vs the mpmath derivative of the
      * reference's own S: the slopes differ by a few ulp of M/h_min */
-    double hmin = INFINITY;
+    double hmin = TH_INF;
     for (size_t i = 0; i < tc->n; i++)
         hmin = fmin(hmin, h_of(tc, i));
     double tol = 1e-12 * tc->scale / hmin;
@@ -306,7 +307,7 @@ static void check_pt(tcase *tc, const double *v)
     CHECKF(fabs(dy - v[2]) <= 2e-13 * w * M, "%s: S'(%.17g) = %.17g, ref %.17g", tc->name, x, dy, v[2]);
     CHECKF(fabs(d2y - v[3]) <= 1e-12 * w * w * M, "%s: S''(%.17g) = %.17g, ref %.17g", tc->name, x, d2y, v[3]);
     /* ts_eval gives the same value; a cursor gives the same values */
-    double y0 = NAN;
+    double y0 = TH_NAN;
     ts_cursor cur = {(size_t)tc->n_pt * 7919u % (tc->n + 3)}; /* arbitrary, possibly stale hint */
     CHECK(ts_eval(tc->sp, x, &cur, &y0) == TS_OK && y0 == y);
     tc->n_pt++;
@@ -337,7 +338,7 @@ static void check_int(tcase *tc, const double *v)
 {
     if (!tc->sp)
         return;
-    double r = NAN, r2 = NAN;
+    double r = TH_NAN, r2 = TH_NAN;
     double tol = 1e-13 * tc->scale * (tc->x[tc->n] - tc->x[0]);
     CHECK(ts_integral(tc->sp, v[0], v[1], &r) == TS_OK);
     CHECKF(fabs(r - v[2]) <= tol, "%s: integral %.17g..%.17g = %.17g, ref %.17g", tc->name, v[0], v[1], r, v[2]);
@@ -359,16 +360,15 @@ static void case_end(tcase *tc)
                tc->name);
 
         /* integral additivity on a pseudo-random set of triples */
-        unsigned seed = 777u;
+        th_rng gen = TH_RNG_INIT(777u);
         for (int k = 0; k < 60; k++) {
             double u[3];
             for (int m = 0; m < 3; m++) {
-                seed = seed * 1664525u + 1013904223u;
-                u[m] = x0 + L * ((double)(seed >> 8) / 16777216.0);
+                u[m] = x0 + L * th_rng_unit(&gen);
             }
             if (k % 5 == 0)
                 u[1] = tc->x[(size_t)k % (n + 1)]; /* a knot in the middle */
-            double ab, bc, ac;
+            double ab = TH_NAN, bc = TH_NAN, ac = TH_NAN; /* NaN if a call fails */
             CHECK(ts_integral(sp, u[0], u[1], &ab) == TS_OK && ts_integral(sp, u[1], u[2], &bc) == TS_OK &&
                   ts_integral(sp, u[0], u[2], &ac) == TS_OK);
             CHECK_CLOSE(ab + bc, ac, 3e-13 * M * L);
@@ -422,7 +422,7 @@ static void case_end(tcase *tc)
                 CHECKF(y == fe && dy == 0 && d2y == 0, "%s: clamp at %.17g: %.17g %.17g %.17g", tc->name, x, y, dy,
                        d2y);
                 CHECK(ts_eval_deriv(li, x, NULL, &y, &dy, &d2y) == TS_OK);
-                /* tangent line: end value + one-sided end slope (SPEC §3 slope, to
+                /* tangent line: end value + one-sided end slope (docs/method.md §3 slope, to
                  * the rounding of S' at the end, 16ε·w·M) */
                 double ts = 16 * EPS * w * M + 4 * EPS * fabs(se);
                 CHECKF(fabs(dy - se) <= ts, "%s: linear slope at %.17g = %.17g, want %.17g", tc->name, x, dy, se);
@@ -444,7 +444,7 @@ static void case_end(tcase *tc)
             }
             /* inside the data every policy agrees exactly */
             for (int k = 0; k <= 20; k++) {
-                double x = x0 + L * k / 20.0, a, b, c, d;
+                double x = x0 + L * k / 20.0, a = TH_NAN, b = TH_NAN, c = TH_NAN, d = TH_NAN;
                 CHECK(ts_eval(sp, x, NULL, &a) == TS_OK && ts_eval(cl, x, NULL, &b) == TS_OK &&
                       ts_eval(li, x, NULL, &c) == TS_OK && ts_eval(tc->ext, x, NULL, &d) == TS_OK);
                 CHECK(a == b && a == c && a == d);
@@ -456,10 +456,10 @@ static void case_end(tcase *tc)
             /* ±Inf (header): clamped under TS_EXTRAP_CLAMP, TS_ERR_DOMAIN under
              * every other policy, NaN outputs */
             double y, dy, d2y;
-            CHECKF(ts_eval_deriv(cl, INFINITY, NULL, &y, &dy, &d2y) == TS_OK && y == tc->f[n] && dy == 0 &&
+            CHECKF(ts_eval_deriv(cl, TH_INF, NULL, &y, &dy, &d2y) == TS_OK && y == tc->f[n] && dy == 0 &&
                        d2y == 0,
                    "%s: clamp at +Inf", tc->name);
-            CHECKF(ts_eval(cl, -INFINITY, NULL, &y) == TS_OK && y == tc->f[0], "%s: clamp at -Inf", tc->name);
+            CHECKF(ts_eval(cl, -TH_INF, NULL, &y) == TS_OK && y == tc->f[0], "%s: clamp at -Inf", tc->name);
             const ts_spline *others[3] = {sp, li, tc->ext};
             for (int k = 0; k < 3; k++)
                 for (int sg = -1; sg <= 1; sg += 2) {
@@ -468,9 +468,9 @@ static void case_end(tcase *tc)
                                isnan(y) && isnan(dy) && isnan(d2y),
                            "%s: policy %d at %g*Inf", tc->name, k, (double)sg);
                 }
-            CHECK(ts_eval(cl, NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
-            CHECK(ts_eval(li, NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
-            CHECK(ts_eval(tc->ext, NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
+            CHECK(ts_eval(cl, TH_NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
+            CHECK(ts_eval(li, TH_NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
+            CHECK(ts_eval(tc->ext, TH_NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
         }
         ts_spline_free(cl);
         ts_spline_free(li);
@@ -501,7 +501,7 @@ static void test_defaults(void)
             CHECK(ya == yb && da == db && sa == sb);
         }
         CHECK(ts_spline_alpha(a)[2] == 1.0 && ts_spline_beta(a)[2] == 0.0);
-        /* arithmetic mean is exact on quadratics (SPEC §6): slopes of 2x² - x */
+        /* arithmetic mean is exact on quadratics (docs/method.md §6): slopes of 2x² - x */
         ts_spline_free(a);
         a = NULL;
         double q[5];
@@ -550,6 +550,7 @@ static void test_constant(void)
 
 int main(void)
 {
+    TH_CASE("reference cases"); /* each check's message names its case */
     FILE *fp = fopen(REF_PATH, "r");
     CHECKF(fp != NULL, "cannot open %s", REF_PATH);
     int n_cases = 0;
@@ -617,7 +618,9 @@ int main(void)
         fclose(fp);
     }
     CHECKF(n_cases >= 16, "only %d reference cases read", n_cases);
+    TH_CASE("defaults");
     test_defaults();
+    TH_CASE("constant");
     test_constant();
     return th_report("test_core");
 }

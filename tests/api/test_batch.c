@@ -13,6 +13,7 @@
  * and TS_ERR_DOMAIN with err.index = the first invalid query.
  */
 #include "th.h"
+#include "common/th_rng.h"
 #include "trigspline.h"
 
 #include <math.h>
@@ -22,12 +23,6 @@
 #define PI 3.14159265358979323846
 #define NQ 1200
 
-static unsigned rng_state = 20240517u;
-static double urand(void)
-{
-    rng_state = rng_state * 1664525u + 1013904223u;
-    return (double)(rng_state >> 8) / 16777216.0;
-}
 
 typedef struct fix {
     const char *name;
@@ -67,7 +62,7 @@ static void compare(const fix *F, int deriv, const double *xq, size_t m, ts_curs
     if (!yq || !ref) {
         free(yq);
         free(ref);
-        CHECK(!"out of memory in the test");
+        CHECKF(0, "out of memory in the test");
         return;
     }
     size_t first_bad = TS_NO_INDEX;
@@ -154,12 +149,12 @@ static void run_sets(const fix *F)
         case 2: /* random */
             what = "random";
             for (size_t j = 0; j < m; j++)
-                xq[j] = F->x0 + L * urand();
+                xq[j] = F->x0 + L * th_unit();
             break;
         case 3: /* duplicated: runs of equal queries, random order of runs */
             what = "duplicated";
             for (size_t j = 0; j < m; j += 4) {
-                double v = F->x0 + L * urand();
+                double v = F->x0 + L * th_unit();
                 for (size_t k = j; k < j + 4 && k < m; k++)
                     xq[k] = v;
             }
@@ -168,16 +163,16 @@ static void run_sets(const fix *F)
             what = "sorted+invalid";
             for (size_t j = 0; j < m; j++)
                 xq[j] = F->x0 - 0.5 * F->h0 + (L + 0.5 * F->h0 + 1.2 * F->hn) * (double)j / (double)(m - 1);
-            xq[17] = NAN;
-            xq[500] = NAN;
-            xq[m - 1] = NAN;
+            xq[17] = TH_NAN;
+            xq[500] = TH_NAN;
+            xq[m - 1] = TH_NAN;
             break;
         case 5: /* random with invalid queries, first invalid late */
             what = "random+invalid";
             for (size_t j = 0; j < m; j++)
-                xq[j] = F->x0 + L * urand();
+                xq[j] = F->x0 + L * th_unit();
             xq[700] = F->xn + 0.25 * F->hn;
-            xq[701] = NAN;
+            xq[701] = TH_NAN;
             xq[900] = F->x0 - 1e-3 * F->h0;
             xq[1100] = F->x0 - 1e6 * F->h0;
             xq[1150] = HUGE_VAL;
@@ -191,8 +186,8 @@ static void run_sets(const fix *F)
                 size_t j = 0;
                 for (size_t i = 0; i <= F->n && j + 3 <= m; i++) {
                     xq[j++] = X[i];
-                    xq[j++] = nextafter(X[i], -INFINITY);
-                    xq[j++] = nextafter(X[i], INFINITY);
+                    xq[j++] = nextafter(X[i], -TH_INF);
+                    xq[j++] = nextafter(X[i], TH_INF);
                 }
                 m = j;
             }
@@ -217,12 +212,12 @@ int main(void)
     double x[NP], f[NP], al[NP - 1], be[NP - 1];
     x[0] = -3.0;
     for (int i = 1; i < NP; i++)
-        x[i] = x[i - 1] + 0.05 + 2.0 * urand();
+        x[i] = x[i - 1] + 0.05 + 2.0 * th_unit();
     for (int i = 0; i < NP; i++)
-        f[i] = 40.0 * (urand() - 0.3);
+        f[i] = 40.0 * (th_unit() - 0.3);
     for (int i = 0; i < NP - 1; i++) {
-        al[i] = 0.1 + 2.0 * urand();
-        be[i] = i % 3 ? 1.5 * urand() : 0.0;
+        al[i] = 0.1 + 2.0 * th_unit();
+        be[i] = i % 3 ? 1.5 * th_unit() : 0.0;
     }
     const ts_extrap exs[4] = {TS_EXTRAP_ERROR, TS_EXTRAP_CLAMP, TS_EXTRAP_EXTEND, TS_EXTRAP_LINEAR};
     const char *names[2][4] = {{"paper/error", "paper/clamp", "paper/extend", "paper/linear"},
@@ -235,6 +230,7 @@ int main(void)
             o.alphas = al, o.n_alphas = NP - 1;
             o.betas = be, o.n_betas = NP - 1;
             o.extrapolate = exs[e];
+            TH_CASE(names[form][e]);
             fix F;
             memset(&F, 0, sizeof F);
             F.name = names[form][e];
@@ -245,7 +241,7 @@ int main(void)
             F.n = NP - 1;
             F.x0 = x[0], F.xn = x[NP - 1];
             F.h0 = x[1] - x[0], F.hn = x[NP - 1] - x[NP - 2];
-            double hmin = INFINITY, sc = 1;
+            double hmin = TH_INF, sc = 1;
             for (size_t i = 0; i < F.n; i++) {
                 double B[4];
                 hmin = fmin(hmin, x[i + 1] - x[i]);
@@ -264,6 +260,7 @@ int main(void)
         }
     }
     /* a two-point spline: one interval, every query in it or outside */
+    TH_CASE("two points");
     {
         double x2[2] = {1.0, 2.5}, f2[2] = {-1.0, 3.0};
         ts_options o;

@@ -45,7 +45,7 @@ static void exercise(const ts_spline *s, const ts_line *lo, const ts_line *up)
     ts_interval_report rep[NP];
     for (int j = 0; j < NQ; j++) /* sorted, then a scrambled tail, some outside */
         xq[j] = j < NQ / 2 ? a + (b - a) * j / (NQ / 2 - 1) : a - 1 + (b - a + 2) * ((j * 7919) % NQ) / NQ;
-    xq[NQ - 1] = NAN;
+    xq[NQ - 1] = TH_NAN;
     counting = 1;
     for (int j = 0; j < NQ; j += 7) {
         (void)ts_eval(s, xq[j], &cur, &v);
@@ -78,6 +78,7 @@ int main(void)
         f[i] = 2.0 + (i % 5) * 0.7 + 0.01 * i * i;
     }
     ts_line lo = {0.01, 0.5}, up = {0.3, 9.0};
+    TH_CASE("splines");
     for (int form = TS_FORM_PAPER; form <= TS_FORM_GEOMETRIC; form++) {
         for (int shape = TS_SHAPE_NONE; shape <= TS_SHAPE_BETWEEN; shape++) {
             for (int ex = TS_EXTRAP_ERROR; ex <= TS_EXTRAP_LINEAR; ex++) {
@@ -103,6 +104,7 @@ int main(void)
         }
     }
     /* curves, open and closed */
+    TH_CASE("curves");
     double pts[2 * 12];
     for (int i = 0; i < 12; i++) {
         pts[2 * i] = cos(0.5 * i) * (2 + 0.1 * i);

@@ -19,6 +19,7 @@
  */
 #define _POSIX_C_SOURCE 200809L
 #include "th.h"
+#include "common/th_rng.h"
 #include "trigspline.h"
 
 #include <math.h>
@@ -33,14 +34,6 @@
 #define NCQ 1500  /* queries per curve */
 #define ROUNDS 2
 
-static uint64_t rng = 0x9E3779B97F4A7C15ull;
-static double urand(void)
-{
-    rng ^= rng << 13;
-    rng ^= rng >> 7;
-    rng ^= rng << 17;
-    return (double)(rng >> 11) / 9007199254740992.0;
-}
 
 /* Bitwise equality, NaN == NaN of the same bits. */
 static int same(double a, double b)
@@ -108,7 +101,7 @@ static void make_splines(void)
         ref_spline *R = &S[k];
         double x = 0.0;
         for (int i = 0; i < NP; i++) {
-            x += 0.05 + urand();
+            x += 0.05 + th_unit();
             R->x[i] = x;
         }
         ts_options_init(&R->opt);
@@ -133,7 +126,7 @@ static void make_splines(void)
         } else { /* geometric form, monotone with flat runs */
             double f = 0.0;
             for (int i = 0; i < NP; i++) {
-                f += i % 11 < 3 ? 0.0 : urand() * urand() * 5.0;
+                f += i % 11 < 3 ? 0.0 : th_unit() * th_unit() * 5.0;
                 R->f[i] = f;
             }
             R->opt.form = TS_FORM_GEOMETRIC;
@@ -145,12 +138,12 @@ static void make_splines(void)
         ts_status st = ts_spline_new(R->x, R->f, NP, &R->opt, &R->s, &e);
         CHECKF(st == TS_OK, "spline %d: %s at %zu", k, ts_strerror(st), e.index);
         if (st != TS_OK)
-            exit(th_report("test_review_threads"));
+            exit(th_report("test_threads"));
         double x0 = R->x[0], xn = R->x[NP - 1], w = xn - x0;
         for (int j = 0; j < NQ; j++) {
-            double u = urand();
-            R->q[j] = j % 97 == 0 ? R->x[(size_t)(urand() * NP) % NP]       /* knots */
-                      : j % 389 == 1 ? (double)NAN
+            double u = th_unit();
+            R->q[j] = j % 97 == 0 ? R->x[(size_t)(th_unit() * NP) % NP]       /* knots */
+                      : j % 389 == 1 ? TH_NAN
                       : x0 - 0.05 * w + 1.1 * w * u;                       /* some outside */
         }
         /* insertion sort of the indices by value, NaN last */
@@ -220,12 +213,12 @@ static void make_curves(void)
         ts_status st = ts_curve_new(pts, np, R->dim, &co, &R->c, &e);
         CHECKF(st == TS_OK, "curve %d: %s at %zu", k, ts_strerror(st), e.index);
         if (st != TS_OK)
-            exit(th_report("test_review_threads"));
+            exit(th_report("test_threads"));
         const double *t = ts_curve_knots(R->c);
         double tn = t[ts_curve_segments(R->c)];
         for (int j = 0; j < NCQ; j++) {
-            R->t[j] = j % 50 == 0 ? t[(size_t)(urand() * (double)ts_curve_segments(R->c))]
-                      : -0.1 * tn + 1.2 * tn * urand(); /* closed: wraps; open: some outside */
+            R->t[j] = j % 50 == 0 ? t[(size_t)(th_unit() * (double)ts_curve_segments(R->c))]
+                      : -0.1 * tn + 1.2 * tn * th_unit(); /* closed: wraps; open: some outside */
             R->st[j] = ts_curve_eval(R->c, R->t[j], NULL, R->p[j], R->dp[j], R->d2p[j]);
         }
         CHECK(ts_curve_length(R->c, 1e-10, &R->len) == TS_OK);
@@ -238,9 +231,9 @@ static void make_order(int id, int n, int *order, uint64_t seed)
     for (int j = 0; j < n; j++)
         order[j] = id == 1 ? n - 1 - j : j;
     if (id == 3) {
+        th_rng gen = TH_RNG_INIT(seed); /* the calling thread's own generator */
         for (int j = n - 1; j > 0; j--) {
-            seed = seed * 6364136223846793005ull + 1442695040888963407ull;
-            int r = (int)((seed >> 33) % (uint64_t)(j + 1));
+            int r = (int)th_rng_below(&gen, (size_t)j + 1);
             int tmp = order[j];
             order[j] = order[r];
             order[r] = tmp;
@@ -358,6 +351,7 @@ static void *worker(void *arg)
 
 int main(void)
 {
+    TH_CASE("fixtures");
     make_splines();
     make_curves();
 
@@ -380,6 +374,7 @@ int main(void)
     }
     CHECK(ts_curve_certify(C[0].c, NULL, NULL) == TS_OK);
 
+    TH_CASE("threads");
     pthread_t th[NTH];
     static out_thread outs[NTH];
     CHECK(pthread_barrier_init(&barrier, NULL, NTH) == 0);
@@ -407,5 +402,5 @@ int main(void)
         ts_spline_free(S[k].s);
     for (int k = 0; k < NCRV; k++)
         ts_curve_free(C[k].c);
-    return th_report("test_review_threads");
+    return th_report("test_threads");
 }

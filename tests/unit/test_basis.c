@@ -1,5 +1,5 @@
-/* SPEC §2: the cubic trigonometric basis, through the internal functions of
- * src/internal.h.  Expected values come from the SPEC's own definitions,
+/* docs/method.md §2: the cubic trigonometric basis, through the internal functions of
+ * src/internal.h.  Expected values come from the definitions of docs/method.md,
  * re-typed here (A0 = (1-s)^3, A1 = 3s - 4s^2 + s^3, ...), from finite
  * differences and from Gauss–Legendre quadrature -- never from basis.c.
  *
@@ -13,6 +13,8 @@
  * rounding error <= 4ε·M0/h when each f is computed to within 4 ulp of M0.
  */
 #include "th.h"
+#include "common/th_basis.h"
+#include "common/th_rng.h"
 #include "internal.h"
 
 #include <float.h>
@@ -21,34 +23,8 @@
 #define EPS DBL_EPSILON
 static const double M0 = 8.0, M1 = 8.5, M3 = 26.5, M4 = 56.0;
 
-/* SPEC §2, typed from the text (no cancellation guards: reference only). */
-static void ref_basis(double t, double A[4])
-{
-    double s = sin(t), c = cos(t);
-    A[0] = (1 - s) * (1 - s) * (1 - s);
-    A[1] = 3 * s - 4 * s * s + s * s * s;
-    A[2] = 3 * c - 4 * c * c + c * c * c;
-    A[3] = (1 - c) * (1 - c) * (1 - c);
-}
-static void ref_basis_d1(double t, double A[4])
-{
-    double s = sin(t), c = cos(t);
-    A[0] = -3 * (1 - s) * (1 - s) * c;
-    A[1] = c * (3 - 8 * s + 3 * s * s);
-    A[2] = -s * (3 - 8 * c + 3 * c * c);
-    A[3] = 3 * (1 - c) * (1 - c) * s;
-}
-/* Derived by hand from ref_basis_d1 (product rule):
- * A0'' = 6(1-s)c² + 3(1-s)²s, A1'' = -s(3 - 8s + 3s²) + c²(6s - 8),
- * A2'' = -c(3 - 8c + 3c²) + s²(6c - 8), A3'' = 6(1-c)s² + 3(1-c)²c. */
-static void ref_basis_d2(double t, double A[4])
-{
-    double s = sin(t), c = cos(t);
-    A[0] = 6 * (1 - s) * c * c + 3 * (1 - s) * (1 - s) * s;
-    A[1] = -s * (3 - 8 * s + 3 * s * s) + c * c * (6 * s - 8);
-    A[2] = -c * (3 - 8 * c + 3 * c * c) + s * s * (6 * c - 8);
-    A[3] = 6 * (1 - c) * s * s + 3 * (1 - c) * (1 - c) * c;
-}
+/* The reference basis and its derivatives: common/th_basis.h (the closed
+ * form typed from the text, no cancellation guards: reference only). */
 
 static void lib_basis(double t, double A[4]) { ts__basis(sin(t), cos(t), A); }
 static void lib_basis_d1(double t, double A[4]) { ts__basis_d1(sin(t), cos(t), A); }
@@ -92,7 +68,7 @@ static void gl_int(double theta, double I[4])
         double mid = (p + 0.5) * w;
         for (int k = 0; k < GLN; k++) {
             double A[4];
-            ref_basis(mid + 0.5 * w * gl_x[k], A);
+            th_basis(mid + 0.5 * w * gl_x[k], A);
             for (int l = 0; l < 4; l++)
                 I[l] += 0.5 * w * gl_w[k] * A[l];
         }
@@ -101,9 +77,10 @@ static void gl_int(double theta, double I[4])
 
 int main(void)
 {
-    const double HP = TS_HALF_PI;
+    const double HP = TH_HALF_PI;
     const int N = 2000;
     gl_init();
+    TH_CASE("quadrature");
     /* sanity of the quadrature itself: ∫_0^π/2 cos² = π/4 */
     {
         double sum = 0;
@@ -111,9 +88,10 @@ int main(void)
             double t = HP / 2 * (1 + gl_x[k]);
             sum += HP / 2 * gl_w[k] * cos(t) * cos(t);
         }
-        CHECK_CLOSE(sum, TS_PI / 4, 1e-15);
+        CHECK_CLOSE(sum, TH_PI / 4, 1e-15);
     }
 
+    TH_CASE("identities");
     /* Identities on a dense grid of [0, π/2], plus slightly outside (the
      * extension uses the same formulas).  Rounding: each A_l is a product of
      * three factors <= 3, so its error is a few ulp of M0 -> tolerance 8ε·M0 for
@@ -122,7 +100,7 @@ int main(void)
     for (int k = 0; k <= N; k++) {
         double t = HP * k / N, s = sin(t), c = cos(t), A[4], R[4];
         ts__basis(s, c, A);
-        ref_basis(t, R);
+        th_basis(t, R);
         for (int l = 0; l < 4; l++) {
             if (!(A[l] >= 0))
                 nonneg = 0;
@@ -140,16 +118,17 @@ int main(void)
     CHECKF(pou, "sum A_l = 1 on [0, pi/2]");
     CHECKF(pair01, "A0 + A1 = c^2");
     CHECKF(pair23, "A2 + A3 = s^2");
-    CHECKF(vs_ref, "basis = SPEC §2 definitions");
+    CHECKF(vs_ref, "basis = docs/method.md §2 definitions");
     for (int k = -200; k <= 200; k++) { /* θ in [-2π, 2π]: extension */
-        double t = 0.01 * TS_PI * k, A[4], R[4];
+        double t = 0.01 * TH_PI * k, A[4], R[4];
         lib_basis(t, A);
-        ref_basis(t, R);
+        th_basis(t, R);
         for (int l = 0; l < 4; l++)
             CHECK_CLOSE(A[l], R[l], 8 * EPS * M0);
         CHECK_CLOSE(A[0] + A[1] + A[2] + A[3], 1.0, 8 * EPS * M0);
     }
 
+    TH_CASE("end values");
     /* End values: A0(0) = A3(π/2) = 1, all other ends 0 (exact s, c). */
     {
         double A[4];
@@ -157,7 +136,7 @@ int main(void)
         CHECK(A[0] == 1.0 && A[1] == 0.0 && A[2] == 0.0 && A[3] == 0.0);
         ts__basis(1.0, 0.0, A);
         CHECK(A[0] == 0.0 && A[1] == 0.0 && A[2] == 0.0 && A[3] == 1.0);
-        /* derivatives at the ends (SPEC §2 formulas): A'(0) = (-3, 3, 0, 0),
+        /* derivatives at the ends (docs/method.md §2 formulas): A'(0) = (-3, 3, 0, 0),
          * A'(π/2) = (0, 0, -3, 3) */
         ts__basis_d1(0.0, 1.0, A);
         CHECK(A[0] == -3.0 && A[1] == 3.0 && A[2] == 0.0 && A[3] == 0.0);
@@ -165,7 +144,8 @@ int main(void)
         CHECK(A[0] == 0.0 && A[1] == 0.0 && A[2] == -3.0 && A[3] == 3.0);
     }
 
-    /* First derivatives: vs the SPEC formulas and vs central differences
+    TH_CASE("derivatives");
+    /* First derivatives: vs the docs/method.md formulas and vs central differences
      * (h = 1e-5: h²/6·M3 + 4ε·M0/h = 4.4e-10 + 7.1e-10 -> 1.2e-9).  Second
      * derivatives: vs the hand-derived formulas and vs central differences of
      * the library's first derivative (h²/6·M4 + 4ε·M1/h = 9.3e-10 + 7.6e-10). */
@@ -179,8 +159,8 @@ int main(void)
             double t = HP * k / 500.0, D1[4], D2[4], R1[4], R2[4], P[4], Q[4], P1[4], Q1[4];
             lib_basis_d1(t, D1);
             lib_basis_d2(t, D2);
-            ref_basis_d1(t, R1);
-            ref_basis_d2(t, R2);
+            th_basis_d1(t, R1);
+            th_basis_d2(t, R2);
             lib_basis(t + h, P);
             lib_basis(t - h, Q);
             lib_basis_d1(t + h, P1);
@@ -201,7 +181,7 @@ int main(void)
                     worst2 = fabs(D2[l] - fd2);
             }
         }
-        CHECKF(ok_f1, "A' = SPEC §2 formulas");
+        CHECKF(ok_f1, "A' = docs/method.md §2 formulas");
         CHECKF(ok_fd1, "A' vs finite differences: worst %.3g, tol %.3g", worst1, tol1);
         CHECKF(ok_f2, "A'' = hand-derived formulas");
         CHECKF(ok_fd2, "A'' vs finite differences: worst %.3g, tol %.3g", worst2, tol2);
@@ -213,6 +193,7 @@ int main(void)
         CHECK_CLOSE(D[0] + D[1] + D[2] + D[3], 0.0, 32 * EPS * 16.75);
     }
 
+    TH_CASE("integrals");
     /* Integrals ∫_0^θ A_l vs Gauss–Legendre (error < 1e-29 + rounding;
      * tolerance 1e-14 covers the closed form's cancellation, which is a few
      * ulp of θ·M0), and the exact values on [0, π/2] derived by hand:
@@ -237,10 +218,10 @@ int main(void)
         CHECKF(ok, "basis integrals vs Gauss-Legendre: worst %.3g", worst);
         double I[4];
         ts__basis_int(HP, 1.0, 0.0, I);
-        CHECK_CLOSE(I[0], 5 * TS_PI / 4 - 11.0 / 3, 4e-16 * 8);
-        CHECK_CLOSE(I[1], 11.0 / 3 - TS_PI, 4e-16 * 8);
-        CHECK_CLOSE(I[2], 11.0 / 3 - TS_PI, 4e-16 * 8);
-        CHECK_CLOSE(I[3], 5 * TS_PI / 4 - 11.0 / 3, 4e-16 * 8);
+        CHECK_CLOSE(I[0], 5 * TH_PI / 4 - 11.0 / 3, 4e-16 * 8);
+        CHECK_CLOSE(I[1], 11.0 / 3 - TH_PI, 4e-16 * 8);
+        CHECK_CLOSE(I[2], 11.0 / 3 - TH_PI, 4e-16 * 8);
+        CHECK_CLOSE(I[3], 5 * TH_PI / 4 - 11.0 / 3, 4e-16 * 8);
         ts__basis_int(0.0, 0.0, 1.0, I);
         CHECK(I[0] == 0 && I[1] == 0 && I[2] == 0 && I[3] == 0);
         /* ∫ (A0 + A1) = ∫ c² = θ/2 + sin2θ/4 */
@@ -250,32 +231,31 @@ int main(void)
         CHECK_CLOSE(I[2] + I[3], t / 2 - sin(2 * t) / 4, 1e-15);
     }
 
+    TH_CASE("seg_theta");
     /* ts__seg_theta: S = Σ A_l B_l, dS/dθ = (2.1), d²S/dθ² vs finite
      * differences of dS/dθ, for random control values and θ in and outside
      * [0, π/2].  Rounding tolerance: 16ε·(Σ|A_l|)·max|B| with Σ|A_l| <= 4·M0
      * (any θ).  FD of S' (h = 1e-5): h²/6·max|S''''| + 4ε·max|S'|/h with
      * max|S''''| <= 4·M4·max|B|, max|S'| <= 4·M1·max|B|. */
     {
-        unsigned seed = 12345u;
+        th_rng gen = TH_RNG_INIT(12345u);
         int ok0 = 1, ok1 = 1, ok2 = 1, okw = 1;
         double w0 = 0, w1 = 0, w2 = 0;
         for (int trial = 0; trial < 300; trial++) {
             double B[4], mb = 0;
             for (int l = 0; l < 4; l++) {
-                seed = seed * 1103515245u + 12345u;
-                B[l] = ((double)(seed >> 8) / 16777216.0 - 0.5) * 20.0;
+                B[l] = th_rng_range(&gen, -10.0, 10.0);
                 if (fabs(B[l]) > mb)
                     mb = fabs(B[l]);
             }
             double t = -0.6 + 2.8 * trial / 299.0; /* [-0.6, 2.2] */
             double s = sin(t), c = cos(t), R[4], out[3];
-            ref_basis(t, R);
+            th_basis(t, R);
             double S = R[0] * B[0] + R[1] * B[1] + R[2] * B[2] + R[3] * B[3];
-            /* SPEC (2.1) typed from the text */
-            double dS = 3 * (1 - s) * (1 - s) * c * (B[1] - B[0]) + 2 * s * c * (B[2] - B[1]) +
-                        3 * (1 - c) * (1 - c) * s * (B[3] - B[2]);
+            /* docs/method.md (2.1) typed from the text */
+            double dS = th_seg_d1(B, t);
             double R1[4];
-            ref_basis_d1(t, R1);
+            th_basis_d1(t, R1);
             double dS2 = R1[0] * B[0] + R1[1] * B[1] + R1[2] * B[2] + R1[3] * B[3];
             const double h = 1e-5;
             double op[3], om[3];
@@ -289,7 +269,7 @@ int main(void)
                 ok0 = 0;
             if (!(fabs(out[1] - dS) <= tr))
                 ok1 = 0;
-            if (!(fabs(dS - dS2) <= tr)) /* (2.1) = Σ A_l' B_l: checks the SPEC text too */
+            if (!(fabs(dS - dS2) <= tr)) /* (2.1) = Σ A_l' B_l: checks the text of docs/method.md too */
                 okw = 0;
             if (!(fabs(out[2] - fd2) <= tfd))
                 ok2 = 0;

@@ -1,4 +1,4 @@
-/* Tests of the slope estimates (SPEC §6): src/slopes.c.
+/* Tests of the slope estimates (docs/method.md §6): src/slopes.c.
  *
  * Sources of the expected values:
  *  - closed forms: lines (every method exact), quadratics (arithmetic mean and
@@ -69,7 +69,7 @@ static ts_status slopes(ts_slopes m, const double *x, const double *f, size_t np
     return st;
 }
 
-/* ---- two points: every method gives Δ0 (SPEC §6) ---------------------- */
+/* ---- two points: every method gives Δ0 (docs/method.md §6) ---------------------- */
 static void test_two_points(void)
 {
     const double x[2] = {1.0, 3.0}, f[2] = {2.0, 7.0}; /* Δ0 = 2.5 exactly */
@@ -141,7 +141,7 @@ static void test_linear(void)
 /* ---- quadratics: the arithmetic mean is exact, ends included ----------- */
 static void test_quadratic(void)
 {
-    /* The three-point formulas of SPEC §6 are the derivatives of the parabola
+    /* The three-point formulas of docs/method.md §6 are the derivatives of the parabola
      * through three consecutive points, so f = 3x^2 - 2x + 1 gives
      * d_i = 6 x_i - 2 exactly on any grid. */
     const double x[7] = {-1.0, -0.5, 0.25, 1.0, 2.5, 3.0, 5.125};
@@ -549,7 +549,7 @@ static void test_errors(void)
     }
 
     /* non-finite x or f: index of the first offending point */
-    const double bad[3] = {(double)NAN, (double)INFINITY, -(double)INFINITY};
+    const double bad[3] = {TH_NAN, TH_INF, -TH_INF};
     for (int b = 0; b < 3; b++) {
         double xx[6], ff[6];
         memcpy(xx, x, sizeof xx);
@@ -657,15 +657,25 @@ static void test_errors(void)
 
 int main(void)
 {
+    TH_CASE("two_points");
     test_two_points();
+    TH_CASE("linear");
     test_linear();
+    TH_CASE("quadratic");
     test_quadratic();
+    TH_CASE("means_by_hand");
     test_means_by_hand();
+    TH_CASE("sign_structure");
     test_sign_structure();
+    TH_CASE("reference");
     test_reference();
+    TH_CASE("pchip_rpn14");
     test_pchip_rpn14();
+    TH_CASE("akima_by_hand");
     test_akima_by_hand();
+    TH_CASE("periodic");
     test_periodic();
+    TH_CASE("errors");
     test_errors();
     return th_report("test_slopes");
 }

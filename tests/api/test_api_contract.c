@@ -4,7 +4,7 @@
  * ("out-parameters are reset before any check").
  *
  * Expected values come from the closed forms of the header (enum ts_slopes,
- * SPEC §6) evaluated by hand, from exact power-of-two scaling, or from the
+ * docs/method.md §6) evaluated by hand, from exact power-of-two scaling, or from the
  * documented statuses; tolerances are stated at each check.
  */
 #include "th.h"
@@ -29,7 +29,7 @@ static int rel_close(double a, double b, double tol)
     return fabs(a - b) <= tol * fabs(b);
 }
 
-/* SPEC §6 weights h/(h_l + h_r) when h_l + h_r overflows (knots near
+/* docs/method.md §6 weights h/(h_l + h_r) when h_l + h_r overflows (knots near
  * ±DBL_MAX, every width finite): the sum used to become inf, the weights 0,
  * and arithmetic / geometric slopes silently wrong, harmonic and
  * Fritsch–Carlson NaN (TS_ERR_NONFINITE on finite data). */
@@ -213,7 +213,7 @@ static void certify_out_params(void)
     CHECK(ts_spline_new(x, f, 3, NULL, &s, NULL) == TS_OK);
     ts_interval_report r[2];
     memset(r, 0, sizeof r);
-    ts_line bad = {NAN, 0}, lo = {0, 0};
+    ts_line bad = {TH_NAN, 0}, lo = {0, 0};
     ts_error e;
     CHECK(ts_certify(s, &bad, NULL, r, &e) == TS_ERR_NONFINITE && e.status == TS_ERR_NONFINITE);
     CHECK(isnan(r[0].a) && isnan(r[1].gap_lower) && r[1].certified == 0);
@@ -311,7 +311,7 @@ static void curve_length_scaled(void)
             ts_curve *a = NULL, *b = NULL;
             CHECK(ts_curve_new(p, 12, 2, &o, &a, NULL) == TS_OK);
             CHECK(ts_curve_new(q, 12, 2, &o, &b, NULL) == TS_OK);
-            double la = NAN, lb = NAN;
+            double la = TH_NAN, lb = TH_NAN;
             CHECK(ts_curve_length(a, 1e-12, &la) == TS_OK && ts_curve_length(b, 1e-12, &lb) == TS_OK);
             CHECKF(isfinite(lb) && lb == ldexp(la, 1020), "param %d closed %d: %.17g vs %.17g",
                    par, closed, lb, ldexp(la, 1020));
@@ -325,7 +325,7 @@ static void curve_length_scaled(void)
     o.alpha = DBL_MIN;
     ts_curve *c = NULL;
     CHECK(ts_curve_new(r, 4, 2, &o, &c, NULL) == TS_OK);
-    double len = NAN;
+    double len = TH_NAN;
     CHECK(ts_curve_length(c, 1e-9, &len) == TS_OK && !isnan(len) && len > 1e300);
     ts_curve_free(c);
     /* the fuzz test's case: two points, harmonic slopes; the length was NaN */
@@ -368,7 +368,7 @@ static void curve_tiny_steps(void)
             CHECKF(fabs(dP[d] - dQ[d]) <= 1e-10 * (fabs(dQ[0]) + fabs(dQ[1])),
                    "k %d coord %d: %.17g vs %.17g", k, d, dP[d], dQ[d]);
     }
-    /* at t_0 (open end): d_0/a_0 with the SPEC §6 end formula:
+    /* at t_0 (open end): d_0/a_0 with the docs/method.md §6 end formula:
      * x: Δ0 = 1, Δ1 = 0 -> 1.5; y: Δ0 = 0, Δ1 = 1 -> -0.5 */
     double P[2], dP[2];
     CHECK(ts_curve_eval(a, 0.0, NULL, P, dP, NULL) == TS_OK);
@@ -395,7 +395,7 @@ static void curve_params_and_reports(void)
     ts_interval_report r[4];
     memset(r, 0, sizeof r);
     int has[3] = {1, 0, 0};
-    double lo[3] = {NAN, 0, 0};
+    double lo[3] = {TH_NAN, 0, 0};
     CHECK(ts_curve_certify_box(c, has, lo, NULL, NULL, r, &e) == TS_ERR_NONFINITE);
     CHECK(isnan(r[0].x0) && isnan(r[3].gap_lower) && r[2].certified == 0);
     memset(r, 0, sizeof r);
@@ -408,16 +408,27 @@ static void curve_params_and_reports(void)
 
 int main(void)
 {
+    TH_CASE("slopes_wide_knots");
     slopes_wide_knots();
+    TH_CASE("akima_huge");
     akima_huge();
+    TH_CASE("slopes_out_params");
     slopes_out_params();
+    TH_CASE("tiny_alpha_positive");
     tiny_alpha_positive();
+    TH_CASE("huge_alpha");
     huge_alpha();
+    TH_CASE("certify_out_params");
     certify_out_params();
+    TH_CASE("certify_agrees_with_build");
     certify_agrees_with_build();
+    TH_CASE("closed_curve_lost_step");
     closed_curve_lost_step();
+    TH_CASE("curve_length_scaled");
     curve_length_scaled();
+    TH_CASE("curve_tiny_steps");
     curve_tiny_steps();
+    TH_CASE("curve_params_and_reports");
     curve_params_and_reports();
-    return th_report("test_review_api");
+    return th_report("test_api_contract");
 }

@@ -1,9 +1,10 @@
-/* Accuracy (SPEC §8, docs/accuracy.md): the counterexample to the paper's
+/* Accuracy (docs/method.md §8, docs/accuracy.md): the counterexample to the paper's
  * Theorem 1, the error constants against tests/ref/accuracy_ref.csv
  * (mpmath, from the definition of the spline), the proven bound on the
  * study's functions, the measured orders within derived limits, lines in
  * every form. */
 #include "th.h"
+#include "common/th_rng.h"
 #include "trigspline.h"
 
 #include <float.h>
@@ -36,12 +37,6 @@ static const fun funs[4] = {
     {0.0, 1.0, f_pos, fp_pos, 1.4, 2.0},
 };
 
-static unsigned long long rs;
-static double urand(void)
-{
-    rs = rs * 6364136223846793005ULL + 1442695040888963407ULL;
-    return (double)(rs >> 11) / 9007199254740992.0;
-}
 
 /* Build on n intervals (grid uniform or perturbed ±35% h), slopes exact or
  * a method, a > 0 scalar or a < 0: per-interval log-uniform in [0.5, 2].
@@ -52,19 +47,19 @@ static double study(const fun *F, size_t n, int pert, ts_form form, ts_slopes sl
 {
     double *x = malloc((n + 1) * sizeof *x), *f = malloc((n + 1) * sizeof *f);
     double *d = malloc((n + 1) * sizeof *d), *al = malloc(n * sizeof *al);
-    double e = NAN, h = (F->hi - F->lo) / (double)n;
-    *bound = NAN;
-    rs = 12345u + n;
+    double e = TH_NAN, h = (F->hi - F->lo) / (double)n;
+    *bound = TH_NAN;
+    th_seed(12345u + n);
     for (size_t i = 0; i <= n; i++)
         x[i] = F->lo + h * (double)i;
     if (pert)
         for (size_t i = 1; i < n; i++)
-            x[i] += 0.35 * h * (2 * urand() - 1);
+            x[i] += 0.35 * h * (2 * th_unit() - 1);
     x[n] = F->hi;
     for (size_t i = 0; i <= n; i++)
         f[i] = F->f(x[i]), d[i] = F->fp(x[i]);
     for (size_t i = 0; i < n; i++)
-        al[i] = 0.5 * pow(4.0, urand());
+        al[i] = 0.5 * pow(4.0, th_unit());
     if (sl != TS_SLOPES_USER)
         CHECK(ts_slopes_compute(sl, x, f, n + 1, d, NULL) == TS_OK);
     ts_options o;
@@ -100,7 +95,7 @@ static double ref_const(int form, double a, int which)
 {
     FILE *fp = fopen(TS_SOURCE_DIR "/tests/ref/accuracy_ref.csv", "r");
     char line[512];
-    double r = NAN;
+    double r = TH_NAN;
     while (fp && fgets(line, sizeof line, fp)) {
         int fo;
         double v[5];
@@ -145,11 +140,11 @@ static void test_theorem1(void)
         /* the proven bounds hold and, for a line, are attained */
         double b1, b2;
         CHECK(ts_error_bound(s, 1.0, 0.0, 1, &b2, NULL) == TS_OK); /* M2 = 0 */
-        CHECK(ts_error_bound(s, 1.0, INFINITY, 0, &b1, NULL) == TS_OK);
+        CHECK(ts_error_bound(s, 1.0, TH_INF, 0, &b1, NULL) == TS_OK);
         CHECK(worst <= b2 && b2 <= worst * (1 + 1e-5) + 8 * EPS * 3);
         ts_error_constants c;
         CHECK(ts_error_constants_get(TS_FORM_PAPER, 1.0, &c) == TS_OK);
-        CHECK_CLOSE(b1, c.first * h, 1e-12 * c.first * h); /* |d| = M1: SPEC §8 constant */
+        CHECK_CLOSE(b1, c.first * h, 1e-12 * c.first * h); /* |d| = M1: docs/method.md §8 constant */
         ts_spline_free(s);
     }
 }
@@ -185,8 +180,8 @@ static void test_constants(void)
     CHECK(ts_error_constants_get((ts_form)3, 1.0, &c1) == TS_ERR_OPTION && isnan(c1.first));
     CHECK(ts_error_constants_get(TS_FORM_PAPER, 0.0, &c1) == TS_ERR_OPTION);
     CHECK(ts_error_constants_get(TS_FORM_PAPER, -1.0, &c1) == TS_ERR_OPTION);
-    CHECK(ts_error_constants_get(TS_FORM_PAPER, NAN, &c1) == TS_ERR_OPTION);
-    CHECK(ts_error_constants_get(TS_FORM_PAPER, INFINITY, &c1) == TS_ERR_OPTION);
+    CHECK(ts_error_constants_get(TS_FORM_PAPER, TH_NAN, &c1) == TS_ERR_OPTION);
+    CHECK(ts_error_constants_get(TS_FORM_PAPER, TH_INF, &c1) == TS_ERR_OPTION);
     CHECK(ts_error_constants_get(TS_FORM_GEOMETRIC, 0.347, &c1) == TS_ERR_GEOMETRIC);
     CHECK(ts_error_constants_get(TS_FORM_GEOMETRIC, TS_GEOMETRIC_A_MIN, &c1) == TS_OK);
 }
@@ -198,13 +193,13 @@ static void test_bound_errors(void)
     CHECK(ts_spline_new(x, f, 3, NULL, &s, NULL) == TS_OK);
     CHECK(ts_error_bound(NULL, 1, 1, 1, &b, NULL) == TS_ERR_NULL && isnan(b));
     CHECK(ts_error_bound(s, 1, 1, 1, NULL, NULL) == TS_ERR_NULL);
-    CHECK(ts_error_bound(s, NAN, 1, 0, &b, NULL) == TS_ERR_NONFINITE && isnan(b));
-    CHECK(ts_error_bound(s, INFINITY, 1, 0, &b, NULL) == TS_ERR_NONFINITE);
+    CHECK(ts_error_bound(s, TH_NAN, 1, 0, &b, NULL) == TS_ERR_NONFINITE && isnan(b));
+    CHECK(ts_error_bound(s, TH_INF, 1, 0, &b, NULL) == TS_ERR_NONFINITE);
     CHECK(ts_error_bound(s, -1, 1, 0, &b, NULL) == TS_ERR_OPTION);
-    CHECK(ts_error_bound(s, 1, NAN, 1, &b, NULL) == TS_ERR_NONFINITE);
+    CHECK(ts_error_bound(s, 1, TH_NAN, 1, &b, NULL) == TS_ERR_NONFINITE);
     CHECK(ts_error_bound(s, 1, -1, 1, &b, NULL) == TS_ERR_OPTION);
-    CHECK(ts_error_bound(s, 1, NAN, 0, &b, NULL) == TS_OK); /* ignored without exact slopes */
-    CHECK(ts_error_bound(s, 1, INFINITY, 1, &b, per) == TS_OK);
+    CHECK(ts_error_bound(s, 1, TH_NAN, 0, &b, NULL) == TS_OK); /* ignored without exact slopes */
+    CHECK(ts_error_bound(s, 1, TH_INF, 1, &b, per) == TS_OK);
     CHECK(b == fmax(per[0], per[1]) && per[0] > 0);
     ts_spline_free(s);
 }
@@ -343,7 +338,7 @@ static void test_lines_forms(void)
                 /* sampling at h/800 finds the maximum to 1e-5 relative */
                 CHECKF(fabs(worst_rel - k.line) <= 1e-5 * k.line, "form %d a=%g: %g vs %g", fo, a,
                        worst_rel, k.line);
-                /* and the knot slope is d/a, not d (SPEC §3) */
+                /* and the knot slope is d/a, not d (docs/method.md §3) */
                 CHECK_CLOSE(worst_slope, fabs(m / a - m), 1e-12);
             }
             ts_spline_free(s);
@@ -352,11 +347,17 @@ static void test_lines_forms(void)
 
 int main(void)
 {
+    TH_CASE("theorem1");
     test_theorem1();
+    TH_CASE("constants");
     test_constants();
+    TH_CASE("bound_errors");
     test_bound_errors();
+    TH_CASE("lines_forms");
     test_lines_forms();
+    TH_CASE("bound_holds");
     test_bound_holds();
+    TH_CASE("orders");
     test_orders();
     return th_report("test_accuracy");
 }

@@ -1,4 +1,4 @@
-/* Shape schemes (SPEC §5, §9, §10): the paper's tables with its figure
+/* Shape schemes (docs/method.md §5, §9, §10): the paper's tables with its figure
  * parameters, certified and checked by dense sampling; the printed
  * Theorem 4 signs; zeros; monotone; certificate repair; every bad-data
  * error with its exact status and index. */
@@ -14,7 +14,7 @@
 static const double PI = 3.14159265358979323846;
 static const double HALF_PI = 1.57079632679489661923;
 
-/* SPEC §10 data (also in ../shared/data/paper/; typed here so the test does
+/* docs/method.md §10 data (also in data/paper/ at the repository root; typed here so the test does
  * not depend on a CSV reader) */
 static const double X1[] = {0, 2, 3, 5, 15, 25, 27, 28, 30};
 static const double F1[] = {2, 1.58, 1.55, 1.54, 1.8, 1.54, 1.55, 1.58, 2};
@@ -39,7 +39,7 @@ static ts_spline *build(const double *x, const double *f, size_t np, const ts_op
  * ts_eval.  Tolerances: te = 256 ε·(scale of B and the line): the rounding of
  * the certificate (certify.c guard, typically ≤ 64 ε·scale), of ts_eval
  * (16 ε·M) and of θ = (x − x_i)(π/2)/h (≤ 3 ε relative, times |dS/dθ| ≤
- * 18 max|B| by SPEC (2.1): ≤ 86 ε·M); ts = ½|g''|(Δ/2)², the sampling bound (|g''| ≤
+ * 18 max|B| by docs/method.md (2.1): ≤ 86 ε·M); ts = ½|g''|(Δ/2)², the sampling bound (|g''| ≤
  * 8|C1−C0| + 8|C2−C0| + 6|C3−C0|, max|A_l''| = 6, 8, 8, 6 on [0, π/2], and
  * the true minimum lies within Δ/2 of a sample).  Checks: the dense minimum
  * lies in [gap − te, gap + ts + te]; every sample inside the region; knots
@@ -110,7 +110,7 @@ static void dense_lines_r(const ts_spline *s, const ts_line *lo, const ts_line *
             double te = 256 * EPS * sc;
             double ts = 0.5 * (8 * fabs(C[1] - C[0]) + 8 * fabs(C[2] - C[0]) + 6 * fabs(C[3] - C[0])) *
                         (D / 2) * (D / 2);
-            double mn = INFINITY;
+            double mn = TH_INF;
             for (int j = 0; j <= M; j++) {
                 double xx = j == M ? x[i + 1] : x[i] + (x[i + 1] - x[i]) * j / M, y;
                 ts_eval(s, xx, NULL, &y);
@@ -133,13 +133,13 @@ static void dense_lines(const ts_spline *s, const ts_line *lo, const ts_line *up
     dense_lines_r(s, lo, up, M, NULL, 1, what);
 }
 
-/* SPEC §5 rule re-derived here: returns beta and the active term. */
+/* docs/method.md §5 rule re-derived here: returns beta and the active term. */
 static double rule_beta(const double *x, const double *f, const double *d, size_t i, double al,
                         double t, const ts_line *lo, const ts_line *up, int positive, int *term)
 {
     double K = 2 * (x[i + 1] - x[i]) / (3 * PI), best = 0;
     *term = TS_TERM_MARGIN;
-    double cand[4] = {-INFINITY, -INFINITY, -INFINITY, -INFINITY};
+    double cand[4] = {-TH_INF, -TH_INF, -TH_INF, -TH_INF};
     if (lo || positive) {
         double g0 = positive ? f[i] : f[i] - line_at(lo, x[i]);
         double g1 = positive ? f[i + 1] : f[i + 1] - line_at(lo, x[i + 1]);
@@ -208,7 +208,7 @@ static void test_tables(void)
                 check_rule(s, NULL, NULL, 1, TS_DEFAULT_MARGIN, what);
             ts_spline_free(s);
         }
-        /* Table 2: y = 0.31x + 1 is refused at x = 1 (SPEC §9.5); the
+        /* Table 2: y = 0.31x + 1 is refused at x = 1 (docs/method.md §9.5); the
          * paper's slope shifted down, y = 0.31x − 4, lies below every point
          * (smallest gap 0.35 at x = 15).  Figures 5c (0.01), 5d (0.12). */
         {
@@ -299,9 +299,9 @@ static void test_tables(void)
 }
 
 /* The unconstrained figures (TS_SHAPE_NONE with the paper's alpha, beta)
- * certified after the fact, and SPEC §9.6: Figure 4b stays above 1.53; one
+ * certified after the fact, and docs/method.md §9.6: Figure 4b stays above 1.53; one
  * a for all intervals dips below zero near a = 0.04 (min −0.11) and to −6.2
- * at a = 0.01.  Values from SPEC §9.6 (two significant digits). */
+ * at a = 0.01.  Values from docs/method.md §9.6 (two significant digits). */
 static void test_unconstrained_figures(void)
 {
     ts_status st;
@@ -326,7 +326,7 @@ static void test_unconstrained_figures(void)
         ts_interval_report r[8];
         st = ts_certify(s, &zero, NULL, r, &e);
         CHECKF(st == c[k].want, "a=%g: status %d", c[k].a, st);
-        double mn = INFINITY;
+        double mn = TH_INF;
         for (int i = 0; i < 8; i++)
             mn = r[i].gap_lower < mn ? r[i].gap_lower : mn;
         CHECKF(mn > c[k].lo && mn < c[k].hi, "a=%g: min %.6g", c[k].a, mn);
@@ -335,7 +335,7 @@ static void test_unconstrained_figures(void)
     }
 }
 
-/* SPEC §5.3: the paper's printed Theorem 4 (the signs of Theorem 3) on
+/* docs/method.md §5.3: the paper's printed Theorem 4 (the signs of Theorem 3) on
  * Table 3 with arithmetic-mean slopes, alpha 0.001, margin 0.01 rises about
  * 145 above y = x + 2.5; the corrected rule stays at least 0.497 below. */
 static void test_theorem4_signs(void)
@@ -383,10 +383,10 @@ static void test_theorem4_signs(void)
             continue;
         ts_interval_report r[4];
         CHECK(ts_certify(s, NULL, &up, r, &e) == TS_OK);
-        double mn = INFINITY;
+        double mn = TH_INF;
         for (int i = 0; i < 4; i++)
             mn = r[i].gap_upper < mn ? r[i].gap_upper : mn;
-        /* SPEC §5.3's 0.497 is the paper form; the C¹ form (smaller |d̂|)
+        /* docs/method.md §5.3's 0.497 is the paper form; the C¹ form (smaller |d̂|)
          * gives 0.4776 -- both below the line */
         if (form == 0)
             CHECKF(mn >= 0.497 && mn < 0.498, "corrected form %d: %.6g", form, mn);
@@ -507,7 +507,7 @@ static void test_bad_data(void)
         const double f[] = {1, 2, 3, 4, 5};
         ts_options_init(&o);
         o.shape = TS_SHAPE_POSITIVE;
-        const double bad[] = {0.0, -1.0, NAN, INFINITY, -0.0};
+        const double bad[] = {0.0, -1.0, TH_NAN, TH_INF, -0.0};
         for (int k = 0; k < 5; k++) {
             o.margin = bad[k];
             expect(x5, f, 5, &o, TS_ERR_MARGIN, 0, TS_WHERE_INTERVAL, "margin scalar");
@@ -523,7 +523,7 @@ static void test_bad_data(void)
         const double m2[] = {0.01, 0.02, 0.03, 0.5};
         o.margins = m2;
         o.n_margins = 4;
-        o.margin = NAN;
+        o.margin = TH_NAN;
         ts_status st;
         ts_error e;
         ts_spline *s = build(x5, f, 5, &o, &st, &e);
@@ -542,19 +542,19 @@ static void test_bad_data(void)
         const double f[] = {1, 2, 3, 4, 5};
         ts_options_init(&o);
         o.shape = TS_SHAPE_ABOVE;
-        o.lower.m = NAN;
+        o.lower.m = TH_NAN;
         expect(x5, f, 5, &o, TS_ERR_NONFINITE, TS_NO_INDEX, TS_WHERE_NONE, "lower nan");
         o.lower.m = 0;
-        o.lower.c = -INFINITY;
+        o.lower.c = -TH_INF;
         expect(x5, f, 5, &o, TS_ERR_NONFINITE, TS_NO_INDEX, TS_WHERE_NONE, "lower inf");
         o.shape = TS_SHAPE_BELOW;
         o.upper.c = 10;
-        o.upper.m = INFINITY;
+        o.upper.m = TH_INF;
         expect(x5, f, 5, &o, TS_ERR_NONFINITE, TS_NO_INDEX, TS_WHERE_NONE, "upper inf");
         o.shape = TS_SHAPE_BETWEEN;
         o.upper.m = 0;
         o.lower.c = 0;
-        o.lower.m = NAN;
+        o.lower.m = TH_NAN;
         expect(x5, f, 5, &o, TS_ERR_NONFINITE, TS_NO_INDEX, TS_WHERE_NONE, "between nan");
         /* unused line ignored */
         o.shape = TS_SHAPE_BELOW;
@@ -566,7 +566,7 @@ static void test_bad_data(void)
     }
     /* infeasible: data 0.3..1 above the steep line y = 10x with alpha = 10
      * (a >= 10, so S is near the limit f_i c² + f_{i+1} s², which dips 1.05
-     * below a line of slope 10 on an interval of length 1, SPEC §5) */
+     * below a line of slope 10 on an interval of length 1, docs/method.md §5) */
     {
         const double x4[] = {0, 1, 2, 3}, f[] = {1, 10.3, 21, 31};
         for (int form = 0; form < 2; form++) {
@@ -616,7 +616,7 @@ static void test_underflow_limit(void)
     ts_spline_free(s);
 }
 
-/* SPEC §5 certificate repair: data close above a steep line.  The rule's
+/* docs/method.md §5 certificate repair: data close above a steep line.  The rule's
  * beta fails the exact certificate on some intervals, which are repaired
  * (TS_TERM_CERTIFY) -- including the C¹ form, whose knots couple the
  * intervals. */
@@ -678,7 +678,7 @@ static void test_repair(void)
     }
 }
 
-/* Non-negative data with zeros (SPEC §5.1). */
+/* Non-negative data with zeros (docs/method.md §5.1). */
 static void test_zeros(void)
 {
     const double x[] = {0, 1, 2.5, 3, 4, 6, 7, 8, 9};
@@ -766,7 +766,7 @@ static void test_zeros(void)
     }
 }
 
-/* Monotone (SPEC §5.5). */
+/* Monotone (docs/method.md §5.5). */
 static void monotone_dense(const ts_spline *s, int dir, int M, const char *what)
 {
     size_t n = ts_spline_intervals(s);
@@ -937,15 +937,25 @@ static void test_horizontal(void)
 
 int main(void)
 {
+    TH_CASE("tables");
     test_tables();
+    TH_CASE("unconstrained_figures");
     test_unconstrained_figures();
+    TH_CASE("theorem4_signs");
     test_theorem4_signs();
+    TH_CASE("bad_data");
     test_bad_data();
+    TH_CASE("repair");
     test_repair();
+    TH_CASE("underflow_limit");
     test_underflow_limit();
+    TH_CASE("zeros");
     test_zeros();
+    TH_CASE("monotone");
     test_monotone();
+    TH_CASE("certify_off");
     test_certify_off();
+    TH_CASE("horizontal");
     test_horizontal();
     return th_report("test_shape");
 }

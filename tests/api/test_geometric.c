@@ -1,8 +1,10 @@
-/* Geometric form (SPEC §4): evaluation, derivatives, integral, extrapolation,
+/* Geometric form (docs/method.md §4): evaluation, derivatives, integral, extrapolation,
  * the bound on a_i, lines, knot slopes, batch, shape schemes and certificates.
  * Reference values: tests/ref/accuracy_ref.csv from tests/ref/accuracy_ref.py
- * (mpmath, 40 digits, written from SPEC §2-§4 without the library). */
+ * (mpmath, 40 digits, written from docs/method.md §2-§4 without the library). */
 #include "th.h"
+#include "common/th_basis.h"
+#include "common/th_rng.h"
 #include "trigspline.h"
 
 #include <float.h>
@@ -14,15 +16,7 @@
 #define TS_HALF_PI_T 1.57079632679489661923
 #define MAXP 64
 
-/* SPEC §2 basis, written again here (not the library's). */
-static void basis(double t, double A[4])
-{
-    double s = sin(t), c = cos(t);
-    A[0] = (1 - s) * (1 - s) * (1 - s);
-    A[1] = s * (1 - s) * (3 - s);
-    A[2] = c * (1 - c) * (3 - c);
-    A[3] = (1 - c) * (1 - c) * (1 - c);
-}
+/* docs/method.md §2 basis: th_basis of common/th_basis.h (not the library's). */
 
 static ts_spline *geo_new(const double *x, const double *f, const double *d, size_t np,
                           const double *al, const double *be, ts_extrap ex)
@@ -87,7 +81,7 @@ static void test_reference(void)
             s = geo_new(x, f, d, np, al, be, TS_EXTRAP_EXTEND);
             ncase++;
             /* scale of the values: max |B_l| over the intervals */
-            S = 0, hmin = INFINITY, hmax = 0;
+            S = 0, hmin = TH_INF, hmax = 0;
             for (size_t i = 0; s && i + 1 < np; i++) {
                 double B[4], h = x[i + 1] - x[i];
                 ts_spline_control(s, i, B, NULL);
@@ -154,28 +148,22 @@ static void test_reference(void)
 }
 
 /* ---- property tests -------------------------------------------------- */
-static unsigned long rng = 88172645463325252UL;
-static double urand(void)
-{
-    rng ^= rng << 13, rng ^= rng >> 7, rng ^= rng << 17;
-    return (double)(rng >> 11) / 9007199254740992.0;
-}
 
 /* Lines are reproduced to rounding: Y − mX − c = Σ A_l (Y_l − m X_l − c) = 0
- * (SPEC §4), so only the rounding of the control values and of θ(x) remains. */
+ * (docs/method.md §4), so only the rounding of the control values and of θ(x) remains. */
 static void test_lines(void)
 {
     for (int rep = 0; rep < 40; rep++) {
-        size_t np = 2 + (size_t)(urand() * 12);
+        size_t np = 2 + (size_t)(th_unit() * 12);
         double x[16], f[16], d[16], al[16], be[16];
-        double m = (urand() - 0.5) * 20, c = (urand() - 0.5) * 10, sc = rep % 3 == 0 ? 1e-6 : 1.0;
-        x[0] = (urand() - 0.5) * 4 * sc;
+        double m = (th_unit() - 0.5) * 20, c = (th_unit() - 0.5) * 10, sc = rep % 3 == 0 ? 1e-6 : 1.0;
+        x[0] = (th_unit() - 0.5) * 4 * sc;
         for (size_t i = 1; i < np; i++)
-            x[i] = x[i - 1] + (0.01 + urand()) * sc;
+            x[i] = x[i - 1] + (0.01 + th_unit()) * sc;
         for (size_t i = 0; i < np; i++)
             f[i] = m * x[i] + c, d[i] = m;
         for (size_t i = 0; i + 1 < np; i++) {
-            al[i] = rep % 4 == 0 ? TS_GEOMETRIC_A_MIN : 0.5 + 10 * urand();
+            al[i] = rep % 4 == 0 ? TS_GEOMETRIC_A_MIN : 0.5 + 10 * th_unit();
             be[i] = 0;
         }
         ts_spline *s = geo_new(x, f, d, np, al, be, TS_EXTRAP_ERROR);
@@ -199,19 +187,19 @@ static void test_lines(void)
     }
 }
 
-/* The slope of the graph is d_i at both ends of every interval (SPEC §4). */
+/* The slope of the graph is d_i at both ends of every interval (docs/method.md §4). */
 static void test_knot_slopes(void)
 {
     for (int rep = 0; rep < 30; rep++) {
-        size_t np = 3 + (size_t)(urand() * 10);
+        size_t np = 3 + (size_t)(th_unit() * 10);
         double x[16], f[16], d[16], al[16], be[16];
-        x[0] = urand();
+        x[0] = th_unit();
         for (size_t i = 1; i < np; i++)
-            x[i] = x[i - 1] + 0.05 + 3 * urand();
+            x[i] = x[i - 1] + 0.05 + 3 * th_unit();
         for (size_t i = 0; i < np; i++)
-            f[i] = 5 * (urand() - 0.5), d[i] = 8 * (urand() - 0.5);
+            f[i] = 5 * (th_unit() - 0.5), d[i] = 8 * (th_unit() - 0.5);
         for (size_t i = 0; i + 1 < np; i++)
-            al[i] = rep % 2 ? TS_GEOMETRIC_A_MIN : 0.4 + 5 * urand(), be[i] = rep % 3 ? 0 : urand();
+            al[i] = rep % 2 ? TS_GEOMETRIC_A_MIN : 0.4 + 5 * th_unit(), be[i] = rep % 3 ? 0 : th_unit();
         ts_spline *s = geo_new(x, f, d, np, al, be, TS_EXTRAP_ERROR);
         if (!s)
             continue;
@@ -224,7 +212,7 @@ static void test_knot_slopes(void)
             CHECK_CLOSE(dy, d[i], 8 * EPS * (fabs(d[i]) + 10 / h));
             if (i > 0 && i + 1 < np) {
                 /* from the left, one ulp before the knot: y' moves by y''·ulp */
-                double xl = nextafter(x[i], -INFINITY);
+                double xl = nextafter(x[i], -TH_INF);
                 ts_eval_deriv(s, xl, NULL, &yl, &dyl, &d2l);
                 CHECK_CLOSE(dyl, d[i], 8 * EPS * (fabs(d[i]) + 10 / h) + 2 * fabs(d2l) * (x[i] - xl));
             }
@@ -234,7 +222,7 @@ static void test_knot_slopes(void)
 }
 
 /* Round trip through the control polygon: for θ on a grid, (X(θ), Y(θ)) from
- * the SPEC §2 basis in this file must be a point of the evaluated graph.
+ * the docs/method.md §2 basis in this file must be a point of the evaluated graph.
  * Hostile cases: a at the bound, tiny and huge h, x at the ends. */
 static void test_roundtrip(void)
 {
@@ -257,7 +245,7 @@ static void test_roundtrip(void)
                     S = fmax(S, fabs(B[l]));
                 for (int j = 0; j <= 400; j++) {
                     double t = TS_HALF_PI_T * j / 400.0, A[4], y, dy;
-                    basis(t, A);
+                    th_basis(t, A);
                     double xx = A[0] * X[0] + A[1] * X[1] + A[2] * X[2] + A[3] * X[3];
                     double yy = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
                     if (j == 0)
@@ -415,7 +403,7 @@ static void test_batch_integral(void)
 static double sample_min_gap(const ts_spline *s, size_t i, const ts_line *L, int sign, int m)
 {
     const double *x = ts_spline_x(s);
-    double best = INFINITY;
+    double best = TH_INF;
     for (int j = 0; j <= m; j++) {
         double xx = x[i] + (x[i + 1] - x[i]) * j / (double)m, y;
         ts_eval(s, xx, NULL, &y);
@@ -457,14 +445,14 @@ static void test_shapes(void)
         CHECK(ts_spline_certified(s) == 1);
         ts_spline_free(s);
     }
-    /* monotone data (SPEC §5.5: B1 <= B2 with X increasing) */
+    /* monotone data (docs/method.md §5.5: B1 <= B2 with X increasing) */
     double x2[] = {0, 1, 2, 3, 4, 5, 6, 7}, f2[] = {0, 0.1, 0.2, 3, 3.1, 3.1, 8, 8.05};
     o.shape = TS_SHAPE_MONOTONE;
     o.alpha = 0.2;
     st = ts_spline_new(x2, f2, 8, &o, &s, NULL);
     CHECKF(st == TS_OK, "monotone/geometric: %s", ts_strerror(st));
     if (s) {
-        double prev = -INFINITY, y;
+        double prev = -TH_INF, y;
         int mono = 1;
         for (int j = 0; j <= 7000; j++) {
             ts_eval(s, 7.0 * j / 7000, NULL, &y);
@@ -523,14 +511,23 @@ static void test_certify(void)
 
 int main(void)
 {
+    TH_CASE("reference");
     test_reference();
+    TH_CASE("lines");
     test_lines();
+    TH_CASE("knot_slopes");
     test_knot_slopes();
+    TH_CASE("roundtrip");
     test_roundtrip();
+    TH_CASE("bound");
     test_bound();
+    TH_CASE("steep");
     test_steep();
+    TH_CASE("batch_integral");
     test_batch_integral();
+    TH_CASE("shapes");
     test_shapes();
+    TH_CASE("certify");
     test_certify();
     return th_report("test_geometric");
 }

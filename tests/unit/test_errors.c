@@ -72,7 +72,7 @@ static void test_new(void)
     EXPECT_NEW(X5, F5, 2, NULL, TS_OK, NOIDX); /* two points are fine */
 
     /* NaN / ±Inf in x and f: index of the first */
-    const double bad[3] = {NAN, INFINITY, -INFINITY};
+    const double bad[3] = {TH_NAN, TH_INF, -TH_INF};
     for (int b = 0; b < 3; b++) {
         for (size_t i = 0; i < 5; i += 2) {
             memcpy(x, X5, sizeof x);
@@ -82,7 +82,7 @@ static void test_new(void)
             memcpy(x, X5, sizeof x);
             f[i] = bad[b];
             if (i + 2 < 5)
-                f[i + 2] = NAN; /* a later one too: the first is reported */
+                f[i + 2] = TH_NAN; /* a later one too: the first is reported */
             EXPECT_NEW(x, f, 5, NULL, TS_ERR_NONFINITE, i, TS_WHERE_POINT);
         }
     }
@@ -112,7 +112,7 @@ static void test_new(void)
     }
 
     /* alpha <= 0, NaN, Inf: scalar (index 0) and per interval */
-    const double bad_alpha[5] = {0.0, -1.0, NAN, INFINITY, -0.0};
+    const double bad_alpha[5] = {0.0, -1.0, TH_NAN, TH_INF, -0.0};
     for (int b = 0; b < 5; b++) {
         ts_options_init(&o);
         o.alpha = bad_alpha[b];
@@ -124,7 +124,7 @@ static void test_new(void)
         EXPECT_NEW(X5, F5, 5, &o, TS_ERR_ALPHA, 2, TS_WHERE_INTERVAL);
     }
     /* beta < 0, NaN, Inf */
-    const double bad_beta[4] = {-1e-300, -2.0, NAN, INFINITY};
+    const double bad_beta[4] = {-1e-300, -2.0, TH_NAN, TH_INF};
     for (int b = 0; b < 4; b++) {
         ts_options_init(&o);
         o.beta = bad_beta[b];
@@ -177,13 +177,13 @@ static void test_new(void)
         EXPECT_NEW(X5, F5, 5, &o, TS_ERR_NULL, NOIDX);
         /* NaN / Inf in user slopes: index of the first */
         double us[5] = {0, 1, 2, 3, 4};
-        us[3] = NAN;
-        us[4] = INFINITY;
+        us[3] = TH_NAN;
+        us[4] = TH_INF;
         o.user_slopes = us;
         EXPECT_NEW(X5, F5, 5, &o, TS_ERR_NONFINITE, 3, TS_WHERE_POINT);
         us[3] = 0;
         EXPECT_NEW(X5, F5, 5, &o, TS_ERR_NONFINITE, 4, TS_WHERE_POINT);
-        us[4] = -INFINITY;
+        us[4] = -TH_INF;
         EXPECT_NEW(X5, F5, 5, &o, TS_ERR_NONFINITE, 4, TS_WHERE_POINT);
     }
 
@@ -255,11 +255,11 @@ static void test_eval_errors(void)
 
     /* NaN query: an error, not a NaN with success (every policy) */
     y = dy = d2y = 0;
-    CHECK(ts_eval_deriv(s, NAN, &cur, &y, &dy, &d2y) == TS_ERR_DOMAIN && isnan(y) && isnan(dy) && isnan(d2y));
+    CHECK(ts_eval_deriv(s, TH_NAN, &cur, &y, &dy, &d2y) == TS_ERR_DOMAIN && isnan(y) && isnan(dy) && isnan(d2y));
     y = 0;
-    CHECK(ts_eval(s, NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
+    CHECK(ts_eval(s, TH_NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
     /* out of range under the default policy, just outside each end, and ±Inf */
-    const double outq[6] = {-1e-300, nextafter(0.0, -1.0), 4.75 + 1e-15 * 4.75 * 4, 1e308, INFINITY, -INFINITY};
+    const double outq[6] = {-1e-300, nextafter(0.0, -1.0), 4.75 + 1e-15 * 4.75 * 4, 1e308, TH_INF, -TH_INF};
     for (int k = 0; k < 6; k++) {
         y = dy = d2y = 0;
         CHECKF(ts_eval_deriv(s, outq[k], NULL, &y, &dy, &d2y) == TS_ERR_DOMAIN && isnan(y) && isnan(dy) &&
@@ -275,7 +275,7 @@ static void test_eval_errors(void)
     double r = 0;
     CHECK(ts_integral(NULL, 0, 1, &r) == TS_ERR_NULL);
     CHECK(ts_integral(s, 0, 1, NULL) == TS_ERR_NULL);
-    const double ia[5] = {NAN, -0.5, 0.0, 0.0, 5.0}, ib[5] = {1.0, 1.0, NAN, 4.76, 4.0};
+    const double ia[5] = {TH_NAN, -0.5, 0.0, 0.0, 5.0}, ib[5] = {1.0, 1.0, TH_NAN, 4.76, 4.0};
     for (int k = 0; k < 5; k++) {
         r = 0;
         CHECKF(ts_integral(s, ia[k], ib[k], &r) == TS_ERR_DOMAIN, "integral %g..%g", ia[k], ib[k]);
@@ -298,7 +298,7 @@ static void test_eval_errors(void)
     CHECK(ts_spline_control(s, 3, B, NULL) == TS_OK && B[0] == 3.0 && B[3] == 2.0);
 
     /* batch: NULLs, bad deriv, NaN and out-of-range queries */
-    double xq[4] = {0.5, NAN, 9.0, 1.0}, yq[4] = {0, 0, 0, 0};
+    double xq[4] = {0.5, TH_NAN, 9.0, 1.0}, yq[4] = {0, 0, 0, 0};
     ts_error err;
     CHECK(ts_eval_batch(NULL, 0, xq, 4, yq, NULL, &err) == TS_ERR_NULL && err.status == TS_ERR_NULL);
     CHECK(ts_eval_batch(s, 0, NULL, 4, yq, NULL, &err) == TS_ERR_NULL);
@@ -327,10 +327,10 @@ static void test_slopes_compute(void)
     CHECK(ts_slopes_compute(TS_SLOPES_ARITHMETIC, X5, F5, 0, d, &err) == TS_ERR_TOO_FEW);
     memcpy(x, X5, sizeof x);
     memcpy(f, F5, sizeof f);
-    f[2] = NAN;
+    f[2] = TH_NAN;
     CHECK(ts_slopes_compute(TS_SLOPES_ARITHMETIC, x, f, 5, d, &err) == TS_ERR_NONFINITE);
     CHECK(err.status == TS_ERR_NONFINITE && err.index == 2 && err.where == TS_WHERE_POINT);
-    x[4] = INFINITY;
+    x[4] = TH_INF;
     f[2] = 0.5;
     CHECK(ts_slopes_compute(TS_SLOPES_ARITHMETIC, x, f, 5, d, &err) == TS_ERR_NONFINITE && err.index == 4);
     memcpy(x, X5, sizeof x);
@@ -422,12 +422,19 @@ static void test_overflowing_controls(void)
 
 int main(void)
 {
+    TH_CASE("overflowing_controls");
     test_overflowing_controls();
+    TH_CASE("nomem");
     test_nomem();
+    TH_CASE("strerror");
     test_strerror();
+    TH_CASE("new");
     test_new();
+    TH_CASE("eval_errors");
     test_eval_errors();
+    TH_CASE("slopes_compute");
     test_slopes_compute();
+    TH_CASE("overflow");
     test_overflow();
     return th_report("test_errors");
 }
