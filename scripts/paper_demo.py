@@ -6,7 +6,7 @@ Usage: paper_demo.py CLI DATA_DIR OUT_DIR
 Every figure is produced by the `trigspline` command (CLI) exactly as a user
 would run it; the page shows each command line, the plot (inline SVG), the
 beta_i and the certificate of every interval, and a note wherever our result
-differs from the paper's claim (SPEC §9).  Standard library only.
+differs from the paper's claim (docs/method.md §9).  Standard library only.
 """
 import html
 import json
@@ -148,7 +148,7 @@ def figure(num, title, intro, panels):
 
 
 def arithmetic_slopes(x, f):
-    """SPEC §6 arithmetic mean (re-derived here, for the printed-sign panel)."""
+    """docs/method.md §6 arithmetic mean (re-derived here, for the printed-sign panel)."""
     n = len(x) - 1
     h = [x[i + 1] - x[i] for i in range(n)]
     D = [(f[i + 1] - f[i]) / h[i] for i in range(n)]
@@ -210,12 +210,12 @@ html_b, js_b, _ = panel("b", "no scheme, α = 1.4, β = 1.9 (the paper's 'negati
 low = js_b.get("min_gap_lower") if js_b else None
 ps.append(html_b.replace("</h4>", "</h4>", 1) + "")
 note_b = ("<b>Differs from the paper.</b> The paper shows this curve going negative. With the "
-          "arithmetic-mean slopes it does not: its exact minimum (the certificate) is %s, attained at the knot x = 5 (SPEC §9.6). The defect needs a much "
+          "arithmetic-mean slopes it does not: its exact minimum (the certificate) is %s, attained at the knot x = 5 (docs/method.md §9.6). The defect needs a much "
           "smaller a = α+β for every interval: panels (b′) and (b″)." % g(low, 4))
 ps[-1] = ps[-1].replace('<table class="iv">', '<p class="note">%s</p><table class="iv">' % note_b, 1)
 ps.append(panel("b′", "no scheme, α = 0.04, β = 0 (a = 0.04 on every interval)",
                 ["certify", t1, "--alpha", "0.04", "--beta", "0", "--shape", "positive"],
-                "Parameters that do show the defect: the curve first dips below zero near a = 0.04 (SPEC §9.6).")[0])
+                "Parameters that do show the defect: the curve first dips below zero near a = 0.04 (docs/method.md §9.6).")[0])
 ps.append(panel("b″", "no scheme, α = 0.01, β = 0",
                 ["certify", t1, "--alpha", "0.01", "--beta", "0", "--shape", "positive"],
                 "At a = 0.01 the dip is deep (about −6.2).")[0])
@@ -232,7 +232,7 @@ ps = []
 html_a, _, st_a = panel("a", "data with the paper's line y = 0.31x + 1: refused",
                         ["fit", t2, "--shape", "above", "--line", "0.31,1"],
                         "<b>Differs from the paper.</b> Table 2 does not lie above y = 0.31x + 1: the points at "
-                        "x = 1, 14 and 15 are below it (SPEC §9.5), so the scheme refuses the data and names the "
+                        "x = 1, 14 and 15 are below it (docs/method.md §9.5), so the scheme refuses the data and names the "
                         "first offending point. The panels below use the line <b>y = 0.03x + 0.3</b>, which "
                         "every data point lies above.", expect_fail=True)
 ps.append(html_a)
@@ -277,10 +277,10 @@ ps.append(panel("c′", "the paper's printed Theorem 4 (wrong signs), α = 0.001
                  "--line", "1,2.5", "--shape", "below"],
                 "<b>Differs from the paper.</b> Theorem 4 as printed uses the signs of Theorem 3; with "
                 "those β<sub>i</sub> (computed by this page from the printed rule) the curve rises far above "
-                "the line (SPEC §5.3). With the corrected rule, panel (c), it stays below.",
+                "the line (docs/method.md §5.3). With the corrected rule, panel (c), it stays below.",
                 expect_fail=True)[0])
 sections.append(figure("6", "data below a line (Table 3)",
-                       "Theorem 4, with the signs corrected (SPEC §5.3).", ps))
+                       "Theorem 4, with the signs corrected (docs/method.md §5.3).", ps))
 
 # ---- Figure 7: Table 4, between two lines --------------------------------
 t4 = data("table4_between_lines.csv")
@@ -339,7 +339,7 @@ page = """<!DOCTYPE html>
 <p>Every panel below was made by the <code>trigspline</code> command shown above it, on the paper's data
 (<code>data/paper/</code>). Tables list, per interval, the shape parameters and the <b>certificate</b>: the
 exact minimum distance of the curve to each boundary on that interval (from the critical points of the
-trigonometric polynomial, not from samples) and where it is attained. Slopes: arithmetic mean (SPEC §6);
+trigonometric polynomial, not from samples) and where it is attained. Slopes: arithmetic mean (docs/method.md §6);
 margin t = 0.01 unless stated.</p>
 <h2>Where our results differ from the paper</h2>%s
 %s

@@ -1,4 +1,4 @@
-"""Curve: open and closed parametric curves in 2-D and 3-D (SPEC §7)."""
+"""Curve: open and closed parametric curves in 2-D and 3-D (docs/method.md §7)."""
 import ctypes
 
 from . import _ffi

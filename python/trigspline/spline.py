@@ -1,4 +1,4 @@
-"""Spline: the GC¹ cubic trigonometric spline of a function (SPEC §3–§6)."""
+"""Spline: the GC¹ cubic trigonometric spline of a function (docs/method.md §3–§6)."""
 import ctypes
 import math
 
@@ -46,7 +46,7 @@ def _report_dict(r):
 
 
 def estimate_slopes(x, f, method="arithmetic"):
-    """Slopes d_i of SPEC §6 at every point (ts_slopes_compute), as a list."""
+    """Slopes d_i of docs/method.md §6 at every point (ts_slopes_compute), as a list."""
     xs, fs = float_list(x, "x"), float_list(f, "f")
     if len(xs) != len(fs):
         raise TrigsplineError(_S.LENGTH, "x has %d values but f has %d" % (len(xs), len(fs)))
@@ -73,7 +73,7 @@ class Spline(Handle):
                  'below' (line or upper), 'between' (lower and upper), 'monotone'
     alpha, beta  scalars or one value per interval; beta only with shape='none'
                  (the schemes choose beta)
-    margin       the t of SPEC §5 (None = the library default 0.01), scalar or
+    margin       the t of docs/method.md §5 (None = the library default 0.01), scalar or
                  per interval
     line, lower, upper  (m, c) for y = m*x + c
     slopes       'arithmetic', 'geometric', 'harmonic', 'fritsch_carlson'
