@@ -329,6 +329,18 @@ typedef struct ts_spline ts_spline;
  * TS_ERR_MARGIN, TS_ERR_LENGTH, TS_ERR_OPTION, TS_ERR_PERIODIC,
  * TS_ERR_NEGATIVE, TS_ERR_SIDE, TS_ERR_LINES, TS_ERR_NONMONOTONE,
  * TS_ERR_INFEASIBLE, TS_ERR_GEOMETRIC, TS_ERR_ZERO_SLOPE.
+ *
+ * Which fault is reported when the input has several: first the arguments
+ * (NULL, too few points, an enum out of range, sizes), then every point
+ * (non-finite, unsorted, widths), then options that concern all the data
+ * (user slopes array, periodic ends, array lengths, the scheme's options and
+ * lines); then the intervals are built in consecutive blocks of 1024, and
+ * in each block the stages run in order — slopes (non-finite), alpha, beta
+ * or the scheme's data checks and rule, the geometric bound, controls and
+ * certificates (TS_ERR_INFEASIBLE) — so the fault reported is the first of
+ * the first block that has one (for n_points <= 1025: the first in stage
+ * order).  In the C¹ form certificates follow all blocks.  Non-finite
+ * control values (TS_ERR_NONFINITE, an interval) are reported last.
  */
 ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
                         const ts_options *opt, ts_spline **out, ts_error *err);

@@ -46,6 +46,7 @@ if [ -n "$first" ] && command -v valgrind >/dev/null 2>&1; then
     done
 fi
 if [ -n "$first" ]; then
+    run_one "script/check_layers.py" python3 "$here/../scripts/check_layers.py" "$here/.."
     for py in "$here"/test_*.py "$here"/tools/test_*.py; do
         [ -f "$py" ] || continue
         run_one "script/$(basename "$py")" python3 "$py" "$first"
