@@ -3,8 +3,8 @@
 #define TS_CLI_H
 
 #include "trigspline.h"
-#include "ts_io.h"
-#include "ts_plot.h"
+#include "tsu_io.h"
+#include "tsu_plot.h"
 
 #include <stddef.h>
 
@@ -94,8 +94,8 @@ const char *cli_param_name(ts_param p);
 void cli_error(const char *fmt, ...) CLI_PRINTF(1, 2);
 /* "trigspline CMD: ...", then the hint to --help; returns CLI_USAGE. */
 int cli_usage(cli_cmd cmd, const char *fmt, ...) CLI_PRINTF(2, 3);
-/* Shortest round-trip text of v (ts_format_double). */
-const char *cli_num(double v, char buf[TS_FMT_SIZE]);
+/* Shortest round-trip text of v (tsu_format_double). */
+const char *cli_num(double v, char buf[TSU_FMT_SIZE]);
 /* "y = M*x + C" into buf. */
 void cli_line_text(const ts_line *l, char *buf, size_t len);
 /* Exit status for a failed append (out of memory). */
@@ -103,7 +103,7 @@ int cli_nomem(void);
 
 /* A JSON document being built (numbers shortest round-trip, NaN/Inf -> null). */
 typedef struct cli_json {
-    ts_plot_buf b;
+    tsu_plot_buf b;
     int need_comma;
     int nl; /* next separator starts a new line */
     int failed;
@@ -144,11 +144,11 @@ void cli_xy_free(cli_xy *a);
  */
 typedef int (*cli_writer_fn)(void *ctx, FILE *fp); /* 0 or an errno */
 
-/* An output: ts_out (temporary file + rename; "-" = stdout), except that an
+/* An output: tsu_out (temporary file + rename; "-" = stdout), except that an
  * existing target that is not a regular file (/dev/null, a FIFO, /dev/stdout)
  * is opened and written directly: renaming over it would replace the device. */
 typedef struct cli_out {
-    ts_out *o;
+    tsu_out *o;
     FILE *direct;
 } cli_out;
 /* 0 or an errno (message in msg). */
@@ -156,8 +156,8 @@ int cli_out_open(cli_out *c, const char *path, char *msg, size_t len);
 FILE *cli_out_file(const cli_out *c);
 int cli_out_commit(cli_out *c, char *msg, size_t len);
 void cli_out_abort(cli_out *c);
-int cli_write_outputs(const char *out_path, const ts_plot_buf *text, cli_writer_fn fn,
-                      void *fn_ctx, const char *svg_path, const ts_plot_buf *svg);
+int cli_write_outputs(const char *out_path, const tsu_plot_buf *text, cli_writer_fn fn,
+                      void *fn_ctx, const char *svg_path, const tsu_plot_buf *svg);
 
 /* ---- cli_data.c ------------------------------------------------------ */
 typedef struct cli_data {
@@ -166,7 +166,7 @@ typedef struct cli_data {
     size_t dim;       /* columns kept (2 for fit/certify; 2 or 3 for curve) */
     double *col[3];   /* borrowed from t */
     unsigned long long *line;
-    ts_table t;
+    tsu_table t;
 } cli_data;
 /* Read DATA: fit/certify keep two columns (x, f; --columns picks them);
  * curve keeps 2 or 3.  Returns CLI_OK, CLI_DATA or CLI_IO (message printed). */
@@ -179,7 +179,7 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
                            const unsigned long long *lines, size_t n, const ts_error *e,
                            ts_status st, size_t index_offset);
 /* Map an I/O reader failure to an exit status (message printed). */
-int cli_report_io(const ts_io_error *e);
+int cli_report_io(const tsu_io_error *e);
 
 /* ---- cli_fit.c ------------------------------------------------------- */
 /* Sampling: m points per interval of [i0, i1) (knots included, the right

@@ -114,12 +114,12 @@ static int parse_number(const char *s, size_t len, int allow_inf, double *v)
     const char *stop;
     if (len == 0)
         return 0;
-    ts_num_status st = ts_parse_double(s, s + len, v, &stop);
+    tsu_num_status st = tsu_parse_double(s, s + len, v, &stop);
     if (stop != s + len)
         return 0;
-    if (st == TS_NUM_OK)
+    if (st == TSU_NUM_OK)
         return 1;
-    if (st == TS_NUM_NONFINITE && allow_inf && isinf(*v))
+    if (st == TSU_NUM_NONFINITE && allow_inf && isinf(*v))
         return 1;
     return 0;
 }
@@ -204,7 +204,7 @@ static int parse_positive_list(cli_cmd cmd, const char *name, const char *s, int
     for (size_t i = 0; i < *n; i++) {
         double v = (*out)[i];
         if (!(allow_zero ? v >= 0.0 : v > 0.0)) {
-            char b[TS_FMT_SIZE];
+            char b[TSU_FMT_SIZE];
             return cli_usage(cmd, "%s: value %zu is %s, must be %s", name, i + 1, cli_num(v, b),
                              allow_zero ? ">= 0" : "> 0");
         }

@@ -80,7 +80,7 @@ typedef struct csv_ctx {
     const ts_spline *s;
     size_t m;
     int deriv;
-    ts_writer *w;
+    tsu_writer *w;
 } csv_ctx;
 
 static int writer_sink(void *ctx, const double *x, const double *y, size_t k)
@@ -88,7 +88,7 @@ static int writer_sink(void *ctx, const double *x, const double *y, size_t k)
     csv_ctx *c = ctx;
     int rc = 0;
     for (size_t j = 0; j < k && !rc; j++)
-        rc = ts_writer_xy(c->w, x[j], y[j]);
+        rc = tsu_writer_xy(c->w, x[j], y[j]);
     return rc;
 }
 
@@ -96,13 +96,13 @@ static int writer_sink(void *ctx, const double *x, const double *y, size_t k)
 static int write_dense_csv(void *ctx, FILE *fp)
 {
     csv_ctx *c = ctx;
-    c->w = ts_writer_new(fp, ',');
+    c->w = tsu_writer_new(fp, ',');
     if (!c->w)
         return ENOMEM;
-    int rc = ts_writer_text(c->w, "x,y\n", 4);
+    int rc = tsu_writer_text(c->w, "x,y\n", 4);
     if (!rc)
         rc = cli_sample(c->s, 0, ts_spline_intervals(c->s), 1, c->m, c->deriv, writer_sink, c);
-    int rc2 = ts_writer_free(c->w);
+    int rc2 = tsu_writer_free(c->w);
     c->w = NULL;
     return rc ? rc : rc2;
 }
@@ -390,10 +390,10 @@ static void json_report(cli_json *j, const cli_opts *o, const ts_spline *s, ts_s
 #define COL_CTRL "#009e73"
 #define COL_BAD "#cc79a7"
 
-static ts_plot_status plot_add_bound(ts_plot *p, const ts_line *l, int lower)
+static tsu_plot_status plot_add_bound(tsu_plot *p, const ts_line *l, int lower)
 {
     char txt[200], lab[240];
-    ts_plot_style st;
+    tsu_plot_style st;
     memset(&st, 0, sizeof st);
     st.color = lower ? COL_BOUND : COL_BOUND2;
     cli_line_text(l, txt, sizeof txt);
@@ -401,8 +401,8 @@ static ts_plot_status plot_add_bound(ts_plot *p, const ts_line *l, int lower)
                                              : (l->m == 0.0 ? "ceiling" : "upper line"),
              txt);
     if (l->m == 0.0)
-        return lower ? ts_plot_add_floor(p, l->c, lab, &st) : ts_plot_add_ceiling(p, l->c, lab, &st);
-    return ts_plot_add_region(p, lower ? TS_PLOT_FORBID_BELOW : TS_PLOT_FORBID_ABOVE, l->m, l->c,
+        return lower ? tsu_plot_add_floor(p, l->c, lab, &st) : tsu_plot_add_ceiling(p, l->c, lab, &st);
+    return tsu_plot_add_region(p, lower ? TSU_PLOT_FORBID_BELOW : TSU_PLOT_FORBID_ABOVE, l->m, l->c,
                               lab, &st);
 }
 
@@ -411,7 +411,7 @@ static char *default_title(const cli_opts *o, const char *name, ts_shape shape, 
 {
     const char *base = strrchr(name, '/');
     base = base ? base + 1 : name;
-    char a[TS_FMT_SIZE], b[TS_FMT_SIZE];
+    char a[TSU_FMT_SIZE], b[TSU_FMT_SIZE];
     if (o->cmd == CLI_CERTIFY || shape == TS_SHAPE_NONE) {
         snprintf(buf, len, "%s: %s, alpha = %s, beta = %s", base,
                  o->cmd == CLI_CERTIFY ? "certify" : "fit",
@@ -427,34 +427,34 @@ static char *default_title(const cli_opts *o, const char *name, ts_shape shape, 
 /* Render the plot of a spline to svg.  bad: points to mark (may be empty). */
 static int plot_spline(const cli_opts *o, const char *name, const ts_spline *s, ts_shape shape,
                        const ts_line *lower, const ts_line *upper, const cli_xy *bad,
-                       ts_plot_buf *svg)
+                       tsu_plot_buf *svg)
 {
-    ts_plot *p = NULL;
-    ts_plot_status ps = ts_plot_new(0, 0, &p);
+    tsu_plot *p = NULL;
+    tsu_plot_status ps = tsu_plot_new(0, 0, &p);
     cli_xy curve = {0}, ctl = {0};
     char title[512];
-    ts_plot_style st;
+    tsu_plot_style st;
     size_t n = ts_spline_intervals(s);
     int rc = CLI_OK;
 
-    if (ps != TS_PLOT_OK)
+    if (ps != TSU_PLOT_OK)
         return cli_nomem();
-    ps = ts_plot_set_title(p, o->title ? o->title : default_title(o, name, shape, title, sizeof title));
-    if (ps == TS_PLOT_OK)
-        ps = ts_plot_set_labels(p, "x", "y");
-    if (ps == TS_PLOT_OK && lower)
+    ps = tsu_plot_set_title(p, o->title ? o->title : default_title(o, name, shape, title, sizeof title));
+    if (ps == TSU_PLOT_OK)
+        ps = tsu_plot_set_labels(p, "x", "y");
+    if (ps == TSU_PLOT_OK && lower)
         ps = plot_add_bound(p, lower, 1);
-    if (ps == TS_PLOT_OK && upper)
+    if (ps == TSU_PLOT_OK && upper)
         ps = plot_add_bound(p, upper, 0);
-    if (ps == TS_PLOT_OK && !o->points_only) {
+    if (ps == TSU_PLOT_OK && !o->points_only) {
         size_t m = o->samples;
         if (cli_sample(s, 0, n, 1, m, 0, xy_sink, &curve) != 0)
-            ps = TS_PLOT_ERR_NOMEM;
+            ps = TSU_PLOT_ERR_NOMEM;
         memset(&st, 0, sizeof st);
         st.color = COL_CURVE;
-        if (ps == TS_PLOT_OK)
-            ps = ts_plot_add_polyline(p, curve.x, curve.y, curve.n, "spline", &st);
-        if (ps == TS_PLOT_OK && o->show_control) {
+        if (ps == TSU_PLOT_OK)
+            ps = tsu_plot_add_polyline(p, curve.x, curve.y, curve.n, "spline", &st);
+        if (ps == TSU_PLOT_OK && o->show_control) {
             for (size_t i = 0; i < n; i++) {
                 double B[4], X[4];
                 (void)ts_spline_control(s, i, B, X);
@@ -462,52 +462,52 @@ static int plot_spline(const cli_opts *o, const char *name, const ts_spline *s, 
                     cli_xy_push(&ctl, X[l], B[l]);
             }
             if (ctl.failed)
-                ps = TS_PLOT_ERR_NOMEM;
+                ps = TSU_PLOT_ERR_NOMEM;
             memset(&st, 0, sizeof st);
             st.color = COL_CTRL;
-            if (ps == TS_PLOT_OK)
-                ps = ts_plot_add_polygon(p, ctl.x, ctl.y, ctl.n, "control polygon", &st);
+            if (ps == TSU_PLOT_OK)
+                ps = tsu_plot_add_polygon(p, ctl.x, ctl.y, ctl.n, "control polygon", &st);
         }
     }
     memset(&st, 0, sizeof st);
     st.color = COL_DATA;
-    if (ps == TS_PLOT_OK)
-        ps = ts_plot_add_points(p, ts_spline_x(s), ts_spline_f(s), n + 1, "data", &st);
-    if (ps == TS_PLOT_OK && bad && bad->n && !o->points_only) {
+    if (ps == TSU_PLOT_OK)
+        ps = tsu_plot_add_points(p, ts_spline_x(s), ts_spline_f(s), n + 1, "data", &st);
+    if (ps == TSU_PLOT_OK && bad && bad->n && !o->points_only) {
         memset(&st, 0, sizeof st);
         st.color = COL_BAD;
         st.marker_radius = 5.0;
-        ps = ts_plot_add_points(p, bad->x, bad->y, bad->n, "least gap (violated)", &st);
+        ps = tsu_plot_add_points(p, bad->x, bad->y, bad->n, "least gap (violated)", &st);
     }
-    if (ps == TS_PLOT_OK)
-        ps = ts_plot_render(p, svg);
-    if (ps != TS_PLOT_OK) {
-        cli_error("plot: %s", ts_plot_strerror(ps));
+    if (ps == TSU_PLOT_OK)
+        ps = tsu_plot_render(p, svg);
+    if (ps != TSU_PLOT_OK) {
+        cli_error("plot: %s", tsu_plot_strerror(ps));
         rc = CLI_IO;
     }
     cli_xy_free(&curve);
     cli_xy_free(&ctl);
-    ts_plot_free(p);
+    tsu_plot_free(p);
     return rc;
 }
 
 /* ---- --at ------------------------------------------------------------------- */
 
 typedef struct at_vals {
-    ts_table t;
+    tsu_table t;
     double *y;
     size_t m;
 } at_vals;
 
 static int eval_at(const cli_opts *o, const ts_spline *s, at_vals *a)
 {
-    ts_read_options ro;
-    ts_io_error ie;
+    tsu_read_options ro;
+    tsu_io_error ie;
     ts_error e;
     memset(a, 0, sizeof *a);
-    ts_read_options_init(&ro);
-    ts_io_status st = ts_read_table_path(o->at, &ro, &a->t, &ie);
-    if (st != TS_IO_OK)
+    tsu_read_options_init(&ro);
+    tsu_io_status st = tsu_read_table_path(o->at, &ro, &a->t, &ie);
+    if (st != TSU_IO_OK)
         return cli_report_io(&ie);
     a->m = a->t.nrows;
     a->y = malloc((a->m ? a->m : 1) * sizeof *a->y);
@@ -517,7 +517,7 @@ static int eval_at(const cli_opts *o, const ts_spline *s, at_vals *a)
     ts_status es = ts_eval_batch(s, o->deriv, a->t.cols[0], a->m, a->y, &cur, &e);
     if (es != TS_OK) {
         size_t q = e.index < a->m ? e.index : 0;
-        char bx[TS_FMT_SIZE], b0[TS_FMT_SIZE], b1[TS_FMT_SIZE];
+        char bx[TSU_FMT_SIZE], b0[TSU_FMT_SIZE], b1[TSU_FMT_SIZE];
         const double *X = ts_spline_x(s);
         cli_error("%s:%llu: x = %s is outside the data range [%s, %s] (--extrapolate "
                   "clamp|extend|linear evaluates there)",
@@ -531,7 +531,7 @@ static int eval_at(const cli_opts *o, const ts_spline *s, at_vals *a)
 
 static void at_free(at_vals *a)
 {
-    ts_table_free(&a->t);
+    tsu_table_free(&a->t);
     free(a->y);
     memset(a, 0, sizeof *a);
 }
@@ -574,7 +574,7 @@ int cli_fit(cli_opts *o)
     memset(&at, 0, sizeof at);
     cli_json j;
     cli_json_init(&j);
-    ts_plot_buf svg = TS_PLOT_BUF_INIT, text = TS_PLOT_BUF_INIT;
+    tsu_plot_buf svg = TSU_PLOT_BUF_INIT, text = TSU_PLOT_BUF_INIT;
     stats smp = {INFINITY, -INFINITY, 0};
     csv_ctx cc = {s, o->samples, o->deriv, NULL};
     cli_writer_fn fn = NULL;
@@ -592,11 +592,11 @@ int cli_fit(cli_opts *o)
             goto done;
         }
     } else if (o->at) {
-        char bx[TS_FMT_SIZE], by[TS_FMT_SIZE];
-        int bad = ts_plot_buf_puts(&text, "x,y\n") != TS_PLOT_OK;
+        char bx[TSU_FMT_SIZE], by[TSU_FMT_SIZE];
+        int bad = tsu_plot_buf_puts(&text, "x,y\n") != TSU_PLOT_OK;
         for (size_t q = 0; q < at.m && !bad; q++)
-            bad = ts_plot_buf_printf(&text, "%s,%s\n", cli_num(at.t.cols[0][q], bx),
-                                     cli_num(at.y[q], by)) != TS_PLOT_OK;
+            bad = tsu_plot_buf_printf(&text, "%s,%s\n", cli_num(at.t.cols[0][q], bx),
+                                     cli_num(at.y[q], by)) != TSU_PLOT_OK;
         if (bad) {
             rc = cli_nomem();
             goto done;
@@ -609,8 +609,8 @@ int cli_fit(cli_opts *o)
     rc = cli_write_outputs(o->out, o->json ? &j.b : &text, fn, &cc, o->svg, &svg);
 done:
     cli_json_free(&j);
-    ts_plot_buf_free(&svg);
-    ts_plot_buf_free(&text);
+    tsu_plot_buf_free(&svg);
+    tsu_plot_buf_free(&text);
     at_free(&at);
     ts_spline_free(s);
     cli_data_free(&d);
@@ -618,42 +618,42 @@ done:
 }
 
 /* Text report of certify. */
-static int certify_text(ts_plot_buf *b, const cli_opts *o, const char *name, const ts_spline *s,
+static int certify_text(tsu_plot_buf *b, const cli_opts *o, const char *name, const ts_spline *s,
                         const ts_line *lower, const ts_line *upper,
                         const ts_interval_report *reps, int certified)
 {
     size_t n = ts_spline_intervals(s), bad = 0;
     char t1[200], t2[200];
-    char v[8][TS_FMT_SIZE];
+    char v[8][TSU_FMT_SIZE];
     int ok = 1;
     if (lower)
         cli_line_text(lower, t1, sizeof t1);
     if (upper)
         cli_line_text(upper, t2, sizeof t2);
-    ok &= ts_plot_buf_printf(b, "# trigspline certify %s: %zu intervals, form %s, slopes %s%s%s%s%s\n",
+    ok &= tsu_plot_buf_printf(b, "# trigspline certify %s: %zu intervals, form %s, slopes %s%s%s%s%s\n",
                              name, n, cli_form_name(ts_spline_form(s)), cli_slopes_name(o->slopes),
                              lower ? ", lower " : "", lower ? t1 : "", upper ? ", upper " : "",
-                             upper ? t2 : "") == TS_PLOT_OK;
-    ok &= ts_plot_buf_puts(b, "interval x0 x1 alpha beta gap_lower at_lower gap_upper at_upper "
-                              "certified\n") == TS_PLOT_OK;
+                             upper ? t2 : "") == TSU_PLOT_OK;
+    ok &= tsu_plot_buf_puts(b, "interval x0 x1 alpha beta gap_lower at_lower gap_upper at_upper "
+                              "certified\n") == TSU_PLOT_OK;
     for (size_t i = 0; i < n && ok; i++) {
         const ts_interval_report *r = &reps[i];
         bad += !r->certified;
-        ok &= ts_plot_buf_printf(
+        ok &= tsu_plot_buf_printf(
                   b, "%zu %s %s %s %s %s %s %s %s %s\n", i, cli_num(r->x0, v[0]),
                   cli_num(r->x1, v[1]), cli_num(r->alpha, v[2]), cli_num(r->beta, v[3]),
                   r->has_lower ? cli_num(r->gap_lower, v[4]) : "-",
                   r->has_lower ? cli_num(r->at_lower, v[5]) : "-",
                   r->has_upper ? cli_num(r->gap_upper, v[6]) : "-",
                   r->has_upper ? cli_num(r->at_upper, v[7]) : "-",
-                  r->certified ? "yes" : "NO") == TS_PLOT_OK;
+                  r->certified ? "yes" : "NO") == TSU_PLOT_OK;
     }
     if (ok) {
         if (certified)
-            ok &= ts_plot_buf_puts(b, "# certified: yes\n") == TS_PLOT_OK;
+            ok &= tsu_plot_buf_puts(b, "# certified: yes\n") == TSU_PLOT_OK;
         else
-            ok &= ts_plot_buf_printf(b, "# certified: no (%zu of %zu intervals leave the region)\n",
-                                     bad, n) == TS_PLOT_OK;
+            ok &= tsu_plot_buf_printf(b, "# certified: no (%zu of %zu intervals leave the region)\n",
+                                     bad, n) == TSU_PLOT_OK;
     }
     return ok ? CLI_OK : cli_nomem();
 }
@@ -685,7 +685,7 @@ int cli_certify(cli_opts *o)
     ts_interval_report *reps = calloc(n, sizeof *reps);
     cli_json j;
     cli_json_init(&j);
-    ts_plot_buf svg = TS_PLOT_BUF_INIT, text = TS_PLOT_BUF_INIT;
+    tsu_plot_buf svg = TSU_PLOT_BUF_INIT, text = TSU_PLOT_BUF_INIT;
     cli_xy bad = {0};
     stats smp = {INFINITY, -INFINITY, 0};
     int certified = 0;
@@ -730,7 +730,7 @@ int cli_certify(cli_opts *o)
         cli_error("certificate violated on %zu of %zu intervals:", cnt, n);
         for (size_t i = 0; i < n; i++) {
             const ts_interval_report *r = &reps[i];
-            char b[6][TS_FMT_SIZE];
+            char b[6][TSU_FMT_SIZE];
             if (r->certified)
                 continue;
             fprintf(stderr, "  interval %zu [%s, %s] (lines %llu-%llu):", i, cli_num(r->x0, b[0]),
@@ -751,8 +751,8 @@ done:
     free(reps);
     cli_xy_free(&bad);
     cli_json_free(&j);
-    ts_plot_buf_free(&svg);
-    ts_plot_buf_free(&text);
+    tsu_plot_buf_free(&svg);
+    tsu_plot_buf_free(&text);
     ts_spline_free(s);
     cli_data_free(&d);
     return rc;

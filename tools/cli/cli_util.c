@@ -33,21 +33,21 @@ int cli_usage(cli_cmd cmd, const char *fmt, ...)
     return CLI_USAGE;
 }
 
-const char *cli_num(double v, char buf[TS_FMT_SIZE])
+const char *cli_num(double v, char buf[TSU_FMT_SIZE])
 {
-    ts_format_double(v, buf);
+    tsu_format_double(v, buf);
     return buf;
 }
 
 void cli_line_text(const ts_line *l, char *buf, size_t len)
 {
-    char m[TS_FMT_SIZE + 1], c[TS_FMT_SIZE];
+    char m[TSU_FMT_SIZE + 1], c[TSU_FMT_SIZE];
     if (l->m == 1.0)
         snprintf(m, sizeof m, "x");
     else if (l->m == -1.0)
         snprintf(m, sizeof m, "-x");
     else {
-        ts_format_double(l->m, m);
+        tsu_format_double(l->m, m);
         strcat(m, "x");
     }
     if (l->m == 0.0)
@@ -70,7 +70,7 @@ int cli_nomem(void)
 
 void cli_json_init(cli_json *j)
 {
-    ts_plot_buf_init(&j->b);
+    tsu_plot_buf_init(&j->b);
     j->need_comma = 0;
     j->nl = 0;
     j->failed = 0;
@@ -83,12 +83,12 @@ void cli_json_nl(cli_json *j)
 
 void cli_json_free(cli_json *j)
 {
-    ts_plot_buf_free(&j->b);
+    tsu_plot_buf_free(&j->b);
 }
 
 void cli_json_raw(cli_json *j, const char *s)
 {
-    if (ts_plot_buf_puts(&j->b, s) != TS_PLOT_OK)
+    if (tsu_plot_buf_puts(&j->b, s) != TSU_PLOT_OK)
         j->failed = 1;
 }
 
@@ -126,7 +126,7 @@ void cli_json_end(cli_json *j, char c)
 
 void cli_json_num(cli_json *j, double v)
 {
-    char b[TS_FMT_SIZE];
+    char b[TSU_FMT_SIZE];
     comma(j);
     if (!isfinite(v)) {
         cli_json_raw(j, "null");
@@ -165,7 +165,7 @@ void cli_json_str(cli_json *j, const char *s)
         unsigned char ch = (unsigned char)*p;
         if (ch != '\0' && ch >= 0x20 && ch != '"' && ch != '\\')
             continue;
-        if (p > run && ts_plot_buf_append(&j->b, run, (size_t)(p - run)) != TS_PLOT_OK)
+        if (p > run && tsu_plot_buf_append(&j->b, run, (size_t)(p - run)) != TSU_PLOT_OK)
             j->failed = 1;
         if (ch == '\0')
             break;
@@ -270,12 +270,12 @@ int cli_out_open(cli_out *c, const char *path, char *msg, size_t len)
         }
         return 0;
     }
-    return ts_out_open(&c->o, path, 0, msg, len);
+    return tsu_out_open(&c->o, path, 0, msg, len);
 }
 
 FILE *cli_out_file(const cli_out *c)
 {
-    return c->direct ? c->direct : ts_out_file(c->o);
+    return c->direct ? c->direct : tsu_out_file(c->o);
 }
 
 int cli_out_commit(cli_out *c, char *msg, size_t len)
@@ -296,22 +296,22 @@ int cli_out_commit(cli_out *c, char *msg, size_t len)
         }
         return 0;
     }
-    ts_out *o = c->o;
+    tsu_out *o = c->o;
     c->o = NULL;
-    return o ? ts_out_commit(o, msg, len) : 0;
+    return o ? tsu_out_commit(o, msg, len) : 0;
 }
 
 void cli_out_abort(cli_out *c)
 {
     if (c->direct)
         fclose(c->direct);
-    ts_out_abort(c->o);
+    tsu_out_abort(c->o);
     c->direct = NULL;
     c->o = NULL;
 }
 
 /* Write, then flush and check the stream: 0 or an errno. */
-static int put_all(FILE *fp, const ts_plot_buf *text, cli_writer_fn fn, void *ctx)
+static int put_all(FILE *fp, const tsu_plot_buf *text, cli_writer_fn fn, void *ctx)
 {
     int rc = 0;
     errno = 0;
@@ -327,10 +327,10 @@ static int put_all(FILE *fp, const ts_plot_buf *text, cli_writer_fn fn, void *ct
     return rc;
 }
 
-int cli_write_outputs(const char *out_path, const ts_plot_buf *text, cli_writer_fn fn,
-                      void *fn_ctx, const char *svg_path, const ts_plot_buf *svg)
+int cli_write_outputs(const char *out_path, const tsu_plot_buf *text, cli_writer_fn fn,
+                      void *fn_ctx, const char *svg_path, const tsu_plot_buf *svg)
 {
-    char msg[TS_IO_MSG_SIZE];
+    char msg[TSU_IO_MSG_SIZE];
     cli_out os = {NULL, NULL}, oo = {NULL, NULL};
     const char *opath = out_path ? out_path : "-";
     int rc;
