@@ -269,19 +269,6 @@ static int border_equal(const chunk *a, const chunk *b, size_t E)
     return 1;
 }
 
-typedef struct sink_ctx {
-    tsu_writer *w;
-} sink_ctx;
-
-static int wsink(void *ctx, const double *x, const double *y, size_t k)
-{
-    sink_ctx *c = ctx;
-    int rc = 0;
-    for (size_t j = 0; j < k && !rc; j++)
-        rc = tsu_writer_xy(c->w, x[j], y[j]);
-    return rc;
-}
-
 static int emit(stream *s, const chunk *c, int last)
 {
     char msg[TSU_IO_MSG_SIZE];
@@ -300,9 +287,8 @@ static int emit(stream *s, const chunk *c, int last)
         if (rc)
             goto werr;
     }
-    sink_ctx sc = {s->w};
-    rc = cli_sample(c->s, c->e0 - c->wl, c->e1 - c->wl, last, s->o->samples, s->o->deriv, wsink,
-                    &sc);
+    rc = cli_sample(c->s, c->e0 - c->wl, c->e1 - c->wl, last, s->o->samples, s->o->deriv,
+                    cli_sink_writer, s->w);
     if (!rc)
         return CLI_OK;
 werr:
