@@ -85,7 +85,7 @@ static const uint64_t POW10U[20] = {
 /* ================================================================== */
 
 /* 10^(27a) = T·2^s truncated, a = -13..12; printed by tools/support/tsu_io_gen_pow10.py
- * (exact rational arithmetic).  Checked exactly by tests/test_io.c. */
+ * (exact rational arithmetic).  Checked exactly by tests/tools/test_io.c. */
 static const struct p10e {
     uint64_t hi, lo;
     int s, exact;

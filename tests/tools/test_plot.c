@@ -1,7 +1,7 @@
 /* Tests of the SVG plot module (src/plot.c, src/tsu_plot.h).
  *
  * Usage: test_plot [OUTDIR]   (default: <dir of this program>/plot_out)
- * Writes the SVG files that tests/test_plot_xml.py parses and checks again
+ * Writes the SVG files that tests/tools/test_plot_xml.py parses and checks again
  * (structure, pixel mapping, simplification error, legend overlap).
  *
  * Expected ticks are derived by hand in the comments from the rule stated in

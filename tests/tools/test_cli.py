@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Script test of the `trigspline` command-line tool (issue 4).
 
-Usage: python3 tests/test_cli.py BUILD_DIR     (standard library only)
+Usage: python3 tests/tools/test_cli.py BUILD_DIR     (standard library only)
 
 Drives BUILD_DIR/trigspline as a user would and checks the interface of
 docs/dev/CLI_CONTRACT.md: every option, file and stdin input, every exit
@@ -31,7 +31,7 @@ import xml.etree.ElementTree as ET
 BUILD = sys.argv[1] if len(sys.argv) > 1 else "build"
 CLI = os.path.abspath(os.path.join(BUILD, "trigspline"))
 HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.dirname(HERE)
+REPO = os.path.dirname(os.path.dirname(HERE))  # tests/tools/ -> the repository
 PAPER = os.path.join(REPO, "data", "paper")
 FIX = os.path.join(HERE, "data")
 TMP = tempfile.mkdtemp(prefix="ts_cli_test_")

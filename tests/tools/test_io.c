@@ -3,8 +3,8 @@
  *
  * References, none of them the code under test:
  *  - glibc strtod (correctly rounded) and printf("%.*e") (exact digits);
- *  - CPython's float() and repr() via tests/data/io_parse_ref.txt and
- *    io_format_ref.txt (tests/data/io_gen_reference.py; David Gay's dtoa);
+ *  - CPython's float() and repr() via tests/tools/data/io_parse_ref.txt and
+ *    io_format_ref.txt (tests/tools/data/io_gen_reference.py; David Gay's dtoa);
  *  - exact big-integer arithmetic written here for the power-of-ten table
  *    and for the exact decimal text of halfway points;
  *  - hand-written expected messages and values (from the format rules in
@@ -304,7 +304,7 @@ static void test_format_known(void)
 /* Every line of io_format_ref.txt: same digits and exponent as Python's repr. */
 static void test_format_python(void)
 {
-    FILE *f = fopen(TS_SOURCE_DIR "/tests/data/io_format_ref.txt", "r");
+    FILE *f = fopen(TS_SOURCE_DIR "/tests/tools/data/io_format_ref.txt", "r");
     char line[200], want[64], buf[TSU_FMT_SIZE], d1[40], d2[40];
     long n = 0, bad = 0, e1, e2;
     CHECKF(f != NULL, "cannot open io_format_ref.txt");
@@ -591,7 +591,7 @@ static void test_parse_halfway(void)
 
 static void test_parse_python(void)
 {
-    FILE *f = fopen(TS_SOURCE_DIR "/tests/data/io_parse_ref.txt", "r");
+    FILE *f = fopen(TS_SOURCE_DIR "/tests/tools/data/io_parse_ref.txt", "r");
     static char line[4096];
     long n = 0, bad = 0;
     CHECKF(f != NULL, "cannot open io_parse_ref.txt");
@@ -882,20 +882,20 @@ static void test_reader_valid(void)
     tsu_table_free(&t);
 
     /* a file by path, and "-" for standard input */
-    CHECK(tsu_read_table_path(TS_SOURCE_DIR "/tests/data/io_sample.tsv", NULL, &t, &e) == TSU_IO_OK);
+    CHECK(tsu_read_table_path(TS_SOURCE_DIR "/tests/tools/data/io_sample.tsv", NULL, &t, &e) == TSU_IO_OK);
     CHECK(t.nrows == 3 && t.ncols == 2 && strcmp(t.names[0], "t (s)") == 0 &&
           strcmp(t.names[1], "y") == 0 && t.cols[1][1] == -2e-3 && t.cols[0][2] == 100 &&
           t.lines[2] == 6);
     tsu_table_free(&t);
-    CHECK(tsu_read_table_path(TS_SOURCE_DIR "/tests/data/io_bad.csv", NULL, &t, &e) ==
+    CHECK(tsu_read_table_path(TS_SOURCE_DIR "/tests/tools/data/io_bad.csv", NULL, &t, &e) ==
               TSU_IO_ERR_NUMBER &&
-          strcmp(e.msg, TS_SOURCE_DIR "/tests/data/io_bad.csv:3:3: expected a number, found \"abc\"") ==
+          strcmp(e.msg, TS_SOURCE_DIR "/tests/tools/data/io_bad.csv:3:3: expected a number, found \"abc\"") ==
               0);
-    if (freopen(TS_SOURCE_DIR "/tests/data/io_sample.tsv", "r", stdin)) {
+    if (freopen(TS_SOURCE_DIR "/tests/tools/data/io_sample.tsv", "r", stdin)) {
         CHECK(tsu_read_table_path("-", NULL, &t, &e) == TSU_IO_OK && t.nrows == 3);
         tsu_table_free(&t);
     }
-    if (freopen(TS_SOURCE_DIR "/tests/data/io_bad.csv", "r", stdin)) {
+    if (freopen(TS_SOURCE_DIR "/tests/tools/data/io_bad.csv", "r", stdin)) {
         CHECK(tsu_read_table_path("-", NULL, &t, &e) == TSU_IO_ERR_NUMBER &&
               strcmp(e.msg, "<stdin>:3:3: expected a number, found \"abc\"") == 0);
     }
