@@ -295,7 +295,7 @@ static void test_format_known(void)
         CHECKF(strcmp(buf, T[i].s) == 0 && n == strlen(T[i].s), "format %.17g: got %s, want %s",
                T[i].v, buf, T[i].s);
     }
-    CHECK(tsu_format_double(NAN, buf) == 3 && strcmp(buf, "nan") == 0);
+    CHECK(tsu_format_double((double)NAN, buf) == 3 && strcmp(buf, "nan") == 0);
     CHECK(tsu_format_double(-(double)NAN, buf) == 3 && strcmp(buf, "nan") == 0);
     CHECK(tsu_format_double(HUGE_VAL, buf) == 3 && strcmp(buf, "inf") == 0);
     CHECK(tsu_format_double(-HUGE_VAL, buf) == 4 && strcmp(buf, "-inf") == 0);
@@ -663,10 +663,10 @@ static void test_parse_cases(void)
         {"1e400", TSU_NUM_RANGE, 5, HUGE_VAL},
         {"1.8e308", TSU_NUM_RANGE, 7, HUGE_VAL},
         {"1e-400", TSU_NUM_OK, 6, 0.0},
-        {"nan", TSU_NUM_NONFINITE, 3, NAN},
-        {"-NaN", TSU_NUM_NONFINITE, 4, NAN},
-        {"nan(123)", TSU_NUM_NONFINITE, 3, NAN},
-        {"nano", TSU_NUM_NONFINITE, 3, NAN},
+        {"nan", TSU_NUM_NONFINITE, 3, (double)NAN},
+        {"-NaN", TSU_NUM_NONFINITE, 4, (double)NAN},
+        {"nan(123)", TSU_NUM_NONFINITE, 3, (double)NAN},
+        {"nano", TSU_NUM_NONFINITE, 3, (double)NAN},
         {"inf", TSU_NUM_NONFINITE, 3, HUGE_VAL},
         {"-Inf", TSU_NUM_NONFINITE, 4, -HUGE_VAL},
         {"INFINITY", TSU_NUM_NONFINITE, 8, HUGE_VAL},

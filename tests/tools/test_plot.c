@@ -209,8 +209,8 @@ static void test_ticks_hand(void)
 
     /* errors */
     CHECK(tsu_plot_ticks_compute(0, 1, TSU_PLOT_RANGE_AUTO, NULL) == TSU_PLOT_ERR_NULL);
-    CHECK(tsu_plot_ticks_compute(NAN, 1, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_ERR_ARG);
-    CHECK(tsu_plot_ticks_compute(0, INFINITY, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_ticks_compute((double)NAN, 1, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_ticks_compute(0, (double)INFINITY, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_ERR_ARG);
     CHECK(tsu_plot_ticks_compute(0, 2e300, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_ERR_ARG);
     CHECK(tsu_plot_ticks_compute(2, 1, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_ERR_ARG);
     CHECK(tsu_plot_ticks_compute(1, 1, TSU_PLOT_RANGE_FIXED, &t) == TSU_PLOT_ERR_ARG);
@@ -341,11 +341,11 @@ static void test_errors(void)
     CHECK(tsu_plot_set_xrange(NULL, 0, 1) == TSU_PLOT_ERR_NULL);
     CHECK(tsu_plot_set_xrange(p, 1, 1) == TSU_PLOT_ERR_ARG);
     CHECK(tsu_plot_set_xrange(p, 2, 1) == TSU_PLOT_ERR_ARG);
-    CHECK(tsu_plot_set_xrange(p, NAN, 1) == TSU_PLOT_ERR_ARG);
-    CHECK(tsu_plot_set_yrange(p, 0, INFINITY) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_set_xrange(p, (double)NAN, 1) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_set_yrange(p, 0, (double)INFINITY) == TSU_PLOT_ERR_ARG);
     CHECK(tsu_plot_set_yrange(p, 1, 1 + 1e-13) == TSU_PLOT_ERR_ARG);
     CHECK(tsu_plot_set_yrange(p, 0, 1) == TSU_PLOT_OK);
-    CHECK(tsu_plot_set_yrange(p, NAN, NAN) == TSU_PLOT_OK);
+    CHECK(tsu_plot_set_yrange(p, (double)NAN, (double)NAN) == TSU_PLOT_OK);
     CHECK(tsu_plot_set_equal_aspect(NULL, 1) == TSU_PLOT_ERR_NULL);
     CHECK(tsu_plot_set_legend(p, (tsu_plot_legend)99) == TSU_PLOT_ERR_ARG);
     CHECK(tsu_plot_set_legend(p, (tsu_plot_legend)-1) == TSU_PLOT_ERR_ARG);
@@ -353,7 +353,7 @@ static void test_errors(void)
     CHECK(tsu_plot_set_xml_declaration(NULL, 0) == TSU_PLOT_ERR_NULL);
     CHECK(tsu_plot_set_grid(NULL, 0) == TSU_PLOT_ERR_NULL);
     CHECK(tsu_plot_set_simplify(p, -1) == TSU_PLOT_ERR_ARG);
-    CHECK(tsu_plot_set_simplify(p, NAN) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_set_simplify(p, (double)NAN) == TSU_PLOT_ERR_ARG);
     CHECK(tsu_plot_set_simplify(p, 11) == TSU_PLOT_ERR_ARG);
     CHECK(tsu_plot_set_simplify(NULL, 1) == TSU_PLOT_ERR_NULL);
 
@@ -375,7 +375,7 @@ static void test_errors(void)
     st.color = "DarkRed";
     CHECK(tsu_plot_add_points(p, x, y, 2, NULL, &st) == TSU_PLOT_OK);
     st.color = NULL;
-    st.width = NAN;
+    st.width = (double)NAN;
     CHECK(tsu_plot_add_polyline(p, x, y, 2, NULL, &st) == TSU_PLOT_ERR_ARG);
     st.width = 51;
     CHECK(tsu_plot_add_polyline(p, x, y, 2, NULL, &st) == TSU_PLOT_ERR_ARG);
@@ -388,13 +388,13 @@ static void test_errors(void)
     st.dash = 0;
     st.fill_opacity = 1.5;
     CHECK(tsu_plot_add_floor(p, 0, NULL, &st) == TSU_PLOT_ERR_ARG);
-    CHECK(tsu_plot_add_line(p, NAN, 0, NULL, NULL) == TSU_PLOT_ERR_ARG);
-    CHECK(tsu_plot_add_line(p, 0, INFINITY, NULL, NULL) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_add_line(p, (double)NAN, 0, NULL, NULL) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_add_line(p, 0, (double)INFINITY, NULL, NULL) == TSU_PLOT_ERR_ARG);
     CHECK(tsu_plot_add_line(NULL, 0, 0, NULL, NULL) == TSU_PLOT_ERR_NULL);
     CHECK(tsu_plot_add_region(p, (tsu_plot_side)7, 0, 0, NULL, NULL) == TSU_PLOT_ERR_ARG);
-    CHECK(tsu_plot_add_region(p, TSU_PLOT_FORBID_ABOVE, NAN, 0, NULL, NULL) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_add_region(p, TSU_PLOT_FORBID_ABOVE, (double)NAN, 0, NULL, NULL) == TSU_PLOT_ERR_ARG);
     CHECK(tsu_plot_add_region(NULL, TSU_PLOT_FORBID_ABOVE, 0, 0, NULL, NULL) == TSU_PLOT_ERR_NULL);
-    CHECK(tsu_plot_add_ceiling(p, NAN, NULL, NULL) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_add_ceiling(p, (double)NAN, NULL, NULL) == TSU_PLOT_ERR_ARG);
 
     /* the two valid point series (#abc, DarkRed) and the empty polyline */
     svg = render(p);
@@ -652,7 +652,7 @@ static void fig_degenerate(void)
 static void fig_nan(void)
 {
     double x[12] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
-    double y[12] = {1, 2, NAN, 3, 4, 2, INFINITY, 1, 2, -INFINITY, 5, 1e305};
+    double y[12] = {1, 2, (double)NAN, 3, 4, 2, (double)INFINITY, 1, 2, -(double)INFINITY, 5, 1e305};
     /* runs: {0,1}, {3,4,5}, {7,8}, {10} alone (no segment), 1e305 skipped */
     tsu_plot *p = NULL;
     CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK);
@@ -934,9 +934,9 @@ static double fvalue(double scale)
 {
     double r = frand();
     if (r < 0.02)
-        return NAN;
+        return (double)NAN;
     if (r < 0.03)
-        return r < 0.025 ? INFINITY : -INFINITY;
+        return r < 0.025 ? (double)INFINITY : -(double)INFINITY;
     if (r < 0.035)
         return 1e301;
     return scale * (2 * frand() - 1);

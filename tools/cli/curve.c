@@ -1,4 +1,4 @@
-/* trigspline curve: parametric curves (SPEC §7). */
+/* trigspline curve: parametric curves (docs/method.md §7). */
 #include "cli.h"
 
 #include <math.h>
@@ -147,7 +147,7 @@ int cli_curve(cli_opts *o)
     cli_xy cx = {0}, ctl = {0}, bx = {0};
     tsu_plot *p = NULL;
     int certified = 0, has_box = 0;
-    double min_gap = INFINITY;
+    double min_gap = (double)INFINITY;
 
     st = ts_curve_sample(c, m, NULL, 0, &rows);
     if (st != TS_ERR_LENGTH && st != TS_OK) {
@@ -182,8 +182,8 @@ int cli_curve(cli_opts *o)
     }
 
     if (o->json) {
-        double len = NAN, mn[3] = {INFINITY, INFINITY, INFINITY}, mx[3] = {-INFINITY, -INFINITY,
-                                                                            -INFINITY};
+        double len = (double)NAN, mn[3] = {(double)INFINITY, (double)INFINITY, (double)INFINITY}, mx[3] = {-(double)INFINITY, -(double)INFINITY,
+                                                                            -(double)INFINITY};
         const char *axn[3] = {"x", "y", "z"};
         char key[16];
         (void)ts_curve_length(c, 0.0, &len);
@@ -264,7 +264,7 @@ int cli_curve(cli_opts *o)
             cli_json_end(&j, ']');
             cli_json_key(&j, "min_gap");
             if (has_box) {
-                double g = INFINITY;
+                double g = (double)INFINITY;
                 int ok = 1;
                 for (size_t k = 0; k < dim; k++) {
                     const ts_interval_report *r = &reps[i * dim + k];
@@ -334,7 +334,7 @@ int cli_curve(cli_opts *o)
             ps = tsu_plot_set_equal_aspect(p, 1);
         /* box: shaded floor / ceiling in y, dashed lines at the x bounds */
         if (ps == TSU_PLOT_OK && has_box) {
-            double ylo = INFINITY, yhi = -INFINITY;
+            double ylo = (double)INFINITY, yhi = -(double)INFINITY;
             for (size_t r = 0; r < rows; r++) {
                 double v = smp[r * (1 + dim) + 2];
                 ylo = v < ylo ? v : ylo;

@@ -153,7 +153,7 @@ static int fill(stream *s, size_t want)
                 return CLI_DATA;
             }
             if (s->opt->shape == TS_SHAPE_MONOTONE) {
-                /* SPEC §5.5 needs one direction over the whole data, not per chunk */
+                /* docs/method.md §5.5 needs one direction over the whole data, not per chunk */
                 int sg = (f > pf) - (f < pf);
                 if (sg && !s->dir)
                     s->dir = sg;
