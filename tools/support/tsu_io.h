@@ -47,7 +47,8 @@
  * Thread safety: the number functions are reentrant.  A reader, table,
  * output or writer object must not be used by two threads at once.
  *
- * Speed (tests/tools/test_io.c prints it; one x86-64 core, gcc -O2, shared and
+ * Speed (against libc: docs/design.md, tools/support/bench; tests/tools/test_io.c
+ * prints its own figures too; one x86-64 core, gcc -O2, shared and
  * loaded machine, so indicative only): tsu_format_double ~16 M/s on random
  * bit patterns (snprintf "%.17g" ~2.8 M/s), tsu_parse_double ~18 M/s on
  * 17-digit numbers and ~40 M/s on short ones (strtod ~8 M/s), writer
