@@ -1,20 +1,20 @@
-/* Tests of src/io.c (ts_io.h): number conversion, table reader, safe output,
+/* Tests of src/io.c (tsu_io.h): number conversion, table reader, safe output,
  * row writer.
  *
  * References, none of them the code under test:
  *  - glibc strtod (correctly rounded) and printf("%.*e") (exact digits);
- *  - CPython's float() and repr() via tests/data/io_parse_ref.txt and
- *    io_format_ref.txt (tests/data/io_gen_reference.py; David Gay's dtoa);
+ *  - CPython's float() and repr() via tests/tools/data/io_parse_ref.txt and
+ *    io_format_ref.txt (tests/tools/data/io_gen_reference.py; David Gay's dtoa);
  *  - exact big-integer arithmetic written here for the power-of-ten table
  *    and for the exact decimal text of halfway points;
  *  - hand-written expected messages and values (from the format rules in
- *    ts_io.h and IEEE 754 facts such as 2^53 + 1 rounding to 2^53).
+ *    tsu_io.h and IEEE 754 facts such as 2^53 + 1 rounding to 2^53).
  * Number conversions are exact, so every comparison is bit for bit (no
  * tolerance anywhere).  Speeds are printed for information only. */
 #define _POSIX_C_SOURCE 200809L
 
 #include "th.h"
-#include "ts_io.h"
+#include "tsu_io.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -171,7 +171,7 @@ static void test_pow10_table(void)
         unsigned long long hi, lo;
         int s, ex, k = 27 * a;
         tbig L, R, T1, X;
-        CHECK(ts_io__pow10_entry(a, &hi, &lo, &s, &ex) == 0);
+        CHECK(tsu_io__pow10_entry(a, &hi, &lo, &s, &ex) == 0);
         CHECK(hi >> 63 == 1); /* normalised: 2^127 <= T */
         /* compare T·2^s with 10^k, both sides made integers */
         tb_set(&L, hi, lo);
@@ -194,8 +194,8 @@ static void test_pow10_table(void)
         CHECKF(tb_cmp(&L, &R) <= 0 && tb_cmp(&R, &T1) < 0, "pow10 entry %d", a);
         CHECKF((tb_cmp(&L, &R) == 0) == (ex == 1), "pow10 entry %d exact flag", a);
     }
-    CHECK(ts_io__pow10_entry(13, NULL, NULL, NULL, NULL) == -1);
-    CHECK(ts_io__pow10_entry(-14, NULL, NULL, NULL, NULL) == -1);
+    CHECK(tsu_io__pow10_entry(13, NULL, NULL, NULL, NULL) == -1);
+    CHECK(tsu_io__pow10_entry(-14, NULL, NULL, NULL, NULL) == -1);
 }
 
 /* ------------------------------------------------------------------ */
@@ -236,12 +236,12 @@ static void exact_decimal(uint64_t M, int Q, char *out, int *e10)
 }
 
 /* ------------------------------------------------------------------ */
-/* ts_format_double                                                     */
+/* tsu_format_double                                                     */
 /* ------------------------------------------------------------------ */
 
 static void test_format_known(void)
 {
-    /* expected: the layout rules of ts_io.h with the shortest digits
+    /* expected: the layout rules of tsu_io.h with the shortest digits
      * (which are those of Python's repr for these values) */
     static const struct {
         double v;
@@ -289,23 +289,23 @@ static void test_format_known(void)
         {100000.0, "100000"},
         {1e15, "1000000000000000"},
     };
-    char buf[TS_FMT_SIZE];
+    char buf[TSU_FMT_SIZE];
     for (size_t i = 0; i < sizeof T / sizeof *T; i++) {
-        size_t n = ts_format_double(T[i].v, buf);
+        size_t n = tsu_format_double(T[i].v, buf);
         CHECKF(strcmp(buf, T[i].s) == 0 && n == strlen(T[i].s), "format %.17g: got %s, want %s",
                T[i].v, buf, T[i].s);
     }
-    CHECK(ts_format_double(NAN, buf) == 3 && strcmp(buf, "nan") == 0);
-    CHECK(ts_format_double(-(double)NAN, buf) == 3 && strcmp(buf, "nan") == 0);
-    CHECK(ts_format_double(HUGE_VAL, buf) == 3 && strcmp(buf, "inf") == 0);
-    CHECK(ts_format_double(-HUGE_VAL, buf) == 4 && strcmp(buf, "-inf") == 0);
+    CHECK(tsu_format_double((double)NAN, buf) == 3 && strcmp(buf, "nan") == 0);
+    CHECK(tsu_format_double(-(double)NAN, buf) == 3 && strcmp(buf, "nan") == 0);
+    CHECK(tsu_format_double(HUGE_VAL, buf) == 3 && strcmp(buf, "inf") == 0);
+    CHECK(tsu_format_double(-HUGE_VAL, buf) == 4 && strcmp(buf, "-inf") == 0);
 }
 
 /* Every line of io_format_ref.txt: same digits and exponent as Python's repr. */
 static void test_format_python(void)
 {
-    FILE *f = fopen(TS_SOURCE_DIR "/tests/data/io_format_ref.txt", "r");
-    char line[200], want[64], buf[TS_FMT_SIZE], d1[40], d2[40];
+    FILE *f = fopen(TS_SOURCE_DIR "/tests/tools/data/io_format_ref.txt", "r");
+    char line[200], want[64], buf[TSU_FMT_SIZE], d1[40], d2[40];
     long n = 0, bad = 0, e1, e2;
     CHECKF(f != NULL, "cannot open io_format_ref.txt");
     if (!f)
@@ -315,7 +315,7 @@ static void test_format_python(void)
         if (sscanf(line, "%llx %63s", &u, want) != 2)
             continue;
         n++;
-        ts_format_double(of_bits((uint64_t)u), buf);
+        tsu_format_double(of_bits((uint64_t)u), buf);
         canon(buf, d1, &e1);
         canon(want, d2, &e2);
         if (strcmp(d1, d2) != 0 || e1 != e2) {
@@ -363,27 +363,27 @@ static double random_double(int kind)
     }
 }
 
-/* Round trip through glibc strtod and through ts_parse_double, ~2e6 values. */
+/* Round trip through glibc strtod and through tsu_parse_double, ~2e6 values. */
 static void test_format_roundtrip(void)
 {
     long n = SCALE(2000000), bad_c = 0, bad_p = 0, bad_len = 0;
-    char buf[TS_FMT_SIZE];
+    char buf[TSU_FMT_SIZE];
     double t0, tf = 0.0, tp = 0.0;
     static double vals[4096];
-    static char strs[4096][TS_FMT_SIZE];
+    static char strs[4096][TSU_FMT_SIZE];
     for (long i = 0; i < n; i += 4096) {
         int m = 4096;
         for (int j = 0; j < m; j++)
             vals[j] = random_double((int)(((unsigned long)i / 4096 + (unsigned)j) % 7));
         t0 = now();
         for (int j = 0; j < m; j++)
-            ts_format_double(vals[j], strs[j]);
+            tsu_format_double(vals[j], strs[j]);
         tf += now() - t0;
         t0 = now();
         for (int j = 0; j < m; j++) {
             double g;
             const char *stop;
-            if (ts_parse_double(strs[j], NULL, &g, &stop) != TS_NUM_OK || *stop ||
+            if (tsu_parse_double(strs[j], NULL, &g, &stop) != TSU_NUM_OK || *stop ||
                 bits_of(g) != bits_of(vals[j])) {
                 if (bad_p++ < 5)
                     fprintf(stderr, "parse back %s -> %a, want %a\n", strs[j], g, vals[j]);
@@ -399,9 +399,9 @@ static void test_format_roundtrip(void)
         }
     }
     CHECKF(bad_c == 0, "%ld of %ld formatted values do not round-trip through strtod", bad_c, n);
-    CHECKF(bad_p == 0, "%ld of %ld do not round-trip through ts_parse_double", bad_p, n);
+    CHECKF(bad_p == 0, "%ld of %ld do not round-trip through tsu_parse_double", bad_p, n);
     CHECK(bad_len == 0);
-    printf("speed: ts_format_double %.1f M/s, ts_parse_double (its output) %.1f M/s\n",
+    printf("speed: tsu_format_double %.1f M/s, tsu_parse_double (its output) %.1f M/s\n",
            (double)n / tf * 1e-6, (double)n / tp * 1e-6);
     /* the same values with the library */
     t0 = now();
@@ -422,14 +422,14 @@ static void test_format_roundtrip(void)
 static void test_format_shortest(void)
 {
     long n = SCALE(100000), bad_short = 0, bad_min = 0, bad_same = 0;
-    char buf[TS_FMT_SIZE], ref[40], d1[40], d2[40];
+    char buf[TSU_FMT_SIZE], ref[40], d1[40], d2[40];
     for (long i = 0; i < n; i++) {
         double v = fabs(random_double((int)(i % 7)));
         long e1, e2;
         int nref = 17, nd;
         if (v == 0)
             continue;
-        ts_format_double(v, buf);
+        tsu_format_double(v, buf);
         canon(buf, d1, &e1);
         nd = (int)strlen(d1);
         for (int p = 1; p <= 17; p++) {
@@ -481,18 +481,18 @@ static void test_format_shortest(void)
 }
 
 /* ------------------------------------------------------------------ */
-/* ts_parse_double                                                      */
+/* tsu_parse_double                                                      */
 /* ------------------------------------------------------------------ */
 
-/* Compare ts_parse_double with strtod on s (whole string must be consumed). */
+/* Compare tsu_parse_double with strtod on s (whole string must be consumed). */
 static int parse_agrees(const char *s)
 {
     double g, c = strtod(s, NULL);
     const char *stop;
-    ts_num_status st = ts_parse_double(s, NULL, &g, &stop);
+    tsu_num_status st = tsu_parse_double(s, NULL, &g, &stop);
     if (isinf(c))
-        return st == TS_NUM_RANGE && *stop == 0 && g == c;
-    return st == TS_NUM_OK && *stop == 0 && bits_of(g) == bits_of(c);
+        return st == TSU_NUM_RANGE && *stop == 0 && g == c;
+    return st == TSU_NUM_OK && *stop == 0 && bits_of(g) == bits_of(c);
 }
 
 static void random_decimal(char *s)
@@ -537,7 +537,7 @@ static void test_parse_random(void)
         random_decimal(s);
         if (!parse_agrees(s) && bad++ < 5) {
             double g;
-            ts_parse_double(s, NULL, &g, NULL);
+            tsu_parse_double(s, NULL, &g, NULL);
             fprintf(stderr, "parse %s: %a, strtod %a\n", s, g, strtod(s, NULL));
         }
     }
@@ -591,7 +591,7 @@ static void test_parse_halfway(void)
 
 static void test_parse_python(void)
 {
-    FILE *f = fopen(TS_SOURCE_DIR "/tests/data/io_parse_ref.txt", "r");
+    FILE *f = fopen(TS_SOURCE_DIR "/tests/tools/data/io_parse_ref.txt", "r");
     static char line[4096];
     long n = 0, bad = 0;
     CHECKF(f != NULL, "cannot open io_parse_ref.txt");
@@ -601,7 +601,7 @@ static void test_parse_python(void)
         char *sp = strchr(line, ' ');
         double g;
         const char *stop;
-        ts_num_status st;
+        tsu_num_status st;
         int ok;
         if (!sp)
             continue;
@@ -609,13 +609,13 @@ static void test_parse_python(void)
         sp++;
         sp[strcspn(sp, "\n")] = 0;
         n++;
-        st = ts_parse_double(line, NULL, &g, &stop);
+        st = tsu_parse_double(line, NULL, &g, &stop);
         if (strcmp(sp, "inf") == 0)
-            ok = st == TS_NUM_RANGE && g == HUGE_VAL;
+            ok = st == TSU_NUM_RANGE && g == HUGE_VAL;
         else if (strcmp(sp, "-inf") == 0)
-            ok = st == TS_NUM_RANGE && g == -HUGE_VAL;
+            ok = st == TSU_NUM_RANGE && g == -HUGE_VAL;
         else
-            ok = st == TS_NUM_OK && *stop == 0 && bits_of(g) == strtoull(sp, NULL, 16);
+            ok = st == TSU_NUM_OK && *stop == 0 && bits_of(g) == strtoull(sp, NULL, 16);
         if (!ok && bad++ < 5)
             fprintf(stderr, "python ref %.60s: got %a (status %d), want %s\n", line, g, st, sp);
     }
@@ -628,58 +628,58 @@ static void test_parse_cases(void)
 {
     static const struct {
         const char *s;
-        ts_num_status st;
+        tsu_num_status st;
         int stop;
         double v;
     } T[] = {
-        {"abc", TS_NUM_SYNTAX, 0, 0},
-        {"", TS_NUM_SYNTAX, 0, 0},
-        {"-", TS_NUM_SYNTAX, 1, 0},
-        {"+", TS_NUM_SYNTAX, 1, 0},
-        {".", TS_NUM_SYNTAX, 1, 0},
-        {"-.e5", TS_NUM_SYNTAX, 2, 0},
-        {"-x", TS_NUM_SYNTAX, 1, 0},
-        {" 1", TS_NUM_SYNTAX, 0, 0},
-        {"e5", TS_NUM_SYNTAX, 0, 0},
-        {"n", TS_NUM_SYNTAX, 0, 0},
-        {"in", TS_NUM_SYNTAX, 0, 0},
-        {"1e", TS_NUM_OK, 1, 1.0},
-        {"1e+", TS_NUM_OK, 1, 1.0},
-        {"1.5e-3x", TS_NUM_OK, 6, 1.5e-3},
-        {"0x1p3", TS_NUM_OK, 1, 0.0},
-        {"1_000", TS_NUM_OK, 1, 1.0},
-        {"1,5", TS_NUM_OK, 1, 1.0},
-        {".5", TS_NUM_OK, 2, 0.5},
-        {"5.", TS_NUM_OK, 2, 5.0},
-        {"+.5e1", TS_NUM_OK, 5, 5.0},
-        {"00012", TS_NUM_OK, 5, 12.0},
-        {"0.000", TS_NUM_OK, 5, 0.0},
-        {"1E+05", TS_NUM_OK, 5, 1e5},
-        {"1e0000000000000000000000000005", TS_NUM_OK, 30, 1e5},
-        {"1e99999999999999999999", TS_NUM_RANGE, 22, HUGE_VAL},
-        {"-1e99999999999999999999", TS_NUM_RANGE, 23, -HUGE_VAL},
-        {"1e-99999999999999", TS_NUM_OK, 17, 0.0},
-        {"0e999999", TS_NUM_OK, 8, 0.0},
-        {"1e400", TS_NUM_RANGE, 5, HUGE_VAL},
-        {"1.8e308", TS_NUM_RANGE, 7, HUGE_VAL},
-        {"1e-400", TS_NUM_OK, 6, 0.0},
-        {"nan", TS_NUM_NONFINITE, 3, NAN},
-        {"-NaN", TS_NUM_NONFINITE, 4, NAN},
-        {"nan(123)", TS_NUM_NONFINITE, 3, NAN},
-        {"nano", TS_NUM_NONFINITE, 3, NAN},
-        {"inf", TS_NUM_NONFINITE, 3, HUGE_VAL},
-        {"-Inf", TS_NUM_NONFINITE, 4, -HUGE_VAL},
-        {"INFINITY", TS_NUM_NONFINITE, 8, HUGE_VAL},
-        {"infinit", TS_NUM_NONFINITE, 3, HUGE_VAL},
-        {"9007199254740993", TS_NUM_OK, 16, 9007199254740992.0},
-        {"9007199254740995", TS_NUM_OK, 16, 9007199254740996.0},
-        {"0.1", TS_NUM_OK, 3, 0.1},
-        {"123456789012345678901234567890", TS_NUM_OK, 30, 1.2345678901234568e29},
+        {"abc", TSU_NUM_SYNTAX, 0, 0},
+        {"", TSU_NUM_SYNTAX, 0, 0},
+        {"-", TSU_NUM_SYNTAX, 1, 0},
+        {"+", TSU_NUM_SYNTAX, 1, 0},
+        {".", TSU_NUM_SYNTAX, 1, 0},
+        {"-.e5", TSU_NUM_SYNTAX, 2, 0},
+        {"-x", TSU_NUM_SYNTAX, 1, 0},
+        {" 1", TSU_NUM_SYNTAX, 0, 0},
+        {"e5", TSU_NUM_SYNTAX, 0, 0},
+        {"n", TSU_NUM_SYNTAX, 0, 0},
+        {"in", TSU_NUM_SYNTAX, 0, 0},
+        {"1e", TSU_NUM_OK, 1, 1.0},
+        {"1e+", TSU_NUM_OK, 1, 1.0},
+        {"1.5e-3x", TSU_NUM_OK, 6, 1.5e-3},
+        {"0x1p3", TSU_NUM_OK, 1, 0.0},
+        {"1_000", TSU_NUM_OK, 1, 1.0},
+        {"1,5", TSU_NUM_OK, 1, 1.0},
+        {".5", TSU_NUM_OK, 2, 0.5},
+        {"5.", TSU_NUM_OK, 2, 5.0},
+        {"+.5e1", TSU_NUM_OK, 5, 5.0},
+        {"00012", TSU_NUM_OK, 5, 12.0},
+        {"0.000", TSU_NUM_OK, 5, 0.0},
+        {"1E+05", TSU_NUM_OK, 5, 1e5},
+        {"1e0000000000000000000000000005", TSU_NUM_OK, 30, 1e5},
+        {"1e99999999999999999999", TSU_NUM_RANGE, 22, HUGE_VAL},
+        {"-1e99999999999999999999", TSU_NUM_RANGE, 23, -HUGE_VAL},
+        {"1e-99999999999999", TSU_NUM_OK, 17, 0.0},
+        {"0e999999", TSU_NUM_OK, 8, 0.0},
+        {"1e400", TSU_NUM_RANGE, 5, HUGE_VAL},
+        {"1.8e308", TSU_NUM_RANGE, 7, HUGE_VAL},
+        {"1e-400", TSU_NUM_OK, 6, 0.0},
+        {"nan", TSU_NUM_NONFINITE, 3, (double)NAN},
+        {"-NaN", TSU_NUM_NONFINITE, 4, (double)NAN},
+        {"nan(123)", TSU_NUM_NONFINITE, 3, (double)NAN},
+        {"nano", TSU_NUM_NONFINITE, 3, (double)NAN},
+        {"inf", TSU_NUM_NONFINITE, 3, HUGE_VAL},
+        {"-Inf", TSU_NUM_NONFINITE, 4, -HUGE_VAL},
+        {"INFINITY", TSU_NUM_NONFINITE, 8, HUGE_VAL},
+        {"infinit", TSU_NUM_NONFINITE, 3, HUGE_VAL},
+        {"9007199254740993", TSU_NUM_OK, 16, 9007199254740992.0},
+        {"9007199254740995", TSU_NUM_OK, 16, 9007199254740996.0},
+        {"0.1", TSU_NUM_OK, 3, 0.1},
+        {"123456789012345678901234567890", TSU_NUM_OK, 30, 1.2345678901234568e29},
     };
     for (size_t i = 0; i < sizeof T / sizeof *T; i++) {
         double g = -7;
         const char *stop = NULL;
-        ts_num_status st = ts_parse_double(T[i].s, NULL, &g, &stop);
+        tsu_num_status st = tsu_parse_double(T[i].s, NULL, &g, &stop);
         int vok = isnan(T[i].v) ? isnan(g) : bits_of(g) == bits_of(T[i].v);
         CHECKF(st == T[i].st && stop == T[i].s + T[i].stop && vok,
                "parse \"%s\": status %d stop %d value %a (want %d %d %a)", T[i].s, st,
@@ -689,13 +689,13 @@ static void test_parse_cases(void)
         double g = 1;
         const char *stop = NULL;
         const char *s = "12345";
-        CHECK(ts_parse_double(s, s + 3, &g, &stop) == TS_NUM_OK && g == 123.0 && stop == s + 3);
-        CHECK(ts_parse_double(s, s, &g, &stop) == TS_NUM_SYNTAX && stop == s && g == 0.0);
-        CHECK(ts_parse_double("-0", NULL, &g, NULL) == TS_NUM_OK && g == 0.0 && signbit(g));
-        CHECK(ts_parse_double("-0.0e-999", NULL, &g, NULL) == TS_NUM_OK && g == 0.0 && signbit(g));
-        CHECK(ts_parse_double("-1e-400", NULL, &g, NULL) == TS_NUM_OK && g == 0.0 && signbit(g));
-        CHECK(ts_parse_double(NULL, NULL, &g, &stop) == TS_NUM_SYNTAX && stop == NULL);
-        CHECK(ts_parse_double("2.5", NULL, NULL, NULL) == TS_NUM_OK);
+        CHECK(tsu_parse_double(s, s + 3, &g, &stop) == TSU_NUM_OK && g == 123.0 && stop == s + 3);
+        CHECK(tsu_parse_double(s, s, &g, &stop) == TSU_NUM_SYNTAX && stop == s && g == 0.0);
+        CHECK(tsu_parse_double("-0", NULL, &g, NULL) == TSU_NUM_OK && g == 0.0 && signbit(g));
+        CHECK(tsu_parse_double("-0.0e-999", NULL, &g, NULL) == TSU_NUM_OK && g == 0.0 && signbit(g));
+        CHECK(tsu_parse_double("-1e-400", NULL, &g, NULL) == TSU_NUM_OK && g == 0.0 && signbit(g));
+        CHECK(tsu_parse_double(NULL, NULL, &g, &stop) == TSU_NUM_SYNTAX && stop == NULL);
+        CHECK(tsu_parse_double("2.5", NULL, NULL, NULL) == TSU_NUM_OK);
         /* 1 + 2^-53 exactly (halfway: ties to 1), then with 900 zeros and a 1
          * (just above: 1 + 2^-52); > 19 digits whose truncations disagree go to
          * strtod through a copy of at most 800 digits plus one sticky digit */
@@ -703,18 +703,18 @@ static void test_parse_cases(void)
             static char h[1100];
             const char *half = "1.00000000000000011102230246251565404236316680908203125";
             strcpy(h, half);
-            CHECK(ts_parse_double(h, NULL, &g, NULL) == TS_NUM_OK && g == 1.0 && parse_agrees(h));
+            CHECK(tsu_parse_double(h, NULL, &g, NULL) == TSU_NUM_OK && g == 1.0 && parse_agrees(h));
             memset(h + strlen(half), '0', 900);
             h[strlen(half) + 900] = 0;
-            CHECK(ts_parse_double(h, NULL, &g, NULL) == TS_NUM_OK && g == 1.0 && parse_agrees(h));
+            CHECK(tsu_parse_double(h, NULL, &g, NULL) == TSU_NUM_OK && g == 1.0 && parse_agrees(h));
             strcat(h, "1");
-            CHECK(ts_parse_double(h, NULL, &g, NULL) == TS_NUM_OK && g == 1.0 + 0x1p-52 &&
+            CHECK(tsu_parse_double(h, NULL, &g, NULL) == TSU_NUM_OK && g == 1.0 + 0x1p-52 &&
                   parse_agrees(h));
             strcat(h, "e-5"); /* with an exponent too */
             CHECK(parse_agrees(h));
             memmove(h + 1, h, strlen(h) + 1);
             h[0] = '-';
-            CHECK(ts_parse_double(h, NULL, &g, NULL) == TS_NUM_OK && g < 0 && parse_agrees(h));
+            CHECK(tsu_parse_double(h, NULL, &g, NULL) == TSU_NUM_OK && g < 0 && parse_agrees(h));
         }
         /* a digit string longer than the strtod fallback's 800-digit copy */
         {
@@ -747,26 +747,26 @@ static FILE *mem_file(const char *text, size_t len)
 }
 
 /* Read text as a table; returns the status, message in e. */
-static ts_io_status read_text(const char *text, size_t len, const ts_read_options *opt,
-                              ts_table *t, ts_io_error *e)
+static tsu_io_status read_text(const char *text, size_t len, const tsu_read_options *opt,
+                              tsu_table *t, tsu_io_error *e)
 {
     FILE *f = mem_file(text, len);
-    ts_io_status st;
+    tsu_io_status st;
     if (!f)
-        return TS_IO_ERR_READ;
-    st = ts_read_table(f, "t.csv", opt, t, e);
+        return TSU_IO_ERR_READ;
+    st = tsu_read_table(f, "t.csv", opt, t, e);
     fclose(f);
     return st;
 }
 
 #define RT(text, opt, t, e) read_text(text, sizeof(text) - 1, opt, t, e)
 
-static void expect_error(const char *text, size_t len, const ts_read_options *opt,
-                         ts_io_status want, const char *msg, unsigned long long line, size_t col)
+static void expect_error(const char *text, size_t len, const tsu_read_options *opt,
+                         tsu_io_status want, const char *msg, unsigned long long line, size_t col)
 {
-    ts_table t;
-    ts_io_error e;
-    ts_io_status st = read_text(text, len, opt, &t, &e);
+    tsu_table t;
+    tsu_io_error e;
+    tsu_io_status st = read_text(text, len, opt, &t, &e);
     CHECKF(st == want && e.status == want && strcmp(e.msg, msg) == 0 && e.line == line &&
                e.column == col && t.cols == NULL && t.nrows == 0,
            "input \"%.40s\": status %d, msg '%s' line %llu col %zu; want %d '%s' %llu %zu", text,
@@ -774,17 +774,17 @@ static void expect_error(const char *text, size_t len, const ts_read_options *op
     /* the streaming reader gives the same error */
     {
         FILE *f = mem_file(text, len);
-        ts_reader *r;
+        tsu_reader *r;
         const double *row;
-        ts_io_error e2;
-        ts_io_status s2 = TS_IO_OK;
-        if (f && ts_reader_open(&r, f, "t.csv", opt, &e2) == TS_IO_OK) {
-            while ((s2 = ts_reader_next(r, &row, &e2)) == TS_IO_OK)
+        tsu_io_error e2;
+        tsu_io_status s2 = TSU_IO_OK;
+        if (f && tsu_reader_open(&r, f, "t.csv", opt, &e2) == TSU_IO_OK) {
+            while ((s2 = tsu_reader_next(r, &row, &e2)) == TSU_IO_OK)
                 ;
             CHECKF(s2 == want && strcmp(e2.msg, msg) == 0, "streaming: %s", e2.msg);
             /* sticky */
-            CHECK(ts_reader_next(r, &row, &e2) == want && strcmp(e2.msg, msg) == 0 && row == NULL);
-            ts_reader_free(r);
+            CHECK(tsu_reader_next(r, &row, &e2) == want && strcmp(e2.msg, msg) == 0 && row == NULL);
+            tsu_reader_free(r);
         }
         if (f)
             fclose(f);
@@ -795,13 +795,13 @@ static void expect_error(const char *text, size_t len, const ts_read_options *op
 
 static void test_reader_valid(void)
 {
-    ts_table t;
-    ts_io_error e;
-    ts_read_options o;
+    tsu_table t;
+    tsu_io_error e;
+    tsu_read_options o;
 
     /* CSV: comments, blank lines, CRLF, spaces, header, no final newline */
     CHECK(RT("# comment\r\n\r\nx, y\r\n1,2\r\n  3 , 4 # c\r\n   \r\n# x\n5,6e1", NULL, &t, &e) ==
-          TS_IO_OK);
+          TSU_IO_OK);
     CHECK(t.nrows == 3 && t.ncols == 2 && t.names && strcmp(t.names[0], "x") == 0 &&
           strcmp(t.names[1], "y") == 0);
     if (t.nrows == 3) {
@@ -809,221 +809,221 @@ static void test_reader_valid(void)
               t.cols[0][2] == 5 && t.cols[1][2] == 60);
         CHECK(t.lines && t.lines[0] == 4 && t.lines[1] == 5 && t.lines[2] == 8);
     }
-    ts_table_free(&t);
+    tsu_table_free(&t);
     CHECK(t.cols == NULL && t.names == NULL && t.nrows == 0);
 
     /* TSV with names containing spaces and parentheses */
-    CHECK(RT("time s\tf(t)\n0\t1.5\n 1 \t-2\n", NULL, &t, &e) == TS_IO_OK);
+    CHECK(RT("time s\tf(t)\n0\t1.5\n 1 \t-2\n", NULL, &t, &e) == TSU_IO_OK);
     CHECK(t.nrows == 2 && t.ncols == 2 && strcmp(t.names[0], "time s") == 0 &&
           strcmp(t.names[1], "f(t)") == 0 && t.cols[1][1] == -2);
-    ts_table_free(&t);
+    tsu_table_free(&t);
 
     /* white space, mixed spaces and tabs, three columns, no header */
-    CHECK(RT("  1   2 3\n4\t5  \t6\n", NULL, &t, &e) == TS_IO_OK);
+    CHECK(RT("  1   2 3\n4\t5  \t6\n", NULL, &t, &e) == TSU_IO_OK);
     CHECK(t.nrows == 2 && t.ncols == 3 && t.names == NULL && t.cols[2][1] == 6 && t.cols[0][1] == 4);
-    ts_table_free(&t);
+    tsu_table_free(&t);
 
     /* byte-order mark, quoted header names, one column */
-    CHECK(RT("\xef\xbb\xbf\"time, s\",\"val\"\"x\"\n1,2\n", NULL, &t, &e) == TS_IO_OK);
+    CHECK(RT("\xef\xbb\xbf\"time, s\",\"val\"\"x\"\n1,2\n", NULL, &t, &e) == TSU_IO_OK);
     CHECK(t.ncols == 2 && strcmp(t.names[0], "time, s") == 0 && strcmp(t.names[1], "val\"x") == 0);
-    ts_table_free(&t);
-    CHECK(RT("v\n1\n2\n3", NULL, &t, &e) == TS_IO_OK && t.ncols == 1 && t.nrows == 3 &&
+    tsu_table_free(&t);
+    CHECK(RT("v\n1\n2\n3", NULL, &t, &e) == TSU_IO_OK && t.ncols == 1 && t.nrows == 3 &&
           t.cols[0][2] == 3);
-    ts_table_free(&t);
+    tsu_table_free(&t);
 
-    /* TS_HEADER_YES takes a numeric line as names; track_lines = 0 */
-    ts_read_options_init(&o);
-    o.header = TS_HEADER_YES;
+    /* TSU_HEADER_YES takes a numeric line as names; track_lines = 0 */
+    tsu_read_options_init(&o);
+    o.header = TSU_HEADER_YES;
     o.track_lines = 0;
-    CHECK(RT("1,2\n3,4\n", &o, &t, &e) == TS_IO_OK && t.nrows == 1 && strcmp(t.names[1], "2") == 0 &&
+    CHECK(RT("1,2\n3,4\n", &o, &t, &e) == TSU_IO_OK && t.nrows == 1 && strcmp(t.names[1], "2") == 0 &&
           t.lines == NULL);
-    ts_table_free(&t);
+    tsu_table_free(&t);
 
     /* explicit delimiter: tab given, commas would be errors; explicit ncols */
-    ts_read_options_init(&o);
-    o.delim = TS_DELIM_SPACE;
+    tsu_read_options_init(&o);
+    o.delim = TSU_DELIM_SPACE;
     o.ncols = 2;
-    CHECK(RT("1\t2\n3 4\n", &o, &t, &e) == TS_IO_OK && t.nrows == 2);
-    ts_table_free(&t);
+    CHECK(RT("1\t2\n3 4\n", &o, &t, &e) == TSU_IO_OK && t.nrows == 2);
+    tsu_table_free(&t);
 
     /* "nan,1" is data (nan counts as a number for the header rule); "x,nan" a header */
-    CHECK(RT("nan,1\n1,2\n", NULL, &t, &e) == TS_IO_ERR_NONFINITE);
+    CHECK(RT("nan,1\n1,2\n", NULL, &t, &e) == TSU_IO_ERR_NONFINITE);
     CHECK(strcmp(e.msg, "t.csv:1:1: not a finite number: \"nan\"") == 0);
-    CHECK(RT("x,nan\n1,2\n", NULL, &t, &e) == TS_IO_OK && strcmp(t.names[1], "nan") == 0);
-    ts_table_free(&t);
+    CHECK(RT("x,nan\n1,2\n", NULL, &t, &e) == TSU_IO_OK && strcmp(t.names[1], "nan") == 0);
+    tsu_table_free(&t);
 
     /* the reader's accessors */
     {
         FILE *f = mem_file("a b\n1 2\n\n3 4\n", 13);
-        ts_reader *r;
+        tsu_reader *r;
         const double *row;
-        CHECK(ts_reader_open(&r, f, NULL, NULL, &e) == TS_IO_OK);
-        CHECK(ts_reader_next(r, &row, &e) == TS_IO_OK && row[0] == 1 && ts_reader_line(r) == 2);
-        CHECK(ts_reader_ncols(r) == 2 && ts_reader_nnames(r) == 2 &&
-              strcmp(ts_reader_name(r, 1), "b") == 0 && ts_reader_name(r, 2) == NULL);
-        CHECK(strcmp(ts_reader_source(r), "<input>") == 0 && ts_reader_delim(r) == TS_DELIM_SPACE);
-        CHECK(ts_reader_next(r, &row, &e) == TS_IO_OK && row[1] == 4 && ts_reader_line(r) == 4);
-        CHECK(ts_reader_next(r, &row, &e) == TS_IO_END && row == NULL && ts_reader_rows(r) == 2);
-        CHECK(ts_reader_next(r, &row, &e) == TS_IO_END);
-        ts_reader_free(r);
+        CHECK(tsu_reader_open(&r, f, NULL, NULL, &e) == TSU_IO_OK);
+        CHECK(tsu_reader_next(r, &row, &e) == TSU_IO_OK && row[0] == 1 && tsu_reader_line(r) == 2);
+        CHECK(tsu_reader_ncols(r) == 2 && tsu_reader_nnames(r) == 2 &&
+              strcmp(tsu_reader_name(r, 1), "b") == 0 && tsu_reader_name(r, 2) == NULL);
+        CHECK(strcmp(tsu_reader_source(r), "<input>") == 0 && tsu_reader_delim(r) == TSU_DELIM_SPACE);
+        CHECK(tsu_reader_next(r, &row, &e) == TSU_IO_OK && row[1] == 4 && tsu_reader_line(r) == 4);
+        CHECK(tsu_reader_next(r, &row, &e) == TSU_IO_END && row == NULL && tsu_reader_rows(r) == 2);
+        CHECK(tsu_reader_next(r, &row, &e) == TSU_IO_END);
+        tsu_reader_free(r);
         fclose(f);
     }
-    CHECK(ts_reader_ncols(NULL) == 0 && ts_reader_name(NULL, 0) == NULL && ts_reader_line(NULL) == 0);
+    CHECK(tsu_reader_ncols(NULL) == 0 && tsu_reader_name(NULL, 0) == NULL && tsu_reader_line(NULL) == 0);
 
     /* header details: blanks around names, text after a closing quote */
-    CHECK(RT("a ,\"b\"x , c\n1,2,3\n", NULL, &t, &e) == TS_IO_OK && t.ncols == 3 &&
+    CHECK(RT("a ,\"b\"x , c\n1,2,3\n", NULL, &t, &e) == TSU_IO_OK && t.ncols == 3 &&
           strcmp(t.names[0], "a") == 0 && strcmp(t.names[1], "b") == 0 && strcmp(t.names[2], "c") == 0);
-    ts_table_free(&t);
-    CHECK(RT("\"a b\" \"c\"\n1 2\n", NULL, &t, &e) == TS_IO_OK && t.ncols == 2 &&
+    tsu_table_free(&t);
+    CHECK(RT("\"a b\" \"c\"\n1 2\n", NULL, &t, &e) == TSU_IO_OK && t.ncols == 2 &&
           strcmp(t.names[0], "a b") == 0);
-    ts_table_free(&t);
-    CHECK(RT("\"open,x\n1,2\n", NULL, &t, &e) == TS_IO_OK && t.ncols == 2 &&
+    tsu_table_free(&t);
+    CHECK(RT("\"open,x\n1,2\n", NULL, &t, &e) == TSU_IO_OK && t.ncols == 2 &&
           strcmp(t.names[0], "\"open") == 0); /* an unclosed quote stays */
-    ts_table_free(&t);
+    tsu_table_free(&t);
 
     /* a file by path, and "-" for standard input */
-    CHECK(ts_read_table_path(TS_SOURCE_DIR "/tests/data/io_sample.tsv", NULL, &t, &e) == TS_IO_OK);
+    CHECK(tsu_read_table_path(TS_SOURCE_DIR "/tests/tools/data/io_sample.tsv", NULL, &t, &e) == TSU_IO_OK);
     CHECK(t.nrows == 3 && t.ncols == 2 && strcmp(t.names[0], "t (s)") == 0 &&
           strcmp(t.names[1], "y") == 0 && t.cols[1][1] == -2e-3 && t.cols[0][2] == 100 &&
           t.lines[2] == 6);
-    ts_table_free(&t);
-    CHECK(ts_read_table_path(TS_SOURCE_DIR "/tests/data/io_bad.csv", NULL, &t, &e) ==
-              TS_IO_ERR_NUMBER &&
-          strcmp(e.msg, TS_SOURCE_DIR "/tests/data/io_bad.csv:3:3: expected a number, found \"abc\"") ==
+    tsu_table_free(&t);
+    CHECK(tsu_read_table_path(TS_SOURCE_DIR "/tests/tools/data/io_bad.csv", NULL, &t, &e) ==
+              TSU_IO_ERR_NUMBER &&
+          strcmp(e.msg, TS_SOURCE_DIR "/tests/tools/data/io_bad.csv:3:3: expected a number, found \"abc\"") ==
               0);
-    if (freopen(TS_SOURCE_DIR "/tests/data/io_sample.tsv", "r", stdin)) {
-        CHECK(ts_read_table_path("-", NULL, &t, &e) == TS_IO_OK && t.nrows == 3);
-        ts_table_free(&t);
+    if (freopen(TS_SOURCE_DIR "/tests/tools/data/io_sample.tsv", "r", stdin)) {
+        CHECK(tsu_read_table_path("-", NULL, &t, &e) == TSU_IO_OK && t.nrows == 3);
+        tsu_table_free(&t);
     }
-    if (freopen(TS_SOURCE_DIR "/tests/data/io_bad.csv", "r", stdin)) {
-        CHECK(ts_read_table_path("-", NULL, &t, &e) == TS_IO_ERR_NUMBER &&
+    if (freopen(TS_SOURCE_DIR "/tests/tools/data/io_bad.csv", "r", stdin)) {
+        CHECK(tsu_read_table_path("-", NULL, &t, &e) == TSU_IO_ERR_NUMBER &&
               strcmp(e.msg, "<stdin>:3:3: expected a number, found \"abc\"") == 0);
     }
-    ts_reader_free(NULL);
-    ts_table_free(NULL);
+    tsu_reader_free(NULL);
+    tsu_table_free(NULL);
 }
 
 static void test_reader_errors(void)
 {
-    ts_read_options o;
-    EXPECT_ERR("x,y\n1,2\n3,abc\n", NULL, TS_IO_ERR_NUMBER,
+    tsu_read_options o;
+    EXPECT_ERR("x,y\n1,2\n3,abc\n", NULL, TSU_IO_ERR_NUMBER,
                "t.csv:3:3: expected a number, found \"abc\"", 3, 3);
-    EXPECT_ERR("1,2\n3,4,5\n", NULL, TS_IO_ERR_FIELDS,
+    EXPECT_ERR("1,2\n3,4,5\n", NULL, TSU_IO_ERR_FIELDS,
                "t.csv:2:5: wrong number of fields (3, expected 2)", 2, 5);
-    EXPECT_ERR("1,2\n3\n", NULL, TS_IO_ERR_FIELDS,
+    EXPECT_ERR("1,2\n3\n", NULL, TSU_IO_ERR_FIELDS,
                "t.csv:2:2: wrong number of fields (1, expected 2)", 2, 2);
-    EXPECT_ERR("1 2\n3 4 5 6 # c\n", NULL, TS_IO_ERR_FIELDS,
+    EXPECT_ERR("1 2\n3 4 5 6 # c\n", NULL, TSU_IO_ERR_FIELDS,
                "t.csv:2:5: wrong number of fields (4, expected 2)", 2, 5);
-    EXPECT_ERR("1,2\n3,nan\n", NULL, TS_IO_ERR_NONFINITE, "t.csv:2:3: not a finite number: \"nan\"",
+    EXPECT_ERR("1,2\n3,nan\n", NULL, TSU_IO_ERR_NONFINITE, "t.csv:2:3: not a finite number: \"nan\"",
                2, 3);
-    EXPECT_ERR("1,2\n3, -Infinity \n", NULL, TS_IO_ERR_NONFINITE,
+    EXPECT_ERR("1,2\n3, -Infinity \n", NULL, TSU_IO_ERR_NONFINITE,
                "t.csv:2:4: not a finite number: \"-Infinity\"", 2, 4);
-    EXPECT_ERR("1,2\n3,1e999\n", NULL, TS_IO_ERR_RANGE, "t.csv:2:3: number out of range: \"1e999\"",
+    EXPECT_ERR("1,2\n3,1e999\n", NULL, TSU_IO_ERR_RANGE, "t.csv:2:3: number out of range: \"1e999\"",
                2, 3);
-    EXPECT_ERR("1,2\n3,,4\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:3: empty field", 2, 3);
-    EXPECT_ERR("1,2\n,4\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:1: empty field", 2, 1);
-    EXPECT_ERR("1,2\n3,\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:3: empty field", 2, 3);
-    EXPECT_ERR("1,\n", NULL, TS_IO_ERR_NUMBER, "t.csv:1:3: empty field", 1, 3);
-    EXPECT_ERR("", NULL, TS_IO_ERR_EMPTY, "t.csv: no data (empty input)", 0, 0);
-    EXPECT_ERR("# only a comment\n\n  \n", NULL, TS_IO_ERR_EMPTY, "t.csv: no data (empty input)", 0,
+    EXPECT_ERR("1,2\n3,,4\n", NULL, TSU_IO_ERR_NUMBER, "t.csv:2:3: empty field", 2, 3);
+    EXPECT_ERR("1,2\n,4\n", NULL, TSU_IO_ERR_NUMBER, "t.csv:2:1: empty field", 2, 1);
+    EXPECT_ERR("1,2\n3,\n", NULL, TSU_IO_ERR_NUMBER, "t.csv:2:3: empty field", 2, 3);
+    EXPECT_ERR("1,\n", NULL, TSU_IO_ERR_NUMBER, "t.csv:1:3: empty field", 1, 3);
+    EXPECT_ERR("", NULL, TSU_IO_ERR_EMPTY, "t.csv: no data (empty input)", 0, 0);
+    EXPECT_ERR("# only a comment\n\n  \n", NULL, TSU_IO_ERR_EMPTY, "t.csv: no data (empty input)", 0,
                0);
-    EXPECT_ERR("x,y\n# nothing\n", NULL, TS_IO_ERR_EMPTY, "t.csv: no data rows", 0, 0);
-    EXPECT_ERR("1 2\n3 4x\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:3: expected a number, found \"4x\"",
+    EXPECT_ERR("x,y\n# nothing\n", NULL, TSU_IO_ERR_EMPTY, "t.csv: no data rows", 0, 0);
+    EXPECT_ERR("1 2\n3 4x\n", NULL, TSU_IO_ERR_NUMBER, "t.csv:2:3: expected a number, found \"4x\"",
                2, 3);
-    EXPECT_ERR("1,2\n3,4 5\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:3: expected a number, found \"4 5\"",
+    EXPECT_ERR("1,2\n3,4 5\n", NULL, TSU_IO_ERR_NUMBER, "t.csv:2:3: expected a number, found \"4 5\"",
                2, 3);
-    EXPECT_ERR("1,2\nabc ,4\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:1: expected a number, found \"abc\"",
+    EXPECT_ERR("1,2\nabc ,4\n", NULL, TSU_IO_ERR_NUMBER, "t.csv:2:1: expected a number, found \"abc\"",
                2, 1);
-    EXPECT_ERR("1,2\n0x10,2\n", NULL, TS_IO_ERR_NUMBER,
+    EXPECT_ERR("1,2\n0x10,2\n", NULL, TSU_IO_ERR_NUMBER,
                "t.csv:2:1: expected a number, found \"0x10\"", 2, 1);
-    EXPECT_ERR("1,2\r\n3,x\r\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:3: expected a number, found \"x\"",
+    EXPECT_ERR("1,2\r\n3,x\r\n", NULL, TSU_IO_ERR_NUMBER, "t.csv:2:3: expected a number, found \"x\"",
                2, 3);
-    EXPECT_ERR("1\t2\n3\tz\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:3: expected a number, found \"z\"",
+    EXPECT_ERR("1\t2\n3\tz\n", NULL, TSU_IO_ERR_NUMBER, "t.csv:2:3: expected a number, found \"z\"",
                2, 3);
-    EXPECT_ERR("1\t2\n3\t\t4\n", NULL, TS_IO_ERR_NUMBER, "t.csv:2:3: empty field", 2, 3);
-    EXPECT_ERR("1,2\n3,\"4\"\n", NULL, TS_IO_ERR_NUMBER,
+    EXPECT_ERR("1\t2\n3\t\t4\n", NULL, TSU_IO_ERR_NUMBER, "t.csv:2:3: empty field", 2, 3);
+    EXPECT_ERR("1,2\n3,\"4\"\n", NULL, TSU_IO_ERR_NUMBER,
                "t.csv:2:3: expected a number, found \"\"4\"\"", 2, 3);
-    EXPECT_ERR("1,2\n3,4\xc3\xa9\n", NULL, TS_IO_ERR_NUMBER,
+    EXPECT_ERR("1,2\n3,4\xc3\xa9\n", NULL, TSU_IO_ERR_NUMBER,
                "t.csv:2:3: expected a number, found \"4\\xc3\\xa9\"", 2, 3);
-    expect_error("1,2\n3,\0\n", 7, NULL, TS_IO_ERR_NUMBER,
+    expect_error("1,2\n3,\0\n", 7, NULL, TSU_IO_ERR_NUMBER,
                  "t.csv:2:3: expected a number, found \"\\x00\"", 2, 3);
     EXPECT_ERR("1,2\n3,aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa\n", NULL,
-               TS_IO_ERR_NUMBER,
+               TSU_IO_ERR_NUMBER,
                "t.csv:2:3: expected a number, found \"aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa\"...", 2,
                3);
     /* the byte-order mark is not counted in columns */
-    ts_read_options_init(&o);
-    o.header = TS_HEADER_NONE;
-    EXPECT_ERR("\xef\xbb\xbf" "1,x\n", &o, TS_IO_ERR_NUMBER, "t.csv:1:3: expected a number, found \"x\"",
+    tsu_read_options_init(&o);
+    o.header = TSU_HEADER_NONE;
+    EXPECT_ERR("\xef\xbb\xbf" "1,x\n", &o, TSU_IO_ERR_NUMBER, "t.csv:1:3: expected a number, found \"x\"",
                1, 3);
-    EXPECT_ERR("x,y\n1,2\n", &o, TS_IO_ERR_NUMBER, "t.csv:1:1: expected a number, found \"x\"", 1, 1);
+    EXPECT_ERR("x,y\n1,2\n", &o, TSU_IO_ERR_NUMBER, "t.csv:1:1: expected a number, found \"x\"", 1, 1);
     /* required number of columns */
-    ts_read_options_init(&o);
+    tsu_read_options_init(&o);
     o.ncols = 2;
-    EXPECT_ERR("a,b,c\n1,2,3\n", &o, TS_IO_ERR_FIELDS,
+    EXPECT_ERR("a,b,c\n1,2,3\n", &o, TSU_IO_ERR_FIELDS,
                "t.csv:1:5: wrong number of fields (3, expected 2)", 1, 5);
-    EXPECT_ERR("a\n1\n", &o, TS_IO_ERR_FIELDS, "t.csv:1:2: wrong number of fields (1, expected 2)",
+    EXPECT_ERR("a\n1\n", &o, TSU_IO_ERR_FIELDS, "t.csv:1:2: wrong number of fields (1, expected 2)",
                1, 2);
-    EXPECT_ERR("1 2 3\n", &o, TS_IO_ERR_FIELDS, "t.csv:1:5: wrong number of fields (3, expected 2)",
+    EXPECT_ERR("1 2 3\n", &o, TSU_IO_ERR_FIELDS, "t.csv:1:5: wrong number of fields (3, expected 2)",
                1, 5);
     /* header fixes the count */
-    EXPECT_ERR("a,b\n1,2,3\n", NULL, TS_IO_ERR_FIELDS,
+    EXPECT_ERR("a,b\n1,2,3\n", NULL, TSU_IO_ERR_FIELDS,
                "t.csv:2:5: wrong number of fields (3, expected 2)", 2, 5);
     /* long lines */
-    ts_read_options_init(&o);
+    tsu_read_options_init(&o);
     o.max_line = 16;
     o.buffer_size = 16;
-    EXPECT_ERR("1,2\n123456789012345,1\n", &o, TS_IO_ERR_LINE, "t.csv:2: line longer than 16 bytes",
+    EXPECT_ERR("1,2\n123456789012345,1\n", &o, TSU_IO_ERR_LINE, "t.csv:2: line longer than 16 bytes",
                2, 0);
-    EXPECT_ERR("1,2\n123456789012345,1", &o, TS_IO_ERR_LINE, "t.csv:2: line longer than 16 bytes",
+    EXPECT_ERR("1,2\n123456789012345,1", &o, TSU_IO_ERR_LINE, "t.csv:2: line longer than 16 bytes",
                2, 0);
     {
-        ts_table t;
-        ts_io_error e;
+        tsu_table t;
+        tsu_io_error e;
         /* exactly 16 bytes is fine, also at the end without newline */
-        CHECK(RT("1,2\n1234567890123,1\n1234567890123,2", &o, &t, &e) == TS_IO_OK && t.nrows == 3);
-        ts_table_free(&t);
+        CHECK(RT("1,2\n1234567890123,1\n1234567890123,2", &o, &t, &e) == TSU_IO_OK && t.nrows == 3);
+        tsu_table_free(&t);
     }
     /* options and arguments */
     {
-        ts_table t;
-        ts_io_error e;
-        ts_reader *r = (ts_reader *)&e;
+        tsu_table t;
+        tsu_io_error e;
+        tsu_reader *r = (tsu_reader *)&e;
         FILE *f = tmpfile();
-        ts_read_options_init(&o);
+        tsu_read_options_init(&o);
         o.max_line = 5;
-        CHECK(ts_read_table(f, "t", &o, &t, &e) == TS_IO_ERR_OPTION &&
+        CHECK(tsu_read_table(f, "t", &o, &t, &e) == TSU_IO_ERR_OPTION &&
               strcmp(e.msg, "t: invalid option") == 0);
-        ts_read_options_init(&o);
-        o.delim = (ts_delim)9;
-        CHECK(ts_reader_open(&r, f, "t", &o, &e) == TS_IO_ERR_OPTION && r == NULL);
-        ts_read_options_init(&o);
-        o.header = (ts_header)-1;
-        CHECK(ts_reader_open(&r, f, "t", &o, &e) == TS_IO_ERR_OPTION);
-        ts_read_options_init(&o);
+        tsu_read_options_init(&o);
+        o.delim = (tsu_delim)9;
+        CHECK(tsu_reader_open(&r, f, "t", &o, &e) == TSU_IO_ERR_OPTION && r == NULL);
+        tsu_read_options_init(&o);
+        o.header = (tsu_header)-1;
+        CHECK(tsu_reader_open(&r, f, "t", &o, &e) == TSU_IO_ERR_OPTION);
+        tsu_read_options_init(&o);
         o.buffer_size = 3;
-        CHECK(ts_reader_open(&r, f, "t", &o, &e) == TS_IO_ERR_OPTION);
-        CHECK(ts_reader_open(&r, NULL, "t", NULL, &e) == TS_IO_ERR_NULL && r == NULL);
-        CHECK(ts_reader_open(NULL, f, "t", NULL, &e) == TS_IO_ERR_NULL);
-        CHECK(ts_reader_next(NULL, NULL, &e) == TS_IO_ERR_NULL);
-        CHECK(ts_read_table(f, "t", NULL, NULL, &e) == TS_IO_ERR_NULL);
-        CHECK(ts_read_table_path(NULL, NULL, &t, &e) == TS_IO_ERR_NULL);
-        CHECK(ts_read_table_path("/nonexistent-dir/x.csv", NULL, &t, &e) == TS_IO_ERR_OPEN &&
+        CHECK(tsu_reader_open(&r, f, "t", &o, &e) == TSU_IO_ERR_OPTION);
+        CHECK(tsu_reader_open(&r, NULL, "t", NULL, &e) == TSU_IO_ERR_NULL && r == NULL);
+        CHECK(tsu_reader_open(NULL, f, "t", NULL, &e) == TSU_IO_ERR_NULL);
+        CHECK(tsu_reader_next(NULL, NULL, &e) == TSU_IO_ERR_NULL);
+        CHECK(tsu_read_table(f, "t", NULL, NULL, &e) == TSU_IO_ERR_NULL);
+        CHECK(tsu_read_table_path(NULL, NULL, &t, &e) == TSU_IO_ERR_NULL);
+        CHECK(tsu_read_table_path("/nonexistent-dir/x.csv", NULL, &t, &e) == TSU_IO_ERR_OPEN &&
               e.sys_errno == ENOENT &&
               strcmp(e.msg, "/nonexistent-dir/x.csv: cannot open: No such file or directory") == 0);
-        ts_read_options_init(NULL);
+        tsu_read_options_init(NULL);
         fclose(f);
         /* a read error: reading a stream open for writing only */
         f = fopen("/dev/null", "w");
         if (f) {
-            CHECK(ts_read_table(f, "w.csv", NULL, &t, &e) == TS_IO_ERR_READ && e.sys_errno != 0 &&
+            CHECK(tsu_read_table(f, "w.csv", NULL, &t, &e) == TSU_IO_ERR_READ && e.sys_errno != 0 &&
                   strncmp(e.msg, "w.csv: read error: ", 19) == 0);
             fclose(f);
         }
     }
-    for (int s = 0; s <= TS_IO_STATUS_COUNT_; s++)
-        CHECK(ts_io_strerror((ts_io_status)s) != NULL);
-    CHECK(strcmp(ts_io_strerror((ts_io_status)99), "unknown status") == 0);
+    for (int s = 0; s <= TSU_IO_STATUS_COUNT_; s++)
+        CHECK(tsu_io_strerror((tsu_io_status)s) != NULL);
+    CHECK(strcmp(tsu_io_strerror((tsu_io_status)99), "unknown status") == 0);
 }
 
 /* A generated file read with several buffer sizes, read-all and streaming:
@@ -1035,7 +1035,7 @@ static void test_reader_stream(void)
     static const size_t bufs[] = {16, 100, 4096, 0};
     double *xv = malloc((size_t)nrows * sizeof *xv), *yv = malloc((size_t)nrows * sizeof *yv);
     unsigned long long *lines = malloc((size_t)nrows * sizeof *lines), line = 0;
-    char a[TS_FMT_SIZE];
+    char a[TSU_FMT_SIZE];
     if (!f || !xv || !yv || !lines) {
         CHECK(0);
         return;
@@ -1050,25 +1050,25 @@ static void test_reader_stream(void)
             line += 2;
         }
         if (i % 2) {
-            ts_format_double(xv[i], a);
+            tsu_format_double(xv[i], a);
             fprintf(f, "%s, %.17g\n", a, yv[i]);
         } else {
-            fprintf(f, "%.20e,%s\r\n", xv[i], (ts_format_double(yv[i], a), a));
+            fprintf(f, "%.20e,%s\r\n", xv[i], (tsu_format_double(yv[i], a), a));
         }
         lines[i] = ++line;
     }
     for (size_t b = 0; b < sizeof bufs / sizeof *bufs; b++) {
-        ts_read_options o;
-        ts_table t;
-        ts_io_error e;
-        ts_reader *r;
+        tsu_read_options o;
+        tsu_table t;
+        tsu_io_error e;
+        tsu_reader *r;
         const double *row;
         long bad = 0, k = 0;
-        ts_read_options_init(&o);
+        tsu_read_options_init(&o);
         if (bufs[b])
             o.buffer_size = bufs[b];
         rewind(f);
-        CHECK(ts_read_table(f, "g.csv", &o, &t, &e) == TS_IO_OK);
+        CHECK(tsu_read_table(f, "g.csv", &o, &t, &e) == TSU_IO_OK);
         CHECK(t.nrows == (size_t)nrows && t.ncols == 2);
         for (i = 0; i < nrows && t.nrows == (size_t)nrows; i++)
             if (bits_of(t.cols[0][i]) != bits_of(xv[i]) || bits_of(t.cols[1][i]) != bits_of(yv[i]) ||
@@ -1077,16 +1077,16 @@ static void test_reader_stream(void)
         CHECKF(bad == 0, "buffer %zu: %ld rows differ", bufs[b], bad);
         rewind(f);
         bad = 0;
-        CHECK(ts_reader_open(&r, f, "g.csv", &o, &e) == TS_IO_OK);
-        while (ts_reader_next(r, &row, &e) == TS_IO_OK) {
+        CHECK(tsu_reader_open(&r, f, "g.csv", &o, &e) == TSU_IO_OK);
+        while (tsu_reader_next(r, &row, &e) == TSU_IO_OK) {
             if (k >= nrows || bits_of(row[0]) != bits_of(t.cols[0][k]) ||
-                bits_of(row[1]) != bits_of(t.cols[1][k]) || ts_reader_line(r) != t.lines[k])
+                bits_of(row[1]) != bits_of(t.cols[1][k]) || tsu_reader_line(r) != t.lines[k])
                 bad++;
             k++;
         }
-        CHECKF(bad == 0 && k == nrows && e.status == TS_IO_OK, "streaming, buffer %zu", bufs[b]);
-        ts_reader_free(r);
-        ts_table_free(&t);
+        CHECKF(bad == 0 && k == nrows && e.status == TSU_IO_OK, "streaming, buffer %zu", bufs[b]);
+        tsu_reader_free(r);
+        tsu_table_free(&t);
     }
     fclose(f);
     free(xv);
@@ -1131,9 +1131,9 @@ static int file_is(const char *path, const char *content)
 
 static void test_out(void)
 {
-    char tmpl[] = "/tmp/ts_io_test.XXXXXX", path[300], sub[300], msg[TS_IO_MSG_SIZE], names[8][64];
+    char tmpl[] = "/tmp/ts_io_test.XXXXXX", path[300], sub[300], msg[TSU_IO_MSG_SIZE], names[8][64];
     char *dir = mkdtemp(tmpl);
-    ts_out *o;
+    tsu_out *o;
     struct stat st;
     mode_t old = umask(022);
     CHECK(dir != NULL);
@@ -1142,40 +1142,40 @@ static void test_out(void)
     snprintf(path, sizeof path, "%s/out.csv", dir);
 
     /* aborted: nothing left */
-    CHECK(ts_out_open(&o, path, 0, msg, sizeof msg) == 0 && o && msg[0] == 0);
-    CHECK(strncmp(ts_out_temp(o), path, strlen(path)) == 0 &&
-          strncmp(ts_out_temp(o) + strlen(path), ".tmp.", 5) == 0);
-    CHECK(strcmp(ts_out_path(o), path) == 0);
-    fputs("half written", ts_out_file(o));
+    CHECK(tsu_out_open(&o, path, 0, msg, sizeof msg) == 0 && o && msg[0] == 0);
+    CHECK(strncmp(tsu_out_temp(o), path, strlen(path)) == 0 &&
+          strncmp(tsu_out_temp(o) + strlen(path), ".tmp.", 5) == 0);
+    CHECK(strcmp(tsu_out_path(o), path) == 0);
+    fputs("half written", tsu_out_file(o));
     CHECK(dir_entries(dir, names, 8) == 1); /* the temp file exists meanwhile */
-    ts_out_abort(o);
+    tsu_out_abort(o);
     CHECK(dir_entries(dir, names, 8) == 0);
 
     /* committed: the file, nothing else, mode 0666 & ~umask */
-    CHECK(ts_out_open(&o, path, TS_OUT_FSYNC, msg, sizeof msg) == 0);
-    fputs("a,b\n", ts_out_file(o));
-    CHECK(ts_out_commit(o, msg, sizeof msg) == 0 && msg[0] == 0);
+    CHECK(tsu_out_open(&o, path, TSU_OUT_FSYNC, msg, sizeof msg) == 0);
+    fputs("a,b\n", tsu_out_file(o));
+    CHECK(tsu_out_commit(o, msg, sizeof msg) == 0 && msg[0] == 0);
     CHECK(file_is(path, "a,b\n"));
     CHECK(dir_entries(dir, names, 8) == 1 && strcmp(names[0], "out.csv") == 0);
     CHECK(stat(path, &st) == 0 && (st.st_mode & 0777) == 0644);
 
     /* replacing keeps the permissions of the old file */
     chmod(path, 0640);
-    CHECK(ts_out_open(&o, path, 0, msg, sizeof msg) == 0);
-    fputs("new\n", ts_out_file(o));
+    CHECK(tsu_out_open(&o, path, 0, msg, sizeof msg) == 0);
+    fputs("new\n", tsu_out_file(o));
     CHECK(file_is(path, "a,b\n")); /* untouched until commit */
-    CHECK(ts_out_commit(o, msg, sizeof msg) == 0);
+    CHECK(tsu_out_commit(o, msg, sizeof msg) == 0);
     CHECK(file_is(path, "new\n") && stat(path, &st) == 0 && (st.st_mode & 0777) == 0640);
     /* aborting a replacement leaves the old file */
-    CHECK(ts_out_open(&o, path, 0, msg, sizeof msg) == 0);
-    fputs("newer\n", ts_out_file(o));
-    ts_out_abort(o);
+    CHECK(tsu_out_open(&o, path, 0, msg, sizeof msg) == 0);
+    fputs("newer\n", tsu_out_file(o));
+    tsu_out_abort(o);
     CHECK(file_is(path, "new\n") && dir_entries(dir, names, 8) == 1);
 
     /* directory missing */
     snprintf(sub, sizeof sub, "%s/nope/x.csv", dir);
-    o = (ts_out *)msg;
-    CHECK(ts_out_open(&o, sub, 0, msg, sizeof msg) == ENOENT && o == NULL);
+    o = (tsu_out *)msg;
+    CHECK(tsu_out_open(&o, sub, 0, msg, sizeof msg) == ENOENT && o == NULL);
     {
         char want[400];
         snprintf(want, sizeof want,
@@ -1192,10 +1192,10 @@ static void test_out(void)
         FILE *f = fopen(inner, "w");
         if (f)
             fclose(f);
-        CHECK(ts_out_open(&o, sub, 0, msg, sizeof msg) == 0);
-        fputs("x", ts_out_file(o));
+        CHECK(tsu_out_open(&o, sub, 0, msg, sizeof msg) == 0);
+        fputs("x", tsu_out_file(o));
         {
-            int rc = ts_out_commit(o, msg, sizeof msg);
+            int rc = tsu_out_commit(o, msg, sizeof msg);
             char want[400];
             snprintf(want, sizeof want, "cannot replace \"%s\": %s", sub, strerror(rc));
             CHECKF((rc == EISDIR || rc == ENOTEMPTY || rc == EEXIST) && strcmp(msg, want) == 0,
@@ -1212,19 +1212,19 @@ static void test_out(void)
         if (getrlimit(RLIMIT_FSIZE, &rl) == 0) {
             void (*oldh)(int) = signal(SIGXFSZ, SIG_IGN);
             snprintf(sub, sizeof sub, "%s/big.csv", dir);
-            CHECK(ts_out_open(&o, sub, 0, msg, sizeof msg) == 0);
+            CHECK(tsu_out_open(&o, sub, 0, msg, sizeof msg) == 0);
             lim = rl;
             lim.rlim_cur = 1000;
             if (setrlimit(RLIMIT_FSIZE, &lim) == 0) {
                 int rc;
                 for (int i = 0; i < 500; i++)
-                    fputs("0123456789\n", ts_out_file(o));
-                rc = ts_out_commit(o, msg, sizeof msg);
+                    fputs("0123456789\n", tsu_out_file(o));
+                rc = tsu_out_commit(o, msg, sizeof msg);
                 setrlimit(RLIMIT_FSIZE, &rl);
                 CHECKF(rc == EFBIG && strstr(msg, "error writing \"") == msg, "rc %d: %s", rc, msg);
                 CHECK(dir_entries(dir, names, 8) == 1);
             } else {
-                ts_out_abort(o);
+                tsu_out_abort(o);
             }
             signal(SIGXFSZ, oldh);
         }
@@ -1234,18 +1234,18 @@ static void test_out(void)
     {
         char cwd[1024];
         if (getcwd(cwd, sizeof cwd) && chdir(dir) == 0) {
-            CHECK(ts_out_open(&o, "rel.csv", TS_OUT_FSYNC, msg, sizeof msg) == 0);
-            fputs("r\n", ts_out_file(o));
-            CHECK(ts_out_commit(o, msg, sizeof msg) == 0 && file_is("rel.csv", "r\n"));
+            CHECK(tsu_out_open(&o, "rel.csv", TSU_OUT_FSYNC, msg, sizeof msg) == 0);
+            fputs("r\n", tsu_out_file(o));
+            CHECK(tsu_out_commit(o, msg, sizeof msg) == 0 && file_is("rel.csv", "r\n"));
             remove("rel.csv");
             CHECK(chdir(cwd) == 0);
         }
     }
 
     /* standard output */
-    CHECK(ts_out_open(&o, "-", 0, msg, sizeof msg) == 0 && ts_out_file(o) == stdout &&
-          ts_out_temp(o) == NULL);
-    CHECK(ts_out_commit(o, msg, sizeof msg) == 0);
+    CHECK(tsu_out_open(&o, "-", 0, msg, sizeof msg) == 0 && tsu_out_file(o) == stdout &&
+          tsu_out_temp(o) == NULL);
+    CHECK(tsu_out_commit(o, msg, sizeof msg) == 0);
     { /* standard output that fails (/dev/full on fd 1 for a moment) */
         int save, full;
         fflush(stdout);
@@ -1253,9 +1253,9 @@ static void test_out(void)
         full = open("/dev/full", O_WRONLY);
         if (save >= 0 && full >= 0 && dup2(full, 1) >= 0) {
             int rc;
-            CHECK(ts_out_open(&o, "-", 0, msg, sizeof msg) == 0);
-            fputs("\n", ts_out_file(o));
-            rc = ts_out_commit(o, msg, sizeof msg);
+            CHECK(tsu_out_open(&o, "-", 0, msg, sizeof msg) == 0);
+            fputs("\n", tsu_out_file(o));
+            rc = tsu_out_commit(o, msg, sizeof msg);
             dup2(save, 1);
             clearerr(stdout);
             CHECKF(rc == ENOSPC && strcmp(msg, "error writing to standard output: No space left on "
@@ -1267,17 +1267,17 @@ static void test_out(void)
         if (save >= 0)
             close(save);
     }
-    CHECK(ts_out_open(&o, "-", 0, NULL, 0) == 0);
-    ts_out_abort(o);
+    CHECK(tsu_out_open(&o, "-", 0, NULL, 0) == 0);
+    tsu_out_abort(o);
 
     /* arguments */
-    CHECK(ts_out_open(&o, NULL, 0, msg, sizeof msg) == EINVAL && strcmp(msg, "no output path") == 0);
-    CHECK(ts_out_open(&o, "", 0, msg, sizeof msg) == EINVAL);
-    CHECK(ts_out_open(NULL, path, 0, msg, sizeof msg) == EINVAL);
-    CHECK(ts_out_open(&o, path, 0x100, msg, sizeof msg) == EINVAL && o == NULL);
-    CHECK(ts_out_commit(NULL, msg, sizeof msg) == EINVAL);
-    ts_out_abort(NULL);
-    CHECK(ts_out_file(NULL) == NULL && ts_out_path(NULL) == NULL);
+    CHECK(tsu_out_open(&o, NULL, 0, msg, sizeof msg) == EINVAL && strcmp(msg, "no output path") == 0);
+    CHECK(tsu_out_open(&o, "", 0, msg, sizeof msg) == EINVAL);
+    CHECK(tsu_out_open(NULL, path, 0, msg, sizeof msg) == EINVAL);
+    CHECK(tsu_out_open(&o, path, 0x100, msg, sizeof msg) == EINVAL && o == NULL);
+    CHECK(tsu_out_commit(NULL, msg, sizeof msg) == EINVAL);
+    tsu_out_abort(NULL);
+    CHECK(tsu_out_file(NULL) == NULL && tsu_out_path(NULL) == NULL);
 
     remove(path);
     CHECK(dir_entries(dir, names, 8) == 0);
@@ -1288,45 +1288,45 @@ static void test_out(void)
 static void test_writer(void)
 {
     FILE *f = tmpfile();
-    ts_writer *w;
+    tsu_writer *w;
     char buf[512];
     size_t n;
     double row[3] = {1.0, -0.1, 3e-300};
-    CHECK(ts_writer_new(NULL, ',') == NULL && ts_writer_new(f, 'x') == NULL);
-    w = ts_writer_new(f, ',');
+    CHECK(tsu_writer_new(NULL, ',') == NULL && tsu_writer_new(f, 'x') == NULL);
+    w = tsu_writer_new(f, ',');
     CHECK(w != NULL);
-    CHECK(ts_writer_text(w, "x,y\n", 4) == 0);
-    CHECK(ts_writer_xy(w, 0.5, 100.0) == 0);
-    CHECK(ts_writer_row(w, row, 3) == 0);
-    CHECK(ts_writer_row(w, row, 0) == 0);
-    CHECK(ts_writer_xy(w, -0.0, 1e21) == 0);
-    CHECK(ts_writer_free(w) == 0);
+    CHECK(tsu_writer_text(w, "x,y\n", 4) == 0);
+    CHECK(tsu_writer_xy(w, 0.5, 100.0) == 0);
+    CHECK(tsu_writer_row(w, row, 3) == 0);
+    CHECK(tsu_writer_row(w, row, 0) == 0);
+    CHECK(tsu_writer_xy(w, -0.0, 1e21) == 0);
+    CHECK(tsu_writer_free(w) == 0);
     rewind(f);
     n = fread(buf, 1, sizeof buf - 1, f);
     buf[n] = 0;
     CHECKF(strcmp(buf, "x,y\n0.5,100\n1,-0.1,3e-300\n\n-0,1e+21\n") == 0, "%s", buf);
     fclose(f);
 
-    w = ts_writer_new(stdout, '\t');
-    CHECK(ts_writer_row(w, NULL, 2) == EINVAL && ts_writer_xy(w, 1, 2) == EINVAL); /* sticky */
-    CHECK(ts_writer_free(w) == EINVAL);
-    CHECK(ts_writer_row(NULL, row, 1) == EINVAL && ts_writer_flush(NULL) == EINVAL &&
-          ts_writer_free(NULL) == 0 && ts_writer_text(NULL, "", 0) == EINVAL);
+    w = tsu_writer_new(stdout, '\t');
+    CHECK(tsu_writer_row(w, NULL, 2) == EINVAL && tsu_writer_xy(w, 1, 2) == EINVAL); /* sticky */
+    CHECK(tsu_writer_free(w) == EINVAL);
+    CHECK(tsu_writer_row(NULL, row, 1) == EINVAL && tsu_writer_flush(NULL) == EINVAL &&
+          tsu_writer_free(NULL) == 0 && tsu_writer_text(NULL, "", 0) == EINVAL);
 
     /* write errors: /dev/full */
     f = fopen("/dev/full", "w");
     if (f) {
         long i;
         int rc = 0;
-        w = ts_writer_new(f, ',');
+        w = tsu_writer_new(f, ',');
         for (i = 0; i < 100000 && rc == 0; i++)
-            rc = ts_writer_xy(w, (double)i, 0.25);
+            rc = tsu_writer_xy(w, (double)i, 0.25);
         if (rc == 0)
-            rc = ts_writer_flush(w);
+            rc = tsu_writer_flush(w);
         CHECKF(rc == ENOSPC, "rc %d", rc);
-        CHECK(ts_writer_xy(w, 1, 2) == ENOSPC && ts_writer_text(w, "a", 1) == ENOSPC);
-        CHECK(ts_writer_row(w, row, 3) == ENOSPC);
-        CHECK(ts_writer_free(w) == ENOSPC);
+        CHECK(tsu_writer_xy(w, 1, 2) == ENOSPC && tsu_writer_text(w, "a", 1) == ENOSPC);
+        CHECK(tsu_writer_row(w, row, 3) == ENOSPC);
+        CHECK(tsu_writer_free(w) == ENOSPC);
         fclose(f);
     }
     f = fopen("/dev/full", "w");
@@ -1334,54 +1334,54 @@ static void test_writer(void)
         static double many[5000];
         static char txt[100000];
         int rc = 0;
-        w = ts_writer_new(f, ';');
+        w = tsu_writer_new(f, ';');
         for (int i = 0; i < 100 && rc == 0; i++)
-            rc = ts_writer_row(w, many, 5000);
-        CHECK(rc == ENOSPC && ts_writer_free(w) == ENOSPC);
+            rc = tsu_writer_row(w, many, 5000);
+        CHECK(rc == ENOSPC && tsu_writer_free(w) == ENOSPC);
         clearerr(f);
-        w = ts_writer_new(f, ' ');
-        CHECK(ts_writer_xy(w, 1, 2) == 0 && ts_writer_flush(w) == ENOSPC && ts_writer_free(w) == ENOSPC);
+        w = tsu_writer_new(f, ' ');
+        CHECK(tsu_writer_xy(w, 1, 2) == 0 && tsu_writer_flush(w) == ENOSPC && tsu_writer_free(w) == ENOSPC);
         clearerr(f);
         memset(txt, 'a', sizeof txt);
-        w = ts_writer_new(f, ',');
-        CHECK(ts_writer_text(w, txt, sizeof txt) == ENOSPC && ts_writer_free(w) == ENOSPC);
+        w = tsu_writer_new(f, ',');
+        CHECK(tsu_writer_text(w, txt, sizeof txt) == ENOSPC && tsu_writer_free(w) == ENOSPC);
         fclose(f);
     }
-    w = ts_writer_new(stdout, ',');
-    CHECK(ts_writer_text(w, NULL, 3) == EINVAL && ts_writer_free(w) == EINVAL);
-    CHECK(ts_writer_xy(NULL, 1, 2) == EINVAL);
+    w = tsu_writer_new(stdout, ',');
+    CHECK(tsu_writer_text(w, NULL, 3) == EINVAL && tsu_writer_free(w) == EINVAL);
+    CHECK(tsu_writer_xy(NULL, 1, 2) == EINVAL);
 
     /* speed: rows of (x, y) into a temporary file; then reading them back */
     {
         long rows = SCALE(1000000), i;
         double t0, tw, tr, ts;
-        ts_table t;
-        ts_io_error e;
-        ts_reader *r;
+        tsu_table t;
+        tsu_io_error e;
+        tsu_reader *r;
         const double *rw;
         f = tmpfile();
-        w = ts_writer_new(f, ',');
+        w = tsu_writer_new(f, ',');
         t0 = now();
         for (i = 0; i < rows; i++)
-            ts_writer_xy(w, (double)i * 0.001, sin((double)i * 0.001) * 12.5);
-        CHECK(ts_writer_free(w) == 0);
+            tsu_writer_xy(w, (double)i * 0.001, sin((double)i * 0.001) * 12.5);
+        CHECK(tsu_writer_free(w) == 0);
         tw = now() - t0;
         rewind(f);
         t0 = now();
-        CHECK(ts_read_table(f, "w.csv", NULL, &t, &e) == TS_IO_OK && t.nrows == (size_t)rows);
+        CHECK(tsu_read_table(f, "w.csv", NULL, &t, &e) == TSU_IO_OK && t.nrows == (size_t)rows);
         tr = now() - t0;
         CHECK(t.nrows == (size_t)rows && t.cols[0][rows - 1] == (double)(rows - 1) * 0.001 &&
               t.cols[1][rows / 2] == sin((double)(rows / 2) * 0.001) * 12.5);
-        ts_table_free(&t);
+        tsu_table_free(&t);
         rewind(f);
         t0 = now();
-        CHECK(ts_reader_open(&r, f, "w.csv", NULL, &e) == TS_IO_OK);
+        CHECK(tsu_reader_open(&r, f, "w.csv", NULL, &e) == TSU_IO_OK);
         i = 0;
-        while (ts_reader_next(r, &rw, &e) == TS_IO_OK)
+        while (tsu_reader_next(r, &rw, &e) == TSU_IO_OK)
             i++;
         ts = now() - t0;
         CHECK(i == rows);
-        ts_reader_free(r);
+        tsu_reader_free(r);
         fclose(f);
         printf("speed: writer %.2f M rows/s, read_table %.2f M rows/s, streaming %.2f M rows/s "
                "(%ld rows of x,y)\n",
@@ -1397,53 +1397,53 @@ static void test_nomem(void)
     static const char text[] = "alpha_long_name,b\n1,2\n3,4\n5,6\n";
     int ok_seen = 0, nomem_seen = 0, bad = 0;
     for (long n = 0; n < 40; n++) {
-        ts_table t;
-        ts_io_error e;
-        ts_read_options o;
+        tsu_table t;
+        tsu_io_error e;
+        tsu_read_options o;
         FILE *f = mem_file(text, sizeof text - 1);
-        ts_io_status st;
-        ts_read_options_init(&o);
+        tsu_io_status st;
+        tsu_read_options_init(&o);
         o.buffer_size = 16; /* the buffer grows too */
-        ts_io__fail_alloc_after(n);
-        st = ts_read_table(f, "t.csv", &o, &t, &e);
-        ts_io__fail_alloc_after(-1);
-        if (st == TS_IO_OK) {
+        tsu_io__fail_alloc_after(n);
+        st = tsu_read_table(f, "t.csv", &o, &t, &e);
+        tsu_io__fail_alloc_after(-1);
+        if (st == TSU_IO_OK) {
             ok_seen++;
             if (t.nrows != 3 || t.cols[1][2] != 6)
                 bad++;
-        } else if (st == TS_IO_ERR_NOMEM && strcmp(e.msg, "t.csv: out of memory") == 0 &&
+        } else if (st == TSU_IO_ERR_NOMEM && strcmp(e.msg, "t.csv: out of memory") == 0 &&
                    t.cols == NULL && t.names == NULL) {
             nomem_seen++;
         } else {
             bad++;
             fprintf(stderr, "nomem %ld: status %d %s\n", n, st, e.msg);
         }
-        ts_table_free(&t);
+        tsu_table_free(&t);
         fclose(f);
     }
     CHECKF(bad == 0 && ok_seen > 0 && nomem_seen >= 10, "bad %d ok %d nomem %d", bad, ok_seen,
            nomem_seen);
     {
-        ts_reader *r;
-        ts_io_error e;
-        ts_out *o;
+        tsu_reader *r;
+        tsu_io_error e;
+        tsu_out *o;
         char msg[200];
         FILE *f = tmpfile();
         for (long n = 0; n < 3; n++) {
-            ts_io__fail_alloc_after(n);
-            CHECK(ts_reader_open(&r, f, "t", NULL, &e) == TS_IO_ERR_NOMEM && r == NULL &&
+            tsu_io__fail_alloc_after(n);
+            CHECK(tsu_reader_open(&r, f, "t", NULL, &e) == TSU_IO_ERR_NOMEM && r == NULL &&
                   strcmp(e.msg, "t: out of memory") == 0);
-            ts_io__fail_alloc_after(-1);
+            tsu_io__fail_alloc_after(-1);
         }
         for (long n = 0; n < 3; n++) {
-            ts_io__fail_alloc_after(n);
-            CHECK(ts_out_open(&o, "/tmp/x.csv", 0, msg, sizeof msg) == ENOMEM && o == NULL &&
+            tsu_io__fail_alloc_after(n);
+            CHECK(tsu_out_open(&o, "/tmp/x.csv", 0, msg, sizeof msg) == ENOMEM && o == NULL &&
                   strcmp(msg, "out of memory") == 0);
-            ts_io__fail_alloc_after(-1);
+            tsu_io__fail_alloc_after(-1);
         }
-        ts_io__fail_alloc_after(0);
-        CHECK(ts_writer_new(f, ',') == NULL);
-        ts_io__fail_alloc_after(-1);
+        tsu_io__fail_alloc_after(0);
+        CHECK(tsu_writer_new(f, ',') == NULL);
+        tsu_io__fail_alloc_after(-1);
         fclose(f);
     }
 }

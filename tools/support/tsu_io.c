@@ -1,8 +1,8 @@
-/* ts_io: numbers, table reader, safe output, row writer (see ts_io.h).
- * Tool side only (trigspline_tools), not part of libtrigspline. */
+/* tsu_io: numbers, table reader, safe output, row writer (see tsu_io.h).
+ * Tool side only (trigspline_support), not part of libtrigspline. */
 #define _POSIX_C_SOURCE 200809L
 
-#include "ts_io.h"
+#include "tsu_io.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -26,7 +26,7 @@
 /* Integer helpers                                                      */
 /* ================================================================== */
 
-#if defined(__SIZEOF_INT128__) && !defined(TS_IO_NO_INT128)
+#if defined(__SIZEOF_INT128__) && !defined(TSU_IO_NO_INT128)
 __extension__ typedef unsigned __int128 io_u128;
 static void mul64(uint64_t a, uint64_t b, uint64_t *hi, uint64_t *lo)
 {
@@ -84,8 +84,8 @@ static const uint64_t POW10U[20] = {
 /* Powers of ten: 10^k ≈ P·2^s, 2^127 <= P < 2^128                      */
 /* ================================================================== */
 
-/* 10^(27a) = T·2^s truncated, a = -13..12; printed by tests/data/io_gen_pow10.py
- * (exact rational arithmetic).  Checked exactly by tests/test_io.c. */
+/* 10^(27a) = T·2^s truncated, a = -13..12; printed by tools/support/tsu_io_gen_pow10.py
+ * (exact rational arithmetic).  Checked exactly by tests/tools/test_io.c. */
 static const struct p10e {
     uint64_t hi, lo;
     int s, exact;
@@ -118,7 +118,7 @@ static const struct p10e {
     {0x9e19db92b4e31ba9u, 0x6c07a2c26a8346d1u, 949, 0},   /* 10^324 */
 };
 
-int ts_io__pow10_entry(int a, unsigned long long *hi, unsigned long long *lo, int *s, int *exact)
+int tsu_io__pow10_entry(int a, unsigned long long *hi, unsigned long long *lo, int *s, int *exact)
 {
     if (!(-13 <= a && a <= 12) || !hi || !lo || !s || !exact)
         return -1;
@@ -431,7 +431,7 @@ static int strtod_fallback(const char *m, const char *mend, long expv, double *o
     return isinf(*out) ? 1 : 0;
 }
 
-ts_num_status ts_parse_double(const char *s, const char *end, double *out, const char **stop)
+tsu_num_status tsu_parse_double(const char *s, const char *end, double *out, const char **stop)
 {
     const char *p = s, *mstart;
     int neg = 0, any = 0, nd = 0, trunc = 0, r;
@@ -444,7 +444,7 @@ ts_num_status ts_parse_double(const char *s, const char *end, double *out, const
     if (!s) {
         if (stop)
             *stop = s;
-        return TS_NUM_SYNTAX;
+        return TSU_NUM_SYNTAX;
     }
     if (!end)
         end = s + strlen(s);
@@ -463,11 +463,11 @@ ts_num_status ts_parse_double(const char *s, const char *end, double *out, const
         } else {
             if (stop)
                 *stop = p;
-            return TS_NUM_SYNTAX;
+            return TSU_NUM_SYNTAX;
         }
         if (stop)
             *stop = p + n;
-        return TS_NUM_NONFINITE;
+        return TSU_NUM_NONFINITE;
     }
     mstart = p;
     while (p < end && *p == '0') {
@@ -523,7 +523,7 @@ ts_num_status ts_parse_double(const char *s, const char *end, double *out, const
     if (!any) {
         if (stop)
             *stop = p;
-        return TS_NUM_SYNTAX;
+        return TSU_NUM_SYNTAX;
     }
     {
         const char *mend = p;
@@ -550,16 +550,16 @@ ts_num_status ts_parse_double(const char *s, const char *end, double *out, const
             *stop = p;
         if (w == 0) {
             *out = neg ? -0.0 : 0.0;
-            return TS_NUM_OK;
+            return TSU_NUM_OK;
         }
         x10 = e10 + nd - 1; /* 10^x10 <= value < 10^(x10+1) */
         if (x10 > 309) {
             *out = neg ? -HUGE_VAL : HUGE_VAL;
-            return TS_NUM_RANGE;
+            return TSU_NUM_RANGE;
         }
         if (x10 < -325) { /* below 1e-325 < 2^-1075: rounds to zero */
             *out = neg ? -0.0 : 0.0;
-            return TS_NUM_OK;
+            return TSU_NUM_OK;
         }
         r = dec_to_double(w, (int)e10, &v);
         if (trunc && r == 0) {
@@ -571,10 +571,10 @@ ts_num_status ts_parse_double(const char *s, const char *end, double *out, const
     }
     if (r) {
         *out = neg ? -HUGE_VAL : HUGE_VAL;
-        return TS_NUM_RANGE;
+        return TSU_NUM_RANGE;
     }
     *out = neg ? -v : v;
-    return TS_NUM_OK;
+    return TSU_NUM_OK;
 }
 
 /* ================================================================== */
@@ -720,7 +720,7 @@ static const char DIGITS2[201] = "0001020304050607080910111213141516171819202122
                                  "40414243444546474849505152535455565758596061626364656667686970717273747576777879"
                                  "8081828384858687888990919293949596979899";
 
-size_t ts_format_double(double v, char buf[TS_FMT_SIZE])
+size_t tsu_format_double(double v, char buf[TSU_FMT_SIZE])
 {
     uint64_t bits = double_to_bits(v), c;
     char dig[24], *o = buf;
@@ -825,7 +825,7 @@ size_t ts_format_double(double v, char buf[TS_FMT_SIZE])
 
 static long io_fail_after = -1;
 
-void ts_io__fail_alloc_after(long n) { io_fail_after = n < 0 ? -1 : n; }
+void tsu_io__fail_alloc_after(long n) { io_fail_after = n < 0 ? -1 : n; }
 
 static int io_alloc_fails(void)
 {
@@ -841,32 +841,32 @@ static void *io_realloc(void *p, size_t n) { return io_alloc_fails() ? NULL : re
 /* Errors                                                               */
 /* ================================================================== */
 
-const char *ts_io_strerror(ts_io_status st)
+const char *tsu_io_strerror(tsu_io_status st)
 {
     switch (st) {
-    case TS_IO_OK: return "success";
-    case TS_IO_END: return "end of input";
-    case TS_IO_ERR_NULL: return "null argument";
-    case TS_IO_ERR_NOMEM: return "out of memory";
-    case TS_IO_ERR_OVERFLOW: return "size overflow";
-    case TS_IO_ERR_OPTION: return "invalid option";
-    case TS_IO_ERR_OPEN: return "cannot open input";
-    case TS_IO_ERR_READ: return "read error";
-    case TS_IO_ERR_EMPTY: return "no data";
-    case TS_IO_ERR_NUMBER: return "not a number";
-    case TS_IO_ERR_NONFINITE: return "not a finite number";
-    case TS_IO_ERR_RANGE: return "number out of range";
-    case TS_IO_ERR_FIELDS: return "wrong number of fields";
-    case TS_IO_ERR_LINE: return "line too long";
-    case TS_IO_STATUS_COUNT_: break;
+    case TSU_IO_OK: return "success";
+    case TSU_IO_END: return "end of input";
+    case TSU_IO_ERR_NULL: return "null argument";
+    case TSU_IO_ERR_NOMEM: return "out of memory";
+    case TSU_IO_ERR_OVERFLOW: return "size overflow";
+    case TSU_IO_ERR_OPTION: return "invalid option";
+    case TSU_IO_ERR_OPEN: return "cannot open input";
+    case TSU_IO_ERR_READ: return "read error";
+    case TSU_IO_ERR_EMPTY: return "no data";
+    case TSU_IO_ERR_NUMBER: return "not a number";
+    case TSU_IO_ERR_NONFINITE: return "not a finite number";
+    case TSU_IO_ERR_RANGE: return "number out of range";
+    case TSU_IO_ERR_FIELDS: return "wrong number of fields";
+    case TSU_IO_ERR_LINE: return "line too long";
+    case TSU_IO_STATUS_COUNT_: break;
     }
     return "unknown status";
 }
 
-static void err_clear(ts_io_error *e)
+static void err_clear(tsu_io_error *e)
 {
     if (e) {
-        e->status = TS_IO_OK;
+        e->status = TSU_IO_OK;
         e->sys_errno = 0;
         e->line = 0;
         e->column = 0;
@@ -875,11 +875,11 @@ static void err_clear(ts_io_error *e)
     }
 }
 
-static void err_set(ts_io_error *e, ts_io_status st, int sys, const char *name,
+static void err_set(tsu_io_error *e, tsu_io_status st, int sys, const char *name,
                     unsigned long long line, size_t col, size_t field, const char *fmt, ...)
     IO_PRINTF(8, 9);
 
-static void err_set(ts_io_error *e, ts_io_status st, int sys, const char *name,
+static void err_set(tsu_io_error *e, tsu_io_status st, int sys, const char *name,
                     unsigned long long line, size_t col, size_t field, const char *fmt, ...)
 {
     va_list ap;
@@ -945,7 +945,7 @@ static void quote_text(char *dst, size_t dsz, const char *s, const char *e)
 /* Streaming reader                                                     */
 /* ================================================================== */
 
-struct ts_reader {
+struct tsu_reader {
     FILE *fp;
     char *name;
     char *buf;
@@ -954,8 +954,8 @@ struct ts_reader {
     unsigned long long line;     /* physical lines consumed */
     unsigned long long row_line; /* line of the last row returned */
     unsigned long long rows;
-    ts_delim delim;
-    ts_header header;
+    tsu_delim delim;
+    tsu_header header;
     int seen_content;
     size_t ncols;
     char **names;
@@ -964,18 +964,18 @@ struct ts_reader {
     size_t rowcap;
     const char *ls; /* start of the current line (columns count from here) */
     int failed;
-    ts_io_error saved;
+    tsu_io_error saved;
 };
 
-void ts_read_options_init(ts_read_options *opt)
+void tsu_read_options_init(tsu_read_options *opt)
 {
     if (!opt)
         return;
-    opt->delim = TS_DELIM_AUTO;
-    opt->header = TS_HEADER_AUTO;
+    opt->delim = TSU_DELIM_AUTO;
+    opt->header = TSU_HEADER_AUTO;
     opt->ncols = 0;
-    opt->max_line = TS_IO_MAX_LINE;
-    opt->buffer_size = TS_IO_BUFFER;
+    opt->max_line = TSU_IO_MAX_LINE;
+    opt->buffer_size = TSU_IO_BUFFER;
     opt->track_lines = 1;
 }
 
@@ -989,35 +989,35 @@ static char *dup_str(const char *s, size_t n)
     return d;
 }
 
-ts_io_status ts_reader_open(ts_reader **out, FILE *fp, const char *name,
-                            const ts_read_options *opt, ts_io_error *err)
+tsu_io_status tsu_reader_open(tsu_reader **out, FILE *fp, const char *name,
+                            const tsu_read_options *opt, tsu_io_error *err)
 {
-    ts_read_options def;
-    ts_reader *r;
+    tsu_read_options def;
+    tsu_reader *r;
     err_clear(err);
     if (out)
         *out = NULL;
     if (!name)
         name = "<input>";
     if (!out || !fp) {
-        err_set(err, TS_IO_ERR_NULL, 0, name, 0, 0, 0, "null argument");
-        return TS_IO_ERR_NULL;
+        err_set(err, TSU_IO_ERR_NULL, 0, name, 0, 0, 0, "null argument");
+        return TSU_IO_ERR_NULL;
     }
     if (!opt) {
-        ts_read_options_init(&def);
+        tsu_read_options_init(&def);
         opt = &def;
     }
-    if (!(opt->delim >= TS_DELIM_AUTO && opt->delim <= TS_DELIM_SPACE) ||
-        !(opt->header >= TS_HEADER_AUTO && opt->header <= TS_HEADER_YES) || opt->max_line < 16 ||
+    if (!(opt->delim >= TSU_DELIM_AUTO && opt->delim <= TSU_DELIM_SPACE) ||
+        !(opt->header >= TSU_HEADER_AUTO && opt->header <= TSU_HEADER_YES) || opt->max_line < 16 ||
         opt->max_line >= SIZE_MAX / 4 || opt->buffer_size < 16) {
-        err_set(err, TS_IO_ERR_OPTION, 0, name, 0, 0, 0, "invalid option");
-        return TS_IO_ERR_OPTION;
+        err_set(err, TSU_IO_ERR_OPTION, 0, name, 0, 0, 0, "invalid option");
+        return TSU_IO_ERR_OPTION;
     }
     r = io_calloc(1, sizeof *r);
     if (!r || !(r->name = dup_str(name, strlen(name)))) {
         free(r);
-        err_set(err, TS_IO_ERR_NOMEM, 0, name, 0, 0, 0, "out of memory");
-        return TS_IO_ERR_NOMEM;
+        err_set(err, TSU_IO_ERR_NOMEM, 0, name, 0, 0, 0, "out of memory");
+        return TSU_IO_ERR_NOMEM;
     }
     r->fp = fp;
     r->cap_max = opt->max_line + 1; /* a line of max_line bytes plus its '\n' */
@@ -1026,14 +1026,14 @@ ts_io_status ts_reader_open(ts_reader **out, FILE *fp, const char *name,
     if (!r->buf) {
         free(r->name);
         free(r);
-        err_set(err, TS_IO_ERR_NOMEM, 0, name, 0, 0, 0, "out of memory");
-        return TS_IO_ERR_NOMEM;
+        err_set(err, TSU_IO_ERR_NOMEM, 0, name, 0, 0, 0, "out of memory");
+        return TSU_IO_ERR_NOMEM;
     }
     r->delim = opt->delim;
     r->header = opt->header;
     r->ncols = opt->ncols;
     *out = r;
-    return TS_IO_OK;
+    return TSU_IO_OK;
 }
 
 static void free_names(char **names, size_t n)
@@ -1046,7 +1046,7 @@ static void free_names(char **names, size_t n)
     free(names);
 }
 
-void ts_reader_free(ts_reader *r)
+void tsu_reader_free(tsu_reader *r)
 {
     if (!r)
         return;
@@ -1057,14 +1057,14 @@ void ts_reader_free(ts_reader *r)
     free(r);
 }
 
-size_t ts_reader_ncols(const ts_reader *r) { return r ? r->ncols : 0; }
-unsigned long long ts_reader_line(const ts_reader *r) { return r ? r->row_line : 0; }
-unsigned long long ts_reader_rows(const ts_reader *r) { return r ? r->rows : 0; }
-size_t ts_reader_nnames(const ts_reader *r) { return r ? r->nnames : 0; }
-const char *ts_reader_source(const ts_reader *r) { return r ? r->name : NULL; }
-ts_delim ts_reader_delim(const ts_reader *r) { return r ? r->delim : TS_DELIM_AUTO; }
+size_t tsu_reader_ncols(const tsu_reader *r) { return r ? r->ncols : 0; }
+unsigned long long tsu_reader_line(const tsu_reader *r) { return r ? r->row_line : 0; }
+unsigned long long tsu_reader_rows(const tsu_reader *r) { return r ? r->rows : 0; }
+size_t tsu_reader_nnames(const tsu_reader *r) { return r ? r->nnames : 0; }
+const char *tsu_reader_source(const tsu_reader *r) { return r ? r->name : NULL; }
+tsu_delim tsu_reader_delim(const tsu_reader *r) { return r ? r->delim : TSU_DELIM_AUTO; }
 
-const char *ts_reader_name(const ts_reader *r, size_t j)
+const char *tsu_reader_name(const tsu_reader *r, size_t j)
 {
     return (r && r->names && j < r->nnames) ? r->names[j] : NULL;
 }
@@ -1076,7 +1076,7 @@ const char *ts_reader_name(const ts_reader *r, size_t j)
 
 /* Next physical line (without '\n') into [*ls, *ls + *ll): 1, 0 at the end, or
  * an error status (negative of it). */
-static int get_line(ts_reader *r, char **ls, size_t *ll)
+static int get_line(tsu_reader *r, char **ls, size_t *ll)
 {
     for (;;) {
         char *nl = r->pos < r->len ? memchr(r->buf + r->pos, '\n', r->len - r->pos) : NULL;
@@ -1107,12 +1107,12 @@ static int get_line(ts_reader *r, char **ls, size_t *ll)
             size_t nc;
             char *nb;
             if (r->cap >= r->cap_max)
-                return -(int)RFAIL(r, TS_IO_ERR_LINE, 0, r->line + 1, 0, 0,
+                return -(int)RFAIL(r, TSU_IO_ERR_LINE, 0, r->line + 1, 0, 0,
                                    "line longer than %zu bytes", r->cap_max - 1);
             nc = r->cap <= r->cap_max / 2 ? 2 * r->cap : r->cap_max;
             nb = io_realloc(r->buf, nc);
             if (!nb)
-                return -(int)RFAIL(r, TS_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
+                return -(int)RFAIL(r, TSU_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
             r->buf = nb;
             r->cap = nc;
         }
@@ -1123,7 +1123,7 @@ static int get_line(ts_reader *r, char **ls, size_t *ll)
         if (got < want) { /* short read: end of file or error */
             if (ferror(r->fp)) {
                 int e = errno ? errno : EIO;
-                return -(int)RFAIL(r, TS_IO_ERR_READ, e, 0, 0, 0, "read error: %s", strerror(e));
+                return -(int)RFAIL(r, TSU_IO_ERR_READ, e, 0, 0, 0, "read error: %s", strerror(e));
             }
             r->eof = 1;
         }
@@ -1132,7 +1132,7 @@ static int get_line(ts_reader *r, char **ls, size_t *ll)
 
 #define IS_BLANK(c) ((c) == ' ' || (c) == '\t')
 
-static size_t col_of(const ts_reader *r, const char *p) { return (size_t)(p - r->ls) + 1; }
+static size_t col_of(const tsu_reader *r, const char *p) { return (size_t)(p - r->ls) + 1; }
 
 /* Number of fields of a data line [ls, le) (for the message). */
 static size_t count_fields(const char *ls, const char *le, char dc)
@@ -1157,7 +1157,7 @@ static size_t count_fields(const char *ls, const char *le, char dc)
     return n;
 }
 
-static char delim_char(ts_delim d) { return d == TS_DELIM_COMMA ? ',' : d == TS_DELIM_TAB ? '\t' : 0; }
+static char delim_char(tsu_delim d) { return d == TSU_DELIM_COMMA ? ',' : d == TSU_DELIM_TAB ? '\t' : 0; }
 
 /* Header fields: split at the delimiter (quoted names may contain it). */
 typedef struct hfield {
@@ -1221,8 +1221,8 @@ static int looks_numeric(const char *s, const char *e)
 {
     const char *stop;
     double v;
-    ts_num_status st = ts_parse_double(s, e, &v, &stop);
-    return st == TS_NUM_NONFINITE || (st != TS_NUM_SYNTAX && stop == e);
+    tsu_num_status st = tsu_parse_double(s, e, &v, &stop);
+    return st == TSU_NUM_NONFINITE || (st != TSU_NUM_SYNTAX && stop == e);
 }
 
 static int is_header(const char *ls, const char *le, char dc)
@@ -1238,7 +1238,7 @@ static int is_header(const char *ls, const char *le, char dc)
     return 0;
 }
 
-static ts_io_status read_header(ts_reader *r, const char *ls, const char *le, char dc)
+static tsu_io_status read_header(tsu_reader *r, const char *ls, const char *le, char dc)
 {
     const char *p = ls;
     hfield f;
@@ -1254,12 +1254,12 @@ static ts_io_status read_header(ts_reader *r, const char *ls, const char *le, ch
             char **nn;
             if (nc > SIZE_MAX / sizeof *names) {
                 free_names(names, n);
-                return RFAIL(r, TS_IO_ERR_OVERFLOW, 0, r->line, 0, 0, "size overflow");
+                return RFAIL(r, TSU_IO_ERR_OVERFLOW, 0, r->line, 0, 0, "size overflow");
             }
             nn = io_realloc(names, nc * sizeof *names);
             if (!nn) {
                 free_names(names, n);
-                return RFAIL(r, TS_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
+                return RFAIL(r, TSU_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
             }
             names = nn;
             cap = nc;
@@ -1267,7 +1267,7 @@ static ts_io_status read_header(ts_reader *r, const char *ls, const char *le, ch
         nm = io_malloc((size_t)(f.e - f.s) + 1);
         if (!nm) {
             free_names(names, n);
-            return RFAIL(r, TS_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
+            return RFAIL(r, TSU_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
         }
         for (q = f.s, d = nm; q < f.e; q++) {
             *d++ = *q;
@@ -1288,16 +1288,16 @@ static ts_io_status read_header(ts_reader *r, const char *ls, const char *le, ch
             col = col_of(r, f.quoted ? f.s - 1 : f.s);
         }
         free_names(names, n);
-        return RFAIL(r, TS_IO_ERR_FIELDS, 0, r->line, col, 0,
+        return RFAIL(r, TSU_IO_ERR_FIELDS, 0, r->line, col, 0,
                      "wrong number of fields (%zu, expected %zu)", n, r->ncols);
     }
     r->names = names;
     r->nnames = n;
     r->ncols = n;
-    return TS_IO_OK;
+    return TSU_IO_OK;
 }
 
-static ts_io_status field_error(ts_reader *r, ts_num_status ns, const char *fs, const char *le,
+static tsu_io_status field_error(tsu_reader *r, tsu_num_status ns, const char *fs, const char *le,
                                 char dc, size_t field)
 {
     const char *fe = fs;
@@ -1307,18 +1307,18 @@ static ts_io_status field_error(ts_reader *r, ts_num_status ns, const char *fs, 
     while (fe > fs && IS_BLANK(fe[-1]))
         fe--;
     quote_text(q, sizeof q, fs, fe);
-    if (ns == TS_NUM_NONFINITE)
-        return RFAIL(r, TS_IO_ERR_NONFINITE, 0, r->line, col_of(r, fs), field,
+    if (ns == TSU_NUM_NONFINITE)
+        return RFAIL(r, TSU_IO_ERR_NONFINITE, 0, r->line, col_of(r, fs), field,
                      "not a finite number: %s", q);
-    if (ns == TS_NUM_RANGE)
-        return RFAIL(r, TS_IO_ERR_RANGE, 0, r->line, col_of(r, fs), field,
+    if (ns == TSU_NUM_RANGE)
+        return RFAIL(r, TSU_IO_ERR_RANGE, 0, r->line, col_of(r, fs), field,
                      "number out of range: %s", q);
-    return RFAIL(r, TS_IO_ERR_NUMBER, 0, r->line, col_of(r, fs), field,
+    return RFAIL(r, TSU_IO_ERR_NUMBER, 0, r->line, col_of(r, fs), field,
                  "expected a number, found %s", q);
 }
 
 /* Fields of the data line [ls, le) (no comment, no trailing blanks, not blank). */
-static ts_io_status parse_data(ts_reader *r, const char *ls, const char *le)
+static tsu_io_status parse_data(tsu_reader *r, const char *ls, const char *le)
 {
     const char *p = ls;
     char dc = delim_char(r->delim);
@@ -1326,7 +1326,7 @@ static ts_io_status parse_data(ts_reader *r, const char *ls, const char *le)
     for (;;) {
         const char *fs, *stop, *q;
         double v;
-        ts_num_status ns;
+        tsu_num_status ns;
         if (dc == '\t')
             while (p < le && *p == ' ')
                 p++;
@@ -1335,12 +1335,12 @@ static ts_io_status parse_data(ts_reader *r, const char *ls, const char *le)
                 p++;
         fs = p;
         if (r->ncols && nf == r->ncols)
-            return RFAIL(r, TS_IO_ERR_FIELDS, 0, r->line, col_of(r, fs), 0,
+            return RFAIL(r, TSU_IO_ERR_FIELDS, 0, r->line, col_of(r, fs), 0,
                          "wrong number of fields (%zu, expected %zu)", count_fields(ls, le, dc),
                          r->ncols);
         if (dc && (p == le || *p == dc))
-            return RFAIL(r, TS_IO_ERR_NUMBER, 0, r->line, col_of(r, fs), nf + 1, "empty field");
-        ns = ts_parse_double(p, le, &v, &stop);
+            return RFAIL(r, TSU_IO_ERR_NUMBER, 0, r->line, col_of(r, fs), nf + 1, "empty field");
+        ns = tsu_parse_double(p, le, &v, &stop);
         q = stop;
         if (dc == '\t')
             while (q < le && *q == ' ')
@@ -1348,16 +1348,16 @@ static ts_io_status parse_data(ts_reader *r, const char *ls, const char *le)
         else
             while (q < le && IS_BLANK(*q))
                 q++;
-        if (ns != TS_NUM_OK || !(q == le || (dc ? *q == dc : q > stop)))
+        if (ns != TSU_NUM_OK || !(q == le || (dc ? *q == dc : q > stop)))
             return field_error(r, ns, fs, le, dc, nf + 1);
         if (nf == r->rowcap) {
             size_t nc = r->rowcap ? 2 * r->rowcap : 8;
             double *nr;
             if (nc > SIZE_MAX / sizeof *nr)
-                return RFAIL(r, TS_IO_ERR_OVERFLOW, 0, r->line, 0, 0, "size overflow");
+                return RFAIL(r, TSU_IO_ERR_OVERFLOW, 0, r->line, 0, 0, "size overflow");
             nr = io_realloc(r->row, nc * sizeof *nr);
             if (!nr)
-                return RFAIL(r, TS_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
+                return RFAIL(r, TSU_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
             r->row = nr;
             r->rowcap = nc;
         }
@@ -1367,34 +1367,34 @@ static ts_io_status parse_data(ts_reader *r, const char *ls, const char *le)
         p = dc ? q + 1 : q;
     }
     if (r->ncols && nf != r->ncols)
-        return RFAIL(r, TS_IO_ERR_FIELDS, 0, r->line, col_of(r, le), 0,
+        return RFAIL(r, TSU_IO_ERR_FIELDS, 0, r->line, col_of(r, le), 0,
                      "wrong number of fields (%zu, expected %zu)", nf, r->ncols);
     r->ncols = nf;
-    return TS_IO_OK;
+    return TSU_IO_OK;
 }
 
-ts_io_status ts_reader_next(ts_reader *r, const double **row, ts_io_error *err)
+tsu_io_status tsu_reader_next(tsu_reader *r, const double **row, tsu_io_error *err)
 {
     err_clear(err);
     if (row)
         *row = NULL;
     if (!r) {
-        err_set(err, TS_IO_ERR_NULL, 0, NULL, 0, 0, 0, "null argument");
-        return TS_IO_ERR_NULL;
+        err_set(err, TSU_IO_ERR_NULL, 0, NULL, 0, 0, 0, "null argument");
+        return TSU_IO_ERR_NULL;
     }
     while (!r->failed) {
         char *ls, *le, *h;
         const char *p;
         size_t ll;
         int g = get_line(r, &ls, &ll);
-        ts_io_status st;
+        tsu_io_status st;
         if (g == 0) {
             if (r->rows == 0) {
-                (void)RFAIL(r, TS_IO_ERR_EMPTY, 0, 0, 0, 0,
+                (void)RFAIL(r, TSU_IO_ERR_EMPTY, 0, 0, 0, 0,
                       r->seen_content ? "no data rows" : "no data (empty input)");
                 break;
             }
-            return TS_IO_END;
+            return TSU_IO_END;
         }
         if (g < 0)
             break;
@@ -1414,27 +1414,27 @@ ts_io_status ts_reader_next(ts_reader *r, const double **row, ts_io_error *err)
             p++;
         if (p == le)
             continue;
-        if (r->delim == TS_DELIM_AUTO)
-            r->delim = memchr(p, ',', (size_t)(le - p))    ? TS_DELIM_COMMA
-                       : memchr(p, '\t', (size_t)(le - p)) ? TS_DELIM_TAB
-                                                           : TS_DELIM_SPACE;
+        if (r->delim == TSU_DELIM_AUTO)
+            r->delim = memchr(p, ',', (size_t)(le - p))    ? TSU_DELIM_COMMA
+                       : memchr(p, '\t', (size_t)(le - p)) ? TSU_DELIM_TAB
+                                                           : TSU_DELIM_SPACE;
         if (!r->seen_content) {
             r->seen_content = 1;
-            if (r->header == TS_HEADER_YES ||
-                (r->header == TS_HEADER_AUTO && is_header(ls, le, delim_char(r->delim)))) {
-                if (read_header(r, ls, le, delim_char(r->delim)) != TS_IO_OK)
+            if (r->header == TSU_HEADER_YES ||
+                (r->header == TSU_HEADER_AUTO && is_header(ls, le, delim_char(r->delim)))) {
+                if (read_header(r, ls, le, delim_char(r->delim)) != TSU_IO_OK)
                     break;
                 continue;
             }
         }
         st = parse_data(r, ls, le);
-        if (st != TS_IO_OK)
+        if (st != TSU_IO_OK)
             break;
         r->rows++;
         r->row_line = r->line;
         if (row)
             *row = r->row;
-        return TS_IO_OK;
+        return TSU_IO_OK;
     }
     if (err)
         *err = r->saved;
@@ -1445,7 +1445,7 @@ ts_io_status ts_reader_next(ts_reader *r, const double **row, ts_io_error *err)
 /* Whole table                                                          */
 /* ================================================================== */
 
-void ts_table_free(ts_table *t)
+void tsu_table_free(tsu_table *t)
 {
     size_t j;
     if (!t)
@@ -1463,71 +1463,71 @@ void ts_table_free(ts_table *t)
 }
 
 /* Grow every column (and lines) to cap rows. */
-static int table_grow(ts_table *t, size_t cap, int track)
+static int table_grow(tsu_table *t, size_t cap, int track)
 {
     size_t j;
     if (cap > SIZE_MAX / sizeof(double) || cap > SIZE_MAX / sizeof(unsigned long long))
-        return TS_IO_ERR_OVERFLOW;
+        return TSU_IO_ERR_OVERFLOW;
     for (j = 0; j < t->ncols; j++) {
         double *nc = io_realloc(t->cols[j], cap * sizeof(double));
         if (!nc)
-            return TS_IO_ERR_NOMEM;
+            return TSU_IO_ERR_NOMEM;
         t->cols[j] = nc;
     }
     if (track) {
         unsigned long long *nl = io_realloc(t->lines, cap * sizeof(unsigned long long));
         if (!nl)
-            return TS_IO_ERR_NOMEM;
+            return TSU_IO_ERR_NOMEM;
         t->lines = nl;
     }
-    return TS_IO_OK;
+    return TSU_IO_OK;
 }
 
-ts_io_status ts_read_table(FILE *fp, const char *name, const ts_read_options *opt,
-                           ts_table *out, ts_io_error *err)
+tsu_io_status tsu_read_table(FILE *fp, const char *name, const tsu_read_options *opt,
+                           tsu_table *out, tsu_io_error *err)
 {
-    ts_reader *r;
-    ts_io_status st;
+    tsu_reader *r;
+    tsu_io_status st;
     const double *row;
     size_t cap = 0, n = 0, j;
     int track = opt ? opt->track_lines : 1;
     err_clear(err);
     if (!out) {
-        err_set(err, TS_IO_ERR_NULL, 0, name, 0, 0, 0, "null argument");
-        return TS_IO_ERR_NULL;
+        err_set(err, TSU_IO_ERR_NULL, 0, name, 0, 0, 0, "null argument");
+        return TSU_IO_ERR_NULL;
     }
     memset(out, 0, sizeof *out);
-    st = ts_reader_open(&r, fp, name, opt, err);
-    if (st != TS_IO_OK)
+    st = tsu_reader_open(&r, fp, name, opt, err);
+    if (st != TSU_IO_OK)
         return st;
-    while ((st = ts_reader_next(r, &row, err)) == TS_IO_OK) {
+    while ((st = tsu_reader_next(r, &row, err)) == TSU_IO_OK) {
         if (!out->cols) {
-            out->ncols = ts_reader_ncols(r);
+            out->ncols = tsu_reader_ncols(r);
             out->cols = io_calloc(out->ncols, sizeof *out->cols);
             if (!out->cols) {
-                st = TS_IO_ERR_NOMEM;
+                st = TSU_IO_ERR_NOMEM;
                 break;
             }
         }
         if (n == cap) {
             size_t nc = cap ? cap * 2 : 4096;
             if (nc < cap) {
-                st = TS_IO_ERR_OVERFLOW;
+                st = TSU_IO_ERR_OVERFLOW;
                 break;
             }
-            st = (ts_io_status)table_grow(out, nc, track);
-            if (st != TS_IO_OK)
+            st = (tsu_io_status)table_grow(out, nc, track);
+            if (st != TSU_IO_OK)
                 break;
             cap = nc;
         }
         for (j = 0; j < out->ncols; j++)
             out->cols[j][n] = row[j];
         if (track)
-            out->lines[n] = ts_reader_line(r);
+            out->lines[n] = tsu_reader_line(r);
         n++;
         out->nrows = n;
     }
-    if (st == TS_IO_END) {
+    if (st == TSU_IO_END) {
         out->names = r->names; /* taken over */
         r->names = NULL;
         r->nnames = 0;
@@ -1543,40 +1543,40 @@ ts_io_status ts_read_table(FILE *fp, const char *name, const ts_read_options *op
                     out->lines = nl;
             }
         }
-        ts_reader_free(r);
-        return TS_IO_OK;
+        tsu_reader_free(r);
+        return TSU_IO_OK;
     }
-    if (st == TS_IO_ERR_NOMEM || st == TS_IO_ERR_OVERFLOW) {
-        if (err && err->status == TS_IO_OK)
+    if (st == TSU_IO_ERR_NOMEM || st == TSU_IO_ERR_OVERFLOW) {
+        if (err && err->status == TSU_IO_OK)
             err_set(err, st, 0, r->name, 0, 0, 0, "%s",
-                    st == TS_IO_ERR_NOMEM ? "out of memory" : "size overflow");
+                    st == TSU_IO_ERR_NOMEM ? "out of memory" : "size overflow");
     }
-    ts_reader_free(r);
-    ts_table_free(out);
+    tsu_reader_free(r);
+    tsu_table_free(out);
     return st;
 }
 
-ts_io_status ts_read_table_path(const char *path, const ts_read_options *opt, ts_table *out,
-                                ts_io_error *err)
+tsu_io_status tsu_read_table_path(const char *path, const tsu_read_options *opt, tsu_table *out,
+                                tsu_io_error *err)
 {
     FILE *fp;
-    ts_io_status st;
+    tsu_io_status st;
     err_clear(err);
     if (out)
         memset(out, 0, sizeof *out);
     if (!path || !out) {
-        err_set(err, TS_IO_ERR_NULL, 0, path, 0, 0, 0, "null argument");
-        return TS_IO_ERR_NULL;
+        err_set(err, TSU_IO_ERR_NULL, 0, path, 0, 0, 0, "null argument");
+        return TSU_IO_ERR_NULL;
     }
     if (strcmp(path, "-") == 0)
-        return ts_read_table(stdin, "<stdin>", opt, out, err);
+        return tsu_read_table(stdin, "<stdin>", opt, out, err);
     fp = fopen(path, "rb");
     if (!fp) {
         int e = errno;
-        err_set(err, TS_IO_ERR_OPEN, e, path, 0, 0, 0, "cannot open: %s", strerror(e));
-        return TS_IO_ERR_OPEN;
+        err_set(err, TSU_IO_ERR_OPEN, e, path, 0, 0, 0, "cannot open: %s", strerror(e));
+        return TSU_IO_ERR_OPEN;
     }
-    st = ts_read_table(fp, path, opt, out, err);
+    st = tsu_read_table(fp, path, opt, out, err);
     fclose(fp);
     return st;
 }
@@ -1585,7 +1585,7 @@ ts_io_status ts_read_table_path(const char *path, const ts_read_options *opt, ts
 /* Safe output files                                                    */
 /* ================================================================== */
 
-struct ts_out {
+struct tsu_out {
     FILE *fp;
     char *path;
     char *tmp;
@@ -1605,16 +1605,16 @@ static void msg_set(char *buf, size_t len, const char *fmt, ...)
     va_end(ap);
 }
 
-static void out_free(ts_out *o)
+static void out_free(tsu_out *o)
 {
     free(o->path);
     free(o->tmp);
     free(o);
 }
 
-int ts_out_open(ts_out **out, const char *path, unsigned flags, char *errbuf, size_t errlen)
+int tsu_out_open(tsu_out **out, const char *path, unsigned flags, char *errbuf, size_t errlen)
 {
-    ts_out *o;
+    tsu_out *o;
     size_t n;
     int fd, e;
     struct stat st;
@@ -1626,7 +1626,7 @@ int ts_out_open(ts_out **out, const char *path, unsigned flags, char *errbuf, si
         msg_set(errbuf, errlen, "no output path");
         return EINVAL;
     }
-    if (flags & ~TS_OUT_FSYNC) {
+    if (flags & ~TSU_OUT_FSYNC) {
         msg_set(errbuf, errlen, "invalid output flags");
         return EINVAL;
     }
@@ -1679,9 +1679,9 @@ int ts_out_open(ts_out **out, const char *path, unsigned flags, char *errbuf, si
     return 0;
 }
 
-FILE *ts_out_file(const ts_out *o) { return o ? o->fp : NULL; }
-const char *ts_out_path(const ts_out *o) { return o ? o->path : NULL; }
-const char *ts_out_temp(const ts_out *o) { return o ? o->tmp : NULL; }
+FILE *tsu_out_file(const tsu_out *o) { return o ? o->fp : NULL; }
+const char *tsu_out_path(const tsu_out *o) { return o ? o->path : NULL; }
+const char *tsu_out_temp(const tsu_out *o) { return o ? o->tmp : NULL; }
 
 static void fsync_dir_of(const char *path)
 {
@@ -1702,7 +1702,7 @@ static void fsync_dir_of(const char *path)
     free(dir);
 }
 
-int ts_out_commit(ts_out *o, char *errbuf, size_t errlen)
+int tsu_out_commit(tsu_out *o, char *errbuf, size_t errlen)
 {
     int e = 0;
     msg_set(errbuf, errlen, "%s", "");
@@ -1724,7 +1724,7 @@ int ts_out_commit(ts_out *o, char *errbuf, size_t errlen)
         e = errno ? errno : EIO;
     if (!e && ferror(o->fp))
         e = EIO; /* an earlier write failed, cause unknown */
-    if (!e && (o->flags & TS_OUT_FSYNC) && fsync(fileno(o->fp)) != 0)
+    if (!e && (o->flags & TSU_OUT_FSYNC) && fsync(fileno(o->fp)) != 0)
         e = errno ? errno : EIO;
     errno = 0;
     if (fclose(o->fp) != 0 && !e)
@@ -1743,13 +1743,13 @@ int ts_out_commit(ts_out *o, char *errbuf, size_t errlen)
         out_free(o);
         return e;
     }
-    if (o->flags & TS_OUT_FSYNC)
+    if (o->flags & TSU_OUT_FSYNC)
         fsync_dir_of(o->path);
     out_free(o);
     return 0;
 }
 
-void ts_out_abort(ts_out *o)
+void tsu_out_abort(tsu_out *o)
 {
     if (!o)
         return;
@@ -1769,7 +1769,7 @@ void ts_out_abort(ts_out *o)
 
 #define WR_BUF 65536
 
-struct ts_writer {
+struct tsu_writer {
     FILE *fp;
     int err;
     char delim;
@@ -1777,9 +1777,9 @@ struct ts_writer {
     char buf[WR_BUF];
 };
 
-ts_writer *ts_writer_new(FILE *fp, char delim)
+tsu_writer *tsu_writer_new(FILE *fp, char delim)
 {
-    ts_writer *w;
+    tsu_writer *w;
     if (!fp || !(delim == ',' || delim == '\t' || delim == ' ' || delim == ';'))
         return NULL;
     w = io_malloc(sizeof *w);
@@ -1792,7 +1792,7 @@ ts_writer *ts_writer_new(FILE *fp, char delim)
     return w;
 }
 
-static int wr_drain(ts_writer *w)
+static int wr_drain(tsu_writer *w)
 {
     if (w->len && !w->err) {
         errno = 0;
@@ -1803,7 +1803,7 @@ static int wr_drain(ts_writer *w)
     return w->err;
 }
 
-int ts_writer_row(ts_writer *w, const double *v, size_t n)
+int tsu_writer_row(tsu_writer *w, const double *v, size_t n)
 {
     size_t i;
     if (!w)
@@ -1813,11 +1813,11 @@ int ts_writer_row(ts_writer *w, const double *v, size_t n)
     if (w->err)
         return w->err;
     for (i = 0; i < n; i++) {
-        if (WR_BUF - w->len < TS_FMT_SIZE + 2 && wr_drain(w))
+        if (WR_BUF - w->len < TSU_FMT_SIZE + 2 && wr_drain(w))
             return w->err;
         if (i)
             w->buf[w->len++] = w->delim;
-        w->len += ts_format_double(v[i], w->buf + w->len);
+        w->len += tsu_format_double(v[i], w->buf + w->len);
     }
     if (w->len == WR_BUF && wr_drain(w))
         return w->err;
@@ -1825,22 +1825,22 @@ int ts_writer_row(ts_writer *w, const double *v, size_t n)
     return w->err;
 }
 
-int ts_writer_xy(ts_writer *w, double x, double y)
+int tsu_writer_xy(tsu_writer *w, double x, double y)
 {
     if (!w)
         return EINVAL;
     if (w->err)
         return w->err;
-    if (WR_BUF - w->len < 2 * TS_FMT_SIZE + 2 && wr_drain(w))
+    if (WR_BUF - w->len < 2 * TSU_FMT_SIZE + 2 && wr_drain(w))
         return w->err;
-    w->len += ts_format_double(x, w->buf + w->len);
+    w->len += tsu_format_double(x, w->buf + w->len);
     w->buf[w->len++] = w->delim;
-    w->len += ts_format_double(y, w->buf + w->len);
+    w->len += tsu_format_double(y, w->buf + w->len);
     w->buf[w->len++] = '\n';
     return w->err;
 }
 
-int ts_writer_text(ts_writer *w, const char *s, size_t len)
+int tsu_writer_text(tsu_writer *w, const char *s, size_t len)
 {
     if (!w)
         return EINVAL;
@@ -1858,7 +1858,7 @@ int ts_writer_text(ts_writer *w, const char *s, size_t len)
     return w->err;
 }
 
-int ts_writer_flush(ts_writer *w)
+int tsu_writer_flush(tsu_writer *w)
 {
     if (!w)
         return EINVAL;
@@ -1870,12 +1870,12 @@ int ts_writer_flush(ts_writer *w)
     return w->err;
 }
 
-int ts_writer_free(ts_writer *w)
+int tsu_writer_free(tsu_writer *w)
 {
     int e;
     if (!w)
         return 0;
-    e = ts_writer_flush(w);
+    e = tsu_writer_flush(w);
     free(w);
     return e;
 }

@@ -1,4 +1,4 @@
-/* trigspline — command-line tool (issue 4; interface: docs/dev/CLI_CONTRACT.md,
+/* trigspline — command-line tool (interface: docs/dev/CLI_CONTRACT.md,
  * manual: docs/trigspline.1). */
 #include "cli.h"
 

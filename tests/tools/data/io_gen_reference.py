@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
-"""Writes tests/data/io_parse_ref.txt and tests/data/io_format_ref.txt, the
-independent references of tests/test_io.c (standard library only; CPython's
+"""Writes tests/tools/data/io_parse_ref.txt and tests/tools/data/io_format_ref.txt, the
+independent references of tests/tools/test_io.c (standard library only; CPython's
 float() is correctly rounded and repr() gives the shortest round-trip string,
 nearest to the value -- David Gay's dtoa, not glibc).
 
 io_parse_ref.txt:  <decimal string> <expected: 16 hex digits of the bits | inf | -inf>
 io_format_ref.txt: <16 hex digits of the bits> <repr()>
-Run from anywhere: python3 tests/data/io_gen_reference.py
+Run from anywhere: python3 tests/tools/data/io_gen_reference.py
 """
 import os
 import random

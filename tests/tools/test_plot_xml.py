@@ -2,7 +2,7 @@
 """Checks the SVG output of the plot module (src/plot.c) with the Python
 standard library only.
 
-    python3 tests/test_plot_xml.py BUILD_DIR
+    python3 tests/tools/test_plot_xml.py BUILD_DIR
 
 1. Runs BUILD_DIR/tests/test_plot into a fresh temporary directory and checks
    each SVG it writes: well-formed XML, <svg> root in the SVG namespace, only

@@ -1,5 +1,5 @@
 /* Seeded robustness test of the tools' support code (tools/support): the
- * table reader, number conversion (ts_io.h) and SVG plots (ts_plot.h) with
+ * table reader, number conversion (tsu_io.h) and SVG plots (tsu_plot.h) with
  * random and hostile input.  The library's own entry points are fuzzed by
  * tests/api/test_random_inputs.c; this half was split off from it because it
  * needs the support headers, which are not part of the public API.
@@ -7,8 +7,8 @@
  * What must hold, whatever the input:
  *  - no crash, no leak, no out-of-bounds access (run under ASan by make test);
  *  - the reader never accepts a non-finite value, agrees with the streaming
- *    reader, and repeats its error; ts_parse_double agrees bit for bit with
- *    glibc strtod on the prefix it accepted; ts_format_double round-trips;
+ *    reader, and repeats its error; tsu_parse_double agrees bit for bit with
+ *    glibc strtod on the prefix it accepted; tsu_format_double round-trips;
  *  - SVG plots of hostile series render to a complete document that never
  *    contains "nan" or "inf"; ticks are increasing and inside their range.
  * Counts are reduced under ASan (__SANITIZE_ADDRESS__) to keep the run short.
@@ -16,8 +16,8 @@
 #define _POSIX_C_SOURCE 200809L
 #include "th.h"
 #include "common/th_rng.h"
-#include "ts_io.h"
-#include "ts_plot.h"
+#include "tsu_io.h"
+#include "tsu_plot.h"
 
 #include <float.h>
 #include <math.h>
@@ -78,8 +78,8 @@ static size_t gen_bytes(char *b, size_t cap)
             len += (size_t)snprintf(b + len, cap - len, "x%cy%cz\n", dc, dc);
         for (size_t r = 0; r < rows && len + 80 < cap; r++) {
             for (size_t c = 0; c < cols; c++) {
-                char nb[TS_FMT_SIZE];
-                size_t l = ts_format_double(th_chance(0.9) ? th_unit() * 200 - 100 : th_hostile(), nb);
+                char nb[TSU_FMT_SIZE];
+                size_t l = tsu_format_double(th_chance(0.9) ? th_unit() * 200 - 100 : th_hostile(), nb);
                 memcpy(b + len, nb, l);
                 len += l;
                 b[len++] = c + 1 < cols ? dc : (th_chance(0.2) ? '\r' : '\n');
@@ -115,9 +115,9 @@ static FILE *open_bytes(const char *b, size_t len)
     return fmemopen((void *)(uintptr_t)b, len, "r");
 }
 
-static int msg_ok(const ts_io_error *e)
+static int msg_ok(const tsu_io_error *e)
 {
-    return memchr(e->msg, '\0', sizeof e->msg) != NULL && ts_io_strerror(e->status) != NULL;
+    return memchr(e->msg, '\0', sizeof e->msg) != NULL && tsu_io_strerror(e->status) != NULL;
 }
 
 static void fuzz_tables(void)
@@ -125,26 +125,26 @@ static void fuzz_tables(void)
     char b[1024];
     for (int it = 0; it < N_TABLE; it++) {
         size_t len = gen_bytes(b, sizeof b);
-        ts_read_options ro;
-        ts_read_options_init(&ro);
-        ro.delim = (ts_delim)(th_chance(0.9) ? (int)th_below(4) : enum_val(4));
-        ro.header = (ts_header)(th_chance(0.9) ? (int)th_below(3) : enum_val(3));
+        tsu_read_options ro;
+        tsu_read_options_init(&ro);
+        ro.delim = (tsu_delim)(th_chance(0.9) ? (int)th_below(4) : enum_val(4));
+        ro.header = (tsu_header)(th_chance(0.9) ? (int)th_below(3) : enum_val(3));
         ro.ncols = th_chance(0.7) ? 0 : th_below(5);
-        ro.max_line = th_chance(0.5) ? TS_IO_MAX_LINE : th_chance(0.9) ? 16 + th_below(100) : th_below(16);
-        ro.buffer_size = th_chance(0.5) ? TS_IO_BUFFER : th_chance(0.9) ? 16 + th_below(64) : th_below(16);
+        ro.max_line = th_chance(0.5) ? TSU_IO_MAX_LINE : th_chance(0.9) ? 16 + th_below(100) : th_below(16);
+        ro.buffer_size = th_chance(0.5) ? TSU_IO_BUFFER : th_chance(0.9) ? 16 + th_below(64) : th_below(16);
         ro.track_lines = (int)th_below(2);
-        const ts_read_options *op = th_chance(0.95) ? &ro : NULL;
+        const tsu_read_options *op = th_chance(0.95) ? &ro : NULL;
 
         FILE *fp = open_bytes(b, len);
         if (!fp)
             continue;
-        ts_table t;
-        ts_io_error e;
-        ts_io_status st = ts_read_table(fp, "fuzz", op, &t, &e);
+        tsu_table t;
+        tsu_io_error e;
+        tsu_io_status st = tsu_read_table(fp, "fuzz", op, &t, &e);
         fclose(fp);
-        CHECK((unsigned)st < (unsigned)TS_IO_STATUS_COUNT_ && st != TS_IO_END && e.status == st &&
+        CHECK((unsigned)st < (unsigned)TSU_IO_STATUS_COUNT_ && st != TSU_IO_END && e.status == st &&
               msg_ok(&e));
-        if (st == TS_IO_OK) {
+        if (st == TSU_IO_OK) {
             n_table_ok++;
             int ok = t.nrows > 0 && t.ncols > 0 && t.cols != NULL;
             for (size_t j = 0; ok && j < t.ncols; j++)
@@ -164,45 +164,45 @@ static void fuzz_tables(void)
         /* the streaming reader agrees */
         fp = open_bytes(b, len);
         if (fp) {
-            ts_reader *r = NULL;
-            ts_io_error e2;
-            ts_io_status so = ts_reader_open(&r, fp, NULL, op, &e2);
-            CHECK((unsigned)so < (unsigned)TS_IO_STATUS_COUNT_ && msg_ok(&e2));
-            if (so == TS_IO_OK) {
+            tsu_reader *r = NULL;
+            tsu_io_error e2;
+            tsu_io_status so = tsu_reader_open(&r, fp, NULL, op, &e2);
+            CHECK((unsigned)so < (unsigned)TSU_IO_STATUS_COUNT_ && msg_ok(&e2));
+            if (so == TSU_IO_OK) {
                 const double *row;
                 size_t rows = 0;
                 int same = 1;
-                ts_io_status sn;
-                while ((sn = ts_reader_next(r, &row, &e2)) == TS_IO_OK && rows < 100000) {
+                tsu_io_status sn;
+                while ((sn = tsu_reader_next(r, &row, &e2)) == TSU_IO_OK && rows < 100000) {
                     CHECK(row != NULL);
-                    size_t nc = ts_reader_ncols(r);
-                    if (st == TS_IO_OK && rows < t.nrows && nc == t.ncols)
+                    size_t nc = tsu_reader_ncols(r);
+                    if (st == TSU_IO_OK && rows < t.nrows && nc == t.ncols)
                         for (size_t j = 0; j < nc; j++)
                             same = same && memcmp(&row[j], &t.cols[j][rows], sizeof(double)) == 0;
                     rows++;
                 }
                 CHECK(msg_ok(&e2));
-                if (st == TS_IO_OK)
-                    CHECKF(sn == TS_IO_END && rows == t.nrows && same,
+                if (st == TSU_IO_OK)
+                    CHECKF(sn == TSU_IO_END && rows == t.nrows && same,
                            "reader: status %d rows %zu vs table %zu", (int)sn, rows, t.nrows);
                 else
                     CHECKF(sn == st, "reader status %d vs table %d", (int)sn, (int)st);
-                if (sn != TS_IO_END) { /* the error repeats */
-                    ts_io_error e3;
-                    CHECK(ts_reader_next(r, &row, &e3) == sn && row == NULL &&
+                if (sn != TSU_IO_END) { /* the error repeats */
+                    tsu_io_error e3;
+                    CHECK(tsu_reader_next(r, &row, &e3) == sn && row == NULL &&
                           strcmp(e3.msg, e2.msg) == 0);
                 }
             } else {
                 CHECK(r == NULL);
             }
-            ts_reader_free(r);
+            tsu_reader_free(r);
             fclose(fp);
         }
-        ts_table_free(&t);
+        tsu_table_free(&t);
         CHECK(t.cols == NULL && t.nrows == 0);
     }
-    ts_table_free(NULL);
-    ts_reader_free(NULL);
+    tsu_table_free(NULL);
+    tsu_reader_free(NULL);
 }
 
 static void fuzz_numbers(void)
@@ -218,9 +218,9 @@ static void fuzz_numbers(void)
             s[i] = th_chance(0.97) ? nchars[th_below(sizeof nchars - 1)] : (char)th_u64();
         double v = 123.0;
         const char *stop = NULL;
-        ts_num_status st = ts_parse_double(s, s + len, &v, &stop);
+        tsu_num_status st = tsu_parse_double(s, s + len, &v, &stop);
         CHECK((unsigned)st <= 3u && stop >= s && stop <= s + len);
-        if (st == TS_NUM_OK || st == TS_NUM_RANGE) {
+        if (st == TSU_NUM_OK || st == TSU_NUM_RANGE) {
             char tmp[1024];
             size_t l = (size_t)(stop - s);
             memcpy(tmp, s, l);
@@ -230,7 +230,7 @@ static void fuzz_numbers(void)
             CHECKF(memcmp(&ref, &v, sizeof v) == 0 && e == tmp + l,
                    "\"%s\": %.17g vs strtod %.17g", tmp, v, ref);
             n_num_ok++;
-        } else if (st == TS_NUM_SYNTAX) {
+        } else if (st == TSU_NUM_SYNTAX) {
             CHECK(v == 0.0);
         } else {
             CHECK(!isfinite(v));
@@ -243,16 +243,16 @@ static void fuzz_numbers(void)
         memcpy(&d, &bits, sizeof d);
         if (th_chance(0.2))
             d = th_hostile();
-        char buf[TS_FMT_SIZE];
+        char buf[TSU_FMT_SIZE];
         memset(buf, 'Z', sizeof buf);
-        size_t fl = ts_format_double(d, buf);
-        CHECK(fl < TS_FMT_SIZE && buf[fl] == '\0' && strlen(buf) == fl);
+        size_t fl = tsu_format_double(d, buf);
+        CHECK(fl < TSU_FMT_SIZE && buf[fl] == '\0' && strlen(buf) == fl);
         double back;
-        ts_num_status sb = ts_parse_double(buf, NULL, &back, &stop);
+        tsu_num_status sb = tsu_parse_double(buf, NULL, &back, &stop);
         if (isnan(d))
-            CHECK(sb == TS_NUM_NONFINITE && isnan(back));
+            CHECK(sb == TSU_NUM_NONFINITE && isnan(back));
         else
-            CHECKF((sb == TS_NUM_OK || (sb == TS_NUM_NONFINITE && isinf(d))) &&
+            CHECKF((sb == TSU_NUM_OK || (sb == TSU_NUM_NONFINITE && isinf(d))) &&
                        memcmp(&back, &d, sizeof d) == 0 && *stop == '\0',
                    "format %.17g -> \"%s\"", d, buf);
     }
@@ -261,18 +261,18 @@ static void fuzz_numbers(void)
 /* ---- plots ---------------------------------------------------------------- */
 
 #define PSET(s) (1u << (s))
-static int plot_in(ts_plot_status st, unsigned set)
+static int plot_in(tsu_plot_status st, unsigned set)
 {
-    return (unsigned)st <= 5u && ((set >> st) & 1u) && ts_plot_strerror(st) != NULL;
+    return (unsigned)st <= 5u && ((set >> st) & 1u) && tsu_plot_strerror(st) != NULL;
 }
 
 static long n_plot_ok;
 
 static void fuzz_plots(void)
 {
-    const unsigned OK_ARG = PSET(TS_PLOT_OK) | PSET(TS_PLOT_ERR_ARG);
-    const unsigned SERIES = PSET(TS_PLOT_OK) | PSET(TS_PLOT_ERR_NULL) | PSET(TS_PLOT_ERR_ARG) |
-                            PSET(TS_PLOT_ERR_NOMEM) | PSET(TS_PLOT_ERR_OVERFLOW);
+    const unsigned OK_ARG = PSET(TSU_PLOT_OK) | PSET(TSU_PLOT_ERR_ARG);
+    const unsigned SERIES = PSET(TSU_PLOT_OK) | PSET(TSU_PLOT_ERR_NULL) | PSET(TSU_PLOT_ERR_ARG) |
+                            PSET(TSU_PLOT_ERR_NOMEM) | PSET(TSU_PLOT_ERR_OVERFLOW);
     static const char *const colors[] = {"#123", "#a0b1c2", "black", "gray", "#12", "red!",
                                          "", "#GGGGGG", "abcdefghijklmnopqrstu"};
     static const char *const texts[] = {"T", "a < b & \"c\"", "\xff\xfe bad utf8 \x01",
@@ -280,40 +280,40 @@ static void fuzz_plots(void)
     double x[200], y[200];
     for (int it = 0; it < N_PLOT; it++) {
         /* ticks */
-        ts_plot_ticks tk;
+        tsu_plot_ticks tk;
         double lo = th_chance(0.6) ? (th_unit() - 0.5) * th_logu(1e-6, 1e12) : th_hostile();
         double hi = th_chance(0.8) ? lo + th_logu(1e-15, 1e6) * (fabs(lo) + 1) : th_hostile();
-        ts_plot_range_mode mode = (ts_plot_range_mode)(th_chance(0.9) ? (int)th_below(2) : enum_val(2));
-        ts_plot_status st = ts_plot_ticks_compute(lo, hi, mode, &tk);
+        tsu_plot_range_mode mode = (tsu_plot_range_mode)(th_chance(0.9) ? (int)th_below(2) : enum_val(2));
+        tsu_plot_status st = tsu_plot_ticks_compute(lo, hi, mode, &tk);
         CHECK(plot_in(st, OK_ARG));
-        if (st == TS_PLOT_OK) {
-            int ok = tk.n >= 1 && tk.n <= TS_PLOT_MAX_TICKS && tk.lo < tk.hi;
+        if (st == TSU_PLOT_OK) {
+            int ok = tk.n >= 1 && tk.n <= TSU_PLOT_MAX_TICKS && tk.lo < tk.hi;
             for (size_t i = 0; ok && i < tk.n; i++) {
                 ok = tk.value[i] >= tk.lo - 1e-9 * (tk.hi - tk.lo) &&
                      tk.value[i] <= tk.hi + 1e-9 * (tk.hi - tk.lo) &&
                      (i == 0 || tk.value[i] > tk.value[i - 1]) &&
-                     memchr(tk.label[i], '\0', TS_PLOT_LABEL_MAX) != NULL;
+                     memchr(tk.label[i], '\0', TSU_PLOT_LABEL_MAX) != NULL;
             }
             CHECKF(ok, "ticks of [%.17g, %.17g] mode %d", lo, hi, (int)mode);
         }
         /* a plot */
-        ts_plot *p = NULL;
+        tsu_plot *p = NULL;
         unsigned w = th_chance(0.9) ? 0 : (unsigned)th_below(20000), h = th_chance(0.9) ? 0 : (unsigned)th_below(20000);
-        st = ts_plot_new(w, h, &p);
-        CHECK(plot_in(st, OK_ARG) && (st == TS_PLOT_OK) == (p != NULL));
+        st = tsu_plot_new(w, h, &p);
+        CHECK(plot_in(st, OK_ARG) && (st == TSU_PLOT_OK) == (p != NULL));
         if (!p)
             continue;
-        CHECK(plot_in(ts_plot_set_title(p, th_chance(0.8) ? texts[th_below(5)] : NULL), PSET(TS_PLOT_OK)));
-        CHECK(plot_in(ts_plot_set_labels(p, texts[th_below(5)], texts[th_below(5)]), PSET(TS_PLOT_OK)));
+        CHECK(plot_in(tsu_plot_set_title(p, th_chance(0.8) ? texts[th_below(5)] : NULL), PSET(TSU_PLOT_OK)));
+        CHECK(plot_in(tsu_plot_set_labels(p, texts[th_below(5)], texts[th_below(5)]), PSET(TSU_PLOT_OK)));
         if (th_chance(0.3))
-            CHECK(plot_in(ts_plot_set_xrange(p, th_hostile(), th_hostile()), OK_ARG));
+            CHECK(plot_in(tsu_plot_set_xrange(p, th_hostile(), th_hostile()), OK_ARG));
         if (th_chance(0.3))
-            CHECK(plot_in(ts_plot_set_yrange(p, th_unit(), th_unit() + th_unit()), OK_ARG));
-        CHECK(ts_plot_set_equal_aspect(p, (int)th_below(2)) == TS_PLOT_OK);
-        CHECK(plot_in(ts_plot_set_legend(p, (ts_plot_legend)enum_val(7)), OK_ARG));
-        CHECK(ts_plot_set_xml_declaration(p, (int)th_below(2)) == TS_PLOT_OK);
-        CHECK(ts_plot_set_grid(p, (int)th_below(2)) == TS_PLOT_OK);
-        CHECK(plot_in(ts_plot_set_simplify(p, th_chance(0.8) ? th_unit() : th_hostile()), OK_ARG));
+            CHECK(plot_in(tsu_plot_set_yrange(p, th_unit(), th_unit() + th_unit()), OK_ARG));
+        CHECK(tsu_plot_set_equal_aspect(p, (int)th_below(2)) == TSU_PLOT_OK);
+        CHECK(plot_in(tsu_plot_set_legend(p, (tsu_plot_legend)enum_val(7)), OK_ARG));
+        CHECK(tsu_plot_set_xml_declaration(p, (int)th_below(2)) == TSU_PLOT_OK);
+        CHECK(tsu_plot_set_grid(p, (int)th_below(2)) == TSU_PLOT_OK);
+        CHECK(plot_in(tsu_plot_set_simplify(p, th_chance(0.8) ? th_unit() : th_hostile()), OK_ARG));
         for (int k = (int)th_below(6); k > 0; k--) {
             size_t n = th_below(200);
             double sc = th_chance(0.8) ? th_logu(1e-3, 1e3) : th_logu(1e-300, 1e300);
@@ -321,28 +321,28 @@ static void fuzz_plots(void)
                 x[i] = th_chance(0.95) ? sc * (double)i : th_hostile();
                 y[i] = th_chance(0.95) ? sc * sin((double)i) : th_hostile();
             }
-            ts_plot_style sty = {colors[th_below(9)], th_chance(0.9) ? th_unit() * 5 : th_hostile(), (int)th_below(4) - 1,
+            tsu_plot_style sty = {colors[th_below(9)], th_chance(0.9) ? th_unit() * 5 : th_hostile(), (int)th_below(4) - 1,
                                  th_chance(0.9) ? th_unit() * 5 : th_hostile(), (int)th_below(2), th_unit()};
-            const ts_plot_style *sp = th_chance(0.5) ? &sty : NULL;
+            const tsu_plot_style *sp = th_chance(0.5) ? &sty : NULL;
             const char *lab = texts[th_below(5)];
             switch (th_below(7)) {
-            case 0: st = ts_plot_add_points(p, x, y, n, lab, sp); break;
-            case 1: st = ts_plot_add_polyline(p, x, y, n, lab, sp); break;
-            case 2: st = ts_plot_add_polygon(p, x, y, n, lab, sp); break;
-            case 3: st = ts_plot_add_line(p, th_hostile(), th_hostile(), lab, sp); break;
+            case 0: st = tsu_plot_add_points(p, x, y, n, lab, sp); break;
+            case 1: st = tsu_plot_add_polyline(p, x, y, n, lab, sp); break;
+            case 2: st = tsu_plot_add_polygon(p, x, y, n, lab, sp); break;
+            case 3: st = tsu_plot_add_line(p, th_hostile(), th_hostile(), lab, sp); break;
             case 4:
-                st = ts_plot_add_region(p, (ts_plot_side)enum_val(2), th_unit() - 0.5,
+                st = tsu_plot_add_region(p, (tsu_plot_side)enum_val(2), th_unit() - 0.5,
                                         th_chance(0.9) ? th_unit() : th_hostile(), lab, sp);
                 break;
-            case 5: st = ts_plot_add_floor(p, th_hostile(), lab, sp); break;
-            default: st = ts_plot_add_polyline(p, n ? x : NULL, y, n, lab, sp); break;
+            case 5: st = tsu_plot_add_floor(p, th_hostile(), lab, sp); break;
+            default: st = tsu_plot_add_polyline(p, n ? x : NULL, y, n, lab, sp); break;
             }
             CHECK(plot_in(st, SERIES));
         }
-        ts_plot_buf b = TS_PLOT_BUF_INIT;
-        st = ts_plot_render(p, &b);
-        CHECK(plot_in(st, PSET(TS_PLOT_OK) | PSET(TS_PLOT_ERR_NOMEM) | PSET(TS_PLOT_ERR_OVERFLOW)));
-        if (st == TS_PLOT_OK) {
+        tsu_plot_buf b = TSU_PLOT_BUF_INIT;
+        st = tsu_plot_render(p, &b);
+        CHECK(plot_in(st, PSET(TSU_PLOT_OK) | PSET(TSU_PLOT_ERR_NOMEM) | PSET(TSU_PLOT_ERR_OVERFLOW)));
+        if (st == TSU_PLOT_OK) {
             n_plot_ok++;
             int ok = b.data && strlen(b.data) == b.len && strstr(b.data, "<svg") &&
                      b.len > 7 && strcmp(b.data + b.len - 7, "</svg>\n") == 0;
@@ -352,14 +352,14 @@ static void fuzz_plots(void)
                    "plot %d: nan/inf in the SVG", it);
         }
         for (int axis = -1; axis < 3; axis++) {
-            ts_plot_status sg = ts_plot_get_ticks(p, axis, &tk);
-            CHECK(plot_in(sg, OK_ARG) && ((axis == 0 || axis == 1) || sg == TS_PLOT_ERR_ARG));
+            tsu_plot_status sg = tsu_plot_get_ticks(p, axis, &tk);
+            CHECK(plot_in(sg, OK_ARG) && ((axis == 0 || axis == 1) || sg == TSU_PLOT_ERR_ARG));
         }
-        ts_plot_buf_free(&b);
-        ts_plot_free(p);
+        tsu_plot_buf_free(&b);
+        tsu_plot_free(p);
     }
-    ts_plot_free(NULL);
-    ts_plot_buf_free(NULL);
+    tsu_plot_free(NULL);
+    tsu_plot_buf_free(NULL);
 }
 
 int main(void)

@@ -1,4 +1,5 @@
-/* Command-line parsing and help texts (docs/dev/CLI_CONTRACT.md). */
+/* Command-line parsing: argv after the command into cli_opts
+ * (docs/dev/CLI_CONTRACT.md); the help texts are in help.c. */
 #include "cli.h"
 
 #include <math.h>
@@ -56,55 +57,7 @@ static const optdef opts[] = {
     {"-h", 0, F | C | V, O_HELP},
 };
 
-/* ---- names ------------------------------------------------------------ */
-
-static const char *const shape_names[] = {"none", "positive", "above", "below", "between",
-                                          "monotone"};
-static const char *const slopes_names[] = {"arithmetic", "geometric", "harmonic",
-                                           "fritsch-carlson", "akima", "makima",
-                                           "user", "periodic"};
-static const char *const form_names[] = {"paper", "c1", "geometric"};
-static const char *const term_names[] = {"user", "margin", "lower-left", "lower-right",
-                                         "upper-left", "upper-right", "monotone", "certify",
-                                         "geometric"};
-static const char *const param_names[] = {"centripetal", "chord", "uniform"};
-static const char *const extrap_names[] = {"error", "clamp", "extend", "linear"};
-
 #define NELEM(a) (sizeof(a) / sizeof((a)[0]))
-
-const char *cli_cmd_name(cli_cmd c)
-{
-    return c == CLI_FIT ? "fit" : c == CLI_CERTIFY ? "certify" : "curve";
-}
-const char *cli_shape_name(ts_shape s)
-{
-    return (size_t)s < NELEM(shape_names) ? shape_names[s] : "?";
-}
-const char *cli_slopes_name(ts_slopes s)
-{
-    return (size_t)s < NELEM(slopes_names) ? slopes_names[s] : "?";
-}
-const char *cli_form_name(ts_form f)
-{
-    return (size_t)f < NELEM(form_names) ? form_names[f] : "?";
-}
-const char *cli_term_name(ts_term t)
-{
-    return (size_t)t < NELEM(term_names) ? term_names[t] : "?";
-}
-const char *cli_param_name(ts_param p)
-{
-    return (size_t)p < NELEM(param_names) ? param_names[p] : "?";
-}
-
-/* Index of s in names[0..n), or -1. */
-static int lookup(const char *s, const char *const *names, size_t n)
-{
-    for (size_t i = 0; i < n; i++)
-        if (strcmp(s, names[i]) == 0)
-            return (int)i;
-    return -1;
-}
 
 /* ---- values ----------------------------------------------------------- */
 
@@ -114,12 +67,12 @@ static int parse_number(const char *s, size_t len, int allow_inf, double *v)
     const char *stop;
     if (len == 0)
         return 0;
-    ts_num_status st = ts_parse_double(s, s + len, v, &stop);
+    tsu_num_status st = tsu_parse_double(s, s + len, v, &stop);
     if (stop != s + len)
         return 0;
-    if (st == TS_NUM_OK)
+    if (st == TSU_NUM_OK)
         return 1;
-    if (st == TS_NUM_NONFINITE && allow_inf && isinf(*v))
+    if (st == TSU_NUM_NONFINITE && allow_inf && isinf(*v))
         return 1;
     return 0;
 }
@@ -204,7 +157,7 @@ static int parse_positive_list(cli_cmd cmd, const char *name, const char *s, int
     for (size_t i = 0; i < *n; i++) {
         double v = (*out)[i];
         if (!(allow_zero ? v >= 0.0 : v > 0.0)) {
-            char b[TS_FMT_SIZE];
+            char b[TSU_FMT_SIZE];
             return cli_usage(cmd, "%s: value %zu is %s, must be %s", name, i + 1, cli_num(v, b),
                              allow_zero ? ">= 0" : "> 0");
         }
@@ -221,20 +174,20 @@ static int parse_scalar(cli_cmd cmd, const char *name, const char *s, int allow_
     return CLI_OK;
 }
 
-static int parse_enum(cli_cmd cmd, const char *name, const char *s, const char *const *names,
-                      size_t n, size_t skip_mask, int *v)
+static int parse_enum(cli_cmd cmd, const char *name, const char *s, const cli_names *t,
+                      size_t skip_mask, int *v)
 {
-    int k = lookup(s, names, n);
+    int k = cli_name_index(t, s);
     if (k >= 0 && !((skip_mask >> k) & 1u)) {
         *v = k;
         return CLI_OK;
     }
     char list[256] = "";
     size_t len = 0;
-    for (size_t i = 0; i < n; i++) {
+    for (size_t i = 0; i < t->n; i++) {
         if ((skip_mask >> i) & 1u)
             continue;
-        int w = snprintf(list + len, sizeof list - len, "%s%s", len ? "|" : "", names[i]);
+        int w = snprintf(list + len, sizeof list - len, "%s%s", len ? "|" : "", t->name[i]);
         if (w < 0 || (size_t)w >= sizeof list - len)
             break;
         len += (size_t)w;
@@ -258,7 +211,7 @@ static int apply(cli_cmd cmd, const optdef *d, const char *name, const char *v, 
     int k = 0, rc;
     switch (d->id) {
     case O_SHAPE:
-        rc = parse_enum(cmd, name, v, shape_names, NELEM(shape_names), 0, &k);
+        rc = parse_enum(cmd, name, v, &cli_shape_names, 0, &k);
         if (rc == CLI_OK) {
             o->shape = (ts_shape)k;
             o->shape_set = 1;
@@ -288,8 +241,7 @@ static int apply(cli_cmd cmd, const optdef *d, const char *name, const char *v, 
         return parse_scalar(cmd, name, v, 0, &o->margin);
     case O_SLOPES:
         /* "user" is not offered on the command line */
-        rc = parse_enum(cmd, name, v, slopes_names, NELEM(slopes_names),
-                        1u << TS_SLOPES_USER, &k);
+        rc = parse_enum(cmd, name, v, &cli_slopes_names, 1u << TS_SLOPES_USER, &k);
         if (rc == CLI_OK) {
             o->slopes = (ts_slopes)k;
             o->slopes_set = 1;
@@ -299,7 +251,7 @@ static int apply(cli_cmd cmd, const optdef *d, const char *name, const char *v, 
         o->c1 = 1;
         return CLI_OK;
     case O_FORM:
-        rc = parse_enum(cmd, name, v, form_names, NELEM(form_names), 0, &k);
+        rc = parse_enum(cmd, name, v, &cli_form_names, 0, &k);
         if (rc == CLI_OK) {
             o->form = (ts_form)k;
             o->form_set = 1;
@@ -321,7 +273,7 @@ static int apply(cli_cmd cmd, const optdef *d, const char *name, const char *v, 
         o->deriv_set = 1;
         return CLI_OK;
     case O_EXTRAP:
-        rc = parse_enum(cmd, name, v, extrap_names, NELEM(extrap_names), 0, &k);
+        rc = parse_enum(cmd, name, v, &cli_extrap_names, 0, &k);
         if (rc == CLI_OK) {
             o->extrap = (ts_extrap)k;
             o->extrap_set = 1;
@@ -374,7 +326,7 @@ static int apply(cli_cmd cmd, const optdef *d, const char *name, const char *v, 
         o->closed = 1;
         return CLI_OK;
     case O_PARAM:
-        rc = parse_enum(cmd, name, v, param_names, NELEM(param_names), 0, &k);
+        rc = parse_enum(cmd, name, v, &cli_param_names, 0, &k);
         if (rc == CLI_OK) {
             o->param = (ts_param)k;
             o->param_set = 1;
@@ -424,10 +376,26 @@ int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o)
     memset(o, 0, sizeof *o);
     o->cmd = cmd;
     o->samples = CLI_DEFAULT_SAMPLES;
-    o->slopes = TS_SLOPES_ARITHMETIC;
-    o->alpha = 1.0;
-    o->margin = TS_DEFAULT_MARGIN;
-    o->param = TS_PARAM_CENTRIPETAL;
+    /* what an option left out means: the library's own defaults */
+    if (cmd == CLI_CURVE) {
+        ts_curve_options d;
+        ts_curve_options_init(&d);
+        o->slopes = d.slopes;
+        o->alpha = d.alpha;
+        o->beta = d.beta;
+        o->margin = d.margin;
+        o->param = d.param;
+    } else {
+        ts_options d;
+        ts_options_init(&d);
+        o->shape = d.shape;
+        o->slopes = d.slopes;
+        o->form = d.form;
+        o->alpha = d.alpha;
+        o->beta = d.beta;
+        o->margin = d.margin;
+        o->extrap = d.extrapolate;
+    }
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
         if (only_args || a[0] != '-' || strcmp(a, "-") == 0) {
@@ -481,137 +449,4 @@ int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o)
         o->form_set = 1;
     }
     return CLI_OK;
-}
-
-/* ---- help ------------------------------------------------------------- */
-
-static const char exit_text[] =
-    "Exit status:\n"
-    "  0  success (certify: every interval certified)\n"
-    "  1  usage error: unknown option, bad option value, options that do not fit together\n"
-    "  2  bad data: malformed input (FILE:LINE:COLUMN), too few points, x not increasing,\n"
-    "     or data the scheme refuses (the point, its line and its x are named)\n"
-    "  3  infeasible constraint: no beta keeps an interval inside the region (interval named)\n"
-    "  4  certify: the curve leaves the region (violating intervals listed on stderr)\n"
-    "  5  I/O error: cannot read or write a file (also out of memory)\n"
-    "On failure nothing is written: -o and --svg files are written to a temporary file\n"
-    "and renamed into place only on success.  (Exception: a long fit streamed to standard\n"
-    "output, see STREAMING in trigspline(1).)\n";
-
-void cli_print_main_help(void)
-{
-    printf("Usage: trigspline COMMAND [DATA] [OPTIONS]\n"
-           "\n"
-           "Shape-preserving interpolation with the GC1 cubic trigonometric spline.\n"
-           "\n"
-           "Commands:\n"
-           "  fit      fit a spline through (x, f) data, optionally kept positive, above,\n"
-           "           below or between lines, or monotone; write samples, JSON, SVG\n"
-           "  certify  check a spline with your own alpha, beta against boundaries\n"
-           "  curve    parametric curve through 2-D or 3-D points (open or closed)\n"
-           "\n"
-           "  trigspline COMMAND --help   options of a command\n"
-           "  trigspline --version        print the version\n"
-           "\n"
-           "DATA is a CSV, TSV or whitespace-separated table with an optional header and\n"
-           "# comments; \"-\" or no DATA reads standard input.\n"
-           "\n%s",
-           exit_text);
-}
-
-void cli_print_help(cli_cmd cmd)
-{
-    if (cmd == CLI_FIT) {
-        printf(
-            "Usage: trigspline fit [DATA] [OPTIONS]\n"
-            "\n"
-            "Fit the spline through the points (x, f) of DATA (two numeric columns; \"-\" or\n"
-            "none: standard input) and write samples as CSV \"x,y\" (shortest round-trip\n"
-            "numbers), or a JSON report, and optionally an SVG plot.\n"
-            "\n"
-            "Shape (SPEC section 5):\n"
-            "  --shape none|positive|above|below|between|monotone   (default none)\n"
-            "  --line M,C          the line y = M*x + C for --shape above or below\n"
-            "  --lower M,C         lower line (alone: implies above)\n"
-            "  --upper M,C         upper line (alone: implies below; with --lower: between)\n"
-            "  --margin T          margin t added to beta (default 0.01; shape schemes only)\n"
-            "Parameters:\n"
-            "  --alpha A           alpha on every interval (default 1, > 0)\n"
-            "  --alphas A0,A1,...  alpha per interval (exactly one value per interval)\n"
-            "  --beta B            beta on every interval (default 0; only with --shape none)\n"
-            "  --betas B0,B1,...   beta per interval (only with --shape none)\n"
-            "  --slopes arithmetic|geometric|harmonic|fritsch-carlson|akima|makima|periodic\n"
-            "                      slope estimate at the knots (default arithmetic)\n"
-            "  --form paper|c1|geometric   spline form (default paper); --c1 = --form c1\n"
-            "Output:\n"
-            "  --samples N         points per interval, knots included (default 50)\n"
-            "  --at FILE           evaluate at the x values of FILE (first column) instead\n"
-            "  --derivative 0|1|2  print S, S' or S'' (default 0)\n"
-            "  --extrapolate error|clamp|extend|linear   queries of --at outside the data\n"
-            "                      (default error)\n"
-            "  -o, --output FILE   write there instead of standard output\n"
-            "  --json              a JSON report instead of CSV: knots, slopes, per interval\n"
-            "                      alpha, beta, control values and certificate\n"
-            "  --svg FILE          plot: data, curve, constraint lines with the forbidden\n"
-            "                      region shaded, legend\n"
-            "  --title TEXT        plot title\n"
-            "  --show-control      also plot the control polygon\n"
-            "  --points-only       plot only the data (and the constraint lines)\n"
-            "  --columns X,Y       take x and f from these columns (1-based) of a wider table\n"
-            "  --no-stream         never stream (see below)\n"
-            "\n"
-            "Long inputs are processed in constant memory when the output is CSV samples and\n"
-            "none of --json, --svg, --at, --alphas, --betas, --slopes periodic is given:\n"
-            "the data are read and checked in chunks as they stream.  An error found after\n"
-            "output has started is reported with its line; what was already written to\n"
-            "standard output is then incomplete (with -o the file is not created).\n"
-            "\n%s",
-            exit_text);
-    } else if (cmd == CLI_CERTIFY) {
-        printf(
-            "Usage: trigspline certify [DATA] --alpha A --beta B BOUNDARY [OPTIONS]\n"
-            "\n"
-            "Build the spline with your own alpha and beta (no scheme) and certify it: the\n"
-            "exact minimum distance to each boundary on every interval.\n"
-            "\n"
-            "Boundaries (at least one):\n"
-            "  --shape positive    the lower line y = 0\n"
-            "  --shape above --line M,C    lower line y = M*x + C (same as --lower M,C)\n"
-            "  --shape below --line M,C    upper line (same as --upper M,C)\n"
-            "  --lower M,C / --upper M,C   either or both (both: --shape between)\n"
-            "Parameters:\n"
-            "  --alpha A | --alphas A0,A1,...   (required, > 0)\n"
-            "  --beta B | --betas B0,B1,...     (required, >= 0)\n"
-            "  --slopes METHOD, --form paper|c1|geometric, --c1   as for fit\n"
-            "Output:\n"
-            "  a per-interval table (or --json, the same object as fit --json) on standard\n"
-            "  output or -o FILE; --svg FILE, --title TEXT, --show-control, --points-only and\n"
-            "  --samples N (for the plot and the JSON sample range) as for fit;\n"
-            "  --columns X,Y as for fit.\n"
-            "The violating intervals (index, x-range, minimum gap and where) are listed on\n"
-            "standard error and the exit status is 4; the report and plot are still\n"
-            "written (they are the result).\n"
-            "\n%s",
-            exit_text);
-    } else {
-        printf(
-            "Usage: trigspline curve [DATA] [OPTIONS]\n"
-            "\n"
-            "Parametric curve (SPEC section 7) through the points of DATA (2 or 3 columns).\n"
-            "Writes samples as CSV \"t,x,y\" (or \"t,x,y,z\").\n"
-            "\n"
-            "  --closed            closed curve (the first point may be repeated at the end)\n"
-            "  --param uniform|chord|centripetal   parameter knots (default centripetal)\n"
-            "  --alpha A, --beta B (defaults 1 and 0), --alphas/--betas per segment\n"
-            "  --slopes METHOD     as for fit (periodic: closed curves only)\n"
-            "  --box XMIN,XMAX,YMIN,YMAX[,ZMIN,ZMAX]   keep the curve inside the box\n"
-            "                      (inf / -inf: no bound on that side); beta is raised\n"
-            "                      where needed and the curve is certified\n"
-            "  --margin T          margin for the box rule (default 0.01)\n"
-            "  --samples N         points per segment, knots included (default 50)\n"
-            "  -o, --output FILE, --json, --svg FILE, --title TEXT, --show-control,\n"
-            "  --points-only       as for fit\n"
-            "\n%s",
-            exit_text);
-    }
 }

@@ -1,58 +1,62 @@
 /*
- * ts_io — number conversion, table reading and safe output for the
- * command-line tool (tool side: part of the static library trigspline_tools,
+ * tsu_io — number conversion, table reading and safe output for the
+ * command-line tool (tool side: part of the static library trigspline_support,
  * not of libtrigspline).  C11 plus POSIX (mkstemp, fsync, rename).
+ *
+ * Prefix tsu_ / TSU_ ("trigspline support"), never ts_: these are not the
+ * library's API and know nothing of it (no trigspline.h, no src/internal.h).
  *
  * Four parts:
  *
- *  1. Numbers.  ts_parse_double() converts decimal text to the correctly
+ *  1. Numbers.  tsu_parse_double() converts decimal text to the correctly
  *     rounded double (round-half-even, like glibc strtod) and
- *     ts_format_double() writes the shortest text that converts back to the
+ *     tsu_format_double() writes the shortest text that converts back to the
  *     identical double.  Both are exact for every input, independent of the
  *     locale (the decimal point is always '.'), and faster than
  *     strtod / printf("%.17g") (see "Speed" below).
  *
  *  2. Reading tables of numbers (CSV, TSV or whitespace-separated, auto-
- *     detected) either all at once into column arrays (ts_read_table) or one
- *     row at a time in constant memory (ts_reader_*).  Errors name file, line
+ *     detected) either all at once into column arrays (tsu_read_table) or one
+ *     row at a time in constant memory (tsu_reader_*).  Errors name file, line
  *     and column:   data.csv:7:3: expected a number, found "abc"
  *
- *  3. Safe output files (ts_out_*): written to a temporary file in the same
+ *  3. Safe output files (tsu_out_*): written to a temporary file in the same
  *     directory and renamed over the target only on success, so a failed
  *     command never leaves a half-written file.  "-" is standard output.
  *
- *  4. A buffered writer of delimited rows of numbers (ts_writer_*).
+ *  4. A buffered writer of delimited rows of numbers (tsu_writer_*).
  *
  * Usage:
  *
- *     ts_table t;  ts_io_error e;
- *     if (ts_read_table_path("data.csv", NULL, &t, &e) != TS_IO_OK) {
+ *     tsu_table t;  tsu_io_error e;
+ *     if (tsu_read_table_path("data.csv", NULL, &t, &e) != TSU_IO_OK) {
  *         fprintf(stderr, "trigspline: %s\n", e.msg);   // data.csv:7:3: ...
  *         return 1;
  *     }
  *     ... t.cols[0][i], t.cols[1][i], i < t.nrows; t.lines[i] = its line ...
- *     ts_table_free(&t);
+ *     tsu_table_free(&t);
  *
- *     ts_out *o;  char msg[TS_IO_MSG_SIZE];
- *     if (ts_out_open(&o, "out.csv", 0, msg, sizeof msg)) { ...report msg... }
- *     ts_writer *w = ts_writer_new(ts_out_file(o), ',');
- *     for (...) ts_writer_xy(w, x, y);
- *     int rc = ts_writer_free(w);                   // flushes; 0 or errno
- *     if (rc) ts_out_abort(o);                      // removes the temp file
- *     else rc = ts_out_commit(o, msg, sizeof msg);  // rename into place
+ *     tsu_out *o;  char msg[TSU_IO_MSG_SIZE];
+ *     if (tsu_out_open(&o, "out.csv", 0, msg, sizeof msg)) { ...report msg... }
+ *     tsu_writer *w = tsu_writer_new(tsu_out_file(o), ',');
+ *     for (...) tsu_writer_xy(w, x, y);
+ *     int rc = tsu_writer_free(w);                   // flushes; 0 or errno
+ *     if (rc) tsu_out_abort(o);                      // removes the temp file
+ *     else rc = tsu_out_commit(o, msg, sizeof msg);  // rename into place
  *
  * Thread safety: the number functions are reentrant.  A reader, table,
  * output or writer object must not be used by two threads at once.
  *
- * Speed (tests/test_io.c prints it; one x86-64 core, gcc -O2, shared and
- * loaded machine, so indicative only): ts_format_double ~16 M/s on random
- * bit patterns (snprintf "%.17g" ~2.8 M/s), ts_parse_double ~18 M/s on
+ * Speed (against libc: docs/design.md, tools/support/bench; tests/tools/test_io.c
+ * prints its own figures too; one x86-64 core, gcc -O2, shared and
+ * loaded machine, so indicative only): tsu_format_double ~16 M/s on random
+ * bit patterns (snprintf "%.17g" ~2.8 M/s), tsu_parse_double ~18 M/s on
  * 17-digit numbers and ~40 M/s on short ones (strtod ~8 M/s), writer
  * ~8 M rows/s of "x,y", reader ~12 M rows/s (table) and ~15 M rows/s
  * (streaming) of the same.
  */
-#ifndef TS_IO_H
-#define TS_IO_H
+#ifndef TSU_IO_H
+#define TSU_IO_H
 
 #include <stddef.h>
 #include <stdio.h>
@@ -65,12 +69,12 @@ extern "C" {
 /* 1. Numbers                                                           */
 /* ------------------------------------------------------------------ */
 
-typedef enum ts_num_status {
-    TS_NUM_OK = 0,
-    TS_NUM_SYNTAX = 1,    /* no number at s; *stop = first character that does not fit */
-    TS_NUM_RANGE = 2,     /* |value| rounds to infinity (>= DBL_MAX + half an ulp); *out = ±HUGE_VAL */
-    TS_NUM_NONFINITE = 3  /* the words nan, inf, infinity (any case, optional sign); *out = NaN / ±inf */
-} ts_num_status;
+typedef enum tsu_num_status {
+    TSU_NUM_OK = 0,
+    TSU_NUM_SYNTAX = 1,    /* no number at s; *stop = first character that does not fit */
+    TSU_NUM_RANGE = 2,     /* |value| rounds to infinity (>= DBL_MAX + half an ulp); *out = ±HUGE_VAL */
+    TSU_NUM_NONFINITE = 3  /* the words nan, inf, infinity (any case, optional sign); *out = NaN / ±inf */
+} tsu_num_status;
 
 /*
  * Parse the longest prefix of [s, end) that is a decimal number:
@@ -86,10 +90,10 @@ typedef enum ts_num_status {
  * even, for any number of digits and any exponent (correctly rounded, like
  * glibc strtod).  Results below the smallest subnormal round to ±0 or a
  * subnormal as IEEE 754 says (that is not an error); results that round to
- * infinity are TS_NUM_RANGE.  "-0" gives -0.0.
+ * infinity are TSU_NUM_RANGE.  "-0" gives -0.0.
  *
- * On TS_NUM_OK and TS_NUM_RANGE *stop is just past the number, on
- * TS_NUM_NONFINITE just past the word; on TS_NUM_SYNTAX *out = 0 and *stop
+ * On TSU_NUM_OK and TSU_NUM_RANGE *stop is just past the number, on
+ * TSU_NUM_NONFINITE just past the word; on TSU_NUM_SYNTAX *out = 0 and *stop
  * points at the first character where no number can continue: s for "abc"
  * or "", s+1 for "-x" or ".", s+2 for "-.e5".
  *
@@ -103,13 +107,13 @@ typedef enum ts_num_status {
  * normalised copy.  Assumes the default floating-point environment
  * (round to nearest) and FLT_EVAL_METHOD == 0 (else the fast path is off).
  */
-ts_num_status ts_parse_double(const char *s, const char *end, double *out, const char **stop);
+tsu_num_status tsu_parse_double(const char *s, const char *end, double *out, const char **stop);
 
-/* Longest output of ts_format_double incl. the NUL ("-2.2250738585072014e-308" is 25). */
-#define TS_FMT_SIZE 32
+/* Longest output of tsu_format_double incl. the NUL ("-2.2250738585072014e-308" is 25). */
+#define TSU_FMT_SIZE 32
 
 /*
- * Write the shortest decimal that ts_parse_double (or any correctly
+ * Write the shortest decimal that tsu_parse_double (or any correctly
  * rounding strtod) converts back to exactly v; among several shortest ones
  * the nearest to v (ties: even last digit).  Returns the length (excluding
  * the NUL written after it).  The layout is that of printf("%.17g") with
@@ -128,38 +132,38 @@ ts_num_status ts_parse_double(const char *s, const char *end, double *out, const
  * of 10^k with a proven error bound, and exact big-integer comparisons for
  * the rare decisions the bound leaves open; no printf.
  */
-size_t ts_format_double(double v, char buf[TS_FMT_SIZE]);
+size_t tsu_format_double(double v, char buf[TSU_FMT_SIZE]);
 
 /* ------------------------------------------------------------------ */
 /* Status and error report of the reader / table functions              */
 /* ------------------------------------------------------------------ */
 
-typedef enum ts_io_status {
-    TS_IO_OK = 0,
-    TS_IO_END = 1,          /* ts_reader_next: no more rows (not an error) */
-    TS_IO_ERR_NULL = 2,     /* a required pointer argument is NULL */
-    TS_IO_ERR_NOMEM = 3,    /* allocation failed */
-    TS_IO_ERR_OVERFLOW = 4, /* a size would overflow size_t */
-    TS_IO_ERR_OPTION = 5,   /* an option out of range */
-    TS_IO_ERR_OPEN = 6,     /* cannot open the input file (sys_errno set) */
-    TS_IO_ERR_READ = 7,     /* read error (sys_errno set) */
-    TS_IO_ERR_EMPTY = 8,    /* no data rows (empty input, or only blank/comment/header lines) */
-    TS_IO_ERR_NUMBER = 9,   /* a field is not a number (or is empty) */
-    TS_IO_ERR_NONFINITE = 10, /* a field is nan / inf / infinity */
-    TS_IO_ERR_RANGE = 11,   /* a number overflows a double */
-    TS_IO_ERR_FIELDS = 12,  /* wrong number of fields in a row */
-    TS_IO_ERR_LINE = 13,    /* a line longer than ts_read_options.max_line */
-    TS_IO_STATUS_COUNT_ = 14
-} ts_io_status;
+typedef enum tsu_io_status {
+    TSU_IO_OK = 0,
+    TSU_IO_END = 1,          /* tsu_reader_next: no more rows (not an error) */
+    TSU_IO_ERR_NULL = 2,     /* a required pointer argument is NULL */
+    TSU_IO_ERR_NOMEM = 3,    /* allocation failed */
+    TSU_IO_ERR_OVERFLOW = 4, /* a size would overflow size_t */
+    TSU_IO_ERR_OPTION = 5,   /* an option out of range */
+    TSU_IO_ERR_OPEN = 6,     /* cannot open the input file (sys_errno set) */
+    TSU_IO_ERR_READ = 7,     /* read error (sys_errno set) */
+    TSU_IO_ERR_EMPTY = 8,    /* no data rows (empty input, or only blank/comment/header lines) */
+    TSU_IO_ERR_NUMBER = 9,   /* a field is not a number (or is empty) */
+    TSU_IO_ERR_NONFINITE = 10, /* a field is nan / inf / infinity */
+    TSU_IO_ERR_RANGE = 11,   /* a number overflows a double */
+    TSU_IO_ERR_FIELDS = 12,  /* wrong number of fields in a row */
+    TSU_IO_ERR_LINE = 13,    /* a line longer than tsu_read_options.max_line */
+    TSU_IO_STATUS_COUNT_ = 14
+} tsu_io_status;
 
 /* A fixed, never-NULL English string for any value. */
-const char *ts_io_strerror(ts_io_status st);
+const char *tsu_io_strerror(tsu_io_status st);
 
-#define TS_IO_MSG_SIZE 512
+#define TSU_IO_MSG_SIZE 512
 
 /*
- * Detail of a failure.  Functions taking a ts_io_error* clear it first
- * (status TS_IO_OK, empty msg) and fill it on failure.  msg is the complete
+ * Detail of a failure.  Functions taking a tsu_io_error* clear it first
+ * (status TSU_IO_OK, empty msg) and fill it on failure.  msg is the complete
  * message, ready to print:
  *
  *     NAME:LINE:COLUMN: TEXT     about one field
@@ -184,14 +188,14 @@ const char *ts_io_strerror(ts_io_status st);
      no data rows                        a header and no row
  *     out of memory | size overflow | invalid option | null argument
  */
-typedef struct ts_io_error {
-    ts_io_status status;
-    int sys_errno;             /* errno for TS_IO_ERR_OPEN / TS_IO_ERR_READ, else 0 */
+typedef struct tsu_io_error {
+    tsu_io_status status;
+    int sys_errno;             /* errno for TSU_IO_ERR_OPEN / TSU_IO_ERR_READ, else 0 */
     unsigned long long line;   /* 1-based, 0 when not about a line */
     size_t column;             /* 1-based, 0 when not about a field */
     size_t field;              /* 1-based field number, 0 when none */
-    char msg[TS_IO_MSG_SIZE];
-} ts_io_error;
+    char msg[TSU_IO_MSG_SIZE];
+} tsu_io_error;
 
 /* ------------------------------------------------------------------ */
 /* 2. Reading tables                                                    */
@@ -202,105 +206,105 @@ typedef struct ts_io_error {
  *  - Lines end in "\n" or "\r\n"; the last line needs no terminator.
  *  - '#' starts a comment running to the end of the line, anywhere.
  *  - Blank lines (only spaces/tabs, or only a comment) are skipped.
- *  - Delimiter, when TS_DELIM_AUTO, is chosen from the first non-blank,
+ *  - Delimiter, when TSU_DELIM_AUTO, is chosen from the first non-blank,
  *    non-comment line: ',' if it contains a comma, else tab if it contains a
  *    tab, else white space.  With ',' and tab exactly one delimiter separates
  *    two fields (an empty field is an error) and spaces around a field are
  *    ignored (with ',' tabs too); with white space any run of spaces and
  *    tabs separates fields.
  *  - Header: the first non-blank, non-comment line is a header when
- *    TS_HEADER_AUTO and one of its fields is not empty and not a number
+ *    TSU_HEADER_AUTO and one of its fields is not empty and not a number
  *    (nan/inf count as numbers, so "nan,1" is data and fails).  Header names
  *    are trimmed; a name in double quotes loses them ("" inside means ").
  *  - Every other line has the same number of fields: that of the header,
- *    or ts_read_options.ncols when not 0, or else the first data row's.
- *  - A field is a number of ts_parse_double and nothing else (surrounding
+ *    or tsu_read_options.ncols when not 0, or else the first data row's.
+ *  - A field is a number of tsu_parse_double and nothing else (surrounding
  *    spaces aside).  nan/inf, overflow and text are errors (see above).
  */
 
-typedef enum ts_delim {
-    TS_DELIM_AUTO = 0,
-    TS_DELIM_COMMA = 1,
-    TS_DELIM_TAB = 2,
-    TS_DELIM_SPACE = 3   /* runs of spaces and tabs */
-} ts_delim;
+typedef enum tsu_delim {
+    TSU_DELIM_AUTO = 0,
+    TSU_DELIM_COMMA = 1,
+    TSU_DELIM_TAB = 2,
+    TSU_DELIM_SPACE = 3   /* runs of spaces and tabs */
+} tsu_delim;
 
-typedef enum ts_header {
-    TS_HEADER_AUTO = 0,  /* first content line is a header if it has a non-numeric field */
-    TS_HEADER_NONE = 1,  /* no header: a text field in the first line is an error */
-    TS_HEADER_YES = 2    /* the first content line is a header whatever it contains */
-} ts_header;
+typedef enum tsu_header {
+    TSU_HEADER_AUTO = 0,  /* first content line is a header if it has a non-numeric field */
+    TSU_HEADER_NONE = 1,  /* no header: a text field in the first line is an error */
+    TSU_HEADER_YES = 2    /* the first content line is a header whatever it contains */
+} tsu_header;
 
-typedef struct ts_read_options {
-    ts_delim delim;       /* default TS_DELIM_AUTO */
-    ts_header header;     /* default TS_HEADER_AUTO */
+typedef struct tsu_read_options {
+    tsu_delim delim;       /* default TSU_DELIM_AUTO */
+    tsu_header header;     /* default TSU_HEADER_AUTO */
     size_t ncols;         /* required number of fields per row; 0 (default) = any, same in every row */
-    size_t max_line;      /* longest accepted line in bytes, default TS_IO_MAX_LINE; >= 16 */
-    size_t buffer_size;   /* initial read buffer, default TS_IO_BUFFER (1 MiB); >= 16; grows
+    size_t max_line;      /* longest accepted line in bytes, default TSU_IO_MAX_LINE; >= 16 */
+    size_t buffer_size;   /* initial read buffer, default TSU_IO_BUFFER (1 MiB); >= 16; grows
                              up to max_line for a longer line */
-    int track_lines;      /* ts_read_table: also fill ts_table.lines (default 1) */
-} ts_read_options;
+    int track_lines;      /* tsu_read_table: also fill tsu_table.lines (default 1) */
+} tsu_read_options;
 
-#define TS_IO_MAX_LINE ((size_t)16 << 20)
-#define TS_IO_BUFFER ((size_t)1 << 20)
+#define TSU_IO_MAX_LINE ((size_t)16 << 20)
+#define TSU_IO_BUFFER ((size_t)1 << 20)
 
-void ts_read_options_init(ts_read_options *opt);
+void tsu_read_options_init(tsu_read_options *opt);
 
 /* ---- streaming: one row at a time, memory O(buffer + row) ---------- */
 
-typedef struct ts_reader ts_reader;
+typedef struct tsu_reader tsu_reader;
 
 /*
  * Start reading fp (not closed by the reader; may be stdin).  name is used
  * in messages (copied; NULL gives "<input>").  opt may be NULL (defaults).
- * Nothing is read yet.  TS_IO_OK, TS_IO_ERR_NULL, TS_IO_ERR_NOMEM,
- * TS_IO_ERR_OPTION.  *out is NULL on failure.
+ * Nothing is read yet.  TSU_IO_OK, TSU_IO_ERR_NULL, TSU_IO_ERR_NOMEM,
+ * TSU_IO_ERR_OPTION.  *out is NULL on failure.
  */
-ts_io_status ts_reader_open(ts_reader **out, FILE *fp, const char *name,
-                            const ts_read_options *opt, ts_io_error *err);
+tsu_io_status tsu_reader_open(tsu_reader **out, FILE *fp, const char *name,
+                            const tsu_read_options *opt, tsu_io_error *err);
 
 /*
- * Next data row: *row points at ts_reader_ncols(r) doubles, valid until the
- * next call.  Returns TS_IO_OK, TS_IO_END after the last row, or an error
- * (TS_IO_ERR_EMPTY when the input has no data row at all; TS_IO_ERR_READ,
+ * Next data row: *row points at tsu_reader_ncols(r) doubles, valid until the
+ * next call.  Returns TSU_IO_OK, TSU_IO_END after the last row, or an error
+ * (TSU_IO_ERR_EMPTY when the input has no data row at all; TSU_IO_ERR_READ,
  * _NUMBER, _NONFINITE, _RANGE, _FIELDS, _LINE, _NOMEM, _OVERFLOW, _NULL).
  * After an error every later call returns the same error and message.
  */
-ts_io_status ts_reader_next(ts_reader *r, const double **row, ts_io_error *err);
+tsu_io_status tsu_reader_next(tsu_reader *r, const double **row, tsu_io_error *err);
 
-size_t ts_reader_ncols(const ts_reader *r);               /* 0 until known */
-unsigned long long ts_reader_line(const ts_reader *r);    /* line of the last row returned */
-unsigned long long ts_reader_rows(const ts_reader *r);    /* data rows returned so far */
-size_t ts_reader_nnames(const ts_reader *r);              /* header fields, 0 if no header (yet) */
-const char *ts_reader_name(const ts_reader *r, size_t j); /* header name j, NULL if none */
-const char *ts_reader_source(const ts_reader *r);         /* the display name */
-ts_delim ts_reader_delim(const ts_reader *r);             /* the delimiter in use (AUTO until known) */
-void ts_reader_free(ts_reader *r);                        /* NULL ok; does not close fp */
+size_t tsu_reader_ncols(const tsu_reader *r);               /* 0 until known */
+unsigned long long tsu_reader_line(const tsu_reader *r);    /* line of the last row returned */
+unsigned long long tsu_reader_rows(const tsu_reader *r);    /* data rows returned so far */
+size_t tsu_reader_nnames(const tsu_reader *r);              /* header fields, 0 if no header (yet) */
+const char *tsu_reader_name(const tsu_reader *r, size_t j); /* header name j, NULL if none */
+const char *tsu_reader_source(const tsu_reader *r);         /* the display name */
+tsu_delim tsu_reader_delim(const tsu_reader *r);             /* the delimiter in use (AUTO until known) */
+void tsu_reader_free(tsu_reader *r);                        /* NULL ok; does not close fp */
 
 /* ---- whole table in memory ---------------------------------------- */
 
-typedef struct ts_table {
+typedef struct tsu_table {
     size_t nrows, ncols;
     double **cols;              /* cols[j][i]: field j of row i (ncols arrays of nrows) */
     char **names;               /* ncols header names, or NULL without header */
     unsigned long long *lines;  /* line of each row, or NULL (track_lines == 0) */
-} ts_table;
+} tsu_table;
 
 /*
  * Read every row of fp into *out (zeroed first; after a failure nothing is
- * left allocated, ts_table_free is still safe).  Arrays grow geometrically
- * with overflow checks.  Same statuses as ts_reader_next (TS_IO_ERR_EMPTY
+ * left allocated, tsu_table_free is still safe).  Arrays grow geometrically
+ * with overflow checks.  Same statuses as tsu_reader_next (TSU_IO_ERR_EMPTY
  * for no data).
  */
-ts_io_status ts_read_table(FILE *fp, const char *name, const ts_read_options *opt,
-                           ts_table *out, ts_io_error *err);
+tsu_io_status tsu_read_table(FILE *fp, const char *name, const tsu_read_options *opt,
+                           tsu_table *out, tsu_io_error *err);
 
 /* The same for a path; "-" reads stdin under the name "<stdin>".
- * Adds TS_IO_ERR_OPEN ("NAME: cannot open: No such file or directory"). */
-ts_io_status ts_read_table_path(const char *path, const ts_read_options *opt,
-                                ts_table *out, ts_io_error *err);
+ * Adds TSU_IO_ERR_OPEN ("NAME: cannot open: No such file or directory"). */
+tsu_io_status tsu_read_table_path(const char *path, const tsu_read_options *opt,
+                                tsu_table *out, tsu_io_error *err);
 
-void ts_table_free(ts_table *t);  /* NULL ok; leaves *t zeroed */
+void tsu_table_free(tsu_table *t);  /* NULL ok; leaves *t zeroed */
 
 /* ------------------------------------------------------------------ */
 /* 3. Safe output files                                                 */
@@ -316,53 +320,53 @@ void ts_table_free(ts_table *t);  /* NULL ok; leaves *t zeroed */
  *     error writing to standard output: Broken pipe
  *     no output path | invalid output flags | out of memory  (EINVAL, ENOMEM)
  *
- * ts_out_open(path): "-" is standard output (written directly; nothing
+ * tsu_out_open(path): "-" is standard output (written directly; nothing
  * to rename; commit flushes it).  Otherwise creates "PATH.tmp.XXXXXX" with
  * mkstemp in the same directory, gives it the permissions of an existing
  * regular file PATH or else 0666 minus the umask, and opens it for
- * writing.  Write with ts_out_file() (stdio) or a ts_writer.
+ * writing.  Write with tsu_out_file() (stdio) or a tsu_writer.
  *
- * ts_out_commit: flushes, optionally fsyncs (TS_OUT_FSYNC: also the
+ * tsu_out_commit: flushes, optionally fsyncs (TSU_OUT_FSYNC: also the
  * directory after the rename), closes and renames the temporary file onto
  * PATH (replacing a file or symbolic link there).  Any write, flush, close
  * or rename error removes the temporary file and is returned; PATH is then
  * untouched.  Frees o in every case.
  *
- * ts_out_abort: closes and removes the temporary file, frees o (NULL ok).
+ * tsu_out_abort: closes and removes the temporary file, frees o (NULL ok).
  * For "-" it only flushes (what was written cannot be taken back).
  *
  * A process killed between open and commit leaves the temporary file.
  */
-typedef struct ts_out ts_out;
+typedef struct tsu_out tsu_out;
 
-#define TS_OUT_FSYNC 1u
+#define TSU_OUT_FSYNC 1u
 
-int ts_out_open(ts_out **out, const char *path, unsigned flags, char *errbuf, size_t errlen);
-FILE *ts_out_file(const ts_out *o);         /* the stream to write to */
-const char *ts_out_path(const ts_out *o);   /* the final path ("-" for stdout) */
-const char *ts_out_temp(const ts_out *o);   /* the temporary file, NULL for "-" */
-int ts_out_commit(ts_out *o, char *errbuf, size_t errlen);
-void ts_out_abort(ts_out *o);
+int tsu_out_open(tsu_out **out, const char *path, unsigned flags, char *errbuf, size_t errlen);
+FILE *tsu_out_file(const tsu_out *o);         /* the stream to write to */
+const char *tsu_out_path(const tsu_out *o);   /* the final path ("-" for stdout) */
+const char *tsu_out_temp(const tsu_out *o);   /* the temporary file, NULL for "-" */
+int tsu_out_commit(tsu_out *o, char *errbuf, size_t errlen);
+void tsu_out_abort(tsu_out *o);
 
 /* ------------------------------------------------------------------ */
 /* 4. Fast row writer                                                   */
 /* ------------------------------------------------------------------ */
 
 /*
- * Rows of numbers written with ts_format_double, fields separated by delim
+ * Rows of numbers written with tsu_format_double, fields separated by delim
  * (',' '\t' ' ' ';' allowed), "\n" at the end of each row, through a 64 KiB
  * buffer and fwrite.  Errors are sticky: every call returns 0 or the first
  * errno met (ENOSPC, EIO, ...); after an error nothing more is written.
  * Does not close fp.
  */
-typedef struct ts_writer ts_writer;
+typedef struct tsu_writer tsu_writer;
 
-ts_writer *ts_writer_new(FILE *fp, char delim);   /* NULL: no memory, NULL fp or bad delim */
-int ts_writer_row(ts_writer *w, const double *v, size_t n);
-int ts_writer_xy(ts_writer *w, double x, double y);
-int ts_writer_text(ts_writer *w, const char *s, size_t len);  /* raw bytes, e.g. a header line */
-int ts_writer_flush(ts_writer *w);                /* buffer -> fwrite -> fflush */
-int ts_writer_free(ts_writer *w);                 /* flush + free; returns the first error; NULL ok */
+tsu_writer *tsu_writer_new(FILE *fp, char delim);   /* NULL: no memory, NULL fp or bad delim */
+int tsu_writer_row(tsu_writer *w, const double *v, size_t n);
+int tsu_writer_xy(tsu_writer *w, double x, double y);
+int tsu_writer_text(tsu_writer *w, const char *s, size_t len);  /* raw bytes, e.g. a header line */
+int tsu_writer_flush(tsu_writer *w);                /* buffer -> fwrite -> fflush */
+int tsu_writer_free(tsu_writer *w);                 /* flush + free; returns the first error; NULL ok */
 
 /* ------------------------------------------------------------------ */
 /* Internal, for tests only                                             */
@@ -371,13 +375,13 @@ int ts_writer_free(ts_writer *w);                 /* flush + free; returns the f
 /* Entry a (-13 <= a <= 12) of the table of 10^(27a) ≈ (hi·2^64 + lo)·2^s
  * with 2^127 <= hi·2^64+lo < 2^128, truncated; *exact = 1 when equal.
  * Returns 0, or -1 for a out of range. */
-int ts_io__pow10_entry(int a, unsigned long long *hi, unsigned long long *lo, int *s, int *exact);
+int tsu_io__pow10_entry(int a, unsigned long long *hi, unsigned long long *lo, int *s, int *exact);
 
 /* Make the (n+1)-th allocation of this module from now on fail, once
  * (n < 0: never, the default).  A global: not thread-safe, tests only. */
-void ts_io__fail_alloc_after(long n);
+void tsu_io__fail_alloc_after(long n);
 
 #ifdef __cplusplus
 }
 #endif
-#endif /* TS_IO_H */
+#endif /* TSU_IO_H */

@@ -1,5 +1,5 @@
-/* SVG plots for the tool side (see ts_plot.h).  Standard C only. */
-#include "ts_plot.h"
+/* SVG plots for the tool side (see tsu_plot.h).  Standard C only. */
+#include "tsu_plot.h"
 
 #include <ctype.h>
 #include <float.h>
@@ -16,7 +16,7 @@
 
 static long alloc_budget = -1;
 
-void ts_plot_test_fail_alloc_after(long n) { alloc_budget = n < 0 ? -1 : n; }
+void tsu_plot_test_fail_alloc_after(long n) { alloc_budget = n < 0 ? -1 : n; }
 
 static int alloc_allowed(void)
 {
@@ -39,15 +39,15 @@ static char *pl_strdup(const char *s)
     return d;
 }
 
-const char *ts_plot_strerror(ts_plot_status st)
+const char *tsu_plot_strerror(tsu_plot_status st)
 {
     switch (st) {
-    case TS_PLOT_OK: return "success";
-    case TS_PLOT_ERR_NULL: return "a required pointer is NULL";
-    case TS_PLOT_ERR_NOMEM: return "out of memory";
-    case TS_PLOT_ERR_OVERFLOW: return "size overflow";
-    case TS_PLOT_ERR_ARG: return "invalid argument";
-    case TS_PLOT_ERR_IO: return "output error";
+    case TSU_PLOT_OK: return "success";
+    case TSU_PLOT_ERR_NULL: return "a required pointer is NULL";
+    case TSU_PLOT_ERR_NOMEM: return "out of memory";
+    case TSU_PLOT_ERR_OVERFLOW: return "size overflow";
+    case TSU_PLOT_ERR_ARG: return "invalid argument";
+    case TSU_PLOT_ERR_IO: return "output error";
     }
     return "unknown plot status";
 }
@@ -56,7 +56,7 @@ const char *ts_plot_strerror(ts_plot_status st)
 /* string buffer                                                        */
 /* ------------------------------------------------------------------ */
 
-void ts_plot_buf_init(ts_plot_buf *b)
+void tsu_plot_buf_init(tsu_plot_buf *b)
 {
     if (b) {
         b->data = NULL;
@@ -64,65 +64,65 @@ void ts_plot_buf_init(ts_plot_buf *b)
     }
 }
 
-void ts_plot_buf_free(ts_plot_buf *b)
+void tsu_plot_buf_free(tsu_plot_buf *b)
 {
     if (b) {
         free(b->data);
-        ts_plot_buf_init(b);
+        tsu_plot_buf_init(b);
     }
 }
 
-static ts_plot_status buf_reserve(ts_plot_buf *b, size_t extra)
+static tsu_plot_status buf_reserve(tsu_plot_buf *b, size_t extra)
 {
     if (extra > SIZE_MAX - 1 - b->len)
-        return TS_PLOT_ERR_OVERFLOW;
+        return TSU_PLOT_ERR_OVERFLOW;
     size_t need = b->len + extra + 1;
     if (b->data && need <= b->cap)
-        return TS_PLOT_OK;
+        return TSU_PLOT_OK;
     size_t cap = b->cap < 256 ? 256 : b->cap;
     while (cap < need)
         cap = cap > SIZE_MAX / 2 ? need : cap * 2;
     char *d = pl_realloc(b->data, cap);
     if (!d)
-        return TS_PLOT_ERR_NOMEM;
+        return TSU_PLOT_ERR_NOMEM;
     if (!b->data)
         d[0] = '\0';
     b->data = d;
     b->cap = cap;
-    return TS_PLOT_OK;
+    return TSU_PLOT_OK;
 }
 
-ts_plot_status ts_plot_buf_append(ts_plot_buf *b, const char *s, size_t n)
+tsu_plot_status tsu_plot_buf_append(tsu_plot_buf *b, const char *s, size_t n)
 {
     if (!b || (!s && n))
-        return TS_PLOT_ERR_NULL;
-    ts_plot_status st = buf_reserve(b, n);
+        return TSU_PLOT_ERR_NULL;
+    tsu_plot_status st = buf_reserve(b, n);
     if (st)
         return st;
     if (n)
         memcpy(b->data + b->len, s, n);
     b->len += n;
     b->data[b->len] = '\0';
-    return TS_PLOT_OK;
+    return TSU_PLOT_OK;
 }
 
-ts_plot_status ts_plot_buf_puts(ts_plot_buf *b, const char *s)
+tsu_plot_status tsu_plot_buf_puts(tsu_plot_buf *b, const char *s)
 {
     if (!s)
-        return TS_PLOT_ERR_NULL;
-    return ts_plot_buf_append(b, s, strlen(s));
+        return TSU_PLOT_ERR_NULL;
+    return tsu_plot_buf_append(b, s, strlen(s));
 }
 
-ts_plot_status ts_plot_buf_printf(ts_plot_buf *b, const char *fmt, ...)
+tsu_plot_status tsu_plot_buf_printf(tsu_plot_buf *b, const char *fmt, ...)
 {
     if (!b || !fmt)
-        return TS_PLOT_ERR_NULL;
+        return TSU_PLOT_ERR_NULL;
     va_list ap, ap2;
     va_start(ap, fmt);
     va_copy(ap2, ap);
     int n = vsnprintf(NULL, 0, fmt, ap);
     va_end(ap);
-    ts_plot_status st = TS_PLOT_ERR_ARG;
+    tsu_plot_status st = TSU_PLOT_ERR_ARG;
     if (n >= 0) {
         st = buf_reserve(b, (size_t)n);
         if (!st) {
@@ -182,14 +182,14 @@ static size_t utf8_count(const char *s)
     return n;
 }
 
-ts_plot_status ts_plot_buf_xml(ts_plot_buf *b, const char *text)
+tsu_plot_status tsu_plot_buf_xml(tsu_plot_buf *b, const char *text)
 {
     if (!b || !text)
-        return TS_PLOT_ERR_NULL;
+        return TSU_PLOT_ERR_NULL;
     size_t old = b->len;
     const unsigned char *u = (const unsigned char *)text;
     char tmp[16];
-    ts_plot_status st = TS_PLOT_OK;
+    tsu_plot_status st = TSU_PLOT_OK;
     while (*u && !st) {
         unsigned long cp;
         u += utf8_next(u, &cp);
@@ -214,7 +214,7 @@ ts_plot_status ts_plot_buf_xml(ts_plot_buf *b, const char *text)
         }
         if (rep != tmp)
             rn = strlen(rep);
-        st = ts_plot_buf_append(b, rep, rn);
+        st = tsu_plot_buf_append(b, rep, rn);
     }
     if (st && b->data) {
         b->len = old;
@@ -278,7 +278,7 @@ static void tick_label(long long q, int e, int shift, char *out, size_t cap)
 
 static int range_ok(double lo, double hi)
 {
-    return fabs(lo) <= TS_PLOT_MAX_ABS && fabs(hi) <= TS_PLOT_MAX_ABS;
+    return fabs(lo) <= TSU_PLOT_MAX_ABS && fabs(hi) <= TSU_PLOT_MAX_ABS;
 }
 
 /* a fixed range wide enough for distinct labels */
@@ -289,20 +289,20 @@ static int span_ok(double lo, double hi)
     return span > mag * 1e-10 && span >= 1e-200;
 }
 
-ts_plot_status ts_plot_ticks_compute(double lo, double hi, ts_plot_range_mode mode,
-                                     ts_plot_ticks *t)
+tsu_plot_status tsu_plot_ticks_compute(double lo, double hi, tsu_plot_range_mode mode,
+                                     tsu_plot_ticks *t)
 {
     if (!t)
-        return TS_PLOT_ERR_NULL;
+        return TSU_PLOT_ERR_NULL;
     memset(t, 0, sizeof *t);
-    if (!range_ok(lo, hi) || (mode != TS_PLOT_RANGE_AUTO && mode != TS_PLOT_RANGE_FIXED))
-        return TS_PLOT_ERR_ARG;
-    if (mode == TS_PLOT_RANGE_FIXED) {
+    if (!range_ok(lo, hi) || (mode != TSU_PLOT_RANGE_AUTO && mode != TSU_PLOT_RANGE_FIXED))
+        return TSU_PLOT_ERR_ARG;
+    if (mode == TSU_PLOT_RANGE_FIXED) {
         if (!(lo < hi) || !span_ok(lo, hi))
-            return TS_PLOT_ERR_ARG;
+            return TSU_PLOT_ERR_ARG;
     } else {
         if (!(lo <= hi))
-            return TS_PLOT_ERR_ARG;
+            return TSU_PLOT_ERR_ARG;
         if (!span_ok(lo, hi)) {
             double mid = 0.5 * lo + 0.5 * hi;
             double half = 0.1 * fabs(mid);
@@ -340,9 +340,9 @@ ts_plot_status ts_plot_ticks_compute(double lo, double hi, ts_plot_range_mode mo
     t->hi = hi;
     t->step = scaled(best_m, best_e);
     size_t n = 0;
-    long long qs[TS_PLOT_MAX_TICKS];
+    long long qs[TSU_PLOT_MAX_TICKS];
     unsigned long long qmax = 0;
-    for (double k = best_k0; k <= best_k1 && n < TS_PLOT_MAX_TICKS; k += 1.0) {
+    for (double k = best_k0; k <= best_k1 && n < TSU_PLOT_MAX_TICKS; k += 1.0) {
         long long q = (long long)k * best_m;
         unsigned long long a = q < 0 ? 0ULL - (unsigned long long)q : (unsigned long long)q;
         if (a > qmax)
@@ -358,9 +358,9 @@ ts_plot_status ts_plot_ticks_compute(double lo, double hi, ts_plot_range_mode mo
     for (size_t i = 0; i < n; i++) {
         double v = scaled(qs[i], best_e);
         t->value[i] = v < lo ? lo : v > hi ? hi : v;
-        tick_label(qs[i], best_e, shift, t->label[i], TS_PLOT_LABEL_MAX);
+        tick_label(qs[i], best_e, shift, t->label[i], TSU_PLOT_LABEL_MAX);
     }
-    return TS_PLOT_OK;
+    return TSU_PLOT_OK;
 }
 
 /* ------------------------------------------------------------------ */
@@ -379,16 +379,16 @@ typedef struct series {
     double *xy;       /* n (x, y) pairs */
     size_t n;
     double m, c;      /* K_LINE, K_REGION */
-    ts_plot_side side;
+    tsu_plot_side side;
 } series;
 
-struct ts_plot {
+struct tsu_plot {
     unsigned w, h;
     char *title, *xlabel, *ylabel;
     int fixed[2];
     double rng[2][2];
     int equal, xmldecl, grid;
-    ts_plot_legend legend;
+    tsu_plot_legend legend;
     double simplify;
     series *s;
     size_t ns, cap;
@@ -398,35 +398,35 @@ struct ts_plot {
 static const char *const palette[8] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7",
                                        "#E69F00", "#56B4E9", "#000000", "#F0E442"};
 
-const char *ts_plot_palette(size_t i) { return palette[i % 8]; }
+const char *tsu_plot_palette(size_t i) { return palette[i % 8]; }
 
-ts_plot_status ts_plot_new(unsigned width_px, unsigned height_px, ts_plot **out)
+tsu_plot_status tsu_plot_new(unsigned width_px, unsigned height_px, tsu_plot **out)
 {
     if (!out)
-        return TS_PLOT_ERR_NULL;
+        return TSU_PLOT_ERR_NULL;
     *out = NULL;
     if (width_px == 0)
-        width_px = TS_PLOT_DEFAULT_WIDTH;
+        width_px = TSU_PLOT_DEFAULT_WIDTH;
     if (height_px == 0)
-        height_px = TS_PLOT_DEFAULT_HEIGHT;
-    if (width_px < TS_PLOT_MIN_SIZE || width_px > TS_PLOT_MAX_SIZE ||
-        height_px < TS_PLOT_MIN_SIZE || height_px > TS_PLOT_MAX_SIZE)
-        return TS_PLOT_ERR_ARG;
-    ts_plot *p = pl_malloc(sizeof *p);
+        height_px = TSU_PLOT_DEFAULT_HEIGHT;
+    if (width_px < TSU_PLOT_MIN_SIZE || width_px > TSU_PLOT_MAX_SIZE ||
+        height_px < TSU_PLOT_MIN_SIZE || height_px > TSU_PLOT_MAX_SIZE)
+        return TSU_PLOT_ERR_ARG;
+    tsu_plot *p = pl_malloc(sizeof *p);
     if (!p)
-        return TS_PLOT_ERR_NOMEM;
+        return TSU_PLOT_ERR_NOMEM;
     memset(p, 0, sizeof *p);
     p->w = width_px;
     p->h = height_px;
     p->xmldecl = 1;
     p->grid = 1;
     p->simplify = 0.1;
-    p->legend = TS_PLOT_LEGEND_AUTO;
+    p->legend = TSU_PLOT_LEGEND_AUTO;
     *out = p;
-    return TS_PLOT_OK;
+    return TSU_PLOT_OK;
 }
 
-void ts_plot_free(ts_plot *p)
+void tsu_plot_free(tsu_plot *p)
 {
     if (!p)
         return;
@@ -442,101 +442,101 @@ void ts_plot_free(ts_plot *p)
 }
 
 /* replace *dst by a copy of src (NULL/"" clears) */
-static ts_plot_status set_text(char **dst, const char *src)
+static tsu_plot_status set_text(char **dst, const char *src)
 {
     char *d = NULL;
     if (src && *src) {
         d = pl_strdup(src);
         if (!d)
-            return TS_PLOT_ERR_NOMEM;
+            return TSU_PLOT_ERR_NOMEM;
     }
     free(*dst);
     *dst = d;
-    return TS_PLOT_OK;
+    return TSU_PLOT_OK;
 }
 
-ts_plot_status ts_plot_set_title(ts_plot *p, const char *title)
+tsu_plot_status tsu_plot_set_title(tsu_plot *p, const char *title)
 {
-    return p ? set_text(&p->title, title) : TS_PLOT_ERR_NULL;
+    return p ? set_text(&p->title, title) : TSU_PLOT_ERR_NULL;
 }
 
-ts_plot_status ts_plot_set_labels(ts_plot *p, const char *xlabel, const char *ylabel)
+tsu_plot_status tsu_plot_set_labels(tsu_plot *p, const char *xlabel, const char *ylabel)
 {
     if (!p)
-        return TS_PLOT_ERR_NULL;
+        return TSU_PLOT_ERR_NULL;
     char *x = NULL, *y = NULL;
     if (set_text(&x, xlabel) || set_text(&y, ylabel)) {
         free(x);
-        return TS_PLOT_ERR_NOMEM;
+        return TSU_PLOT_ERR_NOMEM;
     }
     free(p->xlabel);
     free(p->ylabel);
     p->xlabel = x;
     p->ylabel = y;
-    return TS_PLOT_OK;
+    return TSU_PLOT_OK;
 }
 
-static ts_plot_status set_range(ts_plot *p, int axis, double lo, double hi)
+static tsu_plot_status set_range(tsu_plot *p, int axis, double lo, double hi)
 {
     if (!p)
-        return TS_PLOT_ERR_NULL;
+        return TSU_PLOT_ERR_NULL;
     if (isnan(lo) && isnan(hi)) {
         p->fixed[axis] = 0;
-        return TS_PLOT_OK;
+        return TSU_PLOT_OK;
     }
     if (!range_ok(lo, hi) || !(lo < hi) || !span_ok(lo, hi))
-        return TS_PLOT_ERR_ARG;
+        return TSU_PLOT_ERR_ARG;
     p->fixed[axis] = 1;
     p->rng[axis][0] = lo;
     p->rng[axis][1] = hi;
-    return TS_PLOT_OK;
+    return TSU_PLOT_OK;
 }
 
-ts_plot_status ts_plot_set_xrange(ts_plot *p, double lo, double hi) { return set_range(p, 0, lo, hi); }
-ts_plot_status ts_plot_set_yrange(ts_plot *p, double lo, double hi) { return set_range(p, 1, lo, hi); }
+tsu_plot_status tsu_plot_set_xrange(tsu_plot *p, double lo, double hi) { return set_range(p, 0, lo, hi); }
+tsu_plot_status tsu_plot_set_yrange(tsu_plot *p, double lo, double hi) { return set_range(p, 1, lo, hi); }
 
-ts_plot_status ts_plot_set_equal_aspect(ts_plot *p, int on)
+tsu_plot_status tsu_plot_set_equal_aspect(tsu_plot *p, int on)
 {
     if (!p)
-        return TS_PLOT_ERR_NULL;
+        return TSU_PLOT_ERR_NULL;
     p->equal = on != 0;
-    return TS_PLOT_OK;
+    return TSU_PLOT_OK;
 }
 
-ts_plot_status ts_plot_set_legend(ts_plot *p, ts_plot_legend where)
+tsu_plot_status tsu_plot_set_legend(tsu_plot *p, tsu_plot_legend where)
 {
     if (!p)
-        return TS_PLOT_ERR_NULL;
-    if (!(where >= TS_PLOT_LEGEND_AUTO && where <= TS_PLOT_LEGEND_LOWER_RIGHT))
-        return TS_PLOT_ERR_ARG;
+        return TSU_PLOT_ERR_NULL;
+    if (!(where >= TSU_PLOT_LEGEND_AUTO && where <= TSU_PLOT_LEGEND_LOWER_RIGHT))
+        return TSU_PLOT_ERR_ARG;
     p->legend = where;
-    return TS_PLOT_OK;
+    return TSU_PLOT_OK;
 }
 
-ts_plot_status ts_plot_set_xml_declaration(ts_plot *p, int on)
+tsu_plot_status tsu_plot_set_xml_declaration(tsu_plot *p, int on)
 {
     if (!p)
-        return TS_PLOT_ERR_NULL;
+        return TSU_PLOT_ERR_NULL;
     p->xmldecl = on != 0;
-    return TS_PLOT_OK;
+    return TSU_PLOT_OK;
 }
 
-ts_plot_status ts_plot_set_grid(ts_plot *p, int on)
+tsu_plot_status tsu_plot_set_grid(tsu_plot *p, int on)
 {
     if (!p)
-        return TS_PLOT_ERR_NULL;
+        return TSU_PLOT_ERR_NULL;
     p->grid = on != 0;
-    return TS_PLOT_OK;
+    return TSU_PLOT_OK;
 }
 
-ts_plot_status ts_plot_set_simplify(ts_plot *p, double tol_px)
+tsu_plot_status tsu_plot_set_simplify(tsu_plot *p, double tol_px)
 {
     if (!p)
-        return TS_PLOT_ERR_NULL;
+        return TSU_PLOT_ERR_NULL;
     if (!(tol_px >= 0 && tol_px <= 10))
-        return TS_PLOT_ERR_ARG;
+        return TSU_PLOT_ERR_ARG;
     p->simplify = tol_px;
-    return TS_PLOT_OK;
+    return TSU_PLOT_OK;
 }
 
 static int color_ok(const char *c)
@@ -560,17 +560,17 @@ static int color_ok(const char *c)
     return 1;
 }
 
-static ts_plot_status style_ok(const ts_plot_style *st)
+static tsu_plot_status style_ok(const tsu_plot_style *st)
 {
     if (!st)
-        return TS_PLOT_OK;
+        return TSU_PLOT_OK;
     if (st->color && st->color[0] && !color_ok(st->color))
-        return TS_PLOT_ERR_ARG;
+        return TSU_PLOT_ERR_ARG;
     if (!(st->width >= 0 && st->width <= 50) || !(st->marker_radius >= 0 && st->marker_radius <= 50))
-        return TS_PLOT_ERR_ARG;
+        return TSU_PLOT_ERR_ARG;
     if (!(st->fill_opacity >= 0 && st->fill_opacity <= 1) || st->dash < 0 || st->dash > 2)
-        return TS_PLOT_ERR_ARG;
-    return TS_PLOT_OK;
+        return TSU_PLOT_ERR_ARG;
+    return TSU_PLOT_OK;
 }
 
 static int same_color(const char *a, const char *b)
@@ -583,7 +583,7 @@ static int same_color(const char *a, const char *b)
     return *a == *b;
 }
 
-static int color_used(const ts_plot *p, const char *c)
+static int color_used(const tsu_plot *p, const char *c)
 {
     for (size_t i = 0; i < p->ns; i++)
         if (p->s[i].explicit_color && same_color(p->s[i].color, c))
@@ -592,19 +592,19 @@ static int color_used(const ts_plot *p, const char *c)
 }
 
 /* Validate, copy data, append a series.  On failure the plot is unchanged. */
-static ts_plot_status add_series(ts_plot *p, enum kind kind, const double *x, const double *y,
-                                 size_t n, const char *label, const ts_plot_style *st,
-                                 double m, double c, ts_plot_side side)
+static tsu_plot_status add_series(tsu_plot *p, enum kind kind, const double *x, const double *y,
+                                 size_t n, const char *label, const tsu_plot_style *st,
+                                 double m, double c, tsu_plot_side side)
 {
     if (!p || (n && (!x || !y)))
-        return TS_PLOT_ERR_NULL;
-    ts_plot_status rc = style_ok(st);
+        return TSU_PLOT_ERR_NULL;
+    tsu_plot_status rc = style_ok(st);
     if (rc)
         return rc;
     if (n > SIZE_MAX / (2 * sizeof(double)))
-        return TS_PLOT_ERR_OVERFLOW;
+        return TSU_PLOT_ERR_OVERFLOW;
     if (p->ns == p->cap && p->cap > SIZE_MAX / 2 / sizeof(series))
-        return TS_PLOT_ERR_OVERFLOW;
+        return TSU_PLOT_ERR_OVERFLOW;
     series s;
     memset(&s, 0, sizeof s);
     s.kind = kind;
@@ -615,7 +615,7 @@ static ts_plot_status add_series(ts_plot *p, enum kind kind, const double *x, co
     if (n) {
         s.xy = pl_malloc(n * 2 * sizeof(double));
         if (!s.xy)
-            return TS_PLOT_ERR_NOMEM;
+            return TSU_PLOT_ERR_NOMEM;
         for (size_t i = 0; i < n; i++) {
             s.xy[2 * i] = x[i];
             s.xy[2 * i + 1] = y[i];
@@ -623,7 +623,7 @@ static ts_plot_status add_series(ts_plot *p, enum kind kind, const double *x, co
     }
     if (label && *label && !(s.label = pl_strdup(label))) {
         free(s.xy);
-        return TS_PLOT_ERR_NOMEM;
+        return TSU_PLOT_ERR_NOMEM;
     }
     if (p->ns == p->cap) {
         size_t cap = p->cap ? 2 * p->cap : 8;
@@ -631,13 +631,13 @@ static ts_plot_status add_series(ts_plot *p, enum kind kind, const double *x, co
         if (!ns) {
             free(s.xy);
             free(s.label);
-            return TS_PLOT_ERR_NOMEM;
+            return TSU_PLOT_ERR_NOMEM;
         }
         p->s = ns;
         p->cap = cap;
     }
-    /* style, with the defaults of ts_plot.h */
-    ts_plot_style d;
+    /* style, with the defaults of tsu_plot.h */
+    tsu_plot_style d;
     memset(&d, 0, sizeof d);
     if (st)
         d = *st;
@@ -656,64 +656,64 @@ static ts_plot_status add_series(ts_plot *p, enum kind kind, const double *x, co
     s.marker_r = d.marker_radius > 0 ? d.marker_radius : kind == K_POINTS ? 3.5 : 2.5;
     s.opacity = d.fill_opacity > 0 ? d.fill_opacity : 0.13;
     p->s[p->ns++] = s;
-    return TS_PLOT_OK;
+    return TSU_PLOT_OK;
 }
 
-ts_plot_status ts_plot_add_points(ts_plot *p, const double *x, const double *y, size_t n,
-                                  const char *label, const ts_plot_style *st)
+tsu_plot_status tsu_plot_add_points(tsu_plot *p, const double *x, const double *y, size_t n,
+                                  const char *label, const tsu_plot_style *st)
 {
-    return add_series(p, K_POINTS, x, y, n, label, st, 0, 0, TS_PLOT_FORBID_BELOW);
+    return add_series(p, K_POINTS, x, y, n, label, st, 0, 0, TSU_PLOT_FORBID_BELOW);
 }
 
-ts_plot_status ts_plot_add_polyline(ts_plot *p, const double *x, const double *y, size_t n,
-                                    const char *label, const ts_plot_style *st)
+tsu_plot_status tsu_plot_add_polyline(tsu_plot *p, const double *x, const double *y, size_t n,
+                                    const char *label, const tsu_plot_style *st)
 {
-    return add_series(p, K_POLY, x, y, n, label, st, 0, 0, TS_PLOT_FORBID_BELOW);
+    return add_series(p, K_POLY, x, y, n, label, st, 0, 0, TSU_PLOT_FORBID_BELOW);
 }
 
-ts_plot_status ts_plot_add_polygon(ts_plot *p, const double *x, const double *y, size_t n,
-                                   const char *label, const ts_plot_style *st)
+tsu_plot_status tsu_plot_add_polygon(tsu_plot *p, const double *x, const double *y, size_t n,
+                                   const char *label, const tsu_plot_style *st)
 {
-    ts_plot_style d;
+    tsu_plot_style d;
     memset(&d, 0, sizeof d);
     if (st)
         d = *st;
     if (d.dash == 0)
         d.dash = 1;
     d.markers = 1;
-    return add_series(p, K_POLY, x, y, n, label, &d, 0, 0, TS_PLOT_FORBID_BELOW);
+    return add_series(p, K_POLY, x, y, n, label, &d, 0, 0, TSU_PLOT_FORBID_BELOW);
 }
 
-ts_plot_status ts_plot_add_line(ts_plot *p, double m, double c, const char *label,
-                                const ts_plot_style *st)
+tsu_plot_status tsu_plot_add_line(tsu_plot *p, double m, double c, const char *label,
+                                const tsu_plot_style *st)
 {
     if (!p)
-        return TS_PLOT_ERR_NULL;
+        return TSU_PLOT_ERR_NULL;
     if (!isfinite(m) || !isfinite(c))
-        return TS_PLOT_ERR_ARG;
-    return add_series(p, K_LINE, NULL, NULL, 0, label, st, m, c, TS_PLOT_FORBID_BELOW);
+        return TSU_PLOT_ERR_ARG;
+    return add_series(p, K_LINE, NULL, NULL, 0, label, st, m, c, TSU_PLOT_FORBID_BELOW);
 }
 
-ts_plot_status ts_plot_add_region(ts_plot *p, ts_plot_side side, double m, double c,
-                                  const char *label, const ts_plot_style *st)
+tsu_plot_status tsu_plot_add_region(tsu_plot *p, tsu_plot_side side, double m, double c,
+                                  const char *label, const tsu_plot_style *st)
 {
     if (!p)
-        return TS_PLOT_ERR_NULL;
-    if (!isfinite(m) || !isfinite(c) || (side != TS_PLOT_FORBID_BELOW && side != TS_PLOT_FORBID_ABOVE))
-        return TS_PLOT_ERR_ARG;
+        return TSU_PLOT_ERR_NULL;
+    if (!isfinite(m) || !isfinite(c) || (side != TSU_PLOT_FORBID_BELOW && side != TSU_PLOT_FORBID_ABOVE))
+        return TSU_PLOT_ERR_ARG;
     return add_series(p, K_REGION, NULL, NULL, 0, label, st, m, c, side);
 }
 
-ts_plot_status ts_plot_add_floor(ts_plot *p, double level, const char *label,
-                                 const ts_plot_style *st)
+tsu_plot_status tsu_plot_add_floor(tsu_plot *p, double level, const char *label,
+                                 const tsu_plot_style *st)
 {
-    return ts_plot_add_region(p, TS_PLOT_FORBID_BELOW, 0.0, level, label, st);
+    return tsu_plot_add_region(p, TSU_PLOT_FORBID_BELOW, 0.0, level, label, st);
 }
 
-ts_plot_status ts_plot_add_ceiling(ts_plot *p, double level, const char *label,
-                                   const ts_plot_style *st)
+tsu_plot_status tsu_plot_add_ceiling(tsu_plot *p, double level, const char *label,
+                                   const tsu_plot_style *st)
 {
-    return ts_plot_add_region(p, TS_PLOT_FORBID_ABOVE, 0.0, level, label, st);
+    return tsu_plot_add_region(p, TSU_PLOT_FORBID_ABOVE, 0.0, level, label, st);
 }
 
 /* ------------------------------------------------------------------ */
@@ -733,7 +733,7 @@ enum { LG_NONE, LG_OUTSIDE, LG_UR, LG_UL, LG_LL, LG_LR, LG_R, LG_L, LG_T, LG_B, 
 
 typedef struct layout {
     double L, T, PW, PH;
-    ts_plot_ticks tx, ty;
+    tsu_plot_ticks tx, ty;
     int lg;               /* LG_* */
     double lgx, lgy, lgw, lgh;
     size_t nleg;
@@ -743,11 +743,11 @@ static double text_w(const char *s, double fs) { return (double)utf8_count(s) * 
 
 static int valid_xy(double x, double y)
 {
-    return fabs(x) <= TS_PLOT_MAX_ABS && fabs(y) <= TS_PLOT_MAX_ABS;
+    return fabs(x) <= TSU_PLOT_MAX_ABS && fabs(y) <= TSU_PLOT_MAX_ABS;
 }
 
 /* the data extents (auto ranges before padding) */
-static void data_extent(const ts_plot *p, double ext[2][2])
+static void data_extent(const tsu_plot *p, double ext[2][2])
 {
     double xl = HUGE_VAL, xh = -HUGE_VAL, yl = HUGE_VAL, yh = -HUGE_VAL;
     for (size_t i = 0; i < p->ns; i++) {
@@ -773,7 +773,7 @@ static void data_extent(const ts_plot *p, double ext[2][2])
             continue;
         for (int e = 0; e < 2; e++) {
             double y = s->m * (e ? xh : xl) + s->c;
-            if (fabs(y) <= TS_PLOT_MAX_ABS)
+            if (fabs(y) <= TSU_PLOT_MAX_ABS)
                 yl = fmin(yl, y), yh = fmax(yh, y);
         }
     }
@@ -782,7 +782,7 @@ static void data_extent(const ts_plot *p, double ext[2][2])
     ext[0][0] = xl, ext[0][1] = xh, ext[1][0] = yl, ext[1][1] = yh;
 }
 
-static double ticks_label_w(const ts_plot_ticks *t)
+static double ticks_label_w(const tsu_plot_ticks *t)
 {
     double w = 0;
     for (size_t i = 0; i < t->n; i++)
@@ -790,7 +790,7 @@ static double ticks_label_w(const ts_plot_ticks *t)
     return w;
 }
 
-static void legend_size(const ts_plot *p, layout *ly)
+static void legend_size(const tsu_plot *p, layout *ly)
 {
     double tw = 0;
     ly->nleg = 0;
@@ -804,7 +804,7 @@ static void legend_size(const ts_plot *p, layout *ly)
 }
 
 /* margins and plot area from the ticks, legend placement class */
-static void place_area(const ts_plot *p, layout *ly)
+static void place_area(const tsu_plot *p, layout *ly)
 {
     double top = 12, bottom = 10, left = 10, right = 16;
     if (p->title)
@@ -833,19 +833,19 @@ static void place_area(const ts_plot *p, layout *ly)
         ly->PH = 20;
 }
 
-static void base_ticks(const ts_plot *p, double ext[2][2], layout *ly)
+static void base_ticks(const tsu_plot *p, double ext[2][2], layout *ly)
 {
-    ts_plot_ticks *t[2] = {&ly->tx, &ly->ty};
+    tsu_plot_ticks *t[2] = {&ly->tx, &ly->ty};
     for (int a = 0; a < 2; a++) {
         if (p->fixed[a])
-            ts_plot_ticks_compute(p->rng[a][0], p->rng[a][1], TS_PLOT_RANGE_FIXED, t[a]);
+            tsu_plot_ticks_compute(p->rng[a][0], p->rng[a][1], TSU_PLOT_RANGE_FIXED, t[a]);
         else
-            ts_plot_ticks_compute(ext[a][0], ext[a][1], TS_PLOT_RANGE_AUTO, t[a]);
+            tsu_plot_ticks_compute(ext[a][0], ext[a][1], TSU_PLOT_RANGE_AUTO, t[a]);
     }
 }
 
 /* equal aspect: from the base ranges, widen one axis about its centre */
-static void apply_aspect(layout *ly, const ts_plot_ticks base[2])
+static void apply_aspect(layout *ly, const tsu_plot_ticks base[2])
 {
     double ux = (base[0].hi - base[0].lo) / ly->PW, uy = (base[1].hi - base[1].lo) / ly->PH;
     int a = ux > uy ? 1 : 0; /* the axis to widen */
@@ -853,17 +853,17 @@ static void apply_aspect(layout *ly, const ts_plot_ticks base[2])
     double mid = 0.5 * base[a].lo + 0.5 * base[a].hi, half = 0.5 * fmax(ux, uy) * len;
     ly->tx = base[0];
     ly->ty = base[1];
-    ts_plot_ticks nt;
-    if (ts_plot_ticks_compute(mid - half, mid + half, TS_PLOT_RANGE_FIXED, &nt) == TS_PLOT_OK)
+    tsu_plot_ticks nt;
+    if (tsu_plot_ticks_compute(mid - half, mid + half, TSU_PLOT_RANGE_FIXED, &nt) == TSU_PLOT_OK)
         *(a ? &ly->ty : &ly->tx) = nt;
 }
 
-static void area_with_ticks(const ts_plot *p, double ext[2][2], layout *ly)
+static void area_with_ticks(const tsu_plot *p, double ext[2][2], layout *ly)
 {
     base_ticks(p, ext, ly);
     place_area(p, ly);
     if (p->equal) {
-        ts_plot_ticks base[2] = {ly->tx, ly->ty};
+        tsu_plot_ticks base[2] = {ly->tx, ly->ty};
         for (int it = 0; it < 3; it++) {
             apply_aspect(ly, base);
             place_area(p, ly);
@@ -999,7 +999,7 @@ static size_t region_poly(const layout *ly, const series *s, double out[10])
     if (!(fabs(va) <= 1e150 && fabs(vb) <= 1e150))
         return 0;
     static const double cu[4] = {0, 1, 1, 0}, cv[4] = {0, 0, 1, 1};
-    double sgn = s->side == TS_PLOT_FORBID_BELOW ? 1.0 : -1.0;
+    double sgn = s->side == TSU_PLOT_FORBID_BELOW ? 1.0 : -1.0;
     double g[4];
     for (int i = 0; i < 4; i++)
         g[i] = sgn * (va + (vb - va) * cu[i] - cv[i]); /* >= 0: forbidden */
@@ -1081,7 +1081,7 @@ static void legend_box_at(layout *ly, int where)
     ly->lgy = fmax(ly->lgy, 2);
 }
 
-static double legend_score(const ts_plot *p, const layout *ly)
+static double legend_score(const tsu_plot *p, const layout *ly)
 {
     score_sink s;
     memset(&s, 0, sizeof s);
@@ -1116,7 +1116,7 @@ static double legend_score(const ts_plot *p, const layout *ly)
                         double x = ly->tx.lo + (px - ly->L) / ly->PW * (ly->tx.hi - ly->tx.lo);
                         double y = ly->ty.lo + (ly->T + ly->PH - py) / ly->PH * (ly->ty.hi - ly->ty.lo);
                         double g = se->m * x + se->c - y;
-                        if (se->side == TS_PLOT_FORBID_ABOVE)
+                        if (se->side == TSU_PLOT_FORBID_ABOVE)
                             g = -g;
                         if (g > 0) /* all 20 together weigh less than one data sample */
                             s.score += 0.04;
@@ -1127,7 +1127,7 @@ static double legend_score(const ts_plot *p, const layout *ly)
     return s.score;
 }
 
-static void do_layout(const ts_plot *p, layout *ly)
+static void do_layout(const tsu_plot *p, layout *ly)
 {
     double ext[2][2];
     memset(ly, 0, sizeof *ly);
@@ -1135,12 +1135,12 @@ static void do_layout(const ts_plot *p, layout *ly)
     legend_size(p, ly);
     ly->lg = LG_NONE;
     area_with_ticks(p, ext, ly);
-    if (ly->nleg == 0 || p->legend == TS_PLOT_LEGEND_NONE)
+    if (ly->nleg == 0 || p->legend == TSU_PLOT_LEGEND_NONE)
         return;
     static const int corner_of[] = {0, 0, LG_OUTSIDE, LG_UR, LG_UL, LG_LL, LG_LR};
     int want = corner_of[p->legend];
     int fits = ly->lgw <= ly->PW - 16 && ly->lgh <= ly->PH - 16;
-    if (p->legend == TS_PLOT_LEGEND_AUTO) {
+    if (p->legend == TSU_PLOT_LEGEND_AUTO) {
         /* corners first, then edge middles, then the centre; ties keep the earlier */
         static const int order[9] = {LG_UR, LG_UL, LG_LR, LG_LL, LG_R, LG_L, LG_T, LG_B, LG_C};
         double best = HUGE_VAL;
@@ -1169,16 +1169,16 @@ static void do_layout(const ts_plot *p, layout *ly)
     legend_box_at(ly, want);
 }
 
-ts_plot_status ts_plot_get_ticks(const ts_plot *p, int axis, ts_plot_ticks *t)
+tsu_plot_status tsu_plot_get_ticks(const tsu_plot *p, int axis, tsu_plot_ticks *t)
 {
     if (!p || !t)
-        return TS_PLOT_ERR_NULL;
+        return TSU_PLOT_ERR_NULL;
     if (axis != 0 && axis != 1)
-        return TS_PLOT_ERR_ARG;
+        return TSU_PLOT_ERR_ARG;
     layout ly;
     do_layout(p, &ly);
     *t = axis ? ly.ty : ly.tx;
-    return TS_PLOT_OK;
+    return TSU_PLOT_OK;
 }
 
 /* ------------------------------------------------------------------ */
@@ -1186,14 +1186,14 @@ ts_plot_status ts_plot_get_ticks(const ts_plot *p, int axis, ts_plot_ticks *t)
 /* ------------------------------------------------------------------ */
 
 typedef struct wr {
-    ts_plot_buf *b;
-    ts_plot_status st;
+    tsu_plot_buf *b;
+    tsu_plot_status st;
 } wr;
 
 static void w_raw(wr *w, const char *s, size_t n)
 {
     if (!w->st)
-        w->st = ts_plot_buf_append(w->b, s, n);
+        w->st = tsu_plot_buf_append(w->b, s, n);
 }
 
 static void w_s(wr *w, const char *s) { w_raw(w, s, strlen(s)); }
@@ -1201,7 +1201,7 @@ static void w_s(wr *w, const char *s) { w_raw(w, s, strlen(s)); }
 static void w_xml(wr *w, const char *s)
 {
     if (!w->st)
-        w->st = ts_plot_buf_xml(w->b, s);
+        w->st = tsu_plot_buf_xml(w->b, s);
 }
 
 /* pixel value, 2 decimals, no trailing zeros; never nan/inf */
@@ -1560,10 +1560,10 @@ static void w_exponent(wr *w, const char *cls, double x, double y, const char *a
     w_s(w, "</tspan></text>\n");
 }
 
-static void w_axes(wr *w, const ts_plot *p, const layout *ly)
+static void w_axes(wr *w, const tsu_plot *p, const layout *ly)
 {
     double L = ly->L, T = ly->T, R = ly->L + ly->PW, B = ly->T + ly->PH;
-    double xs[TS_PLOT_MAX_TICKS], ys[TS_PLOT_MAX_TICKS];
+    double xs[TSU_PLOT_MAX_TICKS], ys[TSU_PLOT_MAX_TICKS];
     for (size_t i = 0; i < ly->tx.n; i++)
         xs[i] = map_x(ly, ly->tx.value[i]);
     for (size_t i = 0; i < ly->ty.n; i++)
@@ -1654,7 +1654,7 @@ static void w_grid(wr *w, const layout *ly)
     w_s(w, "</g>\n");
 }
 
-static void w_legend(wr *w, const ts_plot *p, const layout *ly)
+static void w_legend(wr *w, const tsu_plot *p, const layout *ly)
 {
     w_s(w, "<g class=\"legend\"><rect");
     w_attr(w, "x", ly->lgx);
@@ -1694,7 +1694,7 @@ static void w_legend(wr *w, const ts_plot *p, const layout *ly)
             w_s(w, "</g>");
             break;
         case K_REGION: {
-            double edge = s->side == TS_PLOT_FORBID_BELOW ? cy - 5 : cy + 5;
+            double edge = s->side == TSU_PLOT_FORBID_BELOW ? cy - 5 : cy + 5;
             w_s(w, "<rect");
             w_attr(w, "x", x0);
             w_attr(w, "y", cy - 5);
@@ -1722,12 +1722,12 @@ static void w_legend(wr *w, const ts_plot *p, const layout *ly)
     w_s(w, "</g>\n");
 }
 
-ts_plot_status ts_plot_render(const ts_plot *p, ts_plot_buf *b)
+tsu_plot_status tsu_plot_render(const tsu_plot *p, tsu_plot_buf *b)
 {
     if (!p || !b)
-        return TS_PLOT_ERR_NULL;
+        return TSU_PLOT_ERR_NULL;
     size_t old = b->len;
-    wr w = {b, TS_PLOT_OK};
+    wr w = {b, TSU_PLOT_OK};
     layout ly;
     do_layout(p, &ly);
     char hdr[400];
@@ -1771,37 +1771,37 @@ ts_plot_status ts_plot_render(const ts_plot *p, ts_plot_buf *b)
     return w.st;
 }
 
-ts_plot_status ts_plot_write(const ts_plot *p, FILE *f)
+tsu_plot_status tsu_plot_write(const tsu_plot *p, FILE *f)
 {
     if (!p || !f)
-        return TS_PLOT_ERR_NULL;
-    ts_plot_buf b = TS_PLOT_BUF_INIT;
-    ts_plot_status st = ts_plot_render(p, &b);
+        return TSU_PLOT_ERR_NULL;
+    tsu_plot_buf b = TSU_PLOT_BUF_INIT;
+    tsu_plot_status st = tsu_plot_render(p, &b);
     if (!st) {
         if (fwrite(b.data, 1, b.len, f) != b.len || fflush(f) != 0 || ferror(f))
-            st = TS_PLOT_ERR_IO;
+            st = TSU_PLOT_ERR_IO;
     }
-    ts_plot_buf_free(&b);
+    tsu_plot_buf_free(&b);
     return st;
 }
 
-ts_plot_status ts_plot_save(const ts_plot *p, const char *path)
+tsu_plot_status tsu_plot_save(const tsu_plot *p, const char *path)
 {
     if (!p || !path)
-        return TS_PLOT_ERR_NULL;
-    ts_plot_buf b = TS_PLOT_BUF_INIT;
-    ts_plot_status st = ts_plot_render(p, &b);
+        return TSU_PLOT_ERR_NULL;
+    tsu_plot_buf b = TSU_PLOT_BUF_INIT;
+    tsu_plot_status st = tsu_plot_render(p, &b);
     if (!st) {
         FILE *f = fopen(path, "wb");
         if (!f) {
-            st = TS_PLOT_ERR_IO;
+            st = TSU_PLOT_ERR_IO;
         } else {
             if (fwrite(b.data, 1, b.len, f) != b.len)
-                st = TS_PLOT_ERR_IO;
+                st = TSU_PLOT_ERR_IO;
             if (fclose(f) != 0)
-                st = TS_PLOT_ERR_IO;
+                st = TSU_PLOT_ERR_IO;
         }
     }
-    ts_plot_buf_free(&b);
+    tsu_plot_buf_free(&b);
     return st;
 }

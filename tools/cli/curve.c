@@ -1,4 +1,4 @@
-/* trigspline curve: parametric curves (SPEC §7). */
+/* trigspline curve: parametric curves (docs/method.md §7). */
 #include "cli.h"
 
 #include <math.h>
@@ -8,7 +8,7 @@
 
 static int curve_error(const cli_opts *o, const cli_data *d, ts_status st, const ts_error *e)
 {
-    char w[TS_IO_MSG_SIZE], b[3][TS_FMT_SIZE];
+    char w[TSU_IO_MSG_SIZE], b[3][TSU_FMT_SIZE];
     size_t i = e->index;
     int point = e->where == TS_WHERE_POINT && i < d->n;
     if (point && d->line)
@@ -143,11 +143,11 @@ int cli_curve(cli_opts *o)
     ts_interval_report *reps = NULL;
     cli_json j;
     cli_json_init(&j);
-    ts_plot_buf svg = TS_PLOT_BUF_INIT, text = TS_PLOT_BUF_INIT;
+    tsu_plot_buf svg = TSU_PLOT_BUF_INIT, text = TSU_PLOT_BUF_INIT;
     cli_xy cx = {0}, ctl = {0}, bx = {0};
-    ts_plot *p = NULL;
+    tsu_plot *p = NULL;
     int certified = 0, has_box = 0;
-    double min_gap = INFINITY;
+    double min_gap = (double)INFINITY;
 
     st = ts_curve_sample(c, m, NULL, 0, &rows);
     if (st != TS_ERR_LENGTH && st != TS_OK) {
@@ -182,8 +182,8 @@ int cli_curve(cli_opts *o)
     }
 
     if (o->json) {
-        double len = NAN, mn[3] = {INFINITY, INFINITY, INFINITY}, mx[3] = {-INFINITY, -INFINITY,
-                                                                            -INFINITY};
+        double len = (double)NAN, mn[3] = {(double)INFINITY, (double)INFINITY, (double)INFINITY}, mx[3] = {-(double)INFINITY, -(double)INFINITY,
+                                                                            -(double)INFINITY};
         const char *axn[3] = {"x", "y", "z"};
         char key[16];
         (void)ts_curve_length(c, 0.0, &len);
@@ -264,7 +264,7 @@ int cli_curve(cli_opts *o)
             cli_json_end(&j, ']');
             cli_json_key(&j, "min_gap");
             if (has_box) {
-                double g = INFINITY;
+                double g = (double)INFINITY;
                 int ok = 1;
                 for (size_t k = 0; k < dim; k++) {
                     const ts_interval_report *r = &reps[i * dim + k];
@@ -302,12 +302,12 @@ int cli_curve(cli_opts *o)
             goto done;
         }
     } else {
-        int bad = ts_plot_buf_puts(&text, dim == 3 ? "t,x,y,z\n" : "t,x,y\n") != TS_PLOT_OK;
-        char b[TS_FMT_SIZE];
+        int bad = tsu_plot_buf_puts(&text, dim == 3 ? "t,x,y,z\n" : "t,x,y\n") != TSU_PLOT_OK;
+        char b[TSU_FMT_SIZE];
         for (size_t r = 0; r < rows && !bad; r++) {
             for (size_t k = 0; k <= dim && !bad; k++) {
-                bad |= ts_plot_buf_puts(&text, cli_num(smp[r * (1 + dim) + k], b)) != TS_PLOT_OK;
-                bad |= ts_plot_buf_puts(&text, k < dim ? "," : "\n") != TS_PLOT_OK;
+                bad |= tsu_plot_buf_puts(&text, cli_num(smp[r * (1 + dim) + k], b)) != TSU_PLOT_OK;
+                bad |= tsu_plot_buf_puts(&text, k < dim ? "," : "\n") != TSU_PLOT_OK;
             }
         }
         if (bad) {
@@ -317,24 +317,24 @@ int cli_curve(cli_opts *o)
     }
 
     if (o->svg) {
-        char title[512], ab[TS_FMT_SIZE], bb[TS_FMT_SIZE];
-        ts_plot_style sty;
+        char title[512], ab[TSU_FMT_SIZE], bb[TSU_FMT_SIZE];
+        tsu_plot_style sty;
         const char *base = strrchr(d.name, '/');
         base = base ? base + 1 : d.name;
         snprintf(title, sizeof title, "%s: %s curve, alpha = %s, beta = %s%s", base,
                  o->closed ? "closed" : "open", o->alphas ? "per segment" : cli_num(o->alpha, ab),
                  o->betas ? "per segment" : cli_num(o->beta, bb),
                  dim == 3 ? " (x-y projection)" : "");
-        ts_plot_status ps = ts_plot_new(0, 0, &p);
-        if (ps == TS_PLOT_OK)
-            ps = ts_plot_set_title(p, o->title ? o->title : title);
-        if (ps == TS_PLOT_OK)
-            ps = ts_plot_set_labels(p, "x", "y");
-        if (ps == TS_PLOT_OK)
-            ps = ts_plot_set_equal_aspect(p, 1);
+        tsu_plot_status ps = tsu_plot_new(0, 0, &p);
+        if (ps == TSU_PLOT_OK)
+            ps = tsu_plot_set_title(p, o->title ? o->title : title);
+        if (ps == TSU_PLOT_OK)
+            ps = tsu_plot_set_labels(p, "x", "y");
+        if (ps == TSU_PLOT_OK)
+            ps = tsu_plot_set_equal_aspect(p, 1);
         /* box: shaded floor / ceiling in y, dashed lines at the x bounds */
-        if (ps == TS_PLOT_OK && has_box) {
-            double ylo = INFINITY, yhi = -INFINITY;
+        if (ps == TSU_PLOT_OK && has_box) {
+            double ylo = (double)INFINITY, yhi = -(double)INFINITY;
             for (size_t r = 0; r < rows; r++) {
                 double v = smp[r * (1 + dim) + 2];
                 ylo = v < ylo ? v : ylo;
@@ -348,10 +348,10 @@ int cli_curve(cli_opts *o)
             memset(&sty, 0, sizeof sty);
             sty.color = "#d55e00";
             if (co.has_lo[1])
-                ps = ts_plot_add_floor(p, co.lo[1], "box", &sty);
-            if (ps == TS_PLOT_OK && co.has_hi[1])
-                ps = ts_plot_add_ceiling(p, co.hi[1], co.has_lo[1] ? NULL : "box", &sty);
-            for (int s2 = 0; s2 < 2 && ps == TS_PLOT_OK; s2++) {
+                ps = tsu_plot_add_floor(p, co.lo[1], "box", &sty);
+            if (ps == TSU_PLOT_OK && co.has_hi[1])
+                ps = tsu_plot_add_ceiling(p, co.hi[1], co.has_lo[1] ? NULL : "box", &sty);
+            for (int s2 = 0; s2 < 2 && ps == TSU_PLOT_OK; s2++) {
                 int on = s2 ? co.has_hi[0] : co.has_lo[0];
                 if (!on)
                     continue;
@@ -359,21 +359,21 @@ int cli_curve(cli_opts *o)
                 bx.n = 0;
                 box_line(&bx, xb, ylo - pad, xb, yhi + pad);
                 sty.dash = 1;
-                ps = bx.failed ? TS_PLOT_ERR_NOMEM
-                               : ts_plot_add_polyline(p, bx.x, bx.y, bx.n,
+                ps = bx.failed ? TSU_PLOT_ERR_NOMEM
+                               : tsu_plot_add_polyline(p, bx.x, bx.y, bx.n,
                                                       co.has_lo[1] || co.has_hi[1] || s2 ? NULL
                                                                                          : "box",
                                                       &sty);
             }
         }
-        if (ps == TS_PLOT_OK && !o->points_only) {
+        if (ps == TSU_PLOT_OK && !o->points_only) {
             for (size_t r = 0; r < rows; r++)
                 cli_xy_push(&cx, smp[r * (1 + dim) + 1], smp[r * (1 + dim) + 2]);
             memset(&sty, 0, sizeof sty);
             sty.color = "#0072b2";
-            ps = cx.failed ? TS_PLOT_ERR_NOMEM
-                           : ts_plot_add_polyline(p, cx.x, cx.y, cx.n, "curve", &sty);
-            if (ps == TS_PLOT_OK && o->show_control) {
+            ps = cx.failed ? TSU_PLOT_ERR_NOMEM
+                           : tsu_plot_add_polyline(p, cx.x, cx.y, cx.n, "curve", &sty);
+            if (ps == TSU_PLOT_OK && o->show_control) {
                 double P[12];
                 for (size_t i = 0; i < seg; i++) {
                     (void)ts_curve_control(c, i, P);
@@ -382,31 +382,31 @@ int cli_curve(cli_opts *o)
                 }
                 memset(&sty, 0, sizeof sty);
                 sty.color = "#009e73";
-                ps = ctl.failed ? TS_PLOT_ERR_NOMEM
-                                : ts_plot_add_polygon(p, ctl.x, ctl.y, ctl.n, "control polygon",
+                ps = ctl.failed ? TSU_PLOT_ERR_NOMEM
+                                : tsu_plot_add_polygon(p, ctl.x, ctl.y, ctl.n, "control polygon",
                                                       &sty);
             }
         }
         memset(&sty, 0, sizeof sty);
         sty.color = "#000000";
-        if (ps == TS_PLOT_OK)
-            ps = ts_plot_add_points(p, d.col[0], d.col[1], n, "data", &sty);
-        if (ps == TS_PLOT_OK)
-            ps = ts_plot_render(p, &svg);
-        if (ps != TS_PLOT_OK) {
-            cli_error("plot: %s", ts_plot_strerror(ps));
+        if (ps == TSU_PLOT_OK)
+            ps = tsu_plot_add_points(p, d.col[0], d.col[1], n, "data", &sty);
+        if (ps == TSU_PLOT_OK)
+            ps = tsu_plot_render(p, &svg);
+        if (ps != TSU_PLOT_OK) {
+            cli_error("plot: %s", tsu_plot_strerror(ps));
             rc = CLI_IO;
             goto done;
         }
     }
     rc = cli_write_outputs(o->out, o->json ? &j.b : &text, NULL, NULL, o->svg, &svg);
 done:
-    ts_plot_free(p);
+    tsu_plot_free(p);
     cli_xy_free(&cx);
     cli_xy_free(&ctl);
     cli_xy_free(&bx);
-    ts_plot_buf_free(&svg);
-    ts_plot_buf_free(&text);
+    tsu_plot_buf_free(&svg);
+    tsu_plot_buf_free(&text);
     cli_json_free(&j);
     free(reps);
     free(smp);

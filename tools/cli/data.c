@@ -5,16 +5,16 @@
 #include <stdio.h>
 #include <string.h>
 
-int cli_report_io(const ts_io_error *e)
+int cli_report_io(const tsu_io_error *e)
 {
     cli_error("%s", e->msg);
     switch (e->status) {
-    case TS_IO_ERR_OPEN:
-    case TS_IO_ERR_READ:
-    case TS_IO_ERR_NOMEM:
-    case TS_IO_ERR_OVERFLOW:
-    case TS_IO_ERR_NULL:
-    case TS_IO_ERR_OPTION:
+    case TSU_IO_ERR_OPEN:
+    case TSU_IO_ERR_READ:
+    case TSU_IO_ERR_NOMEM:
+    case TSU_IO_ERR_OVERFLOW:
+    case TSU_IO_ERR_NULL:
+    case TSU_IO_ERR_OPTION:
         return CLI_IO;
     default:
         return CLI_DATA;
@@ -23,19 +23,19 @@ int cli_report_io(const ts_io_error *e)
 
 void cli_data_free(cli_data *d)
 {
-    ts_table_free(&d->t);
+    tsu_table_free(&d->t);
     memset(d, 0, sizeof *d);
 }
 
 int cli_read_data(const cli_opts *o, cli_data *d)
 {
-    ts_read_options ro;
-    ts_io_error e;
+    tsu_read_options ro;
+    tsu_io_error e;
     memset(d, 0, sizeof *d);
-    ts_read_options_init(&ro);
+    tsu_read_options_init(&ro);
     d->name = strcmp(o->data, "-") == 0 ? "<stdin>" : o->data;
-    ts_io_status st = ts_read_table_path(o->data, &ro, &d->t, &e);
-    if (st != TS_IO_OK)
+    tsu_io_status st = tsu_read_table_path(o->data, &ro, &d->t, &e);
+    if (st != TSU_IO_OK)
         return cli_report_io(&e);
     size_t nc = d->t.ncols;
     unsigned long long l0 = d->t.lines ? d->t.lines[0] : 0;
@@ -107,7 +107,7 @@ static void list_points(char *buf, size_t len, const ts_options *opt, point_pred
                         const double *x, const double *f, size_t n)
 {
     size_t cnt = 0, used = 0;
-    char b[TS_FMT_SIZE];
+    char b[TSU_FMT_SIZE];
     buf[0] = '\0';
     for (size_t i = 0; i < n; i++) {
         if (!pred(opt, x[i], f[i]))
@@ -131,7 +131,7 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
                            const unsigned long long *lines, size_t n, const ts_error *e,
                            ts_status st, size_t off)
 {
-    char w[TS_IO_MSG_SIZE], bx[TS_FMT_SIZE], bf[TS_FMT_SIZE], b2[TS_FMT_SIZE];
+    char w[TSU_IO_MSG_SIZE], bx[TSU_FMT_SIZE], bf[TSU_FMT_SIZE], b2[TSU_FMT_SIZE];
     char ln[160], list[400];
     size_t i = e->index;
     int point = e->where == TS_WHERE_POINT && i < n;

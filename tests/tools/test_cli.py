@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""Script test of the `trigspline` command-line tool (issue 4).
+"""Script test of the `trigspline` command-line tool.
 
-Usage: python3 tests/test_cli.py BUILD_DIR     (standard library only)
+Usage: python3 tests/tools/test_cli.py BUILD_DIR     (standard library only)
 
 Drives BUILD_DIR/trigspline as a user would and checks the interface of
 docs/dev/CLI_CONTRACT.md: every option, file and stdin input, every exit
@@ -11,7 +11,7 @@ curve sub-command, and the streaming mode (byte-identical to a whole-data
 build; constant memory).  Prints "test_cli: N passed, M failed" last.
 
 Expected values come from outside the code under test: the paper's data and
-SPEC §9 (Table 2 is below y = 0.31x + 1 at x = 1, 14, 15; Figure 4b at
+docs/method.md §9 (Table 2 is below y = 0.31x + 1 at x = 1, 14, 15; Figure 4b at
 alpha = 1.4, beta = 1.9 stays above 1.53; a = 0.04 dips below zero), the
 contract's formulas (row counts n*(N-1)+1), Python's own float parsing and
 repr (shortest round trip), and re-running the tool on its own printed numbers.
@@ -31,7 +31,7 @@ import xml.etree.ElementTree as ET
 BUILD = sys.argv[1] if len(sys.argv) > 1 else "build"
 CLI = os.path.abspath(os.path.join(BUILD, "trigspline"))
 HERE = os.path.dirname(os.path.abspath(__file__))
-REPO = os.path.dirname(HERE)
+REPO = os.path.dirname(os.path.dirname(HERE))  # tests/tools/ -> the repository
 PAPER = os.path.join(REPO, "data", "paper")
 FIX = os.path.join(HERE, "data")
 TMP = tempfile.mkdtemp(prefix="ts_cli_test_")
@@ -229,7 +229,7 @@ def test_table1_positive():
               and iv["certified"] is True and iv["gap_lower"] > 0
               and iv["x0"] <= iv["at_lower"] <= iv["x1"]
               and iv["gap_upper"] is None and iv["at_upper"] is None)
-        # SPEC §3 control values from the printed knots: B1 = f_i + k d_i, k = 2h/(3 pi a)
+        # docs/method.md §3 control values from the printed knots: B1 = f_i + k d_i, k = 2h/(3 pi a)
         k0, k1 = js["knots"][iv["i"]], js["knots"][iv["i"] + 1]
         k = 2 * (k1["x"] - k0["x"]) / (3 * math.pi * iv["a"])
         check("T1 B1 B2 interval %d" % iv["i"],
@@ -362,7 +362,7 @@ def test_malformed():
 
 
 def test_exit_statuses():
-    # 2: Table 2 above the paper's line y = 0.31x + 1 (SPEC §9.5)
+    # 2: Table 2 above the paper's line y = 0.31x + 1 (docs/method.md §9.5)
     for extra in ([], ["--json", "--svg", tmp("t2.svg")]):
         rc, out, err = run(["fit", T2, "--shape", "above", "--line", "0.31,1"] + extra)
         check("table 2 refused rc 2 %s" % extra, rc == 2, err)
@@ -379,7 +379,7 @@ def test_exit_statuses():
     rc, out, err = run(["fit", fix("cli_infeasible.csv"), "--shape", "above", "--line", "0.5,0",
                         "--form", "geometric"])
     check("geometric form feasible there", rc == 0, err)
-    # 4: certify Table 1 at a = 0.04 (SPEC §9.6: dips below zero, intervals 0 and 7)
+    # 4: certify Table 1 at a = 0.04 (docs/method.md §9.6: dips below zero, intervals 0 and 7)
     rc, out, err = run(["certify", T1, "--alpha", "0.04", "--beta", "0", "--shape", "positive"])
     check("certify violated rc 4", rc == 4, err)
     check("certify lists intervals", "interval 0 [0, 2]" in err and "interval 7 [28, 30]" in err
@@ -392,7 +392,7 @@ def test_exit_statuses():
           and js["command"] == "certify" and js["intervals"][0]["gap_lower"] < 0
           and js["intervals"][0]["certified"] is False and js["intervals"][3]["certified"] is True
           and js["min_gap_lower"] < 0 and js["samples"]["min_y"] < 0, err)
-    # 0: Figure 4b parameters do not go negative (SPEC §9.6: stays above 1.53)
+    # 0: Figure 4b parameters do not go negative (docs/method.md §9.6: stays above 1.53)
     rc, out, err = run(["certify", T1, "--alpha", "1.4", "--beta", "1.9", "--shape", "positive",
                         "--json"])
     js = json.loads(out)

@@ -1,14 +1,14 @@
-/* Tests of the SVG plot module (src/plot.c, src/ts_plot.h).
+/* Tests of the SVG plot module (src/plot.c, src/tsu_plot.h).
  *
  * Usage: test_plot [OUTDIR]   (default: <dir of this program>/plot_out)
- * Writes the SVG files that tests/test_plot_xml.py parses and checks again
+ * Writes the SVG files that tests/tools/test_plot_xml.py parses and checks again
  * (structure, pixel mapping, simplification error, legend overlap).
  *
  * Expected ticks are derived by hand in the comments from the rule stated in
- * ts_plot.h (4 % padding, 1-2-5 steps, 4..8 ticks closest to 6). */
+ * tsu_plot.h (4 % padding, 1-2-5 steps, 4..8 ticks closest to 6). */
 #define _POSIX_C_SOURCE 200809L
 #include "th.h"
-#include "ts_plot.h"
+#include "tsu_plot.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -20,13 +20,13 @@ static char outdir[4096];
 
 /* ---------------------------------------------------------------- helpers */
 
-static int label_is(const ts_plot_ticks *t, size_t i, const char *s)
+static int label_is(const tsu_plot_ticks *t, size_t i, const char *s)
 {
     return i < t->n && strcmp(t->label[i], s) == 0;
 }
 
 /* ticks equal to the given labels, exponent and step; values = label*10^exp */
-static void check_ticks(const char *what, const ts_plot_ticks *t, const char *const *labels,
+static void check_ticks(const char *what, const tsu_plot_ticks *t, const char *const *labels,
                         size_t n, int exponent, double step)
 {
     CHECKF(t->n == n, "%s: %zu ticks, expected %zu", what, t->n, n);
@@ -43,13 +43,13 @@ static void check_ticks(const char *what, const ts_plot_ticks *t, const char *co
     }
 }
 
-static char *render(const ts_plot *p)
+static char *render(const tsu_plot *p)
 {
-    ts_plot_buf b = TS_PLOT_BUF_INIT;
-    ts_plot_status st = ts_plot_render(p, &b);
-    CHECKF(st == TS_PLOT_OK, "render: %s", ts_plot_strerror(st));
+    tsu_plot_buf b = TSU_PLOT_BUF_INIT;
+    tsu_plot_status st = tsu_plot_render(p, &b);
+    CHECKF(st == TSU_PLOT_OK, "render: %s", tsu_plot_strerror(st));
     if (st) {
-        ts_plot_buf_free(&b);
+        tsu_plot_buf_free(&b);
         return NULL;
     }
     return b.data;
@@ -94,12 +94,12 @@ static size_t polyline_vertices(const char *s, size_t k)
     return n;
 }
 
-static void save(const ts_plot *p, const char *name)
+static void save(const tsu_plot *p, const char *name)
 {
     char path[4200];
     snprintf(path, sizeof path, "%s/%s", outdir, name);
-    ts_plot_status st = ts_plot_save(p, path);
-    CHECKF(st == TS_PLOT_OK, "save %s: %s", path, ts_plot_strerror(st));
+    tsu_plot_status st = tsu_plot_save(p, path);
+    CHECKF(st == TSU_PLOT_OK, "save %s: %s", path, tsu_plot_strerror(st));
     char *svg = render(p);
     CHECKF(svg && !has_nonfinite(svg), "%s contains nan/inf", name);
     free(svg);
@@ -109,10 +109,10 @@ static void save(const ts_plot *p, const char *name)
 
 static void test_ticks_hand(void)
 {
-    ts_plot_ticks t;
+    tsu_plot_ticks t;
     /* [0, 30] -> padded [-1.2, 31.2]; step 5 gives 0..30 = 7 ticks (|7-6| = 1),
      * step 10 gives 4 (|4-6| = 2), step 2 gives 16: step 5. */
-    CHECK(ts_plot_ticks_compute(0, 30, TS_PLOT_RANGE_AUTO, &t) == TS_PLOT_OK);
+    CHECK(tsu_plot_ticks_compute(0, 30, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_OK);
     {
         static const char *const l[] = {"0", "5", "10", "15", "20", "25", "30"};
         check_ticks("[0,30]", &t, l, 7, 0, 5.0);
@@ -121,33 +121,33 @@ static void test_ticks_hand(void)
     }
     /* [1.53, 2.0] -> [1.5112, 2.0188]; step 0.1: 1.6..2.0 = 5 ticks (score 1),
      * 0.05: 10, 0.2: 3. */
-    CHECK(ts_plot_ticks_compute(1.53, 2.0, TS_PLOT_RANGE_AUTO, &t) == TS_PLOT_OK);
+    CHECK(tsu_plot_ticks_compute(1.53, 2.0, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_OK);
     {
         static const char *const l[] = {"1.6", "1.7", "1.8", "1.9", "2.0"};
         check_ticks("[1.53,2]", &t, l, 5, 0, 0.1);
     }
     /* [-1e-9, 3e-9] -> [-1.16e-9, 3.16e-9]; step 1e-9: -1..3 = 5 ticks; 5e-10: 9;
      * 2e-9: 2.  Largest |tick| 3e-9 < 1e-3: labels scaled by 10^-9. */
-    CHECK(ts_plot_ticks_compute(-1e-9, 3e-9, TS_PLOT_RANGE_AUTO, &t) == TS_PLOT_OK);
+    CHECK(tsu_plot_ticks_compute(-1e-9, 3e-9, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_OK);
     {
         static const char *const l[] = {"-1", "0", "1", "2", "3"};
         check_ticks("[-1e-9,3e-9]", &t, l, 5, -9, 1e-9);
     }
     /* fixed [0, 1]: step 0.2 gives 6 ticks (score 0), 0.1 gives 11, 0.5 gives 3 */
-    CHECK(ts_plot_ticks_compute(0, 1, TS_PLOT_RANGE_FIXED, &t) == TS_PLOT_OK);
+    CHECK(tsu_plot_ticks_compute(0, 1, TSU_PLOT_RANGE_FIXED, &t) == TSU_PLOT_OK);
     {
         static const char *const l[] = {"0.0", "0.2", "0.4", "0.6", "0.8", "1.0"};
         check_ticks("fixed [0,1]", &t, l, 6, 0, 0.2);
         CHECK(t.lo == 0 && t.hi == 1);
     }
     /* fixed [0.1, 0.7]: step 0.1 gives 7 ticks; 0.3 must not print as 0.30000000000000004 */
-    CHECK(ts_plot_ticks_compute(0.1, 0.7, TS_PLOT_RANGE_FIXED, &t) == TS_PLOT_OK);
+    CHECK(tsu_plot_ticks_compute(0.1, 0.7, TSU_PLOT_RANGE_FIXED, &t) == TSU_PLOT_OK);
     {
         static const char *const l[] = {"0.1", "0.2", "0.3", "0.4", "0.5", "0.6", "0.7"};
         check_ticks("fixed [0.1,0.7]", &t, l, 7, 0, 0.1);
     }
     /* all equal 5 -> [4.5, 5.5]; step 0.2: 4.6..5.4 = 5 ticks; 0.1: 11; 0.5: 3 */
-    CHECK(ts_plot_ticks_compute(5, 5, TS_PLOT_RANGE_AUTO, &t) == TS_PLOT_OK);
+    CHECK(tsu_plot_ticks_compute(5, 5, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_OK);
     {
         static const char *const l[] = {"4.6", "4.8", "5.0", "5.2", "5.4"};
         check_ticks("[5,5]", &t, l, 5, 0, 0.2);
@@ -155,67 +155,67 @@ static void test_ticks_hand(void)
         CHECK_CLOSE(t.hi, 5.5, 1e-15);
     }
     /* all zero -> [-1, 1]; step 0.5: 5 ticks; 0.2: 11; 1: 3 */
-    CHECK(ts_plot_ticks_compute(0, 0, TS_PLOT_RANGE_AUTO, &t) == TS_PLOT_OK);
+    CHECK(tsu_plot_ticks_compute(0, 0, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_OK);
     {
         static const char *const l[] = {"-1.0", "-0.5", "0.0", "0.5", "1.0"};
         check_ticks("[0,0]", &t, l, 5, 0, 0.5);
     }
     /* subnormal, all equal: treated as zero -> [-1, 1] */
-    CHECK(ts_plot_ticks_compute(1e-320, 1e-320, TS_PLOT_RANGE_AUTO, &t) == TS_PLOT_OK);
+    CHECK(tsu_plot_ticks_compute(1e-320, 1e-320, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_OK);
     CHECK(t.n == 5 && t.lo == -1 && t.hi == 1);
     /* [0, 3e12] -> [-1.2e11, 3.12e12]; step 5e11: 0..3e12 = 7 ticks (score 1);
      * 1e12: 4.  Largest 3e12 >= 1e5 and labels need 1 decimal: scaled by 10^12. */
-    CHECK(ts_plot_ticks_compute(0, 3e12, TS_PLOT_RANGE_AUTO, &t) == TS_PLOT_OK);
+    CHECK(tsu_plot_ticks_compute(0, 3e12, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_OK);
     {
         static const char *const l[] = {"0.0", "0.5", "1.0", "1.5", "2.0", "2.5", "3.0"};
         check_ticks("[0,3e12]", &t, l, 7, 12, 5e11);
     }
     /* [0, 2401] -> [-96.04, 2497.04]; step 500: 0..2000 = 5 ticks (score 1);
      * 200: 13; 1000: 3.  The zero tick is "0", not "000". */
-    CHECK(ts_plot_ticks_compute(0, 2401, TS_PLOT_RANGE_AUTO, &t) == TS_PLOT_OK);
+    CHECK(tsu_plot_ticks_compute(0, 2401, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_OK);
     {
         static const char *const l[] = {"0", "500", "1000", "1500", "2000"};
         check_ticks("[0,2401]", &t, l, 5, 0, 500.0);
     }
     /* [-7, -2] -> [-7.2, -1.8]; step 1: 6 ticks (score 0) */
-    CHECK(ts_plot_ticks_compute(-7, -2, TS_PLOT_RANGE_AUTO, &t) == TS_PLOT_OK);
+    CHECK(tsu_plot_ticks_compute(-7, -2, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_OK);
     {
         static const char *const l[] = {"-7", "-6", "-5", "-4", "-3", "-2"};
         check_ticks("[-7,-2]", &t, l, 6, 0, 1.0);
     }
     /* [1e6, 1e6+5] -> step 1, 6 ticks; scaled labels would need 6 decimals: plain */
-    CHECK(ts_plot_ticks_compute(1e6, 1e6 + 5, TS_PLOT_RANGE_AUTO, &t) == TS_PLOT_OK);
+    CHECK(tsu_plot_ticks_compute(1e6, 1e6 + 5, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_OK);
     {
         static const char *const l[] = {"1000000", "1000001", "1000002",
                                         "1000003", "1000004", "1000005"};
         check_ticks("[1e6,1e6+5]", &t, l, 6, 0, 1.0);
     }
     /* [0, 4e-5] -> [-1.6e-6, 4.16e-5]; step 1e-5: 0..4 = 5 ticks; 5e-6: 9 -> x10^-5 */
-    CHECK(ts_plot_ticks_compute(0, 4e-5, TS_PLOT_RANGE_AUTO, &t) == TS_PLOT_OK);
+    CHECK(tsu_plot_ticks_compute(0, 4e-5, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_OK);
     {
         static const char *const l[] = {"0", "1", "2", "3", "4"};
         check_ticks("[0,4e-5]", &t, l, 5, -5, 1e-5);
     }
     /* [0.001, 0.0045] fixed: step 0.0005 -> 8 ticks (score 2), 0.001 -> 4 (score 2):
      * tie goes to the larger step; largest tick 0.004 >= 1e-3: plain labels */
-    CHECK(ts_plot_ticks_compute(0.001, 0.0045, TS_PLOT_RANGE_FIXED, &t) == TS_PLOT_OK);
+    CHECK(tsu_plot_ticks_compute(0.001, 0.0045, TSU_PLOT_RANGE_FIXED, &t) == TSU_PLOT_OK);
     {
         static const char *const l[] = {"0.001", "0.002", "0.003", "0.004"};
         check_ticks("fixed [0.001,0.0045]", &t, l, 4, 0, 0.001);
     }
     /* huge magnitudes at the limit */
-    CHECK(ts_plot_ticks_compute(-1e300, 1e300, TS_PLOT_RANGE_AUTO, &t) == TS_PLOT_OK);
+    CHECK(tsu_plot_ticks_compute(-1e300, 1e300, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_OK);
     CHECK(t.n >= 3 && t.exponent == 300 && isfinite(t.lo) && isfinite(t.hi));
 
     /* errors */
-    CHECK(ts_plot_ticks_compute(0, 1, TS_PLOT_RANGE_AUTO, NULL) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_ticks_compute(NAN, 1, TS_PLOT_RANGE_AUTO, &t) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_ticks_compute(0, INFINITY, TS_PLOT_RANGE_AUTO, &t) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_ticks_compute(0, 2e300, TS_PLOT_RANGE_AUTO, &t) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_ticks_compute(2, 1, TS_PLOT_RANGE_AUTO, &t) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_ticks_compute(1, 1, TS_PLOT_RANGE_FIXED, &t) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_ticks_compute(1, 1 + 1e-13, TS_PLOT_RANGE_FIXED, &t) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_ticks_compute(0, 1, (ts_plot_range_mode)7, &t) == TS_PLOT_ERR_ARG);
+    CHECK(tsu_plot_ticks_compute(0, 1, TSU_PLOT_RANGE_AUTO, NULL) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_ticks_compute((double)NAN, 1, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_ticks_compute(0, (double)INFINITY, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_ticks_compute(0, 2e300, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_ticks_compute(2, 1, TSU_PLOT_RANGE_AUTO, &t) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_ticks_compute(1, 1, TSU_PLOT_RANGE_FIXED, &t) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_ticks_compute(1, 1 + 1e-13, TSU_PLOT_RANGE_FIXED, &t) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_ticks_compute(0, 1, (tsu_plot_range_mode)7, &t) == TSU_PLOT_ERR_ARG);
 }
 
 /* Properties over many ranges: checked against the labels' own text. */
@@ -231,13 +231,13 @@ static void test_ticks_sweep(void)
         double mag = pow(10.0, -30 + 60 * u1);
         double lo = (u2 - 0.5) * 2 * mag * ((i % 3) ? 1.0 : 50.0);
         double hi = lo + mag * (0.001 + 10 * u1 * u2);
-        ts_plot_range_mode mode = (i & 1) ? TS_PLOT_RANGE_AUTO : TS_PLOT_RANGE_FIXED;
-        ts_plot_ticks t;
-        if (ts_plot_ticks_compute(lo, hi, mode, &t) != TS_PLOT_OK)
+        tsu_plot_range_mode mode = (i & 1) ? TSU_PLOT_RANGE_AUTO : TSU_PLOT_RANGE_FIXED;
+        tsu_plot_ticks t;
+        if (tsu_plot_ticks_compute(lo, hi, mode, &t) != TSU_PLOT_OK)
             continue; /* a fixed range too narrow for its magnitude */
         cases++;
         int ok = t.n >= 3 && t.n <= 9 && t.lo <= t.hi;
-        if (mode == TS_PLOT_RANGE_AUTO)
+        if (mode == TSU_PLOT_RANGE_AUTO)
             ok = ok && t.lo <= lo && hi <= t.hi;
         else
             ok = ok && t.lo == lo && t.hi == hi;
@@ -267,14 +267,14 @@ static void test_ticks_sweep(void)
 
 static void test_buf(void)
 {
-    ts_plot_buf b = TS_PLOT_BUF_INIT;
-    CHECK(ts_plot_buf_xml(&b, "a&b<c>\"'d") == TS_PLOT_OK);
+    tsu_plot_buf b = TSU_PLOT_BUF_INIT;
+    CHECK(tsu_plot_buf_xml(&b, "a&b<c>\"'d") == TSU_PLOT_OK);
     CHECK(b.data && strcmp(b.data, "a&amp;b&lt;c&gt;&quot;&#39;d") == 0);
-    ts_plot_buf_free(&b);
+    tsu_plot_buf_free(&b);
     CHECK(b.data == NULL && b.len == 0);
     /* UTF-8: beta, emoji; invalid byte, overlong, surrogate, truncated, control */
-    CHECK(ts_plot_buf_xml(&b, "\xce\xb2\xf0\x9f\x98\x80|\xff|\xc0\xaf|\xed\xa0\x80|\x01\n|"
-                              "\xe0\x80\xaf|\xf4\x90\x80\x80|\xef\xbf\xbe|\xe2\x82") == TS_PLOT_OK);
+    CHECK(tsu_plot_buf_xml(&b, "\xce\xb2\xf0\x9f\x98\x80|\xff|\xc0\xaf|\xed\xa0\x80|\x01\n|"
+                              "\xe0\x80\xaf|\xf4\x90\x80\x80|\xef\xbf\xbe|\xe2\x82") == TSU_PLOT_OK);
     /* each byte of an invalid sequence becomes one U+FFFD: bad lead, overlong
      * 2- and 3-byte '/', surrogate D800, > U+10FFFF, U+FFFE, truncated */
     CHECKF(b.data && strcmp(b.data, "&#x3B2;&#x1F600;|&#xFFFD;|&#xFFFD;&#xFFFD;|"
@@ -282,119 +282,119 @@ static void test_buf(void)
                                     "&#xFFFD;&#xFFFD;&#xFFFD;&#xFFFD;|&#xFFFD;&#xFFFD;&#xFFFD;|"
                                     "&#xFFFD;&#xFFFD;") == 0,
            "got %s", b.data ? b.data : "(null)");
-    ts_plot_buf_free(&b);
-    CHECK(ts_plot_buf_printf(&b, "%d-%s", 42, "x") == TS_PLOT_OK && strcmp(b.data, "42-x") == 0);
-    CHECK(ts_plot_buf_puts(&b, "yz") == TS_PLOT_OK && b.len == 6 && strcmp(b.data, "42-xyz") == 0);
+    tsu_plot_buf_free(&b);
+    CHECK(tsu_plot_buf_printf(&b, "%d-%s", 42, "x") == TSU_PLOT_OK && strcmp(b.data, "42-x") == 0);
+    CHECK(tsu_plot_buf_puts(&b, "yz") == TSU_PLOT_OK && b.len == 6 && strcmp(b.data, "42-xyz") == 0);
     /* growth over many appends */
     for (int i = 0; i < 10000; i++)
-        ts_plot_buf_append(&b, "0123456789", 10);
+        tsu_plot_buf_append(&b, "0123456789", 10);
     CHECK(b.len == 6 + 100000 && b.data[b.len] == '\0' && b.len < b.cap);
     /* errors leave the buffer as it was */
     size_t len = b.len;
-    CHECK(ts_plot_buf_append(&b, "x", SIZE_MAX) == TS_PLOT_ERR_OVERFLOW && b.len == len);
-    CHECK(ts_plot_buf_append(NULL, "x", 1) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_buf_append(&b, NULL, 1) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_buf_append(&b, NULL, 0) == TS_PLOT_OK && b.len == len);
-    CHECK(ts_plot_buf_puts(&b, NULL) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_buf_xml(&b, NULL) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_buf_printf(NULL, "x") == TS_PLOT_ERR_NULL);
-    ts_plot_buf_free(&b);
+    CHECK(tsu_plot_buf_append(&b, "x", SIZE_MAX) == TSU_PLOT_ERR_OVERFLOW && b.len == len);
+    CHECK(tsu_plot_buf_append(NULL, "x", 1) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_buf_append(&b, NULL, 1) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_buf_append(&b, NULL, 0) == TSU_PLOT_OK && b.len == len);
+    CHECK(tsu_plot_buf_puts(&b, NULL) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_buf_xml(&b, NULL) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_buf_printf(NULL, "x") == TSU_PLOT_ERR_NULL);
+    tsu_plot_buf_free(&b);
     /* an escape that runs out of memory half-way leaves the buffer as it was */
-    CHECK(ts_plot_buf_puts(&b, "ab") == TS_PLOT_OK);
+    CHECK(tsu_plot_buf_puts(&b, "ab") == TSU_PLOT_OK);
     char big[600];
     memset(big, '&', sizeof big - 1);
     big[sizeof big - 1] = '\0';
-    ts_plot_test_fail_alloc_after(0);
-    CHECK(ts_plot_buf_xml(&b, big) == TS_PLOT_ERR_NOMEM);
-    CHECK(ts_plot_buf_printf(&b, "%s", big) == TS_PLOT_ERR_NOMEM);
-    ts_plot_test_fail_alloc_after(-1);
+    tsu_plot_test_fail_alloc_after(0);
+    CHECK(tsu_plot_buf_xml(&b, big) == TSU_PLOT_ERR_NOMEM);
+    CHECK(tsu_plot_buf_printf(&b, "%s", big) == TSU_PLOT_ERR_NOMEM);
+    tsu_plot_test_fail_alloc_after(-1);
     CHECK(b.len == 2 && strcmp(b.data, "ab") == 0);
-    ts_plot_buf_free(&b);
-    ts_plot_buf_free(NULL);
-    ts_plot_buf_init(NULL);
+    tsu_plot_buf_free(&b);
+    tsu_plot_buf_free(NULL);
+    tsu_plot_buf_init(NULL);
     /* strings for every status, and for an unknown one */
     for (int i = 0; i <= 6; i++) {
-        const char *m = ts_plot_strerror((ts_plot_status)i);
+        const char *m = tsu_plot_strerror((tsu_plot_status)i);
         CHECK(m && *m);
     }
-    CHECK(strcmp(ts_plot_strerror(TS_PLOT_OK), ts_plot_strerror((ts_plot_status)99)) != 0);
-    CHECK(strcmp(ts_plot_palette(0), "#0072B2") == 0 && strcmp(ts_plot_palette(8), "#0072B2") == 0);
+    CHECK(strcmp(tsu_plot_strerror(TSU_PLOT_OK), tsu_plot_strerror((tsu_plot_status)99)) != 0);
+    CHECK(strcmp(tsu_plot_palette(0), "#0072B2") == 0 && strcmp(tsu_plot_palette(8), "#0072B2") == 0);
 }
 
 /* ----------------------------------------------------- argument errors */
 
 static void test_errors(void)
 {
-    ts_plot *p = (ts_plot *)1;
-    CHECK(ts_plot_new(0, 0, NULL) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_new(100, 400, &p) == TS_PLOT_ERR_ARG && p == NULL);
-    CHECK(ts_plot_new(400, 20000, &p) == TS_PLOT_ERR_ARG && p == NULL);
-    CHECK(ts_plot_new(0, 0, &p) == TS_PLOT_OK && p);
+    tsu_plot *p = (tsu_plot *)1;
+    CHECK(tsu_plot_new(0, 0, NULL) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_new(100, 400, &p) == TSU_PLOT_ERR_ARG && p == NULL);
+    CHECK(tsu_plot_new(400, 20000, &p) == TSU_PLOT_ERR_ARG && p == NULL);
+    CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK && p);
     if (!p)
         return;
     char *svg = render(p);
     CHECK(svg && strstr(svg, "width=\"720\" height=\"450\"")); /* defaults */
     free(svg);
 
-    CHECK(ts_plot_set_title(NULL, "x") == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_set_labels(NULL, "x", "y") == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_set_xrange(NULL, 0, 1) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_set_xrange(p, 1, 1) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_set_xrange(p, 2, 1) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_set_xrange(p, NAN, 1) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_set_yrange(p, 0, INFINITY) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_set_yrange(p, 1, 1 + 1e-13) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_set_yrange(p, 0, 1) == TS_PLOT_OK);
-    CHECK(ts_plot_set_yrange(p, NAN, NAN) == TS_PLOT_OK);
-    CHECK(ts_plot_set_equal_aspect(NULL, 1) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_set_legend(p, (ts_plot_legend)99) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_set_legend(p, (ts_plot_legend)-1) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_set_legend(NULL, TS_PLOT_LEGEND_NONE) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_set_xml_declaration(NULL, 0) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_set_grid(NULL, 0) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_set_simplify(p, -1) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_set_simplify(p, NAN) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_set_simplify(p, 11) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_set_simplify(NULL, 1) == TS_PLOT_ERR_NULL);
+    CHECK(tsu_plot_set_title(NULL, "x") == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_set_labels(NULL, "x", "y") == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_set_xrange(NULL, 0, 1) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_set_xrange(p, 1, 1) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_set_xrange(p, 2, 1) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_set_xrange(p, (double)NAN, 1) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_set_yrange(p, 0, (double)INFINITY) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_set_yrange(p, 1, 1 + 1e-13) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_set_yrange(p, 0, 1) == TSU_PLOT_OK);
+    CHECK(tsu_plot_set_yrange(p, (double)NAN, (double)NAN) == TSU_PLOT_OK);
+    CHECK(tsu_plot_set_equal_aspect(NULL, 1) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_set_legend(p, (tsu_plot_legend)99) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_set_legend(p, (tsu_plot_legend)-1) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_set_legend(NULL, TSU_PLOT_LEGEND_NONE) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_set_xml_declaration(NULL, 0) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_set_grid(NULL, 0) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_set_simplify(p, -1) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_set_simplify(p, (double)NAN) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_set_simplify(p, 11) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_set_simplify(NULL, 1) == TSU_PLOT_ERR_NULL);
 
     double x[2] = {0, 1}, y[2] = {0, 1};
-    CHECK(ts_plot_add_points(NULL, x, y, 2, NULL, NULL) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_add_points(p, NULL, y, 2, NULL, NULL) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_add_polyline(p, x, NULL, 2, NULL, NULL) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_add_polyline(p, NULL, NULL, 0, "empty", NULL) == TS_PLOT_OK);
-    CHECK(ts_plot_add_points(p, x, y, SIZE_MAX / 8, NULL, NULL) == TS_PLOT_ERR_OVERFLOW);
-    ts_plot_style st = {0};
+    CHECK(tsu_plot_add_points(NULL, x, y, 2, NULL, NULL) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_add_points(p, NULL, y, 2, NULL, NULL) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_add_polyline(p, x, NULL, 2, NULL, NULL) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_add_polyline(p, NULL, NULL, 0, "empty", NULL) == TSU_PLOT_OK);
+    CHECK(tsu_plot_add_points(p, x, y, SIZE_MAX / 8, NULL, NULL) == TSU_PLOT_ERR_OVERFLOW);
+    tsu_plot_style st = {0};
     static const char *const bad_colors[] = {"red;", "#12", "#GGGGGG", "#1234567", "url(#a)",
                                              "averyveryverylongcolorname", "r d"};
     for (size_t i = 0; i < sizeof bad_colors / sizeof *bad_colors; i++) {
         st.color = bad_colors[i];
-        CHECKF(ts_plot_add_points(p, x, y, 2, NULL, &st) == TS_PLOT_ERR_ARG, "%s", bad_colors[i]);
+        CHECKF(tsu_plot_add_points(p, x, y, 2, NULL, &st) == TSU_PLOT_ERR_ARG, "%s", bad_colors[i]);
     }
     st.color = "#abc";
-    CHECK(ts_plot_add_points(p, x, y, 2, NULL, &st) == TS_PLOT_OK);
+    CHECK(tsu_plot_add_points(p, x, y, 2, NULL, &st) == TSU_PLOT_OK);
     st.color = "DarkRed";
-    CHECK(ts_plot_add_points(p, x, y, 2, NULL, &st) == TS_PLOT_OK);
+    CHECK(tsu_plot_add_points(p, x, y, 2, NULL, &st) == TSU_PLOT_OK);
     st.color = NULL;
-    st.width = NAN;
-    CHECK(ts_plot_add_polyline(p, x, y, 2, NULL, &st) == TS_PLOT_ERR_ARG);
+    st.width = (double)NAN;
+    CHECK(tsu_plot_add_polyline(p, x, y, 2, NULL, &st) == TSU_PLOT_ERR_ARG);
     st.width = 51;
-    CHECK(ts_plot_add_polyline(p, x, y, 2, NULL, &st) == TS_PLOT_ERR_ARG);
+    CHECK(tsu_plot_add_polyline(p, x, y, 2, NULL, &st) == TSU_PLOT_ERR_ARG);
     st.width = 0;
     st.marker_radius = -1;
-    CHECK(ts_plot_add_points(p, x, y, 2, NULL, &st) == TS_PLOT_ERR_ARG);
+    CHECK(tsu_plot_add_points(p, x, y, 2, NULL, &st) == TSU_PLOT_ERR_ARG);
     st.marker_radius = 0;
     st.dash = 3;
-    CHECK(ts_plot_add_polyline(p, x, y, 2, NULL, &st) == TS_PLOT_ERR_ARG);
+    CHECK(tsu_plot_add_polyline(p, x, y, 2, NULL, &st) == TSU_PLOT_ERR_ARG);
     st.dash = 0;
     st.fill_opacity = 1.5;
-    CHECK(ts_plot_add_floor(p, 0, NULL, &st) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_add_line(p, NAN, 0, NULL, NULL) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_add_line(p, 0, INFINITY, NULL, NULL) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_add_line(NULL, 0, 0, NULL, NULL) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_add_region(p, (ts_plot_side)7, 0, 0, NULL, NULL) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_add_region(p, TS_PLOT_FORBID_ABOVE, NAN, 0, NULL, NULL) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_add_region(NULL, TS_PLOT_FORBID_ABOVE, 0, 0, NULL, NULL) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_add_ceiling(p, NAN, NULL, NULL) == TS_PLOT_ERR_ARG);
+    CHECK(tsu_plot_add_floor(p, 0, NULL, &st) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_add_line(p, (double)NAN, 0, NULL, NULL) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_add_line(p, 0, (double)INFINITY, NULL, NULL) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_add_line(NULL, 0, 0, NULL, NULL) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_add_region(p, (tsu_plot_side)7, 0, 0, NULL, NULL) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_add_region(p, TSU_PLOT_FORBID_ABOVE, (double)NAN, 0, NULL, NULL) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_add_region(NULL, TSU_PLOT_FORBID_ABOVE, 0, 0, NULL, NULL) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_add_ceiling(p, (double)NAN, NULL, NULL) == TSU_PLOT_ERR_ARG);
 
     /* the two valid point series (#abc, DarkRed) and the empty polyline */
     svg = render(p);
@@ -403,81 +403,81 @@ static void test_errors(void)
     CHECK(svg && strstr(svg, "fill=\"#abc\"") && strstr(svg, "fill=\"DarkRed\""));
     free(svg);
 
-    ts_plot_ticks t;
-    CHECK(ts_plot_get_ticks(p, 2, &t) == TS_PLOT_ERR_ARG);
-    CHECK(ts_plot_get_ticks(NULL, 0, &t) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_get_ticks(p, 0, NULL) == TS_PLOT_ERR_NULL);
-    ts_plot_buf b = TS_PLOT_BUF_INIT;
-    CHECK(ts_plot_render(NULL, &b) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_render(p, NULL) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_write(p, NULL) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_write(NULL, stdout) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_save(p, NULL) == TS_PLOT_ERR_NULL);
-    CHECK(ts_plot_save(p, "/nonexistent-dir-ts-plot/x.svg") == TS_PLOT_ERR_IO);
+    tsu_plot_ticks t;
+    CHECK(tsu_plot_get_ticks(p, 2, &t) == TSU_PLOT_ERR_ARG);
+    CHECK(tsu_plot_get_ticks(NULL, 0, &t) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_get_ticks(p, 0, NULL) == TSU_PLOT_ERR_NULL);
+    tsu_plot_buf b = TSU_PLOT_BUF_INIT;
+    CHECK(tsu_plot_render(NULL, &b) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_render(p, NULL) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_write(p, NULL) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_write(NULL, stdout) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_save(p, NULL) == TSU_PLOT_ERR_NULL);
+    CHECK(tsu_plot_save(p, "/nonexistent-dir-ts-plot/x.svg") == TSU_PLOT_ERR_IO);
     FILE *full = fopen("/dev/full", "w");
     if (full) { /* every write fails there (Linux) */
-        CHECK(ts_plot_write(p, full) == TS_PLOT_ERR_IO);
+        CHECK(tsu_plot_write(p, full) == TSU_PLOT_ERR_IO);
         fclose(full);
     }
     FILE *ro = fopen("/dev/null", "r");
     if (ro) { /* a stream not open for writing */
-        CHECK(ts_plot_write(p, ro) == TS_PLOT_ERR_IO);
+        CHECK(tsu_plot_write(p, ro) == TSU_PLOT_ERR_IO);
         fclose(ro);
     }
     /* render appends */
-    CHECK(ts_plot_buf_puts(&b, "<!--x-->") == TS_PLOT_OK);
-    CHECK(ts_plot_render(p, &b) == TS_PLOT_OK && strncmp(b.data, "<!--x--><?xml", 13) == 0);
-    ts_plot_buf_free(&b);
-    ts_plot_free(p);
-    ts_plot_free(NULL);
+    CHECK(tsu_plot_buf_puts(&b, "<!--x-->") == TSU_PLOT_OK);
+    CHECK(tsu_plot_render(p, &b) == TSU_PLOT_OK && strncmp(b.data, "<!--x--><?xml", 13) == 0);
+    tsu_plot_buf_free(&b);
+    tsu_plot_free(p);
+    tsu_plot_free(NULL);
 }
 
 /* ------------------------------------------------- out-of-memory paths */
 
 /* Build and render a plot with allocation number k failing; every failing
- * call must report TS_PLOT_ERR_NOMEM and leave things consistent (ASan
+ * call must report TSU_PLOT_ERR_NOMEM and leave things consistent (ASan
  * checks leaks).  Returns 1 once nothing failed. */
 static int oom_round(long k, long *nomem_seen)
 {
     double x[3] = {0, 1, 2}, y[3] = {1, 3, 2};
-    ts_plot *p = NULL;
-    ts_plot_buf b = TS_PLOT_BUF_INIT;
+    tsu_plot *p = NULL;
+    tsu_plot_buf b = TSU_PLOT_BUF_INIT;
     int added = 0, all_ok = 1;
-    ts_plot_test_fail_alloc_after(k);
-    ts_plot_status st = ts_plot_new(0, 0, &p);
+    tsu_plot_test_fail_alloc_after(k);
+    tsu_plot_status st = tsu_plot_new(0, 0, &p);
     if (st) {
-        ts_plot_test_fail_alloc_after(-1);
-        CHECK(st == TS_PLOT_ERR_NOMEM && p == NULL);
+        tsu_plot_test_fail_alloc_after(-1);
+        CHECK(st == TSU_PLOT_ERR_NOMEM && p == NULL);
         (*nomem_seen)++;
         return 0;
     }
-    ts_plot_status r[12];
+    tsu_plot_status r[12];
     size_t nr = 0;
-    r[nr++] = ts_plot_set_title(p, "title");
-    r[nr++] = ts_plot_set_labels(p, "x", "y");
+    r[nr++] = tsu_plot_set_title(p, "title");
+    r[nr++] = tsu_plot_set_labels(p, "x", "y");
     for (int i = 0; i < 9; i++) { /* the 9th add grows the series array */
-        st = ts_plot_add_polyline(p, x, y, 3, i % 2 ? "curve" : NULL, NULL);
+        st = tsu_plot_add_polyline(p, x, y, 3, i % 2 ? "curve" : NULL, NULL);
         r[nr++] = st;
-        if (st == TS_PLOT_OK)
+        if (st == TSU_PLOT_OK)
             added++;
     }
-    r[11] = ts_plot_render(p, &b);
+    r[11] = tsu_plot_render(p, &b);
     for (size_t i = 0; i < 12; i++) {
-        if (r[i] != TS_PLOT_OK) {
+        if (r[i] != TSU_PLOT_OK) {
             all_ok = 0;
-            CHECKF(r[i] == TS_PLOT_ERR_NOMEM, "call %zu gave %d", i, (int)r[i]);
+            CHECKF(r[i] == TSU_PLOT_ERR_NOMEM, "call %zu gave %d", i, (int)r[i]);
             (*nomem_seen)++;
         }
     }
-    if (r[11] != TS_PLOT_OK)
+    if (r[11] != TSU_PLOT_OK)
         CHECK(b.len == 0);
-    ts_plot_test_fail_alloc_after(-1);
+    tsu_plot_test_fail_alloc_after(-1);
     /* the plot still holds exactly the series whose add succeeded */
-    ts_plot_buf_free(&b);
-    CHECK(ts_plot_render(p, &b) == TS_PLOT_OK);
+    tsu_plot_buf_free(&b);
+    CHECK(tsu_plot_render(p, &b) == TSU_PLOT_OK);
     CHECKF(count(b.data, "<g class=\"series polyline\"") == (size_t)added, "k=%ld added=%d", k, added);
-    ts_plot_buf_free(&b);
-    ts_plot_free(p);
+    tsu_plot_buf_free(&b);
+    tsu_plot_free(p);
     return all_ok;
 }
 
@@ -497,56 +497,56 @@ static void test_simplify(void)
 {
     enum { N = 1000 };
     static double x[N], y[N];
-    ts_plot *p = NULL;
-    CHECK(ts_plot_new(0, 0, &p) == TS_PLOT_OK);
+    tsu_plot *p = NULL;
+    CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK);
     if (!p)
         return;
-    ts_plot_set_legend(p, TS_PLOT_LEGEND_NONE);
+    tsu_plot_set_legend(p, TSU_PLOT_LEGEND_NONE);
     /* collinear points: only the two ends remain */
     for (int i = 0; i < N; i++)
         x[i] = i, y[i] = 0.5 * i;
-    ts_plot_add_polyline(p, x, y, N, NULL, NULL);
+    tsu_plot_add_polyline(p, x, y, N, NULL, NULL);
     char *svg = render(p);
     CHECKF(polyline_vertices(svg, 0) == 2, "%zu", polyline_vertices(svg, 0));
     free(svg);
     /* tolerance 0: every vertex that differs after rounding to 0.01 px; the
      * plot is ~650 px wide, so N points 0.65 px apart all differ */
-    ts_plot_set_simplify(p, 0);
+    tsu_plot_set_simplify(p, 0);
     svg = render(p);
     CHECKF(polyline_vertices(svg, 0) == N, "%zu", polyline_vertices(svg, 0));
     free(svg);
-    ts_plot_free(p);
+    tsu_plot_free(p);
 
     /* going back along itself: the turning points stay.  0..10 then back to 5:
      * (0), (10), (5); and out and back to the start: (0), (10), (0) */
-    CHECK(ts_plot_new(0, 0, &p) == TS_PLOT_OK);
+    CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK);
     if (!p)
         return;
     for (int i = 0; i <= 10; i++)
         x[i] = i, y[i] = 1;
     for (int i = 11; i <= 15; i++)
         x[i] = 20 - i, y[i] = 1;
-    ts_plot_add_polyline(p, x, y, 16, NULL, NULL);
+    tsu_plot_add_polyline(p, x, y, 16, NULL, NULL);
     double bx[3] = {0, 10, 0}, by[3] = {2, 2, 2};
-    ts_plot_add_polyline(p, bx, by, 3, NULL, NULL);
+    tsu_plot_add_polyline(p, bx, by, 3, NULL, NULL);
     svg = render(p);
     CHECKF(polyline_vertices(svg, 0) == 3, "%zu", polyline_vertices(svg, 0));
     CHECKF(polyline_vertices(svg, 1) == 3, "%zu", polyline_vertices(svg, 1));
     free(svg);
-    ts_plot_free(p);
+    tsu_plot_free(p);
 
     /* zig-zag of +-1 data unit over a ~400 px tall range of 40 units: ~10 px
      * deviations, every vertex must stay */
-    CHECK(ts_plot_new(0, 0, &p) == TS_PLOT_OK);
+    CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK);
     if (!p)
         return;
     for (int i = 0; i < 50; i++)
         x[i] = i, y[i] = (i % 2) ? 20.0 : -20.0;
-    ts_plot_add_polyline(p, x, y, 50, NULL, NULL);
+    tsu_plot_add_polyline(p, x, y, 50, NULL, NULL);
     svg = render(p);
     CHECKF(polyline_vertices(svg, 0) == 50, "%zu", polyline_vertices(svg, 0));
     free(svg);
-    ts_plot_free(p);
+    tsu_plot_free(p);
 }
 
 /* ---------------------------------------------------------- the figures */
@@ -563,29 +563,29 @@ static void fig_full(void)
         cx[i] = 30.0 * i / (M - 1);
         cy[i] = 1.77 + 0.23 * cos(cx[i] * 3.141592653589793 / 15.0);
     }
-    ts_plot *p = NULL;
-    CHECK(ts_plot_new(0, 0, &p) == TS_PLOT_OK);
+    tsu_plot *p = NULL;
+    CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK);
     if (!p)
         return;
-    ts_plot_set_title(p, "Table 1: positive data");
-    ts_plot_set_labels(p, "x", "f(x)");
-    ts_plot_style red = {0};
+    tsu_plot_set_title(p, "Table 1: positive data");
+    tsu_plot_set_labels(p, "x", "f(x)");
+    tsu_plot_style red = {0};
     red.color = "#D55E00";
-    CHECK(ts_plot_add_floor(p, 0.0, "forbidden: f < 0", &red) == TS_PLOT_OK);
-    CHECK(ts_plot_add_ceiling(p, 2.2, "ceiling 2.2", NULL) == TS_PLOT_OK);
-    CHECK(ts_plot_add_line(p, 0.01, 1.2, "y = 0.01x + 1.2", NULL) == TS_PLOT_OK);
-    CHECK(ts_plot_add_polygon(p, tx, tf, 9, "control polygon", NULL) == TS_PLOT_OK);
-    CHECK(ts_plot_add_polyline(p, cx, cy, M, "spline", NULL) == TS_PLOT_OK);
-    CHECK(ts_plot_add_points(p, tx, tf, 9, "data", NULL) == TS_PLOT_OK);
+    CHECK(tsu_plot_add_floor(p, 0.0, "forbidden: f < 0", &red) == TSU_PLOT_OK);
+    CHECK(tsu_plot_add_ceiling(p, 2.2, "ceiling 2.2", NULL) == TSU_PLOT_OK);
+    CHECK(tsu_plot_add_line(p, 0.01, 1.2, "y = 0.01x + 1.2", NULL) == TSU_PLOT_OK);
+    CHECK(tsu_plot_add_polygon(p, tx, tf, 9, "control polygon", NULL) == TSU_PLOT_OK);
+    CHECK(tsu_plot_add_polyline(p, cx, cy, M, "spline", NULL) == TSU_PLOT_OK);
+    CHECK(tsu_plot_add_points(p, tx, tf, 9, "data", NULL) == TSU_PLOT_OK);
     /* y range: data [1.54, 2], floor 0, ceiling 2.2, line 1.2..1.5 -> [0, 2.2],
      * padded [-0.088, 2.288]: step 0.5 -> 0..2.0 = 5 ticks; 0.2 -> 12; 1 -> 3 */
-    ts_plot_ticks t;
-    CHECK(ts_plot_get_ticks(p, 1, &t) == TS_PLOT_OK);
+    tsu_plot_ticks t;
+    CHECK(tsu_plot_get_ticks(p, 1, &t) == TSU_PLOT_OK);
     {
         static const char *const l[] = {"0.0", "0.5", "1.0", "1.5", "2.0"};
         check_ticks("fig_full y", &t, l, 5, 0, 0.5);
     }
-    CHECK(ts_plot_get_ticks(p, 0, &t) == TS_PLOT_OK);
+    CHECK(tsu_plot_get_ticks(p, 0, &t) == TSU_PLOT_OK);
     {
         static const char *const l[] = {"0", "5", "10", "15", "20", "25", "30"};
         check_ticks("fig_full x", &t, l, 7, 0, 5.0);
@@ -609,68 +609,68 @@ static void fig_full(void)
     }
     free(svg);
     save(p, "plot_full.svg");
-    ts_plot_free(p);
+    tsu_plot_free(p);
 }
 
 static void fig_degenerate(void)
 {
     double x[4] = {1, 2, 3, 4}, y[4] = {5, 5, 5, 5};
-    ts_plot *p = NULL;
-    CHECK(ts_plot_new(600, 400, &p) == TS_PLOT_OK);
+    tsu_plot *p = NULL;
+    CHECK(tsu_plot_new(600, 400, &p) == TSU_PLOT_OK);
     if (!p)
         return;
-    ts_plot_set_title(p, "constant data");
-    ts_plot_add_polyline(p, x, y, 4, "line", NULL);
-    ts_plot_add_points(p, x, y, 4, "points", NULL);
-    ts_plot_ticks t;
-    CHECK(ts_plot_get_ticks(p, 1, &t) == TS_PLOT_OK);
+    tsu_plot_set_title(p, "constant data");
+    tsu_plot_add_polyline(p, x, y, 4, "line", NULL);
+    tsu_plot_add_points(p, x, y, 4, "points", NULL);
+    tsu_plot_ticks t;
+    CHECK(tsu_plot_get_ticks(p, 1, &t) == TSU_PLOT_OK);
     {
         static const char *const l[] = {"4.6", "4.8", "5.0", "5.2", "5.4"};
         check_ticks("degenerate y", &t, l, 5, 0, 0.2);
     }
     save(p, "plot_degenerate.svg");
-    ts_plot_free(p);
+    tsu_plot_free(p);
 
     /* a single point, and nothing at all */
-    CHECK(ts_plot_new(0, 0, &p) == TS_PLOT_OK);
+    CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK);
     if (!p)
         return;
-    ts_plot_add_points(p, x, y, 1, NULL, NULL);
-    CHECK(ts_plot_get_ticks(p, 0, &t) == TS_PLOT_OK && t.n == 5 && t.lo == 0.9 && t.hi == 1.1);
+    tsu_plot_add_points(p, x, y, 1, NULL, NULL);
+    CHECK(tsu_plot_get_ticks(p, 0, &t) == TSU_PLOT_OK && t.n == 5 && t.lo == 0.9 && t.hi == 1.1);
     save(p, "plot_single.svg");
-    ts_plot_free(p);
-    CHECK(ts_plot_new(0, 0, &p) == TS_PLOT_OK);
+    tsu_plot_free(p);
+    CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK);
     if (!p)
         return;
-    ts_plot_set_title(p, "empty");
+    tsu_plot_set_title(p, "empty");
     /* no data: [0, 1] padded to [-0.04, 1.04]; step 0.2 -> 6 ticks */
-    CHECK(ts_plot_get_ticks(p, 0, &t) == TS_PLOT_OK && t.n == 6 && label_is(&t, 5, "1.0"));
+    CHECK(tsu_plot_get_ticks(p, 0, &t) == TSU_PLOT_OK && t.n == 6 && label_is(&t, 5, "1.0"));
     save(p, "plot_empty.svg");
-    ts_plot_free(p);
+    tsu_plot_free(p);
 }
 
 static void fig_nan(void)
 {
     double x[12] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
-    double y[12] = {1, 2, NAN, 3, 4, 2, INFINITY, 1, 2, -INFINITY, 5, 1e305};
+    double y[12] = {1, 2, (double)NAN, 3, 4, 2, (double)INFINITY, 1, 2, -(double)INFINITY, 5, 1e305};
     /* runs: {0,1}, {3,4,5}, {7,8}, {10} alone (no segment), 1e305 skipped */
-    ts_plot *p = NULL;
-    CHECK(ts_plot_new(0, 0, &p) == TS_PLOT_OK);
+    tsu_plot *p = NULL;
+    CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK);
     if (!p)
         return;
-    ts_plot_set_title(p, "gaps in the data");
-    ts_plot_add_polyline(p, x, y, 12, "curve with gaps", NULL);
-    ts_plot_add_points(p, x, y, 12, "finite points", NULL);
-    ts_plot_ticks t;
+    tsu_plot_set_title(p, "gaps in the data");
+    tsu_plot_add_polyline(p, x, y, 12, "curve with gaps", NULL);
+    tsu_plot_add_points(p, x, y, 12, "finite points", NULL);
+    tsu_plot_ticks t;
     /* y from the finite values only: [1, 5] -> [0.84, 5.16]; step 1: 1..5 = 5 ticks */
-    CHECK(ts_plot_get_ticks(p, 1, &t) == TS_PLOT_OK && t.n == 5 && label_is(&t, 0, "1") &&
+    CHECK(tsu_plot_get_ticks(p, 1, &t) == TSU_PLOT_OK && t.n == 5 && label_is(&t, 0, "1") &&
           label_is(&t, 4, "5"));
     char *svg = render(p);
     CHECK(svg && count(svg, "<polyline ") == 3);
     CHECK(svg && count(svg, "<circle ") == 8 + 1); /* 8 finite points + legend */
     free(svg);
     save(p, "plot_nan.svg");
-    ts_plot_free(p);
+    tsu_plot_free(p);
 }
 
 static void fig_huge(void)
@@ -681,49 +681,49 @@ static void fig_huge(void)
         x[i] = 3e12 * i / (N - 1);
         y[i] = -1e-9 + 4e-9 * (double)(i * i) / ((N - 1) * (N - 1));
     }
-    ts_plot *p = NULL;
-    CHECK(ts_plot_new(0, 0, &p) == TS_PLOT_OK);
+    tsu_plot *p = NULL;
+    CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK);
     if (!p)
         return;
-    ts_plot_set_title(p, "huge x, tiny y");
-    ts_plot_set_labels(p, "x", "y");
-    ts_plot_add_polyline(p, x, y, N, "y(x)", NULL);
-    ts_plot_ticks t;
-    CHECK(ts_plot_get_ticks(p, 0, &t) == TS_PLOT_OK && t.exponent == 12);
-    CHECK(ts_plot_get_ticks(p, 1, &t) == TS_PLOT_OK && t.exponent == -9);
+    tsu_plot_set_title(p, "huge x, tiny y");
+    tsu_plot_set_labels(p, "x", "y");
+    tsu_plot_add_polyline(p, x, y, N, "y(x)", NULL);
+    tsu_plot_ticks t;
+    CHECK(tsu_plot_get_ticks(p, 0, &t) == TSU_PLOT_OK && t.exponent == 12);
+    CHECK(tsu_plot_get_ticks(p, 1, &t) == TSU_PLOT_OK && t.exponent == -9);
     char *svg = render(p);
     CHECK(svg && strstr(svg, "class=\"xexp\"") && strstr(svg, "class=\"yexp\""));
     CHECK(svg && strstr(svg, ">&#8722;9</tspan>")); /* the y factor x10^-9 */
     CHECK(svg && strstr(svg, ">&#8722;1</text>"));  /* tick label -1 */
     free(svg);
     save(p, "plot_huge.svg");
-    ts_plot_free(p);
+    tsu_plot_free(p);
 
     /* extreme magnitudes: plotted or skipped, never nan/inf in the output */
     double ex[5] = {-1e300, -1e-300, 0, 1e-300, 1e300}, ey[5] = {1e300, -1e300, 5e-324, 1, -1};
-    CHECK(ts_plot_new(0, 0, &p) == TS_PLOT_OK);
+    CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK);
     if (!p)
         return;
-    ts_plot_add_polyline(p, ex, ey, 5, NULL, NULL);
-    ts_plot_add_points(p, ex, ey, 5, NULL, NULL);
-    ts_plot_add_line(p, 1e300, 1e300, NULL, NULL);
-    ts_plot_add_floor(p, -1e300, NULL, NULL);
+    tsu_plot_add_polyline(p, ex, ey, 5, NULL, NULL);
+    tsu_plot_add_points(p, ex, ey, 5, NULL, NULL);
+    tsu_plot_add_line(p, 1e300, 1e300, NULL, NULL);
+    tsu_plot_add_floor(p, -1e300, NULL, NULL);
     save(p, "plot_extreme.svg");
-    ts_plot_free(p);
+    tsu_plot_free(p);
 }
 
 static void fig_special(void)
 {
     double x[3] = {0, 1, 2}, y[3] = {1, 0.5, 2};
-    ts_plot *p = NULL;
-    CHECK(ts_plot_new(0, 0, &p) == TS_PLOT_OK);
+    tsu_plot *p = NULL;
+    CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK);
     if (!p)
         return;
     /* & < > " ' , UTF-8 beta and em dash, an invalid byte, a control char */
-    ts_plot_set_title(p, "A & B <tag> \"q\" 'a' \xce\xb2 \xe2\x80\x94 \xff\x01");
-    ts_plot_set_labels(p, "x < 1 & y > 0", "\xce\xb1 + \xce\xb2");
-    ts_plot_add_polyline(p, x, y, 3, "</text><script>alert(1)</script>", NULL);
-    ts_plot_add_points(p, x, y, 3, "p & q", NULL);
+    tsu_plot_set_title(p, "A & B <tag> \"q\" 'a' \xce\xb2 \xe2\x80\x94 \xff\x01");
+    tsu_plot_set_labels(p, "x < 1 & y > 0", "\xce\xb1 + \xce\xb2");
+    tsu_plot_add_polyline(p, x, y, 3, "</text><script>alert(1)</script>", NULL);
+    tsu_plot_add_points(p, x, y, 3, "p & q", NULL);
     char *svg = render(p);
     CHECK(svg && strstr(svg, "<title>A &amp; B &lt;tag&gt; &quot;q&quot; &#39;a&#39; &#x3B2; "
                              "&#x2014; &#xFFFD; </title>"));
@@ -735,7 +735,7 @@ static void fig_special(void)
     CHECK(ascii);
     free(svg);
     save(p, "plot_special.svg");
-    ts_plot_free(p);
+    tsu_plot_free(p);
 }
 
 static void fig_bigcurve(void)
@@ -746,12 +746,12 @@ static void fig_bigcurve(void)
         x[i] = 6.283185307179586 * i / (N - 1);
         y[i] = sin(x[i]);
     }
-    ts_plot *p = NULL;
-    CHECK(ts_plot_new(0, 0, &p) == TS_PLOT_OK);
+    tsu_plot *p = NULL;
+    CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK);
     if (!p)
         return;
-    ts_plot_set_title(p, "sin x, 20000 samples");
-    ts_plot_add_polyline(p, x, y, N, "sin", NULL);
+    tsu_plot_set_title(p, "sin x, 20000 samples");
+    tsu_plot_add_polyline(p, x, y, N, "sin", NULL);
     char *svg = render(p);
     size_t nv = polyline_vertices(svg, 0);
     /* a circle-like arc of curvature radius r px needs about L / sqrt(8 r tol)
@@ -760,7 +760,7 @@ static void fig_bigcurve(void)
     CHECKF(svg && strlen(svg) < 30000, "size %zu", svg ? strlen(svg) : 0);
     free(svg);
     save(p, "plot_bigcurve.svg");
-    ts_plot_free(p);
+    tsu_plot_free(p);
 }
 
 /* closed curve with equal aspect (fig. 3 of the paper) */
@@ -774,21 +774,21 @@ static void fig_closed(void)
         cx[i] = -cos(t) * (1 + 0.1 * cos(4 * t));
         cy[i] = -sin(t) * (1 + 0.1 * cos(4 * t));
     }
-    ts_plot *p = NULL;
-    CHECK(ts_plot_new(0, 0, &p) == TS_PLOT_OK);
+    tsu_plot *p = NULL;
+    CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK);
     if (!p)
         return;
-    ts_plot_set_title(p, "closed curve");
-    ts_plot_set_equal_aspect(p, 1);
-    ts_plot_add_polygon(p, px, py, 5, "control polygon", NULL);
-    ts_plot_add_polyline(p, cx, cy, N, "curve", NULL);
-    ts_plot_add_points(p, px, py, 4, "data", NULL);
-    ts_plot_ticks tx, ty;
-    CHECK(ts_plot_get_ticks(p, 0, &tx) == TS_PLOT_OK && ts_plot_get_ticks(p, 1, &ty) == TS_PLOT_OK);
+    tsu_plot_set_title(p, "closed curve");
+    tsu_plot_set_equal_aspect(p, 1);
+    tsu_plot_add_polygon(p, px, py, 5, "control polygon", NULL);
+    tsu_plot_add_polyline(p, cx, cy, N, "curve", NULL);
+    tsu_plot_add_points(p, px, py, 4, "data", NULL);
+    tsu_plot_ticks tx, ty;
+    CHECK(tsu_plot_get_ticks(p, 0, &tx) == TSU_PLOT_OK && tsu_plot_get_ticks(p, 1, &ty) == TSU_PLOT_OK);
     /* the wide plot widens x: its range exceeds y's */
     CHECK(tx.hi - tx.lo > ty.hi - ty.lo);
     save(p, "plot_closed.svg");
-    ts_plot_free(p);
+    tsu_plot_free(p);
 }
 
 /* fixed ranges cut the curve; no declaration (for inlining into HTML) */
@@ -800,40 +800,40 @@ static void fig_fixed_inline(void)
         x[i] = -2 + 4.0 * i / (N - 1);
         y[i] = x[i] * x[i] * x[i];
     }
-    ts_plot *p = NULL;
-    CHECK(ts_plot_new(480, 320, &p) == TS_PLOT_OK);
+    tsu_plot *p = NULL;
+    CHECK(tsu_plot_new(480, 320, &p) == TSU_PLOT_OK);
     if (!p)
         return;
-    ts_plot_set_title(p, "fixed ranges");
-    ts_plot_set_xml_declaration(p, 0);
-    CHECK(ts_plot_set_xrange(p, -1, 1.5) == TS_PLOT_OK);
-    CHECK(ts_plot_set_yrange(p, -0.5, 0.5) == TS_PLOT_OK);
-    ts_plot_add_polyline(p, x, y, N, "x^3", NULL);
-    ts_plot_add_points(p, x, y, N, NULL, NULL);
-    ts_plot_add_line(p, -1, 0, "y = -x", NULL);
-    ts_plot_add_region(p, TS_PLOT_FORBID_ABOVE, 0.5, 0.2, "y > x/2 + 0.2", NULL);
-    ts_plot_ticks t;
-    CHECK(ts_plot_get_ticks(p, 0, &t) == TS_PLOT_OK && t.lo == -1 && t.hi == 1.5);
+    tsu_plot_set_title(p, "fixed ranges");
+    tsu_plot_set_xml_declaration(p, 0);
+    CHECK(tsu_plot_set_xrange(p, -1, 1.5) == TSU_PLOT_OK);
+    CHECK(tsu_plot_set_yrange(p, -0.5, 0.5) == TSU_PLOT_OK);
+    tsu_plot_add_polyline(p, x, y, N, "x^3", NULL);
+    tsu_plot_add_points(p, x, y, N, NULL, NULL);
+    tsu_plot_add_line(p, -1, 0, "y = -x", NULL);
+    tsu_plot_add_region(p, TSU_PLOT_FORBID_ABOVE, 0.5, 0.2, "y > x/2 + 0.2", NULL);
+    tsu_plot_ticks t;
+    CHECK(tsu_plot_get_ticks(p, 0, &t) == TSU_PLOT_OK && t.lo == -1 && t.hi == 1.5);
     char *svg = render(p);
     CHECK(svg && strncmp(svg, "<svg ", 5) == 0);
     free(svg);
     save(p, "plot_inline.svg");
-    ts_plot_free(p);
+    tsu_plot_free(p);
 }
 
 /* shading only where it has area */
 static void test_regions(void)
 {
-    ts_plot *p = NULL;
-    CHECK(ts_plot_new(0, 0, &p) == TS_PLOT_OK);
+    tsu_plot *p = NULL;
+    CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK);
     if (!p)
         return;
-    ts_plot_set_xrange(p, 0, 1);
-    ts_plot_set_yrange(p, 0, 1);
-    ts_plot_add_ceiling(p, 1, NULL, NULL); /* along the top edge: nothing to shade */
-    ts_plot_add_floor(p, 0, NULL, NULL);   /* along the bottom edge */
-    ts_plot_add_floor(p, -2, NULL, NULL);  /* below the plot */
-    ts_plot_add_ceiling(p, 3, NULL, NULL); /* above it */
+    tsu_plot_set_xrange(p, 0, 1);
+    tsu_plot_set_yrange(p, 0, 1);
+    tsu_plot_add_ceiling(p, 1, NULL, NULL); /* along the top edge: nothing to shade */
+    tsu_plot_add_floor(p, 0, NULL, NULL);   /* along the bottom edge */
+    tsu_plot_add_floor(p, -2, NULL, NULL);  /* below the plot */
+    tsu_plot_add_ceiling(p, 3, NULL, NULL); /* above it */
     char *svg = render(p);
     CHECKF(count(svg, "<polygon ") == 0, "%zu", count(svg, "<polygon "));
     CHECK(count(svg, "<line x1") >= 2 && count(svg, "<g class=\"series region\">") == 4);
@@ -841,31 +841,31 @@ static void test_regions(void)
     /* polylines that leave nothing visible: touching the corner (1, 1) from
      * outside, and a piece shorter than the 0.01 px resolution */
     double tx[2] = {0.5, 1.5}, ty[2] = {1.5, 0.5}, sx[2] = {0.5, 0.5 + 1e-9}, sy[2] = {0.5, 0.5};
-    ts_plot_add_polyline(p, tx, ty, 2, NULL, NULL);
-    ts_plot_add_polyline(p, sx, sy, 2, NULL, NULL);
+    tsu_plot_add_polyline(p, tx, ty, 2, NULL, NULL);
+    tsu_plot_add_polyline(p, sx, sy, 2, NULL, NULL);
     svg = render(p);
     CHECKF(count(svg, "<polyline") == 0, "%zu", count(svg, "<polyline"));
     CHECK(count(svg, "<g class=\"series polyline\"") == 2);
     free(svg);
     /* a zig-zag poking out over the top edge and back: two visible pieces */
-    ts_plot *q2 = NULL;
-    CHECK(ts_plot_new(0, 0, &q2) == TS_PLOT_OK);
+    tsu_plot *q2 = NULL;
+    CHECK(tsu_plot_new(0, 0, &q2) == TSU_PLOT_OK);
     if (q2) {
         double zx[3] = {0, 0.5, 1}, zy[3] = {0.2, 2, 0.2};
-        ts_plot_set_xrange(q2, 0, 1);
-        ts_plot_set_yrange(q2, 0, 1);
-        ts_plot_add_polyline(q2, zx, zy, 3, NULL, NULL);
+        tsu_plot_set_xrange(q2, 0, 1);
+        tsu_plot_set_yrange(q2, 0, 1);
+        tsu_plot_add_polyline(q2, zx, zy, 3, NULL, NULL);
         char *z = render(q2);
         CHECKF(count(z, "<polyline") == 2, "%zu", count(z, "<polyline"));
         CHECK(polyline_vertices(z, 0) == 2 && polyline_vertices(z, 1) == 2);
         free(z);
-        ts_plot_free(q2);
+        tsu_plot_free(q2);
     }
     /* a diagonal floor through two corners shades a triangle, the whole
      * plot when entirely above it */
-    ts_plot_add_region(p, TS_PLOT_FORBID_BELOW, 1, 0, NULL, NULL);
-    ts_plot_add_region(p, TS_PLOT_FORBID_ABOVE, 0, 5, NULL, NULL);
-    ts_plot_add_region(p, TS_PLOT_FORBID_BELOW, 0, 5, NULL, NULL);
+    tsu_plot_add_region(p, TSU_PLOT_FORBID_BELOW, 1, 0, NULL, NULL);
+    tsu_plot_add_region(p, TSU_PLOT_FORBID_ABOVE, 0, 5, NULL, NULL);
+    tsu_plot_add_region(p, TSU_PLOT_FORBID_BELOW, 0, 5, NULL, NULL);
     svg = render(p);
     CHECKF(count(svg, "<polygon ") == 2, "%zu", count(svg, "<polygon "));
     const char *q = svg ? strstr(svg, "<polygon points=\"") : NULL;
@@ -874,7 +874,7 @@ static void test_regions(void)
         commas += *q == ',';
     CHECK(commas == 3); /* the triangle */
     free(svg);
-    ts_plot_free(p);
+    tsu_plot_free(p);
 }
 
 /* data at every candidate spot (corners, edge middles, centre): the legend
@@ -882,29 +882,29 @@ static void test_regions(void)
 static void fig_legend(void)
 {
     double x[9] = {0, 5, 10, 0, 5, 10, 0, 5, 10}, y[9] = {0, 0, 0, 5, 5, 5, 10, 10, 10};
-    ts_plot *p = NULL;
-    CHECK(ts_plot_new(0, 0, &p) == TS_PLOT_OK);
+    tsu_plot *p = NULL;
+    CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK);
     if (!p)
         return;
-    ts_plot_set_title(p, "legend outside");
-    ts_plot_add_points(p, x, y, 9, "grid", NULL);
-    ts_plot_add_points(p, x + 4, y + 4, 1, "centre again", NULL);
+    tsu_plot_set_title(p, "legend outside");
+    tsu_plot_add_points(p, x, y, 9, "grid", NULL);
+    tsu_plot_add_points(p, x + 4, y + 4, 1, "centre again", NULL);
     char *svg = render(p);
     CHECK(svg && count(svg, "<circle") == 9 + 1 + 2);
     free(svg);
     save(p, "plot_legend_outside.svg");
-    ts_plot_free(p);
+    tsu_plot_free(p);
 
     /* an increasing curve leaves the upper-left corner free */
     double cx[50], cy[50];
     for (int i = 0; i < 50; i++)
         cx[i] = i, cy[i] = i * i;
-    CHECK(ts_plot_new(0, 0, &p) == TS_PLOT_OK);
+    CHECK(tsu_plot_new(0, 0, &p) == TSU_PLOT_OK);
     if (!p)
         return;
-    ts_plot_set_title(p, "legend upper left");
-    ts_plot_add_polyline(p, cx, cy, 50, "x squared", NULL);
-    ts_plot_add_points(p, cx, cy, 50, "samples", NULL);
+    tsu_plot_set_title(p, "legend upper left");
+    tsu_plot_add_polyline(p, cx, cy, 50, "x squared", NULL);
+    tsu_plot_add_points(p, cx, cy, 50, "samples", NULL);
     svg = render(p);
     /* the legend box starts 8 px inside the frame's left edge */
     const char *lg = svg ? strstr(svg, "<g class=\"legend\"><rect x=\"") : NULL;
@@ -917,7 +917,7 @@ static void fig_legend(void)
     }
     free(svg);
     save(p, "plot_legend_ul.svg");
-    ts_plot_free(p);
+    tsu_plot_free(p);
 }
 
 /* Random plots: odd sizes, values (NaN, +-Inf, huge, tiny), fixed ranges,
@@ -934,9 +934,9 @@ static double fvalue(double scale)
 {
     double r = frand();
     if (r < 0.02)
-        return NAN;
+        return (double)NAN;
     if (r < 0.03)
-        return r < 0.025 ? INFINITY : -INFINITY;
+        return r < 0.025 ? (double)INFINITY : -(double)INFINITY;
     if (r < 0.035)
         return 1e301;
     return scale * (2 * frand() - 1);
@@ -947,23 +947,23 @@ static void test_fuzz(void)
     static double x[300], y[300];
     long bad = 0;
     for (int it = 0; it < 400; it++) {
-        ts_plot *p = NULL;
+        tsu_plot *p = NULL;
         unsigned w = 160 + (unsigned)(frand() * 1000), h = 160 + (unsigned)(frand() * 700);
-        if (ts_plot_new(w, h, &p) != TS_PLOT_OK) {
+        if (tsu_plot_new(w, h, &p) != TSU_PLOT_OK) {
             bad++;
             continue;
         }
         double sx = pow(10.0, -12 + 24 * frand()), sy = pow(10.0, -12 + 24 * frand());
         if (frand() < 0.3)
-            ts_plot_set_title(p, frand() < 0.5 ? "a rather long title for a small plot, really" : "t");
+            tsu_plot_set_title(p, frand() < 0.5 ? "a rather long title for a small plot, really" : "t");
         if (frand() < 0.3)
-            ts_plot_set_labels(p, "x label", frand() < 0.5 ? "y" : NULL);
+            tsu_plot_set_labels(p, "x label", frand() < 0.5 ? "y" : NULL);
         if (frand() < 0.2)
-            ts_plot_set_xrange(p, -sx * frand(), sx * frand() + sx * 0.01);
+            tsu_plot_set_xrange(p, -sx * frand(), sx * frand() + sx * 0.01);
         if (frand() < 0.2)
-            ts_plot_set_yrange(p, -sy * frand(), sy * frand() + sy * 0.01);
-        ts_plot_set_equal_aspect(p, frand() < 0.2);
-        ts_plot_set_legend(p, (ts_plot_legend)(int)(frand() * 7));
+            tsu_plot_set_yrange(p, -sy * frand(), sy * frand() + sy * 0.01);
+        tsu_plot_set_equal_aspect(p, frand() < 0.2);
+        tsu_plot_set_legend(p, (tsu_plot_legend)(int)(frand() * 7));
         int ns = (int)(frand() * 6);
         for (int k = 0; k < ns; k++) {
             size_t n = (size_t)(frand() * 300);
@@ -975,20 +975,20 @@ static void test_fuzz(void)
             const char *lab = frand() < 0.7 ? "series with a label" : NULL;
             double r = frand();
             if (r < 0.3)
-                ts_plot_add_points(p, x, y, n, lab, NULL);
+                tsu_plot_add_points(p, x, y, n, lab, NULL);
             else if (r < 0.6)
-                ts_plot_add_polyline(p, x, y, n, lab, NULL);
+                tsu_plot_add_polyline(p, x, y, n, lab, NULL);
             else if (r < 0.7)
-                ts_plot_add_polygon(p, x, y, n, lab, NULL);
+                tsu_plot_add_polygon(p, x, y, n, lab, NULL);
             else if (r < 0.85)
-                ts_plot_add_line(p, (2 * frand() - 1) * sy / sx, (2 * frand() - 1) * sy, lab, NULL);
+                tsu_plot_add_line(p, (2 * frand() - 1) * sy / sx, (2 * frand() - 1) * sy, lab, NULL);
             else
-                ts_plot_add_region(p, frand() < 0.5 ? TS_PLOT_FORBID_BELOW : TS_PLOT_FORBID_ABOVE,
+                tsu_plot_add_region(p, frand() < 0.5 ? TSU_PLOT_FORBID_BELOW : TSU_PLOT_FORBID_ABOVE,
                                    (2 * frand() - 1) * sy / sx, (2 * frand() - 1) * sy, lab, NULL);
         }
-        ts_plot_ticks tx, ty;
-        ts_plot_get_ticks(p, 0, &tx);
-        ts_plot_get_ticks(p, 1, &ty);
+        tsu_plot_ticks tx, ty;
+        tsu_plot_get_ticks(p, 0, &tx);
+        tsu_plot_get_ticks(p, 1, &ty);
         char *svg = render(p);
         int ok = svg && !has_nonfinite(svg) && tx.n >= 3 && tx.n <= 9 && ty.n >= 3 && ty.n <= 9;
         if (!ok && bad++ < 3)
@@ -999,7 +999,7 @@ static void test_fuzz(void)
             snprintf(name, sizeof name, "fuzz_%03d.svg", it);
             save(p, name);
         }
-        ts_plot_free(p);
+        tsu_plot_free(p);
     }
     CHECKF(bad == 0, "%ld fuzz plots failed", bad);
 }

@@ -1,7 +1,7 @@
 /*
  * trigspline fit in constant memory (CSV samples only).
  *
- * The data are read row by row (ts_reader) into a window; a spline is built
+ * The data are read row by row (tsu_reader) into a window; a spline is built
  * on each chunk of CLI_CHUNK intervals plus a context of extra points on each
  * side, and only the chunk's own intervals are sampled.  The scheme is local:
  * slopes use at most two neighbours on each side (Akima), beta_i the slopes
@@ -42,7 +42,7 @@ typedef struct stream {
     const ts_options *opt;
     const char *name;
     FILE *fp;
-    ts_reader *r;
+    tsu_reader *r;
     size_t chunk;
     size_t cx, cy;
     /* points [base, base + len) */
@@ -51,7 +51,7 @@ typedef struct stream {
     size_t base, len, cap;
     int eof;
     int dir; /* monotone: direction of the data so far */
-    ts_writer *w;
+    tsu_writer *w;
     cli_out out;
     int started;
     int debug; /* TRIGSPLINE_DEBUG: report border rebuilds */
@@ -116,20 +116,20 @@ static void compact(stream *s, size_t keep)
 /* Read until there are want points or the input ends. */
 static int fill(stream *s, size_t want)
 {
-    ts_io_error ie;
+    tsu_io_error ie;
     const double *row;
-    char bx[TS_FMT_SIZE], b2[TS_FMT_SIZE], bf[TS_FMT_SIZE];
+    char bx[TSU_FMT_SIZE], b2[TSU_FMT_SIZE], bf[TSU_FMT_SIZE];
     while (!s->eof && npts(s) < want) {
-        ts_io_status st = ts_reader_next(s->r, &row, &ie);
-        if (st == TS_IO_END) {
+        tsu_io_status st = tsu_reader_next(s->r, &row, &ie);
+        if (st == TSU_IO_END) {
             s->eof = 1;
             break;
         }
-        if (st != TS_IO_OK)
+        if (st != TSU_IO_OK)
             return cli_report_io(&ie);
-        unsigned long long ln = ts_reader_line(s->r);
+        unsigned long long ln = tsu_reader_line(s->r);
         if (npts(s) == 0) {
-            size_t nc = ts_reader_ncols(s->r);
+            size_t nc = tsu_reader_ncols(s->r);
             if (s->o->columns_set) {
                 if (s->cx >= nc || s->cy >= nc) {
                     cli_error("%s:%llu: --columns %zu,%zu: the table has only %zu field%s per row",
@@ -153,7 +153,7 @@ static int fill(stream *s, size_t want)
                 return CLI_DATA;
             }
             if (s->opt->shape == TS_SHAPE_MONOTONE) {
-                /* SPEC §5.5 needs one direction over the whole data, not per chunk */
+                /* docs/method.md §5.5 needs one direction over the whole data, not per chunk */
                 int sg = (f > pf) - (f < pf);
                 if (sg && !s->dir)
                     s->dir = sg;
@@ -269,22 +269,9 @@ static int border_equal(const chunk *a, const chunk *b, size_t E)
     return 1;
 }
 
-typedef struct sink_ctx {
-    ts_writer *w;
-} sink_ctx;
-
-static int wsink(void *ctx, const double *x, const double *y, size_t k)
-{
-    sink_ctx *c = ctx;
-    int rc = 0;
-    for (size_t j = 0; j < k && !rc; j++)
-        rc = ts_writer_xy(c->w, x[j], y[j]);
-    return rc;
-}
-
 static int emit(stream *s, const chunk *c, int last)
 {
-    char msg[TS_IO_MSG_SIZE];
+    char msg[TSU_IO_MSG_SIZE];
     int rc;
     if (!s->started) {
         rc = cli_out_open(&s->out, s->o->out ? s->o->out : "-", msg, sizeof msg);
@@ -293,16 +280,15 @@ static int emit(stream *s, const chunk *c, int last)
             return CLI_IO;
         }
         s->started = 1;
-        s->w = ts_writer_new(cli_out_file(&s->out), ',');
+        s->w = tsu_writer_new(cli_out_file(&s->out), ',');
         if (!s->w)
             return cli_nomem();
-        rc = ts_writer_text(s->w, "x,y\n", 4);
+        rc = tsu_writer_text(s->w, "x,y\n", 4);
         if (rc)
             goto werr;
     }
-    sink_ctx sc = {s->w};
-    rc = cli_sample(c->s, c->e0 - c->wl, c->e1 - c->wl, last, s->o->samples, s->o->deriv, wsink,
-                    &sc);
+    rc = cli_sample(c->s, c->e0 - c->wl, c->e1 - c->wl, last, s->o->samples, s->o->deriv,
+                    cli_sink_writer, s->w);
     if (!rc)
         return CLI_OK;
 werr:
@@ -319,7 +305,7 @@ int cli_fit_stream(const cli_opts *o, const ts_options *opt)
 {
     stream s;
     chunk pend, next;
-    ts_io_error ie;
+    tsu_io_error ie;
     int rc;
     memset(&s, 0, sizeof s);
     memset(&pend, 0, sizeof pend);
@@ -349,7 +335,7 @@ int cli_fit_stream(const cli_opts *o, const ts_options *opt)
             return CLI_IO;
         }
     }
-    if (ts_reader_open(&s.r, s.fp, s.name, NULL, &ie) != TS_IO_OK) {
+    if (tsu_reader_open(&s.r, s.fp, s.name, NULL, &ie) != TSU_IO_OK) {
         rc = cli_report_io(&ie);
         goto done;
     }
@@ -415,7 +401,7 @@ int cli_fit_stream(const cli_opts *o, const ts_options *opt)
     }
 done:
     if (s.w) {
-        int wr = ts_writer_free(s.w);
+        int wr = tsu_writer_free(s.w);
         if (wr && rc == CLI_OK) {
             cli_error("cannot write %s: %s", o->out ? o->out : "standard output", strerror(wr));
             rc = CLI_IO;
@@ -423,7 +409,7 @@ done:
     }
     if (s.started) {
         if (rc == CLI_OK) {
-            char msg[TS_IO_MSG_SIZE];
+            char msg[TSU_IO_MSG_SIZE];
             if (cli_out_commit(&s.out, msg, sizeof msg)) {
                 cli_error("%s", msg);
                 rc = CLI_IO;
@@ -436,7 +422,7 @@ done:
     }
     ts_spline_free(pend.s);
     ts_spline_free(next.s);
-    ts_reader_free(s.r);
+    tsu_reader_free(s.r);
     if (s.fp && s.fp != stdin)
         fclose(s.fp);
     free(s.x);

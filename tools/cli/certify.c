@@ -1,0 +1,147 @@
+/* trigspline certify: your alpha and beta, the exact distance to each boundary. */
+#include "cli.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+/* Text report of certify. */
+static int certify_text(tsu_plot_buf *b, const cli_opts *o, const char *name, const ts_spline *s,
+                        const ts_line *lower, const ts_line *upper,
+                        const ts_interval_report *reps, int certified)
+{
+    size_t n = ts_spline_intervals(s), bad = 0;
+    char t1[200], t2[200];
+    char v[8][TSU_FMT_SIZE];
+    int ok = 1;
+    if (lower)
+        cli_line_text(lower, t1, sizeof t1);
+    if (upper)
+        cli_line_text(upper, t2, sizeof t2);
+    ok &= tsu_plot_buf_printf(b, "# trigspline certify %s: %zu intervals, form %s, slopes %s%s%s%s%s\n",
+                             name, n, cli_form_name(ts_spline_form(s)), cli_slopes_name(o->slopes),
+                             lower ? ", lower " : "", lower ? t1 : "", upper ? ", upper " : "",
+                             upper ? t2 : "") == TSU_PLOT_OK;
+    ok &= tsu_plot_buf_puts(b, "interval x0 x1 alpha beta gap_lower at_lower gap_upper at_upper "
+                              "certified\n") == TSU_PLOT_OK;
+    for (size_t i = 0; i < n && ok; i++) {
+        const ts_interval_report *r = &reps[i];
+        bad += !r->certified;
+        ok &= tsu_plot_buf_printf(
+                  b, "%zu %s %s %s %s %s %s %s %s %s\n", i, cli_num(r->x0, v[0]),
+                  cli_num(r->x1, v[1]), cli_num(r->alpha, v[2]), cli_num(r->beta, v[3]),
+                  r->has_lower ? cli_num(r->gap_lower, v[4]) : "-",
+                  r->has_lower ? cli_num(r->at_lower, v[5]) : "-",
+                  r->has_upper ? cli_num(r->gap_upper, v[6]) : "-",
+                  r->has_upper ? cli_num(r->at_upper, v[7]) : "-",
+                  r->certified ? "yes" : "NO") == TSU_PLOT_OK;
+    }
+    if (ok) {
+        if (certified)
+            ok &= tsu_plot_buf_puts(b, "# certified: yes\n") == TSU_PLOT_OK;
+        else
+            ok &= tsu_plot_buf_printf(b, "# certified: no (%zu of %zu intervals leave the region)\n",
+                                     bad, n) == TSU_PLOT_OK;
+    }
+    return ok ? CLI_OK : cli_nomem();
+}
+
+int cli_certify(cli_opts *o)
+{
+    ts_options opt;
+    int rc = cli_fit_options(o, &opt);
+    if (rc != CLI_OK)
+        return rc;
+    ts_shape shape;
+    ts_line lo, up;
+    int hl, hu;
+    cli_certify_bounds(o, &shape, &lo, &hl, &up, &hu);
+    const ts_line *lower = hl ? &lo : NULL, *upper = hu ? &up : NULL;
+
+    cli_data d;
+    if ((rc = cli_read_data(o, &d)) != CLI_OK)
+        return rc;
+    ts_spline *s = NULL;
+    ts_error e;
+    ts_status st = ts_spline_new(d.col[0], d.col[1], d.n, &opt, &s, &e);
+    if (st != TS_OK) {
+        rc = cli_report_build_error(o, &opt, d.name, d.col[0], d.col[1], d.line, d.n, &e, st, 0);
+        cli_data_free(&d);
+        return rc;
+    }
+    size_t n = ts_spline_intervals(s);
+    ts_interval_report *reps = calloc(n, sizeof *reps);
+    cli_json j;
+    cli_json_init(&j);
+    tsu_plot_buf svg = TSU_PLOT_BUF_INIT, text = TSU_PLOT_BUF_INIT;
+    cli_xy bad = {0};
+    cli_stats smp = CLI_STATS_INIT;
+    int certified = 0;
+    if (!reps) {
+        rc = cli_nomem();
+        goto done;
+    }
+    st = ts_certify(s, lower, upper, reps, &e);
+    if (st != TS_OK && st != TS_ERR_VIOLATED) {
+        cli_error("certify: %s", ts_strerror(st));
+        rc = st == TS_ERR_NONFINITE ? CLI_USAGE : CLI_DATA;
+        goto done;
+    }
+    certified = st == TS_OK;
+    for (size_t i = 0; i < n; i++) {
+        const ts_interval_report *r = &reps[i];
+        if (r->certified)
+            continue;
+        double at = r->has_lower && !(r->gap_lower > 0.0) ? r->at_lower : r->at_upper;
+        double y;
+        if (!isfinite(at) || ts_eval(s, at, NULL, &y) != TS_OK)
+            continue;
+        cli_xy_push(&bad, at, y);
+    }
+    if (o->json) {
+        cli_sample(s, 0, n, 1, o->samples, 0, cli_sink_stats, &smp);
+        cli_spline_json(&j, o, s, shape, lower, upper, certified, reps, &smp);
+        if (j.failed) {
+            rc = cli_nomem();
+            goto done;
+        }
+    } else if ((rc = certify_text(&text, o, d.name, s, lower, upper, reps, certified)) != CLI_OK) {
+        goto done;
+    }
+    if (o->svg && (rc = cli_spline_plot(o, d.name, s, shape, lower, upper, &bad, &svg)) != CLI_OK)
+        goto done;
+    rc = cli_write_outputs(o->out, o->json ? &j.b : &text, NULL, NULL, o->svg, &svg);
+    if (rc == CLI_OK && !certified) {
+        size_t cnt = 0;
+        for (size_t i = 0; i < n; i++)
+            cnt += !reps[i].certified;
+        cli_error("certificate violated on %zu of %zu intervals:", cnt, n);
+        for (size_t i = 0; i < n; i++) {
+            const ts_interval_report *r = &reps[i];
+            char b[6][TSU_FMT_SIZE];
+            if (r->certified)
+                continue;
+            fprintf(stderr, "  interval %zu [%s, %s] (lines %llu-%llu):", i, cli_num(r->x0, b[0]),
+                    cli_num(r->x1, b[1]), d.line ? d.line[i] : 0ULL, d.line ? d.line[i + 1] : 0ULL);
+            if (r->has_lower && !(r->gap_lower > 0.0))
+                fprintf(stderr, " min gap above the lower boundary %s at x = %s;",
+                        cli_num(r->gap_lower, b[2]), cli_num(r->at_lower, b[3]));
+            if (r->has_upper && !(r->gap_upper > 0.0))
+                fprintf(stderr, " min gap below the upper boundary %s at x = %s;",
+                        cli_num(r->gap_upper, b[4]), cli_num(r->at_upper, b[5]));
+            if ((!r->has_lower || r->gap_lower > 0.0) && (!r->has_upper || r->gap_upper > 0.0))
+                fprintf(stderr, " gap within rounding of zero;");
+            fputc('\n', stderr);
+        }
+        rc = CLI_VIOLATED;
+    }
+done:
+    free(reps);
+    cli_xy_free(&bad);
+    cli_json_free(&j);
+    tsu_plot_buf_free(&svg);
+    tsu_plot_buf_free(&text);
+    ts_spline_free(s);
+    cli_data_free(&d);
+    return rc;
+}

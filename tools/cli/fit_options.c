@@ -1,0 +1,144 @@
+/* From the command-line options to the ts_options of fit and certify. */
+#include "cli.h"
+
+/* Lines of a shape from --line / --lower / --upper (fit and certify). */
+static int resolve_lines(const cli_opts *o, ts_shape *sh, ts_line *lo, int *has_lo, ts_line *up,
+                         int *has_up)
+{
+    cli_cmd cmd = o->cmd;
+    *has_lo = *has_up = 0;
+    switch (*sh) {
+    case TS_SHAPE_NONE:
+        if (o->has_line)
+            return cli_usage(cmd, "--line needs --shape above or --shape below (or use --lower "
+                                  "/ --upper)");
+        *has_lo = o->has_lower;
+        *has_up = o->has_upper;
+        *lo = o->lower;
+        *up = o->upper;
+        *sh = *has_lo && *has_up ? TS_SHAPE_BETWEEN
+              : *has_lo          ? TS_SHAPE_ABOVE
+              : *has_up          ? TS_SHAPE_BELOW
+                                 : TS_SHAPE_NONE;
+        return CLI_OK;
+    case TS_SHAPE_POSITIVE:
+    case TS_SHAPE_MONOTONE:
+        if (o->has_line || o->has_lower || o->has_upper)
+            return cli_usage(cmd, "--shape %s takes no --line, --lower or --upper",
+                             cli_shape_name(*sh));
+        if (*sh == TS_SHAPE_POSITIVE) {
+            lo->m = lo->c = 0.0;
+            *has_lo = 1;
+        }
+        return CLI_OK;
+    case TS_SHAPE_ABOVE:
+        if (o->has_upper)
+            return cli_usage(cmd, "--shape above takes a lower line only (--upper given; use "
+                                  "--shape between)");
+        if (o->has_line && o->has_lower)
+            return cli_usage(cmd, "give the line once: --line or --lower");
+        if (!o->has_line && !o->has_lower)
+            return cli_usage(cmd, "--shape above needs --line M,C");
+        *lo = o->has_line ? o->line : o->lower;
+        *has_lo = 1;
+        return CLI_OK;
+    case TS_SHAPE_BELOW:
+        if (o->has_lower)
+            return cli_usage(cmd, "--shape below takes an upper line only (--lower given; use "
+                                  "--shape between)");
+        if (o->has_line && o->has_upper)
+            return cli_usage(cmd, "give the line once: --line or --upper");
+        if (!o->has_line && !o->has_upper)
+            return cli_usage(cmd, "--shape below needs --line M,C");
+        *up = o->has_line ? o->line : o->upper;
+        *has_up = 1;
+        return CLI_OK;
+    case TS_SHAPE_BETWEEN:
+        if (o->has_line)
+            return cli_usage(cmd, "--shape between takes --lower and --upper, not --line");
+        if (!o->has_lower || !o->has_upper)
+            return cli_usage(cmd, "--shape between needs both --lower M,C and --upper M,C");
+        *lo = o->lower;
+        *up = o->upper;
+        *has_lo = *has_up = 1;
+        return CLI_OK;
+    }
+    return CLI_OK;
+}
+
+/* Options of both commands that only make sense with others. */
+static int check_output_opts(const cli_opts *o)
+{
+    if (!o->svg && (o->title || o->show_control || o->points_only))
+        return cli_usage(o->cmd, "%s only applies to the plot (--svg FILE)",
+                         o->title ? "--title" : o->show_control ? "--show-control" : "--points-only");
+    if (o->show_control && o->points_only)
+        return cli_usage(o->cmd, "--show-control and --points-only do not fit together");
+    if (o->extrap_set && !o->at)
+        return cli_usage(o->cmd, "--extrapolate only applies with --at FILE");
+    return CLI_OK;
+}
+
+int cli_fit_options(const cli_opts *o, ts_options *opt)
+{
+    int rc;
+    ts_options_init(opt);
+    if ((rc = check_output_opts(o)) != CLI_OK)
+        return rc;
+    opt->form = o->form;
+    opt->slopes = o->slopes;
+    opt->alpha = o->alpha;
+    opt->alphas = o->alphas;
+    opt->n_alphas = o->n_alphas;
+    opt->extrapolate = o->extrap;
+    if (o->alpha_set && o->alphas)
+        return cli_usage(o->cmd, "give --alpha or --alphas, not both");
+    if (o->beta_set && o->betas)
+        return cli_usage(o->cmd, "give --beta or --betas, not both");
+
+    ts_shape sh = o->shape;
+    int hl, hu;
+    if (o->cmd == CLI_CERTIFY) {
+        if (sh == TS_SHAPE_MONOTONE)
+            return cli_usage(o->cmd, "certify checks boundaries: --shape positive, above, below "
+                                     "or between (or --lower / --upper)");
+        if ((rc = resolve_lines(o, &sh, &opt->lower, &hl, &opt->upper, &hu)) != CLI_OK)
+            return rc;
+        if (!hl && !hu)
+            return cli_usage(o->cmd, "certify needs a boundary: --shape positive, --lower M,C, "
+                                     "--upper M,C, or --shape above|below --line M,C");
+        if (!o->alpha_set && !o->alphas)
+            return cli_usage(o->cmd, "certify needs your --alpha A (or --alphas)");
+        if (!o->beta_set && !o->betas)
+            return cli_usage(o->cmd, "certify needs your --beta B (or --betas)");
+        /* the spline itself is built without a scheme */
+        opt->shape = TS_SHAPE_NONE;
+        opt->beta = o->beta;
+        opt->betas = o->betas;
+        opt->n_betas = o->n_betas;
+        /* the boundaries themselves: cli_certify_bounds */
+        opt->lower.m = opt->lower.c = opt->upper.m = opt->upper.c = 0.0;
+        return CLI_OK;
+    }
+    if ((rc = resolve_lines(o, &sh, &opt->lower, &hl, &opt->upper, &hu)) != CLI_OK)
+        return rc;
+    if (sh != TS_SHAPE_NONE && (o->beta_set || o->betas))
+        return cli_usage(o->cmd, "--beta/--betas only with --shape none: the %s scheme computes "
+                                 "beta (use --alpha, --margin)",
+                         cli_shape_name(sh));
+    if (sh == TS_SHAPE_NONE && o->margin_set)
+        return cli_usage(o->cmd, "--margin only applies to a shape scheme (--shape ...)");
+    opt->shape = sh;
+    opt->margin = o->margin;
+    opt->beta = o->beta;
+    opt->betas = o->betas;
+    opt->n_betas = o->n_betas;
+    return CLI_OK;
+}
+
+void cli_certify_bounds(const cli_opts *o, ts_shape *sh, ts_line *lo, int *hl, ts_line *up,
+                        int *hu)
+{
+    *sh = o->shape;
+    (void)resolve_lines(o, sh, lo, hl, up, hu);
+}

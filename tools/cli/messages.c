@@ -1,0 +1,60 @@
+/* Messages on standard error and the number and line texts they use. */
+#include "cli.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+void cli_error(const char *fmt, ...)
+{
+    va_list ap;
+    fputs("trigspline: ", stderr);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fputc('\n', stderr);
+}
+
+int cli_usage(cli_cmd cmd, const char *fmt, ...)
+{
+    va_list ap;
+    fprintf(stderr, "trigspline %s: ", cli_cmd_name(cmd));
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fprintf(stderr, "\nTry 'trigspline %s --help' for more information.\n", cli_cmd_name(cmd));
+    return CLI_USAGE;
+}
+
+const char *cli_num(double v, char buf[TSU_FMT_SIZE])
+{
+    tsu_format_double(v, buf);
+    return buf;
+}
+
+void cli_line_text(const ts_line *l, char *buf, size_t len)
+{
+    char m[TSU_FMT_SIZE + 1], c[TSU_FMT_SIZE];
+    if (l->m == 1.0)
+        snprintf(m, sizeof m, "x");
+    else if (l->m == -1.0)
+        snprintf(m, sizeof m, "-x");
+    else {
+        tsu_format_double(l->m, m);
+        strcat(m, "x");
+    }
+    if (l->m == 0.0)
+        snprintf(buf, len, "y = %s", cli_num(l->c, c));
+    else if (l->c == 0.0)
+        snprintf(buf, len, "y = %s", m);
+    else if (l->c < 0.0)
+        snprintf(buf, len, "y = %s - %s", m, cli_num(-l->c, c));
+    else
+        snprintf(buf, len, "y = %s + %s", m, cli_num(l->c, c));
+}
+
+int cli_nomem(void)
+{
+    cli_error("out of memory");
+    return CLI_IO;
+}

@@ -1,0 +1,136 @@
+/* Outputs written only on success: temporary file + rename, or a device directly. */
+#define _POSIX_C_SOURCE 200809L
+#include "cli.h"
+
+#include <sys/stat.h>
+
+#include <errno.h>
+#include <stdio.h>
+#include <string.h>
+
+int cli_out_open(cli_out *c, const char *path, char *msg, size_t len)
+{
+    struct stat st;
+    c->o = NULL;
+    c->direct = NULL;
+    if (strcmp(path, "-") != 0 && stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        if (S_ISDIR(st.st_mode)) {
+            snprintf(msg, len, "cannot write \"%s\": Is a directory", path);
+            return EISDIR;
+        }
+        c->direct = fopen(path, "w");
+        if (!c->direct) {
+            int e = errno;
+            snprintf(msg, len, "cannot open \"%s\": %s", path, strerror(e));
+            return e ? e : EIO;
+        }
+        return 0;
+    }
+    return tsu_out_open(&c->o, path, 0, msg, len);
+}
+
+FILE *cli_out_file(const cli_out *c)
+{
+    return c->direct ? c->direct : tsu_out_file(c->o);
+}
+
+int cli_out_commit(cli_out *c, char *msg, size_t len)
+{
+    if (c->direct) {
+        FILE *fp = c->direct;
+        c->direct = NULL;
+        errno = 0;
+        int bad = fflush(fp) != 0 || ferror(fp);
+        int e = errno ? errno : EIO;
+        if (fclose(fp) != 0 && !bad) {
+            bad = 1;
+            e = errno ? errno : EIO;
+        }
+        if (bad) {
+            snprintf(msg, len, "write error: %s", strerror(e));
+            return e;
+        }
+        return 0;
+    }
+    tsu_out *o = c->o;
+    c->o = NULL;
+    return o ? tsu_out_commit(o, msg, len) : 0;
+}
+
+void cli_out_abort(cli_out *c)
+{
+    if (c->direct)
+        fclose(c->direct);
+    tsu_out_abort(c->o);
+    c->direct = NULL;
+    c->o = NULL;
+}
+
+/* Write, then flush and check the stream: 0 or an errno. */
+static int put_all(FILE *fp, const tsu_plot_buf *text, cli_writer_fn fn, void *ctx)
+{
+    int rc = 0;
+    errno = 0;
+    if (text && text->len && fwrite(text->data, 1, text->len, fp) != text->len)
+        rc = errno ? errno : EIO;
+    if (!rc && fn)
+        rc = fn(ctx, fp);
+    errno = 0;
+    if (!rc && fflush(fp) != 0)
+        rc = errno ? errno : EIO;
+    if (!rc && ferror(fp))
+        rc = EIO;
+    return rc;
+}
+
+int cli_write_outputs(const char *out_path, const tsu_plot_buf *text, cli_writer_fn fn,
+                      void *fn_ctx, const char *svg_path, const tsu_plot_buf *svg)
+{
+    char msg[TSU_IO_MSG_SIZE];
+    cli_out os = {NULL, NULL}, oo = {NULL, NULL};
+    const char *opath = out_path ? out_path : "-";
+    int rc;
+
+    /* 1. the plot into its temporary file */
+    if (svg_path) {
+        rc = cli_out_open(&os, svg_path, msg, sizeof msg);
+        if (rc) {
+            cli_error("%s", msg);
+            return CLI_IO;
+        }
+        rc = put_all(cli_out_file(&os), svg, NULL, NULL);
+        if (rc) {
+            cli_error("cannot write \"%s\": %s", svg_path, strerror(rc));
+            cli_out_abort(&os);
+            return CLI_IO;
+        }
+    }
+    /* 2. the main output (standard output is written directly) */
+    rc = cli_out_open(&oo, opath, msg, sizeof msg);
+    if (rc) {
+        cli_error("%s", msg);
+        cli_out_abort(&os);
+        return CLI_IO;
+    }
+    rc = put_all(cli_out_file(&oo), text, fn, fn_ctx);
+    if (rc) {
+        cli_error("cannot write %s%s%s: %s", out_path ? "\"" : "",
+                  out_path ? out_path : "standard output", out_path ? "\"" : "", strerror(rc));
+        cli_out_abort(&oo);
+        cli_out_abort(&os);
+        return CLI_IO;
+    }
+    /* 3. both complete and flushed: rename into place */
+    rc = cli_out_commit(&oo, msg, sizeof msg);
+    if (rc) {
+        cli_error("%s", msg);
+        cli_out_abort(&os);
+        return CLI_IO;
+    }
+    rc = cli_out_commit(&os, msg, sizeof msg);
+    if (rc) {
+        cli_error("%s", msg);
+        return CLI_IO;
+    }
+    return CLI_OK;
+}

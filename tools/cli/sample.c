@@ -1,0 +1,114 @@
+/* Sampling a spline into sinks: a CSV row writer, running min/max, point arrays. */
+#include "cli.h"
+
+#include <errno.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define CLI_BLOCK 512
+
+int cli_sample(const ts_spline *s, size_t i0, size_t i1, int with_end, size_t m, int deriv,
+               cli_sink sink, void *ctx)
+{
+    double xs[CLI_BLOCK], ys[CLI_BLOCK];
+    const double *X = ts_spline_x(s);
+    size_t k = 0;
+    ts_cursor cur = TS_CURSOR_INIT;
+    ts_error e;
+    int rc;
+    double den = (double)(m - 1);
+    for (size_t i = i0; i <= i1; i++) {
+        size_t cnt = i < i1 ? m - 1 : (with_end ? 1 : 0);
+        double x0 = X[i], h = i < i1 ? X[i + 1] - X[i] : 0.0;
+        for (size_t j = 0; j < cnt; j++) {
+            double x = x0;
+            if (j > 0) {
+                /* inside the interval; rounding may reach (not pass) x_{i+1} */
+                x = x0 + h * ((double)j / den);
+                if (x > X[i + 1])
+                    x = X[i + 1];
+            }
+            xs[k++] = x;
+            if (k == CLI_BLOCK) {
+                (void)ts_eval_batch(s, deriv, xs, k, ys, &cur, &e);
+                if ((rc = sink(ctx, xs, ys, k)) != 0)
+                    return rc;
+                k = 0;
+            }
+        }
+    }
+    if (k) {
+        (void)ts_eval_batch(s, deriv, xs, k, ys, &cur, &e);
+        if ((rc = sink(ctx, xs, ys, k)) != 0)
+            return rc;
+    }
+    return 0;
+}
+
+int cli_sink_stats(void *ctx, const double *x, const double *y, size_t k)
+{
+    cli_stats *st = ctx;
+    (void)x;
+    for (size_t j = 0; j < k; j++) {
+        if (y[j] < st->lo)
+            st->lo = y[j];
+        if (y[j] > st->hi)
+            st->hi = y[j];
+    }
+    st->count += k;
+    return 0;
+}
+
+int cli_sink_xy(void *ctx, const double *x, const double *y, size_t k)
+{
+    cli_xy *a = ctx;
+    for (size_t j = 0; j < k; j++)
+        cli_xy_push(a, x[j], y[j]);
+    return a->failed ? ENOMEM : 0;
+}
+
+int cli_sink_writer(void *ctx, const double *x, const double *y, size_t k)
+{
+    tsu_writer *w = ctx;
+    int rc = 0;
+    for (size_t j = 0; j < k && !rc; j++)
+        rc = tsu_writer_xy(w, x[j], y[j]);
+    return rc;
+}
+
+void cli_xy_push(cli_xy *a, double x, double y)
+{
+    if (a->failed)
+        return;
+    if (a->n == a->cap) {
+        size_t cap = a->cap ? a->cap * 2 : 256;
+        if (cap < a->cap || cap > SIZE_MAX / sizeof(double)) {
+            a->failed = 1;
+            return;
+        }
+        double *nx = realloc(a->x, cap * sizeof *nx);
+        if (!nx) {
+            a->failed = 1;
+            return;
+        }
+        a->x = nx;
+        double *ny = realloc(a->y, cap * sizeof *ny);
+        if (!ny) {
+            a->failed = 1;
+            return;
+        }
+        a->y = ny;
+        a->cap = cap;
+    }
+    a->x[a->n] = x;
+    a->y[a->n] = y;
+    a->n++;
+}
+
+void cli_xy_free(cli_xy *a)
+{
+    free(a->x);
+    free(a->y);
+    memset(a, 0, sizeof *a);
+}
