@@ -29,12 +29,23 @@
 extern "C" {
 #endif
 
+/* TS_API marks the functions the shared library exports; the library is
+ * built with -fvisibility=hidden, so everything else stays internal.  A
+ * build may predefine TS_API (e.g. as dllexport/dllimport) to override. */
+#ifndef TS_API
+#if defined(__GNUC__) || defined(__clang__)
+#define TS_API __attribute__((visibility("default")))
+#else
+#define TS_API
+#endif
+#endif
+
 #define TS_VERSION_MAJOR 0
 #define TS_VERSION_MINOR 1
 #define TS_VERSION_PATCH 0
 
 /* "0.1.0" */
-const char *ts_version(void);
+TS_API const char *ts_version(void);
 
 /* ------------------------------------------------------------------ */
 /* Status codes                                                         */
@@ -71,7 +82,7 @@ typedef enum ts_status {
 } ts_status;
 
 /* A fixed, never-NULL English string for any value (unknown codes too). */
-const char *ts_strerror(ts_status status);
+TS_API const char *ts_strerror(ts_status status);
 
 /* What ts_error.index refers to. */
 typedef enum ts_where {
@@ -298,7 +309,7 @@ typedef struct ts_options {
     ts_extrap extrapolate;     /* default TS_EXTRAP_ERROR */
 } ts_options;
 
-void ts_options_init(ts_options *opt);
+TS_API void ts_options_init(ts_options *opt);
 
 /* ------------------------------------------------------------------ */
 /* Slopes on their own                                                  */
@@ -310,7 +321,7 @@ void ts_options_init(ts_options *opt);
  * interval width or a slope overflows; index = point), TS_ERR_UNSORTED,
  * TS_ERR_OPTION, TS_ERR_PERIODIC.  On failure d (if not NULL) is filled with NaN.
  */
-ts_status ts_slopes_compute(ts_slopes method, const double *x, const double *f,
+TS_API ts_status ts_slopes_compute(ts_slopes method, const double *x, const double *f,
                             size_t n_points, double *d, ts_error *err);
 
 /* ------------------------------------------------------------------ */
@@ -342,24 +353,24 @@ typedef struct ts_spline ts_spline;
  * order).  In the C¹ form certificates follow all blocks.  Non-finite
  * control values (TS_ERR_NONFINITE, an interval) are reported last.
  */
-ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
+TS_API ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
                         const ts_options *opt, ts_spline **out, ts_error *err);
 
-void ts_spline_free(ts_spline *s);
+TS_API void ts_spline_free(ts_spline *s);
 
 /* ---- accessors (never fail on a valid spline; pointers live as long as s) */
-size_t ts_spline_intervals(const ts_spline *s);     /* n */
-const double *ts_spline_x(const ts_spline *s);      /* n+1 knots */
-const double *ts_spline_f(const ts_spline *s);      /* n+1 values */
-const double *ts_spline_slopes(const ts_spline *s); /* n+1 slopes d_i actually used (after any shape adjustment) */
-const double *ts_spline_alpha(const ts_spline *s);  /* n */
-const double *ts_spline_beta(const ts_spline *s);   /* n */
-ts_form ts_spline_form(const ts_spline *s);
-ts_shape ts_spline_shape(const ts_spline *s);
-ts_extrap ts_spline_extrapolation(const ts_spline *s);
+TS_API size_t ts_spline_intervals(const ts_spline *s);     /* n */
+TS_API const double *ts_spline_x(const ts_spline *s);      /* n+1 knots */
+TS_API const double *ts_spline_f(const ts_spline *s);      /* n+1 values */
+TS_API const double *ts_spline_slopes(const ts_spline *s); /* n+1 slopes d_i actually used (after any shape adjustment) */
+TS_API const double *ts_spline_alpha(const ts_spline *s);  /* n */
+TS_API const double *ts_spline_beta(const ts_spline *s);   /* n */
+TS_API ts_form ts_spline_form(const ts_spline *s);
+TS_API ts_shape ts_spline_shape(const ts_spline *s);
+TS_API ts_extrap ts_spline_extrapolation(const ts_spline *s);
 
 /* a_i = alpha_i + beta_i.  TS_OK or TS_ERR_NULL, TS_ERR_INDEX. */
-ts_status ts_spline_a(const ts_spline *s, size_t i, double *a);
+TS_API ts_status ts_spline_a(const ts_spline *s, size_t i, double *a);
 
 /* The four control values B0..B3 of interval i (SPEC §3; for the C¹ option the
  * ones built from d̂) and abscissae X0..X3 for plotting the control polygon
@@ -367,7 +378,7 @@ ts_status ts_spline_a(const ts_spline *s, size_t i, double *a);
  * with k = 2h/(3π a_i).  Paper and C¹ forms: x_i + (0, K, h − K, h) with
  * K = 2h/(3π), so that the polygon's first and last legs are tangent to the
  * curve (S'(x_i+) = (B1 − B0)/K).  TS_OK, TS_ERR_NULL, TS_ERR_INDEX. */
-ts_status ts_spline_control(const ts_spline *s, size_t i, double B[4], double X[4]);
+TS_API ts_status ts_spline_control(const ts_spline *s, size_t i, double B[4], double X[4]);
 
 /* Which term of the SPEC §5 rule set beta_i. */
 typedef enum ts_term {
@@ -414,11 +425,11 @@ typedef struct ts_interval_report {
 /* Report of interval i.  For shape schemes the boundaries are the scheme's
  * (positive: lower = 0); for TS_SHAPE_NONE no boundary (has_* = 0).
  * TS_OK, TS_ERR_NULL, TS_ERR_INDEX. */
-ts_status ts_spline_report(const ts_spline *s, size_t i, ts_interval_report *rep);
+TS_API ts_status ts_spline_report(const ts_spline *s, size_t i, ts_interval_report *rep);
 
 /* 1 when every interval of a shape-constrained spline is certified, 0 otherwise
  * (also 0 for TS_SHAPE_NONE: nothing was promised). */
-int ts_spline_certified(const ts_spline *s);
+TS_API int ts_spline_certified(const ts_spline *s);
 
 /*
  * Certify any spline (e.g. one built with the caller's own beta) against an
@@ -428,7 +439,7 @@ int ts_spline_certified(const ts_spline *s);
  * (err->index = first violating interval), TS_ERR_NONFINITE for a non-finite
  * line, TS_ERR_NULL.  reports are reset (NaN) before any check.
  */
-ts_status ts_certify(const ts_spline *s, const ts_line *lower, const ts_line *upper,
+TS_API ts_status ts_certify(const ts_spline *s, const ts_line *lower, const ts_line *upper,
                      ts_interval_report *reports, ts_error *err);
 
 /* ---- evaluation ---------------------------------------------------- */
@@ -447,8 +458,8 @@ typedef struct ts_cursor {
  * At an inner knot the right-hand interval is used (derivatives of the paper
  * form jump there, SPEC §3).
  */
-ts_status ts_eval(const ts_spline *s, double x, ts_cursor *cur, double *y);
-ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur,
+TS_API ts_status ts_eval(const ts_spline *s, double x, ts_cursor *cur, double *y);
+TS_API ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur,
                         double *y, double *dy, double *d2y);
 
 /*
@@ -458,12 +469,12 @@ ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur,
  * evaluated; invalid ones get NaN and the call returns TS_ERR_DOMAIN with
  * err->index = first invalid query.  Also TS_ERR_NULL, TS_ERR_OPTION (deriv).
  */
-ts_status ts_eval_batch(const ts_spline *s, int deriv, const double *xq, size_t m,
+TS_API ts_status ts_eval_batch(const ts_spline *s, int deriv, const double *xq, size_t m,
                         double *yq, ts_cursor *cur, ts_error *err);
 
 /* Same, split over nthreads threads (0 = number of cores).  Off unless called.
  * Same statuses. */
-ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size_t m,
+TS_API ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size_t m,
                            double *yq, unsigned nthreads, ts_error *err);
 
 /*
@@ -472,7 +483,7 @@ ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size
  * TS_FORM_GEOMETRIC).
  * a and b must lie in [x0, xn]: TS_ERR_DOMAIN otherwise (or NaN).  TS_ERR_NULL.
  */
-ts_status ts_integral(const ts_spline *s, double a, double b, double *out);
+TS_API ts_status ts_integral(const ts_spline *s, double a, double b, double *out);
 
 /* ------------------------------------------------------------------ */
 /* Parametric curves (SPEC §7)                                          */
@@ -543,7 +554,7 @@ typedef struct ts_curve_options {
     double margin;           /* default TS_DEFAULT_MARGIN; checked only with a box */
 } ts_curve_options;
 
-void ts_curve_options_init(ts_curve_options *opt);
+TS_API void ts_curve_options_init(ts_curve_options *opt);
 
 /*
  * points: n_points rows of dim (2 or 3) doubles, row-major.  opt may be NULL
@@ -571,25 +582,25 @@ void ts_curve_options_init(ts_curve_options *opt);
  *                      index = segment)
  *   TS_ERR_NOMEM.
  */
-ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
+TS_API ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
                        const ts_curve_options *opt, ts_curve **out, ts_error *err);
 /* NULL is a no-op. */
-void ts_curve_free(ts_curve *c);
+TS_API void ts_curve_free(ts_curve *c);
 
 /* Accessors; 0 / NULL for c == NULL.  Pointers live as long as c. */
-size_t ts_curve_segments(const ts_curve *c);
-size_t ts_curve_dim(const ts_curve *c);
-int ts_curve_closed(const ts_curve *c);            /* 1 for a closed curve */
-const double *ts_curve_knots(const ts_curve *c);   /* segments+1 parameter values */
+TS_API size_t ts_curve_segments(const ts_curve *c);
+TS_API size_t ts_curve_dim(const ts_curve *c);
+TS_API int ts_curve_closed(const ts_curve *c);            /* 1 for a closed curve */
+TS_API const double *ts_curve_knots(const ts_curve *c);   /* segments+1 parameter values */
 /* Control points of segment i: ctrl receives 4 rows of dim doubles.  The
  * spline of coordinate k in segment i has values ctrl[l*dim + k]:
  * P_i, P_i + k_i d_i, P_{i+1} - k_i d_{i+1}, P_{i+1} with k_i = 2h_i/(3 pi a_i)
  * (SPEC §3, h_i = t_{i+1} - t_i).  TS_OK, TS_ERR_NULL, TS_ERR_INDEX (ctrl
  * set to NaN). */
-ts_status ts_curve_control(const ts_curve *c, size_t i, double *ctrl);
+TS_API ts_status ts_curve_control(const ts_curve *c, size_t i, double *ctrl);
 /* alpha_i, beta_i of segment i (both set to NaN first; with a box beta_i is the
  * computed one).  TS_OK, TS_ERR_NULL, TS_ERR_INDEX. */
-ts_status ts_curve_params(const ts_curve *c, size_t i, double *alpha, double *beta);
+TS_API ts_status ts_curve_params(const ts_curve *c, size_t i, double *alpha, double *beta);
 
 /* Point, first and second derivative in t (each may be NULL; dim doubles; set
  * to NaN first when c is not NULL).  At an inner knot the right-hand segment
@@ -597,7 +608,7 @@ ts_status ts_curve_params(const ts_curve *c, size_t i, double *alpha, double *be
  * Closed curves wrap any finite t periodically (t = tn gives segment 0 at
  * t0); NaN/Inf is TS_ERR_DOMAIN.  cur may be NULL.  No allocation.
  * TS_OK, TS_ERR_NULL, TS_ERR_DOMAIN. */
-ts_status ts_curve_eval(const ts_curve *c, double t, ts_cursor *cur,
+TS_API ts_status ts_curve_eval(const ts_curve *c, double t, ts_cursor *cur,
                         double *p, double *dp, double *d2p);
 /* m samples per segment (knots included, m >= 2, equally spaced in t) into
  * out (rows of 1+dim: t then the point); *rows receives segments*(m-1)+1.
@@ -606,7 +617,7 @@ ts_status ts_curve_eval(const ts_curve *c, double t, ts_cursor *cur,
  * (out = NULL, out_len = 0) queries the size.  *rows is 0 on other errors.
  * TS_OK, TS_ERR_NULL (c or rows NULL, or out NULL with out_len > 0),
  * TS_ERR_OPTION (m < 2), TS_ERR_LENGTH (out too short), TS_ERR_OVERFLOW. */
-ts_status ts_curve_sample(const ts_curve *c, size_t m, double *out, size_t out_len,
+TS_API ts_status ts_curve_sample(const ts_curve *c, size_t m, double *out, size_t out_len,
                           size_t *rows);
 /* Arc length: per segment, adaptive 10-point Gauss–Legendre in θ with
  * bisection until two halves agree with the whole to tol relative
@@ -616,7 +627,7 @@ ts_status ts_curve_sample(const ts_curve *c, size_t m, double *out, size_t out_l
  * near a point of zero speed inside a segment the error can approach tol.  Bisection stops at depth 48
  * or 20000 pieces per segment.  *len is NaN first; a length beyond the double
  * range is +Inf, never NaN.  TS_OK, TS_ERR_NULL. */
-ts_status ts_curve_length(const ts_curve *c, double tol, double *len);
+TS_API ts_status ts_curve_length(const ts_curve *c, double tol, double *len);
 
 /* Curve certificate against its box: exact minimum per segment and coordinate
  * (ts_interval_report entry i*dim + k, x0/x1/at_* are parameter values t,
@@ -626,14 +637,14 @@ ts_status ts_curve_length(const ts_curve *c, double tol, double *len);
  * a rounding guard of ~64 ε max|B - bound|.
  * TS_OK if every active side is certified or there is no box;
  * TS_ERR_VIOLATED (index = first segment); TS_ERR_NULL. */
-ts_status ts_curve_certify(const ts_curve *c, ts_interval_report *reports, ts_error *err);
+TS_API ts_status ts_curve_certify(const ts_curve *c, ts_interval_report *reports, ts_error *err);
 /* Same against any box (e.g. to test a curve built without one): coordinate k
  * > lo[k] where has_lo[k], < hi[k] where has_hi[k] (k < dim; has_lo/lo and
  * has_hi/hi may both be NULL pairs: that side is absent).  TS_OK,
  * TS_ERR_VIOLATED (index = first segment), TS_ERR_NONFINITE (an active bound),
  * TS_ERR_NULL (c NULL, or has_* given without its bounds).  reports are reset
  * before any check. */
-ts_status ts_curve_certify_box(const ts_curve *c, const int has_lo[3], const double lo[3],
+TS_API ts_status ts_curve_certify_box(const ts_curve *c, const int has_lo[3], const double lo[3],
                                const int has_hi[3], const double hi[3],
                                ts_interval_report *reports, ts_error *err);
 
@@ -667,7 +678,7 @@ typedef struct ts_error_constants {
     double second;
 } ts_error_constants;
 
-ts_status ts_error_constants_get(ts_form form, double a, ts_error_constants *c);
+TS_API ts_status ts_error_constants_get(ts_form form, double a, ts_error_constants *c);
 
 /*
  * A bound on max |f - S| over [x0, xn] for any f with f(x_i) = f_i and
@@ -688,7 +699,7 @@ ts_status ts_error_constants_get(ts_form form, double a, ts_error_constants *c);
  * Returns TS_OK, TS_ERR_NULL (s or bound), TS_ERR_NONFINITE (fprime_max not
  * finite, fsecond_max NaN), TS_ERR_OPTION (a negative bound).
  */
-ts_status ts_error_bound(const ts_spline *s, double fprime_max, double fsecond_max,
+TS_API ts_status ts_error_bound(const ts_spline *s, double fprime_max, double fsecond_max,
                          int exact_slopes, double *bound, double *per_interval);
 
 #ifdef __cplusplus

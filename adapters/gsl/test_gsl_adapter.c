@@ -189,7 +189,7 @@ static void test_shape(void)
     CHECK(gsl_spline_init(cs, D4x, D4f, N_OF(D4x)) == GSL_SUCCESS);
     CHECK(gsl_spline_init(ps, D4x, D4f, N_OF(D4x)) == GSL_SUCCESS);
     CHECK(gsl_spline_init(pc, D4x, D4f, N_OF(D4x)) == GSL_SUCCESS);
-    double cmin = INFINITY, pmin = INFINITY, qmin = INFINITY;
+    double cmin = (double)INFINITY, pmin = (double)INFINITY, qmin = (double)INFINITY;
     for (size_t j = 0; j < m; j++) {
         double q = 6.0 * (double)j / (double)(m - 1);
         double c = gsl_spline_eval(cs, q, NULL), p = gsl_spline_eval(ps, q, acc),
@@ -244,7 +244,7 @@ static void test_errors(void)
     /* NaN / Inf in y: GSL_EINVAL from init, every evaluation GSL_EINVAL + NaN */
     double y[N_OF(D2f)];
     memcpy(y, D2f, sizeof y);
-    y[3] = NAN;
+    y[3] = (double)NAN;
     gsl_spline *sp = gsl_spline_alloc(ts_gsl_interp_positive, N_OF(D2x));
     CHECK(sp != NULL);
     if (!sp)
@@ -263,7 +263,7 @@ static void test_errors(void)
     CHECK(gsl_spline_eval_deriv2_e(sp, 1.0, NULL, &v) == GSL_EINVAL && isnan(v));
     v = 0;
     CHECK(gsl_spline_eval_integ_e(sp, 0.5, 1.0, NULL, &v) == GSL_EINVAL && isnan(v));
-    y[3] = INFINITY;
+    y[3] = (double)INFINITY;
     CHECK(gsl_spline_init(sp, D2x, y, N_OF(D2x)) == GSL_EINVAL);
     /* negative data for the positive scheme: GSL_EDOM, index of the point */
     y[3] = -0.5;
@@ -275,18 +275,18 @@ static void test_errors(void)
     CHECK(gsl_spline_eval_e(sp, 1.0, NULL, &v) == GSL_SUCCESS && isfinite(v));
     /* a NaN query passes GSL's range check and is ours: GSL_EDOM, NaN */
     v = 0;
-    CHECK(gsl_spline_eval_e(sp, NAN, NULL, &v) == GSL_EDOM && isnan(v));
+    CHECK(gsl_spline_eval_e(sp, (double)NAN, NULL, &v) == GSL_EDOM && isnan(v));
     v = 0;
-    CHECK(gsl_spline_eval_deriv_e(sp, NAN, NULL, &v) == GSL_EDOM && isnan(v));
+    CHECK(gsl_spline_eval_deriv_e(sp, (double)NAN, NULL, &v) == GSL_EDOM && isnan(v));
     gsl_interp_accel *acc = gsl_interp_accel_alloc();
     v = 0;
-    CHECK(gsl_spline_eval_deriv2_e(sp, NAN, acc, &v) == GSL_EDOM && isnan(v));
+    CHECK(gsl_spline_eval_deriv2_e(sp, (double)NAN, acc, &v) == GSL_EDOM && isnan(v));
     CHECK(acc && acc->cache < N_OF(D2x) - 1);
     v = 0;
-    CHECK(gsl_spline_eval_integ_e(sp, NAN, 1.0, NULL, &v) == GSL_EDOM && isnan(v));
+    CHECK(gsl_spline_eval_integ_e(sp, (double)NAN, 1.0, NULL, &v) == GSL_EDOM && isnan(v));
     CHECK(handler_calls == calls0); /* the adapter never called the handler */
     /* ... but GSL's non-_e wrapper does (DISCARD_STATUS), as the header says */
-    v = gsl_spline_eval(sp, NAN, NULL);
+    v = gsl_spline_eval(sp, (double)NAN, NULL);
     CHECK(isnan(v) && handler_calls == calls0 + 1);
     gsl_interp_accel_free(acc);
     gsl_spline_free(sp);

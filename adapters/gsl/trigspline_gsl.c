@@ -121,7 +121,7 @@ static int eval_which(const void *vstate, double x, gsl_interp_accel *acc, doubl
     const ts_gsl_state *st = vstate;
     if (!out)
         return GSL_EINVAL;
-    *out = NAN;
+    *out = (double)NAN;
     if (!st || !st->s)
         return GSL_EINVAL;
     double v[3];
@@ -172,7 +172,7 @@ static int eval_integ(const void *vstate, const double xa[], const double ya[], 
     (void)xa, (void)ya, (void)size, (void)acc;
     if (!result)
         return GSL_EINVAL;
-    *result = NAN;
+    *result = (double)NAN;
     if (!st || !st->s)
         return GSL_EINVAL;
     return ts_gsl_status(ts_integral(st->s, a, b, result));
