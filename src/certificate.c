@@ -285,7 +285,7 @@ size_t ts__skip_proven(const ts_spline *sp, size_t i, size_t i1)
  * by operation as gap_ctl and tmin_core do it (the same values), restricted
  * to where it stays exact: finite controls, a normal M with 2^-e normal;
  * branch-free, so that it vectorises. */
-TS_VECTOR_LOOP void ts__mono_certify(const double *restrict f, const double *restrict b1,
+TS_VECTOR_LOOP static void mono_certify(const double *restrict f, const double *restrict b1,
                                         const double *restrict b2, const double *restrict x,
                                         const double *restrict h, size_t i0, size_t i1,
                                         double m, double c, double sg, int positive,
@@ -337,3 +337,12 @@ TS_VECTOR_LOOP void ts__mono_certify(const double *restrict f, const double *res
     }
 }
 
+/* The external entry is a plain function: the ifunc resolver of a
+ * TS_VECTOR_LOOP function with external linkage would be exported. */
+void ts__mono_certify(const double *restrict f, const double *restrict b1,
+                      const double *restrict b2, const double *restrict x,
+                      const double *restrict h, size_t i0, size_t i1, double m, double c,
+                      double sg, int positive, unsigned char *restrict ok)
+{
+    mono_certify(f, b1, b2, x, h, i0, i1, m, c, sg, positive, ok);
+}

@@ -25,6 +25,13 @@
 #include <math.h>
 #include <stddef.h>
 
+/* Every internal function is hidden from the shared library (also the
+ * ifunc symbols of TS_VECTOR_LOOP functions, which -fvisibility=hidden alone
+ * does not cover). */
+#if defined(__GNUC__)
+#pragma GCC visibility push(hidden)
+#endif
+
 /* Construction loops that vectorise.  With GCC on x86-64 Linux
  * they are compiled for x86-64-v4 (AVX-512), AVX2 and the baseline, one
  * picked at load time (ifunc), vectorised also at -O2, and without
@@ -321,5 +328,9 @@ ts_status ts__repair_search(const ts__repair_ops *o, size_t i, double al, double
 ts_status ts__certify_range(ts_spline *sp, const ts_options *opt, size_t i0, size_t i1,
                             ts_error *err);
 void ts__certify_done(ts_spline *sp, const ts_options *opt);
+
+#if defined(__GNUC__)
+#pragma GCC visibility pop
+#endif
 
 #endif
