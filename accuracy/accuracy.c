@@ -1,5 +1,5 @@
 /*
- * Convergence study of the trigonometric spline (issue 7, docs/accuracy.md).
+ * Convergence study of the trigonometric spline (docs/accuracy.md).
  *
  *   accuracy [--quick] [--doc FILE.md] [--svg FILE.svg]
  *
@@ -374,7 +374,7 @@ static void tables(out *o)
     put(o, "\n#### The proven bound (ts_error_bound)\n\n%ld spline fits checked, %ld violations; "
            "largest error/bound ratio %.3f (exact slopes, two-term bound: %.3f).\n\n",
         bound_checks, violations, worst, wexact);
-    put(o, "| a | first (SPEC §8) | line | second | geometric first | geometric second | "
+    put(o, "| a | first (docs/method.md §8) | line | second | geometric first | geometric second | "
            "paper Theorem 1 C(a) |\n|---|---|---|---|---|---|---|\n");
     const double as[5] = {0.5, 1.0, 2.0, 5.0, TS_GEOMETRIC_A_RAISE};
     for (int j = 0; j < 5; j++) {

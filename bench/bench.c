@@ -773,7 +773,7 @@ int main(int argc, char **argv)
 
     double c_pos = NAN, c_cert = NAN, c_st = NAN, c_sti = NAN;
     if (!skip_build) {
-        out("## Construction (positive data; shape = the positive scheme of SPEC §5.1)\n\n");
+        out("## Construction (positive data; shape = the positive scheme of docs/method.md §5.1)\n\n");
         out("| knots | implementation | ns/knot | × GSL steffen alloc+init | × GSL steffen init only | peak RSS MiB |\n");
         out("|---:|---|---:|---:|---:|---:|\n");
         for (int si = skip_small; si < 2; si++) {

@@ -2,9 +2,9 @@
  * trigspline — shape-preserving interpolation with the GC¹ cubic
  * trigonometric spline.
  *
- * The mathematics is in ../shared/design/SPEC.md (section numbers "SPEC §n"
- * below refer to it).  It restates and corrects the paper "Shape-Preserving
- * Positive Trigonometric Spline Curves".
+ * The mathematics is in docs/method.md (the "docs/method.md §n" below are its
+ * sections): the method of the paper "Shape-Preserving Positive
+ * Trigonometric Spline Curves", derived and corrected.
  *
  * Conventions (modelled on GSL interpolation, tinyspline, libsamplerate):
  *  - A fitted spline (ts_spline) and curve (ts_curve) are opaque and
@@ -74,7 +74,7 @@ typedef enum ts_status {
     TS_ERR_NONMONOTONE = 17, /* monotone scheme: data change direction; index = point */
     TS_ERR_INFEASIBLE = 18,  /* no beta >= 0 keeps interval inside the region; index = interval */
     TS_ERR_VIOLATED = 19,    /* ts_certify: the spline leaves the region; index = first interval */
-    TS_ERR_GEOMETRIC = 20,   /* geometric form: alpha+beta below the bound of SPEC §4; index = interval */
+    TS_ERR_GEOMETRIC = 20,   /* geometric form: alpha+beta below the bound of docs/method.md §4; index = interval */
     TS_ERR_DIMENSION = 21,   /* curve dimension not 2 or 3 */
     TS_ERR_INDEX = 22,       /* accessor index out of range */
     TS_ERR_ZERO_SLOPE = 23,  /* a knot where the data touch a boundary (f = 0) got a user slope of the wrong sign; index = point */
@@ -106,7 +106,7 @@ typedef struct ts_error {
 /* Options                                                              */
 /* ------------------------------------------------------------------ */
 
-/* SPEC §3 paper form (default), §3 C¹ option, §4 geometric form. */
+/* docs/method.md §3 paper form (default), §3 C¹ option, §4 geometric form. */
 typedef enum ts_form {
     TS_FORM_PAPER = 0,
     TS_FORM_C1 = 1,
@@ -114,9 +114,9 @@ typedef enum ts_form {
 } ts_form;
 
 /*
- * The geometric form (SPEC §4, derivations in docs/accuracy.md).  Each
+ * The geometric form (docs/method.md §4, derivations in docs/accuracy.md).  Each
  * interval is the parametric curve (X(θ), Y(θ)), θ in [0, π/2], with
- * X = [x_i, x_i + k_i, x_{i+1} - k_i, x_{i+1}], Y = the B0..B3 of SPEC §3 and
+ * X = [x_i, x_i + k_i, x_{i+1} - k_i, x_{i+1}], Y = the B0..B3 of docs/method.md §3 and
  * k_i = 2 h_i / (3π a_i).  The graph has slope exactly d_i at every knot from
  * both sides (C¹ whatever a_i is; a_i acts as a tension: a_i -> ∞ gives the
  * straight chord), and straight lines are reproduced exactly.
@@ -134,7 +134,7 @@ typedef enum ts_form {
  *    4/(3π) - alpha_i, term TS_TERM_GEOMETRIC).  At 4/(3π) the inner control
  *    abscissae meet (k_i = h_i/2) and X' >= 0.28 of its mean: a well
  *    conditioned curve instead of a near-vertical one at a*.  Raising a_i
- *    never breaks a constraint of SPEC §5: every condition there holds on an
+ *    never breaks a constraint of docs/method.md §5: every condition there holds on an
  *    interval 0 <= k_i < k_max, so a smaller k_i keeps it.
  * Evaluation solves X(θ) = x by a safeguarded Newton iteration (bracketed,
  * bisection fallback, from the nearer end of the interval; typically 3–5
@@ -151,7 +151,7 @@ typedef enum ts_form {
 #define TS_GEOMETRIC_A_RAISE 0.42441318157838756 /* 4/(3π) */
 
 /*
- * SPEC §6.  With two points (n = 1) every method gives d0 = d1 = Δ0.
+ * docs/method.md §6.  With two points (n = 1) every method gives d0 = d1 = Δ0.
  * Δ_i is the secant of interval i; at an inner point i the three-point
  * weights are w = h_i/(h_{i-1} + h_i) on Δ_{i-1} and 1 - w on Δ_i (w = 1/2 on
  * a uniform grid).  "Sign-limited ends": the three-point end formula of
@@ -208,7 +208,7 @@ typedef enum ts_slopes {
 #define TS_SLOPES_COUNT_ 8
 
 /*
- * SPEC §5.  Which region the curve must stay in.  The caller gives alpha and
+ * docs/method.md §5.  Which region the curve must stay in.  The caller gives alpha and
  * the margin t; beta_i = t_i + max{0, terms of the §5 rule} (the upper-line
  * terms with the corrected signs of §5.3), recorded in ts_interval_report.term.
  * Then every interval is certified (ts_options.certify) and beta_i changed
@@ -225,11 +225,11 @@ typedef enum ts_slopes {
  *    slopes both ends are one knot, d_0 = d_n = 0).  Estimated slopes are
  *    changed silently (see ts_spline_slopes); user slopes that break this are
  *    refused with TS_ERR_ZERO_SLOPE (index = the knot).
- *  - Monotone: slopes of the wrong sign are set to 0, user slopes too (SPEC
- *    §5.5), and both slopes of a flat interval are 0.  There is no boundary
+ *  - Monotone: slopes of the wrong sign are set to 0, user slopes too
+ *    (docs/method.md §5.5), and both slopes of a flat interval are 0.  There is no boundary
  *    line: the certificate is the control polygon's monotonicity, which
- *    proves S monotone (SPEC (2.1)); the report's gaps are NaN.
- *  - Lines in the paper and C¹ forms: the rule is not a proof (SPEC §5), so
+ *    proves S monotone (docs/method.md (2.1)); the report's gaps are NaN.
+ *  - Lines in the paper and C¹ forms: the rule is not a proof (docs/method.md §5), so
  *    a failing interval gets beta_i raised (bisection on a_i) until its
  *    certificate is positive; if the limit a -> ∞ is not inside either (a
  *    steep line, close data), the largest certificate over all beta_i >= 0
@@ -238,7 +238,7 @@ typedef enum ts_slopes {
  *    TS_ERR_INFEASIBLE, index = interval.  (Any scheme also reports it when
  *    the a needed exceeds 1e307, e.g. a value near the underflow threshold
  *    next to a slope of order one.)  In the C¹ form an interval's
- *    curve also depends on its neighbours' a (d̂ of SPEC §3); there a
+ *    curve also depends on its neighbours' a (d̂ of docs/method.md §3); there a
  *    neighbour whose larger a caps the shared knot's slope may be lowered
  *    once, and the error means no beta_i was found with the neighbours as
  *    they then are.
@@ -249,7 +249,7 @@ typedef enum ts_shape {
     TS_SHAPE_ABOVE = 2,     /* S > lower line; Theorem 3 */
     TS_SHAPE_BELOW = 3,     /* S < upper line; Theorem 4 (corrected signs) */
     TS_SHAPE_BETWEEN = 4,   /* lower < S < upper; Theorem 5 (corrected) */
-    TS_SHAPE_MONOTONE = 5   /* S monotone where the data are; SPEC §5.5 */
+    TS_SHAPE_MONOTONE = 5   /* S monotone where the data are; docs/method.md §5.5 */
 } ts_shape;
 
 /* Queries outside [x0, xn]. */
@@ -267,7 +267,7 @@ typedef struct ts_line {
     double c;
 } ts_line;
 
-/* Default margin t of SPEC §5 (dimensionless, added to beta). */
+/* Default margin t of docs/method.md §5 (dimensionless, added to beta). */
 #define TS_DEFAULT_MARGIN 0.01
 
 /*
@@ -292,10 +292,10 @@ typedef struct ts_options {
     ts_shape shape;            /* default TS_SHAPE_NONE */
     ts_line lower;             /* TS_SHAPE_ABOVE and TS_SHAPE_BETWEEN */
     ts_line upper;             /* TS_SHAPE_BELOW and TS_SHAPE_BETWEEN */
-    double margin;             /* t of SPEC §5, default TS_DEFAULT_MARGIN */
+    double margin;             /* t of docs/method.md §5, default TS_DEFAULT_MARGIN */
     const double *margins;
     size_t n_margins;
-    int certify;               /* default 1: exact certificate per interval (SPEC §5), repair if needed.
+    int certify;               /* default 1: exact certificate per interval (docs/method.md §5), repair if needed.
                                   0 skips the certificate where the scheme is already rigorous
                                   (positive, monotone, geometric form); line schemes in the paper
                                   and C¹ forms are always certified.  With 0 those schemes are
@@ -316,7 +316,7 @@ TS_API void ts_options_init(ts_options *opt);
 /* ------------------------------------------------------------------ */
 
 /*
- * Estimate slopes d[0..n_points-1] by a method of SPEC §6 (not TS_SLOPES_USER).
+ * Estimate slopes d[0..n_points-1] by a method of docs/method.md §6 (not TS_SLOPES_USER).
  * Returns TS_OK, TS_ERR_NULL, TS_ERR_TOO_FEW, TS_ERR_NONFINITE (also when an
  * interval width or a slope overflows; index = point), TS_ERR_UNSORTED,
  * TS_ERR_OPTION, TS_ERR_PERIODIC.  On failure d (if not NULL) is filled with NaN.
@@ -372,15 +372,15 @@ TS_API ts_extrap ts_spline_extrapolation(const ts_spline *s);
 /* a_i = alpha_i + beta_i.  TS_OK or TS_ERR_NULL, TS_ERR_INDEX. */
 TS_API ts_status ts_spline_a(const ts_spline *s, size_t i, double *a);
 
-/* The four control values B0..B3 of interval i (SPEC §3; for the C¹ option the
+/* The four control values B0..B3 of interval i (docs/method.md §3; for the C¹ option the
  * ones built from d̂) and abscissae X0..X3 for plotting the control polygon
- * (X may be NULL).  Geometric form: the X of SPEC §4, x_i + (0, k, h − k, h)
+ * (X may be NULL).  Geometric form: the X of docs/method.md §4, x_i + (0, k, h − k, h)
  * with k = 2h/(3π a_i).  Paper and C¹ forms: x_i + (0, K, h − K, h) with
  * K = 2h/(3π), so that the polygon's first and last legs are tangent to the
  * curve (S'(x_i+) = (B1 − B0)/K).  TS_OK, TS_ERR_NULL, TS_ERR_INDEX. */
 TS_API ts_status ts_spline_control(const ts_spline *s, size_t i, double B[4], double X[4]);
 
-/* Which term of the SPEC §5 rule set beta_i. */
+/* Which term of the docs/method.md §5 rule set beta_i. */
 typedef enum ts_term {
     TS_TERM_USER = 0,        /* beta given by the caller (TS_SHAPE_NONE) */
     TS_TERM_MARGIN = 1,      /* max{...} was 0: beta = t */
@@ -389,8 +389,8 @@ typedef enum ts_term {
     TS_TERM_UPPER_LEFT = 4,  /* -alpha + K d_i / G_i */
     TS_TERM_UPPER_RIGHT = 5, /* -alpha - K d_{i+1} / G_{i+1} */
     TS_TERM_MONOTONE = 6,    /* 2(d_i + d_{i+1})/(3 pi Δ_i) - alpha */
-    TS_TERM_CERTIFY = 7,     /* raised by the certificate repair (SPEC §5) */
-    TS_TERM_GEOMETRIC = 8    /* raised to the geometric-form bound (SPEC §4) */
+    TS_TERM_CERTIFY = 7,     /* raised by the certificate repair (docs/method.md §5) */
+    TS_TERM_GEOMETRIC = 8    /* raised to the geometric-form bound (docs/method.md §4) */
 } ts_term;
 
 /* Per-interval report: what was built and its certificate. */
@@ -408,7 +408,7 @@ typedef struct ts_interval_report {
 } ts_interval_report;
 /*
  * The gaps are exact: the minimum of a degree-3 trigonometric polynomial
- * (minus a linear function) from all its critical points (SPEC §2, §5),
+ * (minus a linear function) from all its critical points (docs/method.md §2, §5),
  * computed in floating point.  "certified" requires gap > guard, a bound on
  * the rounding of that computation (about 1e-14 of the size of the control
  * values and the line over the interval; certify.c derives it).  Exceptions:
@@ -417,7 +417,7 @@ typedef struct ts_interval_report {
  * its gap is then 0, attained at the zero knot.  Monotone intervals are
  * certified by a monotone control polygon and have no gap (NaN).  In the
  * geometric form a line interval (and ts_certify there) is also certified
- * when every control gap Y_l - m X_l - c is positive (convex hull, SPEC §4),
+ * when every control gap Y_l - m X_l - c is positive (convex hull, docs/method.md §4),
  * each evaluated to the rounding of the gap itself (fma and error-free sums),
  * so a knot 1e-14 of |c| from the line is no obstacle; its guard likewise.
  */
@@ -456,7 +456,7 @@ typedef struct ts_cursor {
  * Returns TS_OK, TS_ERR_NULL (s), TS_ERR_DOMAIN (x NaN; x outside the data
  * under TS_EXTRAP_ERROR; x = ±Inf under any policy but TS_EXTRAP_CLAMP).
  * At an inner knot the right-hand interval is used (derivatives of the paper
- * form jump there, SPEC §3).
+ * form jump there, docs/method.md §3).
  */
 TS_API ts_status ts_eval(const ts_spline *s, double x, ts_cursor *cur, double *y);
 TS_API ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur,
@@ -486,14 +486,14 @@ TS_API ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *x
 TS_API ts_status ts_integral(const ts_spline *s, double a, double b, double *out);
 
 /* ------------------------------------------------------------------ */
-/* Parametric curves (SPEC §7)                                          */
+/* Parametric curves (docs/method.md §7)                                          */
 /* ------------------------------------------------------------------ */
 
 typedef struct ts_curve ts_curve;
 
 /*
  * A curve through points P_0..P_m in R^dim (dim 2 or 3).  Every coordinate is
- * a spline of SPEC §3 in the parameter t, with the same alpha_i, beta_i in
+ * a spline of docs/method.md §3 in the parameter t, with the same alpha_i, beta_i in
  * all coordinates of segment i.  At an inner knot the derivative of each
  * coordinate is d_i/a_{i-1} from the left and d_i/a_i from the right
  * (a = alpha + beta), so the tangent directions agree (GC¹) and the curve is
@@ -511,7 +511,7 @@ typedef struct ts_curve ts_curve;
  *    geometric give d = 0 in a coordinate at its local extrema; where every
  *    coordinate has one at the same point the tangent vector is 0 (a corner).
  *  - Each segment lies in the convex hull of its 4 control points (the basis
- *    is >= 0 and sums to 1, SPEC §2).
+ *    is >= 0 and sums to 1, docs/method.md §2).
  *  - As beta grows each segment tends to the chord P_i c² + P_{i+1} s²: the
  *    curve tends to the polygon through the points (see docs/curves.md).
  */
@@ -529,7 +529,7 @@ typedef struct ts_curve_options {
     int closed;              /* default 0; nonzero: closed.  The first point may be
                                 repeated at the end (detected by exact equality of all
                                 coordinates) or left implied; both give the same curve. */
-    ts_slopes slopes;        /* default TS_SLOPES_ARITHMETIC.  Any method of SPEC §6 except
+    ts_slopes slopes;        /* default TS_SLOPES_ARITHMETIC.  Any method of docs/method.md §6 except
                                 TS_SLOPES_USER (TS_ERR_OPTION), applied per coordinate in t.
                                 Closed curves: the method is applied to the periodic
                                 extension of the data, so the seam is like any inner knot
@@ -539,10 +539,10 @@ typedef struct ts_curve_options {
     double alpha;            /* default 1 */
     const double *alphas;    /* per segment (n_alphas == segments) */
     size_t n_alphas;
-    double beta;             /* default 0; with a box: beta_i = max(this, SPEC §5 value) */
+    double beta;             /* default 0; with a box: beta_i = max(this, docs/method.md §5 value) */
     const double *betas;
     size_t n_betas;
-    /* Box constraint (SPEC §5 per coordinate, shared beta per segment):
+    /* Box constraint (docs/method.md §5 per coordinate, shared beta per segment):
      * coordinate k kept > lo[k] when has_lo[k], < hi[k] when has_hi[k]
      * (nonzero = active; entries k >= dim are ignored).  beta_i is the max over
      * the coordinates of the lower/upper-boundary rule with a constant line
@@ -577,7 +577,7 @@ TS_API void ts_curve_options_init(ts_curve_options *opt);
  *                      (index = the second of the pair; for the seam of a closed
  *                      curve, the last point kept), or a knot step lost to rounding
  *   TS_ERR_SIDE        a point on or outside the box (index = point)
- *   TS_ERR_INFEASIBLE  the SPEC §5 value of beta_i overflows, or no finite
+ *   TS_ERR_INFEASIBLE  the docs/method.md §5 value of beta_i overflows, or no finite
  *                      beta_i certifies (slope/gap ratios beyond ~1e300 only;
  *                      index = segment)
  *   TS_ERR_NOMEM.
@@ -595,7 +595,7 @@ TS_API const double *ts_curve_knots(const ts_curve *c);   /* segments+1 paramete
 /* Control points of segment i: ctrl receives 4 rows of dim doubles.  The
  * spline of coordinate k in segment i has values ctrl[l*dim + k]:
  * P_i, P_i + k_i d_i, P_{i+1} - k_i d_{i+1}, P_{i+1} with k_i = 2h_i/(3 pi a_i)
- * (SPEC §3, h_i = t_{i+1} - t_i).  TS_OK, TS_ERR_NULL, TS_ERR_INDEX (ctrl
+ * (docs/method.md §3, h_i = t_{i+1} - t_i).  TS_OK, TS_ERR_NULL, TS_ERR_INDEX (ctrl
  * set to NaN). */
 TS_API ts_status ts_curve_control(const ts_curve *c, size_t i, double *ctrl);
 /* alpha_i, beta_i of segment i (both set to NaN first; with a box beta_i is the
@@ -649,7 +649,7 @@ TS_API ts_status ts_curve_certify_box(const ts_curve *c, const int has_lo[3], co
                                ts_interval_report *reports, ts_error *err);
 
 /* ------------------------------------------------------------------ */
-/* Accuracy (SPEC §8; derivations and measurements in docs/accuracy.md) */
+/* Accuracy (docs/method.md §8; derivations and measurements in docs/accuracy.md) */
 /* ------------------------------------------------------------------ */
 
 /*
@@ -657,7 +657,7 @@ TS_API ts_status ts_curve_certify_box(const ts_curve *c, const int has_lo[3], co
  * interval length h, for the exact slopes d_i = f'(x_i):
  *   |f(x) - S(x)| <= first * h * max|f'|                          (1)
  *   |f(x) - S(x)| <= line * h * max|f'| + second * h² * max|f''|  (2)
- * (max over the interval).  (1) is SPEC §8's bound; its constant is the
+ * (max over the interval).  (1) is docs/method.md §8's bound; its constant is the
  * total variation of the error functional as a measure acting on f', so it
  * is the best bound in terms of max|f'| alone.  (2) separates the error on
  * straight lines: line = max |f - S| / (h |m|) for f = m x + c (0.003446 at
