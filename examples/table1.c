@@ -1,4 +1,4 @@
-/* Prints a table of values of the paper's Table 1 spline (SPEC §10):
+/* Prints a table of values of the paper's Table 1 spline (docs/method.md §10):
  * arithmetic-mean slopes, alpha = 1.4, beta = 1.9 (Figure 4b). */
 #include <stdio.h>
 #include <trigspline.h>
