@@ -1,4 +1,4 @@
-/* make bench: speed and memory of libtrigspline against GSL (issue 6).
+/* make bench: speed and memory of libtrigspline against GSL.
  *
  * Timing.  Each workload (knots, query order) runs in its own child process;
  * inside it every implementation is timed once per round, round after round
@@ -13,12 +13,17 @@
  * the baseline (x, f, slopes, queries, output).
  * No assertion depends on a time.
  *
- * usage: bench [--out FILE] [--cli PATH] [--quick] [--no-eval] [--no-build] [--no-small]
+ * Build decisions (docs/design.md, "Build and packaging"): construction with
+ * each library variant given by --variant NAME=PATH (a bench program linked
+ * against that variant; CMake's run_bench target passes them), interleaved
+ * fresh processes; and ts_eval_batch_mt on 2 threads against ts_eval_batch.
+ *
+ * usage: bench [--out FILE] [--cli PATH] [--variant NAME=PATH]... [--quick]
+ *              [--no-eval] [--no-build] [--no-small] [--no-decisions]
+ *        bench --probe   (one construction probe, for the variant table)
  * (the --no-* options skip parts, for development)
  */
 #define _DEFAULT_SOURCE
-#include "trigspline.h"
-
 #include <errno.h>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_interp.h>
@@ -38,12 +43,11 @@
 #include <time.h>
 #include <unistd.h>
 
-/* internal entry of src/fast.c: the batch with a chosen kernel (0 portable C,
- * 1 AVX2+FMA, 2 AVX-512F); returns 0 if that kernel is not available here */
-int ts__fast_batch_isa(const ts_spline *sp, int deriv, const double *xq, size_t m,
-                       double *yq, ts_cursor *cur, int isa, size_t *done);
+/* ts__fast_batch_isa (src/fast.c): the batch with a chosen kernel (0 portable
+ * C, 1 AVX2+FMA, 2 AVX-512F); returns 0 if that kernel is not available here */
+#include "internal.h"
 
-static int quick, skip_eval, skip_build, skip_small;
+static int quick, skip_eval, skip_build, skip_small, skip_decisions;
 
 static double cpu_now(void)
 {
@@ -75,7 +79,7 @@ static double median(const double *v, int k)
 
 static double minimum(const double *v, int k)
 {
-    double m = INFINITY;
+    double m = (double)INFINITY;
     for (int r = 0; r < k; r++)
         m = v[r] < m ? v[r] : m;
     return m;
@@ -243,14 +247,14 @@ static double run_impl(int impl, const data *D, const impls *I, size_t m)
     case I_TS_D2: {
         int deriv = impl == I_TS_D1 ? 1 : impl == I_TS_D2 ? 2 : 0;
         if (ts_eval_batch(I->s, deriv, D->q, m, D->y, NULL, NULL) != TS_OK)
-            return NAN;
+            return (double)NAN;
         break;
     }
     case I_TS_AVX2:
     case I_TS_PORT: {
         ts_cursor c = TS_CURSOR_INIT;
         if (!ts__fast_batch_isa(I->s, 0, D->q, m, D->y, &c, impl == I_TS_PORT ? 0 : 1, NULL))
-            return NAN;
+            return (double)NAN;
         break;
     }
     case I_TS_EVAL: {
@@ -379,18 +383,18 @@ static double run_build(int impl, const data *D, gsl_interp *keep, size_t inner)
         switch (impl) {
         case C_TS_SLOPES:
             if (ts_slopes_compute(TS_SLOPES_ARITHMETIC, D->x, D->f, np, D->d, NULL) != TS_OK)
-                return NAN;
+                return (double)NAN;
             break;
         case C_FRESH:
             if (fresh_memory(np))
-                return NAN;
+                return (double)NAN;
             break;
         case C_TS_NONE:
         case C_TS_POS:
         case C_TS_POS_CERT: {
             ts_spline *s = build_ts(D, impl != C_TS_NONE, impl == C_TS_POS_CERT);
             if (!s)
-                return NAN;
+                return (double)NAN;
             ts_spline_free(s);
             break;
         }
@@ -398,13 +402,13 @@ static double run_build(int impl, const data *D, gsl_interp *keep, size_t inner)
         case C_GSL_CSPLINE: {
             gsl_interp *g = gsl_interp_alloc(impl == C_GSL_STEFFEN ? gsl_interp_steffen : gsl_interp_cspline, np);
             if (!g || gsl_interp_init(g, D->x, D->f, np))
-                return NAN;
+                return (double)NAN;
             gsl_interp_free(g);
             break;
         }
         case C_GSL_STEFFEN_INIT:
             if (gsl_interp_init(keep, D->x, D->f, np))
-                return NAN;
+                return (double)NAN;
             break;
         }
     }
@@ -453,7 +457,8 @@ typedef struct child {
     double v[OUTN];  /* the child's numbers */
 } child;
 
-enum { K_EVAL, K_EVAL_RSS, K_BUILD, K_BUILD_RSS };
+enum { K_EVAL, K_EVAL_RSS, K_BUILD, K_BUILD_RSS, K_MT };
+static int child_mt(int random_q, int rounds, double *out_v);
 
 static child run_child(int kind, size_t np, size_t m, int random_q, int rounds, int impl)
 {
@@ -471,10 +476,11 @@ static child run_child(int kind, size_t np, size_t m, int random_q, int rounds, 
         close(fd[0]);
         static double v[OUTN + 1];
         for (int k = 0; k <= OUTN; k++)
-            v[k] = NAN;
+            v[k] = (double)NAN;
         int st = kind == K_EVAL        ? child_eval(np, m, random_q, rounds, v + 1)
                  : kind == K_EVAL_RSS  ? child_rss(np, m, random_q, impl)
                  : kind == K_BUILD     ? child_build(np, rounds, v + 1)
+                 : kind == K_MT        ? child_mt(random_q, rounds, v + 1)
                                        : child_build_rss(np, impl);
         v[0] = st;
         ssize_t w = write(fd[1], v, sizeof v);
@@ -545,7 +551,7 @@ typedef struct cli_result {
 
 static cli_result run_cli(const char *cli, size_t rows)
 {
-    cli_result R = {0, -1, NAN, NAN, NAN, NAN};
+    cli_result R = {0, -1, (double)NAN, (double)NAN, (double)NAN, (double)NAN};
     int fd[2];
     if (pipe(fd))
         return R;
@@ -672,6 +678,181 @@ static const char *kernel_name(void)
     return name;
 }
 
+/* ---- build decisions (docs/design.md, "Build and packaging") ----------- */
+
+/* Construction probe (--probe), run by the decision table in a fresh process
+ * of each library variant (bench_novec, bench_nohuge, this program): the
+ * positive scheme at 1e6 knots in the paper and the geometric form, with
+ * and without certificates; one warm-up each, then PROBE_INNER interleaved
+ * constructions (+ free, as in the construction table); prints the median
+ * ns/knot (thread CPU time) of each. */
+#define PROBE_INNER 3
+enum { P_PAPER, P_PAPER_NC, P_GEO, P_GEO_NC, P_COUNT };
+static const char *probe_key[P_COUNT] = {"paper", "paper_nocert", "geometric", "geometric_nocert"};
+
+static ts_spline *build_probe(const data *D, int which)
+{
+    ts_options o;
+    ts_options_init(&o);
+    o.form = which == P_GEO || which == P_GEO_NC ? TS_FORM_GEOMETRIC : TS_FORM_PAPER;
+    o.shape = TS_SHAPE_POSITIVE;
+    o.certify = which == P_PAPER || which == P_GEO;
+    ts_spline *s = NULL;
+    ts_error e;
+    ts_status st = ts_spline_new(D->x, D->f, D->np, &o, &s, &e);
+    if (st != TS_OK)
+        fprintf(stderr, "bench: ts_spline_new: %s (index %zu)\n", ts_strerror(st), e.index);
+    return s;
+}
+
+static int probe(void)
+{
+    data D;
+    make_data(&D, 1000001, 2, 0);
+    double t[P_COUNT][PROBE_INNER];
+    for (int k = -1; k < PROBE_INNER; k++) {
+        for (int w = 0; w < P_COUNT; w++) {
+            double t0 = cpu_now();
+            ts_spline *s = build_probe(&D, w);
+            if (!s)
+                return 1;
+            ts_spline_free(s);
+            if (k >= 0)
+                t[w][k] = (cpu_now() - t0) * 1e9 / (double)D.np;
+        }
+    }
+    for (int w = 0; w < P_COUNT; w++)
+        printf("probe %s %.6f\n", probe_key[w], median(t[w], PROBE_INNER));
+    return 0;
+}
+
+#define MAXV 8
+static const char *var_name[MAXV], *var_path[MAXV];
+static int nvar;
+
+/* Runs `path --probe`; v[P_COUNT] receives its numbers.  0 on success. */
+static int run_probe(const char *path, double *v)
+{
+    char cmd[4200];
+    snprintf(cmd, sizeof cmd, "'%s' --probe", path);
+    fflush(stdout);
+    FILE *p = popen(cmd, "r");
+    if (!p)
+        return -1;
+    int got = 0;
+    char line[256], key[64];
+    double val;
+    while (fgets(line, sizeof line, p)) {
+        if (sscanf(line, "probe %63s %lf", key, &val) != 2)
+            continue;
+        for (int w = 0; w < P_COUNT; w++)
+            if (!strcmp(key, probe_key[w])) {
+                v[w] = val;
+                got |= 1 << w;
+            }
+    }
+    return pclose(p) == 0 && got == (1 << P_COUNT) - 1 ? 0 : -1;
+}
+
+static const char *variant_label(const char *name)
+{
+    if (!strcmp(name, "shipped"))
+        return "as shipped: target_clones (ifunc) loops + huge-page advice";
+    if (!strcmp(name, "novec"))
+        return "novec: TS_VECTOR_LOOP defined empty (no target_clones, no optimize() attributes)";
+    if (!strcmp(name, "base"))
+        return "base: optimize() attributes kept, no target_clones (baseline ISA only, no ifunc)";
+    if (!strcmp(name, "nohuge"))
+        return "nohuge: alloc_block without MADV_HUGEPAGE (plain malloc)";
+    return name;
+}
+
+static void decisions_construction(const char *self, int rounds)
+{
+    const char *names[MAXV + 1], *paths[MAXV + 1];
+    int nv = 0;
+    names[nv] = "shipped";
+    paths[nv++] = self;
+    for (int k = 0; k < nvar; k++) {
+        names[nv] = var_name[k];
+        paths[nv++] = var_path[k];
+    }
+    static double t[MAXV + 1][P_COUNT][MAXR];
+    int ok[MAXV + 1];
+    for (int v = 0; v < nv; v++)
+        ok[v] = 1;
+    for (int r = 0; r < rounds; r++) /* interleaved: every variant once per round */
+        for (int v = 0; v < nv; v++) {
+            double x[P_COUNT] = {0};
+            if (run_probe(paths[v], x)) {
+                ok[v] = 0;
+                continue;
+            }
+            for (int w = 0; w < P_COUNT; w++)
+                t[v][w][r] = x[w];
+        }
+    out("### Construction variants: 1e6 knots, positive scheme, ns/knot (× as shipped)\n\n");
+    out("Median of %d interleaved rounds; each round runs every variant once, as a fresh process "
+        "(`--probe`: %d constructions per case, their median).\n\n", rounds, PROBE_INNER);
+    out("| library | paper, certify = 1 | paper, certify = 0 | geometric, certify = 1 | geometric, certify = 0 |\n");
+    out("|---|---:|---:|---:|---:|\n");
+    double base[P_COUNT];
+    for (int w = 0; w < P_COUNT; w++)
+        base[w] = ok[0] ? median(t[0][w], rounds) : (double)NAN;
+    for (int v = 0; v < nv; v++) {
+        out("| %s |", variant_label(names[v]));
+        for (int w = 0; w < P_COUNT; w++) {
+            char b[16];
+            double m = ok[v] ? median(t[v][w], rounds) : (double)NAN;
+            out(" %.2f (%s) |", m, ratio(b, m, base[w]));
+        }
+        out("\n");
+    }
+    out("\n");
+}
+
+/* Child: ts_eval_batch against ts_eval_batch_mt on 2 threads, wall time,
+ * 1e6 knots, for query counts 1e3..1e7 (inner repetitions up to 1e7 points
+ * per timing); out[(qi * 2 + mt) * MAXR + r] ns/point. */
+#define NQ 5
+static int child_mt(int random_q, int rounds, double *out_v)
+{
+    data D;
+    const size_t M = 10000000;
+    make_data(&D, 1000001, M, random_q);
+    double x0 = D.x[0], xn = D.x[D.np - 1];
+    double *q = xmalloc(M * sizeof(double));
+    ts_spline *s = build_ts(&D, 0, 0);
+    if (!s)
+        return -1;
+    for (int r = 0; r < rounds; r++) {
+        size_t m = 1000;
+        for (int qi = 0; qi < NQ; qi++, m *= 10) {
+            if (random_q)
+                memcpy(q, D.q, m * sizeof(double));
+            else
+                for (size_t j = 0; j < m; j++)
+                    q[j] = x0 + (xn - x0) * ((double)j / (double)(m - 1));
+            size_t reps = M / m;
+            if (ts_eval_batch(s, 0, q, m, D.y, NULL, NULL) != TS_OK) /* untimed warm-up */
+                return -1;
+            for (int mt = 0; mt < 2; mt++) {
+                double w0 = wall_now();
+                for (size_t k = 0; k < reps; k++) {
+                    ts_status st = mt ? ts_eval_batch_mt(s, 0, q, m, D.y, 2, NULL)
+                                      : ts_eval_batch(s, 0, q, m, D.y, NULL, NULL);
+                    if (st != TS_OK)
+                        return -1;
+                }
+                out_v[(qi * 2 + mt) * MAXR + r] = (wall_now() - w0) * 1e9 / (double)(reps * m);
+            }
+        }
+    }
+    ts_spline_free(s);
+    free(q);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     const char *outpath = NULL, *cli = NULL;
@@ -688,9 +869,19 @@ int main(int argc, char **argv)
             skip_build = 1;
         else if (!strcmp(argv[i], "--no-small"))
             skip_small = 1;
-        else {
-            fprintf(stderr, "usage: bench [--out FILE] [--cli PATH] [--quick] [--no-eval] [--no-build] "
-                            "[--no-small]\n");
+        else if (!strcmp(argv[i], "--no-decisions"))
+            skip_decisions = 1;
+        else if (!strcmp(argv[i], "--probe"))
+            return probe();
+        else if (!strcmp(argv[i], "--variant") && i + 1 < argc && strchr(argv[i + 1], '=') &&
+                 nvar < MAXV) {
+            char *nv = argv[++i], *eq = strchr(nv, '=');
+            *eq = 0;
+            var_name[nvar] = nv;
+            var_path[nvar++] = eq + 1;
+        } else {
+            fprintf(stderr, "usage: bench [--out FILE] [--cli PATH] [--variant NAME=PATH]... [--quick] "
+                            "[--no-eval] [--no-build] [--no-small] [--no-decisions] | --probe\n");
             return 1;
         }
     }
@@ -704,14 +895,20 @@ int main(int argc, char **argv)
     cpu_model(cpu, sizeof cpu);
     time_t tt = time(NULL);
     strftime(date, sizeof date, "%Y-%m-%d %H:%M UTC", gmtime(&tt));
-    double load[1] = {NAN};
+    double load[1] = {(double)NAN};
     if (getloadavg(load, 1) < 1)
-        load[0] = NAN;
+        load[0] = (double)NAN;
     out("# trigspline benchmark (`make bench`)\n\n");
     out("- CPU: %s, %ld online cores; load average at the start %.2f\n", cpu, sysconf(_SC_NPROCESSORS_ONLN),
         load[0]);
     out("- date: %s\n", date);
-    out("- compiler: gcc %s; library CMake Release (-O3), src/fast.c -O3 -ffp-contract=fast; bench.c -O2\n",
+    out("- compiler: %s %s; library (trigspline_internal) and bench.c CMake Release (-O3), src/fast.c -O3 "
+        "-ffp-contract=fast\n",
+#ifdef __clang__
+        "clang",
+#else
+        "gcc",
+#endif
         __VERSION__);
     out("- GSL %s (Debian libgsl-dev); batch kernel picked on this CPU: %s\n", GSL_VERSION, kernel_name());
     out("- times: median over interleaved rounds (min in brackets), thread CPU time; RSS: peak resident "
@@ -719,7 +916,7 @@ int main(int argc, char **argv)
 
     const size_t sizes[2] = {1001, 1000001};
     const size_t M = quick ? 1000000 : 10000000;
-    double sorted_ratio = NAN, herm_ratio = NAN, random_ratio = NAN;
+    double sorted_ratio = (double)NAN, herm_ratio = (double)NAN, random_ratio = (double)NAN;
 
     if (!skip_eval) {
         out("## Evaluation, paper form, %zu queries (sorted: evenly spaced; random: uniform)\n\n", M);
@@ -740,7 +937,7 @@ int main(int argc, char **argv)
                     med[im] = median(C.v + im * MAXR, rounds);
                     mn[im] = minimum(C.v + im * MAXR, rounds);
                     child R = run_child(K_EVAL_RSS, np, M, rq, 0, im);
-                    rss[im] = R.status ? NAN : R.rss_mib;
+                    rss[im] = R.status ? (double)NAN : R.rss_mib;
                 }
                 child B = run_child(K_EVAL_RSS, np, M, rq, 0, -1);
                 for (int im = 0; im < I_COUNT; im++) {
@@ -752,7 +949,7 @@ int main(int argc, char **argv)
                         ratio(b, med[im], med[I_GSL_CSPLINE]), ratio(c, med[im], med[I_HERMITE]), rss[im]);
                 }
                 out("| %zu | %s | (inputs only: x, f, slopes, queries, output) | | | | | %.0f |\n", np - 1,
-                    rq ? "random" : "sorted", B.status ? NAN : B.rss_mib);
+                    rq ? "random" : "sorted", B.status ? (double)NAN : B.rss_mib);
                 double mt = median(C.v + I_COUNT * MAXR, rounds);
                 out("| %zu | %s | ts_eval_batch_mt, 2 threads: speed-up over 1 thread (wall time) | %.2f× | | | | |\n",
                     np - 1, rq ? "random" : "sorted", mt);
@@ -771,7 +968,7 @@ int main(int argc, char **argv)
     add_goal("sorted queries, n = 1e6: ts_eval_batch / Hermite loop <= 1.5", herm_ratio, 1.5);
     add_goal("random queries, n = 1e6: ts_eval_batch / GSL steffen <= 0.5", random_ratio, 0.5);
 
-    double c_pos = NAN, c_cert = NAN, c_st = NAN, c_sti = NAN;
+    double c_pos = (double)NAN, c_cert = (double)NAN, c_st = (double)NAN, c_sti = (double)NAN;
     if (!skip_build) {
         out("## Construction (positive data; shape = the positive scheme of docs/method.md §5.1)\n\n");
         out("| knots | implementation | ns/knot | × GSL steffen alloc+init | × GSL steffen init only | peak RSS MiB |\n");
@@ -794,10 +991,10 @@ int main(int argc, char **argv)
                 child R = run_child(K_BUILD_RSS, np, 0, 0, 0, im);
                 out("| %zu | %s | %.2f (%.2f) | %s | %s | %.0f |\n", np - 1, cimpl_name[im], med[im], mn[im],
                     ratio(a, med[im], med[C_GSL_STEFFEN]), ratio(b, med[im], med[C_GSL_STEFFEN_INIT]),
-                    R.status ? NAN : R.rss_mib);
+                    R.status ? (double)NAN : R.rss_mib);
             }
             child B = run_child(K_BUILD_RSS, np, 0, 0, 0, -1);
-            out("| %zu | (inputs only: x, f) | | | | %.0f |\n", np - 1, B.status ? NAN : B.rss_mib);
+            out("| %zu | (inputs only: x, f) | | | | %.0f |\n", np - 1, B.status ? (double)NAN : B.rss_mib);
             if (si == 1) {
                 c_pos = med[C_TS_POS];
                 c_cert = med[C_TS_POS_CERT];
@@ -811,6 +1008,33 @@ int main(int argc, char **argv)
     add_goal("construct positive + certificates, n = 1e6: / GSL steffen alloc+init <= 3.0", c_cert / c_st, 3.0);
     add_goal("(stricter) construct positive, n = 1e6: / GSL steffen init only <= 1.0", c_pos / c_sti, 1.0);
     add_goal("(stricter) construct positive + certificates: / GSL steffen init only <= 3.0", c_cert / c_sti, 3.0);
+
+    if (!skip_decisions) {
+        out("## Build decisions (docs/design.md, \"Build and packaging\")\n\n");
+        char self[4096];
+        ssize_t len = readlink("/proc/self/exe", self, sizeof self - 1);
+        if (len > 0) {
+            self[len] = 0;
+            decisions_construction(self, quick ? 3 : 7);
+        }
+        int rounds = quick ? 3 : 5;
+        out("### ts_eval_batch_mt (2 threads) against ts_eval_batch, 1e6 knots, paper form: wall ns/point\n\n");
+        out("Median of %d interleaved rounds; each timing repeats the call up to 1e7 points.\n\n", rounds);
+        out("| queries | order | ts_eval_batch | ts_eval_batch_mt, 2 threads | speed-up |\n|---:|---|---:|---:|---:|\n");
+        for (int rq = 0; rq < 2; rq++) {
+            child C = run_child(K_MT, 0, 0, rq, rounds, 0);
+            if (C.status) {
+                out("| | %s | (failed, see stderr) | | |\n", rq ? "random" : "sorted");
+                continue;
+            }
+            size_t m = 1000;
+            for (int qi = 0; qi < NQ; qi++, m *= 10) {
+                double st = median(C.v + (qi * 2) * MAXR, rounds), mt = median(C.v + (qi * 2 + 1) * MAXR, rounds);
+                out("| %zu | %s | %.2f | %.2f | %.2f× |\n", m, rq ? "random" : "sorted", st, mt, st / mt);
+            }
+        }
+        out("\n");
+    }
 
     out("## CLI streaming: generated rows `i,1.ddd` piped through `trigspline fit --shape positive --samples 2` "
         "to /dev/null\n\n");
@@ -836,7 +1060,7 @@ int main(int argc, char **argv)
             out("\nthe CLI failed (exit status %d) on `%s fit --shape positive --samples 2`\n", C.exit_code, cli);
     }
 
-    out("\n## Goals of issue 6\n\n| goal | measured | holds |\n|---|---:|---|\n");
+    out("\n## Performance goals\n\n| goal | measured | holds |\n|---|---:|---|\n");
     for (int g = 0; g < ngoals; g++)
         out("| %s | %.2f | %s |\n", goals[g].what, goals[g].value,
             isnan(goals[g].value) ? "not measured" : goals[g].value <= goals[g].limit ? "yes" : "**no**");

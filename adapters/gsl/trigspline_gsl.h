@@ -14,21 +14,22 @@
  *
  * Link with libtrigspline_gsl.a, libtrigspline and -lgsl -lgslcblas -lm.
  *
- * The types (all min_size 2, arithmetic-mean slopes of docs/method.md §6, paper form of
- * docs/method.md §3 unless "_c1"):
+ * The types (all min_size 2, arithmetic-mean slopes of docs/method.md §6,
+ * paper form of docs/method.md §3 unless "_c1"):
  *
  *   ts_gsl_interp_trig         "trigspline"              no shape scheme, alpha = 1,
  *                                                        beta = 0: a_i = 1 on every
  *                                                        interval, so the curve is C¹
  *                                                        and S'(x_i) = d_i
- *   ts_gsl_interp_positive     "trigspline-positive"     docs/method.md §5.1: S >= 0 (S > 0
- *                                                        where all data > 0), certified
- *   ts_gsl_interp_monotone     "trigspline-monotone"     docs/method.md §5.5: monotone where the
- *                                                        data are
+ *   ts_gsl_interp_positive     "trigspline-positive"     docs/method.md §5.1: S >= 0
+ *                                                        (S > 0 where all data > 0),
+ *                                                        certified
+ *   ts_gsl_interp_monotone     "trigspline-monotone"     docs/method.md §5.5: monotone
+ *                                                        where the data are
  *   ts_gsl_interp_positive_c1  "trigspline-positive-c1"  the same schemes in the C¹
- *   ts_gsl_interp_monotone_c1  "trigspline-monotone-c1"  form of docs/method.md §3 (no derivative
- *                                                        jump at the knots; same
- *                                                        guarantees)
+ *   ts_gsl_interp_monotone_c1  "trigspline-monotone-c1"  form of docs/method.md §3 (no
+ *                                                        derivative jump at the knots;
+ *                                                        same guarantees)
  *
  * Default alpha: 1 for every type, margin t = TS_DEFAULT_MARGIN (0.01).
  * With alpha = 1 the shape schemes leave the curve as it is wherever it is
