@@ -61,7 +61,7 @@ test: build build-asan build-clang
 valgrind: build
 	$(call need,valgrind:valgrind)
 	for t in build/tests/test_*; do \
-	  case $$t in *test_property|*test_fast|*test_review_fuzz|*test_package) continue;; esac; \
+	  case $$t in *test_property|*test_fast|*test_random_inputs|*test_random_tool_inputs|*test_package) continue;; esac; \
 	  valgrind -q --leak-check=full --errors-for-leak-kinds=all --error-exitcode=9 $$t >/dev/null || exit 1; \
 	done; echo "valgrind: clean"
 

@@ -145,6 +145,9 @@ static void *mt_run(void *arg)
 }
 
 #define TS_MT_MAX 64
+/* Below this many queries per thread a second thread costs more than it
+ * saves (docs/design.md: 0.16x at 1e3 random queries, 1.24-1.49x at 1e4). */
+#define TS_MT_MIN_PER_THREAD 8192
 
 ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size_t m,
                            double *yq, unsigned nthreads, ts_error *err)
@@ -155,7 +158,7 @@ ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size
     }
     if (nthreads > TS_MT_MAX)
         nthreads = TS_MT_MAX;
-    if (!s || nthreads <= 1 || m < 2 * (size_t)nthreads)
+    if (!s || nthreads <= 1 || m / TS_MT_MIN_PER_THREAD < (size_t)nthreads)
         return batch_eval(s, deriv, xq, m, yq, NULL, err);
     if (!xq || !yq || deriv < 0 || deriv > 2)
         return batch_eval(s, deriv, xq, m, yq, NULL, err);

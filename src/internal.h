@@ -25,9 +25,9 @@
 #include <math.h>
 #include <stddef.h>
 
-/* Every internal function is hidden from the shared library (also the
- * ifunc symbols of TS_VECTOR_LOOP functions, which -fvisibility=hidden alone
- * does not cover). */
+/* Every internal function is hidden from the shared library.  (A
+ * TS_VECTOR_LOOP function must still be static: the ifunc resolver of one
+ * with external linkage is exported whatever its visibility.) */
 #if defined(__GNUC__)
 #pragma GCC visibility push(hidden)
 #endif
@@ -39,10 +39,12 @@
  * the same values (bitwise: no contraction into FMA, fp-contract=off; no
  * reassociation); no floating-point exception flag is part of the library's
  * behaviour.  Loops meant to vectorise take their arrays as restrict
- * parameters (GCC 12 does not vectorise through pointers in a struct). */
+ * parameters (GCC 12 does not vectorise through pointers in a struct).
+ * Not under ThreadSanitizer: the ifunc resolvers run before TSan is
+ * initialised and crash (docs/design.md). */
 #if defined(TS_VECTOR_LOOP) /* given on the command line (tests of one version) */
 #elif defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
-    !defined(TS_FAST_PORTABLE)
+    !defined(TS_FAST_PORTABLE) && !defined(__SANITIZE_THREAD__)
 #define TS_VECTOR_LOOP                                                                   \
     __attribute__((target_clones("arch=x86-64-v4", "avx2", "default"),                 \
                    optimize("no-trapping-math", "fp-contract=off", "tree-vectorize",     \
