@@ -52,15 +52,53 @@ static double ctl_gap(double Y, double X, double m, double c, double sg, double 
     return sg * v;
 }
 
-/* docs/method.md §4, convex hull (S = Σ A_l Y_l, X = Σ A_l X_l, A_l >= 0, Σ A_l = 1):
- * every control gap above its rounding proves the whole segment inside. */
-int ts__hull_inside(const double B[4], const double X[4], const ts_line *ln, int sign)
+/* docs/method.md §4 in the coordinates evaluation uses: x = x_i + h X̂(θ),
+ * X̂ = Σ A_l X̂_l with X[] = X̂_l (ts__controls_of: [0, κ, 1 − κ, 1]), so
+ * Y − L(x) = Σ A_l G_l with G_l = ±(Y_l − L(x_i) − m h X̂_l), L(x_i) taken
+ * exactly (ctl_gap); err[l] bounds the rounding of G_l.  Independent of
+ * |x_i|: the stored abscissae x_i + k, rounded to the grid of x, are not
+ * used.  How far the evaluated curve (geometric.c) may be from this exact
+ * one:
+ *  - its position: u = (x − x_end)/h from the nearer end, the solve
+ *    X̂(φ) = u, both to a few ε relative, so x is off by at most
+ *    8ε h min(u, 1 − u); the line then by |m| times that.  Since
+ *    A1 + A2 >= 1.6 min(u, 1 − u) for κ <= 0.62 (a >= a*; checked on a fine
+ *    grid), subtracting S = 12ε |m| h from G_1, G_2 covers it and keeps the
+ *    knots' gaps as they are (evaluation is exact there); and |m| times the
+ *    rounding of h = fl(x_{i+1} − x_i) from all G_l;
+ *  - Y's own rounding (a few ulps of |Y|) is not covered: as before, knot
+ *    gaps of a few ulps are certified (*slack is 0; see docs/design.md). */
+static void geo_local_gaps(const ts_spline *sp, size_t i, const double B[4], const double X[4],
+                           const ts_line *ln, int sign, double G[4], double err[4],
+                           double *slack)
 {
-    int ok = 1;
+    double sg = sign > 0 ? 1.0 : -1.0, m = ln->m, h = sp->h[i], mh = m * h;
     for (int l = 0; l < 4; l++) {
-        double el, Cl = ctl_gap(B[l], X[l], ln->m, ln->c, sign > 0 ? 1.0 : -1.0, &el);
-        ok = ok && Cl > el;
+        double e0, g0 = ctl_gap(B[l], sp->x[i], m, ln->c, sg, &e0);
+        double t = mh * X[l];
+        G[l] = g0 - sg * t;
+        err[l] = e0 + 4.0 * TM_EPS * fabs(mh) + TM_EPS * fabs(G[l]);
     }
+    /* h = fl(x_{i+1} − x_i) may differ from the true width (rarely: the
+     * difference is exact when the knots are within a factor 2): measured
+     * from the right end the curve sits that much aside */
+    double x0 = sp->x[i], x1 = sp->x[i + 1], z = h - x1;
+    double eh = fabs((x1 - (h - z)) + (-x0 - z)); /* TwoSum error of x1 − x0 */
+    for (int l = 0; l < 4; l++)
+        G[l] -= fabs(m) * eh * (1.0 + 2.0 * TM_EPS);
+    G[1] -= 12.0 * TM_EPS * fabs(mh);
+    G[2] -= 12.0 * TM_EPS * fabs(mh);
+    *slack = 0.0;
+}
+
+int ts__hull_inside(const ts_spline *sp, size_t i, const double B[4], const double X[4],
+                    const ts_line *ln, int sign)
+{
+    double G[4], err[4], slack;
+    geo_local_gaps(sp, i, B, X, ln, sign, G, err, &slack);
+    int ok = 1;
+    for (int l = 0; l < 4; l++)
+        ok = ok && G[l] > err[l] + slack;
     return ok;
 }
 
@@ -107,25 +145,24 @@ double ts__gap_ctl(const ts_spline *sp, size_t i, const double B[4], const doubl
             *at = isnan(g) ? (double)NAN : t >= 1.0 ? sp->x[i + 1] : xi + h * (theta / TS_HALF_PI);
         return g;
     }
-    /* docs/method.md §4: Y − L(X) = Σ A_l (Y_l − m X_l − c), exact */
-    double C[4], t, eb, cerr = -1.0, sg = sign > 0 ? 1.0 : -1.0;
-    for (int l = 0; l < 4; l++) {
-        double el;
-        C[l] = ctl_gap(B[l], X[l], ln->m, ln->c, sg, &el);
-        cerr = el > cerr ? el : cerr;
-    }
-    double g = ts__trig_min_core(C[0], C[1], C[2], C[3], 0.0, NULL, &t, &eb);
+    double G[4], err[4], slack, t, eb, cerr = 0.0;
+    geo_local_gaps(sp, i, B, X, ln, sign, G, err, &slack);
+    for (int l = 0; l < 4; l++)
+        cerr = err[l] > cerr ? err[l] : cerr;
+    double g = ts__trig_min_core(G[0], G[1], G[2], G[3], 0.0, NULL, &t, &eb);
     if (at) {
         if (isnan(g)) {
             *at = (double)NAN;
         } else {
             double A[4];
             ts__basis_t(t, A);
-            *at = A[0] * X[0] + A[1] * X[1] + A[2] * X[2] + A[3] * X[3];
+            double u = A[0] * X[0] + A[1] * X[1] + A[2] * X[2] + A[3] * X[3];
+            double xa = xi + h * u;
+            *at = xa < xi ? xi : xa > sp->x[i + 1] ? sp->x[i + 1] : xa;
         }
     }
     if (guard)
-        *guard = eb + cerr;
+        *guard = eb + cerr + slack;
     return g;
 }
 
@@ -134,10 +171,12 @@ void ts__controls_of(const ts_spline *sp, size_t i, double B[4], double X[4], in
 {
     ts__B(sp, i, B);
     *geo = sp->form == TS_FORM_GEOMETRIC;
-    X[0] = sp->x[i];
-    X[1] = *geo ? sp->xc1[i] : (double)NAN;
-    X[2] = *geo ? sp->xc2[i] : (double)NAN;
-    X[3] = sp->x[i + 1];
+    /* the local abscissae X̂_l of geometric.c: κ = 2/(3π a_i) as it computes it */
+    double kappa = *geo ? 2.0 / (3.0 * TS_PI * (sp->alpha[i] + sp->beta[i])) : (double)NAN;
+    X[0] = 0.0;
+    X[1] = kappa;
+    X[2] = 1.0 - kappa;
+    X[3] = 1.0;
 }
 
 double ts__interval_gap(const ts_spline *sp, size_t i, const ts_line *line, int sign, double *at)
@@ -201,7 +240,7 @@ int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double
         const ts_line *ln = side == 0 ? &sp->lower : &sp->upper;
         int sign = side == 0 ? 1 : -1;
         /* geometric form: the control gaps are a proof by themselves */
-        int hull = X && ts__hull_inside(B, X, ln, sign);
+        int hull = X && ts__hull_inside(sp, i, B, X, ln, sign);
         if (exact) {
             double *g = side == 0 ? &cr->glo : &cr->gup, *a = side == 0 ? &cr->alo : &cr->aup;
             if (X) {

@@ -248,7 +248,8 @@ ts_status ts__shape_range(ts_spline *sp, const ts_options *opt, int dir, size_t 
 typedef struct ts__cert {
     double glo, alo, gup, aup;
 } ts__cert;
-/* B of interval i; X (docs/method.md §4) only in the geometric form (*geo = 1). */
+/* B of interval i; in the geometric form (*geo = 1) X the local abscissae
+ * X̂_l = [0, κ, 1 − κ, 1] of x = x_i + h X̂ (docs/method.md §4). */
 void ts__controls_of(const ts_spline *sp, size_t i, double B[4], double X[4], int *geo);
 /* Gap of a segment with control values B on [xi, xi + h] (paper and C¹
  * forms, and curve coordinates) to the line ln: sign +1 min of S − L, −1 min
@@ -265,8 +266,10 @@ double ts__gap_ctl(const ts_spline *sp, size_t i, const double B[4], const doubl
                    const ts_line *ln, int sign, double *at, double *guard);
 /* The same for interval i as stored. */
 double ts__interval_gap(const ts_spline *sp, size_t i, const ts_line *line, int sign, double *at);
-/* Geometric form: every control gap above its rounding (a proof by itself). */
-int ts__hull_inside(const double B[4], const double X[4], const ts_line *ln, int sign);
+/* Geometric form: every local control gap above its rounding and the
+ * evaluator's (a proof by itself); X the local abscissae of ts__controls_of. */
+int ts__hull_inside(const ts_spline *sp, size_t i, const double B[4], const double X[4],
+                    const ts_line *ln, int sign);
 /* Is interval i with controls B (X) inside the region of sp's scheme?  exact:
  * with the trig-min certificates (into *cr, places if want_at); else only
  * the control-value proof. */

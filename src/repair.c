@@ -143,8 +143,8 @@ static int spline_limit_inside(void *ctx, size_t i)
     ts__cert cr;
     B[0] = B[1] = sp->f[i];
     B[2] = B[3] = sp->f[i + 1];
-    X[0] = X[1] = sp->x[i];
-    X[2] = X[3] = sp->x[i + 1];
+    X[0] = X[1] = 0.0; /* local abscissae (ts__controls_of): κ -> 0 */
+    X[2] = X[3] = 1.0;
     return ts__check_ctl(sp, i, B, sp->form == TS_FORM_GEOMETRIC ? X : NULL, z->exact, &cr, 0);
 }
 
