@@ -205,6 +205,10 @@ static ts_status boundaries(ts_spline *sp, const ts_options *opt, ts_error *err)
 #define TS_BETA_PASS(sp) (sp)->x, (sp)->f, (sp)->d, (sp)->h, (sp)->alpha, (sp)->beta, (sp)->term
 
 #define TS_K0 (2.0 / (3.0 * TS_PI))
+/* The divisor where the term is taken, else 1: a term is computed before
+ * it is selected (so the loops vectorise), and 0/0 or x/0 there would raise
+ * FE_INVALID or FE_DIVBYZERO on valid data (zero gaps, flat intervals). */
+#define TS_SAFE(cond, v) ((cond) ? (v) : 1.0)
 #define TS_CONSIDER(cond, val, code)                                           \
     do {                                                                       \
         double v_ = (val);                                                     \
@@ -223,8 +227,8 @@ TS_VECTOR_LOOP static void consider_lower(TS_BETA_ARRAYS, size_t i0, size_t i1, 
         double g0 = f[i] - (m * x[i] + c), g1 = f[i + 1] - (m * x[i + 1] + c);
         double b = best[i];
         int t = term[i];
-        TS_CONSIDER(g0 > 0.0, -al - K * (d[i] - ml) / g0, TS_TERM_LOWER_LEFT);
-        TS_CONSIDER(g1 > 0.0, -al + K * (d[i + 1] - ml) / g1, TS_TERM_LOWER_RIGHT);
+        TS_CONSIDER(g0 > 0.0, -al - K * (d[i] - ml) / TS_SAFE(g0 > 0.0, g0), TS_TERM_LOWER_LEFT);
+        TS_CONSIDER(g1 > 0.0, -al + K * (d[i + 1] - ml) / TS_SAFE(g1 > 0.0, g1), TS_TERM_LOWER_RIGHT);
         best[i] = b;
         term[i] = (unsigned char)t;
     }
@@ -239,8 +243,8 @@ TS_VECTOR_LOOP static void consider_upper(TS_BETA_ARRAYS, size_t i0, size_t i1, 
         double G0 = (m * x[i] + c) - f[i], G1 = (m * x[i + 1] + c) - f[i + 1];
         double b = best[i];
         int t = term[i];
-        TS_CONSIDER(G0 > 0.0, -al + K * (d[i] - mu) / G0, TS_TERM_UPPER_LEFT);
-        TS_CONSIDER(G1 > 0.0, -al - K * (d[i + 1] - mu) / G1, TS_TERM_UPPER_RIGHT);
+        TS_CONSIDER(G0 > 0.0, -al + K * (d[i] - mu) / TS_SAFE(G0 > 0.0, G0), TS_TERM_UPPER_LEFT);
+        TS_CONSIDER(G1 > 0.0, -al - K * (d[i + 1] - mu) / TS_SAFE(G1 > 0.0, G1), TS_TERM_UPPER_RIGHT);
         best[i] = b;
         term[i] = (unsigned char)t;
     }
@@ -254,12 +258,13 @@ TS_VECTOR_LOOP static void consider_monotone(TS_BETA_ARRAYS, size_t i0, size_t i
         double al = alpha[i], K = TS_K0 * h[i], df = f[i + 1] - f[i];
         double b = best[i];
         int t = term[i];
-        TS_CONSIDER(df != 0.0, K * (d[i] + d[i + 1]) / df - al, TS_TERM_MONOTONE);
+        TS_CONSIDER(df != 0.0, K * (d[i] + d[i + 1]) / TS_SAFE(df != 0.0, df) - al, TS_TERM_MONOTONE);
         best[i] = b;
         term[i] = (unsigned char)t;
     }
 }
 #undef TS_CONSIDER
+#undef TS_SAFE
 
 /* beta_i = t_i + best_i, capped (a_i finite for alpha near DBL_MAX) */
 TS_VECTOR_LOOP static void add_margins(const double *restrict alpha, double *restrict beta,
