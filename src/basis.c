@@ -71,6 +71,14 @@ void ts__seg_sc(const double B[4], double s, double c, int want, double out[3])
         ts__basis_d2(s, c, A);
         out[2] = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
     }
+    /* a flat segment is constant (Σ A_l need not round to 1, Σ A_l'' to 0) */
+    if (B[0] == B[1] && B[1] == B[2] && B[2] == B[3]) {
+        out[0] = B[0];
+        if (want > 0)
+            out[1] = 0.0;
+        if (want > 1)
+            out[2] = 0.0;
+    }
 }
 
 size_t ts__search(const double *xs, size_t n, double x, ts_cursor *cur)

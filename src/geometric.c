@@ -96,6 +96,9 @@ static void geo_side_eval_u(const geo_side *g, double phi, double sign, int want
     double s = sin(phi), c = cos(phi), A[4];
     ts__basis(s, c, A);
     out[0] = g->F0 * c * c + g->F1 * s * s + g->k * (g->D0 * A[1] - g->D1 * A[2]);
+    /* a flat interval is constant (c² + s² need not round to 1) */
+    if (g->F0 == g->F1 && g->k * g->D0 == 0.0 && g->k * g->D1 == 0.0)
+        out[0] = g->F0;
     if (want < 1)
         return;
     double D1[4], dF = g->F1 - g->F0, sc2 = 2.0 * s * c;

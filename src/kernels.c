@@ -227,8 +227,10 @@ TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, dou
         for (size_t j = 0; j < nb; j++) {
             TS_FAST_NEAR(st, j);
             /* docs/method.md §2, the expressions of basis.c */
-            y[j] = (ms * ms * ms) * B0 + (s * ms * (3.0 - s)) * B1 + (c * mc * (3.0 - c)) * B2 +
-                   (mc * mc * mc) * B3;
+            double v = (ms * ms * ms) * B0 + (s * ms * (3.0 - s)) * B1 +
+                       (c * mc * (3.0 - c)) * B2 + (mc * mc * mc) * B3;
+            /* a flat interval is constant (Σ A_l need not round to 1) */
+            y[j] = (B0 == B1 && B1 == B2 && B2 == B3) ? B0 : v;
         }
     } else if (deriv == 1) {
         for (size_t j = 0; j < nb; j++) {
