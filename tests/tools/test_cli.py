@@ -843,6 +843,60 @@ def test_streaming_memory():
     check("stream VmHWM < 16 MiB", hwm_kib < 16 * 1024, "%d KiB" % hwm_kib)
 
 
+def test_signals():
+    """SIGINT, SIGTERM, SIGHUP while a streamed fit writes -o FILE: the
+    temporary file is removed, FILE is not created, and the process still
+    dies of the signal (exit status -SIG).  (--svg and the other outputs use
+    the same temporary files, tsu_out.)"""
+    import signal
+    import time
+    for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+        for extra in ([],):
+            d = tempfile.mkdtemp(dir=TMP)
+            out = os.path.join(d, "out.csv")
+            args = [CLI, "fit", "-", "--shape", "positive", "-o", out]
+            if extra:
+                args += ["--svg", os.path.join(d, "out.svg")]
+            p = subprocess.Popen(args, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
+                                 stderr=subprocess.PIPE)
+            data = b"x,y\n" + b"".join(b"%d,%d\n" % (i, i % 7 + 1) for i in range(400000))
+
+            def feed_rows():
+                # streamed: more than the reader's buffer, stdin left open; with
+                # --svg (read whole): closed, the outputs are then being written
+                try:
+                    p.stdin.write(data)
+                    p.stdin.flush()
+                    if extra:
+                        p.stdin.close()
+                except (BrokenPipeError, ValueError):
+                    pass
+            writer = threading.Thread(target=feed_rows)
+            writer.start()
+            # the output is opened once the data are being read: wait for its temp file
+            t0 = time.time()
+            while time.time() - t0 < 10 and not [f for f in os.listdir(d) if ".tmp." in f]:
+                time.sleep(0.01)
+            had = [f for f in os.listdir(d) if ".tmp." in f]
+            p.send_signal(sig)
+            try:
+                p.wait(timeout=20)
+            except subprocess.TimeoutExpired:
+                p.kill()
+                p.wait()
+            writer.join()
+            try:
+                p.stdin.close()
+            except (BrokenPipeError, ValueError):
+                pass
+            p.stdout.close()
+            p.stderr.close()
+            name = "signal %s %s" % (sig.name, "svg" if extra else "csv")
+            check(name + ": a temporary file existed", bool(had), str(os.listdir(d)))
+            check(name + ": killed by the signal", p.returncode == -sig, str(p.returncode))
+            check(name + ": nothing left", os.listdir(d) == [], str(os.listdir(d)))
+
+
 def main():
     if not os.access(CLI, os.X_OK):
         print("test_cli: %s not built" % CLI)
@@ -852,7 +906,7 @@ def main():
         for t in (test_help_version, test_usage_errors, test_table1_positive, test_roundtrip,
                   test_inputs, test_malformed, test_exit_statuses, test_options, test_svg,
                   test_curve, test_streaming_identical, test_streaming_errors,
-                  test_streaming_memory):
+                  test_streaming_memory, test_signals):
             try:
                 t()
             except Exception as e:  # a crash in one group is one failure, keep going

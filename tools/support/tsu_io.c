@@ -12,6 +12,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <sys/types.h>
 #include <unistd.h>
@@ -1605,8 +1606,59 @@ static void msg_set(char *buf, size_t len, const char *fmt, ...)
     va_end(ap);
 }
 
+/* Temporary files open now, removed by the handler of SIGINT, SIGTERM and
+ * SIGHUP (unlink is async-signal-safe), which then re-raises the signal with
+ * its default action, so the exit status is still the signal's. */
+#define OUT_SLOTS 16
+static char *volatile out_temps[OUT_SLOTS];
+static volatile sig_atomic_t out_handlers_set;
+static const int out_signals[3] = {SIGINT, SIGTERM, SIGHUP};
+
+static void out_on_signal(int sig)
+{
+    for (int k = 0; k < OUT_SLOTS; k++) {
+        char *t = out_temps[k];
+        if (t)
+            (void)unlink(t);
+    }
+    (void)signal(sig, SIG_DFL);
+    (void)raise(sig);
+}
+
+static void out_register(char *tmp)
+{
+    if (!out_handlers_set) {
+        out_handlers_set = 1;
+        for (int k = 0; k < 3; k++) {
+            struct sigaction old, sa;
+            /* a signal the caller ignores stays ignored */
+            if (sigaction(out_signals[k], NULL, &old) == 0 && old.sa_handler == SIG_IGN)
+                continue;
+            memset(&sa, 0, sizeof sa);
+            sa.sa_handler = out_on_signal;
+            sigemptyset(&sa.sa_mask);
+            for (int j = 0; j < 3; j++)
+                sigaddset(&sa.sa_mask, out_signals[j]);
+            (void)sigaction(out_signals[k], &sa, NULL);
+        }
+    }
+    for (int k = 0; k < OUT_SLOTS; k++)
+        if (!out_temps[k]) {
+            out_temps[k] = tmp;
+            return;
+        }
+}
+
+static void out_unregister(const char *tmp)
+{
+    for (int k = 0; tmp && k < OUT_SLOTS; k++)
+        if (out_temps[k] == tmp)
+            out_temps[k] = NULL;
+}
+
 static void out_free(tsu_out *o)
 {
+    out_unregister(o->tmp);
     free(o->path);
     free(o->tmp);
     free(o);
@@ -1652,6 +1704,8 @@ int tsu_out_open(tsu_out **out, const char *path, unsigned flags, char *errbuf, 
     memcpy(o->tmp, path, n);
     memcpy(o->tmp + n, ".tmp.XXXXXX", 12);
     fd = mkstemp(o->tmp);
+    if (fd >= 0)
+        out_register(o->tmp);
     if (fd < 0) {
         e = errno;
         msg_set(errbuf, errlen, "cannot create temporary file for \"%s\": %s", path, strerror(e));

@@ -335,7 +335,10 @@ void tsu_table_free(tsu_table *t);  /* NULL ok; leaves *t zeroed */
  * tsu_out_abort: closes and removes the temporary file, frees o (NULL ok).
  * For "-" it only flushes (what was written cannot be taken back).
  *
- * A process killed between open and commit leaves the temporary file.
+ * The temporary files open at a time (up to 16) are removed if the process
+ * gets SIGINT, SIGTERM or SIGHUP (the first tsu_out_open installs handlers
+ * for those not ignored; a handler removes the files and re-raises the
+ * signal with its default action).  SIGKILL or a crash leave them.
  */
 typedef struct tsu_out tsu_out;
 
