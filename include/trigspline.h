@@ -482,6 +482,9 @@ TS_API ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *x
  * (geometric form: Gauss–Legendre exact to rounding inside an interval, see
  * TS_FORM_GEOMETRIC).
  * a and b must lie in [x0, xn]: TS_ERR_DOMAIN otherwise (or NaN).  TS_ERR_NULL.
+ * The result is finite wherever the integral is (also when partial sums
+ * overflow: the pieces are then summed again scaled by a power of 2) and
+ * ±Inf where it overflows; never NaN for a and b in range.
  */
 TS_API ts_status ts_integral(const ts_spline *s, double a, double b, double *out);
 

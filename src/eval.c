@@ -221,6 +221,20 @@ ts_status ts_integral(const ts_spline *s, double a, double b, double *out)
     else
         r = (s->cum[ib] - s->cum[ia + 1]) + (s->cum[ia + 1] - s->cum[ia] - ts__interval_integral(s, ia, a)) +
             ts__interval_integral(s, ib, b);
+    if (!isfinite(r)) {
+        /* the cumulative sums (or two antiderivatives) overflowed: sum the
+         * pieces again scaled by 2^-k, k enough for every partial sum of
+         * ib - ia + 1 pieces of at most DBL_MAX·2^-2 to stay finite; then the
+         * result is finite where the integral is, ±Inf where it overflows */
+        int k = 2;
+        for (size_t np = ib - ia + 1; np > 1; np = (np + 1) / 2)
+            k++;
+        double sum = 0.0;
+        for (size_t i = ia; i <= ib; i++)
+            sum += ts__interval_integral_scaled(s, i, i == ia ? a : s->x[i],
+                                                i == ib ? b : s->x[i + 1], k);
+        r = ldexp(sum, k);
+    }
     *out = sign * r;
     return TS_OK;
 }

@@ -231,6 +231,10 @@ double ts__geo_integral(const ts_spline *sp, size_t i, double x);
 void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double o[3]);
 /* ∫_{x_i}^{x} S on interval i, x in the interval. */
 double ts__interval_integral(const ts_spline *sp, size_t i, double x);
+/* 2^-k ∫_a^b S on interval i (a, b in the interval), the factors ordered so
+ * that it stays finite where the integral times 2^-k is (ts_integral's
+ * path when sums overflow). */
+double ts__interval_integral_scaled(const ts_spline *sp, size_t i, double a, double b, int k);
 
 /* ---- shape.c (docs/method.md §5) ----------------------------------------------- */
 /* ts__shape_begin checks the options and sets the boundaries (*dir: the

@@ -26,15 +26,39 @@ void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double
     o[2] *= w * w;
 }
 
+/* dx/dθ = 2h/π, also where 2h overflows (h near DBL_MAX). */
+static double width_factor(double h)
+{
+    double w = 2.0 * h / TS_PI;
+    return w <= DBL_MAX ? w : h * (2.0 / TS_PI);
+}
+
+/* A quarter of ∫_0^θ S dθ' on interval i at x (the antiderivative in θ; a
+ * quarter, exactly, so that Σ I_l B_l <= (π/2) max|B| cannot overflow). */
+static double theta_antiderivative(const ts_spline *sp, size_t i, double x)
+{
+    double h = sp->h[i], B[4], I[4];
+    double u = x - sp->x[i], theta = TS_HALF_PI * u / h;
+    if (!(theta <= TS_PI)) /* (π/2) u overflowed (u near DBL_MAX) */
+        theta = TS_HALF_PI * (u / h);
+    ts__B(sp, i, B);
+    ts__basis_int(theta, sin(theta), cos(theta), I);
+    return I[0] * (0.25 * B[0]) + I[1] * (0.25 * B[1]) + I[2] * (0.25 * B[2]) +
+           I[3] * (0.25 * B[3]);
+}
+
 /* ∫_{x_i}^{x} S on interval i, x in the interval. */
 double ts__interval_integral(const ts_spline *sp, size_t i, double x)
 {
     if (sp->form == TS_FORM_GEOMETRIC)
         return ts__geo_integral(sp, i, x);
-    double h = sp->h[i], B[4], I[4];
-    double theta = TS_HALF_PI * (x - sp->x[i]) / h;
-    ts__B(sp, i, B);
-    ts__basis_int(theta, sin(theta), cos(theta), I);
-    return (2.0 * h / TS_PI) * (I[0] * B[0] + I[1] * B[1] + I[2] * B[2] + I[3] * B[3]);
+    return 4.0 * (width_factor(sp->h[i]) * theta_antiderivative(sp, i, x));
 }
 
+double ts__interval_integral_scaled(const ts_spline *sp, size_t i, double a, double b, int k)
+{
+    if (sp->form == TS_FORM_GEOMETRIC)
+        return ldexp(ts__geo_integral(sp, i, b), -k) - ldexp(ts__geo_integral(sp, i, a), -k);
+    double w = ldexp(width_factor(sp->h[i]), 2 - k);
+    return w * (theta_antiderivative(sp, i, b) - theta_antiderivative(sp, i, a));
+}

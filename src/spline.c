@@ -138,8 +138,11 @@ TS_VECTOR_LOOP static void wholes(const double *restrict h, const double *restri
 {
     /* ∫ A_l over [0, π/2]: 5π/4 - 11/3 (l = 0, 3), 11/3 - π (l = 1, 2) */
     const double e = 1.25 * TS_PI - 11.0 / 3.0, m = 11.0 / 3.0 - TS_PI;
-    for (size_t i = i0; i < i1; i++)
-        cum[i + 1] = (2.0 * h[i] / TS_PI) * (e * (f[i] + f[i + 1]) + m * (b1[i] + b2[i]));
+    for (size_t i = i0; i < i1; i++) {
+        double w = 2.0 * h[i] / TS_PI; /* dx/dθ, also where 2h overflows */
+        w = w <= DBL_MAX ? w : h[i] * (2.0 / TS_PI);
+        cum[i + 1] = w * (e * (f[i] + f[i + 1]) + m * (b1[i] + b2[i]));
+    }
 }
 
 /* Cumulative integrals cum[i0+1..i1] for ts_integral from the running sum

@@ -1,0 +1,71 @@
+/* ts_integral near the top of the double range: finite where the integral
+ * is, ±Inf where it overflows, never NaN.  Expected values in closed form:
+ * S ≡ c on an interval with equal control values, so ∫ = c (b − a); the
+ * tolerance 8ε of the result's scale covers the few roundings of the
+ * closed form (docs/method.md §2: ∫ A_l over [0, π/2]). */
+#include "th.h"
+#include "trigspline.h"
+
+#include <float.h>
+#include <math.h>
+
+static ts_spline *flat_slopes(const double *x, const double *f, size_t np, double *zeros)
+{
+    ts_options o;
+    ts_options_init(&o);
+    o.slopes = TS_SLOPES_USER;
+    o.user_slopes = zeros;
+    o.n_user_slopes = np;
+    ts_spline *s = NULL;
+    ts_error e;
+    CHECKF(ts_spline_new(x, f, np, &o, &s, &e) == TS_OK, "%s at %zu", ts_strerror(e.status),
+           e.index);
+    return s;
+}
+
+int main(void)
+{
+    double zeros[8] = {0};
+    double r;
+    TH_CASE("wide interval");
+    {
+        /* 2h overflows, h does not: true value h = 1.1e308 */
+        const double x[2] = {-1e308, 1e307}, f[2] = {1, 1};
+        ts_spline *s = flat_slopes(x, f, 2, zeros);
+        if (s) {
+            CHECK(ts_integral(s, x[0], x[1], &r) == TS_OK);
+            CHECK_CLOSE(r, 1.1e308, 8 * DBL_EPSILON * 1.1e308);
+            CHECK(ts_integral(s, -5e307, 0, &r) == TS_OK);
+            CHECK_CLOSE(r, 5e307, 8 * DBL_EPSILON * 5e307);
+            ts_spline_free(s);
+        }
+        const double x2[2] = {-0.6e308, 0.6e308}, f2[2] = {0, 0};
+        s = flat_slopes(x2, f2, 2, zeros);
+        if (s) {
+            CHECK(ts_integral(s, x2[0], x2[1], &r) == TS_OK && r == 0.0);
+            ts_spline_free(s);
+        }
+    }
+    TH_CASE("cumulative overflow");
+    {
+        /* pieces ±1.7e308: the running sum overflows, the total is 0 */
+        const double x[6] = {0, 1, 2, 3, 4, 5};
+        const double F = 1.7e308, f[6] = {F, F, F, -F, -F, -F};
+        ts_spline *s = flat_slopes(x, f, 6, zeros);
+        if (s) {
+            CHECK(ts_integral(s, 0, 5, &r) == TS_OK);
+            CHECKF(fabs(r) <= 16 * DBL_EPSILON * F, "r = %g", r);
+            CHECK(ts_integral(s, 0.5, 4.5, &r) == TS_OK);
+            CHECKF(fabs(r) <= 16 * DBL_EPSILON * F, "r = %g", r);
+            /* 2F overflows: +Inf, and the reverse -Inf */
+            CHECK(ts_integral(s, 0, 2, &r) == TS_OK && r == (double)INFINITY);
+            CHECK(ts_integral(s, 2, 0, &r) == TS_OK && r == -(double)INFINITY);
+            CHECK(ts_integral(s, 3, 5, &r) == TS_OK && r == -(double)INFINITY);
+            /* finite pieces stay as they were */
+            CHECK(ts_integral(s, 0, 1, &r) == TS_OK);
+            CHECK_CLOSE(r, F, 8 * DBL_EPSILON * F);
+            ts_spline_free(s);
+        }
+    }
+    return th_report("test_integral_range");
+}
