@@ -4,7 +4,7 @@
 Usage: python3 tests/tools/test_cli.py BUILD_DIR     (standard library only)
 
 Drives BUILD_DIR/trigspline as a user would and checks the interface of
-docs/dev/CLI_CONTRACT.md: every option, file and stdin input, every exit
+docs/cli.md: every option, file and stdin input, every exit
 status, messages naming file:line:col, JSON and CSV contents, shortest
 round-trip numbers, SVG well-formedness, "nothing written on failure", the
 curve sub-command, and the streaming mode (byte-identical to a whole-data
@@ -843,6 +843,25 @@ def test_streaming_memory():
     check("stream VmHWM < 16 MiB", hwm_kib < 16 * 1024, "%d KiB" % hwm_kib)
 
 
+def test_same_output():
+    """-o X --svg X (also two names of one existing file) is a usage error:
+    exit 1, nothing written, the file named."""
+    out = tmp("same.csv")
+    rc, so, err = run(["fit", T1, "-o", out, "--svg", out])
+    check("-o X --svg X refused", rc == 1 and "same file" in err and out in err, "%d %s" % (rc, err))
+    check("-o X --svg X wrote nothing", not os.path.exists(out))
+    open(out, "w").write("keep\n")
+    link = tmp("same_link.csv")
+    if os.path.lexists(link):
+        os.remove(link)
+    os.symlink(out, link)
+    rc, so, err = run(["fit", T1, "-o", out, "--svg", link])
+    check("-o X --svg link-to-X refused", rc == 1 and "same file" in err, "%d %s" % (rc, err))
+    check("-o X --svg link-to-X left X", open(out).read() == "keep\n")
+    os.remove(link)
+    os.remove(out)
+
+
 def test_signals():
     """SIGINT, SIGTERM, SIGHUP while a streamed fit writes -o FILE: the
     temporary file is removed, FILE is not created, and the process still
@@ -906,7 +925,7 @@ def main():
         for t in (test_help_version, test_usage_errors, test_table1_positive, test_roundtrip,
                   test_inputs, test_malformed, test_exit_statuses, test_options, test_svg,
                   test_curve, test_streaming_identical, test_streaming_errors,
-                  test_streaming_memory, test_signals):
+                  test_streaming_memory, test_signals, test_same_output):
             try:
                 t()
             except Exception as e:  # a crash in one group is one failure, keep going

@@ -1,6 +1,9 @@
 /* Command-line parsing: argv after the command into cli_opts
- * (docs/dev/CLI_CONTRACT.md); the help texts are in help.c. */
+ * (docs/cli.md); the help texts are in help.c. */
+#define _POSIX_C_SOURCE 200809L
 #include "cli.h"
+
+#include <sys/stat.h>
 
 #include <math.h>
 #include <stdint.h>
@@ -369,6 +372,16 @@ static int apply(cli_cmd cmd, const optdef *d, const char *name, const char *v, 
     return CLI_OK;
 }
 
+/* The same path, or two names of one existing file. */
+static int same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    if (strcmp(a, b) == 0)
+        return 1;
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev &&
+           sa.st_ino == sb.st_ino;
+}
+
 int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o)
 {
     unsigned bit = cmd == CLI_FIT ? F : cmd == CLI_CERTIFY ? C : V;
@@ -442,6 +455,9 @@ int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o)
     }
     if (!o->data)
         o->data = "-";
+    if (o->out && o->svg && strcmp(o->out, "-") != 0 && same_file(o->out, o->svg))
+        return cli_usage(cmd, "-o and --svg name the same file (\"%s\"): the plot would replace "
+                              "the samples", o->svg);
     if (o->c1) {
         if (o->form_set && o->form != TS_FORM_C1)
             return cli_usage(cmd, "--c1 contradicts --form %s", cli_form_name(o->form));

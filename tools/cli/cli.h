@@ -30,7 +30,7 @@
 #include <stddef.h>
 #include <stdio.h>
 
-/* Exit statuses (docs/dev/CLI_CONTRACT.md, docs/trigspline.1). */
+/* Exit statuses (docs/cli.md, docs/trigspline.1). */
 enum {
     CLI_OK = 0,
     CLI_USAGE = 1,      /* bad option or option value */

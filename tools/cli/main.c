@@ -1,4 +1,4 @@
-/* trigspline — command-line tool (interface: docs/dev/CLI_CONTRACT.md,
+/* trigspline — command-line tool (interface: docs/cli.md,
  * manual: docs/trigspline.1). */
 #include "cli.h"
 
