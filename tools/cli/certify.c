@@ -59,16 +59,9 @@ int cli_certify(cli_opts *o)
     const ts_line *lower = hl ? &lo : NULL, *upper = hu ? &up : NULL;
 
     cli_data d;
-    if ((rc = cli_read_data(o, &d)) != CLI_OK)
-        return rc;
     ts_spline *s = NULL;
-    ts_error e;
-    ts_status st = ts_spline_new(d.col[0], d.col[1], d.n, &opt, &s, &e);
-    if (st != TS_OK) {
-        rc = cli_report_build_error(o, &opt, d.name, d.col[0], d.col[1], d.line, d.n, &e, st, 0);
-        cli_data_free(&d);
+    if ((rc = cli_read_and_fit(o, &opt, &d, &s)) != CLI_OK)
         return rc;
-    }
     size_t n = ts_spline_intervals(s);
     ts_interval_report *reps = calloc(n, sizeof *reps);
     cli_json j;
@@ -81,7 +74,8 @@ int cli_certify(cli_opts *o)
         rc = cli_nomem();
         goto done;
     }
-    st = ts_certify(s, lower, upper, reps, &e);
+    ts_error e;
+    ts_status st = ts_certify(s, lower, upper, reps, &e);
     if (st != TS_OK && st != TS_ERR_VIOLATED) {
         cli_error("certify: %s", ts_strerror(st));
         rc = st == TS_ERR_NONFINITE ? CLI_USAGE : CLI_DATA;

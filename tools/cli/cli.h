@@ -230,6 +230,10 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
                            const double *x, const double *f,
                            const unsigned long long *lines, size_t n, const ts_error *e,
                            ts_status st, size_t index_offset);
+/* Read DATA (cli_read_data) and fit the spline with opt; on failure the
+ * error is reported (cli_report_build_error), d freed, *s NULL.  Returns the
+ * exit status. */
+int cli_read_and_fit(const cli_opts *o, const ts_options *opt, cli_data *d, ts_spline **s);
 /* Map an I/O reader failure to an exit status (message printed). */
 int cli_report_io(const tsu_io_error *e);
 

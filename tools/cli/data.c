@@ -265,3 +265,19 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
         cli_error("%s: %s", name, ts_strerror(st));
     return CLI_DATA;
 }
+
+int cli_read_and_fit(const cli_opts *o, const ts_options *opt, cli_data *d, ts_spline **s)
+{
+    int rc;
+    *s = NULL;
+    if ((rc = cli_read_data(o, d)) != CLI_OK)
+        return rc;
+    ts_error e;
+    ts_status st = ts_spline_new(d->col[0], d->col[1], d->n, opt, s, &e);
+    if (st != TS_OK) {
+        rc = cli_report_build_error(o, opt, d->name, d->col[0], d->col[1], d->line, d->n, &e, st, 0);
+        cli_data_free(d);
+        return rc;
+    }
+    return CLI_OK;
+}

@@ -85,16 +85,9 @@ int cli_fit(cli_opts *o)
         return cli_fit_stream(o, &opt);
 
     cli_data d;
-    if ((rc = cli_read_data(o, &d)) != CLI_OK)
-        return rc;
     ts_spline *s = NULL;
-    ts_error e;
-    ts_status st = ts_spline_new(d.col[0], d.col[1], d.n, &opt, &s, &e);
-    if (st != TS_OK) {
-        rc = cli_report_build_error(o, &opt, d.name, d.col[0], d.col[1], d.line, d.n, &e, st, 0);
-        cli_data_free(&d);
+    if ((rc = cli_read_and_fit(o, &opt, &d, &s)) != CLI_OK)
         return rc;
-    }
     ts_shape shape = ts_spline_shape(s);
     const ts_line *lower = NULL, *upper = NULL;
     ts_line zero = {0.0, 0.0};
