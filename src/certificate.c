@@ -67,10 +67,9 @@ static double ctl_gap(double Y, double X, double m, double c, double sg, double 
  *    knots' gaps as they are (evaluation is exact there); and |m| times the
  *    rounding of h = fl(x_{i+1} − x_i) from all G_l;
  *  - Y's own rounding (a few ulps of |Y|) is not covered: as before, knot
- *    gaps of a few ulps are certified (*slack is 0; see docs/design.md). */
+ *    gaps of a few ulps are certified. */
 static void geo_local_gaps(const ts_spline *sp, size_t i, const double B[4], const double X[4],
-                           const ts_line *ln, int sign, double G[4], double err[4],
-                           double *slack)
+                           const ts_line *ln, int sign, double G[4], double err[4])
 {
     double sg = sign > 0 ? 1.0 : -1.0, m = ln->m, h = sp->h[i], mh = m * h;
     for (int l = 0; l < 4; l++) {
@@ -88,17 +87,16 @@ static void geo_local_gaps(const ts_spline *sp, size_t i, const double B[4], con
         G[l] -= fabs(m) * eh * (1.0 + 2.0 * TM_EPS);
     G[1] -= 12.0 * TM_EPS * fabs(mh);
     G[2] -= 12.0 * TM_EPS * fabs(mh);
-    *slack = 0.0;
 }
 
 int ts__hull_inside(const ts_spline *sp, size_t i, const double B[4], const double X[4],
                     const ts_line *ln, int sign)
 {
-    double G[4], err[4], slack;
-    geo_local_gaps(sp, i, B, X, ln, sign, G, err, &slack);
+    double G[4], err[4];
+    geo_local_gaps(sp, i, B, X, ln, sign, G, err);
     int ok = 1;
     for (int l = 0; l < 4; l++)
-        ok = ok && G[l] > err[l] + slack;
+        ok = ok && G[l] > err[l];
     return ok;
 }
 
@@ -115,7 +113,8 @@ double ts__gap_segment(const double B[4], double xi, double h, const ts_line *ln
     int pos = 1;
     for (int l = 0; l < 4; l++) {
         C[l] = sg * (B[l] - L0);
-        pos = pos && C[l] > 0.0; /* the sign of a rounded difference is exact */
+        pos = pos && C[l] > 0.0; /* m = 0: L0 = c exactly, and the sign of a
+                                  * rounded difference is exact */
     }
     double kappa = m != 0.0 ? sg * m * (2.0 * h / TS_PI) : 0.0;
     double g = ts__trig_min_core(C[0], C[1], C[2], C[3], kappa, &th, &t, &eb);
@@ -145,8 +144,8 @@ double ts__gap_ctl(const ts_spline *sp, size_t i, const double B[4], const doubl
             *at = isnan(g) ? (double)NAN : t >= 1.0 ? sp->x[i + 1] : xi + h * (theta / TS_HALF_PI);
         return g;
     }
-    double G[4], err[4], slack, t, eb, cerr = 0.0;
-    geo_local_gaps(sp, i, B, X, ln, sign, G, err, &slack);
+    double G[4], err[4], t, eb, cerr = 0.0;
+    geo_local_gaps(sp, i, B, X, ln, sign, G, err);
     for (int l = 0; l < 4; l++)
         cerr = err[l] > cerr ? err[l] : cerr;
     double g = ts__trig_min_core(G[0], G[1], G[2], G[3], 0.0, NULL, &t, &eb);
@@ -162,7 +161,7 @@ double ts__gap_ctl(const ts_spline *sp, size_t i, const double B[4], const doubl
         }
     }
     if (guard)
-        *guard = eb + cerr + slack;
+        *guard = eb + cerr;
     return g;
 }
 
@@ -243,15 +242,7 @@ int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double
         int hull = X && ts__hull_inside(sp, i, B, X, ln, sign);
         if (exact) {
             double *g = side == 0 ? &cr->glo : &cr->gup, *a = side == 0 ? &cr->alo : &cr->aup;
-            if (X) {
-                *g = ts__gap_ctl(sp, i, B, X, ln, sign, want_at ? a : NULL, &guard);
-            } else {
-                double theta, t, h = sp->h[i];
-                *g = ts__gap_segment(B, sp->x[i], h, ln, sign, &theta, &t, &guard, NULL);
-                if (want_at)
-                    *a = isnan(*g) ? (double)NAN
-                         : t >= 1.0 ? sp->x[i + 1] : sp->x[i] + h * (theta / TS_HALF_PI);
-            }
+            *g = ts__gap_ctl(sp, i, B, X, ln, sign, want_at ? a : NULL, &guard);
             ok = ok && (hull || *g > guard);
         } else {
             ok = ok && hull; /* only the geometric form gets here */

@@ -317,7 +317,7 @@ static size_t batch(const ts_spline *sp, int deriv, const double *xq, size_t m, 
         size_t j = 0;
         for (; j < m && x0 <= xq[j] && xq[j] <= xn; j++) {
             double o[3];
-            ts__interval_eval(sp, ts__search(sp->x, sp->n, xq[j], cur), xq[j], 2, o);
+            ts__interval_eval(sp, ts__locate(sp, xq[j], cur), xq[j], deriv, o);
             yq[j] = o[deriv];
         }
         return j;
