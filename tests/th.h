@@ -120,4 +120,16 @@ static inline int th_report(const char *name)
     printf("%s: %ld passed, %ld failed\n", name, th_pass_, th_fail_);
     return th_fail_ ? 1 : 0;
 }
+/* TH_ASAN: 1 in an AddressSanitizer build (gcc or clang), else 0, so the
+ * slow random tests can run fewer cases there. */
+#if defined(__SANITIZE_ADDRESS__)
+#define TH_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define TH_ASAN 1
+#endif
+#endif
+#ifndef TH_ASAN
+#define TH_ASAN 0
+#endif
 #endif

@@ -53,12 +53,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#if defined(__SANITIZE_ADDRESS__)
+#if TH_ASAN
 #define TS_PROP_ASAN 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define TS_PROP_ASAN 1
-#endif
 #endif
 #ifdef TS_PROP_ASAN
 #define TS_PROP_SETS 1000 /* sanitizer build: 10x slower, fewer sets */

@@ -26,12 +26,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#if defined(__SANITIZE_ADDRESS__)
+#if TH_ASAN
 #define TS_FUZZ_SLOW 1
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define TS_FUZZ_SLOW 1
-#endif
 #endif
 #ifdef TS_FUZZ_SLOW
 #define N_TABLE 6000

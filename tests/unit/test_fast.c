@@ -58,12 +58,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-#if defined(__SANITIZE_ADDRESS__)
+#if TH_ASAN
 #define TF_SCALE 10
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define TF_SCALE 10
-#endif
 #endif
 #ifndef TF_SCALE
 #define TF_SCALE 1
