@@ -207,3 +207,18 @@ def test_form_default_follows_library():
     x, f = smooth_data()
     from trigspline import _core
     assert Spline(x, f).form == ["paper", "c1", "geometric"][_core.options_defaults()[0]]
+
+
+def test_cubic_hermite_and_akima_migration():
+    """CubicHermiteSpline(x, y, dydx) -> Spline(x, f, slopes_values=dydx): with α + β = 1
+    the slopes at the knots are dydx (docs/method.md §3: S'(x_i+) = d_i/a_i); Akima's
+    slopes are SciPy's Akima1DInterpolator's (docs/method.md §6)."""
+    interp = pytest.importorskip("scipy.interpolate")
+    x, f = smooth_data()
+    d = np.cos(x)
+    s = Spline(x, f, slopes_values=d, form="paper")
+    assert np.allclose(s(x[:-1], 1), d[:-1], rtol=1e-12, atol=1e-13)
+    assert np.array_equal(s(x), f)
+    ak = interp.Akima1DInterpolator(x, f)
+    assert np.allclose(trigspline.estimate_slopes(x, f, "akima"), ak(x, 1), rtol=1e-12,
+                       atol=1e-13)
