@@ -9,6 +9,7 @@ line in EXT_MODULES.  The version is the CMake project version.
 """
 import os
 import re
+from concurrent.futures import ThreadPoolExecutor
 
 import numpy
 from setuptools import Extension, setup
@@ -67,13 +68,16 @@ class BuildExt(build_ext):
     def library_objects(self):
         if self._lib_objects is None:
             out = os.path.join(self.build_temp, "libtrigspline")
-            objs = []
-            for src in LIB_SOURCES:
+
+            def compile_one(src):
                 flags = COMPILE_ARGS + LIB_SOURCE_FLAGS.get(os.path.basename(src), [])
-                objs += self.compiler.compile([src], output_dir=out, macros=DEFINE_MACROS,
-                                              include_dirs=INCLUDE_DIRS, extra_postargs=flags,
-                                              debug=self.debug)
-            self._lib_objects = objs
+                return self.compiler.compile([src], output_dir=out, macros=DEFINE_MACROS,
+                                             include_dirs=INCLUDE_DIRS, extra_postargs=flags,
+                                             debug=self.debug)
+            # one compiler process per core (the sources are independent)
+            with ThreadPoolExecutor(max_workers=os.cpu_count() or 1) as pool:
+                self._lib_objects = [o for objs in pool.map(compile_one, LIB_SOURCES)
+                                     for o in objs]
         return self._lib_objects
 
     def build_extension(self, ext):

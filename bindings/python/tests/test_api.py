@@ -151,6 +151,9 @@ def test_axis_3d_against_one_by_one():
             assert np.array_equal(y[i, :, :, k], one(xq))
             assert np.array_equal(s.beta[i, :, k], one.beta)
     assert s.certified
+    assert s.c.shape == (4, 11, 3, 4)                        # PPoly.c's layout
+    assert np.array_equal(s.c[:, :, 1, 2], Spline(x, F[1, :, 2], shape="positive",
+                                                  form="paper").c)
     # axis=-1 and axis=0
     G = np.moveaxis(F, 1, -1)
     assert np.array_equal(Spline(x, G, axis=-1, shape="positive", form="paper")(xq),

@@ -360,8 +360,8 @@ class Spline:
         """Control values B0..B3 per interval, shape (4, n, ...) like ``PPoly.c``
         (the coefficients of the basis A0..A3 of docs/method.md §2, not of a
         power series)."""
-        b = self._stacked(lambda h: h.control()[0])  # (..., n, 4) with n at axis
-        return np.moveaxis(b, -1, 0) if b.ndim == 2 else np.moveaxis(b, len(self._pre) + 1, 0)
+        b = np.stack([h.control()[0] for h in self._h])  # (series, n, 4)
+        return b.transpose(2, 1, 0).reshape((4, self._n) + self._pre + self._trail)
 
     @property
     def control_x(self) -> np.ndarray:
