@@ -2,9 +2,11 @@
 #   make build      gcc build in build/ (-Werror)
 #   make build-clang  clang build in build-clang/ (-Werror)
 #   make build-asan ASan+UBSan build in build-asan/
-#   make test       all three builds, then tests/run_all.sh (package test included)
+#   make test       all three builds, then tests/run_all.sh (package test and the
+#                   Python package's pytest included)
 #   make demo       the paper's numerical section as one page (out/paper)
 #   make bench      benchmark against GSL and the build decisions -> bench/RESULTS.md
+#   make bench-python  the Python package against SciPy (also run by make bench)
 #   make accuracy   convergence study -> docs/accuracy.md, docs/accuracy.svg
 #   make valgrind   memcheck of the test programs
 # Each target installs the Debian packages it needs (apt-get) when missing.

@@ -112,3 +112,14 @@ def test_curve_copies():
     want = c(t)
     for k in (copy.copy(c), copy.deepcopy(c), pickle.loads(pickle.dumps(c))):
         assert np.array_equal(k(t), want)
+
+
+def test_raw_handles_cannot_be_duplicated():
+    # the C handle itself is never copied or made from Python: only the
+    # package's objects are, by rebuilding (no shared pointer to free twice)
+    from trigspline import _core
+    h = _core.spline_new([0.0, 1.0, 2.0], [1.0, 2.0, 1.0])
+    for fn in (lambda: copy.copy(h), lambda: copy.deepcopy(h), lambda: pickle.dumps(h),
+               lambda: _core.SplineHandle(), lambda: _core.CurveHandle()):
+        with pytest.raises(TypeError):
+            fn()

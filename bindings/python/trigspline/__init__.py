@@ -11,8 +11,14 @@ spline, certified.  The interface of SciPy's interpolators; the C library
 
 See the package README (bindings/python/README.md in the repository).
 """
-from ._version import __version__
-from . import _core
+try:
+    from ._version import __version__
+    from . import _core
+except ImportError as _e:  # the source tree, not an installed package
+    raise ImportError(
+        "trigspline is imported from %s, which has no built extension module (%s); install "
+        "the package (pip install bindings/python) and import it from elsewhere"
+        % (__path__[0], _e)) from None
 
 if _core.library_version() != __version__ or _core.HEADER_VERSION != __version__:
     raise ImportError(
