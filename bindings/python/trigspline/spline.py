@@ -440,6 +440,8 @@ class Spline:
         try:
             if len(self._h) == 1 and not self._pre and not self._trail:
                 return self._h[0].eval(x, nu, mode, out, threads)
+            if out is not None:
+                raise ValueError("out= is for one series; this spline has %d" % len(self._h))
             xq = np.asarray(x, dtype=np.float64)
             res = np.empty((len(self._h), xq.size))
             xf = np.ascontiguousarray(xq.reshape(-1))
