@@ -2,15 +2,18 @@
 #   make build      gcc build in build/ (-Werror)
 #   make build-clang  clang build in build-clang/ (-Werror)
 #   make build-asan ASan+UBSan build in build-asan/
-#   make test       all three builds, then tests/run_all.sh (package test included)
+#   make test       all three builds, then tests/run_all.sh (package test and the
+#                   Python package's pytest included)
 #   make demo       the paper's numerical section as one page (out/paper)
 #   make bench      benchmark against GSL and the build decisions -> bench/RESULTS.md
+#   make bench-python  the Python package against SciPy (also run by make bench)
 #   make accuracy   convergence study -> docs/accuracy.md, docs/accuracy.svg
 #   make valgrind   memcheck of the test programs
 # Each target installs the Debian packages it needs (apt-get) when missing.
 # The compiler of a build directory is fixed when it is first configured
 # (CC=gcc or CC=clang below); `make clean` starts over.
-.PHONY: all build build-asan build-clang test demo bench accuracy valgrind clean
+.PHONY: all build build-asan build-clang test demo bench accuracy valgrind clean \
+  python-deps bench-python
 
 JOBS ?= 2
 CMAKE ?= cmake
@@ -53,7 +56,7 @@ build-asan:
 	  -DTS_SANITIZE=ON >/dev/null
 	$(CMAKE) --build build-asan -j $(JOBS)
 
-test: build build-asan build-clang
+test: build build-asan build-clang python-deps
 	$(call need,$(TEST_TOOLS))
 	$(call need_file,$(STATIC_LIBC),libc6-dev)
 	tests/run_all.sh build build-asan build-clang
@@ -74,6 +77,7 @@ bench:
 	CC=gcc $(CMAKE) -S . -B build-bench -DCMAKE_BUILD_TYPE=Release \
 	  -DTS_BUILD_BENCH=ON -DTS_BUILD_TESTS=OFF -DTS_BUILD_EXAMPLES=OFF >/dev/null
 	$(CMAKE) --build build-bench -j $(JOBS) --target run_bench
+	$(MAKE) --no-print-directory bench-python
 
 # Convergence study (docs/accuracy.md): prints the tables, rewrites the
 # results section of docs/accuracy.md and docs/accuracy.svg.  Compares with GSL.
@@ -89,3 +93,28 @@ demo: build
 
 clean:
 	rm -rf build build-asan build-clang build-bench out
+
+# ---- Python package (bindings/python) --------------------------------------
+# Debian's own interpreter (/usr/bin/python3, not another python3 on PATH)
+# with numpy, SciPy, pytest, setuptools, wheel, venv/pip and Python.h.
+PYTHON := /usr/bin/python3
+PYTHON_PACKAGES := python3 python3-numpy python3-scipy python3-pytest python3-setuptools \
+  python3-wheel python3-venv python3-pip python3-dev
+python-deps:
+	@$(PYTHON) -c 'import numpy, scipy, pytest, setuptools, wheel, ensurepip, os, sys, sysconfig; \
+	  sys.exit(not os.path.exists(os.path.join(sysconfig.get_paths()["include"], "Python.h")))' \
+	  2>/dev/null || { apt-get update && \
+	  DEBIAN_FRONTEND=noninteractive apt-get install -y $(PYTHON_PACKAGES); }
+
+# Python rows of the benchmark (bench/bench_python.py): the package installed
+# into a fresh venv, against SciPy's PchipInterpolator in the same run.
+bench-python: python-deps
+	$(call need,$(BUILD_TOOLS))
+	CC=gcc $(CMAKE) -S . -B build-bench -DCMAKE_BUILD_TYPE=Release \
+	  -DTS_BUILD_TESTS=OFF -DTS_BUILD_EXAMPLES=OFF >/dev/null
+	$(CMAKE) --build build-bench -j $(JOBS) --target trigspline_shared
+	rm -rf build-bench/python-venv
+	$(PYTHON) -m venv --system-site-packages build-bench/python-venv
+	env -u PIP_FIND_LINKS PIP_NO_INDEX=1 build-bench/python-venv/bin/pip install -q \
+	  --no-build-isolation ./bindings/python
+	cd build-bench && python-venv/bin/python ../bench/bench_python.py

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Runs every test program of each build directory given (BUILD/tests/test_*:
 # the programs of tests/api/, tests/unit/, tests/tools/ all land there), the
-# valgrind leak checks, and the script tests (tests/test_*.py and
-# tests/tools/test_*.py) against the first; prints each program's line and,
+# valgrind leak checks, the script tests (tests/test_*.py and
+# tests/tools/test_*.py) and the Python package's pytest run
+# (bindings/python/tests/run.sh) against the first; prints each program's line and,
 # last, the sum as "total: N passed, M failed".  Exit status 0 only if nothing
 # failed.
 set -u
@@ -51,6 +52,10 @@ if [ -n "$first" ]; then
         [ -f "$py" ] || continue
         run_one "script/$(basename "$py")" python3 "$py" "$first"
     done
+    # The Python package: installed into a fresh venv, pytest (its own closing line)
+    if [ -x "$here/../bindings/python/tests/run.sh" ]; then
+        run_one "pytest/bindings/python" "$here/../bindings/python/tests/run.sh" "$first"
+    fi
 fi
 echo "total: $pass passed, $fail failed"
 exit $status

@@ -1,28 +1,48 @@
 """TrigsplineError and the messages that name the offending point or interval."""
-from . import _ffi
+from . import _core
 from ._util import STATUS_NAMES, WHERE_NAMES, num
 
 
 def strerror(status):
-    """The library's fixed English text for a status code (ts_strerror)."""
-    return _ffi.lib.ts_strerror(int(status)).decode("utf-8", "replace")
+    """The library's fixed English text for a status code (``ts_strerror``).
+
+    Parameters
+    ----------
+    status : int
+        A ``ts_status`` code.
+
+    Returns
+    -------
+    str
+    """
+    return _core.strerror(int(status))
 
 
 class TrigsplineError(ValueError):
     """A failure reported by libtrigspline.
 
-    status  the ts_status code (int); .name gives e.g. "TS_ERR_SIDE"
-    message the text (also str(err))
-    index   the point, interval or query it concerns, or None
-    where   "point", "interval", "query" or None
+    Attributes
+    ----------
+    status : int
+        The ``ts_status`` code; ``name`` gives its name, e.g. ``"TS_ERR_SIDE"``.
+    message : str
+        The text (also ``str(err)``), naming the point, interval or query.
+    index : int or None
+        The point, interval or query it concerns.
+    where : {"point", "interval", "query", None}
+        What ``index`` counts.
+    series : tuple of int or None
+        For vector-valued data: the index of the series (``f`` without the
+        interpolation axis) that failed.
     """
 
-    def __init__(self, status, message, index=None, where=None):
+    def __init__(self, status, message, index=None, where=None, series=None):
         super().__init__(message)
         self.status = int(status)
         self.message = message
         self.index = index
         self.where = where
+        self.series = series
 
     @property
     def name(self):
@@ -34,7 +54,8 @@ class TrigsplineError(ValueError):
                                                                self.index, self.where)
 
     def __reduce__(self):
-        return (TrigsplineError, (self.status, self.message, self.index, self.where))
+        return (TrigsplineError, (self.status, self.message, self.index, self.where,
+                                  self.series))
 
 
 def _line_text(line):
@@ -52,14 +73,16 @@ def _line_at(line, x):
 
 
 def spline_error(err, ctx):
-    """TrigsplineError from a TsError of spline construction.
+    """TrigsplineError from a _core.LibraryError of spline construction.
 
-    ctx: dict with x, f (lists), shape (name), lower, upper ((m, c) or None),
-    slopes_values (list or None)."""
-    st = int(err.status)
-    where = WHERE_NAMES[err.where] if 0 <= err.where < len(WHERE_NAMES) else None
-    index = None if err.index == _ffi.NO_INDEX else int(err.index)
-    x, f = ctx.get("x") or [], ctx.get("f") or []
+    ctx: dict with x, f (arrays), shape (name), lower, upper ((m, c) or None),
+    slopes_values (array or None)."""
+    st, index, w = err.args
+    where = WHERE_NAMES[w] if 0 <= w < len(WHERE_NAMES) else None
+    x = ctx.get("x")
+    f = ctx.get("f")
+    x = [] if x is None else x
+    f = [] if f is None else f
     base = strerror(st)
     msg = base
     if where == "point" and index is not None and index < len(x):
@@ -96,12 +119,13 @@ def spline_error(err, ctx):
                 loc, index, num(f[0]), num(fi))
         elif st == _S.ZERO_SLOPE:
             sv = ctx.get("slopes_values")
-            d = " %s" % num(sv[index]) if sv and index < len(sv) else ""
+            d = " %s" % num(sv[index]) if sv is not None and index < len(sv) else ""
             msg = "%s touches the boundary (f = %s) and the user slope%s has the wrong sign" % (
                 loc, num(fi), d)
         elif st == _S.NONFINITE:
             sv = ctx.get("slopes_values")
-            if sv and index < len(sv) and all(map(_finite, (xi, fi))) and not _finite(sv[index]):
+            if sv is not None and index < len(sv) and all(map(_finite, (xi, fi))) \
+                    and not _finite(sv[index]):
                 msg = "%s: user slope %s is not finite" % (loc, num(sv[index]))
             else:
                 msg = "point %d (x = %s, f = %s): %s" % (index, num(xi), num(fi), base)
@@ -143,3 +167,10 @@ def domain_error(value, index, lo, hi, extrapolate="error"):
 
 def simple_error(status, message=None, index=None, where=None):
     return TrigsplineError(status, message or strerror(status), index, where)
+
+
+def library_error(err, message=None):
+    """TrigsplineError from a _core.LibraryError without context."""
+    st, index, w = err.args
+    where = WHERE_NAMES[w] if 0 <= w < len(WHERE_NAMES) else None
+    return TrigsplineError(st, message or strerror(st), index, where)

@@ -1,0 +1,1299 @@
+/* trigspline._core: the C extension behind the Python package.
+ *
+ * libtrigspline's sources are compiled into this module (setup.py), so the
+ * installed package needs nothing else.  Two handle types own one C object
+ * each (SplineHandle: ts_spline, CurveHandle: ts_curve); it is freed only in
+ * tp_dealloc, when the last Python reference is gone, so no call reachable
+ * from Python can use it after free or free it twice.  Fitted objects are
+ * immutable (include/trigspline.h): the GIL is released around construction,
+ * batch evaluation and every loop over queries or intervals.
+ *
+ * Failures of the library raise LibraryError(status, index, where) (a
+ * ValueError); the package turns it into a TrigsplineError with a message
+ * naming the point (trigspline/errors.py).
+ *
+ * Beyond the library's API (docs/method.md cited per function):
+ *  - derivatives of order >= 3 in the paper and C1 forms, from the
+ *    trigonometric form of docs/method.md §2;
+ *  - roots of S - y per interval: the degree-6 polynomial of t = tan(θ/2)
+ *    (as in src/trigmin.c for S'), isolated in Bernstein form;
+ *  - the extrapolation policies per call (see spline_eval). */
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#define NPY_NO_DEPRECATED_API NPY_1_7_API_VERSION
+#include <numpy/arrayobject.h>
+
+#include <float.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "trigspline.h"
+
+#define PI_ 3.14159265358979323846
+#define HALF_PI_ 1.57079632679489661923
+
+static PyObject *LibraryError;
+
+/* Per-call extrapolation (the handle is always built with TS_EXTRAP_EXTEND). */
+enum { MODE_EXTEND = 0, MODE_CLAMP = 1, MODE_LINEAR = 2, MODE_NAN = 3, MODE_ERROR = 4 };
+
+static PyObject *raise_status(ts_status st, size_t index, ts_where where)
+{
+    PyObject *idx;
+    if (index == TS_NO_INDEX) {
+        idx = Py_None;
+        Py_INCREF(idx);
+    } else {
+        idx = PyLong_FromSize_t(index);
+    }
+    PyObject *args = Py_BuildValue("(iNi)", (int)st, idx, (int)where);
+    if (args) {
+        PyErr_SetObject(LibraryError, args);
+        Py_DECREF(args);
+    }
+    return NULL;
+}
+
+static PyObject *raise_err(ts_status st, const ts_error *e)
+{
+    return raise_status(st, e ? e->index : TS_NO_INDEX, e ? e->where : TS_WHERE_NONE);
+}
+
+/* A 1-D float64 C-contiguous array of obj (no copy when it already is one);
+ * None stays NULL with *ok = 1. */
+static PyArrayObject *as_vector(PyObject *obj, const char *what)
+{
+    PyArrayObject *a = (PyArrayObject *)PyArray_FROMANY(obj, NPY_DOUBLE, 1, 1,
+                                                        NPY_ARRAY_IN_ARRAY);
+    if (!a && PyErr_ExceptionMatches(PyExc_ValueError)) {
+        PyErr_Clear();
+        PyErr_Format(PyExc_ValueError, "%s must be a 1-D sequence of numbers", what);
+    }
+    return a;
+}
+
+/* A read-only array of n doubles at p, kept alive by owner. */
+static PyObject *view(PyObject *owner, const double *p, npy_intp n)
+{
+    PyObject *a = PyArray_SimpleNewFromData(1, &n, NPY_DOUBLE, (void *)p);
+    if (!a)
+        return NULL;
+    PyArray_CLEARFLAGS((PyArrayObject *)a, NPY_ARRAY_WRITEABLE);
+    Py_INCREF(owner);
+    if (PyArray_SetBaseObject((PyArrayObject *)a, owner) < 0) {
+        Py_DECREF(a);
+        return NULL;
+    }
+    return a;
+}
+
+/* ------------------------------------------------------------------ */
+/* SplineHandle                                                         */
+/* ------------------------------------------------------------------ */
+
+typedef struct {
+    PyObject_HEAD
+    ts_spline *s;
+    size_t n;
+    double x0, xn;
+    double end[2][3]; /* value, slope, second derivative at x0 (right) and xn (left) */
+    ts_form form;
+} SplineHandle;
+
+static void spline_dealloc(SplineHandle *self)
+{
+    ts_spline_free(self->s);
+    self->s = NULL;
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+static PyTypeObject SplineHandleType;
+
+/* Optional per-interval array: NULL/0 for None. */
+static int opt_array(PyObject *obj, const char *what, PyArrayObject **keep, const double **p,
+                     size_t *n)
+{
+    *keep = NULL;
+    if (obj == Py_None)
+        return 0;
+    *keep = as_vector(obj, what);
+    if (!*keep)
+        return -1;
+    *p = (const double *)PyArray_DATA(*keep);
+    *n = (size_t)PyArray_SIZE(*keep);
+    return 0;
+}
+
+static int opt_line(PyObject *obj, ts_line *l)
+{
+    if (obj == Py_None)
+        return 0;
+    return PyArg_ParseTuple(obj, "dd", &l->m, &l->c) ? 0 : -1;
+}
+
+/* spline_new(x, f, *, form=None, slopes=None, user_slopes=None, alpha=None,
+ * alphas=None, beta=None, betas=None, shape=0, lower=None, upper=None,
+ * margin=None, margins=None, certify=1, extrapolate=TS_EXTRAP_EXTEND).
+ * None keeps the ts_options_init default. */
+static PyObject *spline_new(PyObject *mod, PyObject *args, PyObject *kw)
+{
+    (void)mod;
+    static char *kwlist[] = {"x", "f", "form", "slopes", "user_slopes", "alpha", "alphas",
+                             "beta", "betas", "shape", "lower", "upper", "margin", "margins",
+                             "certify", "extrapolate", NULL};
+    PyObject *ox, *of, *oform = Py_None, *oslopes = Py_None, *ous = Py_None, *oalpha = Py_None,
+                       *oalphas = Py_None, *obeta = Py_None, *obetas = Py_None,
+                       *olower = Py_None, *oupper = Py_None, *omargin = Py_None,
+                       *omargins = Py_None;
+    int shape = 0, certify = 1, extrap = TS_EXTRAP_EXTEND;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|$OOOOOOOiOOOOii", kwlist, &ox, &of, &oform,
+                                     &oslopes, &ous, &oalpha, &oalphas, &obeta, &obetas, &shape,
+                                     &olower, &oupper, &omargin, &omargins, &certify, &extrap))
+        return NULL;
+    ts_options opt;
+    ts_options_init(&opt);
+    PyArrayObject *ax = NULL, *af = NULL, *aus = NULL, *aal = NULL, *abe = NULL, *ama = NULL;
+    PyObject *result = NULL;
+    ax = as_vector(ox, "x");
+    if (!ax)
+        goto done;
+    af = as_vector(of, "f");
+    if (!af)
+        goto done;
+    if (PyArray_SIZE(ax) != PyArray_SIZE(af)) {
+        raise_status(TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
+        goto done;
+    }
+    if (oform != Py_None) {
+        opt.form = (ts_form)PyLong_AsLong(oform);
+        if (PyErr_Occurred())
+            goto done;
+    }
+    if (oslopes != Py_None) {
+        opt.slopes = (ts_slopes)PyLong_AsLong(oslopes);
+        if (PyErr_Occurred())
+            goto done;
+    }
+    if (opt_array(ous, "user_slopes", &aus, &opt.user_slopes, &opt.n_user_slopes) < 0 ||
+        opt_array(oalphas, "alphas", &aal, &opt.alphas, &opt.n_alphas) < 0 ||
+        opt_array(obetas, "betas", &abe, &opt.betas, &opt.n_betas) < 0 ||
+        opt_array(omargins, "margins", &ama, &opt.margins, &opt.n_margins) < 0)
+        goto done;
+    if (oalpha != Py_None && (opt.alpha = PyFloat_AsDouble(oalpha), PyErr_Occurred()))
+        goto done;
+    if (obeta != Py_None && (opt.beta = PyFloat_AsDouble(obeta), PyErr_Occurred()))
+        goto done;
+    if (omargin != Py_None && (opt.margin = PyFloat_AsDouble(omargin), PyErr_Occurred()))
+        goto done;
+    if (opt_line(olower, &opt.lower) < 0 || opt_line(oupper, &opt.upper) < 0)
+        goto done;
+    opt.shape = (ts_shape)shape;
+    opt.certify = certify;
+    opt.extrapolate = (ts_extrap)extrap;
+
+    const double *px = (const double *)PyArray_DATA(ax), *pf = (const double *)PyArray_DATA(af);
+    size_t np_ = (size_t)PyArray_SIZE(ax);
+    ts_spline *s = NULL;
+    ts_error err;
+    ts_status st;
+    Py_BEGIN_ALLOW_THREADS
+    st = ts_spline_new(px, pf, np_, &opt, &s, &err);
+    Py_END_ALLOW_THREADS
+    if (st != TS_OK) {
+        raise_err(st, &err);
+        goto done;
+    }
+    SplineHandle *h = PyObject_New(SplineHandle, &SplineHandleType);
+    if (!h) {
+        ts_spline_free(s);
+        goto done;
+    }
+    h->s = s;
+    h->n = ts_spline_intervals(s);
+    h->x0 = ts_spline_x(s)[0];
+    h->xn = ts_spline_x(s)[h->n];
+    h->form = ts_spline_form(s);
+    ts_eval_deriv(s, h->x0, NULL, &h->end[0][0], &h->end[0][1], &h->end[0][2]);
+    ts_eval_deriv(s, h->xn, NULL, &h->end[1][0], &h->end[1][1], &h->end[1][2]);
+    result = (PyObject *)h;
+done:
+    Py_XDECREF(ax);
+    Py_XDECREF(af);
+    Py_XDECREF(aus);
+    Py_XDECREF(aal);
+    Py_XDECREF(abe);
+    Py_XDECREF(ama);
+    return result;
+}
+
+/* Interval of x for the closed forms below: the right-hand one at a knot
+ * (as the library), the end intervals outside. */
+static size_t locate(const double *x, size_t n, double v)
+{
+    if (!(v >= x[1]))
+        return 0;
+    if (v >= x[n - 1])
+        return n - 1;
+    size_t lo = 1, hi = n - 1; /* x[lo] <= v < x[hi] */
+    while (hi - lo > 1) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (x[mid] <= v)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+/* The nu-th derivative (nu >= 0) in x of the paper/C1 interval with control
+ * values B at x (docs/method.md §2): S = a0 + p sinθ + q cosθ + r cos2θ + u
+ * sin3θ + w cos3θ with θ = (π/2)(x - x_i)/h, where
+ *   A0 = 5/2 − 15/4 s − 3/2 cos2θ + 1/4 sin3θ,  A1 = −2 + 15/4 s + 2 cos2θ − 1/4 sin3θ,
+ *   A2 = −2 + 15/4 c − 2 cos2θ + 1/4 cos3θ,     A3 = 5/2 − 15/4 c + 3/2 cos2θ − 1/4 cos3θ
+ * (from s² = (1 − cos2θ)/2, s³ = (3s − sin3θ)/4 and the like). */
+static double trig_deriv(const double B[4], double xi, double h, double v, int nu)
+{
+    double p = 3.75 * (B[1] - B[0]), q = 3.75 * (B[2] - B[3]);
+    double r = 1.5 * (B[3] - B[0]) + 2.0 * (B[1] - B[2]);
+    double u = 0.25 * (B[0] - B[1]), w = 0.25 * (B[2] - B[3]);
+    double th = HALF_PI_ * (v - xi) / h, sh = nu * HALF_PI_;
+    double y = p * sin(th + sh) + q * cos(th + sh) + r * pow(2.0, nu) * cos(2.0 * th + sh) +
+               pow(3.0, nu) * (u * sin(3.0 * th + sh) + w * cos(3.0 * th + sh));
+    return y * pow(HALF_PI_ / h, nu);
+}
+
+typedef struct {
+    const ts_spline *s;
+    size_t n;
+    const double *x;
+    double (*B)[4];
+} trig_ctx;
+
+/* Queries outside [x0, xn] after the batch (handle built with EXTEND):
+ * the per-call policy.  Returns the index of the first query outside under
+ * MODE_ERROR, or -1. */
+static npy_intp fix_outside(const SplineHandle *h, const double *xq, double *yq, npy_intp m,
+                            int nu, int mode)
+{
+    for (npy_intp j = 0; j < m; j++) {
+        double v = xq[j];
+        if (v >= h->x0 && v <= h->xn)
+            continue;
+        if (v != v) {
+            yq[j] = (double)NAN;
+            continue;
+        }
+        int e = v > h->xn;
+        double xe = e ? h->xn : h->x0;
+        switch (mode) {
+        case MODE_EXTEND:
+            break; /* the library's (±Inf: NaN) */
+        case MODE_CLAMP:
+            yq[j] = nu == 0 ? h->end[e][0] : 0.0;
+            break;
+        case MODE_LINEAR:
+            if (nu == 0)
+                yq[j] = h->end[e][1] == 0.0 ? h->end[e][0] : h->end[e][0] + h->end[e][1] * (v - xe);
+            else
+                yq[j] = nu == 1 ? h->end[e][1] : 0.0;
+            break;
+        case MODE_NAN:
+            yq[j] = (double)NAN;
+            break;
+        default:
+            return j;
+        }
+    }
+    return -1;
+}
+
+/* eval(xq, nu=0, mode=0, out=None, threads=1) -> ndarray of xq's shape
+ * (0-d for a scalar).  NaN queries give NaN. */
+static PyObject *spline_eval(SplineHandle *self, PyObject *args, PyObject *kw)
+{
+    static char *kwlist[] = {"xq", "nu", "mode", "out", "threads", NULL};
+    PyObject *oxq, *oout = Py_None;
+    int nu = 0, mode = MODE_EXTEND, threads = 1;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|iiOi", kwlist, &oxq, &nu, &mode, &oout,
+                                     &threads))
+        return NULL;
+    if (nu < 0) {
+        PyErr_SetString(PyExc_ValueError, "the derivative order nu must be >= 0");
+        return NULL;
+    }
+    if (nu > 2 && self->form == TS_FORM_GEOMETRIC) {
+        PyErr_SetString(PyExc_ValueError,
+                        "derivatives of order > 2 are available in the paper and c1 forms "
+                        "only (the geometric form is parametric, docs/method.md §4)");
+        return NULL;
+    }
+    PyArrayObject *aq = (PyArrayObject *)PyArray_FROMANY(oxq, NPY_DOUBLE, 0, 0, NPY_ARRAY_IN_ARRAY);
+    if (!aq)
+        return NULL;
+    PyArrayObject *ao;
+    if (oout == Py_None) {
+        ao = (PyArrayObject *)PyArray_SimpleNew(PyArray_NDIM(aq), PyArray_DIMS(aq), NPY_DOUBLE);
+        if (!ao) {
+            Py_DECREF(aq);
+            return NULL;
+        }
+    } else {
+        if (!PyArray_Check(oout) || PyArray_TYPE((PyArrayObject *)oout) != NPY_DOUBLE ||
+            !PyArray_IS_C_CONTIGUOUS((PyArrayObject *)oout) ||
+            !PyArray_ISWRITEABLE((PyArrayObject *)oout) ||
+            PyArray_SIZE((PyArrayObject *)oout) != PyArray_SIZE(aq)) {
+            Py_DECREF(aq);
+            PyErr_SetString(PyExc_ValueError, "out must be a writable C-contiguous float64 "
+                                              "array with one element per query");
+            return NULL;
+        }
+        ao = (PyArrayObject *)oout;
+        Py_INCREF(ao);
+    }
+    const double *xq = (const double *)PyArray_DATA(aq);
+    double *yq = (double *)PyArray_DATA(ao);
+    npy_intp m = PyArray_SIZE(aq);
+    ts_status st = TS_OK;
+    ts_error err = {TS_OK, TS_NO_INDEX, TS_WHERE_NONE};
+    npy_intp bad = -1;
+    Py_BEGIN_ALLOW_THREADS
+    if (nu <= 2) {
+        if (threads == 1) {
+            st = ts_eval_batch(self->s, nu, xq, (size_t)m, yq, NULL, &err);
+        } else {
+            st = ts_eval_batch_mt(self->s, nu, xq, (size_t)m, yq,
+                                  threads < 0 ? 0u : (unsigned)threads, &err);
+        }
+        if (st == TS_ERR_DOMAIN) /* NaN or ±Inf queries: fix_outside */
+            st = TS_OK;
+    } else {
+        const double *x = ts_spline_x(self->s);
+        size_t n = self->n;
+        for (npy_intp j = 0; j < m; j++) {
+            double v = xq[j], B[4];
+            if (!(fabs(v) <= DBL_MAX)) {
+                yq[j] = (double)NAN;
+                continue;
+            }
+            size_t i = locate(x, n, v);
+            ts_spline_control(self->s, i, B, NULL);
+            yq[j] = trig_deriv(B, x[i], x[i + 1] - x[i], v, nu);
+        }
+    }
+    if (st == TS_OK)
+        bad = fix_outside(self, xq, yq, m, nu, mode);
+    Py_END_ALLOW_THREADS
+    if (st != TS_OK || bad >= 0) {
+        Py_DECREF(aq);
+        Py_DECREF(ao);
+        if (st != TS_OK)
+            return raise_err(st, &err);
+        return raise_status(TS_ERR_DOMAIN, PyArray_NDIM(aq) == 0 ? TS_NO_INDEX : (size_t)bad,
+                            TS_WHERE_QUERY);
+    }
+    Py_DECREF(aq);
+    return (PyObject *)ao;
+}
+
+/* integral(a, b) -> float (a, b in [x0, xn]). */
+static PyObject *spline_integral(SplineHandle *self, PyObject *args)
+{
+    double a, b, r;
+    if (!PyArg_ParseTuple(args, "dd", &a, &b))
+        return NULL;
+    ts_status st = ts_integral(self->s, a, b, &r);
+    if (st != TS_OK)
+        return raise_status(st, TS_NO_INDEX, TS_WHERE_NONE);
+    return PyFloat_FromDouble(r);
+}
+
+/* antiderivative(xq) -> ∫_{x0}^{xq} S per query, NaN outside [x0, xn]
+ * (the package adds the extrapolated parts). */
+static PyObject *spline_antiderivative(SplineHandle *self, PyObject *arg)
+{
+    PyArrayObject *aq = (PyArrayObject *)PyArray_FROMANY(arg, NPY_DOUBLE, 0, 0, NPY_ARRAY_IN_ARRAY);
+    if (!aq)
+        return NULL;
+    PyArrayObject *ao =
+        (PyArrayObject *)PyArray_SimpleNew(PyArray_NDIM(aq), PyArray_DIMS(aq), NPY_DOUBLE);
+    if (!ao) {
+        Py_DECREF(aq);
+        return NULL;
+    }
+    const double *xq = (const double *)PyArray_DATA(aq);
+    double *yq = (double *)PyArray_DATA(ao);
+    npy_intp m = PyArray_SIZE(aq);
+    Py_BEGIN_ALLOW_THREADS
+    for (npy_intp j = 0; j < m; j++)
+        if (ts_integral(self->s, self->x0, xq[j], &yq[j]) != TS_OK)
+            yq[j] = (double)NAN;
+    Py_END_ALLOW_THREADS
+    Py_DECREF(aq);
+    return (PyObject *)ao;
+}
+
+/* ---- roots --------------------------------------------------------- */
+
+/* Bernstein coefficients (degree 6 on t in [0, 1]) of q³A_l(θ), t = tan(θ/2),
+ * q = 1 + t² (docs/method.md §2 with the substitution of src/trigmin.c):
+ *   q³A0 = (1−t)⁶, q³A1 = 2t(1−t)²(3 − 2t + 3t²), q³A2 = 4t²(1−t²)(1 + 2t²), q³A3 = 8t⁶.
+ * Filled at import from the power-basis coefficients. */
+static double bern[4][7];
+
+static void poly_mul(const double *a, int na, const double *b, int nb, double *out)
+{
+    for (int i = 0; i < na + nb - 1; i++)
+        out[i] = 0.0;
+    for (int i = 0; i < na; i++)
+        for (int j = 0; j < nb; j++)
+            out[i + j] += a[i] * b[j];
+}
+
+static void init_bernstein(void)
+{
+    double pw[4][7] = {{0}};
+    double omt[2] = {1, -1}, t1[2] = {0, 1}, a[7], b[7], c[7];
+    /* (1-t)^6 */
+    double acc[7] = {1};
+    int len = 1;
+    for (int k = 0; k < 6; k++) {
+        poly_mul(acc, len, omt, 2, a);
+        len++;
+        memcpy(acc, a, sizeof a);
+    }
+    memcpy(pw[0], acc, sizeof acc);
+    /* 2t(1-t)^2(3-2t+3t^2) */
+    double sq[3] = {1, -2, 1}, k1[3] = {3, -2, 3};
+    poly_mul(sq, 3, k1, 3, a);   /* degree 4 */
+    poly_mul(a, 5, t1, 2, b);    /* degree 5 */
+    for (int i = 0; i < 6; i++)
+        pw[1][i] = 2.0 * b[i];
+    /* 4t^2(1-t^2)(1+2t^2) */
+    double u1[3] = {1, 0, -1}, u2[3] = {1, 0, 2}, t2[3] = {0, 0, 1};
+    poly_mul(u1, 3, u2, 3, a);   /* degree 4 */
+    poly_mul(a, 5, t2, 3, c);    /* degree 6 */
+    for (int i = 0; i < 7; i++)
+        pw[2][i] = 4.0 * c[i];
+    pw[3][6] = 8.0;
+    /* b_j = Σ_{i<=j} C(j,i)/C(6,i) a_i */
+    static const double C6[7] = {1, 6, 15, 20, 15, 6, 1};
+    for (int l = 0; l < 4; l++)
+        for (int j = 0; j < 7; j++) {
+            double s = 0.0, cji = 1.0; /* C(j, i) */
+            for (int i = 0; i <= j; i++) {
+                s += cji / C6[i] * pw[l][i];
+                cji = cji * (j - i) / (i + 1);
+            }
+            bern[l][j] = s;
+        }
+}
+
+/* q³ (S − y) at t, from the factored forms (sign of S − y). */
+static double root_poly(const double C[4], double t)
+{
+    double omt = 1.0 - t, t2 = t * t;
+    double o2 = omt * omt;
+    return C[0] * (o2 * o2 * o2) + C[1] * 2.0 * t * o2 * (3.0 - 2.0 * t + 3.0 * t2) +
+           C[2] * 4.0 * t2 * (1.0 - t) * (1.0 + t) * (1.0 + 2.0 * t2) +
+           C[3] * 8.0 * (t2 * t2 * t2);
+}
+
+typedef struct {
+    double *t;
+    size_t n, cap;
+    int oom;
+} tlist;
+
+static void tlist_add(tlist *L, double t)
+{
+    if (L->n == L->cap) {
+        size_t cap = L->cap ? 2 * L->cap : 64;
+        double *p = realloc(L->t, cap * sizeof *p);
+        if (!p) {
+            L->oom = 1;
+            return;
+        }
+        L->t = p, L->cap = cap;
+    }
+    L->t[L->n++] = t;
+}
+
+static int sgn(double v)
+{
+    return (v > 0.0) - (v < 0.0);
+}
+
+/* Roots of q³(S − y) in (lo, hi) from its Bernstein coefficients b there
+ * (Descartes: 0 sign changes none, 1 exactly one, refined by bisection). */
+static void isolate_roots(const double C[4], const double b[7], double lo, double hi, int depth,
+                          tlist *L)
+{
+    int var = 0, last = 0;
+    for (int j = 0; j < 7; j++) {
+        int s = sgn(b[j]);
+        if (s != 0 && last != 0 && s != last)
+            var++;
+        if (s != 0)
+            last = s;
+    }
+    if (var == 0)
+        return;
+    double mid = 0.5 * (lo + hi);
+    if (var == 1) {
+        int slo = sgn(root_poly(C, lo));
+        if (slo == 0)
+            slo = sgn(b[0]) ? sgn(b[0]) : -sgn(b[6]);
+        double a = lo, c = hi;
+        for (int it = 0; it < 200 && c - a > 4.0 * DBL_EPSILON * (c > 1.0 ? c : 1.0); it++) {
+            double md = 0.5 * (a + c);
+            int sm = sgn(root_poly(C, md));
+            if (sm == 0) {
+                a = c = md;
+                break;
+            }
+            if (sm == slo)
+                a = md;
+            else
+                c = md;
+        }
+        tlist_add(L, 0.5 * (a + c));
+        return;
+    }
+    if (depth >= 52) { /* a multiple root (tangency): the point itself */
+        tlist_add(L, mid);
+        return;
+    }
+    double w[7][7], l[7], r[7];
+    for (int j = 0; j < 7; j++)
+        w[0][j] = b[j];
+    for (int k = 1; k < 7; k++)
+        for (int j = 0; j + k < 7; j++)
+            w[k][j] = 0.5 * (w[k - 1][j] + w[k - 1][j + 1]);
+    for (int k = 0; k < 7; k++) {
+        l[k] = w[k][0];
+        r[k] = w[6 - k][k];
+    }
+    isolate_roots(C, l, lo, mid, depth + 1, L);
+    if (l[6] == 0.0)
+        tlist_add(L, mid);
+    isolate_roots(C, r, mid, hi, depth + 1, L);
+}
+
+/* solve(y) -> sorted x with S(x) = y in [x0, xn]; an interval where S == y
+ * identically gives its left end followed by NaN (as SciPy's PPoly.roots). */
+static PyObject *spline_solve(SplineHandle *self, PyObject *args)
+{
+    double y;
+    if (!PyArg_ParseTuple(args, "d", &y))
+        return NULL;
+    tlist out = {NULL, 0, 0, 0};
+    const double *x = ts_spline_x(self->s);
+    int geo = self->form == TS_FORM_GEOMETRIC;
+    Py_BEGIN_ALLOW_THREADS
+    for (size_t i = 0; i < self->n && !out.oom; i++) {
+        double B[4], X[4], C[4], b[7];
+        ts_spline_control(self->s, i, B, X);
+        for (int l = 0; l < 4; l++)
+            C[l] = B[l] - y;
+        if (C[0] == 0.0 && C[1] == 0.0 && C[2] == 0.0 && C[3] == 0.0) {
+            tlist_add(&out, x[i]);
+            tlist_add(&out, (double)NAN);
+            continue;
+        }
+        if (C[0] == 0.0)
+            tlist_add(&out, x[i]);
+        for (int j = 0; j < 7; j++)
+            b[j] = C[0] * bern[0][j] + C[1] * bern[1][j] + C[2] * bern[2][j] + C[3] * bern[3][j];
+        tlist ts = {NULL, 0, 0, 0};
+        isolate_roots(C, b, 0.0, 1.0, 0, &ts);
+        for (size_t k = 0; k < ts.n; k++) {
+            double t = ts.t[k];
+            if (t <= 0.0 || t >= 1.0)
+                continue; /* the knots: added exactly */
+            double v;
+            if (geo) {
+                double t2 = t * t, q = 1.0 + t2, q3 = q * q * q, omt = 1.0 - t;
+                double A0 = omt * omt * omt * omt * omt * omt / q3;
+                double A1 = 2.0 * t * omt * omt * (3.0 - 2.0 * t + 3.0 * t2) / q3;
+                double A2 = 4.0 * t2 * (1.0 - t) * (1.0 + t) * (1.0 + 2.0 * t2) / q3;
+                double A3 = 8.0 * t2 * t2 * t2 / q3;
+                v = A0 * X[0] + A1 * X[1] + A2 * X[2] + A3 * X[3];
+            } else {
+                v = x[i] + (x[i + 1] - x[i]) * (2.0 * atan(t) / HALF_PI_);
+            }
+            if (v <= x[i])
+                v = nextafter(x[i], x[i + 1]);
+            if (v >= x[i + 1])
+                v = nextafter(x[i + 1], x[i]);
+            tlist_add(&out, v);
+        }
+        if (ts.oom)
+            out.oom = 1;
+        free(ts.t);
+        if (i + 1 == self->n && C[3] == 0.0)
+            tlist_add(&out, x[i + 1]);
+    }
+    Py_END_ALLOW_THREADS
+    if (out.oom) {
+        free(out.t);
+        return PyErr_NoMemory();
+    }
+    npy_intp nr = (npy_intp)out.n;
+    PyObject *a = PyArray_SimpleNew(1, &nr, NPY_DOUBLE);
+    if (a && nr)
+        memcpy(PyArray_DATA((PyArrayObject *)a), out.t, out.n * sizeof(double));
+    free(out.t);
+    return a;
+}
+
+/* ---- accessors ----------------------------------------------------- */
+
+static PyObject *spline_x(SplineHandle *self, void *c)
+{
+    (void)c;
+    return view((PyObject *)self, ts_spline_x(self->s), (npy_intp)self->n + 1);
+}
+static PyObject *spline_f(SplineHandle *self, void *c)
+{
+    (void)c;
+    return view((PyObject *)self, ts_spline_f(self->s), (npy_intp)self->n + 1);
+}
+static PyObject *spline_slopes(SplineHandle *self, void *c)
+{
+    (void)c;
+    return view((PyObject *)self, ts_spline_slopes(self->s), (npy_intp)self->n + 1);
+}
+static PyObject *spline_alpha(SplineHandle *self, void *c)
+{
+    (void)c;
+    return view((PyObject *)self, ts_spline_alpha(self->s), (npy_intp)self->n);
+}
+static PyObject *spline_beta(SplineHandle *self, void *c)
+{
+    (void)c;
+    return view((PyObject *)self, ts_spline_beta(self->s), (npy_intp)self->n);
+}
+static PyObject *spline_intervals(SplineHandle *self, void *c)
+{
+    (void)c;
+    return PyLong_FromSize_t(self->n);
+}
+static PyObject *spline_form(SplineHandle *self, void *c)
+{
+    (void)c;
+    return PyLong_FromLong((long)self->form);
+}
+static PyObject *spline_shape(SplineHandle *self, void *c)
+{
+    (void)c;
+    return PyLong_FromLong((long)ts_spline_shape(self->s));
+}
+static PyObject *spline_certified(SplineHandle *self, void *c)
+{
+    (void)c;
+    return PyBool_FromLong(ts_spline_certified(self->s));
+}
+
+/* control() -> (B, X), arrays of shape (n, 4). */
+static PyObject *spline_control(SplineHandle *self, PyObject *unused)
+{
+    (void)unused;
+    npy_intp dims[2] = {(npy_intp)self->n, 4};
+    PyObject *B = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
+    PyObject *X = B ? PyArray_SimpleNew(2, dims, NPY_DOUBLE) : NULL;
+    if (!X) {
+        Py_XDECREF(B);
+        return NULL;
+    }
+    double *pb = (double *)PyArray_DATA((PyArrayObject *)B);
+    double *px = (double *)PyArray_DATA((PyArrayObject *)X);
+    Py_BEGIN_ALLOW_THREADS
+    for (size_t i = 0; i < self->n; i++)
+        ts_spline_control(self->s, i, pb + 4 * i, px + 4 * i);
+    Py_END_ALLOW_THREADS
+    return Py_BuildValue("(NN)", B, X);
+}
+
+static PyObject *report_tuple(const ts_interval_report *r)
+{
+    return Py_BuildValue("(ddddd(dddd)iiiddddi)", r->x0, r->x1, r->alpha, r->beta, r->a, r->B[0],
+                         r->B[1], r->B[2], r->B[3], (int)r->term, r->has_lower, r->has_upper,
+                         r->gap_lower, r->at_lower, r->gap_upper, r->at_upper, r->certified);
+}
+
+/* report(i) -> tuple (x0, x1, alpha, beta, a, (B0..B3), term, has_lower,
+ * has_upper, gap_lower, at_lower, gap_upper, at_upper, certified). */
+static PyObject *spline_report(SplineHandle *self, PyObject *args)
+{
+    Py_ssize_t i;
+    if (!PyArg_ParseTuple(args, "n", &i))
+        return NULL;
+    ts_interval_report r;
+    ts_status st = i < 0 ? TS_ERR_INDEX : ts_spline_report(self->s, (size_t)i, &r);
+    if (st != TS_OK)
+        return raise_status(st, (size_t)i, TS_WHERE_INTERVAL);
+    return report_tuple(&r);
+}
+
+/* certify(lower, upper) -> (ok, first violating interval or None, [report tuples]). */
+static PyObject *spline_certify(SplineHandle *self, PyObject *args)
+{
+    PyObject *olo, *oup;
+    if (!PyArg_ParseTuple(args, "OO", &olo, &oup))
+        return NULL;
+    ts_line lo, up;
+    if ((olo != Py_None && !PyArg_ParseTuple(olo, "dd", &lo.m, &lo.c)) ||
+        (oup != Py_None && !PyArg_ParseTuple(oup, "dd", &up.m, &up.c)))
+        return NULL;
+    size_t n = self->n;
+    ts_interval_report *reps = PyMem_Calloc(n ? n : 1, sizeof *reps);
+    if (!reps)
+        return PyErr_NoMemory();
+    ts_error err;
+    ts_status st;
+    Py_BEGIN_ALLOW_THREADS
+    st = ts_certify(self->s, olo == Py_None ? NULL : &lo, oup == Py_None ? NULL : &up, reps, &err);
+    Py_END_ALLOW_THREADS
+    if (st != TS_OK && st != TS_ERR_VIOLATED) {
+        PyMem_Free(reps);
+        return raise_err(st, &err);
+    }
+    PyObject *list = PyList_New((Py_ssize_t)n);
+    for (size_t i = 0; list && i < n; i++) {
+        PyObject *t = report_tuple(&reps[i]);
+        if (!t) {
+            Py_CLEAR(list);
+            break;
+        }
+        PyList_SET_ITEM(list, (Py_ssize_t)i, t);
+    }
+    PyMem_Free(reps);
+    if (!list)
+        return NULL;
+    PyObject *idx = st == TS_OK ? (Py_INCREF(Py_None), Py_None) : PyLong_FromSize_t(err.index);
+    return Py_BuildValue("(ONN)", st == TS_OK ? Py_True : Py_False, idx, list);
+}
+
+/* error_bound(fprime_max, fsecond_max, exact_slopes) -> (bound, per-interval array). */
+static PyObject *spline_error_bound(SplineHandle *self, PyObject *args)
+{
+    double fp, fs;
+    int exact;
+    if (!PyArg_ParseTuple(args, "ddp", &fp, &fs, &exact))
+        return NULL;
+    npy_intp n = (npy_intp)self->n;
+    PyObject *per = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+    if (!per)
+        return NULL;
+    double b;
+    ts_status st = ts_error_bound(self->s, fp, fs, exact, &b,
+                                  (double *)PyArray_DATA((PyArrayObject *)per));
+    if (st != TS_OK) {
+        Py_DECREF(per);
+        return raise_status(st, TS_NO_INDEX, TS_WHERE_NONE);
+    }
+    return Py_BuildValue("(dN)", b, per);
+}
+
+static PyMethodDef spline_methods[] = {
+    {"eval", (PyCFunction)(void (*)(void))spline_eval, METH_VARARGS | METH_KEYWORDS,
+     "eval(xq, nu=0, mode=0, out=None, threads=1): values or derivatives"},
+    {"integral", (PyCFunction)spline_integral, METH_VARARGS, "integral(a, b)"},
+    {"antiderivative", (PyCFunction)spline_antiderivative, METH_O,
+     "antiderivative(xq): integral from x0 to each query (NaN outside)"},
+    {"solve", (PyCFunction)spline_solve, METH_VARARGS, "solve(y): x in [x0, xn] with S(x) = y"},
+    {"control", (PyCFunction)spline_control, METH_NOARGS, "control() -> (B, X), shape (n, 4)"},
+    {"report", (PyCFunction)spline_report, METH_VARARGS, "report(i) -> tuple"},
+    {"certify", (PyCFunction)spline_certify, METH_VARARGS, "certify(lower, upper)"},
+    {"error_bound", (PyCFunction)spline_error_bound, METH_VARARGS,
+     "error_bound(fprime_max, fsecond_max, exact_slopes)"},
+    {NULL, NULL, 0, NULL}};
+
+static PyGetSetDef spline_getset[] = {
+    {"x", (getter)spline_x, NULL, "knots (read-only view)", NULL},
+    {"f", (getter)spline_f, NULL, "values (read-only view)", NULL},
+    {"slopes", (getter)spline_slopes, NULL, "slopes used (read-only view)", NULL},
+    {"alpha", (getter)spline_alpha, NULL, "alpha per interval (read-only view)", NULL},
+    {"beta", (getter)spline_beta, NULL, "beta per interval (read-only view)", NULL},
+    {"intervals", (getter)spline_intervals, NULL, "number of intervals", NULL},
+    {"form", (getter)spline_form, NULL, "ts_form", NULL},
+    {"shape", (getter)spline_shape, NULL, "ts_shape", NULL},
+    {"certified", (getter)spline_certified, NULL, "ts_spline_certified", NULL},
+    {NULL, NULL, NULL, NULL, NULL}};
+
+static PyTypeObject SplineHandleType = {
+    PyVarObject_HEAD_INIT(NULL, 0).tp_name = "trigspline._core.SplineHandle",
+    .tp_basicsize = sizeof(SplineHandle),
+    .tp_dealloc = (destructor)spline_dealloc,
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc = "A fitted ts_spline (immutable; made by spline_new).",
+    .tp_methods = spline_methods,
+    .tp_getset = spline_getset,
+};
+
+/* ------------------------------------------------------------------ */
+/* CurveHandle                                                          */
+/* ------------------------------------------------------------------ */
+
+typedef struct {
+    PyObject_HEAD
+    ts_curve *c;
+    size_t n, dim;
+} CurveHandle;
+
+static void curve_dealloc(CurveHandle *self)
+{
+    ts_curve_free(self->c);
+    self->c = NULL;
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+static PyTypeObject CurveHandleType;
+
+/* curve_new(points (m, dim), *, param=None, closed=0, slopes=None, alpha=None,
+ * alphas=None, beta=None, betas=None, lo=None, hi=None, margin=None);
+ * lo/hi: sequences of dim values, NaN for an open side. */
+static PyObject *curve_new(PyObject *mod, PyObject *args, PyObject *kw)
+{
+    (void)mod;
+    static char *kwlist[] = {"points", "param", "closed", "slopes", "alpha", "alphas", "beta",
+                             "betas", "lo", "hi", "margin", NULL};
+    PyObject *op, *oparam = Py_None, *oslopes = Py_None, *oalpha = Py_None, *oalphas = Py_None,
+                  *obeta = Py_None, *obetas = Py_None, *olo = Py_None, *ohi = Py_None,
+                  *omargin = Py_None;
+    int closed = 0;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|$OiOOOOOOOO", kwlist, &op, &oparam, &closed,
+                                     &oslopes, &oalpha, &oalphas, &obeta, &obetas, &olo, &ohi,
+                                     &omargin))
+        return NULL;
+    ts_curve_options opt;
+    ts_curve_options_init(&opt);
+    PyObject *result = NULL;
+    PyArrayObject *ap = NULL, *aal = NULL, *abe = NULL, *alo = NULL, *ahi = NULL;
+    ap = (PyArrayObject *)PyArray_FROMANY(op, NPY_DOUBLE, 2, 2, NPY_ARRAY_IN_ARRAY);
+    if (!ap)
+        goto done;
+    opt.closed = closed;
+    if (oparam != Py_None && (opt.param = (ts_param)PyLong_AsLong(oparam), PyErr_Occurred()))
+        goto done;
+    if (oslopes != Py_None && (opt.slopes = (ts_slopes)PyLong_AsLong(oslopes), PyErr_Occurred()))
+        goto done;
+    if (oalpha != Py_None && (opt.alpha = PyFloat_AsDouble(oalpha), PyErr_Occurred()))
+        goto done;
+    if (obeta != Py_None && (opt.beta = PyFloat_AsDouble(obeta), PyErr_Occurred()))
+        goto done;
+    if (omargin != Py_None && (opt.margin = PyFloat_AsDouble(omargin), PyErr_Occurred()))
+        goto done;
+    if (opt_array(oalphas, "alphas", &aal, &opt.alphas, &opt.n_alphas) < 0 ||
+        opt_array(obetas, "betas", &abe, &opt.betas, &opt.n_betas) < 0)
+        goto done;
+    size_t dim = (size_t)PyArray_DIM(ap, 1);
+    if (olo != Py_None || ohi != Py_None) {
+        const double *p;
+        size_t nb;
+        if (opt_array(olo, "lo", &alo, &p, &nb) < 0 || opt_array(ohi, "hi", &ahi, &p, &nb) < 0)
+            goto done;
+        for (size_t k = 0; k < 3 && k < dim; k++) {
+            if (alo && k < (size_t)PyArray_SIZE(alo)) {
+                double v = ((const double *)PyArray_DATA(alo))[k];
+                opt.has_lo[k] = v == v, opt.lo[k] = v;
+            }
+            if (ahi && k < (size_t)PyArray_SIZE(ahi)) {
+                double v = ((const double *)PyArray_DATA(ahi))[k];
+                opt.has_hi[k] = v == v, opt.hi[k] = v;
+            }
+        }
+    }
+    ts_curve *c = NULL;
+    ts_error err;
+    ts_status st;
+    const double *pts = (const double *)PyArray_DATA(ap);
+    size_t m = (size_t)PyArray_DIM(ap, 0);
+    Py_BEGIN_ALLOW_THREADS
+    st = ts_curve_new(pts, m, dim, &opt, &c, &err);
+    Py_END_ALLOW_THREADS
+    if (st != TS_OK) {
+        raise_err(st, &err);
+        goto done;
+    }
+    CurveHandle *h = PyObject_New(CurveHandle, &CurveHandleType);
+    if (!h) {
+        ts_curve_free(c);
+        goto done;
+    }
+    h->c = c;
+    h->n = ts_curve_segments(c);
+    h->dim = ts_curve_dim(c);
+    result = (PyObject *)h;
+done:
+    Py_XDECREF(ap);
+    Py_XDECREF(aal);
+    Py_XDECREF(abe);
+    Py_XDECREF(alo);
+    Py_XDECREF(ahi);
+    return result;
+}
+
+/* eval(t, nu=0, mode=MODE_ERROR) -> array t.shape + (dim,); NaN t gives NaN;
+ * outside an open curve: MODE_NAN gives NaN, MODE_ERROR raises. */
+static PyObject *curve_eval(CurveHandle *self, PyObject *args, PyObject *kw)
+{
+    static char *kwlist[] = {"t", "nu", "mode", NULL};
+    PyObject *ot;
+    int nu = 0, mode = MODE_ERROR;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "O|ii", kwlist, &ot, &nu, &mode))
+        return NULL;
+    if (nu < 0 || nu > 2) {
+        PyErr_SetString(PyExc_ValueError, "curves have derivatives of order 0, 1 and 2");
+        return NULL;
+    }
+    PyArrayObject *at = (PyArrayObject *)PyArray_FROMANY(ot, NPY_DOUBLE, 0, 0, NPY_ARRAY_IN_ARRAY);
+    if (!at)
+        return NULL;
+    int nd = PyArray_NDIM(at);
+    npy_intp dims[NPY_MAXDIMS];
+    if (nd + 1 > NPY_MAXDIMS) {
+        Py_DECREF(at);
+        PyErr_SetString(PyExc_ValueError, "too many dimensions");
+        return NULL;
+    }
+    for (int k = 0; k < nd; k++)
+        dims[k] = PyArray_DIM(at, k);
+    dims[nd] = (npy_intp)self->dim;
+    PyArrayObject *ao = (PyArrayObject *)PyArray_SimpleNew(nd + 1, dims, NPY_DOUBLE);
+    if (!ao) {
+        Py_DECREF(at);
+        return NULL;
+    }
+    const double *t = (const double *)PyArray_DATA(at);
+    double *o = (double *)PyArray_DATA(ao);
+    npy_intp m = PyArray_SIZE(at), bad = -1;
+    size_t dim = self->dim;
+    ts_status st = TS_OK;
+    Py_BEGIN_ALLOW_THREADS
+    ts_cursor cur = TS_CURSOR_INIT;
+    for (npy_intp j = 0; j < m; j++) {
+        double p[3][3];
+        double *row = o + (size_t)j * dim;
+        ts_status sj = ts_curve_eval(self->c, t[j], &cur, p[0], nu >= 1 ? p[1] : NULL,
+                                     nu >= 2 ? p[2] : NULL);
+        if (sj == TS_ERR_DOMAIN && (t[j] != t[j] || mode == MODE_NAN)) {
+            for (size_t k = 0; k < dim; k++)
+                row[k] = (double)NAN;
+            continue;
+        }
+        if (sj != TS_OK) {
+            st = sj;
+            bad = j;
+            break;
+        }
+        for (size_t k = 0; k < dim; k++)
+            row[k] = p[nu][k];
+    }
+    Py_END_ALLOW_THREADS
+    Py_DECREF(at);
+    if (st != TS_OK) {
+        Py_DECREF(ao);
+        return raise_status(st, nd == 0 ? TS_NO_INDEX : (size_t)bad, TS_WHERE_QUERY);
+    }
+    return (PyObject *)ao;
+}
+
+static PyObject *curve_knots(CurveHandle *self, void *c)
+{
+    (void)c;
+    return view((PyObject *)self, ts_curve_knots(self->c), (npy_intp)self->n + 1);
+}
+static PyObject *curve_segments(CurveHandle *self, void *c)
+{
+    (void)c;
+    return PyLong_FromSize_t(self->n);
+}
+static PyObject *curve_dim(CurveHandle *self, void *c)
+{
+    (void)c;
+    return PyLong_FromSize_t(self->dim);
+}
+static PyObject *curve_closed(CurveHandle *self, void *c)
+{
+    (void)c;
+    return PyBool_FromLong(ts_curve_closed(self->c));
+}
+
+/* control() -> array (segments, 4, dim); params() -> (alpha, beta) arrays. */
+static PyObject *curve_control(CurveHandle *self, PyObject *unused)
+{
+    (void)unused;
+    npy_intp dims[3] = {(npy_intp)self->n, 4, (npy_intp)self->dim};
+    PyObject *a = PyArray_SimpleNew(3, dims, NPY_DOUBLE);
+    if (!a)
+        return NULL;
+    double *p = (double *)PyArray_DATA((PyArrayObject *)a);
+    for (size_t i = 0; i < self->n; i++)
+        ts_curve_control(self->c, i, p + 4 * self->dim * i);
+    return a;
+}
+
+static PyObject *curve_params(CurveHandle *self, PyObject *unused)
+{
+    (void)unused;
+    npy_intp n = (npy_intp)self->n;
+    PyObject *al = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+    PyObject *be = al ? PyArray_SimpleNew(1, &n, NPY_DOUBLE) : NULL;
+    if (!be) {
+        Py_XDECREF(al);
+        return NULL;
+    }
+    double *pa = (double *)PyArray_DATA((PyArrayObject *)al);
+    double *pb = (double *)PyArray_DATA((PyArrayObject *)be);
+    for (size_t i = 0; i < self->n; i++)
+        ts_curve_params(self->c, i, pa + i, pb + i);
+    return Py_BuildValue("(NN)", al, be);
+}
+
+static PyObject *curve_length(CurveHandle *self, PyObject *args)
+{
+    double tol, len;
+    if (!PyArg_ParseTuple(args, "d", &tol))
+        return NULL;
+    ts_status st;
+    Py_BEGIN_ALLOW_THREADS
+    st = ts_curve_length(self->c, tol, &len);
+    Py_END_ALLOW_THREADS
+    if (st != TS_OK)
+        return raise_status(st, TS_NO_INDEX, TS_WHERE_NONE);
+    return PyFloat_FromDouble(len);
+}
+
+/* sample(m) -> array (rows, 1 + dim). */
+static PyObject *curve_sample(CurveHandle *self, PyObject *args)
+{
+    Py_ssize_t m;
+    if (!PyArg_ParseTuple(args, "n", &m))
+        return NULL;
+    if (m < 2)
+        return raise_status(TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
+    size_t rows = 0;
+    ts_status st = ts_curve_sample(self->c, (size_t)m, NULL, 0, &rows);
+    if (st != TS_OK && st != TS_ERR_LENGTH)
+        return raise_status(st, TS_NO_INDEX, TS_WHERE_NONE);
+    npy_intp dims[2] = {(npy_intp)rows, (npy_intp)(1 + self->dim)};
+    PyObject *a = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
+    if (!a)
+        return NULL;
+    double *p = (double *)PyArray_DATA((PyArrayObject *)a);
+    Py_BEGIN_ALLOW_THREADS
+    st = ts_curve_sample(self->c, (size_t)m, p, rows * (1 + self->dim), &rows);
+    Py_END_ALLOW_THREADS
+    if (st != TS_OK) {
+        Py_DECREF(a);
+        return raise_status(st, TS_NO_INDEX, TS_WHERE_NONE);
+    }
+    return a;
+}
+
+/* certify(lo, hi) -> (ok, first segment or None, [report tuples]); lo/hi
+ * None: the curve's own box; else sequences of dim values, NaN = open. */
+static PyObject *curve_certify(CurveHandle *self, PyObject *args)
+{
+    PyObject *olo, *ohi;
+    if (!PyArg_ParseTuple(args, "OO", &olo, &ohi))
+        return NULL;
+    int has_lo[3] = {0, 0, 0}, has_hi[3] = {0, 0, 0};
+    double lo[3] = {0, 0, 0}, hi[3] = {0, 0, 0};
+    int own = olo == Py_None && ohi == Py_None;
+    for (int side = 0; side < 2 && !own; side++) {
+        PyObject *o = side ? ohi : olo;
+        if (o == Py_None)
+            continue;
+        PyArrayObject *a = as_vector(o, side ? "hi" : "lo");
+        if (!a)
+            return NULL;
+        for (npy_intp k = 0; k < PyArray_SIZE(a) && k < 3; k++) {
+            double v = ((const double *)PyArray_DATA(a))[k];
+            (side ? has_hi : has_lo)[k] = v == v;
+            (side ? hi : lo)[k] = v;
+        }
+        Py_DECREF(a);
+    }
+    size_t nr = self->n * self->dim;
+    ts_interval_report *reps = PyMem_Calloc(nr ? nr : 1, sizeof *reps);
+    if (!reps)
+        return PyErr_NoMemory();
+    ts_error err;
+    ts_status st;
+    Py_BEGIN_ALLOW_THREADS
+    st = own ? ts_curve_certify(self->c, reps, &err)
+             : ts_curve_certify_box(self->c, has_lo, lo, has_hi, hi, reps, &err);
+    Py_END_ALLOW_THREADS
+    if (st != TS_OK && st != TS_ERR_VIOLATED) {
+        PyMem_Free(reps);
+        return raise_err(st, &err);
+    }
+    PyObject *list = PyList_New((Py_ssize_t)nr);
+    for (size_t i = 0; list && i < nr; i++) {
+        PyObject *t = report_tuple(&reps[i]);
+        if (!t) {
+            Py_CLEAR(list);
+            break;
+        }
+        PyList_SET_ITEM(list, (Py_ssize_t)i, t);
+    }
+    PyMem_Free(reps);
+    if (!list)
+        return NULL;
+    PyObject *idx = st == TS_OK ? (Py_INCREF(Py_None), Py_None) : PyLong_FromSize_t(err.index);
+    return Py_BuildValue("(ONN)", st == TS_OK ? Py_True : Py_False, idx, list);
+}
+
+static PyMethodDef curve_methods[] = {
+    {"eval", (PyCFunction)(void (*)(void))curve_eval, METH_VARARGS | METH_KEYWORDS,
+     "eval(t, nu=0, mode=4)"},
+    {"control", (PyCFunction)curve_control, METH_NOARGS, "control points (segments, 4, dim)"},
+    {"params", (PyCFunction)curve_params, METH_NOARGS, "(alpha, beta) per segment"},
+    {"length", (PyCFunction)curve_length, METH_VARARGS, "length(tol)"},
+    {"sample", (PyCFunction)curve_sample, METH_VARARGS, "sample(m)"},
+    {"certify", (PyCFunction)curve_certify, METH_VARARGS, "certify(lo, hi)"},
+    {NULL, NULL, 0, NULL}};
+
+static PyGetSetDef curve_getset[] = {
+    {"knots", (getter)curve_knots, NULL, "parameter knots (read-only view)", NULL},
+    {"segments", (getter)curve_segments, NULL, "number of segments", NULL},
+    {"dim", (getter)curve_dim, NULL, "dimension", NULL},
+    {"closed", (getter)curve_closed, NULL, "closed curve", NULL},
+    {NULL, NULL, NULL, NULL, NULL}};
+
+static PyTypeObject CurveHandleType = {
+    PyVarObject_HEAD_INIT(NULL, 0).tp_name = "trigspline._core.CurveHandle",
+    .tp_basicsize = sizeof(CurveHandle),
+    .tp_dealloc = (destructor)curve_dealloc,
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc = "A fitted ts_curve (immutable; made by curve_new).",
+    .tp_methods = curve_methods,
+    .tp_getset = curve_getset,
+};
+
+/* ------------------------------------------------------------------ */
+/* Module                                                               */
+/* ------------------------------------------------------------------ */
+
+/* slopes_compute(method, x, f) -> array of slopes. */
+static PyObject *slopes_compute(PyObject *mod, PyObject *args)
+{
+    (void)mod;
+    int method;
+    PyObject *ox, *of;
+    if (!PyArg_ParseTuple(args, "iOO", &method, &ox, &of))
+        return NULL;
+    PyArrayObject *ax = as_vector(ox, "x");
+    if (!ax)
+        return NULL;
+    PyArrayObject *af = as_vector(of, "f");
+    if (!af) {
+        Py_DECREF(ax);
+        return NULL;
+    }
+    PyObject *result = NULL;
+    if (PyArray_SIZE(ax) != PyArray_SIZE(af)) {
+        raise_status(TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
+    } else {
+        npy_intp n = PyArray_SIZE(ax);
+        PyObject *d = PyArray_SimpleNew(1, &n, NPY_DOUBLE);
+        if (d) {
+            ts_error err;
+            ts_status st;
+            const double *px = PyArray_DATA(ax), *pf = PyArray_DATA(af);
+            double *pd = PyArray_DATA((PyArrayObject *)d);
+            Py_BEGIN_ALLOW_THREADS
+            st = ts_slopes_compute((ts_slopes)method, px, pf, (size_t)n, pd, &err);
+            Py_END_ALLOW_THREADS
+            if (st != TS_OK) {
+                Py_DECREF(d);
+                raise_err(st, &err);
+            } else {
+                result = d;
+            }
+        }
+    }
+    Py_DECREF(ax);
+    Py_DECREF(af);
+    return result;
+}
+
+static PyObject *strerror_(PyObject *mod, PyObject *arg)
+{
+    (void)mod;
+    long v = PyLong_AsLong(arg);
+    if (v == -1 && PyErr_Occurred())
+        return NULL;
+    return PyUnicode_FromString(ts_strerror((ts_status)v));
+}
+
+static PyObject *library_version(PyObject *mod, PyObject *unused)
+{
+    (void)mod, (void)unused;
+    return PyUnicode_FromString(ts_version());
+}
+
+/* options_defaults() -> (form, slopes, alpha, beta, margin, certify) of ts_options_init. */
+static PyObject *options_defaults(PyObject *mod, PyObject *unused)
+{
+    (void)mod, (void)unused;
+    ts_options o;
+    ts_options_init(&o);
+    return Py_BuildValue("(iidddi)", (int)o.form, (int)o.slopes, o.alpha, o.beta, o.margin,
+                         o.certify);
+}
+
+static PyMethodDef module_methods[] = {
+    {"spline_new", (PyCFunction)(void (*)(void))spline_new, METH_VARARGS | METH_KEYWORDS,
+     "spline_new(x, f, **options) -> SplineHandle"},
+    {"curve_new", (PyCFunction)(void (*)(void))curve_new, METH_VARARGS | METH_KEYWORDS,
+     "curve_new(points, **options) -> CurveHandle"},
+    {"slopes_compute", slopes_compute, METH_VARARGS, "slopes_compute(method, x, f)"},
+    {"strerror", strerror_, METH_O, "ts_strerror(status)"},
+    {"library_version", library_version, METH_NOARGS, "ts_version() of the compiled library"},
+    {"options_defaults", options_defaults, METH_NOARGS, "defaults of ts_options_init"},
+    {NULL, NULL, 0, NULL}};
+
+static struct PyModuleDef module_def = {PyModuleDef_HEAD_INIT, "trigspline._core",
+                                        "libtrigspline compiled into a Python extension.", -1,
+                                        module_methods, NULL, NULL, NULL, NULL};
+
+#define TS_STR2(x) #x
+#define TS_STR(x) TS_STR2(x)
+
+PyMODINIT_FUNC PyInit__core(void)
+{
+    import_array();
+    init_bernstein();
+    if (PyType_Ready(&SplineHandleType) < 0 || PyType_Ready(&CurveHandleType) < 0)
+        return NULL;
+    PyObject *m = PyModule_Create(&module_def);
+    if (!m)
+        return NULL;
+    LibraryError = PyErr_NewException("trigspline._core.LibraryError", PyExc_ValueError, NULL);
+    if (!LibraryError || PyModule_AddObject(m, "LibraryError", LibraryError) < 0)
+        goto fail;
+    Py_INCREF(LibraryError);
+    /* the version of include/trigspline.h this module was compiled with */
+    if (PyModule_AddStringConstant(m, "HEADER_VERSION",
+                                   TS_STR(TS_VERSION_MAJOR) "." TS_STR(TS_VERSION_MINOR) "." TS_STR(
+                                       TS_VERSION_PATCH)) < 0 ||
+        PyModule_AddIntConstant(m, "MODE_EXTEND", MODE_EXTEND) < 0 ||
+        PyModule_AddIntConstant(m, "MODE_CLAMP", MODE_CLAMP) < 0 ||
+        PyModule_AddIntConstant(m, "MODE_LINEAR", MODE_LINEAR) < 0 ||
+        PyModule_AddIntConstant(m, "MODE_NAN", MODE_NAN) < 0 ||
+        PyModule_AddIntConstant(m, "MODE_ERROR", MODE_ERROR) < 0)
+        goto fail;
+    Py_INCREF(&SplineHandleType);
+    Py_INCREF(&CurveHandleType);
+    if (PyModule_AddObject(m, "SplineHandle", (PyObject *)&SplineHandleType) < 0 ||
+        PyModule_AddObject(m, "CurveHandle", (PyObject *)&CurveHandleType) < 0)
+        goto fail;
+    return m;
+fail:
+    Py_DECREF(m);
+    return NULL;
+}
