@@ -669,7 +669,8 @@ that kind, and says plainly where the alternatives are just as good.</p>
 <p><b>In short.</b> On plain non-negative data (and any constant floor or ceiling) PCHIP and GSL steffen stay
 inside too, because they never leave the range of neighbouring data: use them if that is all you need.
 What only trigspline gives: bounds that are <b>sloped lines</b> (above a trend, below a capacity that grows),
-<b>two lines at once</b>, <b>smooth closed curves kept inside a box</b>, and for every curve an <b>exact certificate</b>
+<b>a band between two sloped lines</b> (the paper page, Figure 7), <b>smooth closed curves kept inside a
+box</b>, and for every curve an <b>exact certificate</b>
 — the least distance to each bound on every interval, from the critical points of the curve, not from samples.</p>
 <p class="small">Every number and plot below was computed when this page was made (<code>make demo</code>,
 scripts/why_demo.py). Our curves come from the <code>trigspline</code> commands shown in full, always with
