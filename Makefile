@@ -56,7 +56,7 @@ build-asan:
 	  -DTS_SANITIZE=ON >/dev/null
 	$(CMAKE) --build build-asan -j $(JOBS)
 
-test: build build-asan build-clang python-deps
+test: why-deps python-deps build build-asan build-clang
 	$(call need,$(TEST_TOOLS))
 	$(call need_file,$(STATIC_LIBC),libc6-dev)
 	tests/run_all.sh build build-asan build-clang
@@ -90,6 +90,7 @@ accuracy: build
 # The main job: reproduce the paper's numerical section (Figures 2-7) as one page.
 demo: build
 	python3 scripts/paper_demo.py build/trigspline data/paper out/paper
+	$(MAKE) --no-print-directory why-demo
 
 clean:
 	rm -rf build build-asan build-clang build-bench out
@@ -118,3 +119,30 @@ bench-python: python-deps
 	env -u PIP_FIND_LINKS PIP_NO_INDEX=1 build-bench/python-venv/bin/pip install -q \
 	  --no-build-isolation ./bindings/python
 	cd build-bench && python-venv/bin/python ../bench/bench_python.py
+
+# The companion page "why trigspline" (out/why): our curves beside SciPy's and
+# GSL's on data/examples/, α guidance and the overshoot report.  Run by `make
+# demo`; needs numpy, scipy, matplotlib for /usr/bin/python3 and GSL (gsl_eval).
+WHY_DEPS := /usr/include/gsl/gsl_interp.h:libgsl-dev \
+  /usr/lib/python3/dist-packages/numpy/__init__.py:python3-numpy \
+  /usr/lib/python3/dist-packages/scipy/__init__.py:python3-scipy \
+  /usr/lib/python3/dist-packages/matplotlib/__init__.py:python3-matplotlib \
+  /usr/bin/python3:python3
+.PHONY: why-deps why-demo test-web
+why-deps:
+	@missing=""; for p in $(WHY_DEPS); do test -e "$${p%%:*}" || missing="$$missing $${p#*:}"; done; \
+	if [ -n "$$missing" ]; then echo "installing:$$missing"; \
+	  apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y $$missing; fi
+
+why-demo: why-deps build
+	CC=gcc $(CMAKE) -S . -B build >/dev/null
+	$(CMAKE) --build build -j $(JOBS) --target gsl_eval
+	/usr/bin/python3 scripts/why_demo.py build data/examples out/why
+
+# Browser test of the why page: headless Chromium (Debian) driven by
+# playwright-core (npm, tests/browser/package.json); screenshot + pixel check.
+test-web: why-demo
+	$(call need,chromium:chromium node:nodejs npm:npm)
+	test -d tests/browser/node_modules/playwright-core || \
+	  (cd tests/browser && npm install --no-audit --no-fund --loglevel=error)
+	node tests/browser/why_page.mjs out/why/index.html

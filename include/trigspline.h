@@ -405,6 +405,16 @@ typedef struct ts_interval_report {
     double gap_upper;       /* exact min of upper(x) - S(x) (NaN if !has_upper) */
     double at_upper;
     int certified;          /* every active gap > 0 (with the rounding guard of certify.c) */
+    /* Range and overshoot of the interval (docs/method.md §5.9), for every
+     * spline (shape scheme or not; also from ts_certify, and per coordinate
+     * from ts_curve_certify*, there in the parameter t).  Exact extrema of the
+     * interval's trigonometric polynomial, computed as the gaps are (the gap to
+     * the line y = 0), without a rounding guard.  NaN when not computed. */
+    double y_min, at_y_min; /* min of S over [x0, x1] and an x where it is attained */
+    double y_max, at_y_max; /* max of S over [x0, x1] and an x where it is attained */
+    double excursion_above; /* y_max - max(S(x0), S(x1)) >= 0: how far the curve rises above
+                             * the larger of the interval's two data values (0: it does not) */
+    double excursion_below; /* min(S(x0), S(x1)) - y_min >= 0: how far it dips below the smaller */
 } ts_interval_report;
 /*
  * The gaps are exact: the minimum of a degree-3 trigonometric polynomial

@@ -165,6 +165,35 @@ double ts__gap_ctl(const ts_spline *sp, size_t i, const double B[4], const doubl
     return g;
 }
 
+/* docs/method.md §5.9: the excursions beyond the end values B0 = S(x0), B3 = S(x1). */
+static void set_excursions(const double B[4], ts_interval_report *rep)
+{
+    double hi = B[0] > B[3] ? B[0] : B[3], lo = B[0] < B[3] ? B[0] : B[3];
+    double ea = rep->y_max - hi, eb = lo - rep->y_min;
+    rep->excursion_above = ea < 0.0 ? 0.0 : ea; /* NaN stays NaN */
+    rep->excursion_below = eb < 0.0 ? 0.0 : eb;
+}
+
+void ts__range_ctl(const ts_spline *sp, size_t i, const double B[4], const double *X,
+                   ts_interval_report *rep)
+{
+    const ts_line zero = {0.0, 0.0};
+    rep->y_min = ts__gap_ctl(sp, i, B, X, &zero, 1, &rep->at_y_min, NULL);
+    rep->y_max = -ts__gap_ctl(sp, i, B, X, &zero, -1, &rep->at_y_max, NULL);
+    set_excursions(B, rep);
+}
+
+void ts__range_segment(const double B[4], double ti, double h, ts_interval_report *rep)
+{
+    const ts_line zero = {0.0, 0.0};
+    double th;
+    rep->y_min = ts__gap_segment(B, ti, h, &zero, 1, &th, NULL, NULL, NULL);
+    rep->at_y_min = ti + h * th / TS_HALF_PI;
+    rep->y_max = -ts__gap_segment(B, ti, h, &zero, -1, &th, NULL, NULL, NULL);
+    rep->at_y_max = ti + h * th / TS_HALF_PI;
+    set_excursions(B, rep);
+}
+
 /* B of interval i; X (docs/method.md §4) only in the geometric form, the one that uses it. */
 void ts__controls_of(const ts_spline *sp, size_t i, double B[4], double X[4], int *geo)
 {

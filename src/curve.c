@@ -738,6 +738,8 @@ static void reports_clear(const ts_curve *c, ts_interval_report *reports)
         r->has_lower = r->has_upper = 0;
         r->gap_lower = r->at_lower = r->gap_upper = r->at_upper = (double)NAN;
         r->certified = 0;
+        r->y_min = r->at_y_min = r->y_max = r->at_y_max = (double)NAN;
+        r->excursion_above = r->excursion_below = (double)NAN;
     }
 }
 
@@ -769,6 +771,7 @@ static ts_status certify_with(const ts_curve *c, const struct curve_box *bx,
             r->gap_upper = ghi;
             r->at_upper = c->t[i] + h * thi / TS_HALF_PI;
             r->certified = ok;
+            ts__range_segment(r->B, c->t[i], h, r);
         }
     }
     if (first != TS_NO_INDEX)

@@ -268,6 +268,15 @@ double ts__gap_segment(const double B[4], double xi, double h, const ts_line *ln
  * x, *guard (may be NULL) the rounding guard of the value. */
 double ts__gap_ctl(const ts_spline *sp, size_t i, const double B[4], const double *X,
                    const ts_line *ln, int sign, double *at, double *guard);
+/* Range of interval i with controls B (X in the geometric form, else NULL):
+ * the exact min and max of S (its gaps to the line y = 0, docs/method.md §5.9)
+ * with their x, and the excursions beyond B0, B3, into rep's y_min,
+ * at_y_min, y_max, at_y_max, excursion_above, excursion_below. */
+void ts__range_ctl(const ts_spline *sp, size_t i, const double B[4], const double *X,
+                   ts_interval_report *rep);
+/* The same for a segment with controls B on [ti, ti + h] (curve coordinates;
+ * the places in the parameter). */
+void ts__range_segment(const double B[4], double ti, double h, ts_interval_report *rep);
 /* The same for interval i as stored. */
 double ts__interval_gap(const ts_spline *sp, size_t i, const ts_line *line, int sign, double *at);
 /* Geometric form: every local control gap above its rounding and the

@@ -19,6 +19,7 @@ static void report_base(const ts_spline *s, size_t i, ts_interval_report *rep)
     rep->has_lower = rep->has_upper = 0;
     rep->gap_lower = rep->at_lower = rep->gap_upper = rep->at_upper = (double)NAN;
     rep->certified = 0;
+    ts__range_ctl(s, i, rep->B, geo ? X : NULL, rep);
 }
 
 static void report_clear(ts_interval_report *rep)
@@ -29,6 +30,8 @@ static void report_clear(ts_interval_report *rep)
     rep->has_lower = rep->has_upper = 0;
     rep->gap_lower = rep->at_lower = rep->gap_upper = rep->at_upper = (double)NAN;
     rep->certified = 0;
+    rep->y_min = rep->at_y_min = rep->y_max = rep->at_y_max = (double)NAN;
+    rep->excursion_above = rep->excursion_below = (double)NAN;
 }
 
 ts_status ts_spline_report(const ts_spline *s, size_t i, ts_interval_report *rep)

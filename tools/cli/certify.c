@@ -105,6 +105,12 @@ int cli_certify(cli_opts *o)
     if (o->svg && (rc = cli_spline_plot(o, d.name, s, shape, lower, upper, &bad, &svg)) != CLI_OK)
         goto done;
     rc = cli_write_outputs(o->out, o->json ? &j.b : &text, NULL, NULL, o->svg, &svg);
+    if (rc == CLI_OK) {
+        cli_overshoot ov;
+        cli_overshoot_init(&ov);
+        cli_overshoot_add(&ov, s, 0, n, 0);
+        cli_overshoot_warn(&ov);
+    }
     if (rc == CLI_OK && !certified) {
         size_t cnt = 0;
         for (size_t i = 0; i < n; i++)

@@ -273,6 +273,30 @@ int cli_fit(cli_opts *o);
 int cli_certify(cli_opts *o);
 int cli_curve(cli_opts *o);
 
+/* ---- overshoot.c ----------------------------------------------------- */
+/* The curve's range and its largest excursions beyond the data of an
+ * interval (the report's y_min ... excursion_below, docs/method.md §5.9),
+ * gathered over the intervals written.  A warning is printed when an
+ * excursion exceeds CLI_OVERSHOOT_FRACTION of the data range (docs/cli.md). */
+#define CLI_OVERSHOOT_FRACTION 0.1
+typedef struct cli_overshoot {
+    double data_min, data_max; /* of the knots seen */
+    double y_min, y_max;       /* of the curve */
+    double above, below;       /* largest excursion_above, excursion_below */
+    size_t i_above, i_below;   /* their intervals (global index) */
+    ts_interval_report r_above, r_below;
+    size_t count;              /* intervals seen */
+} cli_overshoot;
+void cli_overshoot_init(cli_overshoot *w);
+/* Intervals [i0, i1) of s; offset = the global index of s's interval 0. */
+void cli_overshoot_add(cli_overshoot *w, const ts_spline *s, size_t i0, size_t i1, size_t offset);
+/* The larger excursion relative to the data range (0 for no data). */
+double cli_overshoot_ratio(const cli_overshoot *w);
+/* One warning line on stderr when cli_overshoot_ratio > CLI_OVERSHOOT_FRACTION. */
+void cli_overshoot_warn(const cli_overshoot *w);
+/* The "overshoot" object of the JSON report. */
+void cli_overshoot_json(cli_json *j, const cli_overshoot *w);
+
 /* ---- help.c ---------------------------------------------------------- */
 void cli_print_help(cli_cmd cmd);
 void cli_print_main_help(void);

@@ -135,6 +135,12 @@ int cli_fit(cli_opts *o)
     if (o->svg && (rc = cli_spline_plot(o, d.name, s, shape, lower, upper, NULL, &svg)) != CLI_OK)
         goto done;
     rc = cli_write_outputs(o->out, o->json ? &j.b : &text, fn, &cc, o->svg, &svg);
+    if (rc == CLI_OK) {
+        cli_overshoot ov;
+        cli_overshoot_init(&ov);
+        cli_overshoot_add(&ov, s, 0, ts_spline_intervals(s), 0);
+        cli_overshoot_warn(&ov);
+    }
 done:
     cli_json_free(&j);
     tsu_plot_buf_free(&svg);

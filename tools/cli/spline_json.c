@@ -106,6 +106,12 @@ void cli_spline_json(cli_json *j, const cli_opts *o, const ts_spline *s, ts_shap
         else
             cli_json_null(j);
         cli_json_kbool(j, "certified", r.certified);
+        cli_json_knum(j, "y_min", r.y_min);
+        cli_json_knum(j, "at_y_min", r.at_y_min);
+        cli_json_knum(j, "y_max", r.y_max);
+        cli_json_knum(j, "at_y_max", r.at_y_max);
+        cli_json_knum(j, "excursion_above", r.excursion_above);
+        cli_json_knum(j, "excursion_below", r.excursion_below);
         cli_json_end(j, '}');
     }
     cli_json_end(j, ']');
@@ -125,6 +131,11 @@ void cli_spline_json(cli_json *j, const cli_opts *o, const ts_spline *s, ts_shap
         cli_json_null(j);
     cli_json_kuint(j, "count", smp->count);
     cli_json_end(j, '}');
+    cli_json_nl(j);
+    cli_overshoot ov;
+    cli_overshoot_init(&ov);
+    cli_overshoot_add(&ov, s, 0, n, 0);
+    cli_overshoot_json(j, &ov);
     cli_json_end(j, '}');
     cli_json_raw(j, "\n");
 }

@@ -55,6 +55,7 @@ typedef struct stream {
     cli_out out;
     int started;
     int debug; /* TRIGSPLINE_DEBUG: report border rebuilds */
+    cli_overshoot ov; /* of the intervals written */
 } stream;
 
 typedef struct chunk {
@@ -289,6 +290,7 @@ static int emit(stream *s, const chunk *c, int last)
     }
     rc = cli_sample(c->s, c->e0 - c->wl, c->e1 - c->wl, last, s->o->samples, s->o->deriv,
                     cli_sink_writer, s->w);
+    cli_overshoot_add(&s->ov, c->s, c->e0 - c->wl, c->e1 - c->wl, c->wl);
     if (!rc)
         return CLI_OK;
 werr:
@@ -312,6 +314,7 @@ int cli_fit_stream(const cli_opts *o, const ts_options *opt)
     memset(&next, 0, sizeof next);
     s.o = o;
     s.opt = opt;
+    cli_overshoot_init(&s.ov);
     s.chunk = CLI_CHUNK;
     s.cx = o->columns_set ? o->col_x : 0;
     s.cy = o->columns_set ? o->col_y : 1;
@@ -413,6 +416,8 @@ done:
             if (cli_out_commit(&s.out, msg, sizeof msg)) {
                 cli_error("%s", msg);
                 rc = CLI_IO;
+            } else {
+                cli_overshoot_warn(&s.ov);
             }
         } else {
             if (!o->out || strcmp(o->out, "-") == 0)

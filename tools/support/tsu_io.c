@@ -1703,9 +1703,20 @@ int tsu_out_open(tsu_out **out, const char *path, unsigned flags, char *errbuf, 
     }
     memcpy(o->tmp, path, n);
     memcpy(o->tmp + n, ".tmp.XXXXXX", 12);
-    fd = mkstemp(o->tmp);
-    if (fd >= 0)
-        out_register(o->tmp);
+    {
+        /* no SIGINT/SIGTERM/SIGHUP between creating the file and registering
+         * it for the handler (a signal there left the temporary file behind) */
+        sigset_t block, prev;
+        sigemptyset(&block);
+        for (int k = 0; k < 3; k++)
+            sigaddset(&block, out_signals[k]);
+        int masked = sigprocmask(SIG_BLOCK, &block, &prev) == 0;
+        fd = mkstemp(o->tmp);
+        if (fd >= 0)
+            out_register(o->tmp);
+        if (masked)
+            (void)sigprocmask(SIG_SETMASK, &prev, NULL);
+    }
     if (fd < 0) {
         e = errno;
         msg_set(errbuf, errlen, "cannot create temporary file for \"%s\": %s", path, strerror(e));

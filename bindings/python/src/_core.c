@@ -717,13 +717,16 @@ static PyObject *spline_control(SplineHandle *self, PyObject *unused)
 
 static PyObject *report_tuple(const ts_interval_report *r)
 {
-    return Py_BuildValue("(ddddd(dddd)iiiddddi)", r->x0, r->x1, r->alpha, r->beta, r->a, r->B[0],
-                         r->B[1], r->B[2], r->B[3], (int)r->term, r->has_lower, r->has_upper,
-                         r->gap_lower, r->at_lower, r->gap_upper, r->at_upper, r->certified);
+    return Py_BuildValue("(ddddd(dddd)iiiddddidddddd)", r->x0, r->x1, r->alpha, r->beta, r->a,
+                         r->B[0], r->B[1], r->B[2], r->B[3], (int)r->term, r->has_lower,
+                         r->has_upper, r->gap_lower, r->at_lower, r->gap_upper, r->at_upper,
+                         r->certified, r->y_min, r->at_y_min, r->y_max, r->at_y_max,
+                         r->excursion_above, r->excursion_below);
 }
 
 /* report(i) -> tuple (x0, x1, alpha, beta, a, (B0..B3), term, has_lower,
- * has_upper, gap_lower, at_lower, gap_upper, at_upper, certified). */
+ * has_upper, gap_lower, at_lower, gap_upper, at_upper, certified, y_min, at_y_min,
+ * y_max, at_y_max, excursion_above, excursion_below). */
 static PyObject *spline_report(SplineHandle *self, PyObject *args)
 {
     Py_ssize_t i;

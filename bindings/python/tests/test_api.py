@@ -206,6 +206,27 @@ def test_accessors():
     assert s.form == "paper" and s.shape == "positive"
 
 
+def test_report_overshoot_against_dense_sampling():
+    """report()'s curve range and excursions (docs/method.md §5.9) against the
+    spline sampled at 20001 points per interval: the exact extremum is never
+    beaten by a sample, and the best sample comes within the sampling error: the
+    extremum lies within half a step dt of a sample, where S' = 0, so the sample
+    is at most max|S''| (dt/2)^2 / 2 below it."""
+    x = np.array([0.0, 1.0, 2.0, 3.0, 4.0, 5.0])
+    f = np.array([0.0, 12.5, 0.0, 3.0, 0.0, 8.0])
+    s = Spline(x, f, shape="positive", alpha=0.1, form="paper")
+    for i, r in enumerate(s.report()):
+        t = np.linspace(x[i], x[i + 1], 20001)
+        y = s(t)
+        tol = np.abs(s(t, 2)).max() * (t[1] - t[0]) ** 2 / 8 * 1.01 + 1e-12
+        assert r["y_min"] <= y.min() + 1e-12 and r["y_max"] >= y.max() - 1e-12
+        assert abs(r["y_max"] - y.max()) < tol and abs(r["y_min"] - y.min()) < tol
+        assert x[i] <= r["at_y_max"] <= x[i + 1] and x[i] <= r["at_y_min"] <= x[i + 1]
+        assert abs(r["excursion_above"] - (y.max() - max(f[i], f[i + 1]))) < tol
+        assert abs(r["excursion_below"] - (min(f[i], f[i + 1]) - y.min())) < tol
+    assert max(r["excursion_above"] for r in s.report()) > 1.0  # small α overshoots
+
+
 def test_form_default_follows_library():
     x, f = smooth_data()
     from trigspline import _core

@@ -66,7 +66,9 @@ def _report_dict(r):
             "term": TERMS[term] if 0 <= term < len(TERMS) else term,
             "has_lower": bool(r[7]), "has_upper": bool(r[8]),
             "gap_lower": r[9], "at_lower": r[10], "gap_upper": r[11], "at_upper": r[12],
-            "certified": bool(r[13])}
+            "certified": bool(r[13]),
+            "y_min": r[14], "at_y_min": r[15], "y_max": r[16], "at_y_max": r[17],
+            "excursion_above": r[18], "excursion_below": r[19]}
 
 
 def estimate_slopes(x: ArrayLike, f: ArrayLike, method: str = "arithmetic") -> np.ndarray:
@@ -615,7 +617,10 @@ class Spline:
         """One dict per interval (``ts_spline_report``, first series): x0, x1,
         alpha, beta, a, B, term (which rule chose β), has_lower/has_upper,
         gap_lower, at_lower, gap_upper, at_upper (exact minimum distance to
-        each boundary and where), certified."""
+        each boundary and where), certified, and the overshoot: y_min,
+        at_y_min, y_max, at_y_max (the curve's exact range on the interval and
+        where), excursion_above, excursion_below (how far it leaves the range
+        of the interval's two data values; docs/method.md §5.9)."""
         h = self._h[0]
         return [_report_dict(h.report(i)) for i in range(self._n)]
 

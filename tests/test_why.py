@@ -1,0 +1,205 @@
+#!/usr/bin/env python3
+"""The "why trigspline" page of `make demo` (scripts/why_demo.py): built into a
+temporary directory with BUILD_DIR's trigspline and gsl_eval, then checked.
+
+Usage: python3 tests/test_why.py BUILD_DIR
+(re-runs itself under /usr/bin/python3 when the interpreter lacks numpy/scipy:
+they come from Debian, `make test` installs them through `make why-deps`).
+
+Numbers the page states are re-derived here independently and compared with
+the value printed in the cell (data-key attribute; 4 significant digits, so
+a relative tolerance of 5e-4 for the printing, plus the page's sampling error):
+  - SciPy CubicSpline's least value on the rainfall, exactly: min over the knots
+    and the real roots of its derivative in each interval (the page samples
+    2000 points per interval; the sampling error is below 1/2 max|y''| (h/4000)^2,
+    < 1e-5 here);
+  - GSL cspline on the growth data re-derived as SciPy's natural cubic spline
+    (GSL's cspline is the natural spline: the same function), its least gap
+    to the line 1.5 t + 10 by 20000 samples per interval;
+  - PCHIP's least gap to that line, 20000 samples per interval;
+  - SciPy's periodic CubicSpline outline: least distance to the box;
+  - our certificates (exact) against dense samples of our own curve from the
+    CLI (the sampled least gap is >= the exact one minus rounding, and within
+    the sampling bound of it);
+  - the overshoot example's y_max against the largest of 2000 samples per
+    interval of that curve.
+Also: every command shown names --form, no command is abbreviated, every
+plot is an SVG that xml.etree accepts, the paper page is linked.
+Prints "test_why: N passed, M failed" last.
+"""
+import os
+import subprocess
+import sys
+
+try:
+    import numpy as np
+    from scipy.interpolate import CubicSpline, PchipInterpolator
+except ImportError:
+    if sys.executable != "/usr/bin/python3" and os.path.exists("/usr/bin/python3"):
+        os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
+    print("test_why: numpy/scipy missing for %s (make why-deps installs them)" % sys.executable)
+    print("test_why: 0 passed, 1 failed")
+    sys.exit(1)
+import html
+import io
+import json
+import re
+import tempfile
+import xml.etree.ElementTree as ET
+
+BUILD = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else "build")
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+DATA = os.path.join(REPO, "data", "examples")
+CLI = os.path.join(BUILD, "trigspline")
+passed = failed = 0
+
+
+def check(cond, what):
+    global passed, failed
+    if cond:
+        passed += 1
+    else:
+        failed += 1
+        print("FAIL:", what)
+
+
+def read_xy(name):
+    with open(os.path.join(DATA, name)) as fh:
+        lines = [ln.strip() for ln in fh if ln.strip() and not ln.lstrip().startswith("#")]
+    rows = np.array([[float(v) for v in ln.split(",")] for ln in lines[1:]])
+    return rows[:, 0], rows[:, 1]
+
+
+def cell_values(page):
+    """data-key -> the number printed in that element."""
+    out = {}
+    for m in re.finditer(r'<(td|b)[^>]*data-key="([^"]+)"[^>]*>([^<]*)<', page):
+        txt = m.group(3).replace("−", "-").strip()
+        try:
+            out[html.unescape(m.group(2))] = float(txt)
+        except ValueError:
+            pass
+    return out
+
+
+def close(printed, exact, extra=0.0):
+    return abs(printed - exact) <= 5e-4 * abs(exact) + extra + 1e-12
+
+
+def dense(x, m):
+    return np.concatenate([x[i] + (x[i + 1] - x[i]) * np.arange(m) / m for i in range(len(x) - 1)]
+                          + [x[-1:]])
+
+
+def main():
+    if not os.access(os.path.join(BUILD, "gsl_eval"), os.X_OK):
+        print("test_why: %s/gsl_eval not built (GSL missing: make why-deps)" % BUILD)
+        print("test_why: 0 passed, 1 failed")
+        return 1
+    with tempfile.TemporaryDirectory() as out:
+        p = subprocess.run(["/usr/bin/python3", os.path.join(REPO, "scripts", "why_demo.py"), BUILD, DATA, out],
+                           capture_output=True, text=True)
+        check(p.returncode == 0, "why_demo.py exit %d: %s" % (p.returncode, p.stderr[-800:]))
+        if p.returncode:
+            return 1
+        with open(os.path.join(out, "index.html"), encoding="utf-8") as fh:
+            page = fh.read()
+        with open(os.path.join(out, "numbers.json")) as fh:
+            numbers = json.load(fh)
+    vals = cell_values(page)
+
+    # ---- structure
+    svgs = re.findall(r"<svg.*?</svg>", page, re.S)
+    check(len(svgs) >= 5, "at least 5 plots (got %d)" % len(svgs))
+    for i, s in enumerate(svgs):
+        try:
+            ET.fromstring(s)
+            ok = True
+        except ET.ParseError as e:
+            ok = False
+            print("svg %d: %s" % (i, e))
+        check(ok, "plot %d is well-formed SVG" % i)
+    cmds = [html.unescape(c) for c in re.findall(r"(?:^|<pre>)\$ ([^\n<]*)", page, re.M)]
+    check(len(cmds) >= 12, "commands shown (%d)" % len(cmds))
+    for c in cmds:
+        check("--form " in c or " curve " in c, "command states --form: %s" % c)
+        check("…" not in c and "..." not in c, "command in full: %s" % c)
+        check(c.startswith("build/trigspline "), "command as typed from the repository: %s" % c)
+    check('href="../paper/index.html"' in page, "links the paper page")
+    check("surfaces" in page, "says the gridded field waits for surfaces")
+    for k in ("rainfall/SciPy CubicSpline/lower", "growth/GSL cspline/lower", "growth/SciPy PCHIP/lower",
+              "outline/SciPy CubicSpline/box", "rainfall/ours/lower", "growth/ours/lower", "overshoot/0.1/y_max"):
+        check(k in vals, "page states %s" % k)
+        check(k in numbers and k not in vals or close(vals.get(k, 0.0), numbers.get(k, 1e300)),
+              "numbers.json agrees with the page for %s" % k)
+    if failed:
+        return 1
+
+    # ---- rainfall: SciPy CubicSpline's exact minimum
+    x, f = read_xy("rainfall_daily.csv")
+    cs = CubicSpline(x, f)
+    cand = list(x)
+    for r in cs.derivative().roots(extrapolate=False):
+        cand.append(r)
+    exact = float(np.min(cs(np.array(cand))))
+    check(exact < 0, "CubicSpline dips below 0 on the rainfall (%g)" % exact)
+    check(close(vals["rainfall/SciPy CubicSpline/lower"], exact, 1e-5),
+          "rainfall CubicSpline minimum: page %r, exact %r" % (vals["rainfall/SciPy CubicSpline/lower"], exact))
+
+    # ---- growth: GSL cspline = natural cubic spline; PCHIP; the sloped line
+    x, f = read_xy("growth_above_trend.csv")
+    xs = dense(x, 20000)
+    line = 1.5 * xs + 10
+    nat = float(np.min(CubicSpline(x, f, bc_type="natural")(xs) - line))
+    check(close(vals["growth/GSL cspline/lower"], nat, 1e-6),
+          "growth GSL cspline least gap: page %r, natural spline %r" % (vals["growth/GSL cspline/lower"], nat))
+    pch = float(np.min(PchipInterpolator(x, f)(xs) - line))
+    check(pch < 0, "PCHIP crosses the rising line (%g)" % pch)
+    check(close(vals["growth/SciPy PCHIP/lower"], pch, 1e-6),
+          "growth PCHIP least gap: page %r, re-derived %r" % (vals["growth/SciPy PCHIP/lower"], pch))
+
+    # ---- outline: periodic CubicSpline per coordinate on our knots
+    px, py = read_xy("field_outline.csv")
+    js = json.loads(subprocess.run([CLI, "curve", os.path.join(DATA, "field_outline.csv"), "--closed", "--param",
+                                    "centripetal", "--box", "0,100,0,60", "--json"],
+                                   capture_output=True, text=True).stdout)
+    t = np.asarray(js["knots"], float)
+    ts = dense(t, 20000)
+    X = CubicSpline(t, np.append(px, px[0]), bc_type="periodic")(ts)
+    Y = CubicSpline(t, np.append(py, py[0]), bc_type="periodic")(ts)
+    g = float(np.min(np.minimum.reduce([X, 100 - X, Y, 60 - Y])))
+    check(close(vals["outline/SciPy CubicSpline/box"], g, 1e-5),
+          "outline CubicSpline box distance: page %r, re-derived %r" % (vals["outline/SciPy CubicSpline/box"], g))
+    check(close(vals["outline/ours/box"], js["min_gap"]), "outline: our certificate stated")
+
+    # ---- ours: the exact certificate against dense samples of our curve
+    for key, name, args, lo in (("rainfall", "rainfall_daily.csv", ["--shape", "positive"], lambda s: 0 * s),
+                                ("growth", "growth_above_trend.csv", ["--lower", "1.5,10"], lambda s: 1.5 * s + 10)):
+        q = subprocess.run([CLI, "fit", os.path.join(DATA, name), "--form", "paper"] + args +
+                           ["--alpha", "1", "--samples", "2001"], capture_output=True, text=True)
+        d = np.genfromtxt(io.StringIO(q.stdout), delimiter=",", names=True)
+        smin = float(np.min(d["y"] - lo(d["x"])))
+        page_v = vals["%s/ours/lower" % key]
+        span = float(np.max(d["y"]) - np.min(d["y"]))
+        # sampled >= exact (up to rounding); exact within the sampling bound below
+        check(smin >= page_v * (1 - 5e-4) - 1e-12 * span, "%s: samples below our certificate (%r < %r)"
+              % (key, smin, page_v))
+        check(smin - page_v <= 5e-4 * abs(page_v) + 1e-3 * span,
+              "%s: certificate %r far below the sampled least gap %r" % (key, page_v, smin))
+
+    # ---- the overshoot example
+    q = subprocess.run([CLI, "fit", os.path.join(DATA, "rainfall_daily.csv"), "--form", "paper", "--shape",
+                        "positive", "--alpha", "0.1", "--samples", "2001"], capture_output=True, text=True)
+    d = np.genfromtxt(io.StringIO(q.stdout), delimiter=",", names=True)
+    ymax = float(np.max(d["y"]))
+    check(close(vals["overshoot/0.1/y_max"], ymax, 1e-3),
+          "overshoot example: page y_max %r, sampled %r" % (vals["overshoot/0.1/y_max"], ymax))
+    check(ymax > 1.2 * float(np.max(read_xy("rainfall_daily.csv")[1])), "the example does overshoot")
+    check("warning: the curve rises" in page, "the page shows the CLI's overshoot warning")
+    return 0 if failed == 0 else 1
+
+
+if __name__ == "__main__":
+    rc = main()
+    print("test_why: %d passed, %d failed" % (passed, failed))
+    sys.exit(1 if failed else rc)
