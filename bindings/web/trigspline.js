@@ -60,13 +60,22 @@ function decodeBase64(b64) {
 }
 
 // load(options): instantiate the module.  options.wasm: the wasm bytes or a
-// WebAssembly.Module (default: the copy embedded in this file);
+// WebAssembly.Module (default: trigspline.wasm next to this file, or the copy
+// inlined in a page, WASM_BASE64);
 // options.maxMemoryMB: cap of the module's heap (default 2048).
 export async function load(options = {}) {
   let wasm = options.wasm;
-  if (wasm === undefined) {
-    if (typeof WASM_BASE64 !== 'string') throw new Error('trigspline: no wasm given or embedded');
-    wasm = decodeBase64(WASM_BASE64);
+  if (wasm === undefined && typeof WASM_BASE64 === 'string') wasm = decodeBase64(WASM_BASE64); // a page with it inlined
+  if (wasm === undefined) { // trigspline.wasm next to this file
+    const url = new URL('trigspline.wasm', import.meta.url);
+    if (url.protocol === 'file:' && typeof process === 'object' && process.versions?.node) {
+      const { readFile } = await import('node:fs/promises');
+      wasm = await readFile(url);
+    } else {
+      const r = await fetch(url);
+      if (!r.ok) throw new Error(`trigspline: cannot load ${url}: ${r.status}`);
+      wasm = await r.arrayBuffer();
+    }
   }
   const maxPages = Math.floor((options.maxMemoryMB ?? 2048) * 16);
   // 32 pages = the build's -sINITIAL_MEMORY=2MB (Makefile, target web)

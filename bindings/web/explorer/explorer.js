@@ -206,13 +206,14 @@ function drawPlot() {
   }
   const P = state.points;
   // selected / refused interval bands
-  const band = (i, cls) => {
+  const band = (i, cls, why) => {
     if (state.mode !== 'function' || i === null || i < 0 || i + 1 >= P.length) return;
-    el('rect', { class: cls, x: sx(P[i][0]), y: M.t, width: Math.max(1, sx(P[i + 1][0]) - sx(P[i][0])), height: H - M.t - M.b, 'data-interval': i });
+    const b = el('rect', { class: cls, x: sx(P[i][0]), y: M.t, width: Math.max(1, sx(P[i + 1][0]) - sx(P[i][0])), height: H - M.t - M.b, 'data-interval': i });
+    if (why) el('title', {}, b).textContent = why;
   };
   band(selected, 'selint');
-  if (!result.ok && result.error.where === 'interval') band(result.error.index, 'badint');
-  if (result.ok) result.rows.forEach((r, i) => { if (state.mode === 'function' && !r.certified && state.scheme !== 'none') band(i, 'badint'); });
+  if (!result.ok && result.error.where === 'interval') band(result.error.index, 'badint', result.error.message);
+  if (result.ok) result.rows.forEach((r, i) => { if (state.mode === 'function' && !r.certified && state.scheme !== 'none') band(i, 'badint', 'not certified'); });
   // comparison curves
   if (state.mode === 'function' && result.ok && P.length > 2) {
     const x = P.map((p) => p[0]), f = P.map((p) => p[1]);
@@ -429,7 +430,7 @@ on('ovcubic', 'change', () => { state.overlay.cubic = $('ovcubic').checked; upda
 on('ovpchip', 'change', () => { state.overlay.pchip = $('ovpchip').checked; update(); });
 on('cert', 'click', (ev) => {
   const tr = ev.target.closest('tr[data-interval]');
-  if (tr && state.mode === 'function') { selected = +tr.dataset.interval; render(); }
+  if (tr) { selected = +tr.dataset.interval; render(); }
 });
 on('datatable', 'change', (ev) => {
   const t = ev.target;

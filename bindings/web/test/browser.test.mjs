@@ -112,6 +112,11 @@ test('drag a point towards the bound: the curve stays in the region, the certifi
   assert.match(await page.locator('#status').innerText(), /Refused: TS_ERR_NEGATIVE: .*\(point 3\)/);
   assert.equal(await page.locator('circle.pt.bad').count(), 1);
   assert.equal(await page.locator('#curve').count(), 0);
+  // an infeasible interval (data above the steep line y = 10x with alpha = 10,
+  // tests/api/test_shape.c): marked, with the library's reason
+  await page.evaluate(() => window.explorer.set({ points: [[0, 1], [1, 10.3], [2, 21], [3, 31]], scheme: 'above', lower: { m: 10, c: 0 }, alpha: 10, form: 'paper' }));
+  assert.match(await page.locator('#status').innerText(), /Refused: TS_ERR_INFEASIBLE: .*\(interval 0\)/);
+  assert.match(await page.locator('rect.badint[data-interval="0"] title').textContent(), /TS_ERR_INFEASIBLE/);
   await page.close();
 });
 
@@ -198,7 +203,8 @@ test('exports are the CLI\'s output for the same data and options; screenshot', 
     assert.equal(got.replace(num, '#'), shipped.replace(num, '#'), `${kind}: the shipped CLI's text`);
   }
   assert.match(await page.locator('#cmdline').innerText(), /^trigspline fit data\.csv --shape between --lower 1,0\.1 --upper 8,6 --form c1 --slopes arithmetic --alphas /);
-  await page.screenshot({ path: join(ART, 'explorer.png') });
+  await page.evaluate(() => window.scrollTo(0, 0));
+  await page.screenshot({ path: join(ART, 'explorer.png'), fullPage: true });
   await page.close();
 });
 
