@@ -9,7 +9,8 @@ const linear = (d0, d1, r0, r1) => Object.assign((v) => r0 + ((v - d0) / (d1 - d
   { invert: (p) => d0 + ((p - r0) / (r1 - r0)) * (d1 - d0) });
 const x = linear(-0.3, 8.3, 0, canvas.width), y = linear(-0.4, 2.4, canvas.height, 0);
 
-function draw(factory, color) {
+function draw(factory, color, dash = []) {
+  ctx.setLineDash(dash);
   ctx.beginPath();
   const curve = factory(ctx);
   curve.lineStart();
@@ -20,11 +21,13 @@ function draw(factory, color) {
   ctx.stroke();
 }
 ctx.fillStyle = 'rgba(208,2,27,0.08)';
-ctx.fillRect(0, y(0), canvas.width, canvas.height - y(0));
+ctx.fillRect(0, y(0), canvas.width, canvas.height - y(0)); // below 0: forbidden for both
+ctx.fillRect(0, 0, canvas.width, y(2.2)); // above 2.2: forbidden for curveTrigBetween(0, 2.2)
 draw((c) => ({ lineStart() {}, lineEnd() {}, point(px, py) { c.lineTo(px, py); } }), '#bbb');
 draw(curveTrig.scales(x, y), '#e69500');
 draw(curveTrigPositive.scales(x, y), '#1f5fbf');
-draw(curveTrigBetween(0, 2.2).scales(x, y), '#2e8b57');
+draw(curveTrigBetween(0, 2.2).scales(x, y), '#2e8b57', [7, 5]);
+ctx.setLineDash([]);
 ctx.fillStyle = '#111';
 for (const [a, b] of data) { ctx.beginPath(); ctx.arc(x(a), y(b), 3.5, 0, 2 * Math.PI); ctx.fill(); }
 document.getElementById('note').textContent = 'drawn';

@@ -224,6 +224,15 @@ function drawPlot() {
     }
   }
   if (result.ok) el('path', { class: 'curve', id: 'curve', d: polyline(result.xs, result.ys) });
+  // legend of the curves drawn
+  const keys = [['curve', 'trigspline']];
+  if (state.mode === 'function' && state.overlay.cubic) keys.push(['cubic', 'natural cubic']);
+  if (state.mode === 'function' && state.overlay.pchip) keys.push(['pchip', 'PCHIP']);
+  keys.forEach(([cls, name], k) => {
+    const y = M.t + 12 + 14 * k;
+    el('line', { class: cls, x1: W - M.r - 130, y1: y, x2: W - M.r - 104, y2: y });
+    el('text', { class: 'tick', x: W - M.r - 98, y: y + 3 }).textContent = name;
+  });
   // constraint lines with their end handles, box corners
   if (state.mode === 'function') {
     for (const l of lines()) {
