@@ -283,7 +283,7 @@ test('curve factory: d3 protocol, bounds kept in data space', () => {
   for (const [, , py] of calls) assert.ok(sy.invert(py) >= 0);
   // the unconstrained curve dips below zero on the same data (what the scheme prevents)
   const calls2 = [];
-  const plain = lib.curveTrig.scales(sx, sy).samples(50).alpha(1)({ ...ctx, moveTo: (a, b) => calls2.push(b), lineTo: (a, b) => calls2.push(b) });
+  const plain = lib.curveTrig.scales(sx, sy).samples(50).alpha(1).form('paper')({ ...ctx, moveTo: (a, b) => calls2.push(b), lineTo: (a, b) => calls2.push(b) });
   plain.lineStart();
   for (const [a, b] of data) plain.point(sx(a), sy(b));
   plain.lineEnd();
@@ -304,6 +304,10 @@ const STATES = [
   { mode: 'function', points: [[0, 2], [2, 1.58], [3, 1.55], [5, 1.54], [15, 1.8], [25, 1.54]], scheme: 'positive', form: 'paper', slopes: 'arithmetic', alpha: 0.15, alphas: null, beta: 0, margin: 0.01 },
   { mode: 'function', points: [[0, 2.5], [1, 7], [2, 8], [4, 29], [5, 8], [6, 21], [8, 30]], scheme: 'between', lower: { m: 1, c: 0.1 }, upper: { m: 8, c: 6 }, form: 'c1', slopes: 'fritsch-carlson', alpha: 0.1, alphas: [0.1, 0.2, 0.3, 0.1, 1e-7, 2.5], beta: 0, margin: 0.01 },
   { mode: 'function', points: [[1e-7, 3], [0.5, -1], [1.25, 2e21]], scheme: 'none', form: 'geometric', slopes: 'akima', alpha: 1, alphas: null, beta: 0.25, margin: 0.01 },
+  { mode: 'function', points: [[1, 0.5], [2, 3], [3, 5], [9, 25], [12, 8], [14, 2], [15, 1]], scheme: 'above', lower: { m: 0.03, c: 0.3 }, form: 'paper', slopes: 'geometric', alpha: 0.01, alphas: null, beta: 0, margin: 0.02 },
+  { mode: 'function', points: [[0, 1.2], [0.4, 0.5], [2, 2], [3, 5], [5, 0.5]], scheme: 'below', upper: { m: 1, c: 2.5 }, form: 'geometric', slopes: 'harmonic', alpha: 0.2, alphas: null, beta: 0, margin: 0.01 },
+  { mode: 'function', points: [[0, 0], [1, 0], [2, 0.5], [3, 3], [4, 3.1]], scheme: 'monotone', form: 'c1', slopes: 'makima', alpha: 1, alphas: null, beta: 0, margin: 0.01 },
+  { mode: 'curve', points: [[-1, 0], [0, -1], [1, 0], [0, 1]], closed: false, param: 'uniform', slopes: 'fritsch-carlson', alpha: 0.37, alphas: [0.37, 0.5, 1], beta: 0.05, margin: 0.01, box: { on: false } },
   { mode: 'curve', points: [[0, 1], [1, 4], [2, 1], [3, 4]], closed: true, param: 'centripetal', slopes: 'arithmetic', alpha: 0.37, alphas: null, beta: 0.01, margin: 0.01, box: { on: true, xmin: -0.5, xmax: 3.5, ymin: 0.5, ymax: 4.5 } },
 ];
 
