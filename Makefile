@@ -4,7 +4,10 @@
 #   make build-asan ASan+UBSan build in build-asan/
 #   make test       all three builds, then tests/run_all.sh (package test and the
 #                   Python package's pytest included)
-#   make demo       the paper's numerical section as one page (out/paper)
+#   make demo       the paper's numerical section (out/paper) and the
+#                   "why trigspline" page (out/why)
+#   make web        the WebAssembly module and the explorer page (out/web)
+#   make test-web   Node and headless-Chromium tests of out/web and out/why
 #   make bench      benchmark against GSL and the build decisions -> bench/RESULTS.md
 #   make bench-python  the Python package against SciPy (also run by make bench)
 #   make accuracy   convergence study -> docs/accuracy.md, docs/accuracy.svg
@@ -128,7 +131,7 @@ WHY_DEPS := /usr/include/gsl/gsl_interp.h:libgsl-dev \
   /usr/lib/python3/dist-packages/scipy/__init__.py:python3-scipy \
   /usr/lib/python3/dist-packages/matplotlib/__init__.py:python3-matplotlib \
   /usr/bin/python3:python3
-.PHONY: why-deps why-demo test-web
+.PHONY: why-deps why-demo test-why-page
 why-deps:
 	@missing=""; for p in $(WHY_DEPS); do test -e "$${p%%:*}" || missing="$$missing $${p#*:}"; done; \
 	if [ -n "$$missing" ]; then echo "installing:$$missing"; \
@@ -141,8 +144,86 @@ why-demo: why-deps build
 
 # Browser test of the why page: headless Chromium (Debian) driven by
 # playwright-core (npm, tests/browser/package.json); screenshot + pixel check.
-test-web: why-demo
+# Part of `make test-web`.
+test-why-page: why-demo
 	$(call need,chromium:chromium node:nodejs npm:npm)
 	test -d tests/browser/node_modules/playwright-core || \
 	  (cd tests/browser && npm install --no-audit --no-fund --loglevel=error)
 	node tests/browser/why_page.mjs out/why/index.html
+# ---- Web: the library as WebAssembly and the explorer page (bindings/web) ----
+#   make web       out/web: trigspline.mjs (ES module, wasm embedded), trigspline.wasm,
+#                  trigspline-cli.mjs (the CLI, for the explorer's exports),
+#                  index.html (the explorer), example.html (curve factory), sizes.txt
+#   make test-web  Node tests (bit identity with a native build, every status, no leak,
+#                  exports = the CLI's bytes) and the browser test (Chromium driven by
+#                  playwright-core); screenshot and timings under out/web-test/;
+#                  and the why page's browser test (test-why-page).
+# Debian's emscripten (3.1.6); the same src/*.c.  emcc's JS optimizer needs Debian's
+# acorn module, which a node not from Debian does not find by itself: NODE_PATH.
+# ts_eval_batch_mt is not exported (no threads in the module), so pthreads are not linked.
+.PHONY: web test-web
+WEB_BUILD := build-web
+WEB_OUT := out/web
+# -O2, not -Oz: -Oz is 10 KB (gzipped) smaller but its results differ from the
+# native build's in the last bits (the geometric-mean slopes), docs/design.md.
+WEB_EMCC := NODE_PATH=/usr/share/nodejs emcc -std=c11 -O2 -Iinclude
+WEB_WARN := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion \
+  -Wstrict-prototypes -Wmissing-prototypes -Wformat=2 -Werror
+WEB_LIB_SRC := $(wildcard src/*.c)
+WEB_CLI_SRC := tools/support/tsu_io.c tools/support/tsu_plot.c $(wildcard tools/cli/*.c)
+WEB_FUNCS := ts_version ts_strerror ts_spline_free ts_spline_intervals ts_spline_x \
+  ts_spline_f ts_spline_slopes ts_spline_alpha ts_spline_beta ts_spline_form ts_spline_shape \
+  ts_spline_extrapolation ts_spline_a ts_spline_control ts_spline_certified ts_eval_deriv \
+  ts_eval_batch ts_integral ts_slopes_compute ts_error_bound ts_curve_free ts_curve_segments \
+  ts_curve_dim ts_curve_closed ts_curve_knots ts_curve_control ts_curve_params ts_curve_eval \
+  ts_curve_sample ts_curve_length tsw_spline_new tsw_curve_new tsw_defaults tsw_curve_defaults \
+  tsw_report tsw_certify tsw_curve_certify tsw_error_constants tsw_heap_top malloc free
+web_comma := ,
+web_space := $(web_empty) $(web_empty)
+WEB_EXPORTS := $(subst $(web_space),$(web_comma),$(patsubst %,'_%',$(WEB_FUNCS)))
+
+web: $(WEB_OUT)/index.html
+
+# the library: a standalone wasm (imports only its memory), 2 MB initial
+# (trigspline.js creates the memory: keep the two in step)
+$(WEB_BUILD)/trigspline.wasm: $(WEB_LIB_SRC) src/internal.h include/trigspline.h bindings/web/glue.c
+	$(call need,emcc:emscripten node:nodejs)
+	@mkdir -p $(WEB_BUILD)
+	$(WEB_EMCC) $(WEB_WARN) -Isrc $(WEB_LIB_SRC) bindings/web/glue.c -sSTANDALONE_WASM --no-entry \
+	  -sIMPORTED_MEMORY -sINITIAL_MEMORY=2MB -sTOTAL_STACK=1MB -sALLOW_MEMORY_GROWTH \
+	  -sMAXIMUM_MEMORY=2GB -sFILESYSTEM=0 -sEXPORTED_FUNCTIONS="[$(WEB_EXPORTS)]" -o $@
+
+# the command-line tool with an in-memory file system, called by the explorer's exports
+$(WEB_BUILD)/trigspline-cli.js: $(WEB_LIB_SRC) $(WEB_CLI_SRC) tools/cli/cli.h tools/support/tsu_io.h \
+  tools/support/tsu_plot.h include/trigspline.h
+	$(call need,emcc:emscripten node:nodejs)
+	@mkdir -p $(WEB_BUILD)
+	$(WEB_EMCC) $(WEB_WARN) -Itools/support -Itools/cli $(WEB_LIB_SRC) $(WEB_CLI_SRC) \
+	  -sMODULARIZE -sEXPORT_NAME=createTrigsplineCli -sSINGLE_FILE -sENVIRONMENT=web \
+	  -sINVOKE_RUN=0 -sEXIT_RUNTIME=0 -sALLOW_MEMORY_GROWTH -sFORCE_FILESYSTEM \
+	  -sEXPORTED_RUNTIME_METHODS='["FS","callMain"]' -o $@
+
+$(WEB_OUT)/index.html: $(WEB_BUILD)/trigspline.wasm $(WEB_BUILD)/trigspline-cli.js \
+  $(wildcard bindings/web/*.js bindings/web/*.mjs bindings/web/explorer/*)
+	node bindings/web/build.mjs $(WEB_BUILD) $(WEB_OUT)
+
+# Native references for the Node test: the same sources with musl's libm (the
+# libm emscripten ships) and the portable batch kernel (no AVX2/FMA clone), so
+# wasm and native must agree bit for bit.
+$(WEB_BUILD)/reference-musl: $(WEB_LIB_SRC) bindings/web/test/reference.c include/trigspline.h
+	$(call need,musl-gcc:musl-tools)
+	@mkdir -p $(WEB_BUILD)
+	musl-gcc -std=c11 -O2 -DTS_FAST_PORTABLE $(WEB_WARN) -Iinclude -Isrc $(WEB_LIB_SRC) \
+	  bindings/web/test/reference.c -lm -o $@
+$(WEB_BUILD)/trigspline-musl: $(WEB_LIB_SRC) $(WEB_CLI_SRC) include/trigspline.h
+	$(call need,musl-gcc:musl-tools)
+	@mkdir -p $(WEB_BUILD)
+	musl-gcc -std=c11 -O2 -DTS_FAST_PORTABLE $(WEB_WARN) -Iinclude -Isrc -Itools/support \
+	  -Itools/cli $(WEB_LIB_SRC) $(WEB_CLI_SRC) -lm -o $@
+
+test-web: web build $(WEB_BUILD)/reference-musl $(WEB_BUILD)/trigspline-musl test-why-page
+	$(call need,node:nodejs npm:npm)
+	$(call need_file,/usr/bin/chromium,chromium)
+	test -e bindings/web/node_modules/playwright-core/package.json || \
+	  (cd bindings/web && npm ci --no-audit --no-fund)
+	bindings/web/test/run.sh $(WEB_OUT) $(WEB_BUILD) build out/web-test

@@ -1,0 +1,222 @@
+/* The WebAssembly face of libtrigspline: the option structs of trigspline.h
+ * flattened into plain arguments, and reports into rows of doubles, so the
+ * JavaScript wrapper (trigspline.js) never depends on a struct layout.  No
+ * numerics here: every call goes straight to the library. */
+#define _DEFAULT_SOURCE /* sbrk */
+#include "trigspline.h"
+
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+/* The wrapper reads ts_error as three 32-bit words: status, index, where. */
+_Static_assert(sizeof(ts_error) == 12 && offsetof(ts_error, index) == 4 &&
+                   offsetof(ts_error, where) == 8 && sizeof(size_t) == 4,
+               "ts_error is read as three 32-bit words");
+
+/* Doubles per report row (tsw_report_row). */
+#define TSW_ROW 17
+
+ts_status tsw_spline_new(const double *x, const double *f, size_t n, int form, int slopes,
+                         const double *user_slopes, size_t n_user, double alpha,
+                         const double *alphas, size_t n_alphas, double beta, const double *betas,
+                         size_t n_betas, int shape, double lm, double lc, double um, double uc,
+                         double margin, const double *margins, size_t n_margins, int certify,
+                         int extrap, ts_spline **out, ts_error *err);
+ts_status tsw_curve_new(const double *pts, size_t n, size_t dim, int param, int closed,
+                        int slopes, double alpha, const double *alphas, size_t n_alphas,
+                        double beta, const double *betas, size_t n_betas, const double *box,
+                        double margin, ts_curve **out, ts_error *err);
+void tsw_defaults(double *out);
+void tsw_curve_defaults(double *out);
+ts_status tsw_report(const ts_spline *s, size_t i, double *row);
+ts_status tsw_certify(const ts_spline *s, int has_lower, double lm, double lc, int has_upper,
+                      double um, double uc, double *rows, ts_error *err);
+ts_status tsw_curve_certify(const ts_curve *c, const double *box, double *rows, ts_error *err);
+ts_status tsw_error_constants(int form, double a, double *out);
+size_t tsw_heap_top(void);
+
+/* ts_interval_report -> TSW_ROW doubles: x0 x1 alpha beta a B0..B3 term
+ * has_lower has_upper gap_lower at_lower gap_upper at_upper certified. */
+static void put_row(const ts_interval_report *r, double *row)
+{
+    row[0] = r->x0;
+    row[1] = r->x1;
+    row[2] = r->alpha;
+    row[3] = r->beta;
+    row[4] = r->a;
+    for (int l = 0; l < 4; l++)
+        row[5 + l] = r->B[l];
+    row[9] = (double)r->term;
+    row[10] = (double)r->has_lower;
+    row[11] = (double)r->has_upper;
+    row[12] = r->gap_lower;
+    row[13] = r->at_lower;
+    row[14] = r->gap_upper;
+    row[15] = r->at_upper;
+    row[16] = (double)r->certified;
+}
+
+ts_status tsw_spline_new(const double *x, const double *f, size_t n, int form, int slopes,
+                         const double *user_slopes, size_t n_user, double alpha,
+                         const double *alphas, size_t n_alphas, double beta, const double *betas,
+                         size_t n_betas, int shape, double lm, double lc, double um, double uc,
+                         double margin, const double *margins, size_t n_margins, int certify,
+                         int extrap, ts_spline **out, ts_error *err)
+{
+    ts_options o;
+    ts_options_init(&o);
+    o.form = (ts_form)form;
+    o.slopes = (ts_slopes)slopes;
+    o.user_slopes = user_slopes;
+    o.n_user_slopes = n_user;
+    o.alpha = alpha;
+    o.alphas = alphas;
+    o.n_alphas = n_alphas;
+    o.beta = beta;
+    o.betas = betas;
+    o.n_betas = n_betas;
+    o.shape = (ts_shape)shape;
+    o.lower.m = lm;
+    o.lower.c = lc;
+    o.upper.m = um;
+    o.upper.c = uc;
+    o.margin = margin;
+    o.margins = margins;
+    o.n_margins = n_margins;
+    o.certify = certify;
+    o.extrapolate = (ts_extrap)extrap;
+    return ts_spline_new(x, f, n, &o, out, err);
+}
+
+/* box: 12 doubles, has_lo[3] lo[3] has_hi[3] hi[3] (has_*: nonzero = active);
+ * NULL = no box. */
+ts_status tsw_curve_new(const double *pts, size_t n, size_t dim, int param, int closed,
+                        int slopes, double alpha, const double *alphas, size_t n_alphas,
+                        double beta, const double *betas, size_t n_betas, const double *box,
+                        double margin, ts_curve **out, ts_error *err)
+{
+    ts_curve_options o;
+    ts_curve_options_init(&o);
+    o.param = (ts_param)param;
+    o.closed = closed;
+    o.slopes = (ts_slopes)slopes;
+    o.alpha = alpha;
+    o.alphas = alphas;
+    o.n_alphas = n_alphas;
+    o.beta = beta;
+    o.betas = betas;
+    o.n_betas = n_betas;
+    o.margin = margin;
+    for (int k = 0; box && k < 3; k++) {
+        o.has_lo[k] = box[k] != 0.0;
+        o.lo[k] = box[3 + k];
+        o.has_hi[k] = box[6 + k] != 0.0;
+        o.hi[k] = box[9 + k];
+    }
+    return ts_curve_new(pts, n, dim, &o, out, err);
+}
+
+/* The library's defaults: form slopes alpha beta shape margin certify extrapolate. */
+void tsw_defaults(double *out)
+{
+    ts_options o;
+    ts_options_init(&o);
+    out[0] = (double)o.form;
+    out[1] = (double)o.slopes;
+    out[2] = o.alpha;
+    out[3] = o.beta;
+    out[4] = (double)o.shape;
+    out[5] = o.margin;
+    out[6] = (double)o.certify;
+    out[7] = (double)o.extrapolate;
+}
+
+/* param closed slopes alpha beta margin */
+void tsw_curve_defaults(double *out)
+{
+    ts_curve_options o;
+    ts_curve_options_init(&o);
+    out[0] = (double)o.param;
+    out[1] = (double)o.closed;
+    out[2] = (double)o.slopes;
+    out[3] = o.alpha;
+    out[4] = o.beta;
+    out[5] = o.margin;
+}
+
+ts_status tsw_report(const ts_spline *s, size_t i, double *row)
+{
+    ts_interval_report r;
+    ts_status st = ts_spline_report(s, i, &r);
+    if (st == TS_OK)
+        put_row(&r, row);
+    return st;
+}
+
+/* rows: TSW_ROW * ts_spline_intervals(s) doubles (may be NULL). */
+ts_status tsw_certify(const ts_spline *s, int has_lower, double lm, double lc, int has_upper,
+                      double um, double uc, double *rows, ts_error *err)
+{
+    ts_line lo = {lm, lc}, hi = {um, uc};
+    size_t n = s ? ts_spline_intervals(s) : 0;
+    ts_interval_report *r = NULL;
+    if (rows && n) {
+        r = malloc(n * sizeof *r); /* n * sizeof: bounded by the spline's own arrays */
+        if (!r)
+            return TS_ERR_NOMEM;
+    }
+    ts_status st = ts_certify(s, has_lower ? &lo : NULL, has_upper ? &hi : NULL, r, err);
+    for (size_t i = 0; r && i < n; i++)
+        put_row(&r[i], rows + i * TSW_ROW);
+    free(r);
+    return st;
+}
+
+/* box as for tsw_curve_new, or NULL: the curve's own box.  rows: TSW_ROW *
+ * segments * dim doubles (may be NULL). */
+ts_status tsw_curve_certify(const ts_curve *c, const double *box, double *rows, ts_error *err)
+{
+    size_t n = c ? ts_curve_segments(c) * ts_curve_dim(c) : 0;
+    ts_interval_report *r = NULL;
+    if (rows && n) {
+        r = malloc(n * sizeof *r);
+        if (!r)
+            return TS_ERR_NOMEM;
+    }
+    ts_status st;
+    if (box) {
+        int hl[3], hh[3];
+        for (int k = 0; k < 3; k++) {
+            hl[k] = box[k] != 0.0;
+            hh[k] = box[6 + k] != 0.0;
+        }
+        st = ts_curve_certify_box(c, hl, box + 3, hh, box + 9, r, err);
+    } else {
+        st = ts_curve_certify(c, r, err);
+    }
+    for (size_t i = 0; r && i < n; i++)
+        put_row(&r[i], rows + i * TSW_ROW);
+    free(r);
+    return st;
+}
+
+/* first line second */
+ts_status tsw_error_constants(int form, double a, double *out)
+{
+    ts_error_constants c = {(double)NAN, (double)NAN, (double)NAN};
+    ts_status st = ts_error_constants_get((ts_form)form, a, &c);
+    out[0] = c.first;
+    out[1] = c.line;
+    out[2] = c.second;
+    return st;
+}
+
+/* The top of the malloc heap, for the leak test (create/free cycles must not
+ * move it). */
+size_t tsw_heap_top(void)
+{
+    return (size_t)(uintptr_t)sbrk(0);
+}

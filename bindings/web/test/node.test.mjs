@@ -1,0 +1,357 @@
+// The WebAssembly module against the native library and the native CLI
+// (node --test; paths from the environment, set by bindings/web/test/run.sh):
+//   TS_WEB_OUT      out/web (trigspline.mjs, trigspline-cli.mjs)
+//   TS_WEB_REF      reference values written by test/reference.c (native, musl libm)
+//   TS_WEB_REFBIN   the reference program itself (for --strerror)
+//   TS_WEB_CLI      the native CLI built like the wasm (musl libm, -DTS_FAST_PORTABLE)
+//   TS_WEB_CLI_SHIPPED  the native CLI of `make build`
+//   TS_HEADER       include/trigspline.h (status names and values)
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync, mkdtempSync, writeFileSync, rmSync } from 'node:fs';
+import { execFileSync, spawnSync } from 'node:child_process';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+
+const env = (k) => {
+  if (!process.env[k]) throw new Error(`${k} not set (run through bindings/web/test/run.sh)`);
+  return process.env[k];
+};
+const OUT = env('TS_WEB_OUT');
+const lib = await import(join(OUT, 'trigspline.mjs'));
+const cliFactory = (await import(join(OUT, 'trigspline-cli.mjs'))).default;
+const ts = await lib.load();
+
+// ---- bit identity with the native library ---------------------------------
+
+function reader(buf) {
+  let o = 0;
+  const dv = new DataView(buf.buffer, buf.byteOffset, buf.byteLength);
+  return {
+    u32() { const v = dv.getUint32(o, true); o += 4; return v; },
+    f64s(n) {
+      const a = new Float64Array(n);
+      for (let i = 0; i < n; i++) a[i] = dv.getFloat64(o + 8 * i, true);
+      o += 8 * n;
+      return a;
+    },
+    skip(n) { o += n; },
+  };
+}
+const bits = (a) => new BigUint64Array(Float64Array.from(a).buffer);
+// number of positions whose bit patterns differ, and the first one
+function diffBits(got, want) {
+  const g = bits(got), w = bits(want);
+  assert.equal(g.length, w.length);
+  let n = 0, first = -1;
+  for (let i = 0; i < g.length; i++) if (g[i] !== w[i]) { n++; if (first < 0) first = i; }
+  return { n, first };
+}
+const ROWKEYS = (r) => [r.x0, r.x1, r.alpha, r.beta, r.a, ...r.B, lib.NAMES.term.indexOf(r.term),
+  r.hasLower ? 1 : 0, r.hasUpper ? 1 : 0, r.gapLower, r.atLower, r.gapUpper, r.atUpper, r.certified ? 1 : 0];
+
+test('bit-identical to the native library on >= 1e6 evaluations', () => {
+  const R = reader(readFileSync(env('TS_WEB_REF')));
+  R.skip(8);
+  const count = R.u32();
+  let evaluations = 0, values = 0, cases = 0, refused = 0;
+  const bad = [];
+  for (let c = 0; c < count; c++) {
+    const kind = R.u32();
+    if (kind === 0) {
+      const [form, slopes, shape, extrap, n] = [R.u32(), R.u32(), R.u32(), R.u32(), R.u32()];
+      const [alpha, beta, margin, lm, lc, um, uc] = R.f64s(7);
+      const x = R.f64s(n), f = R.f64s(n);
+      const status = R.u32(), index = R.u32();
+      const opt = {
+        form, slopes, shape, extrapolate: extrap, alpha, beta, margin,
+        lower: { m: lm, c: lc }, upper: { m: um, c: uc }, certify: true,
+      };
+      let s;
+      try {
+        s = ts.spline(x, f, opt);
+        assert.equal(status, 0, `case ${c}: native status ${status}, wasm built`);
+      } catch (e) {
+        assert.equal(e.code, status, `case ${c}: ${e.message}`);
+        assert.equal(e.index ?? 0xffffffff, index, `case ${c}: index`);
+        refused++;
+        continue;
+      }
+      const m = R.u32(), xq = R.f64s(m), scalar = R.f64s(3 * m), batch = R.f64s(3 * m);
+      const rows = R.f64s(17 * (n - 1));
+      const got = new Float64Array(3 * m);
+      for (let j = 0; j < m; j++) {
+        let v;
+        try { v = s.evalDeriv(xq[j]); } catch { v = { y: NaN, dy: NaN, d2y: NaN }; }
+        got[3 * j] = v.y; got[3 * j + 1] = v.dy; got[3 * j + 2] = v.d2y;
+      }
+      const gotB = new Float64Array(3 * m);
+      for (let d = 0; d < 3; d++) s.evalBatch(xq, d, gotB.subarray(d * m, (d + 1) * m), true);
+      const gotR = s.report().flatMap(ROWKEYS);
+      s.free();
+      for (const [what, g, w] of [['scalar', got, scalar], ['batch', gotB, batch], ['report', gotR, rows]]) {
+        const dd = diffBits(g, w);
+        if (dd.n) bad.push(`case ${c} (form ${form} slopes ${slopes} shape ${shape}) ${what}: ${dd.n} differ, first at ${dd.first}: ${g[dd.first]} vs ${w[dd.first]}`);
+      }
+      evaluations += 4 * m;
+      values += 6 * m + rows.length;
+      cases++;
+    } else {
+      const [param, closed, slopes, n] = [R.u32(), R.u32(), R.u32(), R.u32()];
+      const [alpha, beta, margin] = R.f64s(3);
+      const box = R.f64s(12), pts = R.f64s(2 * n);
+      const status = R.u32(), index = R.u32();
+      const B = {};
+      ['x', 'y'].forEach((k, i) => {
+        if (box[i]) B[`${k}min`] = box[3 + i];
+        if (box[6 + i]) B[`${k}max`] = box[9 + i];
+      });
+      let cv;
+      try {
+        cv = ts.curve(Array.from(pts), { dim: 2, param, closed: closed === 1, slopes, alpha, beta, margin, box: box.some((v, i) => (i < 3 || (i >= 6 && i < 9)) && v) ? B : null });
+        assert.equal(status, 0, `curve case ${c}`);
+      } catch (e) {
+        assert.equal(e.code, status, `curve case ${c}: ${e.message}`);
+        assert.equal(e.index ?? 0xffffffff, index);
+        refused++;
+        continue;
+      }
+      const m = R.u32(), tq = R.f64s(m), want = R.f64s(6 * m);
+      const got = new Float64Array(6 * m);
+      for (let j = 0; j < m; j++) {
+        const v = cv.eval(tq[j]);
+        got.set([...v.p, ...v.dp, ...v.d2p], 6 * j);
+      }
+      cv.free();
+      const dd = diffBits(got, want);
+      if (dd.n) bad.push(`curve case ${c}: ${dd.n} differ, first at ${dd.first}: ${got[dd.first]} vs ${want[dd.first]}`);
+      evaluations += m;
+      values += 6 * m;
+      cases++;
+    }
+  }
+  console.log(`# bit identity: ${cases} fitted cases, ${refused} refused alike, ${evaluations} evaluations, ${values} values compared, ${bad.length} cases with differences`);
+  assert.deepEqual(bad, []);
+  assert.ok(evaluations >= 1e6, `${evaluations} evaluations`);
+});
+
+// ---- statuses and messages ----------------------------------------------------
+
+test('status names and values are the header\'s, messages the library\'s', () => {
+  const h = readFileSync(env('TS_HEADER'), 'utf8');
+  const names = [...h.matchAll(/^\s*(TS_(?:OK|ERR_[A-Z_]+))\s*=\s*(\d+),/gm)].map((m) => [m[1], +m[2]]);
+  assert.ok(names.length >= 24);
+  for (const [name, value] of names) assert.equal(ts.STATUS_NAMES[value], name);
+  assert.equal(ts.STATUS_NAMES.length, names.length);
+  const native = execFileSync(env('TS_WEB_REFBIN'), ['--strerror'], { encoding: 'utf8' })
+    .trim().split('\n').map((l) => l.split('\t'));
+  for (const [code, text] of native) assert.equal(ts.strerror(+code), text);
+});
+
+function throwsStatus(fn, status, index = null, where = null) {
+  let err;
+  try { fn(); } catch (e) { err = e; }
+  assert.ok(err, `expected ${status}`);
+  assert.equal(err.name, 'TrigSplineError', String(err));
+  assert.equal(err.status, status, err.message);
+  assert.equal(err.index, index, err.message);
+  assert.equal(err.where, where, err.message);
+  const code = ts.STATUS_NAMES.indexOf(status);
+  assert.equal(err.code, code);
+  assert.ok(err.message.startsWith(`${status}: ${ts.strerror(code)}`), err.message);
+  if (index !== null) assert.ok(err.message.endsWith(`(${where} ${index})`), err.message);
+  return err;
+}
+
+test('every status the library can return reaches JavaScript as a TrigSplineError', async () => {
+  const x = [0, 1, 2, 3], f = [1, 2, 0.5, 3];
+  const P = { form: 'paper' };
+  const seen = new Set(['TS_OK']);
+  const t = (fn, st, i, w) => { throwsStatus(fn, st, i, w); seen.add(st); };
+  t(() => ts.spline([0], [1], P), 'TS_ERR_TOO_FEW');
+  t(() => ts.spline([0, 1, NaN], [1, 2, 3], P), 'TS_ERR_NONFINITE', 2, 'point');
+  t(() => ts.spline([0, 2, 1], [1, 2, 3], P), 'TS_ERR_UNSORTED', 2, 'point');
+  t(() => ts.spline(x, f, { ...P, alpha: [1, -1, 1] }), 'TS_ERR_ALPHA', 1, 'interval');
+  t(() => ts.spline(x, f, { ...P, beta: -1 }), 'TS_ERR_BETA', 0, 'interval');
+  t(() => ts.spline(x, f, { ...P, shape: 'positive', margin: 0 }), 'TS_ERR_MARGIN', 0, 'interval');
+  t(() => ts.spline(x, f, { ...P, alpha: [1, 2] }), 'TS_ERR_LENGTH');
+  t(() => ts.spline(x, f, { ...P, form: 9 }), 'TS_ERR_OPTION');
+  t(() => ts.spline(x, f, { ...P, slopes: 'periodic' }), 'TS_ERR_PERIODIC', 3, 'point');
+  t(() => ts.spline(x, [1, -2, 1, 1], { ...P, shape: 'positive' }), 'TS_ERR_NEGATIVE', 1, 'point');
+  t(() => ts.spline(x, f, { ...P, shape: 'above', lower: { m: 0, c: 1 } }), 'TS_ERR_SIDE', 0, 'point');
+  t(() => ts.spline(x, [0.5, 1.5, 2.2, 3], { ...P, shape: 'between', lower: { m: 1, c: 0 }, upper: { m: 0, c: 2.5 } }), 'TS_ERR_LINES', 3, 'point');
+  t(() => ts.spline(x, f, { ...P, shape: 'monotone' }), 'TS_ERR_NONMONOTONE', 2, 'point');
+  t(() => ts.spline(x, [1, 10.3, 21, 31], { ...P, shape: 'above', lower: { m: 10, c: 0 }, alpha: 10 }), 'TS_ERR_INFEASIBLE', 0, 'interval');
+  t(() => ts.spline(x, f, { form: 'geometric', alpha: 0.1, beta: 0 }), 'TS_ERR_GEOMETRIC', 0, 'interval');
+  t(() => ts.spline(x, [1, 0, 1, 2], { ...P, shape: 'positive', slopes: [0, -1, 0, 0] }), 'TS_ERR_ZERO_SLOPE', 1, 'point');
+  const s = ts.spline(x, f, P);
+  t(() => s.eval(5), 'TS_ERR_DOMAIN');
+  t(() => s.evalBatch([0.5, 7, 1]), 'TS_ERR_DOMAIN', 1, 'query');
+  assert.ok(Number.isNaN(s.evalBatch([0.5, 7], 0, null, true)[1]));
+  t(() => s.control(3), 'TS_ERR_INDEX');
+  t(() => s.integral(0, 9), 'TS_ERR_DOMAIN');
+  t(() => s.certify({}), 'TS_ERR_NULL');
+  t(() => s.certify({ lower: NaN }), 'TS_ERR_NONFINITE');
+  t(() => s.errorBound(-1), 'TS_ERR_OPTION');
+  t(() => ts.errorConstants('geometric', 0.1), 'TS_ERR_GEOMETRIC');
+  // TS_ERR_VIOLATED is a result of certify, not an exception
+  const v = ts.spline(x, [1, 0.05, 0.05, 3], { ...P, slopes: 'arithmetic' }).certify({ lower: 0.02 });
+  assert.equal(v.ok, false);
+  assert.equal(typeof v.index, 'number');
+  seen.add('TS_ERR_VIOLATED');
+  s.free();
+  t(() => ts.curve([[0, 0, 0, 0], [1, 1, 1, 1]]), 'TS_ERR_DIMENSION');
+  t(() => ts.curve([[0, 0], [1, 1], [1, 1]], { param: 'uniform' }), 'TS_ERR_UNSORTED', 2, 'point');
+  const cv = ts.curve([[0, 0], [1, 1], [2, 0]], { param: 'uniform' });
+  t(() => cv.sample(2 ** 31), 'TS_ERR_OVERFLOW');
+  t(() => cv.params(5), 'TS_ERR_INDEX');
+  cv.free();
+  // out of memory: a module capped at 32 MB and half a million points
+  const small = await lib.load({ maxMemoryMB: 32 });
+  const N = 500000, bx = new Float64Array(N).map((_, i) => i), by = bx.map((v) => Math.sin(v));
+  t(() => small.spline(bx, by, P), 'TS_ERR_NOMEM');
+  // TS_ERR_NULL from the constructor: JavaScript has no null arrays, the wrapper
+  // passes NULL only for absent options; above it comes from certify.
+  const missing = ts.STATUS_NAMES.filter((n) => !seen.has(n));
+  assert.deepEqual(missing, []);
+  assert.throws(() => s.eval(1), /used after free/);
+});
+
+// ---- memory --------------------------------------------------------------------
+
+test('1e5 create/free cycles do not grow the heap', () => {
+  const x = Array.from({ length: 20 }, (_, i) => i), f = x.map((v) => 1.5 + Math.sin(v));
+  const cycle = () => {
+    const s = ts.spline(x, f, { form: 'paper', shape: 'positive', alpha: 0.5 });
+    s.eval(3.5); s.evalBatch([1, 2, 3]); s.report(2);
+    s.free();
+    try { ts.spline(x, f.map((v) => v - 3), { form: 'paper', shape: 'positive' }); } catch { /* refused */ }
+    const c = ts.curve([[0, 0], [1, 2], [3, 1]], { box: { ymin: -1 } });
+    c.eval(0.5); c.sample(4); c.free();
+  };
+  for (let i = 0; i < 100; i++) cycle();
+  const top = ts.heapTop(), bytes = ts.memory.buffer.byteLength;
+  for (let i = 0; i < 1e5; i++) cycle();
+  console.log(`# heap top ${top} -> ${ts.heapTop()}, memory ${bytes} -> ${ts.memory.buffer.byteLength} bytes after 1e5 cycles`);
+  assert.equal(ts.heapTop(), top);
+  assert.equal(ts.memory.buffer.byteLength, bytes);
+});
+
+// ---- API -------------------------------------------------------------------------
+
+test('spline options, accessors and certificate from JavaScript', () => {
+  // docs/method.md §5: positive scheme keeps S >= 0; exact minima in the report
+  const x = [0, 1, 2, 3, 4], f = [2, 0.1, 0.05, 0.1, 2];
+  for (const form of ['paper', 'c1', 'geometric']) {
+    const s = ts.spline(x, f, { form, shape: 'positive', alpha: 0.3 });
+    assert.equal(s.form, form);
+    assert.equal(s.certified, true);
+    for (const r of s.report()) {
+      assert.ok(r.gapLower > 0, `${form}: gap ${r.gapLower}`);
+      assert.ok(Math.abs(s.eval(r.atLower) - r.gapLower) <= 1e-12, `${form}: gap at its point`);
+    }
+    const ys = s.evalBatch(Float64Array.from({ length: 4001 }, (_, i) => i / 1000));
+    assert.ok(Math.min(...ys) > 0);
+    assert.deepEqual(Array.from(s.x), x);
+    s.free();
+  }
+  // a line through the data: every slope method gives it back (trigspline.h, ts_slopes)
+  for (const m of lib.NAMES.slopes.filter((n) => n !== 'user' && n !== 'periodic')) {
+    assert.deepEqual(Array.from(ts.slopes(m, [0, 1, 2, 3], [1, 3, 5, 7])), [2, 2, 2, 2]);
+  }
+  const c = ts.curve([[0, 0], [1, 1], [2, 0], [1, -1]], { closed: true, param: 'uniform', box: { ymin: -1.2, ymax: 1.2 } });
+  assert.equal(c.certify().ok, true);
+  assert.equal(c.knots.length, 5);
+  c.free();
+});
+
+// ---- curve factory -----------------------------------------------------------------
+
+test('curve factory: d3 protocol, bounds kept in data space', () => {
+  const calls = [];
+  const ctx = { moveTo: (x, y) => calls.push(['M', x, y]), lineTo: (x, y) => calls.push(['L', x, y]), closePath: () => calls.push(['Z']) };
+  // pixel scales: x -> 100 x, y -> 300 - 100 y (y up)
+  const sx = Object.assign((v) => 100 * v, { invert: (p) => p / 100 });
+  const sy = Object.assign((v) => 300 - 100 * v, { invert: (p) => (300 - p) / 100 });
+  const data = [[0, 2], [1, 0.05], [2, 0.02], [3, 2]];
+  const curve = lib.curveTrigPositive.scales(sx, sy).samples(50).form('paper')(ctx);
+  curve.lineStart();
+  for (const [a, b] of data) curve.point(sx(a), sy(b));
+  curve.lineEnd();
+  assert.equal(calls[0][0], 'M');
+  assert.equal(calls.length, 3 * 50 + 1);
+  for (const [, , py] of calls) assert.ok(sy.invert(py) >= 0);
+  // the unconstrained curve dips below zero on the same data (what the scheme prevents)
+  const calls2 = [];
+  const plain = lib.curveTrig.scales(sx, sy).samples(50).alpha(1).form('paper')({ ...ctx, moveTo: (a, b) => calls2.push(b), lineTo: (a, b) => calls2.push(b) });
+  plain.lineStart();
+  for (const [a, b] of data) plain.point(sx(a), sy(b));
+  plain.lineEnd();
+  assert.ok(Math.min(...calls2.map(sy.invert)) < 0);
+  // area: the second line continues the path and closes it
+  calls.length = 0;
+  const area = lib.curveTrigPositive.scales(sx, sy)(ctx);
+  area.areaStart();
+  area.lineStart(); for (const [a, b] of data) area.point(sx(a), sy(b)); area.lineEnd();
+  area.lineStart(); for (const [a] of data.slice().reverse()) area.point(sx(a), sy(0)); area.lineEnd();
+  area.areaEnd();
+  assert.deepEqual(calls.map((c) => c[0]).filter((k) => k !== 'L'), ['M', 'Z']);
+});
+
+// ---- exports = the CLI's output --------------------------------------------------
+
+const STATES = [
+  { mode: 'function', points: [[0, 2], [2, 1.58], [3, 1.55], [5, 1.54], [15, 1.8], [25, 1.54]], scheme: 'positive', form: 'paper', slopes: 'arithmetic', alpha: 0.15, alphas: null, beta: 0, margin: 0.01 },
+  { mode: 'function', points: [[0, 2.5], [1, 7], [2, 8], [4, 29], [5, 8], [6, 21], [8, 30]], scheme: 'between', lower: { m: 1, c: 0.1 }, upper: { m: 8, c: 6 }, form: 'c1', slopes: 'fritsch-carlson', alpha: 0.1, alphas: [0.1, 0.2, 0.3, 0.1, 1e-7, 2.5], beta: 0, margin: 0.01 },
+  { mode: 'function', points: [[1e-7, 3], [0.5, -1], [1.25, 2e21]], scheme: 'none', form: 'geometric', slopes: 'akima', alpha: 1, alphas: null, beta: 0.25, margin: 0.01 },
+  { mode: 'function', points: [[1, 0.5], [2, 3], [3, 5], [9, 25], [12, 8], [14, 2], [15, 1]], scheme: 'above', lower: { m: 0.03, c: 0.3 }, form: 'paper', slopes: 'geometric', alpha: 0.01, alphas: null, beta: 0, margin: 0.02 },
+  { mode: 'function', points: [[0, 1.2], [0.4, 0.5], [2, 2], [3, 5], [5, 0.5]], scheme: 'below', upper: { m: 1, c: 2.5 }, form: 'geometric', slopes: 'harmonic', alpha: 0.2, alphas: null, beta: 0, margin: 0.01 },
+  { mode: 'function', points: [[0, 0], [1, 0], [2, 0.5], [3, 3], [4, 3.1]], scheme: 'monotone', form: 'c1', slopes: 'makima', alpha: 1, alphas: null, beta: 0, margin: 0.01 },
+  { mode: 'curve', points: [[-1, 0], [0, -1], [1, 0], [0, 1]], closed: false, param: 'uniform', slopes: 'fritsch-carlson', alpha: 0.37, alphas: [0.37, 0.5, 1], beta: 0.05, margin: 0.01, box: { on: false } },
+  { mode: 'curve', points: [[0, 1], [1, 4], [2, 1], [3, 4]], closed: true, param: 'centripetal', slopes: 'arithmetic', alpha: 0.37, alphas: null, beta: 0.01, margin: 0.01, box: { on: true, xmin: -0.5, xmax: 3.5, ymin: 0.5, ymax: 4.5 } },
+];
+
+function runNative(cli, args, data) {
+  const dir = mkdtempSync(join(tmpdir(), 'tsweb-'));
+  try {
+    writeFileSync(join(dir, 'data.csv'), data);
+    const r = spawnSync(cli, args, { cwd: dir, encoding: 'utf8' });
+    assert.equal(r.status, 0, r.stderr);
+    const out = {};
+    for (const k of Object.keys(lib.EXPORTS)) {
+      try { out[k] = readFileSync(join(dir, lib.EXPORTS[k].file), 'utf8'); } catch { /* not written */ }
+    }
+    return out;
+  } finally { rmSync(dir, { recursive: true, force: true }); }
+}
+
+// numbers of a text and the text with them taken out
+const numRe = /-?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?/g;
+const numbers = (t) => (t.match(numRe) ?? []).map(Number);
+
+test('CSV, JSON and SVG exports are the CLI\'s bytes', async () => {
+  let shippedNumbersDiffer = 0, shippedNumbers = 0;
+  for (const st of STATES) {
+    for (const kind of ['csv', 'json', 'svg']) {
+      const got = (await lib.exportState(cliFactory, st, kind)).text;
+      const args = [...lib.cliArgs(st), ...lib.EXPORTS[kind].args];
+      const want = runNative(env('TS_WEB_CLI'), args, lib.dataCsv(st))[kind];
+      assert.equal(got, want, `${kind}: ${args.join(' ')}`);
+      // The shipped CLI picks an AVX2+FMA batch kernel at run time where the CPU
+      // has one (src/kernels.c); its samples then differ from the portable path
+      // within the kernel's stated bound (3.9 eps M for values, 12 eps M w for S').
+      const shipped = runNative(env('TS_WEB_CLI_SHIPPED'), args, lib.dataCsv(st))[kind];
+      assert.equal(got.replace(numRe, '#'), shipped.replace(numRe, '#'), `${kind}: same text around the numbers`);
+      const a = numbers(got), b = numbers(shipped);
+      const M = Math.max(...a.map(Math.abs).filter(Number.isFinite));
+      for (let i = 0; i < a.length; i++) {
+        if (a[i] !== b[i]) {
+          shippedNumbersDiffer++;
+          assert.ok(Math.abs(a[i] - b[i]) <= 64 * 2 ** -52 * M, `${kind}: ${a[i]} vs ${b[i]}`);
+        }
+      }
+      shippedNumbers += a.length;
+    }
+  }
+  console.log(`# exports vs the shipped CLI: ${shippedNumbersDiffer} of ${shippedNumbers} numbers differ in the last bits (its FMA kernel and glibc libm)`);
+});
