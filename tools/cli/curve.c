@@ -325,11 +325,11 @@ int cli_curve(cli_opts *o)
                  o->closed ? "closed" : "open", o->alphas ? "per segment" : cli_num(o->alpha, ab),
                  o->betas ? "per segment" : cli_num(o->beta, bb),
                  dim == 3 ? " (x-y projection)" : "");
-        tsu_plot_status ps = tsu_plot_new(0, 0, &p);
+        tsu_plot_status ps = tsu_plot_new(o->width, o->height, &p);
         if (ps == TSU_PLOT_OK)
             ps = tsu_plot_set_title(p, o->title ? o->title : title);
         if (ps == TSU_PLOT_OK)
-            ps = tsu_plot_set_labels(p, "x", "y");
+            ps = cli_plot_axes(o, p, NULL, "x", "y");
         if (ps == TSU_PLOT_OK)
             ps = tsu_plot_set_equal_aspect(p, 1);
         /* box: shaded floor / ceiling in y, dashed lines at the x bounds */
@@ -399,7 +399,7 @@ int cli_curve(cli_opts *o)
             goto done;
         }
     }
-    rc = cli_write_outputs(o->out, o->json ? &j.b : &text, NULL, NULL, o->svg, &svg);
+    rc = cli_write_outputs(o->out, o->json ? &j.b : &text, NULL, NULL, o->svg, o->plot_format, &svg);
 done:
     tsu_plot_free(p);
     cli_xy_free(&cx);
