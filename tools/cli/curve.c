@@ -154,6 +154,13 @@ int cli_curve(cli_opts *o)
         rc = cli_nomem();
         goto done;
     }
+    if (rows > CLI_MAX_HELD_SAMPLES) {
+        cli_error("%s: %zu sample points (--samples %zu over %zu segments) exceed the limit of %u "
+                  "that curve holds in memory; lower --samples",
+                  d.name, rows, m, seg, CLI_MAX_HELD_SAMPLES);
+        rc = CLI_USAGE;
+        goto done;
+    }
     if (rows > ((size_t)-1) / sizeof(double) / (1 + dim) ||
         !(smp = malloc(rows * (1 + dim) * sizeof *smp))) {
         rc = cli_nomem();

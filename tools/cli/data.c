@@ -304,9 +304,14 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
         if (interval) {
             double a = (opt->alphas ? opt->alphas[off + i] : opt->alpha) +
                        (opt->betas ? opt->betas[off + i] : opt->beta);
-            cli_error("interval %zu [%s, %s]: alpha + beta = %s is below the geometric-form bound "
-                      "%s; raise --alpha or --beta",
-                      off + i, cli_num(x[i], bx), cli_num(x[i + 1], b2), cli_num(a, bf),
+            char lr[200];
+            if (lines)
+                snprintf(lr, sizeof lr, "%s:%llu-%llu", name, lines[i], lines[i + 1]);
+            else
+                snprintf(lr, sizeof lr, "%s", name);
+            cli_error("%s: interval %zu [%s, %s]: alpha + beta = %s is below the geometric-form "
+                      "bound %s; raise --alpha or --beta",
+                      lr, off + i, cli_num(x[i], bx), cli_num(x[i + 1], b2), cli_num(a, bf),
                       cli_num(TS_GEOMETRIC_A_MIN, ln));
             return CLI_USAGE;
         }

@@ -143,6 +143,12 @@ int cli_fit(cli_opts *o)
 
     at_vals at;
     memset(&at, 0, sizeof at);
+    cli_json j;
+    cli_json_init(&j);
+    tsu_plot_buf svg = TSU_PLOT_BUF_INIT, text = TSU_PLOT_BUF_INIT;
+    cli_stats smp = CLI_STATS_INIT;
+    csv_ctx cc = {o, s, &d.cols, d.name};
+    cli_writer_fn fn = NULL;
     if (o->svg || (o->json && o->with_samples)) {
         /* held in memory: a documented limit */
         size_t n = ts_spline_intervals(s);
@@ -158,12 +164,6 @@ int cli_fit(cli_opts *o)
             goto done;
         }
     }
-    cli_json j;
-    cli_json_init(&j);
-    tsu_plot_buf svg = TSU_PLOT_BUF_INIT, text = TSU_PLOT_BUF_INIT;
-    cli_stats smp = CLI_STATS_INIT;
-    csv_ctx cc = {o, s, &d.cols, d.name};
-    cli_writer_fn fn = NULL;
 
     if (o->at && (rc = eval_at(o, s, &d.cols, &at)) != CLI_OK)
         goto done;

@@ -1905,6 +1905,15 @@ static tsu_io_status fields_error(tsu_reader *r, const char *ls, const char *le,
                  got, r->ncols, hint);
 }
 
+/* "12,5": a number up to a ',' and a digit after it */
+static int number_comma(const char *s, const char *e)
+{
+    const char *stop;
+    double v;
+    return tsu_parse_double(s, e, &v, &stop) == TSU_NUM_OK && stop + 1 < e && *stop == ',' &&
+           IS_DIGIT(stop[1]);
+}
+
 static tsu_io_status value_error(tsu_reader *r, int ns, const field *f, const char *s,
                                  const char *e, size_t fieldno, const char *ls, const char *le)
 {
@@ -1915,20 +1924,19 @@ static tsu_io_status value_error(tsu_reader *r, int ns, const field *f, const ch
         POS_FAIL(r, TSU_IO_ERR_NONFINITE, f->at, fieldno, "not a finite number: %s", q);
     if (ns == TSU_NUM_RANGE)
         POS_FAIL(r, TSU_IO_ERR_RANGE, f->at, fieldno, "number out of range: %s", q);
-    delim_hint(r, ls, le, hint, sizeof hint);
+    if (r->decimal_comma && memchr(s, '.', (size_t)(e - s)))
+        snprintf(hint, sizeof hint, " ('.' is not accepted with a decimal comma)");
+    else if (!r->decimal_comma && number_comma(s, e))
+        snprintf(hint, sizeof hint, " (digit grouping is not accepted; a decimal comma needs "
+                 "--decimal-comma)");
+    else
+        delim_hint(r, ls, le, hint, sizeof hint);
     if (!hint[0] && r->rows == 0 && r->header_line && is_header(r, ls, le, &all_text) > 0 &&
         all_text)
         POS_FAIL(r, TSU_IO_ERR_LAYOUT, f->at, fieldno,
                  "every field of this line is text: a second header line (units?) after the "
                  "header on line %llu? skip lines before the data with --skip N",
                  r->header_line);
-    if (hint[0])
-        ;
-    else if (r->decimal_comma && memchr(s, '.', (size_t)(e - s)))
-        snprintf(hint, sizeof hint, " ('.' is not accepted with a decimal comma)");
-    else if (!r->decimal_comma && memchr(s, ',', (size_t)(e - s)))
-        snprintf(hint, sizeof hint, " (digit grouping is not accepted; a decimal comma needs "
-                 "--decimal-comma)");
     POS_FAIL(r, TSU_IO_ERR_NUMBER, f->at, fieldno, "expected a number, found %s%s", q, hint);
 }
 
