@@ -1187,6 +1187,8 @@ struct tsu_reader {
     char *tmp;      /* scratch: unquoted / decimal-comma field text */
     size_t tmpcap;
     const char *ls; /* start of the current record */
+    int rec_scanned;      /* its last line was quote-scanned: */
+    const char *rec_hash; /* then its comment '#' (NULL: none) */
     int failed;
     tsu_io_error saved;
 };
@@ -1365,30 +1367,64 @@ static int field_sep(const tsu_reader *r, char c)
     return dc ? c == dc : IS_BLANK(c);
 }
 
-/* Quote state over [p, e): *inq inside quotes, *fs at a field start, *cm in a comment. */
-static void quote_scan(const tsu_reader *r, const char *p, const char *e, int *inq, int *fs, int *cm)
+/* Quote state over [p, e): *inq inside quotes, *fs at a field start, *cm in
+ * a comment (*hash: where it starts). */
+static void quote_scan(const tsu_reader *r, const char *p, const char *e, int *inq, int *fs, int *cm,
+                       const char **hash)
 {
-    for (; p < e; p++) {
-        char c = *p;
+    const char *seg = p;
+    if (*cm)
+        return;
+    while (p < e) {
         if (*inq) {
-            if (c == '"') {
-                if (p + 1 < e && p[1] == '"')
-                    p++;
-                else
-                    *inq = 0, *fs = 0;
+            const char *q = memchr(p, '"', (size_t)(e - p));
+            if (!q)
+                return;
+            if (q + 1 < e && q[1] == '"') {
+                p = q + 2;
+                continue;
             }
-        } else if (*cm) {
-            return;
-        } else if (c == '#') {
-            *cm = 1;
-        } else if (c == '"' && *fs) {
-            *inq = 1;
+            *inq = 0;
             *fs = 0;
-        } else if (field_sep(r, c)) {
-            *fs = 1;
-        } else if (!IS_BLANK(c)) {
-            *fs = 0;
+            p = q + 1;
+            seg = p;
+            continue;
         }
+        /* outside quotes: the next '"' or '#' */
+        const char *q = p;
+        while (q < e && *q != '"' && *q != '#')
+            q++;
+        if (q == e) {
+            /* the field-start state at the end, for a record continued by the caller */
+            const char *b = e;
+            while (b > seg && IS_BLANK(b[-1]) && !field_sep(r, b[-1]))
+                b--;
+            if (b > seg)
+                *fs = field_sep(r, b[-1]);
+            return;
+        }
+        if (*q == '#') {
+            *cm = 1;
+            *hash = q;
+            return;
+        }
+        /* a '"' opens a quoted field at a field start: after blanks that follow a
+         * separator, or the start of the scanned run with *fs set */
+        {
+            const char *b = q;
+            int at_start;
+            while (b > seg && IS_BLANK(b[-1]) && !field_sep(r, b[-1]))
+                b--;
+            at_start = b > seg ? field_sep(r, b[-1]) : *fs;
+            if (at_start) {
+                *inq = 1;
+                *fs = 0;
+            } else {
+                *fs = 0;
+                seg = q + 1;
+            }
+        }
+        p = q + 1;
     }
 }
 
@@ -1410,8 +1446,12 @@ static int get_record(tsu_reader *r, char **ls, size_t *ll)
                 r->line++;
                 continue;
             }
-            if (inq || memchr(base + scan, '"', (size_t)(segend - (base + scan))))
-                quote_scan(r, base + scan, segend, &inq, &fs, &cm);
+            r->rec_scanned = 0;
+            r->rec_hash = NULL;
+            if (inq || memchr(base + scan, '"', (size_t)(segend - (base + scan)))) {
+                quote_scan(r, base + scan, segend, &inq, &fs, &cm, &r->rec_hash);
+                r->rec_scanned = 1;
+            }
             nls++;
             cm = 0;
             if (inq && nl) { /* a line break inside quotes */
@@ -1498,7 +1538,10 @@ static void pos_of(const tsu_reader *r, const char *p, unsigned long long *line,
 static const char *content_end(const tsu_reader *r, const char *ls, const char *le)
 {
     const char *p;
-    if (memchr(ls, '"', (size_t)(le - ls))) {
+    if (r->rec_scanned) {
+        if (r->rec_hash)
+            le = r->rec_hash;
+    } else if (memchr(ls, '"', (size_t)(le - ls))) {
         int inq = 0, fs = 1;
         for (p = ls; p < le; p++) {
             char c = *p;
@@ -1964,6 +2007,26 @@ static tsu_io_status parse_data(tsu_reader *r, const char *ls, const char *le)
             return r->saved.status;
         r->fcol[nf] = (size_t)(p - ls);
         /* fast path: an unquoted number in a number column */
+        if (p < le && *p != '"' && r->is_time[nf] == 1) {
+            const char *stop, *q;
+            tsu_time_form tf;
+            if (tsu_parse_time(p, le, &v, &tf, &stop)) {
+                q = stop;
+                if (dc == '\t')
+                    while (q < le && *q == ' ')
+                        q++;
+                else
+                    while (q < le && IS_BLANK(*q))
+                        q++;
+                if (q == le || (dc ? *q == dc : q > stop)) {
+                    r->row[nf++] = v;
+                    if (q == le)
+                        break;
+                    p = dc ? q + 1 : q;
+                    continue;
+                }
+            }
+        }
         if (p < le && *p != '"' && !r->is_time[nf]) {
             const char *stop, *q;
             tsu_num_status ns = tsu_parse_double(p, le, &v, &stop);
@@ -1981,6 +2044,37 @@ static tsu_io_status parse_data(tsu_reader *r, const char *ls, const char *le)
                     if (q == le)
                         break;
                     p = dc ? q + 1 : q;
+                    continue;
+                }
+            }
+        }
+        /* fast path: a quoted field without "" in a number or time column */
+        if (p < le && *p == '"') {
+            const char *q = memchr(p + 1, '"', (size_t)(le - p - 1)), *stop, *t;
+            if (q && !(q + 1 < le && q[1] == '"')) {
+                const char *fs = p + 1, *fe = q;
+                int good;
+                while (fs < fe && IS_BLANK(*fs))
+                    fs++;
+                while (fe > fs && IS_BLANK(fe[-1]))
+                    fe--;
+                if (r->is_time[nf]) {
+                    tsu_time_form tf;
+                    good = fs < fe && r->is_time[nf] == 1 &&
+                           tsu_parse_time(fs, fe, &v, &tf, &stop) && stop == fe;
+                } else {
+                    good = fs < fe && !r->decimal_comma &&
+                           tsu_parse_double(fs, fe, &v, &stop) == TSU_NUM_OK && stop == fe;
+                }
+                t = q + 1;
+                if (dc)
+                    while (t < le && (dc == '\t' ? *t == ' ' : IS_BLANK(*t)))
+                        t++;
+                if (good && (t == le || (dc ? *t == dc : IS_BLANK(*t)))) {
+                    r->row[nf++] = v;
+                    if (t >= le)
+                        break;
+                    p = dc ? t + 1 : t;
                     continue;
                 }
             }
