@@ -918,6 +918,60 @@ def test_signals():
             check(name + ": nothing left", os.listdir(d) == [], str(os.listdir(d)))
 
 
+def test_edges_cli():
+    """Findings 4 and 7 of the edge review (issue 18), each failing before its fix."""
+    # 4: a first row of quoted numbers is data (was taken as a header: one point lost)
+    p = tmp("quoted_first.csv")
+    open(p, "w").write('"0","1"\n1,2\n2,1.5\n')
+    rc, out, err = run(["fit", p, "--json"])
+    js = json.loads(out) if rc == 0 else {}
+    check("quoted numbers first row kept", rc == 0 and js["n_points"] == 3 and
+          js["knots"][0]["x"] == 0, err)
+    # 4: names starting like nan / inf are names (was: refused as data)
+    p = tmp("nan_names.csv")
+    open(p, "w").write("nanoseconds,infections\n1,2\n2,3\n3,5\n")
+    rc, out, err = run(["fit", p, "--samples", "2"])
+    check("nan/inf-like names are a header", rc == 0 and out.startswith("nanoseconds,infections\n")
+          and out.count("\n") == 4, err)
+    # 4: '0;1' first in a ';' file is data (was silently eaten as a header)
+    p = tmp("semi.csv")
+    open(p, "w").write("0;1\n1;2\n2;3\n")
+    rc, out, err = run(["fit", p, "--json"])
+    check("';' first row kept", rc == 0 and json.loads(out)["n_points"] == 3, err)
+    # 7: sample x strictly increasing at large |x| (1e15 + i: most samples rounded onto others)
+    p = tmp("big_x.csv")
+    open(p, "w").write("x,f\n" + "".join("%d,%r\n" % (10**15 + i, v) for i, v in
+                                         enumerate([0.16, 3.31, 5.67, 8.26, 11.59])))
+    for extra in ([], ["--no-stream"], ["--json", "--with-samples"]):
+        rc, out, err = run(["fit", p, "--form", "paper", "--samples", "100"] + extra)
+        if "--json" in extra:
+            xs = json.loads(out)["samples"]["x"] if rc == 0 else []
+        else:
+            xs = [float(l.split(",")[0]) for l in out.strip().split("\n")[1:]] if rc == 0 else []
+        check("large |x| samples strictly increasing %s" % extra, rc == 0 and len(xs) > 5 and
+              all(b > a for a, b in zip(xs, xs[1:])) and xs[0] == 1e15 and xs[-1] == 1e15 + 4,
+              err + str(xs[:6]))
+    # 7: the geometric-bound message names FILE:LINES
+    rc, out, err = run(["fit", T1, "--form", "geometric", "--alpha", "0.1"])
+    check("geometric bound names file:lines", rc == 1 and "table1_positive.csv:2-3: interval 0"
+          in err, err)
+    # 7: parallel lower/upper lines that contradict each other: an option error (exit 1)
+    for cmd in (["fit", T1], ["certify", T1, "--alpha", "1", "--beta", "0"]):
+        rc, out, err = run(cmd + ["--lower", "0,0", "--upper", "0,-1"])
+        check("--lower above --upper is usage %s" % cmd[0], rc == 1 and "nowhere below" in err
+              and out == "", err)
+    # crossing lines depend on the data: a data error naming the point
+    rc, out, err = run(["fit", T1, "--lower", "1,0", "--upper", "0,10"])
+    check("crossing lines: data error", rc == 2 and "table1_positive.csv:" in err, err)
+    # 7: --samples with outputs held in memory: refused above the documented limit, at once
+    for args in (["fit", T1, "--svg", tmp("big.svg")], ["fit", T1, "--json", "--with-samples"],
+                 ["certify", T1, "--alpha", "1", "--beta", "0", "--shape", "positive", "--svg",
+                  tmp("big2.svg")], ["curve", FIG2, "--closed"]):
+        rc, out, err = run(args + ["--samples", "100000000"], timeout=30)
+        check("--samples limit %s" % args[0], rc == 1 and "10000000" in err and out == "", err)
+    check("--samples limit: nothing written", not os.path.exists(tmp("big.svg")))
+
+
 def main():
     if not os.access(CLI, os.X_OK):
         print("test_cli: %s not built" % CLI)
@@ -927,7 +981,7 @@ def main():
         for t in (test_help_version, test_usage_errors, test_table1_positive, test_roundtrip,
                   test_inputs, test_malformed, test_exit_statuses, test_options, test_svg,
                   test_curve, test_streaming_identical, test_streaming_errors,
-                  test_streaming_memory, test_signals, test_same_output):
+                  test_streaming_memory, test_signals, test_same_output, test_edges_cli):
             try:
                 t()
             except Exception as e:  # a crash in one group is one failure, keep going
