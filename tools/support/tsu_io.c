@@ -1449,7 +1449,11 @@ static int get_record(tsu_reader *r, char **ls, size_t *ll)
             r->rec_scanned = 0;
             r->rec_hash = NULL;
             if (inq || memchr(base + scan, '"', (size_t)(segend - (base + scan)))) {
-                quote_scan(r, base + scan, segend, &inq, &fs, &cm, &r->rec_hash);
+                const char *from = base + scan;
+                if (r->line + nls == 0 && scan == 0 && segend - from >= 3 &&
+                    memcmp(from, "\xef\xbb\xbf", 3) == 0)
+                    from += 3; /* the byte-order mark is not part of the first field */
+                quote_scan(r, from, segend, &inq, &fs, &cm, &r->rec_hash);
                 r->rec_scanned = 1;
             }
             nls++;

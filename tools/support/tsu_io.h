@@ -258,8 +258,10 @@ size_t tsu_format_time(double t, const tsu_time_form *form, char buf[TSU_TIME_SI
  *    line where it opened.  A '"' inside an unquoted field is text.  Quotes
  *    only group: a quoted number is a number.
  *  - Delimiter, when TSU_DELIM_AUTO, is chosen from the first non-blank,
- *    non-comment line (outside quotes): ';' if it contains one, else ','
- *    (not with decimal_comma), else tab, else white space.  With ',', ';'
+ *    non-comment line (outside quotes, each '"' toggling "inside"): ';' if it
+ *    contains one, else ',' (not with decimal_comma), else tab, else white
+ *    space.  Until it is known, any of ',' ';' tab space ends a field when
+ *    finding where quoted fields start.  With ',', ';'
  *    and tab exactly one delimiter separates two fields and blanks around a
  *    field are ignored (with ',' and ';' tabs too); with white space any run
  *    of spaces and tabs separates fields.
