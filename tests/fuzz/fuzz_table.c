@@ -53,7 +53,7 @@ static int ref_number(const char *s, size_t n, int dcomma, double *v, int *nonfi
     size_t i = 0;
     int digits = 0;
     *nonfinite = 0;
-    if (n == 0 || n >= sizeof b)
+    if (n == 0 || n >= sizeof b || memchr(s, 0, n))
         return 0;
     memcpy(b, s, n);
     b[n] = 0;
@@ -118,7 +118,7 @@ static int ref_time(const char *s, size_t n, double *t)
     int Y, M, D, h = 0, mi = 0, sec = 0, oh = 0, om = 0, sign = 0;
     size_t i = 10;
     double frac = 0;
-    if (n < 10 || n >= sizeof b)
+    if (n < 10 || n >= sizeof b || memchr(s, 0, n))
         return 0;
     memcpy(b, s, n);
     b[n] = 0;
@@ -410,7 +410,7 @@ static void ref_read(const char *d, size_t n, const ropts *o, ref *r)
                     r->ok = 0;
                     goto out;
                 }
-                v = NAN;
+                v = (double)NAN;
             } else if (is_time[q]) {
                 if (!ref_time(t, tn, &v)) {
                     free_fields(f, k);
@@ -474,7 +474,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     ro.delim = o.delim == ',' ? TSU_DELIM_COMMA : o.delim == ';' ? TSU_DELIM_SEMICOLON
                : o.delim == '\t' ? TSU_DELIM_TAB : TSU_DELIM_AUTO;
     ro.skip = (unsigned long long)o.skip;
-    ro.buffer_size = 16 + (b >> 6) * 7; /* small buffers: refills inside records */
+    ro.buffer_size = 16u + (size_t)(b >> 6) * 7u; /* small buffers: refills inside records */
 
     FILE *fp = fmemopen((void *)text, n, "r");
     if (!fp)

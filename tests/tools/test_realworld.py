@@ -287,7 +287,10 @@ def test_logy_and_formats():
     check("--samples-total", rc == 0 and len(xs) == 9 and xs[0] == 0.25 and xs[-1] == 24, xs)
     rc, out, err = run(["fit", f, "--missing", "skip", "-v", "--samples", "2"])
     check("-v counts skipped rows", rc == 0 and "gaps_pk.csv:3:" in err and
-          "gaps_pk.csv:5:" in err, err)
+          "gaps_pk.csv:5:" in err and "2 rows with missing values skipped" in err, err)
+    rc, out, err = run(["curve", c("gaps_pk.csv"), "--missing", "skip", "--logy", "--svg",
+                        os.path.join(TMP, "c.svg")])
+    check("curve --logy refused", rc == 1 and "--logy" in err, err)
     # dates in --at, written back in the file's form
     rc, out, err = run(["fit", c("logger_timestamps.csv"), "--skip", "2", "--at",
                         "2024-03-01T03:00:00Z,2024-03-01T12:00:00Z"])

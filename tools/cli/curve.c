@@ -81,6 +81,8 @@ int cli_curve(cli_opts *o)
                          o->title ? "--title" : o->show_control ? "--show-control" : "--points-only");
     if (o->show_control && o->points_only)
         return cli_usage(o->cmd, "--show-control and --points-only do not fit together");
+    if (o->logy)
+        return cli_usage(o->cmd, "--logy is not available for curve (equal axes)");
     if (o->alpha_set && o->alphas)
         return cli_usage(o->cmd, "give --alpha or --alphas, not both");
     if (o->beta_set && o->betas)

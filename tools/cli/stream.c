@@ -427,6 +427,9 @@ done:
             cli_out_abort(&s.out);
         }
     }
+    if (o->verbose && s.cols.skipped)
+        cli_error("%s: %llu row%s with missing values skipped", s.name, s.cols.skipped,
+                  s.cols.skipped == 1 ? "" : "s");
     ts_spline_free(pend.s);
     ts_spline_free(next.s);
     tsu_reader_free(s.r);

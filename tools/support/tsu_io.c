@@ -2099,7 +2099,7 @@ static tsu_io_status parse_data(tsu_reader *r, const char *ls, const char *le)
                 if (s == e)
                     POS_FAIL(r, TSU_IO_ERR_NUMBER, f.at, nf + 1, "empty field");
             } else {
-                r->row[nf++] = NAN;
+                r->row[nf++] = (double)NAN;
                 r->missing++;
                 goto next;
             }
@@ -2498,9 +2498,12 @@ int tsu_out_open(tsu_out **out, const char *path, unsigned flags, char *errbuf, 
     }
     memcpy(o->tmp, path, n);
     memcpy(o->tmp + n, ".tmp.XXXXXX", 12);
+    /* registered before it exists: a signal between mkstemp and the
+     * registration would otherwise leave the file behind */
+    out_register(o->tmp);
     fd = mkstemp(o->tmp);
-    if (fd >= 0)
-        out_register(o->tmp);
+    if (fd < 0)
+        out_unregister(o->tmp);
     if (fd < 0) {
         e = errno;
         msg_set(errbuf, errlen, "cannot create temporary file for \"%s\": %s", path, strerror(e));
