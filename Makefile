@@ -37,6 +37,8 @@ define need_file
 endef
 
 BUILD_TOOLS := cmake:cmake gcc:gcc cc:gcc python3:python3
+# PNG/PDF plots of the command (rsvg-convert) and their checks in tests/tools/test_realworld.py
+PLOT_TEST_TOOLS := rsvg-convert:librsvg2-bin pdfinfo:poppler-utils pdftoppm:poppler-utils
 TEST_TOOLS := valgrind:valgrind pkg-config:pkg-config readelf:binutils
 # libc.a: the package test links a -static program
 STATIC_LIBC := /usr/lib/$(shell gcc -print-multiarch 2>/dev/null || echo x86_64-linux-gnu)/libc.a
@@ -61,6 +63,7 @@ build-asan:
 
 test: why-deps python-deps build build-asan build-clang
 	$(call need,$(TEST_TOOLS))
+	$(call need,$(PLOT_TEST_TOOLS))
 	$(call need_file,$(STATIC_LIBC),libc6-dev)
 	tests/run_all.sh build build-asan build-clang
 
@@ -81,6 +84,9 @@ bench:
 	  -DTS_BUILD_BENCH=ON -DTS_BUILD_TESTS=OFF -DTS_BUILD_EXAMPLES=OFF >/dev/null
 	$(CMAKE) --build build-bench -j $(JOBS) --target run_bench
 	$(MAKE) --no-print-directory bench-python
+	$(call need,/usr/bin/time:time)
+	$(CMAKE) --build build-bench -j $(JOBS) --target trigspline_cli
+	bench/bench_stream.sh build-bench
 
 # Convergence study (docs/accuracy.md): prints the tables, rewrites the
 # results section of docs/accuracy.md and docs/accuracy.svg.  Compares with GSL.

@@ -161,7 +161,7 @@ def test_usage_errors():
         (["fit", T1, "--extrapolate", "clamp"], "--at"),
         (["fit", T1, "--at", fix("cli_at.csv"), "--extrapolate", "sideways"], "sideways"),
         (["fit", T1, "--columns", "1,1"], "--columns"),
-        (["fit", T1, "--columns", "x,y"], "--columns"),
+        (["fit", T1, "--columns", "1,2,3"], "--columns"),
         (["fit", T1, "--slopes", "user"], "user"),
         (["fit", T1, "--form", "round"], "round"),
         (["fit", T1, "--c1", "--form", "geometric"], "--c1"),
@@ -242,7 +242,7 @@ def test_table1_positive():
     rc, out2, err = run(["fit", T1, "--shape", "positive", "--alpha", "0.15"])
     head, rows = csv_rows(out2)
     ys = [float(r[1]) for r in rows]
-    check("T1 csv header", head == "x,y")
+    check("T1 csv header: the input's names", head == "x,f")
     check("T1 csv rows 8*49+1", len(rows) == 8 * 49 + 1, len(rows))
     check("T1 csv all > 0", all(y > 0 for y in ys))
     check("T1 samples block", js["samples"]["count"] == len(rows)
@@ -293,7 +293,7 @@ def test_roundtrip():
 
 def test_inputs():
     base = run(["fit", T1, "--samples", "5"])[1]
-    check("file input", base.startswith("x,y\n") and len(base.split("\n")) == 8 * 4 + 3)
+    check("file input", base.startswith("x,f\n") and len(base.split("\n")) == 8 * 4 + 3)
     with open(T1, "rb") as fh:
         data = fh.read()
     rc, out, err = run(["fit", "--samples", "5"], stdin=data)
@@ -303,7 +303,8 @@ def test_inputs():
     rc, out, err = run(["fit", fix("cli_table1.tsv"), "--samples", "5"])
     check("tsv input", rc == 0 and out == base, err)
     rc, out, err = run(["fit", fix("cli_table1_ws.txt"), "--samples", "5"])
-    check("whitespace + comments input", rc == 0 and out == base, err)
+    check("whitespace + comments input (no header: x,y)", rc == 0 and out.startswith("x,y\n") and
+          out.split("\n", 1)[1] == base.split("\n", 1)[1], err)
     rc, out, err = run(["fit", fix("cli_three_columns.csv"), "--columns", "3,2", "--samples", "5"])
     check("--columns", rc == 0 and out == base, err)
     rc, out, err = run(["fit", fix("cli_three_columns.csv"), "--columns", "3,2", "--samples", "5",
@@ -315,7 +316,8 @@ def test_inputs():
     check("stdin json", rc == 0 and json.loads(out)["n_points"] == 9, err)
     rc, out, err = run(["certify", "--alpha", "1", "--beta", "0", "--shape", "positive"],
                        stdin=data)
-    check("certify stdin", rc == 0 and "certified: yes" in out, err)
+    check("certify stdin", rc == 0 and out.startswith("interval,x_start,x_end,") and
+          all(r.endswith(",true") for r in out.strip().split("\n")[1:]), err)
     rc, out, err = run(["curve", "--closed"], stdin=open(FIG2, "rb").read())
     check("curve stdin", rc == 0 and out.startswith("t,x,y\n"), err)
     rc, out, err = run(["fit", "-", "--at", "-"], stdin=data)
@@ -384,7 +386,7 @@ def test_exit_statuses():
     check("certify violated rc 4", rc == 4, err)
     check("certify lists intervals", "interval 0 [0, 2]" in err and "interval 7 [28, 30]" in err
           and "interval 3 " not in err, err)
-    check("certify report written", "certified: no" in out and "NO" in out)
+    check("certify report written", ",false" in out and ",true" in out)
     rc, out, err = run(["certify", T1, "--alpha", "0.04", "--beta", "0", "--shape", "positive",
                         "--json"])
     js = json.loads(out)
@@ -532,7 +534,7 @@ def test_options():
     rc, out, err = run(["fit", T2, "--shape", "above", "--line", "0.31,1", "-o", tmp("keep.csv")])
     check("failed run keeps old file", rc == 2 and open(tmp("keep.csv")).read() == "old\n")
     rc, out, err = run(["fit", T1, "-o", tmp("keep.csv"), "--samples", "2"])
-    check("-o replaces file", rc == 0 and open(tmp("keep.csv")).read().startswith("x,y\n0,2\n"))
+    check("-o replaces file", rc == 0 and open(tmp("keep.csv")).read().startswith("x,f\n0,2\n"))
     # a FIFO target is written directly, not replaced by a regular file
     fifo = tmp("fifo")
     os.mkfifo(fifo)
@@ -542,7 +544,7 @@ def test_options():
     rc, out, err = run(["fit", T1, "--samples", "2", "-o", fifo])
     t.join(10)
     check("-o FIFO written directly", rc == 0 and stat.S_ISFIFO(os.stat(fifo).st_mode)
-          and got and got[0].startswith("x,y\n"), err)
+          and got and got[0].startswith("x,f\n"), err)
 
 
 def test_svg():
@@ -737,7 +739,7 @@ def test_streaming_errors():
     check("stream bad row names line", rc == 2 and "e_bad.csv:15001:" in err, err)
     check("stream bad row: -o absent", not os.path.exists(tmp("e_out.csv")) and not no_leftovers())
     rc, out, err = run(["fit", tmp("e_bad.csv"), "--shape", "positive"])
-    check("stream bad row on stdout: partial, flagged", rc == 2 and out.startswith("x,y\n")
+    check("stream bad row on stdout: partial, flagged", rc == 2 and out.startswith("x,f\n")
           and "incomplete" in err, err)
     # an x that goes back at line 12001
     bad = list(lines)
@@ -916,6 +918,60 @@ def test_signals():
             check(name + ": nothing left", os.listdir(d) == [], str(os.listdir(d)))
 
 
+def test_edges_cli():
+    """Findings 4 and 7 of the edge review (issue 18), each failing before its fix."""
+    # 4: a first row of quoted numbers is data (was taken as a header: one point lost)
+    p = tmp("quoted_first.csv")
+    open(p, "w").write('"0","1"\n1,2\n2,1.5\n')
+    rc, out, err = run(["fit", p, "--json"])
+    js = json.loads(out) if rc == 0 else {}
+    check("quoted numbers first row kept", rc == 0 and js["n_points"] == 3 and
+          js["knots"][0]["x"] == 0, err)
+    # 4: names starting like nan / inf are names (was: refused as data)
+    p = tmp("nan_names.csv")
+    open(p, "w").write("nanoseconds,infections\n1,2\n2,3\n3,5\n")
+    rc, out, err = run(["fit", p, "--samples", "2"])
+    check("nan/inf-like names are a header", rc == 0 and out.startswith("nanoseconds,infections\n")
+          and out.count("\n") == 4, err)
+    # 4: '0;1' first in a ';' file is data (was silently eaten as a header)
+    p = tmp("semi.csv")
+    open(p, "w").write("0;1\n1;2\n2;3\n")
+    rc, out, err = run(["fit", p, "--json"])
+    check("';' first row kept", rc == 0 and json.loads(out)["n_points"] == 3, err)
+    # 7: sample x strictly increasing at large |x| (1e15 + i: most samples rounded onto others)
+    p = tmp("big_x.csv")
+    open(p, "w").write("x,f\n" + "".join("%d,%r\n" % (10**15 + i, v) for i, v in
+                                         enumerate([0.16, 3.31, 5.67, 8.26, 11.59])))
+    for extra in ([], ["--no-stream"], ["--json", "--with-samples"]):
+        rc, out, err = run(["fit", p, "--form", "paper", "--samples", "100"] + extra)
+        if "--json" in extra:
+            xs = json.loads(out)["samples"]["x"] if rc == 0 else []
+        else:
+            xs = [float(l.split(",")[0]) for l in out.strip().split("\n")[1:]] if rc == 0 else []
+        check("large |x| samples strictly increasing %s" % extra, rc == 0 and len(xs) > 5 and
+              all(b > a for a, b in zip(xs, xs[1:])) and xs[0] == 1e15 and xs[-1] == 1e15 + 4,
+              err + str(xs[:6]))
+    # 7: the geometric-bound message names FILE:LINES
+    rc, out, err = run(["fit", T1, "--form", "geometric", "--alpha", "0.1"])
+    check("geometric bound names file:lines", rc == 1 and "table1_positive.csv:2-3: interval 0"
+          in err, err)
+    # 7: parallel lower/upper lines that contradict each other: an option error (exit 1)
+    for cmd in (["fit", T1], ["certify", T1, "--alpha", "1", "--beta", "0"]):
+        rc, out, err = run(cmd + ["--lower", "0,0", "--upper", "0,-1"])
+        check("--lower above --upper is usage %s" % cmd[0], rc == 1 and "nowhere below" in err
+              and out == "", err)
+    # crossing lines depend on the data: a data error naming the point
+    rc, out, err = run(["fit", T1, "--lower", "1,0", "--upper", "0,10"])
+    check("crossing lines: data error", rc == 2 and "table1_positive.csv:" in err, err)
+    # 7: --samples with outputs held in memory: refused above the documented limit, at once
+    for args in (["fit", T1, "--svg", tmp("big.svg")], ["fit", T1, "--json", "--with-samples"],
+                 ["certify", T1, "--alpha", "1", "--beta", "0", "--shape", "positive", "--svg",
+                  tmp("big2.svg")], ["curve", FIG2, "--closed"]):
+        rc, out, err = run(args + ["--samples", "100000000"], timeout=30)
+        check("--samples limit %s" % args[0], rc == 1 and "10000000" in err and out == "", err)
+    check("--samples limit: nothing written", not os.path.exists(tmp("big.svg")))
+
+
 def main():
     if not os.access(CLI, os.X_OK):
         print("test_cli: %s not built" % CLI)
@@ -925,7 +981,7 @@ def main():
         for t in (test_help_version, test_usage_errors, test_table1_positive, test_roundtrip,
                   test_inputs, test_malformed, test_exit_statuses, test_options, test_svg,
                   test_curve, test_streaming_identical, test_streaming_errors,
-                  test_streaming_memory, test_signals, test_same_output):
+                  test_streaming_memory, test_signals, test_same_output, test_edges_cli):
             try:
                 t()
             except Exception as e:  # a crash in one group is one failure, keep going

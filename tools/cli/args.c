@@ -17,7 +17,9 @@ typedef enum opt_id {
     O_SHAPE, O_LINE, O_LOWER, O_UPPER, O_ALPHA, O_BETA, O_ALPHAS, O_BETAS, O_MARGIN,
     O_SLOPES, O_C1, O_FORM, O_SAMPLES, O_AT, O_DERIV, O_EXTRAP, O_OUT, O_JSON, O_SVG,
     O_TITLE, O_SHOWCTL, O_POINTSONLY, O_COLUMNS, O_NOSTREAM, O_CLOSED, O_PARAM, O_BOX,
-    O_HELP
+    O_HELP, O_PNG, O_PDF, O_FORMAT, O_DELIM, O_DECCOMMA, O_NA, O_MISSING, O_SKIP, O_X, O_Y,
+    O_XTIME, O_GRID, O_SAMPLES_TOTAL, O_WITH_SAMPLES, O_XLABEL, O_YLABEL, O_LOGY, O_SIZE,
+    O_VERBOSE
 } opt_id;
 
 typedef struct optdef {
@@ -56,6 +58,26 @@ static const optdef opts[] = {
     {"--closed", 0, V, O_CLOSED},
     {"--param", 1, V, O_PARAM},
     {"--box", 1, V, O_BOX},
+    {"--png", 1, F | C | V, O_PNG},
+    {"--pdf", 1, F | C | V, O_PDF},
+    {"--format", 1, F | C | V, O_FORMAT},
+    {"--delimiter", 1, F | C | V, O_DELIM},
+    {"--decimal-comma", 0, F | C | V, O_DECCOMMA},
+    {"--na", 1, F | C | V, O_NA},
+    {"--missing", 1, F | C | V, O_MISSING},
+    {"--skip", 1, F | C | V, O_SKIP},
+    {"--x", 1, F | C, O_X},
+    {"--y", 1, F | C, O_Y},
+    {"--x-time", 0, F | C, O_XTIME},
+    {"--grid", 1, F, O_GRID},
+    {"--samples-total", 1, F | C | V, O_SAMPLES_TOTAL},
+    {"--with-samples", 0, F | C, O_WITH_SAMPLES},
+    {"--xlabel", 1, F | C | V, O_XLABEL},
+    {"--ylabel", 1, F | C | V, O_YLABEL},
+    {"--logy", 0, F | C | V, O_LOGY},
+    {"--size", 1, F | C | V, O_SIZE},
+    {"-v", 0, F | C | V, O_VERBOSE},
+    {"--verbose", 0, F | C | V, O_VERBOSE},
     {"--help", 0, F | C | V, O_HELP},
     {"-h", 0, F | C | V, O_HELP},
 };
@@ -111,6 +133,71 @@ static int parse_list(const char *s, int allow_inf, double **out, size_t *n, cha
     *out = a;
     *n = cnt;
     return 1;
+}
+
+/* A number, or an ISO 8601 date / date-time (seconds since the epoch). */
+static int parse_x_value(const char *s, size_t len, double *v)
+{
+    const char *stop;
+    if (parse_number(s, len, 0, v))
+        return 1;
+    return len && tsu_parse_time(s, s + len, v, NULL, &stop) && stop == s + len;
+}
+
+/* --at X1,X2,...: a list of values (numbers or dates), in order. 0: not a list. */
+static int parse_at_list(const char *s, double **out, size_t *n)
+{
+    size_t cnt = 1;
+    for (const char *p = s; *p; p++)
+        cnt += *p == ',';
+    double *a = malloc(cnt * sizeof *a);
+    if (!a)
+        return 0;
+    const char *p = s;
+    for (size_t i = 0; i < cnt; i++) {
+        const char *e = strchr(p, ',');
+        size_t len = e ? (size_t)(e - p) : strlen(p);
+        while (len && (*p == ' ' || *p == '\t'))
+            p++, len--;
+        while (len && (p[len - 1] == ' ' || p[len - 1] == '\t'))
+            len--;
+        if (!parse_x_value(p, len, &a[i])) {
+            free(a);
+            return 0;
+        }
+        p = e ? e + 1 : p + len;
+    }
+    *out = a;
+    *n = cnt;
+    return 1;
+}
+
+/* --x / --y / --columns entry: a copy of [s, s + len) trimmed, or NULL. */
+static char *col_spec(const char *s, size_t len)
+{
+    while (len && (*s == ' ' || *s == '\t'))
+        s++, len--;
+    while (len && (s[len - 1] == ' ' || s[len - 1] == '\t'))
+        len--;
+    if (!len)
+        return NULL;
+    char *d = malloc(len + 1);
+    if (d) {
+        memcpy(d, s, len);
+        d[len] = 0;
+    }
+    return d;
+}
+
+static int set_plot(cli_cmd cmd, const char *name, const char *v, cli_plot_format f, cli_opts *o)
+{
+    if (!*v || strcmp(v, "-") == 0)
+        return cli_usage(cmd, "%s needs a file name", name);
+    if (o->svg)
+        return cli_usage(cmd, "one plot per run: %s \"%s\" and \"%s\"", name, o->svg, v);
+    o->svg = v;
+    o->plot_format = f;
+    return CLI_OK;
 }
 
 static int parse_size(const char *s, size_t *v)
@@ -206,7 +293,12 @@ void cli_opts_free(cli_opts *o)
         return;
     free(o->alphas);
     free(o->betas);
+    free(o->at_list);
+    free(o->xcol);
+    free(o->ycol);
     o->alphas = o->betas = NULL;
+    o->at_list = NULL;
+    o->xcol = o->ycol = NULL;
 }
 
 static int apply(cli_cmd cmd, const optdef *d, const char *name, const char *v, cli_opts *o)
@@ -268,6 +360,11 @@ static int apply(cli_cmd cmd, const optdef *d, const char *name, const char *v, 
         return CLI_OK;
     case O_AT:
         o->at = v;
+        free(o->at_list);
+        o->at_list = NULL;
+        o->n_at = 0;
+        if (strchr(v, ',') || parse_x_value(v, strlen(v), &(double){0}))
+            (void)parse_at_list(v, &o->at_list, &o->n_at);
         return CLI_OK;
     case O_DERIV:
         if (strcmp(v, "0") && strcmp(v, "1") && strcmp(v, "2"))
@@ -291,10 +388,7 @@ static int apply(cli_cmd cmd, const optdef *d, const char *name, const char *v, 
         o->json = 1;
         return CLI_OK;
     case O_SVG:
-        if (!*v || strcmp(v, "-") == 0)
-            return cli_usage(cmd, "%s needs a file name", name);
-        o->svg = v;
-        return CLI_OK;
+        return set_plot(cmd, name, v, CLI_PLOT_SVG, o);
     case O_TITLE:
         o->title = v;
         return CLI_OK;
@@ -306,22 +400,138 @@ static int apply(cli_cmd cmd, const optdef *d, const char *name, const char *v, 
         return CLI_OK;
     case O_COLUMNS: {
         const char *comma = strchr(v, ',');
-        size_t a = 0, b = 0;
-        char tmp[32];
-        size_t la = comma ? (size_t)(comma - v) : 0;
-        if (!comma || la == 0 || la >= sizeof tmp)
-            return cli_usage(cmd, "%s expects X,Y (1-based column numbers), found \"%s\"", name, v);
-        memcpy(tmp, v, la);
-        tmp[la] = '\0';
-        if (!parse_size(tmp, &a) || !parse_size(comma + 1, &b) || a < 1 || b < 1)
-            return cli_usage(cmd, "%s expects X,Y (1-based column numbers), found \"%s\"", name, v);
-        if (a == b)
-            return cli_usage(cmd, "%s: X and Y must be different columns", name);
-        o->col_x = a - 1;
-        o->col_y = b - 1;
+        if (!comma || strchr(comma + 1, ','))
+            return cli_usage(cmd, "%s expects X,Y (1-based column numbers or header names), "
+                                  "found \"%s\"", name, v);
+        free(o->xcol);
+        free(o->ycol);
+        o->xcol = col_spec(v, (size_t)(comma - v));
+        o->ycol = col_spec(comma + 1, strlen(comma + 1));
+        if (!o->xcol || !o->ycol)
+            return cli_usage(cmd, "%s expects X,Y (1-based column numbers or header names), "
+                                  "found \"%s\"", name, v);
         o->columns_set = 1;
         return CLI_OK;
     }
+    case O_X:
+    case O_Y: {
+        char **dst = d->id == O_X ? &o->xcol : &o->ycol;
+        free(*dst);
+        *dst = col_spec(v, strlen(v));
+        if (!*dst)
+            return cli_usage(cmd, "%s expects a column number or header name", name);
+        o->columns_set = 1;
+        return CLI_OK;
+    }
+    case O_PNG:
+        return set_plot(cmd, name, v, CLI_PLOT_PNG, o);
+    case O_PDF:
+        return set_plot(cmd, name, v, CLI_PLOT_PDF, o);
+    case O_FORMAT:
+        if (strcmp(v, "svg") && strcmp(v, "png") && strcmp(v, "pdf"))
+            return cli_usage(cmd, "%s expects svg, png or pdf, found \"%s\"", name, v);
+        o->plot_format = v[1] == 'v' ? CLI_PLOT_SVG : v[1] == 'n' ? CLI_PLOT_PNG : CLI_PLOT_PDF;
+        o->format_set = 1;
+        return CLI_OK;
+    case O_DELIM:
+        if (strcmp(v, "auto") == 0)
+            o->delim = 0;
+        else if (strcmp(v, ",") == 0 || strcmp(v, "comma") == 0)
+            o->delim = ',';
+        else if (strcmp(v, ";") == 0 || strcmp(v, "semicolon") == 0)
+            o->delim = ';';
+        else if (strcmp(v, "\t") == 0 || strcmp(v, "\\t") == 0 || strcmp(v, "tab") == 0)
+            o->delim = '\t';
+        else if (strcmp(v, " ") == 0 || strcmp(v, "space") == 0)
+            o->delim = ' ';
+        else
+            return cli_usage(cmd, "%s expects ',', ';', tab ('\\t'), space (' ') or auto, found "
+                                  "\"%s\"", name, v);
+        return CLI_OK;
+    case O_DECCOMMA:
+        o->decimal_comma = 1;
+        return CLI_OK;
+    case O_NA:
+        o->na = v;
+        return CLI_OK;
+    case O_MISSING:
+        if (strcmp(v, "error") && strcmp(v, "skip"))
+            return cli_usage(cmd, "%s expects error or skip, found \"%s\"", name, v);
+        o->missing_skip = v[0] == 's';
+        return CLI_OK;
+    case O_SKIP: {
+        size_t nl;
+        if (!parse_size(v, &nl))
+            return cli_usage(cmd, "%s expects a number of lines, found \"%s\"", name, v);
+        o->skip = nl;
+        return CLI_OK;
+    }
+    case O_XTIME:
+        o->x_time = 1;
+        return CLI_OK;
+    case O_GRID: {
+        /* A:B:N, A and B numbers or dates (a date-time needs its seconds or a zone) */
+        const char *last = strrchr(v, ':');
+        size_t nn = 0;
+        double a = 0, b = 0;
+        const char *mid = NULL;
+        if (last && parse_size(last + 1, &nn)) {
+            /* the ':' between A and B: the first one where both sides parse */
+            for (const char *q = strchr(v, ':'); q && q < last; q = strchr(q + 1, ':'))
+                if (parse_x_value(v, (size_t)(q - v), &a) &&
+                    parse_x_value(q + 1, (size_t)(last - q - 1), &b)) {
+                    mid = q;
+                    break;
+                }
+        }
+        if (!mid || nn < 2 || nn > 100000000 || !(a < b))
+            return cli_usage(cmd, "%s expects A:B:N (A < B numbers or ISO 8601 dates, 2 <= N <= "
+                                  "100000000), found \"%s\"", name, v);
+        o->grid_set = 1;
+        o->grid_a = a;
+        o->grid_b = b;
+        o->grid_n = nn;
+        return CLI_OK;
+    }
+    case O_SAMPLES_TOTAL:
+        if (!parse_size(v, &o->samples_total) || o->samples_total < 2 ||
+            o->samples_total > 100000000)
+            return cli_usage(cmd, "%s expects an integer from 2 to 100000000, found \"%s\"",
+                             name, v);
+        return CLI_OK;
+    case O_WITH_SAMPLES:
+        o->with_samples = 1;
+        return CLI_OK;
+    case O_XLABEL:
+        o->xlabel = v;
+        return CLI_OK;
+    case O_YLABEL:
+        o->ylabel = v;
+        return CLI_OK;
+    case O_LOGY:
+        o->logy = 1;
+        return CLI_OK;
+    case O_SIZE: {
+        const char *xch = strchr(v, 'x');
+        size_t w = 0, h = 0;
+        char tmp[32];
+        size_t lw = xch ? (size_t)(xch - v) : 0;
+        if (xch && lw < sizeof tmp) {
+            memcpy(tmp, v, lw);
+            tmp[lw] = 0;
+        }
+        if (!xch || lw >= sizeof tmp || !parse_size(tmp, &w) || !parse_size(xch + 1, &h) ||
+            w < TSU_PLOT_MIN_SIZE || w > TSU_PLOT_MAX_SIZE || h < TSU_PLOT_MIN_SIZE ||
+            h > TSU_PLOT_MAX_SIZE)
+            return cli_usage(cmd, "%s expects WxH in pixels, each from %d to %d, found \"%s\"",
+                             name, TSU_PLOT_MIN_SIZE, TSU_PLOT_MAX_SIZE, v);
+        o->width = (unsigned)w;
+        o->height = (unsigned)h;
+        return CLI_OK;
+    }
+    case O_VERBOSE:
+        o->verbose = 1;
+        return CLI_OK;
     case O_NOSTREAM:
         o->no_stream = 1;
         return CLI_OK;
@@ -455,9 +665,51 @@ int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o)
     }
     if (!o->data)
         o->data = "-";
+    if (!o->na)
+        o->na = "NA,NaN,null";
+    if (o->decimal_comma && o->delim == ',')
+        return cli_usage(cmd, "--decimal-comma needs another delimiter than ',' (--delimiter ';')");
+    if (o->xcol && o->ycol && strcmp(o->xcol, o->ycol) == 0)
+        return cli_usage(cmd, "--columns / --x / --y: X and Y must be different columns (both "
+                              "\"%s\")", o->xcol);
     if (o->out && o->svg && strcmp(o->out, "-") != 0 && same_file(o->out, o->svg))
-        return cli_usage(cmd, "-o and --svg name the same file (\"%s\"): the plot would replace "
+        return cli_usage(cmd, "-o and the plot name the same file (\"%s\"): the plot would replace "
                               "the samples", o->svg);
+    if (o->svg) {
+        /* the format: --format, else the extension, which must agree with it */
+        const char *dot = strrchr(o->svg, '.'), *slash = strrchr(o->svg, '/');
+        int ext = -1;
+        if (dot && (!slash || dot > slash)) {
+            if (strcmp(dot, ".svg") == 0 || strcmp(dot, ".SVG") == 0)
+                ext = CLI_PLOT_SVG;
+            else if (strcmp(dot, ".png") == 0 || strcmp(dot, ".PNG") == 0)
+                ext = CLI_PLOT_PNG;
+            else if (strcmp(dot, ".pdf") == 0 || strcmp(dot, ".PDF") == 0)
+                ext = CLI_PLOT_PDF;
+        }
+        static const char *const fname[3] = {"svg", "png", "pdf"};
+        if (o->format_set) {
+            if (ext >= 0 && ext != (int)o->plot_format)
+                return cli_usage(cmd, "--format %s contradicts the extension of \"%s\"",
+                                 fname[o->plot_format], o->svg);
+        } else if (ext < 0) {
+            return cli_usage(cmd, "cannot tell the plot format of \"%s\": use a .svg, .png or "
+                                  ".pdf name, or --format svg|png|pdf", o->svg);
+        } else if (ext != (int)o->plot_format) {
+            return cli_usage(cmd, "--%s \"%s\": the extension says %s (use --%s, or --format)",
+                             fname[o->plot_format], o->svg, fname[ext], fname[ext]);
+        }
+    } else if (o->format_set || o->xlabel || o->ylabel || o->logy || o->width) {
+        return cli_usage(cmd, "%s only applies to a plot (--svg, --png or --pdf FILE)",
+                         o->format_set ? "--format" : o->xlabel ? "--xlabel"
+                         : o->ylabel ? "--ylabel" : o->logy ? "--logy" : "--size");
+    }
+    if (o->with_samples && !o->json)
+        return cli_usage(cmd, "--with-samples only applies with --json");
+    if (o->grid_set + (o->at != NULL) + (o->samples_total != 0) > 1 ||
+        (o->samples_set && o->samples_total))
+        return cli_usage(cmd, "give one of --samples, --samples-total, --grid and --at");
+
     if (o->c1) {
         if (o->form_set && o->form != TS_FORM_C1)
             return cli_usage(cmd, "--c1 contradicts --form %s", cli_form_name(o->form));

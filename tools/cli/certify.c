@@ -5,43 +5,32 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-/* Text report of certify. */
-static int certify_text(tsu_plot_buf *b, const cli_opts *o, const char *name, const ts_spline *s,
-                        const ts_line *lower, const ts_line *upper,
-                        const ts_interval_report *reps, int certified)
+/* CSV report of certify: one row per interval, x in the data's own form. */
+static int certify_csv(tsu_plot_buf *b, const cli_data *d, const ts_interval_report *reps,
+                       size_t n)
 {
-    size_t n = ts_spline_intervals(s), bad = 0;
-    char t1[200], t2[200];
-    char v[8][TSU_FMT_SIZE];
+    char xn[700], h[4][800];
+    const char *suffix[4] = {"_start", "_end", "_at_gap_lower", "_at_gap_upper"};
     int ok = 1;
-    if (lower)
-        cli_line_text(lower, t1, sizeof t1);
-    if (upper)
-        cli_line_text(upper, t2, sizeof t2);
-    ok &= tsu_plot_buf_printf(b, "# trigspline certify %s: %zu intervals, form %s, slopes %s%s%s%s%s\n",
-                             name, n, cli_form_name(ts_spline_form(s)), cli_slopes_name(o->slopes),
-                             lower ? ", lower " : "", lower ? t1 : "", upper ? ", upper " : "",
-                             upper ? t2 : "") == TSU_PLOT_OK;
-    ok &= tsu_plot_buf_puts(b, "interval x0 x1 alpha beta gap_lower at_lower gap_upper at_upper "
-                              "certified\n") == TSU_PLOT_OK;
+    for (int k = 0; k < 4; k++) {
+        char raw[600];
+        snprintf(raw, sizeof raw, "%s%s", d->cols.xname, suffix[k]);
+        cli_cols_csv_name(raw, h[k], sizeof h[k]);
+    }
+    (void)xn;
+    ok &= tsu_plot_buf_printf(b, "interval,%s,%s,alpha,beta,gap_lower,%s,gap_upper,%s,certified\n",
+                             h[0], h[1], h[2], h[3]) == TSU_PLOT_OK;
     for (size_t i = 0; i < n && ok; i++) {
         const ts_interval_report *r = &reps[i];
-        bad += !r->certified;
+        char v[8][TSU_TIME_SIZE];
         ok &= tsu_plot_buf_printf(
-                  b, "%zu %s %s %s %s %s %s %s %s %s\n", i, cli_num(r->x0, v[0]),
-                  cli_num(r->x1, v[1]), cli_num(r->alpha, v[2]), cli_num(r->beta, v[3]),
-                  r->has_lower ? cli_num(r->gap_lower, v[4]) : "-",
-                  r->has_lower ? cli_num(r->at_lower, v[5]) : "-",
-                  r->has_upper ? cli_num(r->gap_upper, v[6]) : "-",
-                  r->has_upper ? cli_num(r->at_upper, v[7]) : "-",
-                  r->certified ? "yes" : "NO") == TSU_PLOT_OK;
-    }
-    if (ok) {
-        if (certified)
-            ok &= tsu_plot_buf_puts(b, "# certified: yes\n") == TSU_PLOT_OK;
-        else
-            ok &= tsu_plot_buf_printf(b, "# certified: no (%zu of %zu intervals leave the region)\n",
-                                     bad, n) == TSU_PLOT_OK;
+                  b, "%zu,%s,%s,%s,%s,%s,%s,%s,%s,%s\n", i, cli_x_text(&d->cols, r->x0, v[0]),
+                  cli_x_text(&d->cols, r->x1, v[1]), cli_num(r->alpha, v[2]),
+                  cli_num(r->beta, v[3]), r->has_lower ? cli_num(r->gap_lower, v[4]) : "",
+                  r->has_lower ? cli_x_text(&d->cols, r->at_lower, v[5]) : "",
+                  r->has_upper ? cli_num(r->gap_upper, v[6]) : "",
+                  r->has_upper ? cli_x_text(&d->cols, r->at_upper, v[7]) : "",
+                  r->certified ? "true" : "false") == TSU_PLOT_OK;
     }
     return ok ? CLI_OK : cli_nomem();
 }
@@ -63,6 +52,16 @@ int cli_certify(cli_opts *o)
     if ((rc = cli_read_and_fit(o, &opt, &d, &s)) != CLI_OK)
         return rc;
     size_t n = ts_spline_intervals(s);
+    if ((o->svg || o->with_samples) &&
+        (double)n * (double)(o->samples - 1) + 1.0 > CLI_MAX_HELD_SAMPLES) {
+        cli_error("%s: %.0f sample points (--samples %zu over %zu intervals) exceed the limit of "
+                  "%u that a plot or --with-samples holds in memory; lower --samples",
+                  d.name, (double)n * (double)(o->samples - 1) + 1.0, o->samples, n,
+                  CLI_MAX_HELD_SAMPLES);
+        ts_spline_free(s);
+        cli_data_free(&d);
+        return CLI_USAGE;
+    }
     ts_interval_report *reps = calloc(n, sizeof *reps);
     cli_json j;
     cli_json_init(&j);
@@ -93,18 +92,23 @@ int cli_certify(cli_opts *o)
         cli_xy_push(&bad, at, y);
     }
     if (o->json) {
+        cli_xy held = {0};
         cli_sample(s, 0, n, 1, o->samples, 0, cli_sink_stats, &smp);
-        cli_spline_json(&j, o, s, shape, lower, upper, certified, reps, &smp);
+        if (o->with_samples)
+            cli_sample(s, 0, n, 1, o->samples, 0, cli_sink_xy, &held);
+        cli_spline_json(&j, o, s, shape, lower, upper, certified, reps, &smp, &d,
+                        o->with_samples ? &held : NULL);
+        cli_xy_free(&held);
         if (j.failed) {
             rc = cli_nomem();
             goto done;
         }
-    } else if ((rc = certify_text(&text, o, d.name, s, lower, upper, reps, certified)) != CLI_OK) {
+    } else if ((rc = certify_csv(&text, &d, reps, n)) != CLI_OK) {
         goto done;
     }
-    if (o->svg && (rc = cli_spline_plot(o, d.name, s, shape, lower, upper, &bad, &svg)) != CLI_OK)
+    if (o->svg && (rc = cli_spline_plot(o, &d, s, shape, lower, upper, &bad, &svg)) != CLI_OK)
         goto done;
-    rc = cli_write_outputs(o->out, o->json ? &j.b : &text, NULL, NULL, o->svg, &svg);
+    rc = cli_write_outputs(o->out, o->json ? &j.b : &text, NULL, NULL, o->svg, o->plot_format, &svg);
     if (rc == CLI_OK) {
         cli_overshoot ov;
         cli_overshoot_init(&ov);

@@ -9,8 +9,10 @@
  *   json.c         building a JSON document
  *   output.c       outputs written only on success
  *   sample.c       sampling a spline into sinks; growable point arrays
+ *   table.c        reading DATA rows: options, columns by name, missing values
  *   data.c         reading DATA, explaining data and scheme errors
  *   fit_options.c  cli_opts -> ts_options for fit and certify
+ *   axis.c         date and log ticks of plots
  *   spline_json.c  the JSON report of a spline
  *   spline_plot.c  the SVG plot of a spline
  *   stream.c       fit in constant memory (CSV samples of long inputs)
@@ -42,6 +44,13 @@ enum {
 };
 
 typedef enum cli_cmd { CLI_FIT = 0, CLI_CERTIFY = 1, CLI_CURVE = 2 } cli_cmd;
+
+typedef enum cli_plot_format { CLI_PLOT_SVG = 0, CLI_PLOT_PNG = 1, CLI_PLOT_PDF = 2 } cli_plot_format;
+
+/* Most sample points a command holds in memory (the plot's curve, curve's
+ * CSV, --json --with-samples): beyond it --samples is refused (the streaming
+ * CSV of fit has no limit). */
+#define CLI_MAX_HELD_SAMPLES 10000000u
 
 /* Samples per interval when --samples is absent. */
 #define CLI_DEFAULT_SAMPLES 50
@@ -76,13 +85,36 @@ typedef struct cli_opts {
 
     const char *out; /* NULL = stdout */
     int json;
-    const char *svg;
+    const char *svg; /* the plot file (--svg, --png or --pdf), any format */
     const char *title;
     int show_control, points_only;
 
     int columns_set;
-    size_t col_x, col_y; /* 0-based */
+    char *xcol, *ycol; /* --columns / --x / --y: a 1-based number or a header name (owned) */
     int no_stream;
+
+    /* reading DATA (table.c) */
+    char delim;        /* 0: auto; ',', ';', '\t', ' ' */
+    int decimal_comma;
+    const char *na;    /* missing-value words */
+    int missing_skip;  /* --missing skip */
+    unsigned long long skip;
+    int x_time;        /* --x-time */
+    int verbose;
+
+    /* more outputs */
+    int grid_set;
+    double grid_a, grid_b;
+    size_t grid_n;
+    double *at_list; /* --at X1,X2,... (owned); NULL: --at names a file */
+    size_t n_at;
+    size_t samples_total; /* 0: per-interval --samples */
+    int with_samples;
+    int format_set;
+    cli_plot_format plot_format; /* of the plot written to o->svg (--svg / --png / --pdf) */
+    const char *xlabel, *ylabel;
+    int logy;
+    unsigned width, height;
 
     /* curve */
     int closed;
@@ -178,7 +210,13 @@ FILE *cli_out_file(const cli_out *c);
 int cli_out_commit(cli_out *c, char *msg, size_t len);
 void cli_out_abort(cli_out *c);
 int cli_write_outputs(const char *out_path, const tsu_plot_buf *text, cli_writer_fn fn,
-                      void *fn_ctx, const char *svg_path, const tsu_plot_buf *svg);
+                      void *fn_ctx, const char *plot_path, cli_plot_format fmt,
+                      const tsu_plot_buf *svg);
+/* The environment variable TRIGSPLINE_SVG_CONVERTER names the program that
+ * turns SVG into PNG / PDF (default rsvg-convert, Debian package
+ * librsvg2-bin); it is run as  PROG -f png|pdf  with the SVG on standard
+ * input and the file on standard output.  A writer_fn returning ECANCELED
+ * has reported its error itself (exit status CLI_DATA). */
 
 /* ---- sample.c -------------------------------------------------------- */
 /* Sampling: m points per interval of [i0, i1) (knots included, the right
@@ -187,6 +225,15 @@ int cli_write_outputs(const char *out_path, const tsu_plot_buf *text, cli_writer
 typedef int (*cli_sink)(void *ctx, const double *x, const double *y, size_t k);
 int cli_sample(const ts_spline *s, size_t i0, size_t i1, int with_end, size_t m, int deriv,
                cli_sink sink, void *ctx);
+/* The same, continuing after the x *prev (updated): x strictly increasing
+ * across calls (repeated positions at large |x| are left out). */
+int cli_sample_after(const ts_spline *s, size_t i0, size_t i1, int with_end, size_t m, int deriv,
+                     cli_sink sink, void *ctx, double *prev);
+/* n points evenly over [a, b] (both included; repeats left out).  0, an
+ * errno of the sink, or -1: an evaluation failed (outside the data without
+ * --extrapolate; *err, *bad_x). */
+int cli_sample_even(const ts_spline *s, double a, double b, size_t n, int deriv, cli_sink sink,
+                    void *ctx, ts_error *err, double *bad_x);
 
 /* Growable pair of double arrays (failed: an allocation failed, nothing
  * more is added). */
@@ -206,20 +253,54 @@ typedef struct cli_stats {
 #define CLI_STATS_INIT {(double)INFINITY, -(double)INFINITY, 0}
 
 /* Sinks: ctx is a cli_stats, a cli_xy (ENOMEM when it failed), or a
- * tsu_writer ("x,y" rows; its errno). */
+ * cli_csv_sink ("x,y" rows, x as a date when the columns say so; its errno). */
+typedef struct cli_csv_sink {
+    tsu_writer *w;
+    const struct cli_cols *cols; /* NULL: plain numbers */
+} cli_csv_sink;
 int cli_sink_stats(void *ctx, const double *x, const double *y, size_t k);
 int cli_sink_xy(void *ctx, const double *x, const double *y, size_t k);
 int cli_sink_writer(void *ctx, const double *x, const double *y, size_t k);
 
+/* ---- table.c --------------------------------------------------------- */
+/* The x and y columns of DATA: indices, names for the outputs ("x", "y"
+ * without a header), whether x holds dates, rows skipped for missing values. */
+struct cli_cols {
+    size_t ix, iy;
+    char xname[256], yname[256];
+    int x_time;
+    tsu_time_form tform; /* of the first x value, when x_time */
+    unsigned long long skipped;
+};
+typedef struct cli_cols cli_cols;
+/* Reader options from --delimiter, --decimal-comma, --na, --skip (dates detected). */
+void cli_read_options(const cli_opts *o, tsu_read_options *ro);
+/* After the first row: resolve --columns / --x / --y (numbers or names).
+ * CLI_OK or CLI_DATA (message printed). */
+int cli_cols_resolve(const cli_opts *o, const tsu_reader *r, const char *name, cli_cols *c);
+/* x, y of row: 1 taken, 0 skipped (missing, --missing skip), -1 error
+ * (missing, --missing error; message printed). */
+int cli_cols_take(const cli_opts *o, const tsu_reader *r, const char *name, const double *row,
+                  cli_cols *c, double *x, double *y);
+/* A name as a CSV field (quoted when needed). */
+void cli_cols_csv_name(const char *nm, char *buf, size_t len);
+/* The name of the y column of the output: y, d_y_dx, d2_y_dx2. */
+void cli_cols_y_header(const cli_cols *c, int deriv, char *buf, size_t len);
+/* "x,y\n" with the names; 0 or -1 (no memory). */
+int cli_header_line(const cli_cols *c, int deriv, tsu_plot_buf *b);
+/* x as written: an ISO 8601 date when x is a time, else the shortest number. */
+const char *cli_x_text(const cli_cols *c, double x, char buf[TSU_TIME_SIZE]);
+
 /* ---- data.c ---------------------------------------------------------- */
-typedef struct cli_data {
+struct cli_data {
     const char *name; /* for messages: the path, or "<stdin>" */
     size_t n;         /* points */
     size_t dim;       /* columns kept (2 for fit/certify; 2 or 3 for curve) */
-    double *col[3];   /* borrowed from t */
+    double *col[3];   /* owned */
     unsigned long long *line;
-    tsu_table t;
-} cli_data;
+    cli_cols cols;    /* fit / certify: the columns and their names */
+};
+typedef struct cli_data cli_data;
 /* Read DATA: fit/certify keep two columns (x, f; --columns picks them);
  * curve keeps 2 or 3.  Returns CLI_OK, CLI_DATA or CLI_IO (message printed). */
 int cli_read_data(const cli_opts *o, cli_data *d);
@@ -246,20 +327,35 @@ int cli_fit_options(const cli_opts *o, ts_options *opt);
 void cli_certify_bounds(const cli_opts *o, ts_shape *sh, ts_line *lo, int *hl, ts_line *up,
                         int *hu);
 
+/* ---- axis.c ---------------------------------------------------------- */
+/* tsu_plot_tick_fn for a time axis (ctx: the tsu_time_form of x; ticks at
+ * whole seconds / minutes / hours / days / months / years in its zone) and
+ * for a log10 y axis (ctx unused; the plot holds log10 y; ticks at decades). */
+void cli_time_ticks(void *ctx, tsu_plot_ticks *t);
+void cli_log_ticks(void *ctx, tsu_plot_ticks *t);
+
 /* ---- spline_json.c --------------------------------------------------- */
-/* The report of fit --json and certify --json: lower / upper are the
- * boundaries (NULL: none), reps the interval reports (NULL: asked of s),
- * smp the statistics of the samples. */
+/* The report of fit --json and certify --json ("schema": "trigspline-fit/1"):
+ * lower / upper are the boundaries (NULL: none), reps the interval reports
+ * (NULL: asked of s), smp the statistics of the samples, d the data (column
+ * names, rows skipped), held the samples themselves (--with-samples; NULL:
+ * not written). */
 void cli_spline_json(cli_json *j, const cli_opts *o, const ts_spline *s, ts_shape shape,
                      const ts_line *lower, const ts_line *upper, int certified,
-                     const ts_interval_report *reps, const cli_stats *smp);
+                     const ts_interval_report *reps, const cli_stats *smp,
+                     const struct cli_data *d, const cli_xy *held);
 
 /* ---- spline_plot.c --------------------------------------------------- */
 /* Render the plot of a spline read from name into svg; bad: points to mark
  * (NULL or empty: none).  Returns CLI_OK or an exit status (message printed). */
-int cli_spline_plot(const cli_opts *o, const char *name, const ts_spline *s, ts_shape shape,
-                    const ts_line *lower, const ts_line *upper, const cli_xy *bad,
+int cli_spline_plot(const cli_opts *o, const struct cli_data *d, const ts_spline *s, ts_shape shape,
+                    const ts_line *lower, const ts_line *upper, cli_xy *bad,
                     tsu_plot_buf *svg);
+
+/* Axis labels (--xlabel / --ylabel, else the column names of c, else
+ * xdef / ydef), a date axis when x is a time, decades with --logy. */
+tsu_plot_status cli_plot_axes(const cli_opts *o, tsu_plot *p, const cli_cols *c, const char *xdef,
+                              const char *ydef);
 
 /* ---- stream.c -------------------------------------------------------- */
 /* 1 when fit can stream (CSV samples only, see stream.c). */

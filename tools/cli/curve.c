@@ -81,6 +81,8 @@ int cli_curve(cli_opts *o)
                          o->title ? "--title" : o->show_control ? "--show-control" : "--points-only");
     if (o->show_control && o->points_only)
         return cli_usage(o->cmd, "--show-control and --points-only do not fit together");
+    if (o->logy)
+        return cli_usage(o->cmd, "--logy is not available for curve (equal axes)");
     if (o->alpha_set && o->alphas)
         return cli_usage(o->cmd, "give --alpha or --alphas, not both");
     if (o->beta_set && o->betas)
@@ -152,6 +154,13 @@ int cli_curve(cli_opts *o)
     st = ts_curve_sample(c, m, NULL, 0, &rows);
     if (st != TS_ERR_LENGTH && st != TS_OK) {
         rc = cli_nomem();
+        goto done;
+    }
+    if (rows > CLI_MAX_HELD_SAMPLES) {
+        cli_error("%s: %zu sample points (--samples %zu over %zu segments) exceed the limit of %u "
+                  "that curve holds in memory; lower --samples",
+                  d.name, rows, m, seg, CLI_MAX_HELD_SAMPLES);
+        rc = CLI_USAGE;
         goto done;
     }
     if (rows > ((size_t)-1) / sizeof(double) / (1 + dim) ||
@@ -325,11 +334,11 @@ int cli_curve(cli_opts *o)
                  o->closed ? "closed" : "open", o->alphas ? "per segment" : cli_num(o->alpha, ab),
                  o->betas ? "per segment" : cli_num(o->beta, bb),
                  dim == 3 ? " (x-y projection)" : "");
-        tsu_plot_status ps = tsu_plot_new(0, 0, &p);
+        tsu_plot_status ps = tsu_plot_new(o->width, o->height, &p);
         if (ps == TSU_PLOT_OK)
             ps = tsu_plot_set_title(p, o->title ? o->title : title);
         if (ps == TSU_PLOT_OK)
-            ps = tsu_plot_set_labels(p, "x", "y");
+            ps = cli_plot_axes(o, p, NULL, "x", "y");
         if (ps == TSU_PLOT_OK)
             ps = tsu_plot_set_equal_aspect(p, 1);
         /* box: shaded floor / ceiling in y, dashed lines at the x bounds */
@@ -399,7 +408,7 @@ int cli_curve(cli_opts *o)
             goto done;
         }
     }
-    rc = cli_write_outputs(o->out, o->json ? &j.b : &text, NULL, NULL, o->svg, &svg);
+    rc = cli_write_outputs(o->out, o->json ? &j.b : &text, NULL, NULL, o->svg, o->plot_format, &svg);
 done:
     tsu_plot_free(p);
     cli_xy_free(&cx);

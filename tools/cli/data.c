@@ -1,8 +1,11 @@
 /* Reading the data table and explaining data / scheme errors. */
 #include "cli.h"
 
+#include <errno.h>
 #include <math.h>
+#include <stdint.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 int cli_report_io(const tsu_io_error *e)
@@ -23,56 +26,129 @@ int cli_report_io(const tsu_io_error *e)
 
 void cli_data_free(cli_data *d)
 {
-    tsu_table_free(&d->t);
+    for (int k = 0; k < 3; k++)
+        free(d->col[k]);
+    free(d->line);
     memset(d, 0, sizeof *d);
+}
+
+/* Append one row of dim values; 0 or -1 (no memory). */
+static int push_row(cli_data *d, size_t *cap, const double *v, unsigned long long line)
+{
+    if (d->n == *cap) {
+        size_t nc = *cap ? 2 * *cap : 4096;
+        if (nc > SIZE_MAX / sizeof(unsigned long long))
+            return -1;
+        for (size_t k = 0; k < d->dim; k++) {
+            double *p = realloc(d->col[k], nc * sizeof *p);
+            if (!p)
+                return -1;
+            d->col[k] = p;
+        }
+        unsigned long long *l = realloc(d->line, nc * sizeof *l);
+        if (!l)
+            return -1;
+        d->line = l;
+        *cap = nc;
+    }
+    for (size_t k = 0; k < d->dim; k++)
+        d->col[k][d->n] = v[k];
+    d->line[d->n++] = line;
+    return 0;
 }
 
 int cli_read_data(const cli_opts *o, cli_data *d)
 {
     tsu_read_options ro;
     tsu_io_error e;
+    tsu_reader *r = NULL;
+    FILE *fp;
+    size_t cap = 0;
+    int rc = CLI_OK;
     memset(d, 0, sizeof *d);
-    tsu_read_options_init(&ro);
     d->name = strcmp(o->data, "-") == 0 ? "<stdin>" : o->data;
-    tsu_io_status st = tsu_read_table_path(o->data, &ro, &d->t, &e);
-    if (st != TSU_IO_OK)
-        return cli_report_io(&e);
-    size_t nc = d->t.ncols;
-    unsigned long long l0 = d->t.lines ? d->t.lines[0] : 0;
-    d->n = d->t.nrows;
-    d->line = d->t.lines;
-    if (o->cmd == CLI_CURVE) {
-        if (nc != 2 && nc != 3) {
-            cli_error("%s:%llu: %zu field%s per row; a curve needs 2 (x, y) or 3 (x, y, z)",
-                      d->name, l0, nc, nc == 1 ? "" : "s");
-            cli_data_free(d);
-            return CLI_DATA;
-        }
-        d->dim = nc;
-        for (size_t k = 0; k < nc; k++)
-            d->col[k] = d->t.cols[k];
-        return CLI_OK;
+    if (strcmp(o->data, "-") == 0) {
+        fp = stdin;
+    } else if (!(fp = fopen(o->data, "rb"))) {
+        cli_error("%s: cannot open: %s", o->data, strerror(errno));
+        return CLI_IO;
     }
-    size_t cx = 0, cy = 1;
-    if (o->columns_set) {
-        cx = o->col_x;
-        cy = o->col_y;
-        if (cx >= nc || cy >= nc) {
-            cli_error("%s:%llu: --columns %zu,%zu: the table has only %zu field%s per row",
-                      d->name, l0, cx + 1, cy + 1, nc, nc == 1 ? "" : "s");
-            cli_data_free(d);
-            return CLI_DATA;
+    cli_read_options(o, &ro);
+    if (tsu_reader_open(&r, fp, d->name, &ro, &e) != TSU_IO_OK) {
+        rc = cli_report_io(&e);
+        goto done;
+    }
+    for (;;) {
+        const double *row;
+        tsu_io_status st = tsu_reader_next(r, &row, &e);
+        double v[3];
+        if (st == TSU_IO_END)
+            break;
+        if (st != TSU_IO_OK) {
+            rc = cli_report_io(&e);
+            goto done;
         }
-    } else if (nc != 2) {
-        cli_error("%s:%llu: %zu field%s per row, expected 2 (x and f)%s", d->name, l0, nc,
-                  nc == 1 ? "" : "s", nc > 2 ? "; use --columns X,Y to pick two" : "");
+        if (tsu_reader_rows(r) == 1) {
+            size_t nc = tsu_reader_ncols(r);
+            if (o->cmd == CLI_CURVE) {
+                if (nc != 2 && nc != 3) {
+                    cli_error("%s:%llu: %zu field%s per row; a curve needs 2 (x, y) or 3 (x, y, z)",
+                              d->name, tsu_reader_line(r), nc, nc == 1 ? "" : "s");
+                    rc = CLI_DATA;
+                    goto done;
+                }
+                d->dim = nc;
+            } else {
+                if ((rc = cli_cols_resolve(o, r, d->name, &d->cols)) != CLI_OK)
+                    goto done;
+                d->dim = 2;
+            }
+        }
+        if (o->cmd == CLI_CURVE) {
+            int miss = 0;
+            for (size_t k = 0; k < d->dim; k++)
+                miss |= isnan(v[k] = row[k]);
+            if (miss) {
+                unsigned long long l = tsu_reader_line(r);
+                if (!o->missing_skip) {
+                    cli_error("%s:%llu: missing value; use --missing skip to leave such rows out",
+                              d->name, l);
+                    rc = CLI_DATA;
+                    goto done;
+                }
+                d->cols.skipped++;
+                if (o->verbose)
+                    cli_error("%s:%llu: missing value: row skipped", d->name, l);
+                continue;
+            }
+        } else {
+            int k = cli_cols_take(o, r, d->name, row, &d->cols, &v[0], &v[1]);
+            if (k < 0) {
+                rc = CLI_DATA;
+                goto done;
+            }
+            if (k == 0)
+                continue;
+        }
+        if (push_row(d, &cap, v, tsu_reader_line(r)) != 0) {
+            rc = cli_nomem();
+            goto done;
+        }
+    }
+    if (d->n == 0) {
+        cli_error("%s: no data rows (every row has a missing value)", d->name);
+        rc = CLI_DATA;
+    }
+    if (o->verbose && d->cols.skipped)
+        cli_error("%s: %llu row%s with missing values skipped", d->name, d->cols.skipped,
+                  d->cols.skipped == 1 ? "" : "s");
+done:
+    tsu_reader_free(r);
+    if (fp != stdin)
+        fclose(fp);
+    if (rc != CLI_OK)
         cli_data_free(d);
-        return CLI_DATA;
-    }
-    d->dim = 2;
-    d->col[0] = d->t.cols[cx];
-    d->col[1] = d->t.cols[cy];
-    return CLI_OK;
+    return rc;
 }
 
 /* "NAME:LINE" of point i, or "NAME" without line numbers. */
@@ -228,9 +304,14 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
         if (interval) {
             double a = (opt->alphas ? opt->alphas[off + i] : opt->alpha) +
                        (opt->betas ? opt->betas[off + i] : opt->beta);
-            cli_error("interval %zu [%s, %s]: alpha + beta = %s is below the geometric-form bound "
-                      "%s; raise --alpha or --beta",
-                      off + i, cli_num(x[i], bx), cli_num(x[i + 1], b2), cli_num(a, bf),
+            char lr[200];
+            if (lines)
+                snprintf(lr, sizeof lr, "%s:%llu-%llu", name, lines[i], lines[i + 1]);
+            else
+                snprintf(lr, sizeof lr, "%s", name);
+            cli_error("%s: interval %zu [%s, %s]: alpha + beta = %s is below the geometric-form "
+                      "bound %s; raise --alpha or --beta",
+                      lr, off + i, cli_num(x[i], bx), cli_num(x[i + 1], b2), cli_num(a, bf),
                       cli_num(TS_GEOMETRIC_A_MIN, ln));
             return CLI_USAGE;
         }

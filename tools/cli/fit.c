@@ -8,59 +8,102 @@
 #include <string.h>
 
 typedef struct csv_ctx {
+    const cli_opts *o;
     const ts_spline *s;
-    size_t m;
-    int deriv;
-    tsu_writer *w;
+    const cli_cols *cols;
+    const char *name;
 } csv_ctx;
+
+/* The samples fit writes: --samples per interval, or --samples-total / --grid
+ * points evenly spaced.  Returns 0, an errno of the sink, or -1 (an
+ * evaluation outside the data; message printed). */
+static int fit_samples(const cli_opts *o, const ts_spline *s, const cli_cols *cols, cli_sink sink,
+                       void *ctx)
+{
+    size_t n = ts_spline_intervals(s);
+    const double *X = ts_spline_x(s);
+    if (!o->samples_total && !o->grid_set)
+        return cli_sample(s, 0, n, 1, o->samples, o->deriv, sink, ctx);
+    ts_error e;
+    double bad = 0;
+    int rc = o->grid_set ? cli_sample_even(s, o->grid_a, o->grid_b, o->grid_n, o->deriv, sink, ctx,
+                                           &e, &bad)
+                         : cli_sample_even(s, X[0], X[n], o->samples_total, o->deriv, sink, ctx,
+                                           &e, &bad);
+    if (rc == -1) {
+        char bx[TSU_TIME_SIZE], b0[TSU_TIME_SIZE], b1[TSU_TIME_SIZE];
+        cli_error("--grid: x = %s is outside the data range [%s, %s] (--extrapolate "
+                  "clamp|extend|linear evaluates there)",
+                  cli_x_text(cols, bad, bx), cli_x_text(cols, X[0], b0), cli_x_text(cols, X[n], b1));
+    }
+    return rc;
+}
 
 /* cli_writer_fn: the dense samples as CSV. */
 static int write_dense_csv(void *ctx, FILE *fp)
 {
     csv_ctx *c = ctx;
-    c->w = tsu_writer_new(fp, ',');
-    if (!c->w)
+    tsu_plot_buf hb = TSU_PLOT_BUF_INIT;
+    cli_csv_sink sk = {tsu_writer_new(fp, ','), c->cols};
+    if (!sk.w)
         return ENOMEM;
-    int rc = tsu_writer_text(c->w, "x,y\n", 4);
+    int rc = cli_header_line(c->cols, c->o->deriv, &hb) ? ENOMEM : 0;
     if (!rc)
-        rc = cli_sample(c->s, 0, ts_spline_intervals(c->s), 1, c->m, c->deriv, cli_sink_writer,
-                        c->w);
-    int rc2 = tsu_writer_free(c->w);
-    c->w = NULL;
+        rc = tsu_writer_text(sk.w, hb.data, hb.len);
+    tsu_plot_buf_free(&hb);
+    if (!rc)
+        rc = fit_samples(c->o, c->s, c->cols, cli_sink_writer, &sk);
+    int rc2 = tsu_writer_free(sk.w);
+    if (rc == -1)
+        return ECANCELED; /* reported */
     return rc ? rc : rc2;
 }
 
 typedef struct at_vals {
     tsu_table t;
+    const double *x;
     double *y;
     size_t m;
+    const char *name;
 } at_vals;
 
-static int eval_at(const cli_opts *o, const ts_spline *s, at_vals *a)
+static int eval_at(const cli_opts *o, const ts_spline *s, const cli_cols *cols, at_vals *a)
 {
     tsu_read_options ro;
     tsu_io_error ie;
     ts_error e;
     memset(a, 0, sizeof *a);
-    tsu_read_options_init(&ro);
-    tsu_io_status st = tsu_read_table_path(o->at, &ro, &a->t, &ie);
-    if (st != TSU_IO_OK)
-        return cli_report_io(&ie);
-    a->m = a->t.nrows;
+    a->name = "--at";
+    if (o->at_list) {
+        a->x = o->at_list;
+        a->m = o->n_at;
+    } else {
+        cli_read_options(o, &ro);
+        ro.skip = 0;
+        tsu_io_status st = tsu_read_table_path(o->at, &ro, &a->t, &ie);
+        if (st != TSU_IO_OK)
+            return cli_report_io(&ie);
+        a->x = a->t.cols[0];
+        a->m = a->t.nrows;
+        a->name = strcmp(o->at, "-") == 0 ? "<stdin>" : o->at;
+    }
     a->y = malloc((a->m ? a->m : 1) * sizeof *a->y);
     if (!a->y)
         return cli_nomem();
     ts_cursor cur = TS_CURSOR_INIT;
-    ts_status es = ts_eval_batch(s, o->deriv, a->t.cols[0], a->m, a->y, &cur, &e);
+    ts_status es = ts_eval_batch(s, o->deriv, a->x, a->m, a->y, &cur, &e);
     if (es != TS_OK) {
         size_t q = e.index < a->m ? e.index : 0;
-        char bx[TSU_FMT_SIZE], b0[TSU_FMT_SIZE], b1[TSU_FMT_SIZE];
+        char bx[TSU_TIME_SIZE], b0[TSU_TIME_SIZE], b1[TSU_TIME_SIZE], ln[64] = "";
         const double *X = ts_spline_x(s);
-        cli_error("%s:%llu: x = %s is outside the data range [%s, %s] (--extrapolate "
+        if (a->t.lines)
+            snprintf(ln, sizeof ln, ":%llu", a->t.lines[q]);
+        else
+            snprintf(ln, sizeof ln, " value %zu", q + 1);
+        cli_error("%s%s: x = %s is outside the data range [%s, %s] (--extrapolate "
                   "clamp|extend|linear evaluates there)",
-                  strcmp(o->at, "-") == 0 ? "<stdin>" : o->at, a->t.lines ? a->t.lines[q] : 0ULL,
-                  cli_num(a->t.cols[0][q], bx), cli_num(X[0], b0),
-                  cli_num(X[ts_spline_intervals(s)], b1));
+                  a->name, ln, cli_x_text(cols, a->x[q], bx), cli_x_text(cols, X[0], b0),
+                  cli_x_text(cols, X[ts_spline_intervals(s)], b1));
         return CLI_DATA;
     }
     return CLI_OK;
@@ -104,26 +147,52 @@ int cli_fit(cli_opts *o)
     cli_json_init(&j);
     tsu_plot_buf svg = TSU_PLOT_BUF_INIT, text = TSU_PLOT_BUF_INIT;
     cli_stats smp = CLI_STATS_INIT;
-    csv_ctx cc = {s, o->samples, o->deriv, NULL};
+    csv_ctx cc = {o, s, &d.cols, d.name};
     cli_writer_fn fn = NULL;
+    if (o->svg || (o->json && o->with_samples)) {
+        /* held in memory: a documented limit */
+        size_t n = ts_spline_intervals(s);
+        double pts = o->samples_total ? (double)o->samples_total
+                     : o->grid_set    ? (double)o->grid_n
+                                      : (double)n * (double)(o->samples - 1) + 1.0;
+        if (pts > CLI_MAX_HELD_SAMPLES) {
+            cli_error("%s: %.0f sample points (--samples %zu over %zu intervals) exceed the limit "
+                      "of %u that a plot or --with-samples holds in memory; lower --samples (the "
+                      "CSV output streams without a limit)",
+                      d.name, pts, o->samples, n, CLI_MAX_HELD_SAMPLES);
+            rc = CLI_USAGE;
+            goto done;
+        }
+    }
 
-    if (o->at && (rc = eval_at(o, s, &at)) != CLI_OK)
+    if (o->at && (rc = eval_at(o, s, &d.cols, &at)) != CLI_OK)
         goto done;
     if (o->json) {
-        if (o->at)
-            cli_sink_stats(&smp, at.t.cols[0], at.y, at.m);
-        else
-            cli_sample(s, 0, ts_spline_intervals(s), 1, o->samples, o->deriv, cli_sink_stats, &smp);
-        cli_spline_json(&j, o, s, shape, lower, upper, ts_spline_certified(s), NULL, &smp);
+        cli_xy held = {0};
+        if (o->at) {
+            cli_sink_stats(&smp, at.x, at.y, at.m);
+            if (o->with_samples)
+                cli_sink_xy(&held, at.x, at.y, at.m);
+        } else {
+            if (fit_samples(o, s, &d.cols, cli_sink_stats, &smp) == -1 ||
+                (o->with_samples && fit_samples(o, s, &d.cols, cli_sink_xy, &held) != 0)) {
+                rc = held.failed ? cli_nomem() : CLI_DATA;
+                cli_xy_free(&held);
+                goto done;
+            }
+        }
+        cli_spline_json(&j, o, s, shape, lower, upper, ts_spline_certified(s), NULL, &smp, &d,
+                        o->with_samples ? &held : NULL);
+        cli_xy_free(&held);
         if (j.failed) {
             rc = cli_nomem();
             goto done;
         }
     } else if (o->at) {
-        char bx[TSU_FMT_SIZE], by[TSU_FMT_SIZE];
-        int bad = tsu_plot_buf_puts(&text, "x,y\n") != TSU_PLOT_OK;
+        char bx[TSU_TIME_SIZE], by[TSU_FMT_SIZE];
+        int bad = cli_header_line(&d.cols, o->deriv, &text) != 0;
         for (size_t q = 0; q < at.m && !bad; q++)
-            bad = tsu_plot_buf_printf(&text, "%s,%s\n", cli_num(at.t.cols[0][q], bx),
+            bad = tsu_plot_buf_printf(&text, "%s,%s\n", cli_x_text(&d.cols, at.x[q], bx),
                                      cli_num(at.y[q], by)) != TSU_PLOT_OK;
         if (bad) {
             rc = cli_nomem();
@@ -132,9 +201,9 @@ int cli_fit(cli_opts *o)
     } else {
         fn = write_dense_csv;
     }
-    if (o->svg && (rc = cli_spline_plot(o, d.name, s, shape, lower, upper, NULL, &svg)) != CLI_OK)
+    if (o->svg && (rc = cli_spline_plot(o, &d, s, shape, lower, upper, NULL, &svg)) != CLI_OK)
         goto done;
-    rc = cli_write_outputs(o->out, o->json ? &j.b : &text, fn, &cc, o->svg, &svg);
+    rc = cli_write_outputs(o->out, o->json ? &j.b : &text, fn, &cc, o->svg, o->plot_format, &svg);
     if (rc == CLI_OK) {
         cli_overshoot ov;
         cli_overshoot_init(&ov);

@@ -74,8 +74,17 @@ static int check_output_opts(const cli_opts *o)
                          o->title ? "--title" : o->show_control ? "--show-control" : "--points-only");
     if (o->show_control && o->points_only)
         return cli_usage(o->cmd, "--show-control and --points-only do not fit together");
-    if (o->extrap_set && !o->at)
-        return cli_usage(o->cmd, "--extrapolate only applies with --at FILE");
+    if (o->extrap_set && !o->at && !o->grid_set)
+        return cli_usage(o->cmd, "--extrapolate only applies with --at or --grid");
+    /* parallel lines with the lower one on or above the upper one contradict
+     * each other for any data: an option error (crossing lines depend on
+     * where the data are: a data error naming the point) */
+    if (o->has_lower && o->has_upper && o->lower.m == o->upper.m && !(o->lower.c < o->upper.c)) {
+        char a[200], b[200];
+        cli_line_text(&o->lower, a, sizeof a);
+        cli_line_text(&o->upper, b, sizeof b);
+        return cli_usage(o->cmd, "--lower %s is nowhere below --upper %s (parallel lines)", a, b);
+    }
     return CLI_OK;
 }
 

@@ -4,6 +4,33 @@
 
 #include <stdio.h>
 
+static const char input_text[] =
+    "Reading DATA (all commands):\n"
+    "  --delimiter ,|;|tab|space|auto   field separator (default auto: ';' if the first\n"
+    "                      line has one, else ',', else tab, else white space)\n"
+    "  --decimal-comma     ',' is the decimal mark (then '.' is refused)\n"
+    "  --na WORDS          comma-separated words meaning \"missing\" (default NA,NaN,null;\n"
+    "                      any case); an empty field is always missing\n"
+    "  --missing error|skip   a row with a missing x or y: error naming the line\n"
+    "                      (default) or left out (counted in --json, listed with -v)\n"
+    "  --skip N            skip N leading lines unread (metadata); '#' comments as always\n"
+    "  -v, --verbose       report skipped rows on standard error\n"
+    "Fields may be quoted (RFC 4180: \"1,5\", \"say \"\"hi\"\"\"); a quoted number is a\n"
+    "number.  A first line with a field that is text is the header; its names are kept\n"
+    "in the outputs.  ISO 8601 dates and date-times (YYYY-MM-DD[THH:MM[:SS[.f]]]\n"
+    "[Z|+HH:MM]) in the x column are read as seconds since 1970 (UTC, no leap seconds)\n"
+    "and written back in the same form.\n";
+
+static const char plot_text[] =
+    "Plots:\n"
+    "  --svg FILE | --png FILE | --pdf FILE   the plot; the format follows the file's\n"
+    "                      extension (--format svg|png|pdf for another name); PNG and\n"
+    "                      PDF are made from the SVG by rsvg-convert (librsvg2-bin)\n"
+    "  --xlabel TEXT, --ylabel TEXT   axis labels (default: the column names)\n"
+    "  --logy              logarithmic y axis (the data must be > 0)\n"
+    "  --size WxH          size in pixels (default 720x450)\n"
+    "  A plot holds at most 10000000 sample points (--samples times intervals).\n";
+
 static const char exit_text[] =
     "Exit status:\n"
     "  0  success (certify: every interval certified)\n"
@@ -82,18 +109,30 @@ void cli_print_help(cli_cmd cmd)
             "  --title TEXT        plot title\n"
             "  --show-control      also plot the control polygon\n"
             "  --points-only       plot only the data (and the constraint lines)\n"
-            "  --columns X,Y       take x and f from these columns (1-based) of a wider table\n"
+            "  --columns X,Y       take x and f from these columns of a wider table: 1-based\n"
+            "                      numbers or header names (also --x X, --y Y)\n"
+            "  --x-time            x must hold ISO 8601 dates (else they are detected)\n"
+            "  --grid A:B:N        N points evenly over [A, B] instead of --samples (A, B\n"
+            "                      numbers or dates)\n"
+            "  --samples-total N   N points evenly over the data range instead\n"
+            "  --at X1,X2,...      evaluate at these x values (numbers or dates; --at FILE:\n"
+            "                      the first column of FILE)\n"
+            "  --with-samples      with --json: also the samples (\"samples\": x, y)\n"
             "  --no-stream         never stream (see below)\n"
-            "\n"
+            "CSV output: header from DATA's names (x,y without a header); derivative columns\n"
+            "are named d_Y_dX and d2_Y_dX2; sample x values strictly increase.\n"
+            "\n%s\n%s\n"
             "Long inputs are processed in constant memory when the output is CSV samples and\n"
-            "none of --json, --svg, --at, --alphas, --betas, --slopes periodic is given:\n"
+            "none of --json, a plot, --at, --grid, --samples-total, --alphas, --betas,\n"
+            "--slopes periodic is given:\n"
             "the data are read and checked in chunks as they stream.  An error found after\n"
             "output has started is reported with its line; what was already written to\n"
             "standard output is then incomplete (with -o the file is not created).\n"
             "\n%s",
             cli_shape_name(d.shape), cli_num(d.margin, b[0]), cli_num(d.alpha, b[1]),
             cli_num(d.beta, b[2]), cli_slopes_name(d.slopes), cli_form_name(d.form),
-            CLI_DEFAULT_SAMPLES, cli_extrap_name(d.extrapolate), exit_text);
+            CLI_DEFAULT_SAMPLES, cli_extrap_name(d.extrapolate), input_text, plot_text,
+            exit_text);
     } else if (cmd == CLI_CERTIFY) {
         printf(
             "Usage: trigspline certify [DATA] --alpha A --beta B BOUNDARY [OPTIONS]\n"
@@ -114,12 +153,15 @@ void cli_print_help(cli_cmd cmd)
             "  a per-interval table (or --json, the same object as fit --json) on standard\n"
             "  output or -o FILE; --svg FILE, --title TEXT, --show-control, --points-only and\n"
             "  --samples N (for the plot and the JSON sample range) as for fit;\n"
-            "  --columns X,Y as for fit.\n"
+            "  --columns X,Y, --x, --y, --x-time, --with-samples as for fit.\n"
+            "The report is CSV: interval, X_start, X_end, alpha, beta, gap_lower,\n"
+            "X_at_gap_lower, gap_upper, X_at_gap_upper, certified (true/false), X the name\n"
+            "of the x column; an absent boundary leaves its fields empty.\n"
             "The violating intervals (index, x-range, minimum gap and where) are listed on\n"
             "standard error and the exit status is 4; the report and plot are still\n"
             "written (they are the result).\n"
-            "\n%s",
-            exit_text);
+            "\n%s\n%s\n%s",
+            input_text, plot_text, exit_text);
     } else {
         printf(
             "Usage: trigspline curve [DATA] [OPTIONS]\n"
@@ -137,9 +179,9 @@ void cli_print_help(cli_cmd cmd)
             "  --margin T          margin for the box rule (default %s)\n"
             "  --samples N         points per segment, knots included (default %d)\n"
             "  -o, --output FILE, --json, --svg FILE, --title TEXT, --show-control,\n"
-            "  --points-only       as for fit\n"
-            "\n%s",
+            "  --points-only       as for fit (curve holds at most 10000000 samples)\n"
+            "\n%s\n%s\n%s",
             cli_param_name(c.param), cli_num(c.alpha, b[0]), cli_num(c.beta, b[1]),
-            cli_num(c.margin, b[2]), CLI_DEFAULT_SAMPLES, exit_text);
+            cli_num(c.margin, b[2]), CLI_DEFAULT_SAMPLES, input_text, plot_text, exit_text);
     }
 }

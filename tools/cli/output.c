@@ -3,6 +3,12 @@
 #include "cli.h"
 
 #include <sys/stat.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+
+#include <signal.h>
+#include <stdlib.h>
+#include <unistd.h>
 
 #include <errno.h>
 #include <stdio.h>
@@ -83,8 +89,79 @@ static int put_all(FILE *fp, const tsu_plot_buf *text, cli_writer_fn fn, void *c
     return rc;
 }
 
+/* Run the SVG converter: svg on its standard input, its output into fp.
+ * 0, or -1 with the message printed. */
+static int convert_svg(const tsu_plot_buf *svg, cli_plot_format fmt, FILE *fp, const char *path)
+{
+    const char *prog = getenv("TRIGSPLINE_SVG_CONVERTER");
+    const char *fname = fmt == CLI_PLOT_PNG ? "png" : "pdf";
+    int in[2], status = 0;
+    if (!prog || !*prog)
+        prog = "rsvg-convert";
+    if (fflush(fp) != 0 || pipe(in) != 0) {
+        cli_error("cannot write \"%s\": %s", path, strerror(errno));
+        return -1;
+    }
+    pid_t pid = fork();
+    if (pid < 0) {
+        cli_error("cannot write \"%s\": %s", path, strerror(errno));
+        close(in[0]);
+        close(in[1]);
+        return -1;
+    }
+    if (pid == 0) {
+        char *argv[4];
+        argv[0] = (char *)prog;
+        argv[1] = (char *)"-f";
+        argv[2] = (char *)fname;
+        argv[3] = NULL;
+        close(in[1]);
+        if (dup2(in[0], 0) < 0 || dup2(fileno(fp), 1) < 0)
+            _exit(126);
+        close(in[0]);
+        execvp(prog, argv);
+        _exit(127);
+    }
+    close(in[0]);
+    /* a converter that exits early must not kill us with SIGPIPE */
+    struct sigaction sa, old;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = SIG_IGN;
+    sigaction(SIGPIPE, &sa, &old);
+    size_t off = 0;
+    while (off < svg->len) {
+        ssize_t w = write(in[1], svg->data + off, svg->len - off);
+        if (w < 0 && errno == EINTR)
+            continue;
+        if (w <= 0)
+            break;
+        off += (size_t)w;
+    }
+    close(in[1]);
+    sigaction(SIGPIPE, &old, NULL);
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+        ;
+    if (WIFEXITED(status) && WEXITSTATUS(status) == 127) {
+        cli_error("cannot write the %s plot \"%s\": the SVG converter \"%s\" was not found "
+                  "(install the Debian package librsvg2-bin, or write --svg)", fname, path, prog);
+        return -1;
+    }
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || off < svg->len) {
+        cli_error("cannot write the %s plot \"%s\": the SVG converter \"%s\" failed", fname,
+                  path, prog);
+        return -1;
+    }
+    /* the converter wrote through its own descriptor: move our stream to the end */
+    if (fseek(fp, 0, SEEK_END) != 0 && errno != ESPIPE) {
+        cli_error("cannot write \"%s\": %s", path, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
 int cli_write_outputs(const char *out_path, const tsu_plot_buf *text, cli_writer_fn fn,
-                      void *fn_ctx, const char *svg_path, const tsu_plot_buf *svg)
+                      void *fn_ctx, const char *svg_path, cli_plot_format fmt,
+                      const tsu_plot_buf *svg)
 {
     char msg[TSU_IO_MSG_SIZE];
     cli_out os = {NULL, NULL}, oo = {NULL, NULL};
@@ -98,8 +175,12 @@ int cli_write_outputs(const char *out_path, const tsu_plot_buf *text, cli_writer
             cli_error("%s", msg);
             return CLI_IO;
         }
-        rc = put_all(cli_out_file(&os), svg, NULL, NULL);
-        if (rc) {
+        if (fmt != CLI_PLOT_SVG) {
+            if (convert_svg(svg, fmt, cli_out_file(&os), svg_path) != 0) {
+                cli_out_abort(&os);
+                return CLI_IO;
+            }
+        } else if ((rc = put_all(cli_out_file(&os), svg, NULL, NULL)) != 0) {
             cli_error("cannot write \"%s\": %s", svg_path, strerror(rc));
             cli_out_abort(&os);
             return CLI_IO;
@@ -114,11 +195,13 @@ int cli_write_outputs(const char *out_path, const tsu_plot_buf *text, cli_writer
     }
     rc = put_all(cli_out_file(&oo), text, fn, fn_ctx);
     if (rc) {
-        cli_error("cannot write %s%s%s: %s", out_path ? "\"" : "",
-                  out_path ? out_path : "standard output", out_path ? "\"" : "", strerror(rc));
+        if (rc != ECANCELED)
+            cli_error("cannot write %s%s%s: %s", out_path ? "\"" : "",
+                      out_path ? out_path : "standard output", out_path ? "\"" : "",
+                      strerror(rc));
         cli_out_abort(&oo);
         cli_out_abort(&os);
-        return CLI_IO;
+        return rc == ECANCELED ? CLI_DATA : CLI_IO;
     }
     /* 3. both complete and flushed: rename into place */
     rc = cli_out_commit(&oo, msg, sizeof msg);

@@ -2,14 +2,15 @@
 #include "cli.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
 #define CLI_BLOCK 512
 
-int cli_sample(const ts_spline *s, size_t i0, size_t i1, int with_end, size_t m, int deriv,
-               cli_sink sink, void *ctx)
+int cli_sample_after(const ts_spline *s, size_t i0, size_t i1, int with_end, size_t m, int deriv,
+                     cli_sink sink, void *ctx, double *prev)
 {
     double xs[CLI_BLOCK], ys[CLI_BLOCK];
     const double *X = ts_spline_x(s);
@@ -17,7 +18,7 @@ int cli_sample(const ts_spline *s, size_t i0, size_t i1, int with_end, size_t m,
     ts_cursor cur = TS_CURSOR_INIT;
     ts_error e;
     int rc;
-    double den = (double)(m - 1);
+    double den = (double)(m - 1), last = *prev;
     for (size_t i = i0; i <= i1; i++) {
         size_t cnt = i < i1 ? m - 1 : (with_end ? 1 : 0);
         double x0 = X[i], h = i < i1 ? X[i + 1] - X[i] : 0.0;
@@ -29,6 +30,11 @@ int cli_sample(const ts_spline *s, size_t i0, size_t i1, int with_end, size_t m,
                 if (x > X[i + 1])
                     x = X[i + 1];
             }
+            /* strictly increasing: where x is so large that neighbouring
+             * positions round to one double, the repeats are left out */
+            if (!(x > last))
+                continue;
+            last = x;
             xs[k++] = x;
             if (k == CLI_BLOCK) {
                 (void)ts_eval_batch(s, deriv, xs, k, ys, &cur, &e);
@@ -38,10 +44,45 @@ int cli_sample(const ts_spline *s, size_t i0, size_t i1, int with_end, size_t m,
             }
         }
     }
+    *prev = last;
     if (k) {
         (void)ts_eval_batch(s, deriv, xs, k, ys, &cur, &e);
         if ((rc = sink(ctx, xs, ys, k)) != 0)
             return rc;
+    }
+    return 0;
+}
+
+int cli_sample(const ts_spline *s, size_t i0, size_t i1, int with_end, size_t m, int deriv,
+               cli_sink sink, void *ctx)
+{
+    double prev = -(double)INFINITY;
+    return cli_sample_after(s, i0, i1, with_end, m, deriv, sink, ctx, &prev);
+}
+
+int cli_sample_even(const ts_spline *s, double a, double b, size_t n, int deriv, cli_sink sink,
+                    void *ctx, ts_error *err, double *bad_x)
+{
+    double xs[CLI_BLOCK], ys[CLI_BLOCK], last = -(double)INFINITY;
+    size_t k = 0;
+    ts_cursor cur = TS_CURSOR_INIT;
+    int rc;
+    for (size_t i = 0; i < n; i++) {
+        double x = i + 1 == n ? b : a + (b - a) * ((double)i / (double)(n - 1));
+        if (!(x > last))
+            continue;
+        last = x;
+        xs[k++] = x;
+        if (k == CLI_BLOCK || i + 1 == n) {
+            ts_status st = ts_eval_batch(s, deriv, xs, k, ys, &cur, err);
+            if (st != TS_OK) {
+                *bad_x = xs[err->index < k ? err->index : 0];
+                return -1;
+            }
+            if ((rc = sink(ctx, xs, ys, k)) != 0)
+                return rc;
+            k = 0;
+        }
     }
     return 0;
 }
@@ -70,10 +111,21 @@ int cli_sink_xy(void *ctx, const double *x, const double *y, size_t k)
 
 int cli_sink_writer(void *ctx, const double *x, const double *y, size_t k)
 {
-    tsu_writer *w = ctx;
+    cli_csv_sink *c = ctx;
     int rc = 0;
-    for (size_t j = 0; j < k && !rc; j++)
-        rc = tsu_writer_xy(w, x[j], y[j]);
+    if (!c->cols || !c->cols->x_time) {
+        for (size_t j = 0; j < k && !rc; j++)
+            rc = tsu_writer_xy(c->w, x[j], y[j]);
+        return rc;
+    }
+    for (size_t j = 0; j < k && !rc; j++) {
+        char b[TSU_TIME_SIZE + 1];
+        size_t n = tsu_format_time(x[j], &c->cols->tform, b);
+        b[n++] = ',';
+        rc = tsu_writer_text(c->w, b, n);
+        if (!rc)
+            rc = tsu_writer_row(c->w, &y[j], 1);
+    }
     return rc;
 }
 

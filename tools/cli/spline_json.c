@@ -5,7 +5,8 @@
 
 void cli_spline_json(cli_json *j, const cli_opts *o, const ts_spline *s, ts_shape shape,
                      const ts_line *lower, const ts_line *upper, int certified,
-                     const ts_interval_report *reps, const cli_stats *smp)
+                     const ts_interval_report *reps, const cli_stats *smp, const cli_data *data,
+                     const cli_xy *held)
 {
     size_t n = ts_spline_intervals(s);
     const double *x = ts_spline_x(s), *f = ts_spline_f(s), *d = ts_spline_slopes(s);
@@ -23,6 +24,7 @@ void cli_spline_json(cli_json *j, const cli_opts *o, const ts_spline *s, ts_shap
             gu = r.gap_upper;
     }
     cli_json_begin(j, '{');
+    cli_json_kstr(j, "schema", "trigspline-fit/1");
     cli_json_kstr(j, "command", cli_cmd_name(o->cmd));
     cli_json_kstr(j, "form", cli_form_name(ts_spline_form(s)));
     cli_json_kstr(j, "shape", cli_shape_name(shape));
@@ -42,6 +44,18 @@ void cli_spline_json(cli_json *j, const cli_opts *o, const ts_spline *s, ts_shap
         cli_json_num(j, gu);
     else
         cli_json_null(j);
+    cli_json_nl(j);
+    cli_json_key(j, "columns");
+    cli_json_begin(j, '{');
+    cli_json_kstr(j, "x", data->cols.xname);
+    cli_json_kstr(j, "y", data->cols.yname);
+    cli_json_kbool(j, "x_time", data->cols.x_time);
+    cli_json_end(j, '}');
+    cli_json_key(j, "rows");
+    cli_json_begin(j, '{');
+    cli_json_kuint(j, "used", data->n);
+    cli_json_kuint(j, "skipped_missing", data->cols.skipped);
+    cli_json_end(j, '}');
     cli_json_nl(j);
 
     cli_json_key(j, "knots");
@@ -130,6 +144,25 @@ void cli_spline_json(cli_json *j, const cli_opts *o, const ts_spline *s, ts_shap
     else
         cli_json_null(j);
     cli_json_kuint(j, "count", smp->count);
+    if (held) {
+        char b[TSU_TIME_SIZE];
+        cli_json_nl(j);
+        cli_json_key(j, "x");
+        cli_json_begin(j, '[');
+        for (size_t i = 0; i < held->n; i++) {
+            if (data->cols.x_time)
+                cli_json_str(j, cli_x_text(&data->cols, held->x[i], b));
+            else
+                cli_json_num(j, held->x[i]);
+        }
+        cli_json_end(j, ']');
+        cli_json_nl(j);
+        cli_json_key(j, "y");
+        cli_json_begin(j, '[');
+        for (size_t i = 0; i < held->n; i++)
+            cli_json_num(j, held->y[i]);
+        cli_json_end(j, ']');
+    }
     cli_json_end(j, '}');
     cli_json_nl(j);
     cli_overshoot ov;

@@ -26,6 +26,7 @@
 #include "cli.h"
 
 #include <errno.h>
+#include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -44,7 +45,8 @@ typedef struct stream {
     FILE *fp;
     tsu_reader *r;
     size_t chunk;
-    size_t cx, cy;
+    cli_cols cols;
+    double prev_x; /* last sample x written */
     /* points [base, base + len) */
     double *x, *f;
     unsigned long long *line;
@@ -75,6 +77,7 @@ static size_t npts(const stream *s)
 int cli_can_stream(const cli_opts *o)
 {
     return o->cmd == CLI_FIT && !o->json && !o->svg && !o->at && !o->alphas && !o->betas &&
+           !o->grid_set && !o->samples_total &&
            o->slopes != TS_SLOPES_PERIODIC && !o->no_stream;
 }
 
@@ -129,21 +132,17 @@ static int fill(stream *s, size_t want)
         if (st != TSU_IO_OK)
             return cli_report_io(&ie);
         unsigned long long ln = tsu_reader_line(s->r);
-        if (npts(s) == 0) {
-            size_t nc = tsu_reader_ncols(s->r);
-            if (s->o->columns_set) {
-                if (s->cx >= nc || s->cy >= nc) {
-                    cli_error("%s:%llu: --columns %zu,%zu: the table has only %zu field%s per row",
-                              s->name, ln, s->cx + 1, s->cy + 1, nc, nc == 1 ? "" : "s");
-                    return CLI_DATA;
-                }
-            } else if (nc != 2) {
-                cli_error("%s:%llu: %zu field%s per row, expected 2 (x and f)%s", s->name, ln, nc,
-                          nc == 1 ? "" : "s", nc > 2 ? "; use --columns X,Y to pick two" : "");
-                return CLI_DATA;
-            }
+        if (tsu_reader_rows(s->r) == 1) {
+            int rc = cli_cols_resolve(s->o, s->r, s->name, &s->cols);
+            if (rc != CLI_OK)
+                return rc;
         }
-        double x = row[s->cx], f = row[s->cy];
+        double x, f;
+        int k = cli_cols_take(s->o, s->r, s->name, row, &s->cols, &x, &f);
+        if (k < 0)
+            return CLI_DATA;
+        if (k == 0)
+            continue;
         if (s->len) {
             double px = s->x[s->len - 1], pf = s->f[s->len - 1];
             if (!(x > px)) {
@@ -284,12 +283,19 @@ static int emit(stream *s, const chunk *c, int last)
         s->w = tsu_writer_new(cli_out_file(&s->out), ',');
         if (!s->w)
             return cli_nomem();
-        rc = tsu_writer_text(s->w, "x,y\n", 4);
+        tsu_plot_buf hb = TSU_PLOT_BUF_INIT;
+        if (cli_header_line(&s->cols, s->o->deriv, &hb) != 0) {
+            tsu_plot_buf_free(&hb);
+            return cli_nomem();
+        }
+        rc = tsu_writer_text(s->w, hb.data, hb.len);
+        tsu_plot_buf_free(&hb);
         if (rc)
             goto werr;
     }
-    rc = cli_sample(c->s, c->e0 - c->wl, c->e1 - c->wl, last, s->o->samples, s->o->deriv,
-                    cli_sink_writer, s->w);
+    cli_csv_sink sk = {s->w, &s->cols};
+    rc = cli_sample_after(c->s, c->e0 - c->wl, c->e1 - c->wl, last, s->o->samples, s->o->deriv,
+                          cli_sink_writer, &sk, &s->prev_x);
     cli_overshoot_add(&s->ov, c->s, c->e0 - c->wl, c->e1 - c->wl, c->wl);
     if (!rc)
         return CLI_OK;
@@ -316,8 +322,7 @@ int cli_fit_stream(const cli_opts *o, const ts_options *opt)
     s.opt = opt;
     cli_overshoot_init(&s.ov);
     s.chunk = CLI_CHUNK;
-    s.cx = o->columns_set ? o->col_x : 0;
-    s.cy = o->columns_set ? o->col_y : 1;
+    s.prev_x = -(double)INFINITY;
     const char *env = getenv("TRIGSPLINE_CHUNK");
     if (env && *env) {
         char *end;
@@ -338,7 +343,9 @@ int cli_fit_stream(const cli_opts *o, const ts_options *opt)
             return CLI_IO;
         }
     }
-    if (tsu_reader_open(&s.r, s.fp, s.name, NULL, &ie) != TSU_IO_OK) {
+    tsu_read_options ro;
+    cli_read_options(o, &ro);
+    if (tsu_reader_open(&s.r, s.fp, s.name, &ro, &ie) != TSU_IO_OK) {
         rc = cli_report_io(&ie);
         goto done;
     }
@@ -425,6 +432,9 @@ done:
             cli_out_abort(&s.out);
         }
     }
+    if (o->verbose && s.cols.skipped)
+        cli_error("%s: %llu row%s with missing values skipped", s.name, s.cols.skipped,
+                  s.cols.skipped == 1 ? "" : "s");
     ts_spline_free(pend.s);
     ts_spline_free(next.s);
     tsu_reader_free(s.r);

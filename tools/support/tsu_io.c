@@ -859,6 +859,9 @@ const char *tsu_io_strerror(tsu_io_status st)
     case TSU_IO_ERR_RANGE: return "number out of range";
     case TSU_IO_ERR_FIELDS: return "wrong number of fields";
     case TSU_IO_ERR_LINE: return "line too long";
+    case TSU_IO_ERR_QUOTE: return "bad quoting";
+    case TSU_IO_ERR_TIME: return "not a valid date or time";
+    case TSU_IO_ERR_LAYOUT: return "ambiguous table layout";
     case TSU_IO_STATUS_COUNT_: break;
     }
     return "unknown status";
@@ -942,6 +945,211 @@ static void quote_text(char *dst, size_t dsz, const char *s, const char *e)
     dst[k] = 0;
 }
 
+#define IS_BLANK(c) ((c) == ' ' || (c) == '\t')
+
+/* ================================================================== */
+/* Dates and times                                                      */
+/* ================================================================== */
+
+/* Days since 1970-01-01 of a proleptic Gregorian date (the era-based
+ * day count: 400-year eras of 146097 days, years starting in March). */
+static long long days_from_civil(long long y, int m, int d)
+{
+    y -= m <= 2;
+    long long era = (y >= 0 ? y : y - 399) / 400;
+    long long yoe = y - era * 400;
+    long long doy = (153 * (m + (m > 2 ? -3 : 9)) + 2) / 5 + d - 1;
+    long long doe = yoe * 365 + yoe / 4 - yoe / 100 + doy;
+    return era * 146097 + doe - 719468;
+}
+
+static void civil_from_days(long long z, long long *y, int *m, int *d)
+{
+    z += 719468;
+    long long era = (z >= 0 ? z : z - 146096) / 146097;
+    long long doe = z - era * 146097;
+    long long yoe = (doe - doe / 1460 + doe / 36524 - doe / 146096) / 365;
+    long long doy = doe - (365 * yoe + yoe / 4 - yoe / 100);
+    long long mp = (5 * doy + 2) / 153;
+    *d = (int)(doy - (153 * mp + 2) / 5 + 1);
+    *m = (int)(mp < 10 ? mp + 3 : mp - 9);
+    *y = yoe + era * 400 + (*m <= 2);
+}
+
+static int month_days(long long y, int m)
+{
+    static const int md[12] = {31, 28, 31, 30, 31, 30, 31, 31, 30, 31, 30, 31};
+    int leap = (y % 4 == 0 && y % 100 != 0) || y % 400 == 0;
+    return m == 2 ? 28 + leap : md[m - 1];
+}
+
+
+/* n digits at p (p + n <= end) into *v; 0 if not all digits */
+static int digits_at(const char *p, const char *end, int n, int *v)
+{
+    int acc = 0;
+    if (end - p < n)
+        return 0;
+    for (int i = 0; i < n; i++) {
+        if (!IS_DIGIT(p[i]))
+            return 0;
+        acc = acc * 10 + (p[i] - '0');
+    }
+    *v = acc;
+    return 1;
+}
+
+int tsu_parse_time(const char *s, const char *end, double *t, tsu_time_form *form,
+                   const char **stop)
+{
+    tsu_time_form f;
+    const char *p = s;
+    int Y, M, D, h = 0, mi = 0, sec = 0, oh, om;
+    double frac = 0.0;
+    memset(&f, 0, sizeof f);
+    f.date_only = 1;
+    f.sep = 'T';
+    if (!end)
+        end = s + strlen(s);
+    if (stop)
+        *stop = s;
+    if (!digits_at(p, end, 4, &Y) || end - p < 5 || p[4] != '-')
+        return 0;
+    p += 5;
+    if (!digits_at(p, end, 2, &M) || M < 1 || M > 12 || end - p < 3 || p[2] != '-') {
+        if (stop)
+            *stop = p;
+        return 0;
+    }
+    p += 3;
+    if (!digits_at(p, end, 2, &D) || D < 1 || D > month_days(Y, M)) {
+        if (stop)
+            *stop = p;
+        return 0;
+    }
+    p += 2;
+    if (p < end && (*p == 'T' || *p == 't' || *p == ' ') && end - p >= 4 && IS_DIGIT(p[1]) &&
+        IS_DIGIT(p[2]) && p[3] == ':') {
+        f.date_only = 0;
+        f.sep = *p++;
+        if (!digits_at(p, end, 2, &h) || h > 23 || !digits_at(p + 3, end, 2, &mi) || mi > 59) {
+            if (stop)
+                *stop = p;
+            return 0;
+        }
+        p += 5;
+        if (p < end && *p == ':') {
+            if (!digits_at(p + 1, end, 2, &sec) || sec > 59) {
+                if (stop)
+                    *stop = p + 1;
+                return 0;
+            }
+            f.seconds = 1;
+            p += 3;
+            if (p < end && *p == '.' && p + 1 < end && IS_DIGIT(p[1])) {
+                const char *q;
+                (void)tsu_parse_double(p, end, &frac, &q); /* ".ddd": exact rounding */
+                p = q;
+            }
+        }
+        if (p < end && (*p == 'Z' || *p == 'z')) {
+            f.zone = 1;
+            p++;
+        } else if (p < end && (*p == '+' || *p == '-') && digits_at(p + 1, end, 2, &oh)) {
+            int sign = *p == '-' ? -1 : 1;
+            const char *q = p + 3;
+            om = 0;
+            if (q < end && *q == ':' && digits_at(q + 1, end, 2, &om)) {
+                f.colon = 1;
+                q += 3;
+            } else if (digits_at(q, end, 2, &om)) {
+                q += 2;
+            }
+            if (oh > 23 || om > 59) {
+                if (stop)
+                    *stop = p;
+                return 0;
+            }
+            f.zone = 2;
+            f.offset_min = sign * (oh * 60 + om);
+            p = q;
+        }
+    }
+    long long whole = days_from_civil(Y, M, D) * 86400 + h * 3600 + mi * 60 + sec -
+                      (long long)f.offset_min * 60;
+    if (t)
+        *t = (double)whole + frac;
+    if (form)
+        *form = f;
+    if (stop)
+        *stop = p;
+    return 1;
+}
+
+size_t tsu_format_time(double t, const tsu_time_form *form, char buf[TSU_TIME_SIZE])
+{
+    tsu_time_form f;
+    char fr[16] = "";
+    long long y;
+    int m, d;
+    if (form)
+        f = *form;
+    else
+        memset(&f, 0, sizeof f), f.sep = 'T', f.seconds = 1, f.zone = 1;
+    if (!(fabs(t) < 2.5e14)) { /* beyond year 9999 both ways: a number */
+        return tsu_format_double(t, buf);
+    }
+    double I = floor(t), frac = t - I;
+    if (frac > 0.0) {
+        /* the fewest digits that read back as t (as tsu_parse_time reads) */
+        long long p10 = 1;
+        for (int k = 1; k <= 9; k++) {
+            p10 *= 10;
+            double r = floor(frac * (double)p10 + 0.5);
+            if (r >= (double)p10)
+                continue;
+            char tmp[16];
+            snprintf(tmp, sizeof tmp, ".%0*lld", k, (long long)r);
+            double back;
+            (void)tsu_parse_double(tmp, NULL, &back, NULL);
+            if (I + back == t || k == 9) {
+                size_t L = strlen(tmp);
+                while (L > 2 && tmp[L - 1] == '0')
+                    tmp[--L] = 0;
+                memcpy(fr, tmp, L + 1);
+                break;
+            }
+        }
+    }
+    long long local = (long long)I + (f.zone == 2 ? (long long)f.offset_min * 60 : 0);
+    long long days = local >= 0 ? local / 86400 : -((-local + 86399) / 86400);
+    long long sod = local - days * 86400;
+    int h = (int)(sod / 3600), mi = (int)(sod / 60 % 60), sec = (int)(sod % 60);
+    civil_from_days(days, &y, &m, &d);
+    int n;
+    if (f.date_only && sod == 0 && !fr[0]) {
+        n = snprintf(buf, TSU_TIME_SIZE, "%04lld-%02d-%02d", y, m, d);
+    } else {
+        char sep = f.date_only ? 'T' : f.sep;
+        if (f.seconds || sec || fr[0])
+            n = snprintf(buf, TSU_TIME_SIZE, "%04lld-%02d-%02d%c%02d:%02d:%02d%s", y, m, d, sep, h,
+                         mi, sec, fr);
+        else
+            n = snprintf(buf, TSU_TIME_SIZE, "%04lld-%02d-%02d%c%02d:%02d", y, m, d, sep, h, mi);
+        if (n > 0 && n < TSU_TIME_SIZE - 8) {
+            if (f.zone == 1) {
+                buf[n++] = 'Z';
+                buf[n] = 0;
+            } else if (f.zone == 2) {
+                int o = f.offset_min < 0 ? -f.offset_min : f.offset_min;
+                n += snprintf(buf + n, TSU_TIME_SIZE - (size_t)n, f.colon ? "%c%02d:%02d" : "%c%02d%02d",
+                              f.offset_min < 0 ? '-' : '+', o / 60, o % 60);
+            }
+        }
+    }
+    return n < 0 ? 0 : (size_t)n;
+}
+
 /* ================================================================== */
 /* Streaming reader                                                     */
 /* ================================================================== */
@@ -953,17 +1161,34 @@ struct tsu_reader {
     size_t cap, pos, len, cap_max;
     int eof;
     unsigned long long line;     /* physical lines consumed */
+    unsigned long long rec_line; /* first line of the current record */
     unsigned long long row_line; /* line of the last row returned */
     unsigned long long rows;
+    unsigned long long skip;
+    unsigned long long header_line;
     tsu_delim delim;
     tsu_header header;
+    int decimal_comma;
     int seen_content;
     size_t ncols;
     char **names;
     size_t nnames;
     double *row;
+    size_t *fcol;  /* byte offset of each field of the row in its record */
     size_t rowcap;
-    const char *ls; /* start of the current line (columns count from here) */
+    size_t missing;
+    char **na;     /* missing-value words, NULL: none */
+    size_t nna;
+    int time_detect;
+    size_t time_col; /* 1-based, 0 none */
+    char *time_name;
+    unsigned char *is_time; /* per column (ncols), once known */
+    tsu_time_form *tform;
+    char *tmp;      /* scratch: unquoted / decimal-comma field text */
+    size_t tmpcap;
+    const char *ls; /* start of the current record */
+    int rec_scanned;      /* its last line was quote-scanned: */
+    const char *rec_hash; /* then its comment '#' (NULL: none) */
     int failed;
     tsu_io_error saved;
 };
@@ -972,6 +1197,7 @@ void tsu_read_options_init(tsu_read_options *opt)
 {
     if (!opt)
         return;
+    memset(opt, 0, sizeof *opt);
     opt->delim = TSU_DELIM_AUTO;
     opt->header = TSU_HEADER_AUTO;
     opt->ncols = 0;
@@ -988,6 +1214,63 @@ static char *dup_str(const char *s, size_t n)
         d[n] = 0;
     }
     return d;
+}
+
+static void free_names(char **names, size_t n)
+{
+    size_t i;
+    if (!names)
+        return;
+    for (i = 0; i < n; i++)
+        free(names[i]);
+    free(names);
+}
+
+/* Split the na list into words (trimmed); 0 or -1 (no memory). */
+static int set_na(tsu_reader *r, const char *na)
+{
+    size_t n = 1, k = 0;
+    for (const char *p = na; *p; p++)
+        n += *p == ',';
+    r->na = io_calloc(n, sizeof *r->na);
+    if (!r->na)
+        return -1;
+    for (const char *p = na;;) {
+        const char *e = strchr(p, ',');
+        const char *we = e ? e : p + strlen(p);
+        const char *ws = p;
+        while (ws < we && IS_BLANK(*ws))
+            ws++;
+        while (we > ws && IS_BLANK(we[-1]))
+            we--;
+        if (we > ws) {
+            if (!(r->na[k] = dup_str(ws, (size_t)(we - ws))))
+                return -1;
+            k++;
+        }
+        if (!e)
+            break;
+        p = e + 1;
+    }
+    r->nna = k;
+    return 0;
+}
+
+void tsu_reader_free(tsu_reader *r)
+{
+    if (!r)
+        return;
+    free_names(r->names, r->nnames);
+    free_names(r->na, r->nna);
+    free(r->row);
+    free(r->fcol);
+    free(r->buf);
+    free(r->name);
+    free(r->time_name);
+    free(r->is_time);
+    free(r->tform);
+    free(r->tmp);
+    free(r);
 }
 
 tsu_io_status tsu_reader_open(tsu_reader **out, FILE *fp, const char *name,
@@ -1008,9 +1291,10 @@ tsu_io_status tsu_reader_open(tsu_reader **out, FILE *fp, const char *name,
         tsu_read_options_init(&def);
         opt = &def;
     }
-    if (!(opt->delim >= TSU_DELIM_AUTO && opt->delim <= TSU_DELIM_SPACE) ||
+    if (!(opt->delim >= TSU_DELIM_AUTO && opt->delim <= TSU_DELIM_SEMICOLON) ||
         !(opt->header >= TSU_HEADER_AUTO && opt->header <= TSU_HEADER_YES) || opt->max_line < 16 ||
-        opt->max_line >= SIZE_MAX / 4 || opt->buffer_size < 16) {
+        opt->max_line >= SIZE_MAX / 4 || opt->buffer_size < 16 ||
+        (opt->decimal_comma && opt->delim == TSU_DELIM_COMMA)) {
         err_set(err, TSU_IO_ERR_OPTION, 0, name, 0, 0, 0, "invalid option");
         return TSU_IO_ERR_OPTION;
     }
@@ -1024,38 +1308,21 @@ tsu_io_status tsu_reader_open(tsu_reader **out, FILE *fp, const char *name,
     r->cap_max = opt->max_line + 1; /* a line of max_line bytes plus its '\n' */
     r->cap = opt->buffer_size < r->cap_max ? opt->buffer_size : r->cap_max;
     r->buf = io_malloc(r->cap);
-    if (!r->buf) {
-        free(r->name);
-        free(r);
+    if (!r->buf || (opt->na && set_na(r, opt->na) != 0) ||
+        (opt->time_name && !(r->time_name = dup_str(opt->time_name, strlen(opt->time_name))))) {
+        tsu_reader_free(r);
         err_set(err, TSU_IO_ERR_NOMEM, 0, name, 0, 0, 0, "out of memory");
         return TSU_IO_ERR_NOMEM;
     }
     r->delim = opt->delim;
     r->header = opt->header;
     r->ncols = opt->ncols;
+    r->skip = opt->skip;
+    r->decimal_comma = opt->decimal_comma;
+    r->time_detect = opt->time_detect;
+    r->time_col = opt->time_col;
     *out = r;
     return TSU_IO_OK;
-}
-
-static void free_names(char **names, size_t n)
-{
-    size_t i;
-    if (!names)
-        return;
-    for (i = 0; i < n; i++)
-        free(names[i]);
-    free(names);
-}
-
-void tsu_reader_free(tsu_reader *r)
-{
-    if (!r)
-        return;
-    free_names(r->names, r->nnames);
-    free(r->row);
-    free(r->buf);
-    free(r->name);
-    free(r);
 }
 
 size_t tsu_reader_ncols(const tsu_reader *r) { return r ? r->ncols : 0; }
@@ -1064,39 +1331,154 @@ unsigned long long tsu_reader_rows(const tsu_reader *r) { return r ? r->rows : 0
 size_t tsu_reader_nnames(const tsu_reader *r) { return r ? r->nnames : 0; }
 const char *tsu_reader_source(const tsu_reader *r) { return r ? r->name : NULL; }
 tsu_delim tsu_reader_delim(const tsu_reader *r) { return r ? r->delim : TSU_DELIM_AUTO; }
+size_t tsu_reader_missing(const tsu_reader *r) { return r ? r->missing : 0; }
+unsigned long long tsu_reader_header_line(const tsu_reader *r) { return r ? r->header_line : 0; }
 
 const char *tsu_reader_name(const tsu_reader *r, size_t j)
 {
     return (r && r->names && j < r->nnames) ? r->names[j] : NULL;
 }
 
+int tsu_reader_is_time(const tsu_reader *r, size_t j, tsu_time_form *form)
+{
+    if (!r || !r->is_time || j >= r->ncols || !r->is_time[j])
+        return 0;
+    if (form)
+        *form = r->tform[j];
+    return 1;
+}
+
 /* Set the reader's sticky error. */
 #define RFAIL(r, st, sys, line, col, field, ...)                                    \
     (err_set(&(r)->saved, (st), (sys), (r)->name, (line), (col), (field), __VA_ARGS__), \
-     (r)->failed = 1, (st))
+     (r)->failed = 1, (tsu_io_status)(st))
 
-/* Next physical line (without '\n') into [*ls, *ls + *ll): 1, 0 at the end, or
- * an error status (negative of it). */
-static int get_line(tsu_reader *r, char **ls, size_t *ll)
+static char delim_char(tsu_delim d)
 {
+    return d == TSU_DELIM_COMMA ? ',' : d == TSU_DELIM_TAB ? '\t' : d == TSU_DELIM_SEMICOLON ? ';' : 0;
+}
+
+/* Could c end a field (for finding quoted fields before the delimiter is known)? */
+static int field_sep(const tsu_reader *r, char c)
+{
+    char dc = delim_char(r->delim);
+    if (r->delim == TSU_DELIM_AUTO)
+        return c == ',' || c == ';' || c == '\t' || c == ' ';
+    return dc ? c == dc : IS_BLANK(c);
+}
+
+/* Quote state over [p, e): *inq inside quotes, *fs at a field start, *cm in
+ * a comment (*hash: where it starts). */
+static void quote_scan(const tsu_reader *r, const char *p, const char *e, int *inq, int *fs, int *cm,
+                       const char **hash)
+{
+    const char *seg = p;
+    if (*cm)
+        return;
+    while (p < e) {
+        if (*inq) {
+            const char *q = memchr(p, '"', (size_t)(e - p));
+            if (!q)
+                return;
+            if (q + 1 < e && q[1] == '"') {
+                p = q + 2;
+                continue;
+            }
+            *inq = 0;
+            *fs = 0;
+            p = q + 1;
+            seg = p;
+            continue;
+        }
+        /* outside quotes: the next '"' or '#' */
+        const char *q = p;
+        while (q < e && *q != '"' && *q != '#')
+            q++;
+        if (q == e) {
+            /* the field-start state at the end, for a record continued by the caller */
+            const char *b = e;
+            while (b > seg && IS_BLANK(b[-1]) && !field_sep(r, b[-1]))
+                b--;
+            if (b > seg)
+                *fs = field_sep(r, b[-1]);
+            return;
+        }
+        if (*q == '#') {
+            *cm = 1;
+            *hash = q;
+            return;
+        }
+        /* a '"' opens a quoted field at a field start: after blanks that follow a
+         * separator, or the start of the scanned run with *fs set */
+        {
+            const char *b = q;
+            int at_start;
+            while (b > seg && IS_BLANK(b[-1]) && !field_sep(r, b[-1]))
+                b--;
+            at_start = b > seg ? field_sep(r, b[-1]) : *fs;
+            if (at_start) {
+                *inq = 1;
+                *fs = 0;
+            } else {
+                *fs = 0;
+                seg = q + 1;
+            }
+        }
+        p = q + 1;
+    }
+}
+
+/* Next record (without its final '\n') into [*ls, *ls + *ll): 1, 0 at the
+ * end, or the negative of an error status. */
+static int get_record(tsu_reader *r, char **ls, size_t *ll)
+{
+    size_t scan = 0; /* bytes of the record scanned so far, from r->pos */
+    unsigned long long nls = 0;
+    int inq = 0, fs = 1, cm = 0;
     for (;;) {
-        char *nl = r->pos < r->len ? memchr(r->buf + r->pos, '\n', r->len - r->pos) : NULL;
-        size_t got, want;
-        if (nl) {
-            *ls = r->buf + r->pos;
-            *ll = (size_t)(nl - *ls);
-            r->pos = (size_t)(nl - r->buf) + 1;
-            r->line++;
+        char *base = r->buf + r->pos;
+        size_t avail = r->len - r->pos;
+        char *nl = scan < avail ? memchr(base + scan, '\n', avail - scan) : NULL;
+        if (nl || (r->eof && scan < avail)) {
+            char *segend = nl ? nl : base + avail;
+            if (r->line + nls < r->skip) { /* a skipped line */
+                r->pos += (size_t)(segend - base) + (nl ? 1 : 0);
+                r->line++;
+                continue;
+            }
+            r->rec_scanned = 0;
+            r->rec_hash = NULL;
+            if (inq || memchr(base + scan, '"', (size_t)(segend - (base + scan)))) {
+                const char *from = base + scan;
+                if (r->line + nls == 0 && scan == 0 && segend - from >= 3 &&
+                    memcmp(from, "\xef\xbb\xbf", 3) == 0)
+                    from += 3; /* the byte-order mark is not part of the first field */
+                quote_scan(r, from, segend, &inq, &fs, &cm, &r->rec_hash);
+                r->rec_scanned = 1;
+            }
+            nls++;
+            cm = 0;
+            if (inq && nl) { /* a line break inside quotes */
+                scan = (size_t)(nl - base) + 1;
+                fs = 0;
+                continue;
+            }
+            if (inq)
+                return -(int)RFAIL(r, TSU_IO_ERR_QUOTE, 0, r->line + 1, 0, 0,
+                                   "quote not closed (the quoted field starting on this line "
+                                   "runs to the end of the input)");
+            *ls = base;
+            *ll = (size_t)(segend - base);
+            r->pos += *ll + (nl ? 1 : 0);
+            r->rec_line = r->line + 1;
+            r->line += nls;
             return 1;
         }
         if (r->eof) {
-            if (r->pos < r->len) {
-                *ls = r->buf + r->pos;
-                *ll = r->len - r->pos;
-                r->pos = r->len;
-                r->line++;
-                return 1;
-            }
+            if (scan > 0)
+                return -(int)RFAIL(r, TSU_IO_ERR_QUOTE, 0, r->line + 1, 0, 0,
+                                   "quote not closed (the quoted field starting on this line "
+                                   "runs to the end of the input)");
             return 0;
         }
         if (r->pos > 0) {
@@ -1117,59 +1499,97 @@ static int get_line(tsu_reader *r, char **ls, size_t *ll)
             r->buf = nb;
             r->cap = nc;
         }
-        want = r->cap - r->len;
-        errno = 0;
-        got = fread(r->buf + r->len, 1, want, r->fp);
-        r->len += got;
-        if (got < want) { /* short read: end of file or error */
-            if (ferror(r->fp)) {
-                int e = errno ? errno : EIO;
-                return -(int)RFAIL(r, TSU_IO_ERR_READ, e, 0, 0, 0, "read error: %s", strerror(e));
+        {
+            size_t want = r->cap - r->len, got;
+            errno = 0;
+            got = fread(r->buf + r->len, 1, want, r->fp);
+            r->len += got;
+            if (got < want) { /* short read: end of file or error */
+                if (ferror(r->fp)) {
+                    int e = errno ? errno : EIO;
+                    return -(int)RFAIL(r, TSU_IO_ERR_READ, e, 0, 0, 0, "read error: %s",
+                                       strerror(e));
+                }
+                r->eof = 1;
             }
-            r->eof = 1;
         }
     }
 }
 
-#define IS_BLANK(c) ((c) == ' ' || (c) == '\t')
-
-static size_t col_of(const tsu_reader *r, const char *p) { return (size_t)(p - r->ls) + 1; }
-
-/* Number of fields of a data line [ls, le) (for the message). */
-static size_t count_fields(const char *ls, const char *le, char dc)
+/* Line and column of p in the current record (records may span lines). */
+static void pos_of(const tsu_reader *r, const char *p, unsigned long long *line, size_t *col)
 {
-    size_t n = 0;
-    const char *p;
-    if (dc) {
-        n = 1;
-        for (p = ls; p < le; p++)
-            n += *p == dc;
-        return n;
-    }
-    for (p = ls; p < le;) {
-        while (p < le && IS_BLANK(*p))
-            p++;
-        if (p == le)
-            break;
-        n++;
-        while (p < le && !IS_BLANK(*p))
-            p++;
-    }
-    return n;
+    const char *ls = r->ls;
+    unsigned long long ln = r->rec_line;
+    for (const char *q = r->ls; q < p; q++)
+        if (*q == '\n') {
+            ln++;
+            ls = q + 1;
+        }
+    *line = ln;
+    *col = (size_t)(p - ls) + 1;
 }
 
-static char delim_char(tsu_delim d) { return d == TSU_DELIM_COMMA ? ',' : d == TSU_DELIM_TAB ? '\t' : 0; }
+#define POS_FAIL(r, st, p, field, ...)                                                   \
+    do {                                                                                 \
+        unsigned long long ln_;                                                          \
+        size_t col_;                                                                     \
+        pos_of((r), (p), &ln_, &col_);                                                   \
+        return RFAIL((r), (st), 0, ln_, col_, (field), __VA_ARGS__);                     \
+    } while (0)
 
-/* Header fields: split at the delimiter (quoted names may contain it). */
-typedef struct hfield {
-    const char *s, *e; /* raw text, trimmed */
-    int quoted;
-} hfield;
+/* Content end of a record: before a '#' outside quotes, trailing blanks and '\r' removed. */
+static const char *content_end(const tsu_reader *r, const char *ls, const char *le)
+{
+    const char *p;
+    if (r->rec_scanned) {
+        if (r->rec_hash)
+            le = r->rec_hash;
+    } else if (memchr(ls, '"', (size_t)(le - ls))) {
+        int inq = 0, fs = 1;
+        for (p = ls; p < le; p++) {
+            char c = *p;
+            if (inq) {
+                if (c == '"') {
+                    if (p + 1 < le && p[1] == '"')
+                        p++;
+                    else
+                        inq = 0, fs = 0;
+                }
+                continue;
+            }
+            if (c == '#')
+                break;
+            if (c == '"' && fs)
+                inq = 1, fs = 0;
+            else if (field_sep(r, c))
+                fs = 1;
+            else if (!IS_BLANK(c))
+                fs = 0;
+        }
+        le = p;
+    } else if ((p = memchr(ls, '#', (size_t)(le - ls))) != NULL) {
+        le = p;
+    }
+    while (le > ls && (le[-1] == ' ' || le[-1] == '\t' || le[-1] == '\r'))
+        le--;
+    return le;
+}
 
-/* Next header field from *pp; returns 0 at the end of the line. */
-static int next_hfield(const char **pp, const char *le, char dc, int first, hfield *f)
+/* A field of a record. */
+typedef struct field {
+    const char *at;   /* where it starts (after blanks; the quote if quoted) */
+    const char *s, *e; /* its text: unquoted, trimmed ("" pairs still doubled) */
+    int quoted, esc;  /* esc: contains "" */
+} field;
+
+/* Next field from *pp (first: at the record start).  1: a field, 0: end,
+ * -1: quote error (reported). */
+static int next_field(tsu_reader *r, const char **pp, const char *le, int first, field *f,
+                      size_t fieldno)
 {
     const char *p = *pp;
+    char dc = delim_char(r->delim);
     if (!first) {
         if (p >= le)
             return 0;
@@ -1184,31 +1604,57 @@ static int next_hfield(const char **pp, const char *le, char dc, int first, hfie
             p++;
     if (!dc && p == le)
         return 0;
-    f->quoted = 0;
-    f->s = p;
+    f->at = p;
+    f->quoted = f->esc = 0;
     if (p < le && *p == '"') {
         const char *q = p + 1;
-        while (q < le) {
-            if (*q == '"') {
-                if (q + 1 < le && q[1] == '"') {
-                    q += 2;
-                    continue;
-                }
-                break;
+        for (;;) {
+            const char *c = memchr(q, '"', (size_t)(le - q));
+            if (!c) {
+                unsigned long long ln;
+                size_t col;
+                pos_of(r, p, &ln, &col);
+                (void)RFAIL(r, TSU_IO_ERR_QUOTE, 0, ln, col, fieldno, "quote not closed");
+                return -1;
             }
-            q++;
+            if (c + 1 < le && c[1] == '"') {
+                f->esc = 1;
+                q = c + 2;
+                continue;
+            }
+            q = c;
+            break;
         }
-        if (q < le) { /* closed quote */
-            f->quoted = 1;
-            f->s = p + 1;
-            f->e = q;
-            p = q + 1;
-            while (p < le && (dc ? *p != dc : !IS_BLANK(*p)))
-                p++; /* ignore text after the closing quote */
-            *pp = p;
-            return 1;
+        f->quoted = 1;
+        f->s = p + 1;
+        f->e = q;
+        p = q + 1;
+        if (dc)
+            while (p < le && (dc == '\t' ? *p == ' ' : IS_BLANK(*p)))
+                p++;
+        if (!dc) {
+            if (p < le && !IS_BLANK(*p)) {
+                unsigned long long ln;
+                size_t col;
+                pos_of(r, p, &ln, &col);
+                (void)RFAIL(r, TSU_IO_ERR_QUOTE, 0, ln, col, fieldno, "text after the closing quote");
+                return -1;
+            }
+        } else if (p < le && *p != dc) {
+            unsigned long long ln;
+            size_t col;
+            pos_of(r, p, &ln, &col);
+            (void)RFAIL(r, TSU_IO_ERR_QUOTE, 0, ln, col, fieldno, "text after the closing quote");
+            return -1;
         }
+        while (f->s < f->e && IS_BLANK(*f->s))
+            f->s++;
+        while (f->e > f->s && IS_BLANK(f->e[-1]))
+            f->e--;
+        *pp = p;
+        return 1;
     }
+    f->s = p;
     while (p < le && (dc ? *p != dc : !IS_BLANK(*p)))
         p++;
     f->e = p;
@@ -1218,44 +1664,209 @@ static int next_hfield(const char **pp, const char *le, char dc, int first, hfie
     return 1;
 }
 
-static int looks_numeric(const char *s, const char *e)
+/* Scratch of at least n bytes; NULL: no memory (reported). */
+static char *scratch(tsu_reader *r, size_t n)
 {
-    const char *stop;
-    double v;
-    tsu_num_status st = tsu_parse_double(s, e, &v, &stop);
-    return st == TSU_NUM_NONFINITE || (st != TSU_NUM_SYNTAX && stop == e);
+    if (n > r->tmpcap) {
+        size_t nc = n < 256 ? 256 : n;
+        char *nb = io_realloc(r->tmp, nc);
+        if (!nb) {
+            (void)RFAIL(r, TSU_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
+            return NULL;
+        }
+        r->tmp = nb;
+        r->tmpcap = nc;
+    }
+    return r->tmp;
 }
 
-static int is_header(const char *ls, const char *le, char dc)
+/* The text of f with "" undone (into scratch when needed); NULL: no memory. */
+static const char *field_text(tsu_reader *r, const field *f, const char **e)
 {
-    const char *p = ls;
-    hfield f;
-    int first = 1;
-    while (next_hfield(&p, le, dc, first, &f)) {
-        first = 0;
-        if (f.quoted || (f.e > f.s && !looks_numeric(f.s, f.e)))
+    if (!f->esc) {
+        *e = f->e;
+        return f->s;
+    }
+    char *d = scratch(r, (size_t)(f->e - f->s) + 1), *o;
+    if (!d)
+        return NULL;
+    o = d;
+    for (const char *q = f->s; q < f->e; q++) {
+        *o++ = *q;
+        if (*q == '"' && q + 1 < f->e && q[1] == '"')
+            q++;
+    }
+    *e = o;
+    return d;
+}
+
+static int is_na(const tsu_reader *r, const char *s, const char *e)
+{
+    size_t n = (size_t)(e - s);
+    if (!r->na)
+        return 0;
+    if (n == 0)
+        return 1;
+    for (size_t k = 0; k < r->nna; k++) {
+        const char *w = r->na[k];
+        size_t i;
+        if (strlen(w) != n)
+            continue;
+        for (i = 0; i < n; i++) {
+            char a = s[i], b = w[i];
+            if (a >= 'A' && a <= 'Z')
+                a = (char)(a - 'A' + 'a');
+            if (b >= 'A' && b <= 'Z')
+                b = (char)(b - 'A' + 'a');
+            if (a != b)
+                break;
+        }
+        if (i == n)
             return 1;
     }
     return 0;
 }
 
-static tsu_io_status read_header(tsu_reader *r, const char *ls, const char *le, char dc)
+/* A whole-field number (decimal comma honoured): status, or -1 = no memory. */
+static int num_field(tsu_reader *r, const char *s, const char *e, double *v)
+{
+    const char *stop;
+    tsu_num_status ns;
+    if (r->decimal_comma) {
+        const char *c = memchr(s, ',', (size_t)(e - s));
+        if (memchr(s, '.', (size_t)(e - s)))
+            return TSU_NUM_SYNTAX;
+        if (c) {
+            char *d = scratch(r, (size_t)(e - s));
+            if (!d)
+                return -1;
+            memcpy(d, s, (size_t)(e - s));
+            d[c - s] = '.';
+            e = d + (e - s);
+            s = d;
+        }
+    }
+    ns = tsu_parse_double(s, e, v, &stop);
+    if (stop != e)
+        return TSU_NUM_SYNTAX;
+    return (int)ns;
+}
+
+enum { FK_EMPTY, FK_NUMBER, FK_NA, FK_TIME, FK_TEXT, FK_NOMEM };
+
+static int classify(tsu_reader *r, const field *f)
+{
+    const char *e, *s = field_text(r, f, &e);
+    double v;
+    int ns;
+    if (!s)
+        return FK_NOMEM;
+    if (s == e)
+        return FK_EMPTY;
+    if (is_na(r, s, e))
+        return FK_NA;
+    ns = num_field(r, s, e, &v);
+    if (ns < 0)
+        return FK_NOMEM;
+    if (ns != TSU_NUM_SYNTAX)
+        return FK_NUMBER;
+    if (r->time_detect || r->time_col || r->time_name) {
+        const char *stop;
+        if (tsu_parse_time(s, e, NULL, NULL, &stop) && stop == e)
+            return FK_TIME;
+    }
+    return FK_TEXT;
+}
+
+/* Is the record [ls, le) a header (a field that is text)? -1: error (reported). */
+static int is_header(tsu_reader *r, const char *ls, const char *le, int *all_text)
 {
     const char *p = ls;
-    hfield f;
-    int first = 1;
-    size_t n = 0, cap = 0, i;
+    field f;
+    int first = 1, k, hdr = 0, any_value = 0;
+    while ((k = next_field(r, &p, le, first, &f, 0)) == 1) {
+        int c = classify(r, &f);
+        first = 0;
+        if (c == FK_NOMEM)
+            return -1;
+        if (c == FK_TEXT)
+            hdr = 1;
+        if (c == FK_NUMBER || c == FK_TIME)
+            any_value = 1;
+    }
+    if (k < 0) {
+        r->failed = 0; /* a quote error: let the data parser report it */
+        return 0;
+    }
+    if (all_text)
+        *all_text = hdr && !any_value;
+    return hdr;
+}
+
+static int grow_row(tsu_reader *r, size_t need)
+{
+    if (need <= r->rowcap)
+        return 0;
+    size_t nc = r->rowcap ? 2 * r->rowcap : 8;
+    while (nc < need)
+        nc *= 2;
+    if (nc > SIZE_MAX / sizeof(double) || nc > SIZE_MAX / sizeof(size_t))
+        return RFAIL(r, TSU_IO_ERR_OVERFLOW, 0, r->rec_line, 0, 0, "size overflow");
+    double *nr = io_realloc(r->row, nc * sizeof *nr);
+    if (!nr)
+        return RFAIL(r, TSU_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
+    r->row = nr;
+    size_t *nf = io_realloc(r->fcol, nc * sizeof *nf);
+    if (!nf)
+        return RFAIL(r, TSU_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
+    r->fcol = nf;
+    unsigned char *it = io_realloc(r->is_time, nc);
+    if (!it)
+        return RFAIL(r, TSU_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
+    memset(it + r->rowcap, 0, nc - r->rowcap);
+    r->is_time = it;
+    tsu_time_form *tf = io_realloc(r->tform, nc * sizeof *tf);
+    if (!tf)
+        return RFAIL(r, TSU_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
+    r->tform = tf;
+    r->rowcap = nc;
+    return 0;
+}
+
+/* Per-column time flags once the number of columns is known. */
+static tsu_io_status set_columns(tsu_reader *r, size_t n)
+{
+    r->ncols = n;
+    if (grow_row(r, n ? n : 1))
+        return r->saved.status;
+    if (r->time_col && r->time_col <= n)
+        r->is_time[r->time_col - 1] = 2; /* forced; form from the first value */
+    if (r->time_name) {
+        size_t j;
+        for (j = 0; j < r->nnames && strcmp(r->names[j], r->time_name) != 0; j++)
+            ;
+        if (j < r->nnames)
+            r->is_time[j] = 2;
+    }
+    return TSU_IO_OK;
+}
+
+static tsu_io_status read_header(tsu_reader *r, const char *ls, const char *le)
+{
+    const char *p = ls;
+    field f;
+    int first = 1, k;
+    size_t n = 0, cap = 0;
     char **names = NULL;
-    while (next_hfield(&p, le, dc, first, &f)) {
-        char *nm, *d;
-        const char *q;
+    while ((k = next_field(r, &p, le, first, &f, n + 1)) == 1) {
+        const char *e, *s;
         first = 0;
         if (n == cap) {
             size_t nc = cap ? 2 * cap : 8;
             char **nn;
             if (nc > SIZE_MAX / sizeof *names) {
                 free_names(names, n);
-                return RFAIL(r, TSU_IO_ERR_OVERFLOW, 0, r->line, 0, 0, "size overflow");
+                return RFAIL(r, TSU_IO_ERR_OVERFLOW, 0, r->rec_line, 0, 0, "size overflow");
             }
             nn = io_realloc(names, nc * sizeof *names);
             if (!nn) {
@@ -1265,112 +1876,277 @@ static tsu_io_status read_header(tsu_reader *r, const char *ls, const char *le, 
             names = nn;
             cap = nc;
         }
-        nm = io_malloc((size_t)(f.e - f.s) + 1);
-        if (!nm) {
+        s = field_text(r, &f, &e);
+        if (!s || !(names[n] = dup_str(s, (size_t)(e - s)))) {
             free_names(names, n);
             return RFAIL(r, TSU_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
         }
-        for (q = f.s, d = nm; q < f.e; q++) {
-            *d++ = *q;
-            if (f.quoted && *q == '"' && q + 1 < f.e && q[1] == '"')
-                q++;
-        }
-        *d = 0;
-        names[n++] = nm;
+        n++;
+    }
+    if (k < 0) {
+        free_names(names, n);
+        return r->saved.status;
     }
     if (r->ncols && n != r->ncols) {
-        /* column: the first extra field, or just past the line */
         size_t col = (size_t)(le - r->ls) + 1;
+        unsigned long long ln = r->rec_line;
         if (n > r->ncols) {
             p = ls;
             first = 1;
-            for (i = 0; i <= r->ncols && next_hfield(&p, le, dc, first, &f); i++)
+            for (size_t i = 0; i <= r->ncols && next_field(r, &p, le, first, &f, 0) == 1; i++)
                 first = 0;
-            col = col_of(r, f.quoted ? f.s - 1 : f.s);
+            pos_of(r, f.at, &ln, &col);
         }
         free_names(names, n);
-        return RFAIL(r, TSU_IO_ERR_FIELDS, 0, r->line, col, 0,
+        return RFAIL(r, TSU_IO_ERR_FIELDS, 0, ln, col, 0,
                      "wrong number of fields (%zu, expected %zu)", n, r->ncols);
     }
     r->names = names;
     r->nnames = n;
-    r->ncols = n;
-    return TSU_IO_OK;
+    r->header_line = r->rec_line;
+    return set_columns(r, n);
 }
 
-static tsu_io_status field_error(tsu_reader *r, tsu_num_status ns, const char *fs, const char *le,
-                                char dc, size_t field)
+/* Number of fields of [ls, le) (for messages; quote errors count as the end). */
+static size_t count_fields(tsu_reader *r, const char *ls, const char *le)
 {
-    const char *fe = fs;
-    char q[200];
-    while (fe < le && (dc ? *fe != dc : !IS_BLANK(*fe)))
-        fe++;
-    while (fe > fs && IS_BLANK(fe[-1]))
-        fe--;
-    quote_text(q, sizeof q, fs, fe);
-    if (ns == TSU_NUM_NONFINITE)
-        return RFAIL(r, TSU_IO_ERR_NONFINITE, 0, r->line, col_of(r, fs), field,
-                     "not a finite number: %s", q);
-    if (ns == TSU_NUM_RANGE)
-        return RFAIL(r, TSU_IO_ERR_RANGE, 0, r->line, col_of(r, fs), field,
-                     "number out of range: %s", q);
-    return RFAIL(r, TSU_IO_ERR_NUMBER, 0, r->line, col_of(r, fs), field,
-                 "expected a number, found %s", q);
+    const char *p = ls;
+    field f;
+    size_t n = 0;
+    int failed = r->failed;
+    while (next_field(r, &p, le, n == 0, &f, 0) == 1)
+        n++;
+    r->failed = failed;
+    return n;
 }
 
-/* Fields of the data line [ls, le) (no comment, no trailing blanks, not blank). */
+/* " (the delimiter is ','; this line also has ';')" for a likely mix-up */
+static void delim_hint(const tsu_reader *r, const char *ls, const char *le, char *buf, size_t len)
+{
+    static const char cand[] = ",;\t";
+    char dc = delim_char(r->delim);
+    buf[0] = 0;
+    for (const char *c = cand; *c; c++) {
+        if (*c == dc || (*c == ',' && r->decimal_comma) || !memchr(ls, *c, (size_t)(le - ls)))
+            continue;
+        snprintf(buf, len, " (the delimiter is %s; this line has %s: mixed delimiters? "
+                 "see --delimiter)",
+                 dc == ',' ? "','" : dc == ';' ? "';'" : dc == '\t' ? "tab" : "white space",
+                 *c == ',' ? "','" : *c == ';' ? "';'" : "a tab");
+        return;
+    }
+}
+
+static tsu_io_status fields_error(tsu_reader *r, const char *ls, const char *le, const char *at,
+                                  size_t got)
+{
+    unsigned long long ln;
+    size_t col;
+    char hint[160];
+    pos_of(r, at, &ln, &col);
+    delim_hint(r, ls, le, hint, sizeof hint);
+    if (!hint[0] && r->nnames == 1 && r->rows == 0)
+        snprintf(hint, sizeof hint, " (the header, line %llu, has one field: metadata lines "
+                 "before the header? skip them with --skip N)", r->header_line);
+    return RFAIL(r, TSU_IO_ERR_FIELDS, 0, ln, col, 0, "wrong number of fields (%zu, expected %zu)%s",
+                 got, r->ncols, hint);
+}
+
+/* "12,5": a number up to a ',' and a digit after it */
+static int number_comma(const char *s, const char *e)
+{
+    const char *stop;
+    double v;
+    return tsu_parse_double(s, e, &v, &stop) == TSU_NUM_OK && stop + 1 < e && *stop == ',' &&
+           IS_DIGIT(stop[1]);
+}
+
+static tsu_io_status value_error(tsu_reader *r, int ns, const field *f, const char *s,
+                                 const char *e, size_t fieldno, const char *ls, const char *le)
+{
+    char q[200], hint[200] = "";
+    int all_text = 0;
+    quote_text(q, sizeof q, s, e);
+    if (ns == TSU_NUM_NONFINITE)
+        POS_FAIL(r, TSU_IO_ERR_NONFINITE, f->at, fieldno, "not a finite number: %s", q);
+    if (ns == TSU_NUM_RANGE)
+        POS_FAIL(r, TSU_IO_ERR_RANGE, f->at, fieldno, "number out of range: %s", q);
+    if (r->decimal_comma && memchr(s, '.', (size_t)(e - s)))
+        snprintf(hint, sizeof hint, " ('.' is not accepted with a decimal comma)");
+    else if (!r->decimal_comma && number_comma(s, e))
+        snprintf(hint, sizeof hint, " (digit grouping is not accepted; a decimal comma needs "
+                 "--decimal-comma)");
+    else
+        delim_hint(r, ls, le, hint, sizeof hint);
+    if (!hint[0] && r->rows == 0 && r->header_line && is_header(r, ls, le, &all_text) > 0 &&
+        all_text)
+        POS_FAIL(r, TSU_IO_ERR_LAYOUT, f->at, fieldno,
+                 "every field of this line is text: a second header line (units?) after the "
+                 "header on line %llu? skip lines before the data with --skip N",
+                 r->header_line);
+    POS_FAIL(r, TSU_IO_ERR_NUMBER, f->at, fieldno, "expected a number, found %s%s", q, hint);
+}
+
+/* The fields of the data record [ls, le) (no comment, not blank) into r->row. */
 static tsu_io_status parse_data(tsu_reader *r, const char *ls, const char *le)
 {
     const char *p = ls;
     char dc = delim_char(r->delim);
     size_t nf = 0;
+    r->missing = 0;
     for (;;) {
-        const char *fs, *stop, *q;
+        field f;
+        const char *s, *e;
         double v;
-        tsu_num_status ns;
+        int k;
         if (dc == '\t')
             while (p < le && *p == ' ')
                 p++;
         else
             while (p < le && IS_BLANK(*p))
                 p++;
-        fs = p;
         if (r->ncols && nf == r->ncols)
-            return RFAIL(r, TSU_IO_ERR_FIELDS, 0, r->line, col_of(r, fs), 0,
-                         "wrong number of fields (%zu, expected %zu)", count_fields(ls, le, dc),
-                         r->ncols);
-        if (dc && (p == le || *p == dc))
-            return RFAIL(r, TSU_IO_ERR_NUMBER, 0, r->line, col_of(r, fs), nf + 1, "empty field");
-        ns = tsu_parse_double(p, le, &v, &stop);
-        q = stop;
-        if (dc == '\t')
-            while (q < le && *q == ' ')
-                q++;
-        else
-            while (q < le && IS_BLANK(*q))
-                q++;
-        if (ns != TSU_NUM_OK || !(q == le || (dc ? *q == dc : q > stop)))
-            return field_error(r, ns, fs, le, dc, nf + 1);
-        if (nf == r->rowcap) {
-            size_t nc = r->rowcap ? 2 * r->rowcap : 8;
-            double *nr;
-            if (nc > SIZE_MAX / sizeof *nr)
-                return RFAIL(r, TSU_IO_ERR_OVERFLOW, 0, r->line, 0, 0, "size overflow");
-            nr = io_realloc(r->row, nc * sizeof *nr);
-            if (!nr)
-                return RFAIL(r, TSU_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
-            r->row = nr;
-            r->rowcap = nc;
+            return fields_error(r, ls, le, p, count_fields(r, ls, le));
+        if (grow_row(r, nf + 1))
+            return r->saved.status;
+        r->fcol[nf] = (size_t)(p - ls);
+        /* fast path: an unquoted number in a number column */
+        if (p < le && *p != '"' && r->is_time[nf] == 1) {
+            const char *stop, *q;
+            tsu_time_form tf;
+            if (tsu_parse_time(p, le, &v, &tf, &stop)) {
+                q = stop;
+                if (dc == '\t')
+                    while (q < le && *q == ' ')
+                        q++;
+                else
+                    while (q < le && IS_BLANK(*q))
+                        q++;
+                if (q == le || (dc ? *q == dc : q > stop)) {
+                    r->row[nf++] = v;
+                    if (q == le)
+                        break;
+                    p = dc ? q + 1 : q;
+                    continue;
+                }
+            }
+        }
+        if (p < le && *p != '"' && !r->is_time[nf]) {
+            const char *stop, *q;
+            tsu_num_status ns = tsu_parse_double(p, le, &v, &stop);
+            if (ns == TSU_NUM_OK && stop > p &&
+                !(r->decimal_comma && memchr(p, '.', (size_t)(stop - p)))) {
+                q = stop;
+                if (dc == '\t')
+                    while (q < le && *q == ' ')
+                        q++;
+                else
+                    while (q < le && IS_BLANK(*q))
+                        q++;
+                if (q == le || (dc ? *q == dc : q > stop)) {
+                    r->row[nf++] = v;
+                    if (q == le)
+                        break;
+                    p = dc ? q + 1 : q;
+                    continue;
+                }
+            }
+        }
+        /* fast path: a quoted field without "" in a number or time column */
+        if (p < le && *p == '"') {
+            const char *q = memchr(p + 1, '"', (size_t)(le - p - 1)), *stop, *t;
+            if (q && !(q + 1 < le && q[1] == '"')) {
+                const char *fs = p + 1, *fe = q;
+                int good;
+                while (fs < fe && IS_BLANK(*fs))
+                    fs++;
+                while (fe > fs && IS_BLANK(fe[-1]))
+                    fe--;
+                if (r->is_time[nf]) {
+                    tsu_time_form tf;
+                    good = fs < fe && r->is_time[nf] == 1 &&
+                           tsu_parse_time(fs, fe, &v, &tf, &stop) && stop == fe;
+                } else {
+                    good = fs < fe && !r->decimal_comma &&
+                           tsu_parse_double(fs, fe, &v, &stop) == TSU_NUM_OK && stop == fe;
+                }
+                t = q + 1;
+                if (dc)
+                    while (t < le && (dc == '\t' ? *t == ' ' : IS_BLANK(*t)))
+                        t++;
+                if (good && (t == le || (dc ? *t == dc : IS_BLANK(*t)))) {
+                    r->row[nf++] = v;
+                    if (t >= le)
+                        break;
+                    p = dc ? t + 1 : t;
+                    continue;
+                }
+            }
+        }
+        /* general path */
+        {
+            const char *fp = p;
+            k = next_field(r, &fp, le, 1, &f, nf + 1);
+            if (k < 0)
+                return r->saved.status;
+            p = fp;
+        }
+        s = field_text(r, &f, &e);
+        if (!s)
+            return r->saved.status;
+        if (s == e || is_na(r, s, e)) {
+            if (!r->na) {
+                if (s == e)
+                    POS_FAIL(r, TSU_IO_ERR_NUMBER, f.at, nf + 1, "empty field");
+            } else {
+                r->row[nf++] = (double)NAN;
+                r->missing++;
+                goto next;
+            }
+        }
+        if (r->is_time[nf]) {
+            const char *stop;
+            tsu_time_form tf;
+            char q[200];
+            if (!tsu_parse_time(s, e, &v, &tf, &stop) || stop != e) {
+                quote_text(q, sizeof q, s, e);
+                POS_FAIL(r, TSU_IO_ERR_TIME, f.at, nf + 1,
+                         "not a valid ISO 8601 date or date-time: %s (YYYY-MM-DD[THH:MM[:SS]]"
+                         "[Z|+HH:MM])", q);
+            }
+            if (r->is_time[nf] == 2 || r->rows == 0) {
+                r->tform[nf] = tf;
+                r->is_time[nf] = 1;
+            }
+            r->row[nf++] = v;
+            goto next;
+        }
+        k = num_field(r, s, e, &v);
+        if (k < 0)
+            return r->saved.status;
+        if (k != TSU_NUM_OK) {
+            const char *stop;
+            tsu_time_form tf;
+            if (k == TSU_NUM_SYNTAX && r->time_detect && r->rows == 0 &&
+                tsu_parse_time(s, e, &v, &tf, &stop) && stop == e) {
+                r->is_time[nf] = 1;
+                r->tform[nf] = tf;
+                r->row[nf++] = v;
+                goto next;
+            }
+            return value_error(r, k, &f, s, e, nf + 1, ls, le);
         }
         r->row[nf++] = v;
-        if (q == le)
+    next:
+        if (p >= le)
             break;
-        p = dc ? q + 1 : q;
+        if (dc)
+            p++;
     }
     if (r->ncols && nf != r->ncols)
-        return RFAIL(r, TSU_IO_ERR_FIELDS, 0, r->line, col_of(r, le), 0,
-                     "wrong number of fields (%zu, expected %zu)", nf, r->ncols);
-    r->ncols = nf;
+        return fields_error(r, ls, le, le, nf);
+    if (!r->ncols)
+        r->ncols = nf;
     return TSU_IO_OK;
 }
 
@@ -1384,55 +2160,66 @@ tsu_io_status tsu_reader_next(tsu_reader *r, const double **row, tsu_io_error *e
         return TSU_IO_ERR_NULL;
     }
     while (!r->failed) {
-        char *ls, *le, *h;
-        const char *p;
+        char *ls, *h;
+        const char *le, *p;
         size_t ll;
-        int g = get_line(r, &ls, &ll);
+        int g = get_record(r, &ls, &ll);
         tsu_io_status st;
         if (g == 0) {
             if (r->rows == 0) {
                 (void)RFAIL(r, TSU_IO_ERR_EMPTY, 0, 0, 0, 0,
-                      r->seen_content ? "no data rows" : "no data (empty input)");
+                            r->seen_content ? "no data rows" : "no data (empty input)");
                 break;
             }
             return TSU_IO_END;
         }
         if (g < 0)
             break;
-        if (r->line == 1 && ll >= 3 && memcmp(ls, "\xef\xbb\xbf", 3) == 0) {
+        if (r->rec_line == 1 && ll >= 3 && memcmp(ls, "\xef\xbb\xbf", 3) == 0) {
             ls += 3; /* UTF-8 byte-order mark */
             ll -= 3;
         }
         r->ls = ls;
-        le = ls + ll;
-        h = memchr(ls, '#', ll);
-        if (h)
-            le = h;
-        while (le > ls && (le[-1] == ' ' || le[-1] == '\t' || le[-1] == '\r'))
-            le--;
+        le = content_end(r, ls, ls + ll);
         p = ls;
         while (p < le && IS_BLANK(*p))
             p++;
         if (p == le)
             continue;
-        if (r->delim == TSU_DELIM_AUTO)
-            r->delim = memchr(p, ',', (size_t)(le - p))    ? TSU_DELIM_COMMA
-                       : memchr(p, '\t', (size_t)(le - p)) ? TSU_DELIM_TAB
-                                                           : TSU_DELIM_SPACE;
+        if (r->delim == TSU_DELIM_AUTO) {
+            /* the first candidate outside quotes */
+            int inq = 0, semi = 0, comma = 0, tab = 0;
+            for (h = ls; h < le; h++) {
+                if (*h == '"')
+                    inq = !inq;
+                else if (!inq)
+                    semi |= *h == ';', comma |= *h == ',', tab |= *h == '\t';
+            }
+            r->delim = semi                        ? TSU_DELIM_SEMICOLON
+                       : comma && !r->decimal_comma ? TSU_DELIM_COMMA
+                       : tab                        ? TSU_DELIM_TAB
+                                                    : TSU_DELIM_SPACE;
+        }
         if (!r->seen_content) {
+            int hd;
             r->seen_content = 1;
-            if (r->header == TSU_HEADER_YES ||
-                (r->header == TSU_HEADER_AUTO && is_header(ls, le, delim_char(r->delim)))) {
-                if (read_header(r, ls, le, delim_char(r->delim)) != TSU_IO_OK)
+            hd = r->header == TSU_HEADER_YES ||
+                 (r->header == TSU_HEADER_AUTO && is_header(r, ls, le, NULL) != 0);
+            if (r->failed)
+                break;
+            if (hd) {
+                if (read_header(r, ls, le) != TSU_IO_OK)
                     break;
                 continue;
             }
+            if (r->ncols && set_columns(r, r->ncols) != TSU_IO_OK)
+                break;
         }
         st = parse_data(r, ls, le);
         if (st != TSU_IO_OK)
             break;
         r->rows++;
-        r->row_line = r->line;
+        r->row_line = r->rec_line;
         if (row)
             *row = r->row;
         return TSU_IO_OK;
@@ -1440,6 +2227,14 @@ tsu_io_status tsu_reader_next(tsu_reader *r, const double **row, tsu_io_error *e
     if (err)
         *err = r->saved;
     return r->saved.status;
+}
+
+void tsu_reader_field_pos(const tsu_reader *r, size_t j, unsigned long long *line, size_t *col)
+{
+    *line = r ? r->row_line : 0;
+    *col = 0;
+    if (r && j < r->ncols && r->fcol && r->rows)
+        *col = r->fcol[j] + 1; /* within the record's first line in the usual case */
 }
 
 /* ================================================================== */

@@ -153,7 +153,10 @@ typedef enum tsu_io_status {
     TSU_IO_ERR_RANGE = 11,   /* a number overflows a double */
     TSU_IO_ERR_FIELDS = 12,  /* wrong number of fields in a row */
     TSU_IO_ERR_LINE = 13,    /* a line longer than tsu_read_options.max_line */
-    TSU_IO_STATUS_COUNT_ = 14
+    TSU_IO_ERR_QUOTE = 14,   /* a quote never closed, or text after a closing quote */
+    TSU_IO_ERR_TIME = 15,    /* a field of a time column is not a valid date / date-time */
+    TSU_IO_ERR_LAYOUT = 16,  /* the file's layout is ambiguous (second header line, ...) */
+    TSU_IO_STATUS_COUNT_ = 17
 } tsu_io_status;
 
 /* A fixed, never-NULL English string for any value. */
@@ -202,31 +205,92 @@ typedef struct tsu_io_error {
 /* ------------------------------------------------------------------ */
 
 /*
+ * Dates and times (ISO 8601, the subset real files use):
+ *
+ *     YYYY-MM-DD                               a date (midnight UTC)
+ *     YYYY-MM-DD(T|t| )HH:MM[:SS[.fraction]]    a date-time
+ *     ... followed by Z, z, +HH:MM, -HH:MM, +HHMM or +HH   its UTC offset
+ *
+ * A date-time without an offset is taken as UTC.  Years 0000-9999; month,
+ * day, hour (00-23), minute and second (00-59) are range-checked (day
+ * against the month, leap years by the Gregorian rule).  Leap seconds do
+ * not exist on this time scale (POSIX time): ":60" is an error.  The value
+ * is seconds since 1970-01-01T00:00:00Z as a double: the whole seconds
+ * exactly (below 2^53), plus the fraction correctly rounded.
+ *
+ * tsu_parse_time: 1 when [s, end) starts with a date or date-time (*stop
+ * just past it, *t its value, *form how it was written), else 0 (*stop at
+ * the first character that does not fit).  end may be NULL (NUL-terminated).
+ * tsu_format_time: t written in form (TSU_TIME_SIZE bytes incl. the NUL):
+ * the time in form's UTC offset, with its separator and zone designator;
+ * a date-only form writes a date when t is midnight there and a date-time
+ * ("T" separator) otherwise; a form without seconds writes them only when
+ * they are not zero; fractional seconds get the fewest digits (at most 9)
+ * that tsu_parse_time reads back as the same double.  Returns the length.
+ */
+typedef struct tsu_time_form {
+    int date_only;  /* 1: YYYY-MM-DD */
+    char sep;       /* 'T', 't' or ' ' */
+    int seconds;    /* 1: ":SS" was written */
+    int zone;       /* 0: none, 1: "Z", 2: numeric offset */
+    int colon;      /* numeric offset written as +HH:MM */
+    int offset_min; /* zone 2: minutes east of UTC */
+} tsu_time_form;
+
+#define TSU_TIME_SIZE 48
+
+int tsu_parse_time(const char *s, const char *end, double *t, tsu_time_form *form,
+                   const char **stop);
+size_t tsu_format_time(double t, const tsu_time_form *form, char buf[TSU_TIME_SIZE]);
+
+/*
  * Input format (one table per input):
- *  - Lines end in "\n" or "\r\n"; the last line needs no terminator.
- *  - '#' starts a comment running to the end of the line, anywhere.
+ *  - Records end in "\n" or "\r\n"; the last needs no terminator.  A
+ *    record is one line, except that a quoted field may contain line breaks.
+ *  - tsu_read_options.skip leading lines are skipped unread.
+ *  - '#' outside quotes starts a comment running to the end of the line.
  *  - Blank lines (only spaces/tabs, or only a comment) are skipped.
+ *  - Fields (RFC 4180): a field that starts with '"' (after blanks) is
+ *    quoted: it runs to the next lone '"', "" inside stands for one '"', and
+ *    delimiters, '#' and line breaks inside are text; after the closing
+ *    quote only blanks may come before the delimiter ("text after the
+ *    closing quote" otherwise); a quote never closed is an error naming the
+ *    line where it opened.  A '"' inside an unquoted field is text.  Quotes
+ *    only group: a quoted number is a number.
  *  - Delimiter, when TSU_DELIM_AUTO, is chosen from the first non-blank,
- *    non-comment line: ',' if it contains a comma, else tab if it contains a
- *    tab, else white space.  With ',' and tab exactly one delimiter separates
- *    two fields (an empty field is an error) and spaces around a field are
- *    ignored (with ',' tabs too); with white space any run of spaces and
- *    tabs separates fields.
- *  - Header: the first non-blank, non-comment line is a header when
- *    TSU_HEADER_AUTO and one of its fields is not empty and not a number
- *    (nan/inf count as numbers, so "nan,1" is data and fails).  Header names
- *    are trimmed; a name in double quotes loses them ("" inside means ").
+ *    non-comment line (outside quotes, each '"' toggling "inside"): ';' if it
+ *    contains one, else ',' (not with decimal_comma), else tab, else white
+ *    space.  Until it is known, any of ',' ';' tab space ends a field when
+ *    finding where quoted fields start.  With ',', ';'
+ *    and tab exactly one delimiter separates two fields and blanks around a
+ *    field are ignored (with ',' and ';' tabs too); with white space any run
+ *    of spaces and tabs separates fields.
+ *  - Header: the first content line is a header (TSU_HEADER_AUTO) when one
+ *    of its fields, unquoted and trimmed, is none of: empty, a number
+ *    (nan/inf included, so "nan,1" is data; "nanoseconds" is a name), a
+ *    missing-value word (when na is set), a date (when time columns are on).
+ *    Names are unquoted and trimmed.
  *  - Every other line has the same number of fields: that of the header,
  *    or tsu_read_options.ncols when not 0, or else the first data row's.
  *  - A field is a number of tsu_parse_double and nothing else (surrounding
- *    spaces aside).  nan/inf, overflow and text are errors (see above).
+ *    blanks aside); with decimal_comma the decimal mark is ',' and '.' is an
+ *    error (it may be a digit-group separator).  nan/inf, overflow and text
+ *    are errors.  With na set, an empty field and the words of na (ASCII
+ *    case-insensitive) are missing values: the row holds NaN there and
+ *    tsu_reader_missing() counts them.  In a time column every field is a
+ *    date or date-time (tsu_parse_time; seconds since the epoch in the row).
+ *  - Errors that look like a misread layout say so: a first data row all of
+ *    text after a header ("a second header line?"), a field count that
+ *    differs from a one-field header ("metadata lines before the header?"),
+ *    another delimiter character in a row with the wrong number of fields.
  */
 
 typedef enum tsu_delim {
     TSU_DELIM_AUTO = 0,
     TSU_DELIM_COMMA = 1,
     TSU_DELIM_TAB = 2,
-    TSU_DELIM_SPACE = 3   /* runs of spaces and tabs */
+    TSU_DELIM_SPACE = 3,  /* runs of spaces and tabs */
+    TSU_DELIM_SEMICOLON = 4
 } tsu_delim;
 
 typedef enum tsu_header {
@@ -243,6 +307,13 @@ typedef struct tsu_read_options {
     size_t buffer_size;   /* initial read buffer, default TSU_IO_BUFFER (1 MiB); >= 16; grows
                              up to max_line for a longer line */
     int track_lines;      /* tsu_read_table: also fill tsu_table.lines (default 1) */
+    unsigned long long skip; /* leading lines skipped unread (default 0) */
+    int decimal_comma;    /* 1: ',' is the decimal mark (default 0) */
+    const char *na;       /* comma-separated words read as missing values, besides the empty
+                             field; NULL (default): missing values are errors */
+    int time_detect;      /* 1: a column whose first data field is a date is a time column */
+    size_t time_col;      /* 1-based column that must hold dates (0: none) */
+    const char *time_name; /* or the header name of that column (NULL: none) */
 } tsu_read_options;
 
 #define TSU_IO_MAX_LINE ((size_t)16 << 20)
@@ -279,6 +350,14 @@ size_t tsu_reader_nnames(const tsu_reader *r);              /* header fields, 0 
 const char *tsu_reader_name(const tsu_reader *r, size_t j); /* header name j, NULL if none */
 const char *tsu_reader_source(const tsu_reader *r);         /* the display name */
 tsu_delim tsu_reader_delim(const tsu_reader *r);             /* the delimiter in use (AUTO until known) */
+/* Missing fields (NaN) in the last row returned (0 without na). */
+size_t tsu_reader_missing(const tsu_reader *r);
+/* 1 when column j holds dates; *form (may be NULL) how its first value was written. */
+int tsu_reader_is_time(const tsu_reader *r, size_t j, tsu_time_form *form);
+/* Line and 1-based byte column of field j of the last row returned (for messages). */
+void tsu_reader_field_pos(const tsu_reader *r, size_t j, unsigned long long *line, size_t *col);
+/* Line of the header, 0 if none. */
+unsigned long long tsu_reader_header_line(const tsu_reader *r);
 void tsu_reader_free(tsu_reader *r);                        /* NULL ok; does not close fp */
 
 /* ---- whole table in memory ---------------------------------------- */

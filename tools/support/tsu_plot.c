@@ -393,6 +393,8 @@ struct tsu_plot {
     series *s;
     size_t ns, cap;
     size_t next_color;
+    tsu_plot_tick_fn tick_fn[2];
+    void *tick_ctx[2];
 };
 
 static const char *const palette[8] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7",
@@ -833,6 +835,19 @@ static void place_area(const tsu_plot *p, layout *ly)
         ly->PH = 20;
 }
 
+static void custom_ticks(const tsu_plot *p, int a, tsu_plot_ticks *t)
+{
+    if (!p->tick_fn[a])
+        return;
+    t->n = 0;
+    t->exponent = 0;
+    p->tick_fn[a](p->tick_ctx[a], t);
+    if (t->n > TSU_PLOT_MAX_TICKS)
+        t->n = TSU_PLOT_MAX_TICKS;
+    for (size_t i = 0; i < t->n; i++)
+        t->label[i][TSU_PLOT_LABEL_MAX - 1] = 0;
+}
+
 static void base_ticks(const tsu_plot *p, double ext[2][2], layout *ly)
 {
     tsu_plot_ticks *t[2] = {&ly->tx, &ly->ty};
@@ -841,7 +856,19 @@ static void base_ticks(const tsu_plot *p, double ext[2][2], layout *ly)
             tsu_plot_ticks_compute(p->rng[a][0], p->rng[a][1], TSU_PLOT_RANGE_FIXED, t[a]);
         else
             tsu_plot_ticks_compute(ext[a][0], ext[a][1], TSU_PLOT_RANGE_AUTO, t[a]);
+        custom_ticks(p, a, t[a]);
     }
+}
+
+tsu_plot_status tsu_plot_set_tick_fn(tsu_plot *p, int axis, tsu_plot_tick_fn fn, void *ctx)
+{
+    if (!p)
+        return TSU_PLOT_ERR_NULL;
+    if (axis != 0 && axis != 1)
+        return TSU_PLOT_ERR_ARG;
+    p->tick_fn[axis] = fn;
+    p->tick_ctx[axis] = ctx;
+    return TSU_PLOT_OK;
 }
 
 /* equal aspect: from the base ranges, widen one axis about its centre */

@@ -172,6 +172,14 @@ tsu_plot_status tsu_plot_set_labels(tsu_plot *p, const char *xlabel, const char 
 tsu_plot_status tsu_plot_set_xrange(tsu_plot *p, double lo, double hi);
 tsu_plot_status tsu_plot_set_yrange(tsu_plot *p, double lo, double hi);
 
+/* Custom ticks for an axis (0: x, 1: y), e.g. dates or decades of a log
+ * axis whose data the caller passes as log10 values.  Once the axis range
+ * [t->lo, t->hi] is fixed, fn(ctx, t) replaces t->n, t->value (increasing,
+ * inside the range) and t->label; t->exponent is then 0.  fn NULL: the
+ * 1-2-5 ticks again.  TSU_PLOT_OK, TSU_PLOT_ERR_NULL, TSU_PLOT_ERR_ARG (axis). */
+typedef void (*tsu_plot_tick_fn)(void *ctx, tsu_plot_ticks *t);
+tsu_plot_status tsu_plot_set_tick_fn(tsu_plot *p, int axis, tsu_plot_tick_fn fn, void *ctx);
+
 /* 1: one data unit is as long on both axes (closed curves); the axis that
  * needs it is widened about its centre, even a fixed one.  Default 0.  TSU_PLOT_OK, TSU_PLOT_ERR_NULL. */
 tsu_plot_status tsu_plot_set_equal_aspect(tsu_plot *p, int on);
