@@ -16,7 +16,9 @@
  *
  * opt (float64, OPT_LEN values; the layout is trigspline.interp's):
  *   shape, form, slopes, extrapolate (-1: NaN outside), alpha,
- *   lower.m, lower.c, upper.m, upper.c, margin, skipna, certify, want_gap.
+ *   lower.m, lower.c, upper.m, upper.c, margin, skipna, certify, want_gap,
+ *   gap_first, gap_end (the least gap is taken over intervals
+ *   [gap_first, gap_end) of the fitted series; gap_end < 0: to the last).
  *
  * float32 output keeps the bound (docs/method.md §5): each value is rounded
  * to nearest, then moved one float32 step back inside where rounding crossed
@@ -56,12 +58,15 @@ enum {
     OPT_SKIPNA,
     OPT_CERTIFY,
     OPT_WANT_GAP,
+    OPT_GAP_FIRST,
+    OPT_GAP_END,
     OPT_LEN
 };
 
 typedef struct {
     ts_options opt;
     int skipna, want_gap, nan_outside;
+    double gap_first, gap_end;
 } series_options;
 
 /* The option vector -> ts_options; 0 if a value is not a valid enum. */
@@ -92,16 +97,22 @@ static int read_options(const char *p, npy_intp step, npy_intp k, series_options
     so->skipna = v[OPT_SKIPNA] != 0;
     so->opt.certify = v[OPT_CERTIFY] != 0;
     so->want_gap = v[OPT_WANT_GAP] != 0;
+    so->gap_first = v[OPT_GAP_FIRST];
+    so->gap_end = v[OPT_GAP_END];
+    if (!(so->gap_first >= 0) || isnan(so->gap_end))
+        return 0;
     return 1;
 }
 
-/* Least certified gap over all intervals and active boundaries (NaN when the
- * scheme has none, e.g. monotone). */
-static double least_gap(const ts_spline *s)
+/* Least certified gap over intervals [first, end) (end < 0: to the last) and
+ * their active boundaries (NaN when the scheme has none, e.g. monotone). */
+static double least_gap(const ts_spline *s, double first, double end)
 {
     double g = (double)NAN;
     size_t n = ts_spline_intervals(s);
-    for (size_t i = 0; i < n; i++) {
+    size_t i0 = first < (double)n ? (size_t)first : n;
+    size_t i1 = end < 0 || end > (double)n ? n : (size_t)end;
+    for (size_t i = i0; i < i1; i++) {
         ts_interval_report r;
         if (ts_spline_report(s, i, &r) != TS_OK)
             return (double)NAN;
@@ -179,7 +190,7 @@ static ts_status fit_series(scratch *w, npy_intp n, npy_intp m, const series_opt
     /* TS_ERR_DOMAIN only: those queries are NaN, the others evaluated */
     (void)ts_eval_batch(s, 0, w->xq, (size_t)m, w->y, &cur, NULL);
     if (so->want_gap)
-        *gap = least_gap(s);
+        *gap = least_gap(s, so->gap_first, so->gap_end);
     ts_spline_free(s);
     return TS_OK;
 }

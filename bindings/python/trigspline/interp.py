@@ -20,7 +20,8 @@ SLOPES = {"arithmetic": 0, "geometric": 1, "harmonic": 2, "fritsch_carlson": 3, 
           "akima": 4, "makima": 5, "periodic": 7}
 EXTRAPS = {"nan": -1, None: -1, False: -1, "clamp": 1, "extend": 2, True: 2, "linear": 3}
 OPTION_LAYOUT = ("shape", "form", "slopes", "extrapolate", "alpha", "lower_m", "lower_c",
-                 "upper_m", "upper_c", "margin", "skipna", "certify", "want_gap")
+                 "upper_m", "upper_c", "margin", "skipna", "certify", "want_gap",
+                 "gap_first", "gap_end")
 DEFAULT_MARGIN = 0.01  # TS_DEFAULT_MARGIN of include/trigspline.h
 
 # The ts_status codes a series gets when its data cannot be fitted at all
@@ -71,8 +72,10 @@ def resolve_shape(shape, lower, upper):
 
 def pack_options(shape="positive", lower=None, upper=None, *, alpha=1.0, form="paper",
                  slopes="arithmetic", extrapolate="nan", margin=None, skipna=False,
-                 certify=True, want_gap=False):
-    """The float64 option vector of the gufunc (layout OPTION_LAYOUT)."""
+                 certify=True, want_gap=False, gap_intervals=(0, -1)):
+    """The float64 option vector of the gufunc (layout OPTION_LAYOUT).
+    gap_intervals: the least gap is taken over intervals [first, end) of each
+    fitted series (end -1: to the last)."""
     shape, lo, hi = resolve_shape(shape, lower, upper)
     for name, table, v in (("form", FORMS, form), ("slopes", SLOPES, slopes),
                            ("extrapolate", EXTRAPS, extrapolate)):
@@ -89,7 +92,7 @@ def pack_options(shape="positive", lower=None, upper=None, *, alpha=1.0, form="p
     hi = hi or (0.0, 0.0)
     return np.array([SHAPES[shape], FORMS[form], SLOPES[slopes], EXTRAPS[extrapolate], alpha,
                      lo[0], lo[1], hi[0], hi[1], margin, bool(skipna), bool(certify),
-                     bool(want_gap)], dtype=np.float64)
+                     bool(want_gap), gap_intervals[0], gap_intervals[1]], dtype=np.float64)
 
 
 class InterpResult:
