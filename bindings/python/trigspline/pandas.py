@@ -81,10 +81,13 @@ def interpolate(obj, index, *, shape=None, bounds=None, lower=None, upper=None, 
     qf = np.asarray(_as_float(new, epoch), dtype=np.float64)
     frame = obj.to_frame() if isinstance(obj, pd.Series) else obj
     cols = [c for c in frame.columns if frame[c].dtype.kind in "fiu"]
-    data = np.stack([np.asarray(frame[c], dtype=np.float32 if frame[c].dtype == np.float32
-                                else np.float64) for c in cols]) if cols else None
     out = {}
-    if cols:
+    # float32 columns stay float32 (one gufunc call per dtype)
+    for dtype in (np.float32, np.float64):
+        group = [c for c in cols if (frame[c].dtype == np.float32) == (dtype == np.float32)]
+        if not group:
+            continue
+        data = np.stack([np.asarray(frame[c], dtype=dtype) for c in group])
         r = interp(xf, data, qf, shape=shape, lower=lower, upper=upper, alpha=alpha, form=form,
                    slopes=slopes, extrapolate=extrapolate, margin=margin, skipna=skipna,
                    certify=certify, full=True)
@@ -94,8 +97,8 @@ def interpolate(obj, index, *, shape=None, bounds=None, lower=None, upper=None, 
                 j = int(np.argmax(bad))
                 i = int(r.index[j])
                 at = " at %s (position %d)" % (old[i], i) if 0 <= i < len(old) else ""
-                raise ValueError("column %r: %s%s" % (cols[j], status_message(r.status[j]), at))
-        for j, c in enumerate(cols):
+                raise ValueError("column %r: %s%s" % (group[j], status_message(r.status[j]), at))
+        for j, c in enumerate(group):
             out[c] = r.values[j]
     if isinstance(obj, pd.Series):
         res = pd.Series(out[obj.name if obj.name is not None else 0] if cols else np.nan,
