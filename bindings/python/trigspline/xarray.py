@@ -81,8 +81,10 @@ def _series_label(da_dims, other_coords, where):
     return ", ".join(parts) if parts else "the series"
 
 
-def _raise_status(status, index, dims, coords, dim, dim_values, offset=None):
-    """ValueError for the first series whose status is a data fault."""
+def _raise_status(status, index, dims, coords, dim, dim_values, offset=None, values_from=0):
+    """ValueError for the first series whose status is a data fault.
+    offset: (positions of the block along the other dims, its first knot);
+    dim_values: the coordinate from position values_from on."""
     bad = (status != STATUS_OK) & ~np.isin(status, DATA_GAPS)
     if not bad.any():
         return
@@ -91,8 +93,8 @@ def _raise_status(status, index, dims, coords, dim, dim_values, offset=None):
     if offset is not None:
         where = tuple(w + o for w, o in zip(where, offset[0]))
         i = i + offset[1] if i >= 0 else i
-    at = ("at %s=%s (position %d)" % (dim, dim_values[i], i)
-          if 0 <= i < len(dim_values) else "")
+    at = ("at %s=%s (position %d)" % (dim, dim_values[i - values_from], i)
+          if 0 <= i - values_from < len(dim_values) else "")
     raise ValueError("trigspline.interp along %r, series %s: %s %s"
                      % (dim, _series_label(dims, coords, where), status_message(code), at))
 
@@ -142,7 +144,7 @@ def _interp_chunked(data, xf, qf, opt, halo, errors, dims, coords, dim, dim_valu
             _chunk_task, fk, chunks=fk.chunks[:-1] + ((len(qk),),), dtype=data.dtype
             if data.dtype == np.float32 else np.float64,
             x=xf[lo:hi], q=qk, opt=opt, lo=lo, errors=errors, dims=dims, coords=coords,
-            dim=dim, dim_values=dim_values))
+            dim=dim, dim_values=dim_values[lo:hi]))
         # the gaps of the chunk's own intervals s..s+size-1 (the last chunk:
         # s..n-2); halo intervals are fitted with other end slopes
         own = opt.copy()
@@ -163,13 +165,14 @@ def _interp_chunked(data, xf, qf, opt, halo, errors, dims, coords, dim, dim_valu
 
 
 def _chunk_task(f, x, q, opt, lo, errors, dims, coords, dim, dim_values, block_info=None):
+    """One block: knots from position lo on (dim_values: their coordinate)."""
     y, st, ix, _ = _gufunc.interp(x, f, q, opt)
     if errors == "raise":
         off = None
         if block_info is not None and 0 in block_info:
             loc = block_info[0]["array-location"]
             off = ([a for a, _ in loc[:-1]], lo)
-        _raise_status(st, ix, dims, coords, dim, dim_values, off)
+        _raise_status(st, ix, dims, coords, dim, dim_values, off, values_from=lo)
     return y
 
 
