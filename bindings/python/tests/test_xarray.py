@@ -6,7 +6,6 @@ value (the conversion the accessor documents) for the values; the unchunked
 result for every chunking (bit for bit: the schemes are local, docs/method.md
 §3, §5, §6); the outputs themselves for the bound.
 """
-import warnings
 
 import numpy as np
 import pytest
@@ -14,6 +13,7 @@ import pytest
 xr = pytest.importorskip("xarray", reason="python3-xarray is installed by make test")
 dask = pytest.importorskip("dask")
 
+import trigspline
 import trigspline.xarray  # noqa: F401  (registers the accessor)
 from trigspline import Spline
 from trigspline.xarray import halo_knots, summary
@@ -216,5 +216,3 @@ def test_dataset():
     lazy = ds.chunk({"time": 6}).trigspline.interp(time=new, bounds=(0, None))
     xr.testing.assert_identical(lazy.compute(scheduler="sync"), out)
 
-
-import trigspline  # noqa: E402  (used by test_halo_is_needed)
