@@ -109,9 +109,10 @@ clean:
 # with numpy, SciPy, pytest, setuptools, wheel, venv/pip and Python.h.
 PYTHON := /usr/bin/python3
 PYTHON_PACKAGES := python3 python3-numpy python3-scipy python3-pytest python3-setuptools \
-  python3-wheel python3-venv python3-pip python3-dev
+  python3-wheel python3-venv python3-pip python3-dev python3-xarray python3-dask \
+  python3-distributed python3-pandas
 python-deps:
-	@$(PYTHON) -c 'import numpy, scipy, pytest, setuptools, wheel, ensurepip, os, sys, sysconfig; \
+	@$(PYTHON) -c 'import numpy, scipy, pytest, setuptools, wheel, ensurepip, xarray, dask, distributed, pandas, os, sys, sysconfig; \
 	  sys.exit(not os.path.exists(os.path.join(sysconfig.get_paths()["include"], "Python.h")))' \
 	  2>/dev/null || { apt-get update && \
 	  DEBIAN_FRONTEND=noninteractive apt-get install -y $(PYTHON_PACKAGES); }
@@ -128,6 +129,7 @@ bench-python: python-deps
 	env -u PIP_FIND_LINKS PIP_NO_INDEX=1 build-bench/python-venv/bin/pip install -q \
 	  --no-build-isolation ./bindings/python
 	cd build-bench && python-venv/bin/python ../bench/bench_python.py
+	cd build-bench && python-venv/bin/python ../bench/bench_xarray.py
 
 # The companion page "why trigspline" (out/why): our curves beside SciPy's and
 # GSL's on data/examples/, α guidance and the overshoot report.  Run by `make

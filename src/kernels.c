@@ -12,7 +12,9 @@
  *     queries advancing a level at a time so their cache misses overlap.
  *     Per query: tu = (x − x_i)·w, tv = (x_{i+1} − x)·w, w = (π/2)/h_i, and
  *     B0..B3 — exactly the products eval.c's eval_in forms.
- *  3. evaluate, in a straight loop the compiler vectorises: from the nearer
+ *  3. evaluate, in a straight loop the compiler vectorises, always over a
+ *     whole block (a short one padded) into an aligned buffer, so that a
+ *     query's value does not depend on where it sits in the batch: from the nearer
  *     end as eval.c (ϑ = tu or tv <= π/4, no range reduction: docs/method.md §1), sin
  *     and 1 − cos by polynomials, then docs/method.md §2 (value) or (2.1) and its
  *     θ-derivative, times w or w·w.
@@ -259,12 +261,26 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
                                  double *yq, size_t *cur)
 {
     fast_stage st;
+    _Alignas(64) double yt[TS_FAST_BLOCK];
     size_t j0 = 0;
     while (j0 < m) {
         size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
         if (!stage_block(sp, xq + j0, nb, deriv > 0, &st, cur))
             break;
-        eval_block(deriv, &st, nb, yq + j0);
+        /* A short block is padded with its first query and every block is
+         * evaluated whole into an aligned buffer: no loop tail and no
+         * alignment peel, so each query runs the same instructions wherever
+         * it sits in the batch (split batches, threads and chunked callers
+         * agree bit for bit). */
+        for (size_t j = nb; j < TS_FAST_BLOCK; j++) {
+            st.tu[j] = st.tu[0];
+            st.tv[j] = st.tv[0];
+            st.w[j] = deriv > 0 ? st.w[0] : 0.0;
+            st.B[j] = st.B[0];
+        }
+        eval_block(deriv, &st, TS_FAST_BLOCK, yt);
+        for (size_t j = 0; j < nb; j++)
+            yq[j0 + j] = yt[j];
         j0 += nb;
     }
     return j0;

@@ -1,0 +1,379 @@
+/* trigspline._gufunc: the numpy generalized ufunc behind trigspline.interp.
+ *
+ *   interp(x(n), f(n), xq(m), opt(k)) -> y(m), status(), index(), gap()
+ *
+ * One series per core call: the spline is built with ts_spline_new and
+ * evaluated with ts_eval_batch, the calls trigspline.Spline makes, so the
+ * values are those of one Spline per series.  Loops: float64 in and out,
+ * float32 data (x and queries float32 or float64) to float32 out; the fit is
+ * always in float64.  numpy runs these loops without the GIL (no object
+ * dtypes); nothing here touches Python objects inside a loop.
+ *
+ * A series that cannot be fitted never raises: its y is NaN and status holds
+ * the ts_status (index: the point or interval it names, in the caller's
+ * numbering, -1 if none).  Queries outside the data under extrapolation
+ * "nan" (and NaN queries) are NaN without a status.
+ *
+ * opt (float64, OPT_LEN values; the layout is trigspline.interp's):
+ *   shape, form, slopes, extrapolate (-1: NaN outside), alpha,
+ *   lower.m, lower.c, upper.m, upper.c, margin, skipna, certify, want_gap,
+ *   gap_first, gap_end (the least gap is taken over intervals
+ *   [gap_first, gap_end) of the fitted series; gap_end < 0: to the last).
+ *
+ * float32 output keeps the bound (docs/method.md §5): each value is rounded
+ * to nearest, then moved one float32 step back inside where rounding crossed
+ * the scheme's boundary (positive: S >= 0; lines: strictly beyond the line
+ * evaluated in double as m*x + c).  Knots come back exactly: S(x_i) = f_i in
+ * double, f_i is a float32, rounding returns it, and it is inside the region
+ * (the data checks of docs/method.md §5.8), so no step is taken.  Rounding
+ * to nearest is monotone, so monotone output stays monotone.
+ */
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+
+#define NPY_NO_DEPRECATED_API NPY_1_7_API_VERSION
+#include <numpy/arrayobject.h>
+#include <numpy/ufuncobject.h>
+
+#include <fenv.h>
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "trigspline.h"
+
+enum {
+    OPT_SHAPE,
+    OPT_FORM,
+    OPT_SLOPES,
+    OPT_EXTRAP,
+    OPT_ALPHA,
+    OPT_LOWER_M,
+    OPT_LOWER_C,
+    OPT_UPPER_M,
+    OPT_UPPER_C,
+    OPT_MARGIN,
+    OPT_SKIPNA,
+    OPT_CERTIFY,
+    OPT_WANT_GAP,
+    OPT_GAP_FIRST,
+    OPT_GAP_END,
+    OPT_LEN
+};
+
+typedef struct {
+    ts_options opt;
+    int skipna, want_gap, nan_outside;
+    double gap_first, gap_end;
+} series_options;
+
+/* The option vector -> ts_options; 0 if a value is not a valid enum. */
+static int read_options(const char *p, npy_intp step, npy_intp k, series_options *so)
+{
+    if (k != OPT_LEN)
+        return 0;
+    double v[OPT_LEN];
+    for (int i = 0; i < OPT_LEN; i++)
+        v[i] = *(const double *)(p + i * step);
+    ts_options_init(&so->opt);
+    /* enums travel as small integers in doubles; NaN-safe range checks */
+    if (!(0 <= v[OPT_SHAPE] && v[OPT_SHAPE] <= TS_SHAPE_MONOTONE) || !(0 <= v[OPT_FORM] && v[OPT_FORM] <= TS_FORM_GEOMETRIC) ||
+        !(0 <= v[OPT_SLOPES] && v[OPT_SLOPES] < TS_SLOPES_COUNT_ && v[OPT_SLOPES] != TS_SLOPES_USER) ||
+        !(-1 <= v[OPT_EXTRAP] && v[OPT_EXTRAP] <= TS_EXTRAP_LINEAR) || v[OPT_EXTRAP] == TS_EXTRAP_ERROR)
+        return 0;
+    so->opt.shape = (ts_shape)v[OPT_SHAPE];
+    so->opt.form = (ts_form)v[OPT_FORM];
+    so->opt.slopes = (ts_slopes)v[OPT_SLOPES];
+    so->nan_outside = v[OPT_EXTRAP] < 0;
+    so->opt.extrapolate = so->nan_outside ? TS_EXTRAP_ERROR : (ts_extrap)v[OPT_EXTRAP];
+    so->opt.alpha = v[OPT_ALPHA];
+    so->opt.lower.m = v[OPT_LOWER_M];
+    so->opt.lower.c = v[OPT_LOWER_C];
+    so->opt.upper.m = v[OPT_UPPER_M];
+    so->opt.upper.c = v[OPT_UPPER_C];
+    so->opt.margin = v[OPT_MARGIN];
+    so->skipna = v[OPT_SKIPNA] != 0;
+    so->opt.certify = v[OPT_CERTIFY] != 0;
+    so->want_gap = v[OPT_WANT_GAP] != 0;
+    so->gap_first = v[OPT_GAP_FIRST];
+    so->gap_end = v[OPT_GAP_END];
+    if (!(so->gap_first >= 0) || isnan(so->gap_end))
+        return 0;
+    return 1;
+}
+
+/* Least certified gap over intervals [first, end) (end < 0: to the last) and
+ * their active boundaries (NaN when the scheme has none, e.g. monotone). */
+static double least_gap(const ts_spline *s, double first, double end)
+{
+    double g = (double)NAN;
+    size_t n = ts_spline_intervals(s);
+    size_t i0 = first < (double)n ? (size_t)first : n;
+    size_t i1 = end < 0 || end > (double)n ? n : (size_t)end;
+    for (size_t i = i0; i < i1; i++) {
+        ts_interval_report r;
+        if (ts_spline_report(s, i, &r) != TS_OK)
+            return (double)NAN;
+        if (r.has_lower && !(g <= r.gap_lower))
+            g = r.gap_lower;
+        if (r.has_upper && !(g <= r.gap_upper))
+            g = r.gap_upper;
+    }
+    return g;
+}
+
+/* Scratch for one loop call: x, f, xq, y (double) and the finite-point map. */
+typedef struct {
+    double *x, *f, *xq, *y;
+    npy_intp *keep;
+} scratch;
+
+static int scratch_new(scratch *w, npy_intp n, npy_intp m)
+{
+    memset(w, 0, sizeof *w);
+    size_t un = (size_t)n, um = (size_t)m;
+    if (un > SIZE_MAX / sizeof(double) / 2 || um > SIZE_MAX / sizeof(double) / 2)
+        return 0;
+    w->x = malloc((un ? un : 1) * sizeof(double));
+    w->f = malloc((un ? un : 1) * sizeof(double));
+    w->xq = malloc((um ? um : 1) * sizeof(double));
+    w->y = malloc((um ? um : 1) * sizeof(double));
+    w->keep = malloc((un ? un : 1) * sizeof(npy_intp));
+    return w->x && w->f && w->xq && w->y && w->keep;
+}
+
+static void scratch_free(scratch *w)
+{
+    free(w->x);
+    free(w->f);
+    free(w->xq);
+    free(w->y);
+    free(w->keep);
+}
+
+/* Fit one series from w->x, w->f (n points) and evaluate at w->xq (m) into
+ * w->y; returns the status, *index in the caller's numbering, *gap. */
+static ts_status fit_series(scratch *w, npy_intp n, npy_intp m, const series_options *so,
+                            npy_int64 *index, double *gap)
+{
+    *index = -1;
+    *gap = (double)NAN;
+    npy_intp nn = n;
+    if (so->skipna) { /* fit through the finite points only */
+        nn = 0;
+        for (npy_intp i = 0; i < n; i++) {
+            if (isfinite(w->x[i]) && isfinite(w->f[i])) {
+                w->x[nn] = w->x[i];
+                w->f[nn] = w->f[i];
+                w->keep[nn++] = i;
+            }
+        }
+    }
+    ts_spline *s = NULL;
+    ts_error err;
+    ts_status st = ts_spline_new(w->x, w->f, (size_t)nn, &so->opt, &s, &err);
+    if (st == TS_OK && so->opt.shape != TS_SHAPE_NONE && !ts_spline_certified(s)) {
+        st = TS_ERR_VIOLATED;
+        err.index = TS_NO_INDEX;
+    }
+    if (st != TS_OK) {
+        ts_spline_free(s);
+        for (npy_intp j = 0; j < m; j++)
+            w->y[j] = (double)NAN;
+        if (err.index != TS_NO_INDEX && (npy_intp)err.index < nn)
+            *index = so->skipna ? (npy_int64)w->keep[err.index] : (npy_int64)err.index;
+        return st;
+    }
+    ts_cursor cur = TS_CURSOR_INIT;
+    /* TS_ERR_DOMAIN only: those queries are NaN, the others evaluated */
+    (void)ts_eval_batch(s, 0, w->xq, (size_t)m, w->y, &cur, NULL);
+    if (so->want_gap)
+        *gap = least_gap(s, so->gap_first, so->gap_end);
+    ts_spline_free(s);
+    return TS_OK;
+}
+
+static void load(double *dst, const char *src, npy_intp step, npy_intp len, int is_float)
+{
+    if (is_float) {
+        for (npy_intp i = 0; i < len; i++)
+            dst[i] = (double)*(const float *)(src + i * step);
+    } else {
+        for (npy_intp i = 0; i < len; i++)
+            dst[i] = *(const double *)(src + i * step);
+    }
+}
+
+/* y rounded to float32 without leaving the region (see the top of the file).
+ * Overflow and underflow are decided here, so no flag is raised. */
+static float to_float32(double y, double x, const series_options *so)
+{
+    if (isnan(y))
+        return NAN;
+    double ay = fabs(y);
+    if (ay > (double)FLT_MAX) /* 0x1.ffffffp127: halfway between FLT_MAX and 2^128 */
+        return ay < 0x1.ffffffp127 ? (y > 0 ? FLT_MAX : -FLT_MAX) : (y > 0 ? INFINITY : -INFINITY);
+    float r = (float)y;
+    int lo = 0, hi = 0, strict = 1;
+    double L = 0, U = 0;
+    switch (so->opt.shape) {
+    case TS_SHAPE_POSITIVE:
+        lo = 1, strict = 0; /* zeros allowed: S >= 0 */
+        break;
+    case TS_SHAPE_ABOVE:
+        lo = 1, L = so->opt.lower.m * x + so->opt.lower.c;
+        break;
+    case TS_SHAPE_BELOW:
+        hi = 1, U = so->opt.upper.m * x + so->opt.upper.c;
+        break;
+    case TS_SHAPE_BETWEEN:
+        lo = hi = 1;
+        L = so->opt.lower.m * x + so->opt.lower.c;
+        U = so->opt.upper.m * x + so->opt.upper.c;
+        break;
+    default:
+        return r;
+    }
+    if (lo && y >= L && ((double)r < L || ((double)r == L && (strict || y > L))))
+        r = nextafterf(r, INFINITY);
+    if (hi && y <= U && ((double)r > U || ((double)r == U && y < U)))
+        r = nextafterf(r, -INFINITY);
+    return r;
+}
+
+/* args: x, f, xq, opt, y, status, index, gap.  is_f32: f and y are float32;
+ * x_f32: x and xq are float32 too. */
+static void interp_loop(char **args, npy_intp const *dims, npy_intp const *steps, int is_f32,
+                        int x_f32)
+{
+    npy_intp N = dims[0], n = dims[1], m = dims[2], k = dims[3];
+    npy_intp sx = steps[8], sf = steps[9], sq = steps[10], so_ = steps[11], sy = steps[12];
+    scratch w;
+    int ok = scratch_new(&w, n, m);
+    /* Floating-point flags raised in here carry no information: the library's
+     * vectorised construction loops compute lanes they then discard (see
+     * src/internal.h, TS_VECTOR_LOOP), and float32 rounding underflows by
+     * design.  Every failure is reported through status instead, so the
+     * caller's flags are left as they were (numpy would turn stray flags into
+     * FloatingPointError or RuntimeWarning). */
+    fexcept_t flags;
+    fegetexceptflag(&flags, FE_ALL_EXCEPT);
+    for (npy_intp s = 0; s < N; s++) {
+        char *px = args[0] + s * steps[0], *pf = args[1] + s * steps[1];
+        char *pq = args[2] + s * steps[2], *po = args[3] + s * steps[3];
+        char *py = args[4] + s * steps[4];
+        npy_int32 *pst = (npy_int32 *)(args[5] + s * steps[5]);
+        npy_int64 *pix = (npy_int64 *)(args[6] + s * steps[6]);
+        double *pgap = (double *)(args[7] + s * steps[7]);
+        series_options so;
+        ts_status st;
+        npy_int64 index = -1;
+        double gap = (double)NAN;
+        if (!ok) {
+            st = TS_ERR_NOMEM;
+        } else if (!read_options(po, so_, k, &so)) {
+            st = TS_ERR_OPTION;
+        } else {
+            load(w.x, px, sx, n, x_f32);
+            load(w.f, pf, sf, n, is_f32);
+            load(w.xq, pq, sq, m, x_f32);
+            st = fit_series(&w, n, m, &so, &index, &gap);
+        }
+        *pst = (npy_int32)st;
+        *pix = index;
+        *pgap = gap;
+        if (st != TS_OK) {
+            for (npy_intp j = 0; j < m; j++) {
+                if (is_f32)
+                    *(float *)(py + j * sy) = NAN;
+                else
+                    *(double *)(py + j * sy) = (double)NAN;
+            }
+        } else if (is_f32) {
+            for (npy_intp j = 0; j < m; j++)
+                *(float *)(py + j * sy) = to_float32(w.y[j], w.xq[j], &so);
+        } else {
+            for (npy_intp j = 0; j < m; j++)
+                *(double *)(py + j * sy) = w.y[j];
+        }
+    }
+    fesetexceptflag(&flags, FE_ALL_EXCEPT);
+    scratch_free(&w);
+}
+
+static void loop_f64(char **args, npy_intp const *dims, npy_intp const *steps, void *data)
+{
+    (void)data;
+    interp_loop(args, dims, steps, 0, 0);
+}
+
+static void loop_f32_xf64(char **args, npy_intp const *dims, npy_intp const *steps, void *data)
+{
+    (void)data;
+    interp_loop(args, dims, steps, 1, 0);
+}
+
+static void loop_f32(char **args, npy_intp const *dims, npy_intp const *steps, void *data)
+{
+    (void)data;
+    interp_loop(args, dims, steps, 1, 1);
+}
+
+/* Resolution takes the first loop the inputs cast to safely: all float32;
+ * float32 data with float64 coordinates (datetimes as seconds); float64. */
+static PyUFuncGenericFunction interp_funcs[] = {loop_f32, loop_f32_xf64, loop_f64};
+static void *interp_data[] = {NULL, NULL, NULL};
+static char interp_types[] = {
+    NPY_FLOAT, NPY_FLOAT, NPY_FLOAT, NPY_DOUBLE, NPY_FLOAT, NPY_INT32, NPY_INT64, NPY_DOUBLE,
+    NPY_DOUBLE, NPY_FLOAT, NPY_DOUBLE, NPY_DOUBLE, NPY_FLOAT, NPY_INT32, NPY_INT64, NPY_DOUBLE,
+    NPY_DOUBLE, NPY_DOUBLE, NPY_DOUBLE, NPY_DOUBLE, NPY_DOUBLE, NPY_INT32, NPY_INT64, NPY_DOUBLE,
+};
+
+static PyObject *py_strerror(PyObject *self, PyObject *arg)
+{
+    (void)self;
+    long code = PyLong_AsLong(arg);
+    if (code == -1 && PyErr_Occurred())
+        return NULL;
+    if (code < 0 || code > INT32_MAX)
+        code = TS_STATUS_COUNT_; /* ts_strerror has a string for unknown codes */
+    return PyUnicode_FromString(ts_strerror((ts_status)code));
+}
+
+static PyMethodDef methods[] = {
+    {"strerror", py_strerror, METH_O, "strerror(code) -> the library's fixed message for a status code."},
+    {NULL, NULL, 0, NULL},
+};
+
+static struct PyModuleDef moduledef = {
+    PyModuleDef_HEAD_INIT, "_gufunc",
+    "numpy generalized ufuncs of trigspline (see trigspline.interp).", -1, methods,
+    NULL, NULL, NULL, NULL,
+};
+
+PyMODINIT_FUNC PyInit__gufunc(void)
+{
+    PyObject *mod = PyModule_Create(&moduledef);
+    if (!mod)
+        return NULL;
+    import_array();
+    import_umath();
+    PyObject *uf = PyUFunc_FromFuncAndDataAndSignature(
+        interp_funcs, interp_data, interp_types, 3, 4, 4, PyUFunc_None, "interp",
+        "interp(x, f, xq, opt) -> (y, status, index, gap): one certified spline per "
+        "series; see trigspline.interp.",
+        0, "(n),(n),(m),(k)->(m),(),(),()");
+    if (!uf || PyModule_AddObject(mod, "interp", uf) < 0) {
+        Py_XDECREF(uf);
+        Py_DECREF(mod);
+        return NULL;
+    }
+    if (PyModule_AddIntConstant(mod, "OPT_LEN", OPT_LEN) < 0 ||
+        PyModule_AddStringConstant(mod, "version", ts_version()) < 0) {
+        Py_DECREF(mod);
+        return NULL;
+    }
+    return mod;
+}

@@ -1,0 +1,110 @@
+"""pandas: ``trigspline.pandas.interpolate(series, index=new_index, shape='positive')``.
+
+A Series, or every numeric column of a DataFrame, interpolated at a new index
+by one certified spline per column (``trigspline.interp``).  A DatetimeIndex
+is fitted as float seconds since its first timestamp (time zones: the new
+index is converted to the old one's zone first).
+"""
+import numpy as np
+import pandas as pd
+
+from .interp import DATA_GAPS, STATUS_OK, interp, status_message
+
+__all__ = ["interpolate"]
+
+
+def _as_float(index, epoch):
+    if isinstance(index, pd.DatetimeIndex):
+        return (index - epoch) / pd.Timedelta(seconds=1)
+    if isinstance(index, pd.TimedeltaIndex):
+        return index / pd.Timedelta(seconds=1)
+    return np.asarray(index, dtype=np.float64)
+
+
+def _check_index(index, xf):
+    bad = ~np.isfinite(xf)
+    if bad.any():
+        i = int(np.argmax(bad))
+        raise ValueError("index value %r at position %d is not finite" % (index[i], i))
+    if xf.size > 1 and not (np.diff(xf) > 0).all():
+        i = int(np.argmax(~(np.diff(xf) > 0))) + 1
+        raise ValueError("index is not strictly increasing: position %d (%s) follows "
+                         "position %d (%s)" % (i, index[i], i - 1, index[i - 1]))
+
+
+def interpolate(obj, index, *, shape=None, bounds=None, lower=None, upper=None, form="paper",
+                alpha=1.0, slopes="arithmetic", margin=None, extrapolate="nan", skipna=True,
+                certify=True, errors="raise"):
+    """Interpolate a Series or DataFrame at ``index``.
+
+    Parameters
+    ----------
+    obj : pandas.Series or pandas.DataFrame
+        Indexed by a strictly increasing DatetimeIndex, TimedeltaIndex or
+        numeric index.
+    index : array_like or Index
+        The new index (same kind as the old one).
+    shape, bounds, lower, upper, form, alpha, slopes, margin, extrapolate, certify
+        As for ``DataArray.trigspline.interp``.
+    skipna : bool
+        Fit through the finite values only (default True: gaps are common
+        in measured series); False gives NaN for a column holding NaN.
+    errors : {'raise', 'nan'}
+        Data the scheme refuses raise ValueError naming the column and the
+        index value, or give a NaN column.
+
+    Returns
+    -------
+    The same type, on the new index; name, column labels and attrs kept.
+    """
+    if bounds is not None:
+        if lower is not None or upper is not None:
+            raise ValueError("give bounds=(lower, upper) or lower=/upper=, not both")
+        lower, upper = bounds
+    if errors not in ("raise", "nan"):
+        raise ValueError("errors must be 'raise' or 'nan', not %r" % (errors,))
+    if not isinstance(obj, (pd.Series, pd.DataFrame)):
+        raise TypeError("interpolate takes a pandas Series or DataFrame, not %s"
+                        % type(obj).__name__)
+    old = obj.index
+    new = pd.Index(index)
+    if isinstance(old, pd.DatetimeIndex):
+        if not isinstance(new, pd.DatetimeIndex):
+            new = pd.DatetimeIndex(new)
+        if old.tz is not None or new.tz is not None:
+            new = new.tz_convert(old.tz) if new.tz is not None else new.tz_localize(old.tz)
+        epoch = old[0] if len(old) else None
+    else:
+        epoch = None
+    xf = np.asarray(_as_float(old, epoch), dtype=np.float64)
+    _check_index(old, xf)
+    qf = np.asarray(_as_float(new, epoch), dtype=np.float64)
+    frame = obj.to_frame() if isinstance(obj, pd.Series) else obj
+    cols = [c for c in frame.columns if frame[c].dtype.kind in "fiu"]
+    out = {}
+    # float32 columns stay float32 (one gufunc call per dtype)
+    for dtype in (np.float32, np.float64):
+        group = [c for c in cols if (frame[c].dtype == np.float32) == (dtype == np.float32)]
+        if not group:
+            continue
+        data = np.stack([np.asarray(frame[c], dtype=dtype) for c in group])
+        r = interp(xf, data, qf, shape=shape, lower=lower, upper=upper, alpha=alpha, form=form,
+                   slopes=slopes, extrapolate=extrapolate, margin=margin, skipna=skipna,
+                   certify=certify, full=True)
+        if errors == "raise":
+            bad = (r.status != STATUS_OK) & ~np.isin(r.status, DATA_GAPS)
+            if bad.any():
+                j = int(np.argmax(bad))
+                i = int(r.index[j])
+                at = " at %s (position %d)" % (old[i], i) if 0 <= i < len(old) else ""
+                raise ValueError("column %r: %s%s" % (group[j], status_message(r.status[j]), at))
+        for j, c in enumerate(group):
+            out[c] = r.values[j]
+    if isinstance(obj, pd.Series):
+        res = pd.Series(out[obj.name if obj.name is not None else 0] if cols else np.nan,
+                        index=new, name=obj.name)
+    else:
+        res = pd.DataFrame({c: out.get(c, np.nan) for c in frame.columns}, index=new,
+                           columns=frame.columns)
+    res.attrs = dict(obj.attrs)
+    return res
