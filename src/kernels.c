@@ -1,4 +1,4 @@
-/* Batch evaluation kernels for the paper and C¹ forms.
+/* Batch evaluation kernels for every form.
  *
  * ts__fast_batch works on blocks of TS_FAST_BLOCK queries; the block's scratch
  * is on the stack (< 8 KiB), nothing is allocated.
@@ -24,7 +24,9 @@
  * With GCC or Clang on x86-64 the whole pipeline is also compiled for AVX2+FMA
  * and for AVX-512F and chosen at run time (__builtin_cpu_supports); elsewhere,
  * or with -DTS_FAST_PORTABLE, only the portable C version exists.  The
- * geometric form (docs/method.md §4) goes point by point through ts__interval_eval. */
+ * geometric form (docs/method.md §4) stages its intervals' f, d, h, κ, solves
+ * X̂(φ) = u for the block (Halley from a model root) and evaluates at φ with
+ * the same polynomial sine and cosine (geo_eval_block below). */
 #include "internal.h"
 
 #include <math.h>
@@ -145,6 +147,66 @@ TS_ALWAYS_INLINE size_t stage_sorted(const ts_spline *sp, const double *q, size_
     return i;
 }
 
+/* The geometric form (docs/method.md §4), per query as geometric.c's
+ * ts__geo_eval: the distances to both ends, the interval's h, κ = 2/(3π a),
+ * f_i, f_{i+1}, d_i, d_{i+1}, and its index (for the rare query whose solve
+ * does not converge, evaluated by ts__geo_eval).  phi, u, res: the solve's
+ * scratch; s, c, ms, mc: sin φ, cos φ, 1 − sin φ, 1 − cos φ at its root. */
+typedef struct geo_stage {
+    double dl[TS_FAST_BLOCK], dr[TS_FAST_BLOCK], h[TS_FAST_BLOCK], kappa[TS_FAST_BLOCK];
+    double f0[TS_FAST_BLOCK], f1[TS_FAST_BLOCK], d0[TS_FAST_BLOCK], d1[TS_FAST_BLOCK];
+    double phi[TS_FAST_BLOCK], u[TS_FAST_BLOCK], res[TS_FAST_BLOCK];
+    double s[TS_FAST_BLOCK], c[TS_FAST_BLOCK], ms[TS_FAST_BLOCK], mc[TS_FAST_BLOCK];
+    size_t iv[TS_FAST_BLOCK];
+} geo_stage;
+
+typedef struct geo_iv {
+    double x0, x1, h, kappa, f0, f1, d0, d1;
+} geo_iv;
+
+TS_ALWAYS_INLINE geo_iv geo_interval(const ts_spline *sp, size_t i)
+{
+    double a = sp->alpha[i] + sp->beta[i]; /* κ as geometric.c computes it */
+    geo_iv g = {sp->x[i],  sp->x[i + 1], sp->h[i], 2.0 / (3.0 * TS_PI * a),
+                sp->f[i],  sp->f[i + 1], sp->d[i], sp->d[i + 1]};
+    return g;
+}
+
+TS_ALWAYS_INLINE void geo_stage_one(geo_stage *st, size_t j, double x, const geo_iv *g, size_t i)
+{
+    st->dl[j] = x - g->x0;
+    st->dr[j] = g->x1 - x;
+    st->h[j] = g->h;
+    st->kappa[j] = g->kappa;
+    st->f0[j] = g->f0;
+    st->f1[j] = g->f1;
+    st->d0[j] = g->d0;
+    st->d1[j] = g->d1;
+    st->iv[j] = i;
+}
+
+/* stage_sorted for the geometric form. */
+TS_ALWAYS_INLINE size_t geo_stage_sorted(const ts_spline *sp, const double *q, size_t nb,
+                                         geo_stage *st, size_t i)
+{
+    const double *xs = sp->x;
+    size_t n = sp->n;
+    geo_iv g = geo_interval(sp, i);
+    double next = i + 1 < n ? g.x1 : (double)INFINITY;
+    for (size_t j = 0; j < nb; j++) {
+        double x = q[j];
+        if (x >= next) {
+            i++;
+            if (i + 1 < n && xs[i + 1] <= x)
+                i = gallop(xs, n, i, x);
+            g = geo_interval(sp, i);
+            next = i + 1 < n ? g.x1 : (double)INFINITY;
+        }
+        geo_stage_one(st, j, x, &g, i);
+    }
+    return i;
+}
+
 /* Every q[j] in [x0, xn] (none NaN). */
 TS_ALWAYS_INLINE int all_inside(const double *q, size_t nb, double x0, double xn)
 {
@@ -154,11 +216,11 @@ TS_ALWAYS_INLINE int all_inside(const double *q, size_t nb, double x0, double xn
     return outside == 0.0;
 }
 
-/* Stages q[0..nb) (1 <= nb <= TS_FAST_BLOCK); *cur is the cursor, left on the
- * last query's interval.  Returns 0, without staging, if a query is outside
- * [x0, xn] or NaN. */
+/* Stages q[0..nb) (1 <= nb <= TS_FAST_BLOCK) into st, or into gs for the
+ * geometric form (gs != NULL); *cur is the cursor, left on the last query's
+ * interval.  Returns 0, without staging, if a query is outside [x0, xn] or NaN. */
 TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb, int want_w,
-                                 fast_stage *st, size_t *cur)
+                                 fast_stage *st, geo_stage *gs, size_t *cur)
 {
     const double *xs = sp->x;
     size_t n = sp->n, i = *cur;
@@ -173,7 +235,10 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
     if (unsorted == 0.0) {
         if (!(xs[i] <= q[0]))
             i = search_range(xs, 0, i + 1, q[0]);
-        *cur = want_w ? stage_sorted(sp, q, nb, 1, st, i) : stage_sorted(sp, q, nb, 0, st, i);
+        if (gs)
+            *cur = geo_stage_sorted(sp, q, nb, gs, i);
+        else
+            *cur = want_w ? stage_sorted(sp, q, nb, 1, st, i) : stage_sorted(sp, q, nb, 0, st, i);
         return 1;
     }
     /* one binary search per query, all advancing a level at a time */
@@ -188,7 +253,12 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
     }
     for (size_t j = 0; j < nb; j++) {
         i = idx[j];
-        stage_one(st, j, q[j], xs[i], xs[i + 1], TS_HALF_PI / sp->h[i], control4(sp, i), want_w);
+        if (gs) {
+            geo_iv g = geo_interval(sp, i);
+            geo_stage_one(gs, j, q[j], &g, i);
+        } else {
+            stage_one(st, j, q[j], xs[i], xs[i + 1], TS_HALF_PI / sp->h[i], control4(sp, i), want_w);
+        }
     }
     *cur = i;
     return 1;
@@ -253,18 +323,178 @@ TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, dou
     }
 }
 
+
+/* The geometric form: solve X̂(φ) = u for φ in [0, π/4] (u = distance to
+ * the nearer end / h; geometric.c), all queries of the block a step at a
+ * time.  Start: two Newton steps on the quartic model
+ * M(φ) = 3κφ + (1 − 5κ)φ² + c3 φ³ + c4 φ⁴ of X̂ (its Taylor polynomial at 0
+ * to second order, and X̂(π/4) = 1/2, X̂'(π/4) = 1 − (8 − 9/√2)κ), from the
+ * root of its quadratic part (exact as κ → 0 and as u → 0): the start is
+ * within 1.1e-2 (relative) of the root for κ <= 1/2, a_i >= 4/(3π), and
+ * within 2.8e-3 for a_i >= 1.  Then Halley steps on X̂ with the polynomial
+ * sine and cosine, until every step of the block is below 2^-20 φ (Halley's
+ * error after such a step is of the order of its cube: rounding; two steps
+ * for κ <= 1/2).  The last step is applied to (sin φ, cos φ) by its Taylor
+ * rotation (|e| <= 2^-20: the dropped e³/6 is below 2^-62), so the
+ * evaluation needs no further sine.  A query whose iteration has not
+ * converged after TS_GEO_PASSES steps (a_i very near a*, u near 1/2, where X̂'
+ * nearly vanishes) is evaluated by ts__geo_eval. */
+#define TS_GEO_PASSES 8
+#define TS_GEO_G1 1.6360389693210722 /* 8 − 9/√2: X̂'(π/4) = 1 − G1 κ */
+/* c3, c4 = C30 + C31 κ, C40 + C41 κ: with Q = π/4, c3 Q³ + c4 Q⁴ = v and
+ * 3 c3 Q² + 4 c4 Q³ = v', v = 1/2 − 3κQ − (1 − 5κ)Q², v' = 1 − G1 κ − 3κ − 2(1 − 5κ)Q */
+#define TS_GEO_Q (0.25 * TS_PI)
+#define TS_GEO_V0 (0.5 - TS_GEO_Q * TS_GEO_Q)
+#define TS_GEO_V1 (5.0 * TS_GEO_Q * TS_GEO_Q - 3.0 * TS_GEO_Q)
+#define TS_GEO_W0 (1.0 - 2.0 * TS_GEO_Q)
+#define TS_GEO_W1 (10.0 * TS_GEO_Q - TS_GEO_G1 - 3.0)
+#define TS_GEO_Q3 (TS_GEO_Q * TS_GEO_Q * TS_GEO_Q)
+#define TS_GEO_C40 ((TS_GEO_W0 - 3.0 * TS_GEO_V0 / TS_GEO_Q) / TS_GEO_Q3)
+#define TS_GEO_C41 ((TS_GEO_W1 - 3.0 * TS_GEO_V1 / TS_GEO_Q) / TS_GEO_Q3)
+#define TS_GEO_C30 (TS_GEO_V0 / TS_GEO_Q3 - TS_GEO_C40 * TS_GEO_Q)
+#define TS_GEO_C31 (TS_GEO_V1 / TS_GEO_Q3 - TS_GEO_C41 * TS_GEO_Q)
+
+TS_ALWAYS_INLINE void geo_side(const geo_stage *st, size_t j, int *right, double *u)
+{
+    double dl = st->dl[j], dr = st->dr[j];
+    *right = dr < dl;
+    *u = (*right ? dr : dl) / st->h[j];
+}
+
+TS_ALWAYS_INLINE void geo_solve_block(geo_stage *st, size_t nb)
+{
+    const double Q = 0.25 * TS_PI;
+    for (size_t j = 0; j < nb; j++) {
+        int right;
+        double u, k = st->kappa[j];
+        geo_side(st, j, &right, &u);
+        double b = 1.0 - 5.0 * k, d = 9.0 * k * k + 4.0 * b * u;
+        /* max(d, 0) without a select, which the compiler could move past the
+         * square root (FE_INVALID from a lane's negative d) */
+        double phi = (u + u) / (3.0 * k + sqrt(0.5 * (d + fabs(d))));
+        double c3 = TS_GEO_C30 + TS_GEO_C31 * k, c4 = TS_GEO_C40 + TS_GEO_C41 * k;
+        for (int it = 0; it < 2; it++) {
+            phi = phi < Q ? phi : Q;
+            double M = phi * (3.0 * k + phi * (b + phi * (c3 + phi * c4))) - u;
+            double Mp = 3.0 * k + phi * (2.0 * b + phi * (3.0 * c3 + 4.0 * c4 * phi));
+            phi = phi - M / (Mp > DBL_MIN ? Mp : DBL_MIN);
+            phi = phi > 0.0 ? phi : 0.0;
+        }
+        st->u[j] = u;
+        st->phi[j] = phi < Q ? phi : Q;
+    }
+    for (int pass = 0; pass < TS_GEO_PASSES; pass++) {
+        long open = 0; /* an integer count: this loop vectorises */
+        for (size_t j = 0; j < nb; j++) {
+            double phi = st->phi[j], k = st->kappa[j], s, c, ms, mc;
+            fast_trig(phi, &s, &c, &ms, &mc);
+            double p1 = 3.0 - 8.0 * s + 3.0 * (s * s), p2 = 3.0 - 8.0 * c + 3.0 * (c * c);
+            double F = s * s + k * (s * ms * (3.0 - s) - c * mc * (3.0 - c)) - st->u[j];
+            double X1 = 2.0 * (s * c) + k * (c * p1 + s * p2);
+            double X2 = 2.0 * (c * c - s * s) +
+                        k * ((c * c) * (6.0 * s - 8.0) - s * p1 + c * p2 - (s * s) * (6.0 * c - 8.0));
+            double den = 2.0 * (X1 * X1) - F * X2;
+            den = den > DBL_MIN ? den : DBL_MIN;
+            double next = phi - 2.0 * (F * X1) / den;
+            next = next > 0.0 ? next : 0.0;
+            next = next < Q ? next : Q;
+            double e = next - phi, r = fabs(e) - 0x1p-20 * next;
+            r = r <= 0.0 ? r : 1.0; /* NaN too */
+            open += r > 0.0;
+            st->res[j] = r;
+            st->phi[j] = next;
+            /* (sin, cos) at next = phi + e, for the evaluation when this is
+             * the last step */
+            double e2 = 0.5 * (e * e);
+            st->s[j] = s + (c * e - s * e2);
+            st->c[j] = c - (s * e + c * e2);
+            st->ms[j] = ms - (c * e - s * e2);
+            st->mc[j] = mc + (s * e + c * e2);
+        }
+        if (!open)
+            break;
+    }
+}
+
+/* docs/method.md §4 at the solved φ from the nearer end: the value, or its
+ * first or second derivative in x. */
+#define TS_GEO_NEAR(st, j)                                                                \
+    double dl = (st)->dl[j], dr = (st)->dr[j];                                          \
+    int right = dr < dl;                                                                \
+    double s = (st)->s[j], c = (st)->c[j], ms = (st)->ms[j], mc = (st)->mc[j];          \
+    double h = (st)->h[j], kappa = (st)->kappa[j], k = kappa * h;                       \
+    double F0 = right ? (st)->f1[j] : (st)->f0[j], F1 = right ? (st)->f0[j] : (st)->f1[j]; \
+    double D0 = right ? -(st)->d1[j] : (st)->d0[j], D1 = right ? -(st)->d0[j] : (st)->d1[j]
+
+TS_ALWAYS_INLINE void geo_eval_block(int deriv, geo_stage *st, size_t nb, double *y)
+{
+    geo_solve_block(st, nb);
+    if (deriv == 0) {
+        for (size_t j = 0; j < nb; j++) {
+            TS_GEO_NEAR(st, j);
+            double v = F0 * (c * c) + F1 * (s * s) +
+                       k * (D0 * (s * ms * (3.0 - s)) - D1 * (c * mc * (3.0 - c)));
+            /* a flat interval is constant (c² + s² need not round to 1) */
+            y[j] = (F0 == F1 && k * D0 == 0.0 && k * D1 == 0.0) ? F0 : v;
+        }
+        return;
+    }
+    for (size_t j = 0; j < nb; j++) {
+        TS_GEO_NEAR(st, j);
+        (void)ms, (void)mc;
+        double p1 = 3.0 - 8.0 * s + 3.0 * (s * s), p2 = 3.0 - 8.0 * c + 3.0 * (c * c);
+        double a1 = c * p1, a2 = -s * p2, dF = F1 - F0, sc2 = 2.0 * (s * c);
+        double Yp = dF * sc2 + k * (D0 * a1 - D1 * a2);
+        double Xp = sc2 + kappa * (a1 - a2);
+        double v1 = Yp / Xp / h;
+        double b1 = -s * p1 + (c * c) * (6.0 * s - 8.0), b2 = -c * p2 + (s * s) * (6.0 * c - 8.0);
+        double c2 = 2.0 * (c * c - s * s);
+        double Ypp = dF * c2 + k * (D0 * b1 - D1 * b2);
+        double Xpp = c2 + kappa * (b1 - b2);
+        double v2 = (Ypp * Xp - Yp * Xpp) / (Xp * Xp * Xp) / h / h;
+        y[j] = deriv == 1 ? (right ? -v1 : v1) : v2;
+    }
+}
+
+/* After geo_eval_block: the queries whose solve did not converge. */
+static void geo_finish(const ts_spline *sp, int deriv, const geo_stage *st, const double *q,
+                       size_t nb, double *y)
+{
+    for (size_t j = 0; j < nb; j++) {
+        if (st->res[j] > 0.0) {
+            double o[3];
+            ts__geo_eval(sp, st->iv[j], q[j], deriv, o);
+            y[j] = o[deriv];
+        }
+    }
+}
+
 /* The whole batch, or its prefix up to the first block with a query outside
  * [x0, xn]; *cur is the cursor; returns the number of queries evaluated. */
 TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *xq, size_t m,
                                  double *yq, size_t *cur)
 {
-    fast_stage st;
+    union {
+        fast_stage p;
+        geo_stage g;
+    } st;
     size_t j0 = 0;
+    if (sp->form == TS_FORM_GEOMETRIC) {
+        while (j0 < m) {
+            size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
+            if (!stage_block(sp, xq + j0, nb, 0, NULL, &st.g, cur))
+                break;
+            geo_eval_block(deriv, &st.g, nb, yq + j0);
+            geo_finish(sp, deriv, &st.g, xq + j0, nb, yq + j0);
+            j0 += nb;
+        }
+        return j0;
+    }
     while (j0 < m) {
         size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
-        if (!stage_block(sp, xq + j0, nb, deriv > 0, &st, cur))
+        if (!stage_block(sp, xq + j0, nb, deriv > 0, &st.p, NULL, cur))
             break;
-        eval_block(deriv, &st, nb, yq + j0);
+        eval_block(deriv, &st.p, nb, yq + j0);
         j0 += nb;
     }
     return j0;
@@ -312,16 +542,6 @@ static pipeline_fn pick(int isa)
 static size_t batch(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq,
                     ts_cursor *cur, pipeline_fn fn)
 {
-    double x0 = sp->x[0], xn = sp->x[sp->n];
-    if (sp->form == TS_FORM_GEOMETRIC) {
-        size_t j = 0;
-        for (; j < m && x0 <= xq[j] && xq[j] <= xn; j++) {
-            double o[3];
-            ts__interval_eval(sp, ts__locate(sp, xq[j], cur), xq[j], deriv, o);
-            yq[j] = o[deriv];
-        }
-        return j;
-    }
     size_t i = cur && cur->interval < sp->n ? cur->interval : 0;
     size_t done = fn(sp, deriv, xq, m, yq, &i);
     if (cur && done)
