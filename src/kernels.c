@@ -45,22 +45,6 @@
 #define TS_ALWAYS_INLINE static inline
 #endif
 
-/* bench/sincos_coeffs.py: sin u ≈ u + u z P(z), 1 − cos u ≈ z/2 − z² Q(z),
- * z = u², u in [0, π/4]; truncation <= 5.4e-18 */
-#define TS_S1 -0.16666666666666605
-#define TS_S2 0.008333333333317107
-#define TS_S3 -0.00019841269826329964
-#define TS_S4 2.7557312659276103e-06
-#define TS_S5 -2.5050615702547473e-08
-#define TS_S6 1.5889377748304707e-10
-#define TS_C1 0.0416666666666666
-#define TS_C2 -0.0013888888888874372
-#define TS_C3 2.4801587289632665e-05
-#define TS_C4 -2.7557314394461076e-07
-#define TS_C5 2.0875728820037434e-09
-#define TS_C6 -1.1359926181679004e-11
-
-
 /* ---- locate ---------------------------------------------------------- */
 
 /* Largest k in [lo, hi−1] with xs[k] <= x, given xs[lo] <= x. */
@@ -266,19 +250,8 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
 
 /* ---- evaluate -------------------------------------------------------- */
 
-/* s = sin ϑ, c = cos ϑ, ms = 1 − s, mc = 1 − c for ϑ in [0, π/4] (a hair
- * beyond by rounding).  1 − cos is summed without the 1, so mc carries no
- * cancellation; 1 − s >= 0.29 has none either. */
-TS_ALWAYS_INLINE void fast_trig(double u, double *s, double *c, double *ms, double *mc)
-{
-    double z = u * u;
-    double ps = TS_S1 + z * (TS_S2 + z * (TS_S3 + z * (TS_S4 + z * (TS_S5 + z * TS_S6))));
-    double pc = TS_C1 + z * (TS_C2 + z * (TS_C3 + z * (TS_C4 + z * (TS_C5 + z * TS_C6))));
-    *s = u + u * (z * ps);              /* sin u */
-    *mc = 0.5 * z - (z * z) * pc;       /* 1 − cos u */
-    *c = 1.0 - *mc;
-    *ms = 1.0 - *s;
-}
+/* s = sin ϑ, c = cos ϑ, ms = 1 − s, mc = 1 − c for ϑ in [0, π/4]: internal.h. */
+#define fast_trig ts__sincos_q
 
 /* Query j seen from its nearer end: ϑ, the control values B', and the sign
  * of dϑ/dθ as ±1. */
@@ -340,19 +313,6 @@ TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, dou
  * converged after TS_GEO_PASSES steps (a_i very near a*, u near 1/2, where X̂'
  * nearly vanishes) is evaluated by ts__geo_eval. */
 #define TS_GEO_PASSES 8
-#define TS_GEO_G1 1.6360389693210722 /* 8 − 9/√2: X̂'(π/4) = 1 − G1 κ */
-/* c3, c4 = C30 + C31 κ, C40 + C41 κ: with Q = π/4, c3 Q³ + c4 Q⁴ = v and
- * 3 c3 Q² + 4 c4 Q³ = v', v = 1/2 − 3κQ − (1 − 5κ)Q², v' = 1 − G1 κ − 3κ − 2(1 − 5κ)Q */
-#define TS_GEO_Q (0.25 * TS_PI)
-#define TS_GEO_V0 (0.5 - TS_GEO_Q * TS_GEO_Q)
-#define TS_GEO_V1 (5.0 * TS_GEO_Q * TS_GEO_Q - 3.0 * TS_GEO_Q)
-#define TS_GEO_W0 (1.0 - 2.0 * TS_GEO_Q)
-#define TS_GEO_W1 (10.0 * TS_GEO_Q - TS_GEO_G1 - 3.0)
-#define TS_GEO_Q3 (TS_GEO_Q * TS_GEO_Q * TS_GEO_Q)
-#define TS_GEO_C40 ((TS_GEO_W0 - 3.0 * TS_GEO_V0 / TS_GEO_Q) / TS_GEO_Q3)
-#define TS_GEO_C41 ((TS_GEO_W1 - 3.0 * TS_GEO_V1 / TS_GEO_Q) / TS_GEO_Q3)
-#define TS_GEO_C30 (TS_GEO_V0 / TS_GEO_Q3 - TS_GEO_C40 * TS_GEO_Q)
-#define TS_GEO_C31 (TS_GEO_V1 / TS_GEO_Q3 - TS_GEO_C41 * TS_GEO_Q)
 
 TS_ALWAYS_INLINE void geo_side(const geo_stage *st, size_t j, int *right, double *u)
 {
@@ -363,53 +323,27 @@ TS_ALWAYS_INLINE void geo_side(const geo_stage *st, size_t j, int *right, double
 
 TS_ALWAYS_INLINE void geo_solve_block(geo_stage *st, size_t nb)
 {
-    const double Q = 0.25 * TS_PI;
     for (size_t j = 0; j < nb; j++) {
         int right;
         double u, k = st->kappa[j];
         geo_side(st, j, &right, &u);
-        double b = 1.0 - 5.0 * k, d = 9.0 * k * k + 4.0 * b * u;
-        /* max(d, 0) without a select, which the compiler could move past the
-         * square root (FE_INVALID from a lane's negative d) */
-        double phi = (u + u) / (3.0 * k + sqrt(0.5 * (d + fabs(d))));
-        double c3 = TS_GEO_C30 + TS_GEO_C31 * k, c4 = TS_GEO_C40 + TS_GEO_C41 * k;
-        for (int it = 0; it < 2; it++) {
-            phi = phi < Q ? phi : Q;
-            double M = phi * (3.0 * k + phi * (b + phi * (c3 + phi * c4))) - u;
-            double Mp = 3.0 * k + phi * (2.0 * b + phi * (3.0 * c3 + 4.0 * c4 * phi));
-            phi = phi - M / (Mp > DBL_MIN ? Mp : DBL_MIN);
-            phi = phi > 0.0 ? phi : 0.0;
-        }
         st->u[j] = u;
-        st->phi[j] = phi < Q ? phi : Q;
+        st->phi[j] = ts__geo_start(u, k);
     }
     for (int pass = 0; pass < TS_GEO_PASSES; pass++) {
         long open = 0; /* an integer count: this loop vectorises */
         for (size_t j = 0; j < nb; j++) {
-            double phi = st->phi[j], k = st->kappa[j], s, c, ms, mc;
-            fast_trig(phi, &s, &c, &ms, &mc);
-            double p1 = 3.0 - 8.0 * s + 3.0 * (s * s), p2 = 3.0 - 8.0 * c + 3.0 * (c * c);
-            double F = s * s + k * (s * ms * (3.0 - s) - c * mc * (3.0 - c)) - st->u[j];
-            double X1 = 2.0 * (s * c) + k * (c * p1 + s * p2);
-            double X2 = 2.0 * (c * c - s * s) +
-                        k * ((c * c) * (6.0 * s - 8.0) - s * p1 + c * p2 - (s * s) * (6.0 * c - 8.0));
-            double den = 2.0 * (X1 * X1) - F * X2;
-            den = den > DBL_MIN ? den : DBL_MIN;
-            double next = phi - 2.0 * (F * X1) / den;
-            next = next > 0.0 ? next : 0.0;
-            next = next < Q ? next : Q;
+            double phi = st->phi[j], s, c, ms, mc;
+            double next = ts__geo_halley(phi, st->kappa[j], st->u[j], &s, &c, &ms, &mc);
             double e = next - phi, r = fabs(e) - 0x1p-20 * next;
             r = r <= 0.0 ? r : 1.0; /* NaN too */
             open += r > 0.0;
             st->res[j] = r;
             st->phi[j] = next;
-            /* (sin, cos) at next = phi + e, for the evaluation when this is
-             * the last step */
-            double e2 = 0.5 * (e * e);
-            st->s[j] = s + (c * e - s * e2);
-            st->c[j] = c - (s * e + c * e2);
-            st->ms[j] = ms - (c * e - s * e2);
-            st->mc[j] = mc + (s * e + c * e2);
+            st->s[j] = s; /* at next, for the evaluation when this is the last step */
+            st->c[j] = c;
+            st->ms[j] = ms;
+            st->mc[j] = mc;
         }
         if (!open)
             break;
