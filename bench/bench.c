@@ -540,7 +540,9 @@ static int child_build_rss(size_t np, int impl)
 
 /* ---- child processes -------------------------------------------------- */
 
-#define OUTN ((I_COUNT + 1) * MAXR)
+/* enough for every child's numbers: the evaluation rows and the 2-thread
+ * speed-up, or the construction rows */
+#define OUTN ((I_COUNT + 1 > C_COUNT ? I_COUNT + 1 : C_COUNT) * MAXR)
 
 typedef struct child {
     int status;      /* 0 ok */
@@ -1079,8 +1081,8 @@ int main(int argc, char **argv)
     out("- CPU: %s, %ld online cores; load average at the start %.2f\n", cpu, sysconf(_SC_NPROCESSORS_ONLN),
         load[0]);
     out("- date: %s\n", date);
-    out("- compiler: %s %s; library (trigspline_internal) and bench.c CMake Release (-O3), src/fast.c -O3 "
-        "-ffp-contract=fast\n",
+    out("- compiler: %s %s; library (trigspline_internal) and bench.c CMake Release (-O3), src/kernels.c -O3 "
+        "-ffp-contract=fast -fno-math-errno -fno-trapping-math\n",
 #ifdef __clang__
         "clang",
 #else
