@@ -474,8 +474,9 @@ TS_API ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur,
 
 /*
  * Batch: yq[j] = S^(deriv)(xq[j]), deriv in {0, 1, 2}.  Fast for sorted
- * queries, correct for any order; may use the fast kernels of fast.c, which
- * agree with ts_eval_deriv to the bound stated there.  Every valid query is
+ * queries, correct for any order; uses the batch kernels of src/kernels.c
+ * (every form), which agree with ts_eval_deriv to the bounds derived and
+ * tested in tests/unit/test_fast.c (not bitwise).  Every valid query is
  * evaluated; invalid ones get NaN and the call returns TS_ERR_DOMAIN with
  * err->index = first invalid query.  Also TS_ERR_NULL, TS_ERR_OPTION (deriv).
  */

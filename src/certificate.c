@@ -230,7 +230,10 @@ double ts__interval_gap(const ts_spline *sp, size_t i, const ts_line *line, int 
  *  monotone: B monotone in the data's direction gives S' of that sign by
  *    (2.1) (and X' > 0 in the geometric form); no gaps (NaN);
  *  lines, geometric form only: every Y_l − m X_l − c above its rounding
- *    (hull_inside); with exact, also a trig-min gap above its guard will do. */
+ *    (hull_inside); with exact, also a trig-min gap above its guard will do.
+ * Without want_at (the build, which keeps no gaps: ts_spline_report
+ * recomputes them) a control-value proof that holds decides alone, and the
+ * gaps it makes unnecessary are not computed (the same decision). */
 int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double *X,
                   int exact, ts__cert *cr, int want_at)
 {
@@ -256,7 +259,7 @@ int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double
     if (sp->shape == TS_SHAPE_POSITIVE) {
         int zero_end = !(f0 > 0.0 && f1 > 0.0);
         int structural = positive_proof(B[0], B[1], B[2], B[3]);
-        if (!exact)
+        if (!exact || (structural && !want_at)) /* the build: the proof decides */
             return structural;
         cr->glo = ts__gap_ctl(sp, i, B, X, &sp->lower, 1, want_at ? &cr->alo : NULL, &guard);
         return structural || (!zero_end && cr->glo > guard);
@@ -269,7 +272,7 @@ int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double
         int sign = side == 0 ? 1 : -1;
         /* geometric form: the control gaps are a proof by themselves */
         int hull = X && ts__hull_inside(sp, i, B, X, ln, sign);
-        if (exact) {
+        if (exact && !(hull && !want_at)) {
             double *g = side == 0 ? &cr->glo : &cr->gup, *a = side == 0 ? &cr->alo : &cr->aup;
             *g = ts__gap_ctl(sp, i, B, X, ln, sign, want_at ? a : NULL, &guard);
             ok = ok && (hull || *g > guard);
@@ -320,13 +323,15 @@ TS_VECTOR_LOOP static int all_proven_positive(const double *restrict f,
     return ok;
 }
 
-/* First interval in [i, i1) that ts__check_ctl with exact == 0 would not
- * pass, for the schemes whose control-value test is a bare sign test
- * (positive and monotone; paper and C¹ forms; else i). */
+/* First interval in [i, i1) that ts__check_ctl would not pass by its
+ * control-value proof alone (which passes it also when exact), for the
+ * schemes whose proof is a bare sign test of B (positive, every form: the
+ * geometric form's X̂ are finite as a_i >= 4/(3π); monotone, paper and C¹
+ * forms; else i). */
 size_t ts__skip_proven(const ts_spline *sp, size_t i, size_t i1)
 {
     int positive = sp->shape == TS_SHAPE_POSITIVE;
-    if (sp->form == TS_FORM_GEOMETRIC || !(positive || sp->shape == TS_SHAPE_MONOTONE))
+    if (!(positive || (sp->shape == TS_SHAPE_MONOTONE && sp->form != TS_FORM_GEOMETRIC)))
         return i;
     if (positive && i < i1 && all_proven_positive(sp->f, sp->b1, sp->b2, i, i1))
         return i1;

@@ -44,18 +44,14 @@ static void xhat(double kappa, double phi, double *X, double *Xp)
     *Xp = 2.0 * s * c + kappa * (D[1] - D[2]);
 }
 
-/* Solve X̂(φ) = u for u in [0, 1/2], φ in [0, π/4] (X̂(π/4) = 1/2 by the
+/* Solve X̂(φ) = u for u in (0, 1/2), φ in [0, π/4] (X̂(π/4) = 1/2 by the
  * symmetry above).  Newton inside a bracket that every step shrinks; a
  * Newton step leaving the bracket, or not at most half the step before the
  * last one, is replaced by bisection, so the iteration always converges
  * (at a_i near a*, X̂' nearly vanishes at π/4 and Newton alone is slow). */
-static double geo_solve(double kappa, double u)
+static double geo_bracketed(double kappa, double u)
 {
     const double quarter = 0.25 * TS_PI;
-    if (!(u > 0.0))
-        return 0.0;
-    if (u >= 0.5)
-        return quarter;
     double lo = 0.0, hi = quarter;
     /* start: near 0 X̂ ≈ 3κφ; for small κ X̂ ≈ sin²φ */
     double phi = u / (3.0 * kappa), alt = asin(sqrt(u));
@@ -88,13 +84,35 @@ static double geo_solve(double kappa, double u)
     return phi;
 }
 
+/* X̂(φ) = u as the batch kernel solves it (internal.h: Halley from a model
+ * root with the polynomial sine and cosine, until a step is below 2^-20 φ);
+ * the bracketed iteration above where that does not converge in 8 steps
+ * (a_i very near a*, u near 1/2). */
+static double geo_solve(double kappa, double u)
+{
+    if (!(u > 0.0))
+        return 0.0;
+    if (u >= 0.5)
+        return 0.25 * TS_PI;
+    double phi = ts__geo_start(u, kappa), s, c, ms, mc;
+    for (int it = 0; it < 8; it++) {
+        double next = ts__geo_halley(phi, kappa, u, &s, &c, &ms, &mc);
+        if (fabs(next - phi) <= 0x1p-20 * next)
+            return next;
+        phi = next;
+    }
+    return geo_bracketed(kappa, u);
+}
+
 /* Value and derivatives in u = (x − x_i)/h (so h² never under- or
  * overflows) on one side at φ.  sign = +1 from the left end, −1 from the
  * right (x decreases with φ there). */
 static void geo_side_eval_u(const geo_side *g, double phi, double sign, int want, double out[3])
 {
-    double s = sin(phi), c = cos(phi), A[4];
-    ts__basis(s, c, A);
+    double s, c, ms, mc, A[4];
+    ts__sincos_q(phi, &s, &c, &ms, &mc); /* φ in [0, π/4] */
+    A[1] = s * ms * (3.0 - s); /* ts__basis */
+    A[2] = c * mc * (3.0 - c);
     out[0] = g->F0 * c * c + g->F1 * s * s + g->k * (g->D0 * A[1] - g->D1 * A[2]);
     /* a flat interval is constant (c² + s² need not round to 1) */
     if (g->F0 == g->F1 && g->k * g->D0 == 0.0 && g->k * g->D1 == 0.0)

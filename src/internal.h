@@ -126,6 +126,95 @@ static inline size_t ts__locate(const ts_spline *sp, double x, ts_cursor *cur)
     return ts__search(sp->x, sp->n, x, cur);
 }
 
+/* sin u, cos u, 1 − sin u, 1 − cos u for u in [0, π/4] (a hair beyond by
+ * rounding: the angle from an interval's nearer end, docs/method.md §1) by
+ * polynomials in z = u² (bench/sincos_coeffs.py: sin u ≈ u + u z P(z),
+ * 1 − cos u ≈ z/2 − z² Q(z), truncation <= 5.4e-18).  1 − cos is summed
+ * without the 1, so it carries no cancellation; 1 − sin >= 0.29 has none.
+ * Used by the batch kernels and by single evaluation inside an interval. */
+TS_INLINE void ts__sincos_q(double u, double *s, double *c, double *ms, double *mc)
+{
+    double z = u * u;
+    double ps = -0.16666666666666605 +
+                z * (0.008333333333317107 +
+                     z * (-0.00019841269826329964 +
+                          z * (2.7557312659276103e-06 + z * (-2.5050615702547473e-08 + z * 1.5889377748304707e-10))));
+    double pc = 0.0416666666666666 +
+                z * (-0.0013888888888874372 +
+                     z * (2.4801587289632665e-05 +
+                          z * (-2.7557314394461076e-07 + z * (2.0875728820037434e-09 + z * -1.1359926181679004e-11))));
+    *s = u + u * (z * ps);        /* sin u */
+    *mc = 0.5 * z - (z * z) * pc; /* 1 − cos u */
+    *c = 1.0 - *mc;
+    *ms = 1.0 - *s;
+}
+/* The geometric form's X̂(φ) = s² + κ(A1 − A2) = u, φ in [0, π/4]
+ * (docs/method.md §4; geometric.c), as the batch kernel and single
+ * evaluation solve it.  ts__geo_start: two Newton steps on the quartic model
+ * M(φ) = 3κφ + (1 − 5κ)φ² + c3 φ³ + c4 φ⁴ of X̂ (Taylor to second order at
+ * 0; M(π/4) = 1/2, M'(π/4) = X̂'(π/4) = 1 − (8 − 9/√2)κ) from the root of its
+ * quadratic part (exact as κ → 0 and as u → 0): within 1.1e-2 (relative) of
+ * the root for κ <= 1/2 (a >= 4/(3π)), 2.8e-3 for a >= 1. */
+#define TS_GEO_G1 1.6360389693210722 /* 8 − 9/√2 */
+#define TS_GEO_Q (0.25 * TS_PI)
+/* c3 Q³ + c4 Q⁴ = v, 3 c3 Q² + 4 c4 Q³ = v' with v = 1/2 − 3κQ − (1 − 5κ)Q²,
+ * v' = 1 − G1 κ − 3κ − 2(1 − 5κ)Q, both linear in κ: c = C·0 + C·1 κ */
+#define TS_GEO_V0 (0.5 - TS_GEO_Q * TS_GEO_Q)
+#define TS_GEO_V1 (5.0 * TS_GEO_Q * TS_GEO_Q - 3.0 * TS_GEO_Q)
+#define TS_GEO_W0 (1.0 - 2.0 * TS_GEO_Q)
+#define TS_GEO_W1 (10.0 * TS_GEO_Q - TS_GEO_G1 - 3.0)
+#define TS_GEO_Q3 (TS_GEO_Q * TS_GEO_Q * TS_GEO_Q)
+#define TS_GEO_C40 ((TS_GEO_W0 - 3.0 * TS_GEO_V0 / TS_GEO_Q) / TS_GEO_Q3)
+#define TS_GEO_C41 ((TS_GEO_W1 - 3.0 * TS_GEO_V1 / TS_GEO_Q) / TS_GEO_Q3)
+#define TS_GEO_C30 (TS_GEO_V0 / TS_GEO_Q3 - TS_GEO_C40 * TS_GEO_Q)
+#define TS_GEO_C31 (TS_GEO_V1 / TS_GEO_Q3 - TS_GEO_C41 * TS_GEO_Q)
+TS_INLINE double ts__geo_start(double u, double k)
+{
+    const double Q = TS_GEO_Q;
+    double b = 1.0 - 5.0 * k, d = 9.0 * k * k + 4.0 * b * u;
+    /* max(d, 0) without a select, which a compiler could move past the
+     * square root (FE_INVALID from a vector lane's negative d) */
+    double phi = (u + u) / (3.0 * k + sqrt(0.5 * (d + fabs(d))));
+    double c3 = TS_GEO_C30 + TS_GEO_C31 * k, c4 = TS_GEO_C40 + TS_GEO_C41 * k;
+    for (int it = 0; it < 2; it++) {
+        phi = phi < Q ? phi : Q;
+        double M = phi * (3.0 * k + phi * (b + phi * (c3 + phi * c4))) - u;
+        double Mp = 3.0 * k + phi * (2.0 * b + phi * (3.0 * c3 + 4.0 * c4 * phi));
+        phi = phi - M / (Mp > DBL_MIN ? Mp : DBL_MIN);
+        phi = phi > 0.0 ? phi : 0.0;
+    }
+    return phi < Q ? phi : Q;
+}
+/* One Halley step from φ (ts__sincos_q there): returns the next φ, clamped
+ * to [0, π/4], and sin, cos, 1 − sin, 1 − cos at it by the step e's Taylor
+ * rotation (exact to rounding once |e| <= 2^-20: e³/6 < 2^-62; a caller
+ * stops after such a step, when Halley's error, of the order of e³, is
+ * rounding). */
+TS_INLINE double ts__geo_halley(double phi, double k, double u, double *so, double *co, double *mso,
+                                double *mco)
+{
+    double s, c, ms, mc;
+    ts__sincos_q(phi, &s, &c, &ms, &mc);
+    double p1 = 3.0 - 8.0 * s + 3.0 * (s * s), p2 = 3.0 - 8.0 * c + 3.0 * (c * c);
+    double F = s * s + k * (s * ms * (3.0 - s) - c * mc * (3.0 - c)) - u;
+    double X1 = 2.0 * (s * c) + k * (c * p1 + s * p2);
+    double X2 = 2.0 * (c * c - s * s) +
+                k * ((c * c) * (6.0 * s - 8.0) - s * p1 + c * p2 - (s * s) * (6.0 * c - 8.0));
+    double den = 2.0 * (X1 * X1) - F * X2;
+    den = den > DBL_MIN ? den : DBL_MIN;
+    double next = phi - 2.0 * (F * X1) / den;
+    next = next > 0.0 ? next : 0.0;
+    next = next < TS_GEO_Q ? next : TS_GEO_Q;
+    double e = next - phi, e2 = 0.5 * (e * e);
+    *so = s + (c * e - s * e2);
+    *co = c - (s * e + c * e2);
+    *mso = ms - (c * e - s * e2);
+    *mco = mc + (s * e + c * e2);
+    return next;
+}
+/* ts__seg_sc with 1 − s and 1 − c given (ms, mc). */
+void ts__seg_scm(const double B[4], double s, double c, double ms, double mc, int want, double out[3]);
+
 /* ---- trigmin.c (docs/method.md §2, §5) ----------------------------------------- */
 /* Exact minimum over θ in [0, π/2] of g(θ) = Σ A_l(θ) C_l − κ θ.  Returns the
  * minimum and stores its θ in *theta_min (may be NULL). */

@@ -1,4 +1,4 @@
-/* Batch evaluation kernels for the paper and C¹ forms.
+/* Batch evaluation kernels for every form.
  *
  * ts__fast_batch works on blocks of TS_FAST_BLOCK queries; the block's scratch
  * is on the stack (< 8 KiB), nothing is allocated.
@@ -26,7 +26,9 @@
  * With GCC or Clang on x86-64 the whole pipeline is also compiled for AVX2+FMA
  * and for AVX-512F and chosen at run time (__builtin_cpu_supports); elsewhere,
  * or with -DTS_FAST_PORTABLE, only the portable C version exists.  The
- * geometric form (docs/method.md §4) goes point by point through ts__interval_eval. */
+ * geometric form (docs/method.md §4) stages its intervals' f, d, h, κ, solves
+ * X̂(φ) = u for the block (Halley from a model root) and evaluates at φ with
+ * the same polynomial sine and cosine (geo_eval_block below). */
 #include "internal.h"
 
 #include <math.h>
@@ -44,22 +46,6 @@
 #define TS_FAST_X86 0
 #define TS_ALWAYS_INLINE static inline
 #endif
-
-/* bench/sincos_coeffs.py: sin u ≈ u + u z P(z), 1 − cos u ≈ z/2 − z² Q(z),
- * z = u², u in [0, π/4]; truncation <= 5.4e-18 */
-#define TS_S1 -0.16666666666666605
-#define TS_S2 0.008333333333317107
-#define TS_S3 -0.00019841269826329964
-#define TS_S4 2.7557312659276103e-06
-#define TS_S5 -2.5050615702547473e-08
-#define TS_S6 1.5889377748304707e-10
-#define TS_C1 0.0416666666666666
-#define TS_C2 -0.0013888888888874372
-#define TS_C3 2.4801587289632665e-05
-#define TS_C4 -2.7557314394461076e-07
-#define TS_C5 2.0875728820037434e-09
-#define TS_C6 -1.1359926181679004e-11
-
 
 /* ---- locate ---------------------------------------------------------- */
 
@@ -147,6 +133,66 @@ TS_ALWAYS_INLINE size_t stage_sorted(const ts_spline *sp, const double *q, size_
     return i;
 }
 
+/* The geometric form (docs/method.md §4), per query as geometric.c's
+ * ts__geo_eval: the distances to both ends, the interval's h, κ = 2/(3π a),
+ * f_i, f_{i+1}, d_i, d_{i+1}, and its index (for the rare query whose solve
+ * does not converge, evaluated by ts__geo_eval).  phi, u, res: the solve's
+ * scratch; s, c, ms, mc: sin φ, cos φ, 1 − sin φ, 1 − cos φ at its root. */
+typedef struct geo_stage {
+    double dl[TS_FAST_BLOCK], dr[TS_FAST_BLOCK], h[TS_FAST_BLOCK], kappa[TS_FAST_BLOCK];
+    double f0[TS_FAST_BLOCK], f1[TS_FAST_BLOCK], d0[TS_FAST_BLOCK], d1[TS_FAST_BLOCK];
+    double phi[TS_FAST_BLOCK], u[TS_FAST_BLOCK], res[TS_FAST_BLOCK];
+    double s[TS_FAST_BLOCK], c[TS_FAST_BLOCK], ms[TS_FAST_BLOCK], mc[TS_FAST_BLOCK];
+    size_t iv[TS_FAST_BLOCK];
+} geo_stage;
+
+typedef struct geo_iv {
+    double x0, x1, h, kappa, f0, f1, d0, d1;
+} geo_iv;
+
+TS_ALWAYS_INLINE geo_iv geo_interval(const ts_spline *sp, size_t i)
+{
+    double a = sp->alpha[i] + sp->beta[i]; /* κ as geometric.c computes it */
+    geo_iv g = {sp->x[i],  sp->x[i + 1], sp->h[i], 2.0 / (3.0 * TS_PI * a),
+                sp->f[i],  sp->f[i + 1], sp->d[i], sp->d[i + 1]};
+    return g;
+}
+
+TS_ALWAYS_INLINE void geo_stage_one(geo_stage *st, size_t j, double x, const geo_iv *g, size_t i)
+{
+    st->dl[j] = x - g->x0;
+    st->dr[j] = g->x1 - x;
+    st->h[j] = g->h;
+    st->kappa[j] = g->kappa;
+    st->f0[j] = g->f0;
+    st->f1[j] = g->f1;
+    st->d0[j] = g->d0;
+    st->d1[j] = g->d1;
+    st->iv[j] = i;
+}
+
+/* stage_sorted for the geometric form. */
+TS_ALWAYS_INLINE size_t geo_stage_sorted(const ts_spline *sp, const double *q, size_t nb,
+                                         geo_stage *st, size_t i)
+{
+    const double *xs = sp->x;
+    size_t n = sp->n;
+    geo_iv g = geo_interval(sp, i);
+    double next = i + 1 < n ? g.x1 : (double)INFINITY;
+    for (size_t j = 0; j < nb; j++) {
+        double x = q[j];
+        if (x >= next) {
+            i++;
+            if (i + 1 < n && xs[i + 1] <= x)
+                i = gallop(xs, n, i, x);
+            g = geo_interval(sp, i);
+            next = i + 1 < n ? g.x1 : (double)INFINITY;
+        }
+        geo_stage_one(st, j, x, &g, i);
+    }
+    return i;
+}
+
 /* Every q[j] in [x0, xn] (none NaN). */
 TS_ALWAYS_INLINE int all_inside(const double *q, size_t nb, double x0, double xn)
 {
@@ -156,11 +202,11 @@ TS_ALWAYS_INLINE int all_inside(const double *q, size_t nb, double x0, double xn
     return outside == 0.0;
 }
 
-/* Stages q[0..nb) (1 <= nb <= TS_FAST_BLOCK); *cur is the cursor, left on the
- * last query's interval.  Returns 0, without staging, if a query is outside
- * [x0, xn] or NaN. */
+/* Stages q[0..nb) (1 <= nb <= TS_FAST_BLOCK) into st, or into gs for the
+ * geometric form (gs != NULL); *cur is the cursor, left on the last query's
+ * interval.  Returns 0, without staging, if a query is outside [x0, xn] or NaN. */
 TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb, int want_w,
-                                 fast_stage *st, size_t *cur)
+                                 fast_stage *st, geo_stage *gs, size_t *cur)
 {
     const double *xs = sp->x;
     size_t n = sp->n, i = *cur;
@@ -175,7 +221,10 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
     if (unsorted == 0.0) {
         if (!(xs[i] <= q[0]))
             i = search_range(xs, 0, i + 1, q[0]);
-        *cur = want_w ? stage_sorted(sp, q, nb, 1, st, i) : stage_sorted(sp, q, nb, 0, st, i);
+        if (gs)
+            *cur = geo_stage_sorted(sp, q, nb, gs, i);
+        else
+            *cur = want_w ? stage_sorted(sp, q, nb, 1, st, i) : stage_sorted(sp, q, nb, 0, st, i);
         return 1;
     }
     /* one binary search per query, all advancing a level at a time */
@@ -190,7 +239,12 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
     }
     for (size_t j = 0; j < nb; j++) {
         i = idx[j];
-        stage_one(st, j, q[j], xs[i], xs[i + 1], TS_HALF_PI / sp->h[i], control4(sp, i), want_w);
+        if (gs) {
+            geo_iv g = geo_interval(sp, i);
+            geo_stage_one(gs, j, q[j], &g, i);
+        } else {
+            stage_one(st, j, q[j], xs[i], xs[i + 1], TS_HALF_PI / sp->h[i], control4(sp, i), want_w);
+        }
     }
     *cur = i;
     return 1;
@@ -198,19 +252,8 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
 
 /* ---- evaluate -------------------------------------------------------- */
 
-/* s = sin ϑ, c = cos ϑ, ms = 1 − s, mc = 1 − c for ϑ in [0, π/4] (a hair
- * beyond by rounding).  1 − cos is summed without the 1, so mc carries no
- * cancellation; 1 − s >= 0.29 has none either. */
-TS_ALWAYS_INLINE void fast_trig(double u, double *s, double *c, double *ms, double *mc)
-{
-    double z = u * u;
-    double ps = TS_S1 + z * (TS_S2 + z * (TS_S3 + z * (TS_S4 + z * (TS_S5 + z * TS_S6))));
-    double pc = TS_C1 + z * (TS_C2 + z * (TS_C3 + z * (TS_C4 + z * (TS_C5 + z * TS_C6))));
-    *s = u + u * (z * ps);              /* sin u */
-    *mc = 0.5 * z - (z * z) * pc;       /* 1 − cos u */
-    *c = 1.0 - *mc;
-    *ms = 1.0 - *s;
-}
+/* s = sin ϑ, c = cos ϑ, ms = 1 − s, mc = 1 − c for ϑ in [0, π/4]: internal.h. */
+#define fast_trig ts__sincos_q
 
 /* Query j seen from its nearer end: ϑ, the control values B', and the sign
  * of dϑ/dθ as ±1. */
@@ -255,17 +298,161 @@ TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, dou
     }
 }
 
+
+/* The geometric form: solve X̂(φ) = u for φ in [0, π/4] (u = distance to
+ * the nearer end / h; geometric.c), all queries of the block a step at a
+ * time.  Start: two Newton steps on the quartic model
+ * M(φ) = 3κφ + (1 − 5κ)φ² + c3 φ³ + c4 φ⁴ of X̂ (its Taylor polynomial at 0
+ * to second order, and X̂(π/4) = 1/2, X̂'(π/4) = 1 − (8 − 9/√2)κ), from the
+ * root of its quadratic part (exact as κ → 0 and as u → 0): the start is
+ * within 1.1e-2 (relative) of the root for κ <= 1/2, a_i >= 4/(3π), and
+ * within 2.8e-3 for a_i >= 1.  Then Halley steps on X̂ with the polynomial
+ * sine and cosine, until every step of the block is below 2^-20 φ (Halley's
+ * error after such a step is of the order of its cube: rounding; two steps
+ * for κ <= 1/2).  The last step is applied to (sin φ, cos φ) by its Taylor
+ * rotation (|e| <= 2^-20: the dropped e³/6 is below 2^-62), so the
+ * evaluation needs no further sine.  A query whose iteration has not
+ * converged after TS_GEO_PASSES steps (a_i very near a*, u near 1/2, where X̂'
+ * nearly vanishes) is evaluated by ts__geo_eval. */
+#define TS_GEO_PASSES 8
+
+TS_ALWAYS_INLINE void geo_side(const geo_stage *st, size_t j, int *right, double *u)
+{
+    double dl = st->dl[j], dr = st->dr[j];
+    *right = dr < dl;
+    *u = (*right ? dr : dl) / st->h[j];
+}
+
+TS_ALWAYS_INLINE void geo_solve_block(geo_stage *st, size_t nb)
+{
+    for (size_t j = 0; j < nb; j++) {
+        int right;
+        double u, k = st->kappa[j];
+        geo_side(st, j, &right, &u);
+        st->u[j] = u;
+        st->phi[j] = ts__geo_start(u, k);
+        st->res[j] = 1.0;
+    }
+    for (int pass = 0; pass < TS_GEO_PASSES; pass++) {
+        long open = 0; /* an integer count: this loop vectorises */
+        for (size_t j = 0; j < nb; j++) {
+            /* a query stops at its own first small step, whatever the others
+             * of the block still need: its value does not depend on them */
+            int live = st->res[j] > 0.0;
+            double phi = st->phi[j], s, c, ms, mc;
+            double next = ts__geo_halley(phi, st->kappa[j], st->u[j], &s, &c, &ms, &mc);
+            double e = next - phi, r = fabs(e) - 0x1p-20 * next;
+            r = r <= 0.0 ? r : 1.0; /* NaN too */
+            open += live && r > 0.0;
+            st->res[j] = live ? r : st->res[j];
+            st->phi[j] = live ? next : phi;
+            st->s[j] = live ? s : st->s[j]; /* at next, for the evaluation when this is the last step */
+            st->c[j] = live ? c : st->c[j];
+            st->ms[j] = live ? ms : st->ms[j];
+            st->mc[j] = live ? mc : st->mc[j];
+        }
+        if (!open)
+            break;
+    }
+}
+
+/* docs/method.md §4 at the solved φ from the nearer end: the value, or its
+ * first or second derivative in x. */
+#define TS_GEO_NEAR(st, j)                                                                \
+    double dl = (st)->dl[j], dr = (st)->dr[j];                                          \
+    int right = dr < dl;                                                                \
+    double s = (st)->s[j], c = (st)->c[j], ms = (st)->ms[j], mc = (st)->mc[j];          \
+    double h = (st)->h[j], kappa = (st)->kappa[j], k = kappa * h;                       \
+    double F0 = right ? (st)->f1[j] : (st)->f0[j], F1 = right ? (st)->f0[j] : (st)->f1[j]; \
+    double D0 = right ? -(st)->d1[j] : (st)->d0[j], D1 = right ? -(st)->d0[j] : (st)->d1[j]
+
+TS_ALWAYS_INLINE void geo_eval_block(int deriv, geo_stage *st, size_t nb, double *y)
+{
+    geo_solve_block(st, nb);
+    if (deriv == 0) {
+        for (size_t j = 0; j < nb; j++) {
+            TS_GEO_NEAR(st, j);
+            double v = F0 * (c * c) + F1 * (s * s) +
+                       k * (D0 * (s * ms * (3.0 - s)) - D1 * (c * mc * (3.0 - c)));
+            /* a flat interval is constant (c² + s² need not round to 1) */
+            y[j] = (F0 == F1 && k * D0 == 0.0 && k * D1 == 0.0) ? F0 : v;
+        }
+        return;
+    }
+    for (size_t j = 0; j < nb; j++) {
+        TS_GEO_NEAR(st, j);
+        (void)ms, (void)mc;
+        double p1 = 3.0 - 8.0 * s + 3.0 * (s * s), p2 = 3.0 - 8.0 * c + 3.0 * (c * c);
+        double a1 = c * p1, a2 = -s * p2, dF = F1 - F0, sc2 = 2.0 * (s * c);
+        double Yp = dF * sc2 + k * (D0 * a1 - D1 * a2);
+        double Xp = sc2 + kappa * (a1 - a2);
+        double v1 = Yp / Xp / h;
+        double b1 = -s * p1 + (c * c) * (6.0 * s - 8.0), b2 = -c * p2 + (s * s) * (6.0 * c - 8.0);
+        double c2 = 2.0 * (c * c - s * s);
+        double Ypp = dF * c2 + k * (D0 * b1 - D1 * b2);
+        double Xpp = c2 + kappa * (b1 - b2);
+        double v2 = (Ypp * Xp - Yp * Xpp) / (Xp * Xp * Xp) / h / h;
+        y[j] = deriv == 1 ? (right ? -v1 : v1) : v2;
+    }
+}
+
+/* Fills the stage's unused places [nb, TS_FAST_BLOCK) with its first query. */
+TS_ALWAYS_INLINE void geo_pad(geo_stage *st, size_t nb)
+{
+    for (size_t j = nb; j < TS_FAST_BLOCK; j++) {
+        st->dl[j] = st->dl[0];
+        st->dr[j] = st->dr[0];
+        st->h[j] = st->h[0];
+        st->kappa[j] = st->kappa[0];
+        st->f0[j] = st->f0[0];
+        st->f1[j] = st->f1[0];
+        st->d0[j] = st->d0[0];
+        st->d1[j] = st->d1[0];
+        st->iv[j] = st->iv[0];
+    }
+}
+
+/* After geo_eval_block: the queries whose solve did not converge. */
+static void geo_finish(const ts_spline *sp, int deriv, const geo_stage *st, const double *q,
+                       size_t nb, double *y)
+{
+    for (size_t j = 0; j < nb; j++) {
+        if (st->res[j] > 0.0) {
+            double o[3];
+            ts__geo_eval(sp, st->iv[j], q[j], deriv, o);
+            y[j] = o[deriv];
+        }
+    }
+}
+
 /* The whole batch, or its prefix up to the first block with a query outside
  * [x0, xn]; *cur is the cursor; returns the number of queries evaluated. */
 TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *xq, size_t m,
                                  double *yq, size_t *cur)
 {
-    fast_stage st;
+    union {
+        fast_stage p;
+        geo_stage g;
+    } st;
     _Alignas(64) double yt[TS_FAST_BLOCK];
     size_t j0 = 0;
+    if (sp->form == TS_FORM_GEOMETRIC) {
+        while (j0 < m) {
+            size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
+            if (!stage_block(sp, xq + j0, nb, 0, NULL, &st.g, cur))
+                break;
+            geo_pad(&st.g, nb); /* as below */
+            geo_eval_block(deriv, &st.g, TS_FAST_BLOCK, yt);
+            for (size_t j = 0; j < nb; j++)
+                yq[j0 + j] = yt[j];
+            geo_finish(sp, deriv, &st.g, xq + j0, nb, yq + j0);
+            j0 += nb;
+        }
+        return j0;
+    }
     while (j0 < m) {
         size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
-        if (!stage_block(sp, xq + j0, nb, deriv > 0, &st, cur))
+        if (!stage_block(sp, xq + j0, nb, deriv > 0, &st.p, NULL, cur))
             break;
         /* A short block is padded with its first query and every block is
          * evaluated whole into an aligned buffer: no loop tail and no
@@ -273,12 +460,12 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
          * it sits in the batch (split batches, threads and chunked callers
          * agree bit for bit). */
         for (size_t j = nb; j < TS_FAST_BLOCK; j++) {
-            st.tu[j] = st.tu[0];
-            st.tv[j] = st.tv[0];
-            st.w[j] = deriv > 0 ? st.w[0] : 0.0;
-            st.B[j] = st.B[0];
+            st.p.tu[j] = st.p.tu[0];
+            st.p.tv[j] = st.p.tv[0];
+            st.p.w[j] = deriv > 0 ? st.p.w[0] : 0.0;
+            st.p.B[j] = st.p.B[0];
         }
-        eval_block(deriv, &st, TS_FAST_BLOCK, yt);
+        eval_block(deriv, &st.p, TS_FAST_BLOCK, yt);
         for (size_t j = 0; j < nb; j++)
             yq[j0 + j] = yt[j];
         j0 += nb;
@@ -328,16 +515,6 @@ static pipeline_fn pick(int isa)
 static size_t batch(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq,
                     ts_cursor *cur, pipeline_fn fn)
 {
-    double x0 = sp->x[0], xn = sp->x[sp->n];
-    if (sp->form == TS_FORM_GEOMETRIC) {
-        size_t j = 0;
-        for (; j < m && x0 <= xq[j] && xq[j] <= xn; j++) {
-            double o[3];
-            ts__interval_eval(sp, ts__locate(sp, xq[j], cur), xq[j], deriv, o);
-            yq[j] = o[deriv];
-        }
-        return j;
-    }
     size_t i = cur && cur->interval < sp->n ? cur->interval : 0;
     size_t done = fn(sp, deriv, xq, m, yq, &i);
     if (cur && done)

@@ -43,7 +43,7 @@
  * reference is computed once per query set and shared by the kernels.
  * structure() checks the contract of ts__fast_batch (prefix up to the first
  * block with a query outside, cursor, kernels chosen by number), knots
- * exactly, the geometric fallback, sparse sorted queries (galloping) and
+ * exactly, the geometric form's prefix and knots, sparse sorted queries (galloping) and
  * ts_eval_batch / ts_eval_batch_mt against the kernel.
  */
 #include "th.h"
@@ -499,10 +499,10 @@ static void structure(void)
         }
     }
 
-    /* the geometric form goes point by point through ts_eval_deriv: bitwise */
+    /* the geometric form: prefix contract as above (block granularity) */
     s = small_spline(40, TS_FORM_GEOMETRIC);
     if (!s) {
-        printf("test_fast: geometric form not available (skipped)\n");
+        CHECKF(0, "geometric form: small spline not built");
         return;
     }
     X = ts_spline_x(s);
@@ -512,18 +512,156 @@ static void structure(void)
     double keep = q[700];
     for (int deriv = 0; deriv <= 2; deriv++) {
         ts_cursor c = TS_CURSOR_INIT;
-        q[700] = deriv == 1 ? TH_NAN : keep; /* S': stops at a NaN */
+        q[700] = deriv == 1 ? TH_NAN : keep; /* S': stops before the block of a NaN */
         size_t k = ts__fast_batch(s, deriv, q, M, y, &c);
-        CHECK(k == (deriv == 1 ? 700 : M));
+        CHECK(k == (deriv == 1 ? 700 / TS_FAST_BLOCK * TS_FAST_BLOCK : M));
+        /* and ts_eval_batch equals the kernel bitwise on every valid query */
+        CHECK(ts_eval_batch(s, deriv, q, M, ref, NULL, NULL) == (deriv == 1 ? TS_ERR_DOMAIN : TS_OK));
         int same = 1;
-        for (size_t j = 0; j < k; j++) {
-            double o[3];
-            ts_eval_deriv(s, q[j], NULL, &o[0], &o[1], &o[2]);
-            same &= !memcmp(&o[deriv], &y[j], sizeof o[deriv]);
-        }
-        CHECKF(same, "geometric deriv %d: not the values of ts_eval_deriv", deriv);
+        for (size_t j = 0; j < k; j++)
+            same &= !memcmp(&ref[j], &y[j], sizeof y[j]);
+        CHECKF(same, "geometric deriv %d: ts_eval_batch differs from the kernel", deriv);
+    }
+    q[700] = keep;
+    /* knots exactly */
+    for (size_t i = 0; i <= n; i++)
+        q[i] = X[i];
+    for (int isa = 0; isa <= 2; isa++) {
+        if (!have_kernel(isa))
+            continue;
+        CHECK(ts__fast_batch_isa(s, 0, q, n + 1, y, NULL, isa, &done) == 1 && done == n + 1);
+        int exact = 1;
+        for (size_t i = 0; i <= n; i++)
+            exact &= y[i] == ts_spline_f(s)[i];
+        CHECKF(exact, "geometric kernel %d: knot values not exact", isa);
     }
     ts_spline_free(s);
+}
+
+/* ---- the geometric form's kernel (docs/method.md §4) ------------------
+ * Expected values: ts_eval_deriv (geometric.c: X̂(φ) = u solved by a
+ * safeguarded Newton iteration to rounding with libm sine and cosine,
+ * checked against the high-precision reference in test_geometric.c).
+ * Unit: ε·(M/h^k + |S^(k)|), M = max(|f_i|, |f_{i+1}|, |k d_i|, |k d_{i+1}|)
+ * (k = κh), the coefficients of Y.  Tolerance: both paths find φ to a few
+ * ulps (Halley's error after a step below 2^-20 φ is of the order of the
+ * step's cube); |dY/dφ| <= 2|f_{i+1} − f_i| + k(|d_i||A1'| + |d_{i+1}||A2'|)
+ * <= 10M (|A_l'| <= 3 on [0, π/4]), so φ's error adds <= 10M·(π/4)·4ε; Y's
+ * own evaluation (as the paper form's value above: <= 77ε·M with both
+ * paths' trigonometric inputs) -> TOLG0 = 120.  S' = Y'/(h X̂') and S'' =
+ * (Y''X̂' − Y'X̂'')/(h² X̂'³) divide by X̂' (>= 0.31 at π/4 for a_i >= 1/2, but
+ * 3κ at φ = 0, small for large a_i, where S'' can be far above M/h²): the
+ * relative error of the quotient is that of its terms times at most 2 and 4
+ * roundings more, hence the |S^(k)| term in the unit; TOLG1 = 120·2/0.31 ≈
+ * 800, TOLG2 = 1600·3/0.31³ ≈ 1.7e5 — loose worst-case products; the
+ * measured maxima are printed.  A wrong coefficient, sign or side is off by
+ * >= 1e-6·M and fails.  Splines: α_i in [1/2, 100]; a second set with α_i
+ * just above a* (0.3472..0.36), where X̂'(π/4) = 1 − (8 − 9/√2)κ nearly
+ * vanishes, checks the value only (the derivatives are ill-conditioned
+ * there in both paths): φ's rounding error there is ε/X̂'(π/4), so the unit
+ * is ε·M/X̂'(π/4), same TOLG0. */
+#define TOLG0 120.0
+#define TOLG1 800.0
+#define TOLG2 170000.0
+
+static ts_spline *geo_spline(size_t np, double amin, double amax)
+{
+    double *x = malloc(np * sizeof *x), *f = malloc(np * sizeof *f), *al = malloc(np * sizeof *al);
+    ts_spline *s = NULL;
+    if (!x || !f || !al) {
+        CHECKF(0, "out of memory in the test");
+        goto done;
+    }
+    x[0] = -2.0;
+    for (size_t i = 1; i < np; i++)
+        x[i] = x[i - 1] + pow(10.0, -2.0 + 3.0 * th_unit());
+    for (size_t i = 0; i < np; i++)
+        f[i] = 40.0 * (th_unit() - 0.5);
+    for (size_t i = 0; i + 1 < np; i++)
+        al[i] = amin * pow(amax / amin, th_unit());
+    ts_options o;
+    ts_options_init(&o);
+    o.form = TS_FORM_GEOMETRIC;
+    o.alphas = al;
+    o.n_alphas = np - 1;
+    ts_error e;
+    ts_status st = ts_spline_new(x, f, np, &o, &s, &e);
+    CHECKF(st == TS_OK, "geometric spline: %s at %zu", ts_strerror(st), e.index);
+done:
+    free(x);
+    free(f);
+    free(al);
+    return s;
+}
+
+static void geometric(void)
+{
+    th_seed(0x452821E638D01377u);
+    const size_t m = 1000000 / TF_SCALE;
+    double *q = malloc(m * sizeof *q), *y = malloc(m * sizeof *y), *ref = malloc(3 * m * sizeof *ref);
+    double *y1 = malloc(3 * m * sizeof *y1);
+    if (!q || !y || !ref || !y1) {
+        CHECKF(0, "out of memory in the test");
+        goto done;
+    }
+    for (int set = 0; set < 2; set++) {
+        ts_spline *s = set == 0 ? geo_spline(2001, 0.5, 100.0) : geo_spline(2001, 0.3472, 0.36);
+        if (!s)
+            continue;
+        const double *X = ts_spline_x(s), *F = ts_spline_f(s), *D = ts_spline_slopes(s);
+        const double *Al = ts_spline_alpha(s), *Be = ts_spline_beta(s);
+        size_t n = ts_spline_intervals(s);
+        for (size_t j = 0; j < m; j++)
+            q[j] = j % 97 == 0 ? X[(size_t)(th_unit() * (double)(n + 1)) % (n + 1)]
+                               : X[0] + (X[n] - X[0]) * th_unit();
+        if (set == 0)
+            qsort(q, m / 2, sizeof *q, cmp_double); /* half sorted, half random */
+        for (size_t j = 0; j < m; j++)
+            CHECK(ts_eval_deriv(s, q[j], NULL, &ref[j], &ref[m + j], &ref[2 * m + j]) == TS_OK);
+        for (int isa = 0; isa <= 2; isa++) {
+            if (!have_kernel(isa))
+                continue;
+            double worst[3] = {0, 0, 0};
+            for (int deriv = 0; deriv <= (set == 0 ? 2 : 0); deriv++) {
+                ts_cursor c = TS_CURSOR_INIT;
+                CHECK(ts__fast_batch_isa(s, deriv, q, m, y, &c, isa, NULL) == 1);
+                double tol = deriv == 0 ? TOLG0 : deriv == 1 ? TOLG1 : TOLG2;
+                long bad = 0;
+                size_t first = 0;
+                for (size_t j = 0; j < m; j++) {
+                    size_t i = interval_of(s, q[j]);
+                    double h = X[i + 1] - X[i], k = 2.0 / (3.0 * 3.14159265358979323846 * (Al[i] + Be[i])) * h;
+                    double M = fmax(fmax(fabs(F[i]), fabs(F[i + 1])), fmax(fabs(k * D[i]), fabs(k * D[i + 1])));
+                    double kappa = k / h, r = ref[(size_t)deriv * m + j];
+                    /* set 1: the value's condition 1/X̂'(π/4); derivatives: relative */
+                    double unit = set == 1 ? EPS * M / (1.0 - 1.6360389693210722 * kappa)
+                                           : EPS * (M / pow(h, deriv) + (deriv ? fabs(r) : 0.0));
+                    double e = fabs(y[j] - r) / unit;
+                    if (!(e <= tol) && !bad++)
+                        first = j;
+                    worst[deriv] = fmax(worst[deriv], e);
+                }
+                CHECKF(bad == 0, "geometric set %d kernel %d deriv %d: %ld off, first x = %.17g: %.17g vs %.17g", set,
+                       isa, deriv, bad, q[first], y[first], ref[(size_t)deriv * m + first]);
+                /* AVX2+FMA and AVX-512F run the same operations (both contract
+                 * into FMA), lane by lane: bitwise the same values */
+                if (isa == 1)
+                    memcpy(y1 + (size_t)deriv * m, y, m * sizeof *y);
+                if (isa == 2 && have_kernel(1))
+                    CHECKF(!memcmp(y1 + (size_t)deriv * m, y, m * sizeof *y),
+                           "geometric set %d deriv %d: AVX2 and AVX-512 kernels differ", set, deriv);
+            }
+            printf("test_fast: geometric %s, kernel %d: max |fast - plain| / unit = %.2f, %.2f, %.2f\n",
+                   set == 0 ? "a in [1/2, 100]" : "a in [0.3472, 0.36], value only", isa, worst[0], worst[1],
+                   worst[2]);
+        }
+        ts_spline_free(s);
+    }
+done:
+    free(q);
+    free(y);
+    free(ref);
+    free(y1);
 }
 
 
@@ -533,5 +671,7 @@ int main(void)
     structure();
     TH_CASE("accuracy");
     accuracy();
+    TH_CASE("geometric");
+    geometric();
     return th_report("test_fast");
 }
