@@ -205,7 +205,7 @@ static void scheme_a(ts_surface *s, const ts_surface_options *o, int dir)
     const double *t = dir ? s->y : s->x;
     double *a = dir ? s->ay : s->ax;
     for (size_t i = 0; i < n; i++) {
-        double K = 2.0 * (t[i + 1] - t[i]) / (3.0 * TS_PI), T = o->alpha;
+        double K = 2.0 * (t[i + 1] - t[i]) / (3.0 * TS_PI), T = 0.0;
         for (size_t L = 0; L < lines; L++) {
             for (int end = 0; end < 2; end++) {
                 size_t node = dir ? (i + (size_t)end) * np + L : L * np + i + (size_t)end;
@@ -223,7 +223,10 @@ static void scheme_a(ts_surface *s, const ts_surface_options *o, int dir)
                 }
             }
         }
-        a[i] = o->margin + T;
+        /* the margin: additive as in 1-D and relative on the rule's value, so
+         * that F of (11.4) keeps t/(1 + t) of the gap however large a is */
+        T *= 1.0 + o->margin;
+        a[i] = o->margin + (T > o->alpha ? T : o->alpha);
         if (o->form == TS_FORM_GEOMETRIC && a[i] < TS_GEOMETRIC_A_RAISE)
             a[i] = TS_GEOMETRIC_A_RAISE;
     }

@@ -107,13 +107,15 @@ static void bb(bb_ctx *c, const double H[49], const double wx[7], const double w
 /* The abscissa of θ = 2 atan t in interval i of knots t. */
 static double place(const double *knots, const double *a, size_t i, ts_form form, double t)
 {
-    double th = 2.0 * atan(t), h = knots[i + 1] - knots[i];
-    if (form != TS_FORM_GEOMETRIC)
-        return knots[i] + h * th / TS_HALF_PI;
-    double X[4], A[4];
-    ts__surf_xhat(a, i, form, X);
-    ts__basis(sin(th), cos(th), A);
-    return knots[i] + h * (A[1] * X[1] + A[2] * X[2] + A[3] * X[3]);
+    double th = 2.0 * atan(t), h = knots[i + 1] - knots[i], u = th / TS_HALF_PI;
+    if (form == TS_FORM_GEOMETRIC) {
+        double X[4], A[4];
+        ts__surf_xhat(a, i, form, X);
+        ts__basis(sin(th), cos(th), A);
+        u = A[1] * X[1] + A[2] * X[2] + A[3] * X[3];
+    }
+    double v = knots[i] + h * u; /* may round past the end */
+    return v < knots[i + 1] ? v : knots[i + 1];
 }
 
 int ts__surf_certify_patch(const ts_surface *s, size_t i, size_t j, const ts_plane *pl,
