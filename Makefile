@@ -56,6 +56,7 @@ build-asan:
 test: build build-asan build-clang
 	$(call need,$(TEST_TOOLS))
 	$(call need_file,$(STATIC_LIBC),libc6-dev)
+	$(call need_file,/usr/lib/python3/dist-packages/scipy/__init__.py,python3-scipy)
 	tests/run_all.sh build build-asan build-clang
 
 valgrind: build

@@ -15,6 +15,7 @@ Prints "test_surface_cli: N passed, M failed" last.
 """
 import json
 import os
+import shutil
 import random
 import subprocess
 import sys
@@ -187,5 +188,6 @@ p = subprocess.run([sys.executable, os.path.join(REPO, "tests", "ref", "surface_
                    capture_output=True, text=True)
 check("surface_ref.py", p.returncode == 0 and "0 failed" in p.stdout, p.stdout)
 
+shutil.rmtree(TMP, ignore_errors=True)
 print("test_surface_cli: %d passed, %d failed" % (passed, failed))
 sys.exit(1 if failed else 0)
