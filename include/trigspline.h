@@ -787,7 +787,9 @@ TS_API void ts_surface_options_init(ts_surface_options *opt);
  *                      or across a plane
  *   TS_ERR_INFEASIBLE  a patch whose control values, as rounded, leave the region
  *                      (the rule of §11.3 is a proof in exact arithmetic; this
- *                      is rounding, e.g. a node 1e-16 relative from a plane)
+ *                      is rounding, e.g. a node 1e-16 relative from a plane),
+ *                      or whose a would exceed 1e300 (a node gap near the
+ *                      underflow threshold next to a slope); index = the patch
  *   TS_ERR_NOMEM
  */
 TS_API ts_status ts_surface_new(const double *x, size_t nx_points, const double *y,
@@ -882,8 +884,8 @@ TS_API ts_status ts_surface_report(const ts_surface *s, size_t i, size_t j,
 /* Certify against any planes (lower, upper may be NULL; not both): reports
  * (if not NULL) receive nx*ny entries (patch (i, j) at j*nx + i).  Paper and
  * C¹ forms with a sloped plane: the plane's variation over a sub-patch is
- * subtracted (the bound converges linearly there, same tolerance, at most
- * 40 levels).  TS_OK when every patch is certified; TS_ERR_VIOLATED (index
+ * subtracted; that bound converges only linearly, so there the tolerance
+ * adds 1e-4 of the plane's variation over the patch.  TS_OK when every patch is certified; TS_ERR_VIOLATED (index
  * = first patch that is not); TS_ERR_NONFINITE (a plane); TS_ERR_NULL. */
 TS_API ts_status ts_surface_certify(const ts_surface *s, const ts_plane *lower,
                                     const ts_plane *upper, ts_patch_report *reports,

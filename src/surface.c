@@ -199,7 +199,7 @@ static void node_gap(const ts_surface *s, size_t n, int side, double *g, double 
 }
 
 /* docs/method.md §11.3: a^x_i (dir 0) or a^y_j (dir 1) of the scheme. */
-static void scheme_a(ts_surface *s, const ts_surface_options *o, int dir)
+static ts_status scheme_a(ts_surface *s, const ts_surface_options *o, int dir, ts_error *err)
 {
     size_t np = s->nx + 1, n = dir ? s->ny : s->nx, lines = dir ? s->nx + 1 : s->ny + 1;
     const double *t = dir ? s->y : s->x;
@@ -217,6 +217,14 @@ static void scheme_a(ts_surface *s, const ts_surface_options *o, int dir)
                     /* the inward edge term ±k d' must keep at least half the gap */
                     double d = (end ? -1.0 : 1.0) * (dir ? qq : pp);
                     if (d < 0.0) {
+                        /* an a beyond 1e300 is refused (as in 1-D, docs/method.md
+                         * §5.7): a gap near the underflow threshold */
+                        if (2.0 * K * -d > 1e300 * g) {
+                            size_t pl = L < lines - 1 ? L : lines - 2;
+                            return ts__fail(err, TS_ERR_INFEASIBLE,
+                                            dir ? i * s->nx + pl : pl * s->nx + i,
+                                            TS_WHERE_INTERVAL);
+                        }
                         double need = 2.0 * K * -d / g;
                         T = need > T ? need : T;
                     }
@@ -230,6 +238,7 @@ static void scheme_a(ts_surface *s, const ts_surface_options *o, int dir)
         if (o->form == TS_FORM_GEOMETRIC && a[i] < TS_GEOMETRIC_A_RAISE)
             a[i] = TS_GEOMETRIC_A_RAISE;
     }
+    return TS_OK;
 }
 
 /* docs/method.md §11.3: clamp every twist so that on each of its patches the
@@ -348,8 +357,8 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
             s->ay[j] = o->alpha + o->beta;
     } else {
         touch_slopes(s);
-        scheme_a(s, o, 0);
-        scheme_a(s, o, 1);
+        if ((st = scheme_a(s, o, 0, err)) != TS_OK || (st = scheme_a(s, o, 1, err)) != TS_OK)
+            goto fail;
         clamp_twists(s);
     }
     ts__surf_net(s);

@@ -130,7 +130,9 @@ int ts__surf_certify_patch(const ts_surface *s, size_t i, size_t j, const ts_pla
     double scale = fabs(c.kx) * TS_HALF_PI + fabs(c.ky) * TS_HALF_PI;
     for (int k = 0; k < 16; k++)
         scale = fabs(G[k]) > scale ? fabs(G[k]) : scale;
-    c.tol = 1e-9 * scale;
+    /* the linear rest is bounded by its largest value on a piece, which
+     * converges only linearly: there the tolerance adds 1e-4 of its range */
+    c.tol = 1e-9 * scale + 1e-4 * (fabs(c.kx) + fabs(c.ky)) * TS_HALF_PI;
     c.best = INFINITY;
     c.bt = c.bu = 0.0;
     c.lower = INFINITY;
