@@ -158,6 +158,23 @@ static ts_status line_slopes(const ts_surface *s, ts_slopes method, int dir, con
     return TS_OK;
 }
 
+/* The same without the check (twists: their sum is checked). */
+static void line_slopes_raw(const ts_surface *s, ts_slopes method, int dir, const double *v,
+                            double *d, double *tmp)
+{
+    size_t np = s->nx + 1, nq = s->ny + 1;
+    size_t lines = dir ? np : nq, len = dir ? nq : np;
+    const double *t = dir ? s->y : s->x;
+    double *f = tmp, *g = tmp + len;
+    for (size_t L = 0; L < lines; L++) {
+        for (size_t k = 0; k < len; k++)
+            f[k] = v[dir ? k * np + L : L * np + k];
+        ts__slopes_range(method, t, f, len, g, 0, len);
+        for (size_t k = 0; k < len; k++)
+            d[dir ? k * np + L : L * np + k] = g[k];
+    }
+}
+
 /* docs/method.md §11.3: a node on a constant bound (gap 0) needs slopes that
  * point into the region: 0 inside, one-signed at the grid's edges. */
 static double clamp_touch(double d, size_t idx, size_t n, double into)
@@ -268,7 +285,7 @@ static void clamp_twists(ts_surface *s)
                     double c = (side ? -1.0 : 1.0) * sx * sy * ux * uy; /* c r >= -F/2 */
                     if (c > 0.0)
                         lo = fmax(lo, -0.5 * F / c);
-                    else if (c < 0.0)
+                    if (c < 0.0)
                         hi = fmin(hi, -0.5 * F / c);
                 }
             }
@@ -344,11 +361,15 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
             s->r[n] = 0.0;
     } else {
         /* r = (∂q/∂x + ∂p/∂y)/2: symmetric under transposition */
-        if ((st = line_slopes(s, o->slopes, 0, s->q, s->r, tmp, err)) != TS_OK ||
-            (st = line_slopes(s, o->slopes, 1, s->p, tmp2, tmp, err)) != TS_OK)
-            goto fail;
-        for (size_t n = 0; n < nn; n++)
+        line_slopes_raw(s, o->slopes, 0, s->q, s->r, tmp);
+        line_slopes_raw(s, o->slopes, 1, s->p, tmp2, tmp);
+        for (size_t n = 0; n < nn; n++) {
             s->r[n] = 0.5 * (s->r[n] + tmp2[n]);
+            if (!isfinite(s->r[n])) {
+                st = ts__fail(err, TS_ERR_NONFINITE, n, TS_WHERE_POINT);
+                goto fail;
+            }
+        }
     }
     if (o->shape == TS_SURFACE_NONE) {
         for (size_t i = 0; i < nx; i++)

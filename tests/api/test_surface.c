@@ -674,11 +674,11 @@ static void test_errors(void)
           e.where == TS_WHERE_POINT);
     double zv[9] = {0, 0, 0, 0, 1e300, 0, 0, 1e300, 0}, yt[3] = {0, 1e-300, 1};
     CHECK(ts_surface_new(x, 3, yt, 3, zv, NULL, &s, &e) == TS_ERR_NONFINITE);
-    /* the twist overflows (finite slopes): the second twist pass */
-    double zw[9] = {0, 0, 0, 0, 1e300, 0, 0, 0, 0};
-    double xw[3] = {0, 1e-10, 1}, yw[3] = {0, 1e-10, 1};
+    /* the twist overflows (finite slopes, ~z/(hx hy)): node named */
+    double zw[9] = {0, 0, 0, 0, 1e150, 0, 0, 0, 0};
+    double xw[3] = {0, 1e-100, 2e-100}, yw[3] = {0, 1e-100, 2e-100};
     ts_status st = ts_surface_new(xw, 3, yw, 3, zw, NULL, &s, &e);
-    CHECK(st == TS_ERR_NONFINITE);
+    CHECK(st == TS_ERR_NONFINITE && e.where == TS_WHERE_POINT);
     /* control values that overflow: zero twist, large slopes, tiny a */
     ts_surface_options_init(&o);
     o.zero_twist = 1;
@@ -706,6 +706,24 @@ static void test_errors(void)
     CHECK(ts_surface_new(x, 3, x, 3, zu, &o, &s, &e) == TS_ERR_INFEASIBLE && e.index == 1 &&
           e.where == TS_WHERE_INTERVAL);
     CHECK(ts_surface_new(x, 3, x, 3, zut, &o, &s, &e) == TS_ERR_INFEASIBLE && e.index == 2);
+    /* the same on the last row (the patch below it is named) */
+    double zl[9] = {4, 4, 4, 1, 1, 1, 4, 1e-310, 1};
+    CHECK(ts_surface_new(x, 3, x, 3, zl, &o, &s, &e) == TS_ERR_INFEASIBLE && e.index == 3);
+    /* planes: lower only, upper only (valid) */
+    ts_surface_options_init(&o);
+    o.form = TS_FORM_GEOMETRIC;
+    o.shape = TS_SURFACE_PLANES;
+    o.has_lower = 1;
+    o.lower.p = 0.5;
+    o.lower.c = -3;
+    CHECK(ts_surface_new(x, 3, y, 3, z, &o, &s, &e) == TS_OK && ts_surface_certified(s));
+    ts_surface_free(s);
+    o.has_lower = 0;
+    o.has_upper = 1;
+    o.upper.q = -0.5;
+    o.upper.c = 12;
+    CHECK(ts_surface_new(x, 3, y, 3, z, &o, &s, &e) == TS_OK && ts_surface_certified(s));
+    ts_surface_free(s);
     /* overflow of the size */
     CHECK(ts_surface_new(x, SIZE_MAX / 2, y, SIZE_MAX / 2, z, NULL, &s, &e) == TS_ERR_OVERFLOW);
 
@@ -743,6 +761,34 @@ static void test_errors(void)
     hi.c = 8.5; /* the node 9 is above */
     CHECK(ts_surface_certify(s, NULL, &hi, rs, &e) == TS_ERR_VIOLATED && e.index == 3 &&
           !rs[3].certified && rs[3].proven_upper < 0 && rs[0].certified);
+    hi.c = 5.0; /* several patches violate: the first is named */
+    CHECK(ts_surface_certify(s, NULL, &hi, rs, &e) == TS_ERR_VIOLATED);
+    {
+        size_t first = 4, count = 0;
+        for (size_t c = 4; c-- > 0;)
+            if (!rs[c].certified)
+                first = c, count++;
+        CHECK(count >= 2 && e.index == first);
+    }
+    ts_plane sl2 = {0.0, 0.25, -3};
+    CHECK(ts_surface_certify(s, &sl2, NULL, NULL, &e) == TS_OK); /* sloped in y only */
+    /* gaps at the bottom of the subnormal range: the certificate's work is
+     * bounded (depth and piece count) and still a valid bound */
+    {
+        double zs[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+        zs[4] = 3e-322;
+        ts_surface *t = NULL;
+        ts_surface_options oo;
+        ts_surface_options_init(&oo);
+        oo.shape = TS_SURFACE_NONE;
+        oo.alpha = 0.2;
+        CHECK(ts_surface_new(x, 3, y, 3, zs, &oo, &t, &e) == TS_OK);
+        ts_plane below = {0, 0, -1e-323};
+        ts_patch_report rr[4];
+        ts_surface_certify(t, &below, NULL, rr, &e);
+        CHECK(rr[0].proven_lower <= rr[0].sampled_lower && isfinite(rr[0].proven_lower));
+        ts_surface_free(t);
+    }
     double v = 0, dx = 0, dy = 0;
     CHECK(ts_surface_eval(NULL, 0, 0, NULL, &v, &dx, &dy) == TS_ERR_NULL && isnan(v) &&
           isnan(dx) && isnan(dy));
@@ -765,6 +811,7 @@ static void test_errors(void)
     CHECK(ts_surface_eval_grid(s, xq, 3, NULL, 3, out, &e) == TS_ERR_NULL);
     CHECK(ts_surface_eval_grid(s, xq, 3, yq, 3, NULL, &e) == TS_ERR_NULL);
     CHECK(ts_surface_eval_grid(s, NULL, 0, NULL, 0, NULL, &e) == TS_OK);
+    CHECK(ts_surface_eval_grid(s, xq, 1, NULL, 0, NULL, &e) == TS_OK);
     CHECK(ts_surface_eval_grid(s, xq, 3, yq, 3, out, &e) == TS_ERR_DOMAIN && e.index == 1 &&
           isfinite(out[0]) && isnan(out[1]) && isnan(out[6]));
     double xg[2] = {0.5, 1.5}, yg[2] = {0.5, -2};
