@@ -87,7 +87,7 @@ static ts_status check_nodes(ts_surface *s, const ts_surface_options *o, const d
                              ts_error *err)
 {
     size_t np = s->nx + 1, nn = np * (s->ny + 1);
-    double zmin = INFINITY, zmax = -INFINITY;
+    double zmin = (double)INFINITY, zmax = -(double)INFINITY;
     for (size_t n = 0; n < nn; n++) {
         if (!isfinite(z[n]))
             return ts__fail(err, TS_ERR_NONFINITE, n, TS_WHERE_POINT);
@@ -265,7 +265,7 @@ static void clamp_twists(ts_surface *s)
     size_t np = s->nx + 1, nn = np * (s->ny + 1);
     for (size_t n = 0; n < nn; n++) {
         size_t i = n % np, j = n / np;
-        double lo = -INFINITY, hi = INFINITY;
+        double lo = -(double)INFINITY, hi = (double)INFINITY;
         for (int cx = 0; cx < 2; cx++) {
             for (int cy = 0; cy < 2; cy++) {
                 /* patch (i - cx, j - cy); the node is its corner (cx, cy) */
@@ -456,11 +456,11 @@ static void report_patch(const ts_surface *s, size_t i, size_t j, const ts_plane
 static void report_reset(ts_patch_report *rep)
 {
     memset(rep, 0, sizeof *rep);
-    rep->x0 = rep->x1 = rep->y0 = rep->y1 = rep->ax = rep->ay = NAN;
+    rep->x0 = rep->x1 = rep->y0 = rep->y1 = rep->ax = rep->ay = (double)NAN;
     for (int k = 0; k < 16; k++)
-        rep->B[k] = NAN;
-    rep->proven_lower = rep->sampled_lower = rep->at_lower[0] = rep->at_lower[1] = NAN;
-    rep->proven_upper = rep->sampled_upper = rep->at_upper[0] = rep->at_upper[1] = NAN;
+        rep->B[k] = (double)NAN;
+    rep->proven_lower = rep->sampled_lower = rep->at_lower[0] = rep->at_lower[1] = (double)NAN;
+    rep->proven_upper = rep->sampled_upper = rep->at_upper[0] = rep->at_upper[1] = (double)NAN;
 }
 
 ts_status ts_surface_report(const ts_surface *s, size_t i, size_t j, ts_patch_report *rep)

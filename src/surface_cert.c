@@ -70,7 +70,7 @@ static void bb(bb_ctx *c, const double H[49], const double wx[7], const double w
     c->nodes++;
     if (depth > c->depth_max)
         c->depth_max = depth;
-    double lo = INFINITY;
+    double lo = (double)INFINITY;
     for (int m = 0; m < 7; m++)
         for (int n = 0; n < 7; n++) {
             double v = H[7 * m + n] / (wx[m] * wy[n]);
@@ -133,9 +133,9 @@ int ts__surf_certify_patch(const ts_surface *s, size_t i, size_t j, const ts_pla
     /* the linear rest is bounded by its largest value on a piece, which
      * converges only linearly: there the tolerance adds 1e-4 of its range */
     c.tol = 1e-9 * scale + 1e-4 * (fabs(c.kx) + fabs(c.ky)) * TS_HALF_PI;
-    c.best = INFINITY;
+    c.best = (double)INFINITY;
     c.bt = c.bu = 0.0;
-    c.lower = INFINITY;
+    c.lower = (double)INFINITY;
     c.depth_max = 0;
     c.nodes = 0;
     double H[49];

@@ -14,7 +14,7 @@ static int inside(const double *t, size_t n, double v)
 static void set_nan(double *v)
 {
     if (v)
-        *v = NAN;
+        *v = (double)NAN;
 }
 
 /* Value (and partials when zx/zy) at a point known to be on the grid. */
@@ -80,7 +80,7 @@ ts_status ts_surface_eval_batch(const ts_surface *s, const double *xq, const dou
             eval_at(s, xq[n], yq[n], &cur, zq + n, px, py);
             continue;
         }
-        zq[n] = NAN;
+        zq[n] = (double)NAN;
         set_nan(px);
         set_nan(py);
         if (st == TS_OK)
@@ -121,7 +121,7 @@ ts_status ts_surface_eval_grid(const ts_surface *s, const double *xq, size_t mx,
             double *row = out + b * mx + a0, v = yq[b];
             if (!inside(s->y, s->ny, v)) {
                 for (size_t a = 0; a < na; a++)
-                    row[a] = NAN;
+                    row[a] = (double)NAN;
                 continue;
             }
             size_t j = ts__search(s->y, s->ny, v, &cy), ic = SIZE_MAX;
@@ -129,7 +129,7 @@ ts_status ts_surface_eval_grid(const ts_surface *s, const double *xq, size_t mx,
             ts__surf_basis(s->y, s->ay, j, s->form, v, Ay, NULL);
             for (size_t a = 0; a < na; a++) {
                 if (ia[a] == SIZE_MAX) {
-                    row[a] = NAN;
+                    row[a] = (double)NAN;
                     continue;
                 }
                 if (ia[a] != ic) { /* the patch's four curves in x at this y */

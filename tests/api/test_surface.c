@@ -125,7 +125,7 @@ static double ref_min(const long double G[16])
     }
     long double bv[REF_STARTS], bt[REF_STARTS], bp[REF_STARTS];
     for (int k = 0; k < REF_STARTS; k++)
-        bv[k] = INFINITY, bt[k] = bp[k] = 0;
+        bv[k] = (long double)INFINITY, bt[k] = bp[k] = 0;
     for (int a = 0; a <= REF_N; a++) {
         long double C[4];
         for (int l = 0; l < 4; l++)
@@ -139,7 +139,7 @@ static double ref_min(const long double G[16])
                 bv[w] = v, bt[w] = ref_node(a), bp[w] = ref_node(b);
         }
     }
-    long double best = INFINITY;
+    long double best = (long double)INFINITY;
     for (int k = 0; k < REF_STARTS; k++)
         best = fminl(best, compass(G, bt[k], bp[k]));
     return (double)best;
@@ -265,10 +265,11 @@ static void check_surface(const ts_surface *s, const grid *g, const bounds *bd, 
             double scale = 0;
             for (int k = 0; k < 16; k++) {
                 /* geometric form: (11.3); else the bounds are constants */
-                long double Lv = (long double)P->p * X[k / 4] + (long double)P->q * Y[k % 4] + P->c;
+                long double Lv = (long double)P->p * (long double)X[k / 4] +
+                                 (long double)P->q * (long double)Y[k % 4] + (long double)P->c;
                 if (form != TS_FORM_GEOMETRIC)
-                    Lv = P->c;
-                G[k] = side ? Lv - B[k] : B[k] - Lv;
+                    Lv = (long double)P->c;
+                G[k] = side ? Lv - (long double)B[k] : (long double)B[k] - Lv;
                 scale = fmax(scale, fabs((double)G[k]));
             }
             double ref = ref_min(G);

@@ -347,19 +347,20 @@ done:
 /* ---- building ---------------------------------------------------------------- */
 static int report_error(const surf_grid *g, ts_status st, const ts_error *e)
 {
-    char nb[TSU_FMT_SIZE], nb2[TSU_FMT_SIZE];
+    char nb[TSU_FMT_SIZE], nb2[TSU_FMT_SIZE], nb3[TSU_FMT_SIZE], nb4[TSU_FMT_SIZE];
     const char *why = ts_strerror(st);
     if (e->where == TS_WHERE_POINT && e->index < g->nx * g->ny) {
         size_t i = e->index % g->nx, j = e->index / g->nx;
         cli_error("%s: line %llu: node (%zu, %zu) at x=%s, y=%s, z=%s: %s", g->name,
                   g->line[e->index], i, j, cli_num(g->x[i], nb), cli_num(g->y[j], nb2),
-                  cli_num(g->z[e->index], nb2), why);
+                  cli_num(g->z[e->index], nb3), why);
         return CLI_DATA;
     }
     if (e->where == TS_WHERE_INTERVAL) {
         size_t i = e->index % (g->nx - 1), j = e->index / (g->nx - 1);
-        cli_error("%s: patch (%zu, %zu) [%s, %s] x [..]: %s", g->name, i, j,
-                  cli_num(g->x[i], nb), cli_num(g->x[i + 1], nb2), why);
+        cli_error("%s: patch (%zu, %zu) = [%s, %s] x [%s, %s]: %s", g->name, i, j,
+                  cli_num(g->x[i], nb), cli_num(g->x[i + 1], nb2), cli_num(g->y[j], nb3),
+                  cli_num(g->y[j + 1], nb4), why);
         return st == TS_ERR_INFEASIBLE ? CLI_INFEASIBLE : CLI_DATA;
     }
     cli_error("%s: %s", g->name, why);
@@ -419,7 +420,7 @@ static int render_svg(const surf_grid *g, const ts_surface *s, const ts_patch_re
         ys[a] = g->y[0] + (g->y[g->ny - 1] - g->y[0]) * ((double)a + 0.5) / (double)N;
     }
     ts_surface_eval_grid(s, xs, N, ys, N, v, NULL);
-    double lo = INFINITY, hi = -INFINITY;
+    double lo = (double)INFINITY, hi = -(double)INFINITY;
     for (size_t k = 0; k < N * N; k++)
         lo = fmin(lo, v[k]), hi = fmax(hi, v[k]);
     if (!(hi > lo))
@@ -533,7 +534,7 @@ int cli_surface(int argc, char **argv)
             rc = cli_nomem();
             goto out;
         }
-        double zl = INFINITY, zh = -INFINITY;
+        double zl = (double)INFINITY, zh = -(double)INFINITY;
         for (size_t k = 0; k < g.nx * g.ny; k++)
             zl = fmin(zl, g.z[k]), zh = fmax(zh, g.z[k]);
         for (size_t c = 0; c < np; c++) {
@@ -551,7 +552,7 @@ int cli_surface(int argc, char **argv)
         goto out;
     }
     ts_surface_eval_grid(s, xq, mx, yq, my, zq, NULL);
-    double smin = INFINITY, smax = -INFINITY;
+    double smin = (double)INFINITY, smax = -(double)INFINITY;
     for (size_t k = 0; k < mx * my; k++)
         smin = fmin(smin, zq[k]), smax = fmax(smax, zq[k]);
     char nb[TSU_FMT_SIZE];
