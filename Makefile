@@ -65,6 +65,7 @@ test: why-deps python-deps build build-asan build-clang
 	$(call need,$(TEST_TOOLS))
 	$(call need,$(PLOT_TEST_TOOLS))
 	$(call need_file,$(STATIC_LIBC),libc6-dev)
+	$(call need_file,/usr/lib/python3/dist-packages/scipy/__init__.py,python3-scipy)
 	tests/run_all.sh build build-asan build-clang
 
 valgrind: build

@@ -716,6 +716,192 @@ TS_API ts_status ts_error_constants_get(ts_form form, double a, ts_error_constan
 TS_API ts_status ts_error_bound(const ts_spline *s, double fprime_max, double fsecond_max,
                          int exact_slopes, double *bound, double *per_interval);
 
+/* ================================================================== */
+/* Surfaces: gridded 2-D data (docs/method.md §11)                      */
+/* ================================================================== */
+
+/*
+ * S(x, y) through z_ij on a rectilinear grid x_0 < ... < x_nx, y_0 < ... < y_ny
+ * (non-uniform allowed).  On the patch [x_i, x_{i+1}] × [y_j, y_{j+1}]
+ * S = Σ_k Σ_l A_k(θ) A_l(φ) B_kl, the basis of docs/method.md §2 in each
+ * direction: 16 control values per patch, built from the node values z,
+ * the partial slopes p = ∂z/∂x, q = ∂z/∂y (1-D slope methods along the grid
+ * lines) and a twist r (docs/method.md §11.1).  One shape parameter per
+ * column interval (a^x_i) and per row interval (a^y_j), shared along the
+ * grid.  The forms of docs/method.md §3–§4 carry over (§11.2): paper
+ * (continuous), C¹ and geometric (C¹, planes reproduced exactly).
+ *
+ * Layout: z[j * nx_points + i] is the value at (x[i], y[j]) (rows of constant
+ * y, x fastest).  A node (i, j) is reported in ts_error as index
+ * j * nx_points + i (where = TS_WHERE_POINT); a patch (i, j) as
+ * j * (nx_points - 1) + i (where = TS_WHERE_INTERVAL); the n-th query as n.
+ */
+typedef struct ts_surface ts_surface;
+
+/* The plane z = p x + q y + c. */
+typedef struct ts_plane {
+    double p, q, c;
+} ts_plane;
+
+/* docs/method.md §11.3.  The region the surface must stay in. */
+typedef enum ts_surface_shape {
+    TS_SURFACE_NONE = 0,     /* a^x = a^y = alpha + beta (caller's); no promise */
+    TS_SURFACE_POSITIVE = 1, /* S >= 0 (zeros in the data allowed; S > 0 inside patches
+                                with a positive corner) */
+    TS_SURFACE_BOUNDS = 2,   /* lower.c <= S and/or S <= upper.c (constants, has_lower /
+                                has_upper; the data may touch them); lower.p/q, upper.p/q
+                                are ignored */
+    TS_SURFACE_PLANES = 3,   /* lower < S and/or S < upper (planes, has_lower / has_upper;
+                                every node strictly between).  Sloped planes need
+                                TS_FORM_GEOMETRIC, where they are exact (TS_ERR_OPTION
+                                otherwise); constant planes work in every form. */
+    TS_SURFACE_RANGE = 4     /* min z <= S <= max z: no overshoot beyond the data */
+} ts_surface_shape;
+
+/* Start from ts_surface_options_init(), then set fields. */
+typedef struct ts_surface_options {
+    ts_form form;            /* default TS_FORM_PAPER (stated explicitly by careful callers) */
+    ts_slopes slopes;        /* default TS_SLOPES_ARITHMETIC, applied along every grid line;
+                                TS_SLOPES_USER and TS_SLOPES_PERIODIC: TS_ERR_OPTION */
+    int zero_twist;          /* default 0: twist r = (∂p/∂y + ∂q/∂x)/2 by the same
+                                method; nonzero: r = 0 */
+    double alpha;            /* default 1; > 0 */
+    double beta;             /* default 0; TS_SURFACE_NONE only: a = alpha + beta */
+    double margin;           /* t of docs/method.md §5, default TS_DEFAULT_MARGIN; > 0 */
+    ts_surface_shape shape;  /* default TS_SURFACE_NONE */
+    int has_lower, has_upper;/* TS_SURFACE_BOUNDS, TS_SURFACE_PLANES */
+    ts_plane lower, upper;
+} ts_surface_options;
+
+TS_API void ts_surface_options_init(ts_surface_options *opt);
+
+/*
+ * Build the surface.  opt may be NULL (defaults).  *out is NULL first, then
+ * the surface on success; on failure nothing stays allocated.
+ * Returns (checked in this order; node errors name the first node in z order):
+ *   TS_ERR_NULL        x, y, z or out NULL
+ *   TS_ERR_TOO_FEW     nx_points < 2 or ny_points < 2
+ *   TS_ERR_OPTION      form, slopes or shape out of range; USER/PERIODIC slopes;
+ *                      BOUNDS/PLANES with neither side; sloped planes outside
+ *                      the geometric form
+ *   TS_ERR_OVERFLOW    the grid's size in bytes overflows size_t
+ *   TS_ERR_NONFINITE   NaN/Inf in x (index i), y (index j), z (node), a bound,
+ *                      or a slope or control value that overflows (node / patch)
+ *   TS_ERR_UNSORTED    x or y not strictly increasing (index i resp. j)
+ *   TS_ERR_ALPHA, TS_ERR_BETA, TS_ERR_MARGIN   (no index)
+ *   TS_ERR_GEOMETRIC   TS_SURFACE_NONE in the geometric form with
+ *                      alpha + beta < TS_GEOMETRIC_A_MIN
+ *   TS_ERR_NEGATIVE    POSITIVE: a node with z < 0
+ *   TS_ERR_LINES       BOUNDS: lower.c >= upper.c; PLANES: lower not strictly
+ *                      below upper at a node
+ *   TS_ERR_SIDE        BOUNDS: a node outside [lower.c, upper.c]; PLANES: a node on
+ *                      or across a plane
+ *   TS_ERR_INFEASIBLE  a patch whose control values, as rounded, leave the region
+ *                      (the rule of §11.3 is a proof in exact arithmetic; this
+ *                      is rounding, e.g. a node 1e-16 relative from a plane),
+ *                      or whose a would exceed 1e300 (a node gap near the
+ *                      underflow threshold next to a slope); index = the patch
+ *   TS_ERR_NOMEM
+ */
+TS_API ts_status ts_surface_new(const double *x, size_t nx_points, const double *y,
+                                size_t ny_points, const double *z,
+                                const ts_surface_options *opt, ts_surface **out,
+                                ts_error *err);
+TS_API void ts_surface_free(ts_surface *s); /* NULL: no-op */
+
+/* ---- accessors (s must be valid; pointers live as long as s) */
+TS_API size_t ts_surface_nx(const ts_surface *s);         /* patches along x (points - 1) */
+TS_API size_t ts_surface_ny(const ts_surface *s);         /* patches along y */
+TS_API const double *ts_surface_x(const ts_surface *s);   /* nx + 1 */
+TS_API const double *ts_surface_y(const ts_surface *s);   /* ny + 1 */
+TS_API const double *ts_surface_z(const ts_surface *s);   /* (nx+1)(ny+1), layout of z */
+TS_API const double *ts_surface_dzdx(const ts_surface *s); /* slopes p used (after the scheme) */
+TS_API const double *ts_surface_dzdy(const ts_surface *s); /* slopes q used */
+TS_API const double *ts_surface_twist(const ts_surface *s);/* twists r used */
+TS_API const double *ts_surface_ax(const ts_surface *s);  /* nx: a^x_i */
+TS_API const double *ts_surface_ay(const ts_surface *s);  /* ny: a^y_j */
+TS_API ts_form ts_surface_form(const ts_surface *s);
+TS_API ts_surface_shape ts_surface_shape_of(const ts_surface *s);
+/* 1 when a scheme was applied and every patch is proven inside its region
+ * (always, when ts_surface_new succeeded with a scheme); 0 for NONE. */
+TS_API int ts_surface_certified(const ts_surface *s);
+
+/* Caller-owned lookup hint: zero-initialise (TS_SURFACE_CURSOR_INIT) or NULL. */
+typedef struct ts_surface_cursor {
+    ts_cursor x, y;
+} ts_surface_cursor;
+#define TS_SURFACE_CURSOR_INIT {{0}, {0}}
+
+/*
+ * Value and first partials at (x, y) (z, zx, zy may each be NULL; NaN on
+ * failure).  On an inner grid line the patch to the right / above is used.
+ * TS_OK, TS_ERR_NULL (s), TS_ERR_DOMAIN (outside the grid or NaN).
+ * No allocation; nodes are reproduced exactly.
+ */
+TS_API ts_status ts_surface_eval(const ts_surface *s, double x, double y,
+                                 ts_surface_cursor *cur, double *z, double *zx, double *zy);
+/* Scattered points (xq[n], yq[n]), n < m; zq required, zxq / zyq may be NULL.
+ * Invalid points get NaN, the rest are evaluated; TS_ERR_DOMAIN with
+ * err->index = the first invalid point.  TS_OK, TS_ERR_NULL. */
+TS_API ts_status ts_surface_eval_batch(const ts_surface *s, const double *xq, const double *yq,
+                                       size_t m, double *zq, double *zxq, double *zyq,
+                                       ts_error *err);
+/* Outer product: out[b * mx + a] = S(xq[a], yq[b]) (the layout of z).  Fast
+ * for sorted xq (bases computed once per block of x values).  Entries whose
+ * xq or yq is invalid get NaN; TS_ERR_DOMAIN with err->index = a (an invalid
+ * xq[a]) or mx + b (an invalid yq[b]), the first of those.
+ * TS_OK, TS_ERR_NULL (s, out, or xq / yq with a count > 0). */
+TS_API ts_status ts_surface_eval_grid(const ts_surface *s, const double *xq, size_t mx,
+                                      const double *yq, size_t my, double *out, ts_error *err);
+/* ∫∫ S over [xa, xb] × [ya, yb] (reversed limits give the sign), closed form
+ * per patch (paper, C¹); geometric form: Gauss–Legendre in θ exact to
+ * rounding (docs/method.md §11.5).  TS_OK, TS_ERR_NULL, TS_ERR_DOMAIN (a limit
+ * outside the grid or NaN; *out NaN). */
+TS_API ts_status ts_surface_integral(const ts_surface *s, double xa, double xb, double ya,
+                                     double yb, double *out);
+
+/* The 16 control values of patch (i, j), B[4*k + l] with k along x and l
+ * along y, and (X, Y may be NULL) the control abscissae of the form (as for
+ * ts_spline_control).  TS_OK, TS_ERR_NULL, TS_ERR_INDEX. */
+TS_API ts_status ts_surface_control(const ts_surface *s, size_t i, size_t j, double B[16],
+                                    double X[4], double Y[4]);
+
+/*
+ * The certificate of one patch (docs/method.md §11.4).  For each active
+ * bound: a proven lower bound on the gap (S − lower, resp. upper − S) over
+ * the patch, from the control values of a rational Bernstein form of the
+ * patch, refined by subdivision until it is within 1e-9 of the patch's
+ * scale (max |control gap|) of the smallest sampled gap, minus a rounding guard; the
+ * smallest sampled gap (a true value of the surface) and where it is.
+ * certified = every active proven bound > 0, or the control values
+ * themselves inside the region (a proof: the basis is >= 0 and sums to 1;
+ * then the proven bound is at least 0).
+ */
+typedef struct ts_patch_report {
+    size_t i, j;
+    double x0, x1, y0, y1;
+    double ax, ay;
+    double B[16];
+    int has_lower, has_upper;
+    double proven_lower, sampled_lower, at_lower[2]; /* NaN when absent */
+    double proven_upper, sampled_upper, at_upper[2];
+    int certified;
+} ts_patch_report;
+
+/* Report of patch (i, j) against the scheme's bounds (NONE: no bound,
+ * certified 0).  TS_OK, TS_ERR_NULL, TS_ERR_INDEX. */
+TS_API ts_status ts_surface_report(const ts_surface *s, size_t i, size_t j,
+                                   ts_patch_report *rep);
+/* Certify against any planes (lower, upper may be NULL; not both): reports
+ * (if not NULL) receive nx*ny entries (patch (i, j) at j*nx + i).  Paper and
+ * C¹ forms with a sloped plane: the plane's variation over a sub-patch is
+ * subtracted; that bound converges only linearly, so there the tolerance
+ * adds 1e-4 of the plane's variation over the patch.  TS_OK when every patch is certified; TS_ERR_VIOLATED (index
+ * = first patch that is not); TS_ERR_NONFINITE (a plane); TS_ERR_NULL. */
+TS_API ts_status ts_surface_certify(const ts_surface *s, const ts_plane *lower,
+                                    const ts_plane *upper, ts_patch_report *reports,
+                                    ts_error *err);
+
 #ifdef __cplusplus
 }
 #endif

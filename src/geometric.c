@@ -245,3 +245,8 @@ ts_status ts__geo_check(ts_spline *sp, size_t i0, size_t i1, ts_error *err)
     }
     return TS_OK;
 }
+
+double ts__geo_solve(double kappa, double u)
+{
+    return geo_solve(kappa, u);
+}

@@ -13,9 +13,12 @@
  *   L2  interval.c  one interval of any form: value, derivatives, integral
  *       shape.c     the schemes' β rules and data checks
  *       certificate.c  interval gaps, hull and control-value proofs (read-only)
+ *       surface_net.c  surfaces: control nets, patch bases, control gaps
  *   L3  kernels.c   batch evaluation kernels
  *       repair.c    certification at build time: raise β until certified
- *   L4  spline.c, curve.c, eval.c, report.c, accuracy.c: the public API */
+ *       surface_cert.c  surfaces: the certificate of one patch (subdivision)
+ *   L4  spline.c, curve.c, eval.c, report.c, accuracy.c: the public API
+ *       surface.c, surface_eval.c: the public surface API */
 #ifndef TS_SRC_INTERNAL_H
 #define TS_SRC_INTERNAL_H
 
@@ -84,6 +87,20 @@ struct ts_spline {
                           * other forms (X1 = x_i + K_i, X2 = x_{i+1} - K_i there) */
     unsigned char *term; /* n: ts_term */
     double *cum;         /* n+1: cum[i] = ∫_{x0}^{x_i} S dx (set last by spline.c) */
+};
+
+/* docs/method.md §11.  Node (i, j) at j*(nx+1) + i; patch (i, j) at j*nx + i. */
+struct ts_surface {
+    size_t nx, ny;                   /* patches along x, y */
+    ts_form form;
+    ts_surface_shape shape;
+    int has_lower, has_upper;        /* the scheme's bounds (positive, range: constants) */
+    ts_plane lower, upper;
+    int certified;
+    double *x, *y;                   /* nx+1, ny+1 */
+    double *z, *p, *q, *r;           /* nodes: value, ∂z/∂x, ∂z/∂y, twist */
+    double *ax, *ay;                 /* nx, ny */
+    double *B;                       /* 16 per patch: B[16*patch + 4*k + l] */
 };
 
 /* ==== L0 ============================================================ */
@@ -311,6 +328,9 @@ ts_status ts__geo_check(ts_spline *sp, size_t i0, size_t i1, ts_error *err);
 void ts__geo_eval(const ts_spline *sp, size_t i, double x, int want, double out[3]);
 /* ∫_{x_i}^{x} S dx' on interval i (x in the interval). */
 double ts__geo_integral(const ts_spline *sp, size_t i, double x);
+/* φ in [0, π/4] with X̂(φ) = u, u in [0, 1/2], κ = 2/(3π a) (the solve of
+ * ts__geo_eval; used by the surfaces of docs/method.md §11). */
+double ts__geo_solve(double kappa, double u);
 
 /* ==== L2 ============================================================ */
 
@@ -390,7 +410,43 @@ void ts__mono_certify(const double *restrict f, const double *restrict b1,
                       const double *restrict h, size_t i0, size_t i1, double m, double c,
                       double sg, int positive, unsigned char *restrict ok);
 
+/* ---- surface_net.c (docs/method.md §11) ---------------------------------------- */
+/* The basis of one direction at a query: knots t[0..n], shape parameters
+ * a[0..n-1], interval i (t in it), form.  A[4] the basis, dA[4] (may be NULL)
+ * its derivative in t (dA/dθ · dθ/dt). */
+void ts__surf_basis(const double *t, const double *a, size_t i, ts_form form, double v,
+                    double A[4], double *dA);
+/* Local control abscissae X̂_0..3 of interval i in units of its width:
+ * (0, κ, 1 − κ, 1), κ = 2/(3π a_i) (geometric) or 2/(3π) (paper, C¹: the
+ * abscissae of θ linear in t, for plotting). */
+void ts__surf_xhat(const double *a, size_t i, ts_form form, double X[4]);
+/* ∫ A_k dt over [ta, tb] in interval i (both in it): W[4]. */
+void ts__surf_basis_int(const double *t, const double *a, size_t i, ts_form form, double ta,
+                        double tb, double W[4]);
+/* k of interval i (knots t, n intervals) at its end node (node = i or i + 1):
+ * K/a_i, K = 2h_i/(3π), in the paper and geometric forms; K/max(a of the
+ * node's intervals) in the C¹ form (docs/method.md §11.2). */
+double ts__surf_k(const double *t, const double *a, size_t n, size_t i, size_t node,
+                  ts_form form);
+/* Control nets of every patch from z, p, q, r, ax, ay (docs/method.md §11.1). */
+void ts__surf_net(ts_surface *s);
+/* Control gaps of patch (i, j) to a plane: G[16] = sign (B − plane at the
+ * control abscissae), *guard the rounding of forming them (0 for a
+ * constant plane: then the signs are exact). */
+void ts__surf_gaps(const ts_surface *s, size_t i, size_t j, const ts_plane *pl, int sign,
+                   double G[16], double *guard);
+/* Are all 16 gaps >= guard (nonzero corners: > guard)?  Proves the patch on
+ * the plane's side (docs/method.md §11.3). */
+int ts__surf_gaps_inside(const double G[16], double guard);
+
 /* ==== L3 ============================================================ */
+
+/* ---- surface_cert.c (docs/method.md §11.4) -------------------------------------- */
+/* Certificate of patch (i, j) against one plane (sign +1: S − plane,
+ * −1: plane − S): *proven a proven lower bound of the gap, *sampled the
+ * least gap found at a point (*ax, *ay); returns 1 when certified. */
+int ts__surf_certify_patch(const ts_surface *s, size_t i, size_t j, const ts_plane *pl,
+                           int sign, double *proven, double *sampled, double *ax, double *ay);
 
 /* ---- kernels.c (batch kernels) ----------------------------------------- */
 /* Queries are taken in blocks of TS_FAST_BLOCK. */

@@ -79,5 +79,22 @@ check("x = 1, 14, 15" in page or "x = 1, 14 and 15" in page, "Table 2 note names
 check(page.count("Differs from the paper") >= 3, "notes on the paper's differences (Fig. 4b, Table 2, Theorem 4)")
 check("What really happens" in page, "note on the closed curves and large beta")
 check("−145" in page or "-145" in page or "145" in page, "printed Theorem 4 panel shows the violation")
+# the surface section (docs/method.md §11): certified panels say so; the
+# unconstrained ones and the bicubic of the same data leave the region
+check("Surfaces — certified" in page, "surface section present")
+surf = [(t, c, sm) for t, c, sm in panels if c.startswith("trigspline surface")]
+check(len(surf) == 4, "four surface panels (got %d)" % len(surf))
+for title, cmd, summary in surf:
+    status = re.search(r"exit status (\d+)", summary)
+    check(status is not None and status.group(1) == "0", "%s: exit 0" % title)
+    rng = re.search(r"range on \d+ samples: \[([^,]+), ([^\]]+)\]", summary)
+    lo, hi = (float(rng.group(1)), float(rng.group(2))) if rng else (float("nan"),) * 2
+    if "--shape" in cmd:
+        check("certified: <b>yes</b>" in summary and lo >= 0, "%s: certified, >= 0" % title)
+        if "--upper 100" in cmd:
+            check(hi <= 100, "%s: <= 100" % title)
+    else:
+        check(lo < 0, "%s: the unconstrained surface goes below 0 (%s)" % (title, lo))
+check(len(re.findall(r"ranges over \[-", page)) == 2, "the bicubic goes negative on both fields")
 print("test_demo: %d passed, %d failed" % (passed, failed))
 sys.exit(1 if failed else 0)

@@ -17,6 +17,7 @@
  *   spline_plot.c  the SVG plot of a spline
  *   stream.c       fit in constant memory (CSV samples of long inputs)
  *   fit.c, certify.c, curve.c   the commands
+ *   surface.c      the surface command (its own options; gridded data)
  *   help.c         --help texts
  *   args.c         argv -> cli_opts
  *   main.c         picks the command
@@ -368,6 +369,8 @@ int cli_fit_stream(const cli_opts *o, const ts_options *opt);
 int cli_fit(cli_opts *o);
 int cli_certify(cli_opts *o);
 int cli_curve(cli_opts *o);
+/* surface.c: the whole `surface` command, its own options (argv after it). */
+int cli_surface(int argc, char **argv);
 
 /* ---- overshoot.c ----------------------------------------------------- */
 /* The curve's range and its largest excursions beyond the data of an

@@ -55,6 +55,8 @@ void cli_print_main_help(void)
            "           below or between lines, or monotone; write samples, JSON, SVG\n"
            "  certify  check a spline with your own alpha, beta against boundaries\n"
            "  curve    parametric curve through 2-D or 3-D points (open or closed)\n"
+           "  surface  certified surface through gridded x,y,z data (long or matrix\n"
+           "           layout): kept positive, within bounds, planes or the data range\n"
            "\n"
            "  trigspline COMMAND --help   options of a command\n"
            "  trigspline --version        print the version\n"

@@ -21,6 +21,8 @@ int main(int argc, char **argv)
         printf("trigspline %s\n", ts_version());
         return fflush(stdout) == 0 ? CLI_OK : CLI_IO;
     }
+    if (strcmp(c, "surface") == 0)
+        return cli_surface(argc - 2, argv + 2);
     cli_cmd cmd;
     if (strcmp(c, "fit") == 0)
         cmd = CLI_FIT;

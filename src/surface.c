@@ -1,0 +1,504 @@
+/* docs/method.md §11: building a surface (slopes, twists, the scheme's
+ * shape parameters), accessors, reports and certificates. */
+#include "internal.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void defaults(ts_surface_options *opt)
+{
+    memset(opt, 0, sizeof *opt);
+    opt->form = TS_FORM_PAPER;
+    opt->slopes = TS_SLOPES_ARITHMETIC;
+    opt->alpha = 1.0;
+    opt->beta = 0.0;
+    opt->margin = TS_DEFAULT_MARGIN;
+    opt->shape = TS_SURFACE_NONE;
+}
+
+void ts_surface_options_init(ts_surface_options *opt)
+{
+    if (opt)
+        defaults(opt);
+}
+
+static double plane_at(const ts_plane *pl, double x, double y)
+{
+    return pl->p * x + pl->q * y + pl->c;
+}
+
+static int finite_plane(const ts_plane *pl)
+{
+    return isfinite(pl->p) && isfinite(pl->q) && isfinite(pl->c);
+}
+
+static int sloped(const ts_plane *pl)
+{
+    return pl->p != 0.0 || pl->q != 0.0;
+}
+
+/* Arguments and options (everything before the data). */
+static ts_status check_options(const ts_surface_options *o, ts_error *err)
+{
+    if ((unsigned)o->form > TS_FORM_GEOMETRIC || (unsigned)o->slopes >= TS_SLOPES_COUNT_ ||
+        o->slopes == TS_SLOPES_USER || o->slopes == TS_SLOPES_PERIODIC ||
+        (unsigned)o->shape > TS_SURFACE_RANGE)
+        return ts__fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
+    int sides = o->shape == TS_SURFACE_BOUNDS || o->shape == TS_SURFACE_PLANES;
+    if (sides && !o->has_lower && !o->has_upper)
+        return ts__fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
+    if (o->shape == TS_SURFACE_PLANES && o->form != TS_FORM_GEOMETRIC &&
+        ((o->has_lower && sloped(&o->lower)) || (o->has_upper && sloped(&o->upper))))
+        return ts__fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!(o->alpha > 0.0 && o->alpha <= DBL_MAX))
+        return ts__fail(err, TS_ERR_ALPHA, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!(o->beta >= 0.0 && o->alpha + o->beta <= DBL_MAX))
+        return ts__fail(err, TS_ERR_BETA, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!(o->margin > 0.0 && o->margin <= DBL_MAX))
+        return ts__fail(err, TS_ERR_MARGIN, TS_NO_INDEX, TS_WHERE_NONE);
+    if (o->form == TS_FORM_GEOMETRIC && o->shape == TS_SURFACE_NONE &&
+        !(o->alpha + o->beta >= TS_GEOMETRIC_A_MIN))
+        return ts__fail(err, TS_ERR_GEOMETRIC, TS_NO_INDEX, TS_WHERE_NONE);
+    if (sides && ((o->has_lower && !finite_plane(&o->lower)) ||
+                  (o->has_upper && !finite_plane(&o->upper))))
+        return ts__fail(err, TS_ERR_NONFINITE, TS_NO_INDEX, TS_WHERE_NONE);
+    if (o->shape == TS_SURFACE_BOUNDS && o->has_lower && o->has_upper &&
+        !(o->lower.c < o->upper.c))
+        return ts__fail(err, TS_ERR_LINES, TS_NO_INDEX, TS_WHERE_NONE);
+    return TS_OK;
+}
+
+static ts_status check_axis(const double *t, size_t np, ts_error *err)
+{
+    for (size_t i = 0; i < np; i++) {
+        if (!isfinite(t[i]))
+            return ts__fail(err, TS_ERR_NONFINITE, i, TS_WHERE_POINT);
+        if (i > 0 && !(t[i] > t[i - 1]))
+            return ts__fail(err, TS_ERR_UNSORTED, i, TS_WHERE_POINT);
+    }
+    return TS_OK;
+}
+
+/* The scheme's bounds into s (docs/method.md §11.3), then the nodes. */
+static ts_status check_nodes(ts_surface *s, const ts_surface_options *o, const double *z,
+                             ts_error *err)
+{
+    size_t np = s->nx + 1, nn = np * (s->ny + 1);
+    double zmin = (double)INFINITY, zmax = -(double)INFINITY;
+    for (size_t n = 0; n < nn; n++) {
+        if (!isfinite(z[n]))
+            return ts__fail(err, TS_ERR_NONFINITE, n, TS_WHERE_POINT);
+        zmin = z[n] < zmin ? z[n] : zmin;
+        zmax = z[n] > zmax ? z[n] : zmax;
+    }
+    ts_plane zero = {0.0, 0.0, 0.0};
+    s->lower = s->upper = zero;
+    s->has_lower = s->has_upper = 0;
+    switch (o->shape) {
+    case TS_SURFACE_POSITIVE:
+        s->has_lower = 1;
+        break;
+    case TS_SURFACE_BOUNDS:
+        s->has_lower = o->has_lower != 0;
+        s->has_upper = o->has_upper != 0;
+        s->lower.c = o->lower.c;
+        s->upper.c = o->upper.c;
+        break;
+    case TS_SURFACE_PLANES:
+        s->has_lower = o->has_lower != 0;
+        s->has_upper = o->has_upper != 0;
+        s->lower = o->lower;
+        s->upper = o->upper;
+        break;
+    case TS_SURFACE_RANGE:
+        s->has_lower = s->has_upper = 1;
+        s->lower.c = zmin;
+        s->upper.c = zmax;
+        break;
+    default:
+        break;
+    }
+    int strict = o->shape == TS_SURFACE_PLANES;
+    for (size_t n = 0; n < nn; n++) {
+        double xv = s->x[n % np], yv = s->y[n / np];
+        double lo = plane_at(&s->lower, xv, yv), hi = plane_at(&s->upper, xv, yv);
+        if (o->shape == TS_SURFACE_POSITIVE && z[n] < 0.0)
+            return ts__fail(err, TS_ERR_NEGATIVE, n, TS_WHERE_POINT);
+        if (strict && s->has_lower && s->has_upper && !(lo < hi))
+            return ts__fail(err, TS_ERR_LINES, n, TS_WHERE_POINT);
+        if ((s->has_lower && (strict ? !(z[n] > lo) : z[n] < lo)) ||
+            (s->has_upper && (strict ? !(z[n] < hi) : z[n] > hi)))
+            return ts__fail(err, TS_ERR_SIDE, n, TS_WHERE_POINT);
+    }
+    return TS_OK;
+}
+
+/* Partial slopes along every grid line: d[j*np + i] = slope in x of row j
+ * (dir 0), or in y of column i (dir 1), of the node values v. */
+static ts_status line_slopes(const ts_surface *s, ts_slopes method, int dir, const double *v,
+                             double *d, double *tmp, ts_error *err)
+{
+    size_t np = s->nx + 1, nq = s->ny + 1;
+    size_t lines = dir ? np : nq, len = dir ? nq : np;
+    const double *t = dir ? s->y : s->x;
+    double *f = tmp, *g = tmp + len;
+    for (size_t L = 0; L < lines; L++) {
+        for (size_t k = 0; k < len; k++)
+            f[k] = v[dir ? k * np + L : L * np + k];
+        ts_error e;
+        if (ts__slopes(method, t, f, len, g, &e) != TS_OK)
+            return ts__fail(err, TS_ERR_NONFINITE, dir ? e.index * np + L : L * np + e.index,
+                            TS_WHERE_POINT);
+        for (size_t k = 0; k < len; k++)
+            d[dir ? k * np + L : L * np + k] = g[k];
+    }
+    return TS_OK;
+}
+
+/* The same without the check (twists: their sum is checked). */
+static void line_slopes_raw(const ts_surface *s, ts_slopes method, int dir, const double *v,
+                            double *d, double *tmp)
+{
+    size_t np = s->nx + 1, nq = s->ny + 1;
+    size_t lines = dir ? np : nq, len = dir ? nq : np;
+    const double *t = dir ? s->y : s->x;
+    double *f = tmp, *g = tmp + len;
+    for (size_t L = 0; L < lines; L++) {
+        for (size_t k = 0; k < len; k++)
+            f[k] = v[dir ? k * np + L : L * np + k];
+        ts__slopes_range(method, t, f, len, g, 0, len);
+        for (size_t k = 0; k < len; k++)
+            d[dir ? k * np + L : L * np + k] = g[k];
+    }
+}
+
+/* docs/method.md §11.3: a node on a constant bound (gap 0) needs slopes that
+ * point into the region: 0 inside, one-signed at the grid's edges. */
+static double clamp_touch(double d, size_t idx, size_t n, double into)
+{
+    if (idx == 0)
+        return into * d > 0.0 ? d : 0.0;
+    if (idx == n)
+        return into * d < 0.0 ? d : 0.0;
+    return 0.0;
+}
+
+static void touch_slopes(ts_surface *s)
+{
+    size_t np = s->nx + 1, nn = np * (s->ny + 1);
+    for (size_t n = 0; n < nn; n++) {
+        size_t i = n % np, j = n / np;
+        for (int side = 0; side < 2; side++) {
+            int has = side ? s->has_upper : s->has_lower;
+            double c = side ? s->upper.c : s->lower.c;
+            if (has && s->z[n] == c) {
+                double into = side ? -1.0 : 1.0;
+                s->p[n] = clamp_touch(s->p[n], i, s->nx, into);
+                s->q[n] = clamp_touch(s->q[n], j, s->ny, into);
+            }
+        }
+    }
+}
+
+/* The gap of node n to side (0 lower, 1 upper) and the slopes relative to
+ * the plane, all with the sign that makes "inside" positive. */
+static void node_gap(const ts_surface *s, size_t n, int side, double *g, double *pp, double *qq)
+{
+    size_t np = s->nx + 1;
+    const ts_plane *pl = side ? &s->upper : &s->lower;
+    double sg = side ? -1.0 : 1.0;
+    *g = sg * (s->z[n] - plane_at(pl, s->x[n % np], s->y[n / np]));
+    *pp = sg * (s->p[n] - pl->p);
+    *qq = sg * (s->q[n] - pl->q);
+}
+
+/* docs/method.md §11.3: a^x_i (dir 0) or a^y_j (dir 1) of the scheme. */
+static ts_status scheme_a(ts_surface *s, const ts_surface_options *o, int dir, ts_error *err)
+{
+    size_t np = s->nx + 1, n = dir ? s->ny : s->nx, lines = dir ? s->nx + 1 : s->ny + 1;
+    const double *t = dir ? s->y : s->x;
+    double *a = dir ? s->ay : s->ax;
+    for (size_t i = 0; i < n; i++) {
+        double K = 2.0 * (t[i + 1] - t[i]) / (3.0 * TS_PI), T = 0.0;
+        for (size_t L = 0; L < lines; L++) {
+            for (int end = 0; end < 2; end++) {
+                size_t node = dir ? (i + (size_t)end) * np + L : L * np + i + (size_t)end;
+                for (int side = 0; side < 2; side++) {
+                    if (!(side ? s->has_upper : s->has_lower))
+                        continue;
+                    double g, pp, qq;
+                    node_gap(s, node, side, &g, &pp, &qq);
+                    /* the inward edge term ±k d' must keep at least half the gap */
+                    double d = (end ? -1.0 : 1.0) * (dir ? qq : pp);
+                    if (d < 0.0) {
+                        /* an a beyond 1e300 is refused (as in 1-D, docs/method.md
+                         * §5.7): a gap near the underflow threshold */
+                        if (2.0 * K * -d > 1e300 * g) {
+                            size_t pl = L < lines - 1 ? L : lines - 2;
+                            return ts__fail(err, TS_ERR_INFEASIBLE,
+                                            dir ? i * s->nx + pl : pl * s->nx + i,
+                                            TS_WHERE_INTERVAL);
+                        }
+                        double need = 2.0 * K * -d / g;
+                        T = need > T ? need : T;
+                    }
+                }
+            }
+        }
+        /* the margin: additive as in 1-D and relative on the rule's value, so
+         * that F of (11.4) keeps t/(1 + t) of the gap however large a is */
+        T *= 1.0 + o->margin;
+        a[i] = o->margin + (T > o->alpha ? T : o->alpha);
+        if (o->form == TS_FORM_GEOMETRIC && a[i] < TS_GEOMETRIC_A_RAISE)
+            a[i] = TS_GEOMETRIC_A_RAISE;
+    }
+    return TS_OK;
+}
+
+/* docs/method.md §11.3: clamp every twist so that on each of its patches the
+ * inner control gap keeps at least half of what the edges leave. */
+static void clamp_twists(ts_surface *s)
+{
+    size_t np = s->nx + 1, nn = np * (s->ny + 1);
+    for (size_t n = 0; n < nn; n++) {
+        size_t i = n % np, j = n / np;
+        double lo = -(double)INFINITY, hi = (double)INFINITY;
+        for (int cx = 0; cx < 2; cx++) {
+            for (int cy = 0; cy < 2; cy++) {
+                /* patch (i - cx, j - cy); the node is its corner (cx, cy) */
+                if ((cx && i == 0) || (!cx && i == s->nx) || (cy && j == 0) ||
+                    (!cy && j == s->ny))
+                    continue;
+                size_t pi = i - (size_t)cx, pj = j - (size_t)cy;
+                double ux = 2.0 * (s->x[pi + 1] - s->x[pi]) / (3.0 * TS_PI * s->ax[pi]);
+                double uy = 2.0 * (s->y[pj + 1] - s->y[pj]) / (3.0 * TS_PI * s->ay[pj]);
+                double sx = cx ? -1.0 : 1.0, sy = cy ? -1.0 : 1.0;
+                for (int side = 0; side < 2; side++) {
+                    if (!(side ? s->has_upper : s->has_lower))
+                        continue;
+                    double g, pp, qq;
+                    node_gap(s, n, side, &g, &pp, &qq);
+                    double F = g + sx * ux * pp + sy * uy * qq;
+                    double c = (side ? -1.0 : 1.0) * sx * sy * ux * uy; /* c r >= -F/2 */
+                    if (c > 0.0)
+                        lo = fmax(lo, -0.5 * F / c);
+                    if (c < 0.0)
+                        hi = fmin(hi, -0.5 * F / c);
+                }
+            }
+        }
+        s->r[n] = s->r[n] < lo ? lo : (s->r[n] > hi ? hi : s->r[n]);
+    }
+}
+
+static void release(ts_surface *s)
+{
+    if (!s)
+        return;
+    free(s->x);
+    free(s);
+}
+
+ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, size_t ny_points,
+                         const double *z, const ts_surface_options *opt, ts_surface **out,
+                         ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (out)
+        *out = NULL;
+    if (!x || !y || !z || !out)
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    if (nx_points < 2 || ny_points < 2)
+        return ts__fail(err, TS_ERR_TOO_FEW, TS_NO_INDEX, TS_WHERE_NONE);
+    ts_surface_options def;
+    defaults(&def);
+    const ts_surface_options *o = opt ? opt : &def;
+    ts_status st = check_options(o, err);
+    if (st != TS_OK)
+        return st;
+    /* 24 (nx+1)(ny+1) + 4 (nx + ny + 2) doubles <= 32 (nx+1)(ny+1) */
+    if (ny_points > SIZE_MAX / 32 / sizeof(double) / nx_points)
+        return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
+    if ((st = check_axis(x, nx_points, err)) != TS_OK ||
+        (st = check_axis(y, ny_points, err)) != TS_OK)
+        return st;
+    size_t nx = nx_points - 1, ny = ny_points - 1, nn = nx_points * ny_points;
+    size_t len = nx_points > ny_points ? nx_points : ny_points;
+    size_t total = nx_points + ny_points + 4 * nn + nx + ny + 16 * nx * ny + 2 * len + nn;
+    ts_surface *s = ts__calloc(1, sizeof *s);
+    double *blk = s ? ts__alloc_block(total * sizeof(double)) : NULL;
+    if (!blk) {
+        free(s);
+        return ts__fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
+    }
+    s->nx = nx;
+    s->ny = ny;
+    s->form = o->form;
+    s->shape = o->shape;
+    s->x = blk;
+    s->y = s->x + nx_points;
+    s->z = s->y + ny_points;
+    s->p = s->z + nn;
+    s->q = s->p + nn;
+    s->r = s->q + nn;
+    s->ax = s->r + nn;
+    s->ay = s->ax + nx;
+    s->B = s->ay + ny;
+    double *tmp = s->B + 16 * nx * ny, *tmp2 = tmp + 2 * len;
+    memcpy(s->x, x, nx_points * sizeof(double));
+    memcpy(s->y, y, ny_points * sizeof(double));
+    if ((st = check_nodes(s, o, z, err)) != TS_OK)
+        goto fail;
+    memcpy(s->z, z, nn * sizeof(double));
+    if ((st = line_slopes(s, o->slopes, 0, s->z, s->p, tmp, err)) != TS_OK ||
+        (st = line_slopes(s, o->slopes, 1, s->z, s->q, tmp, err)) != TS_OK)
+        goto fail;
+    if (o->zero_twist) {
+        for (size_t n = 0; n < nn; n++)
+            s->r[n] = 0.0;
+    } else {
+        /* r = (∂q/∂x + ∂p/∂y)/2: symmetric under transposition */
+        line_slopes_raw(s, o->slopes, 0, s->q, s->r, tmp);
+        line_slopes_raw(s, o->slopes, 1, s->p, tmp2, tmp);
+        for (size_t n = 0; n < nn; n++) {
+            s->r[n] = 0.5 * (s->r[n] + tmp2[n]);
+            if (!isfinite(s->r[n])) {
+                st = ts__fail(err, TS_ERR_NONFINITE, n, TS_WHERE_POINT);
+                goto fail;
+            }
+        }
+    }
+    if (o->shape == TS_SURFACE_NONE) {
+        for (size_t i = 0; i < nx; i++)
+            s->ax[i] = o->alpha + o->beta;
+        for (size_t j = 0; j < ny; j++)
+            s->ay[j] = o->alpha + o->beta;
+    } else {
+        touch_slopes(s);
+        if ((st = scheme_a(s, o, 0, err)) != TS_OK || (st = scheme_a(s, o, 1, err)) != TS_OK)
+            goto fail;
+        clamp_twists(s);
+    }
+    ts__surf_net(s);
+    for (size_t c = 0; c < nx * ny; c++)
+        for (size_t k = 0; k < 16; k++)
+            if (!isfinite(s->B[16 * c + k])) {
+                st = ts__fail(err, TS_ERR_NONFINITE, c, TS_WHERE_INTERVAL);
+                goto fail;
+            }
+    for (size_t c = 0; c < nx * ny; c++) {
+        for (int side = 0; side < 2; side++) {
+            if (!(side ? s->has_upper : s->has_lower))
+                continue;
+            double G[16], guard;
+            ts__surf_gaps(s, c % nx, c / nx, side ? &s->upper : &s->lower, 1 - 2 * side, G,
+                          &guard);
+            if (!ts__surf_gaps_inside(G, guard)) {
+                st = ts__fail(err, TS_ERR_INFEASIBLE, c, TS_WHERE_INTERVAL);
+                goto fail;
+            }
+        }
+    }
+    s->certified = o->shape != TS_SURFACE_NONE;
+    *out = s;
+    return TS_OK;
+fail:
+    release(s);
+    return st;
+}
+
+void ts_surface_free(ts_surface *s)
+{
+    release(s);
+}
+
+size_t ts_surface_nx(const ts_surface *s) { return s->nx; }
+size_t ts_surface_ny(const ts_surface *s) { return s->ny; }
+const double *ts_surface_x(const ts_surface *s) { return s->x; }
+const double *ts_surface_y(const ts_surface *s) { return s->y; }
+const double *ts_surface_z(const ts_surface *s) { return s->z; }
+const double *ts_surface_dzdx(const ts_surface *s) { return s->p; }
+const double *ts_surface_dzdy(const ts_surface *s) { return s->q; }
+const double *ts_surface_twist(const ts_surface *s) { return s->r; }
+const double *ts_surface_ax(const ts_surface *s) { return s->ax; }
+const double *ts_surface_ay(const ts_surface *s) { return s->ay; }
+ts_form ts_surface_form(const ts_surface *s) { return s->form; }
+ts_surface_shape ts_surface_shape_of(const ts_surface *s) { return s->shape; }
+int ts_surface_certified(const ts_surface *s) { return s->certified; }
+
+static void report_patch(const ts_surface *s, size_t i, size_t j, const ts_plane *lower,
+                         const ts_plane *upper, ts_patch_report *rep)
+{
+    rep->i = i;
+    rep->j = j;
+    rep->x0 = s->x[i];
+    rep->x1 = s->x[i + 1];
+    rep->y0 = s->y[j];
+    rep->y1 = s->y[j + 1];
+    rep->ax = s->ax[i];
+    rep->ay = s->ay[j];
+    memcpy(rep->B, s->B + 16 * (j * s->nx + i), sizeof rep->B);
+    rep->has_lower = lower != NULL;
+    rep->has_upper = upper != NULL;
+    int ok = lower || upper;
+    if (lower)
+        ok &= ts__surf_certify_patch(s, i, j, lower, 1, &rep->proven_lower, &rep->sampled_lower,
+                                     &rep->at_lower[0], &rep->at_lower[1]);
+    if (upper)
+        ok &= ts__surf_certify_patch(s, i, j, upper, -1, &rep->proven_upper,
+                                     &rep->sampled_upper, &rep->at_upper[0], &rep->at_upper[1]);
+    rep->certified = ok;
+}
+
+static void report_reset(ts_patch_report *rep)
+{
+    memset(rep, 0, sizeof *rep);
+    rep->x0 = rep->x1 = rep->y0 = rep->y1 = rep->ax = rep->ay = (double)NAN;
+    for (int k = 0; k < 16; k++)
+        rep->B[k] = (double)NAN;
+    rep->proven_lower = rep->sampled_lower = rep->at_lower[0] = rep->at_lower[1] = (double)NAN;
+    rep->proven_upper = rep->sampled_upper = rep->at_upper[0] = rep->at_upper[1] = (double)NAN;
+}
+
+ts_status ts_surface_report(const ts_surface *s, size_t i, size_t j, ts_patch_report *rep)
+{
+    if (!rep)
+        return TS_ERR_NULL;
+    report_reset(rep);
+    if (!s)
+        return TS_ERR_NULL;
+    if (i >= s->nx || j >= s->ny)
+        return TS_ERR_INDEX;
+    report_patch(s, i, j, s->has_lower ? &s->lower : NULL, s->has_upper ? &s->upper : NULL,
+                 rep);
+    return TS_OK;
+}
+
+ts_status ts_surface_certify(const ts_surface *s, const ts_plane *lower, const ts_plane *upper,
+                             ts_patch_report *reports, ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!s)
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    size_t np = s->nx * s->ny;
+    if (reports)
+        for (size_t c = 0; c < np; c++)
+            report_reset(&reports[c]);
+    if (!lower && !upper)
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    if ((lower && !finite_plane(lower)) || (upper && !finite_plane(upper)))
+        return ts__fail(err, TS_ERR_NONFINITE, TS_NO_INDEX, TS_WHERE_NONE);
+    ts_status st = TS_OK;
+    for (size_t c = 0; c < np; c++) {
+        ts_patch_report r;
+        report_patch(s, c % s->nx, c / s->nx, lower, upper, &r);
+        if (reports)
+            reports[c] = r;
+        if (!r.certified && st == TS_OK)
+            st = ts__fail(err, TS_ERR_VIOLATED, c, TS_WHERE_INTERVAL);
+    }
+    return st;
+}

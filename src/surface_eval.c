@@ -1,0 +1,212 @@
+/* docs/method.md §11: evaluating a surface (points, batches, grids), its
+ * integral over a rectangle, its control nets.  No allocation. */
+#include "internal.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+static int inside(const double *t, size_t n, double v)
+{
+    return t[0] <= v && v <= t[n];
+}
+
+static void set_nan(double *v)
+{
+    if (v)
+        *v = (double)NAN;
+}
+
+/* Value (and partials when zx/zy) at a point known to be on the grid. */
+static void eval_at(const ts_surface *s, double x, double y, ts_surface_cursor *cur, double *z,
+                    double *zx, double *zy)
+{
+    size_t i = ts__search(s->x, s->nx, x, cur ? &cur->x : NULL);
+    size_t j = ts__search(s->y, s->ny, y, cur ? &cur->y : NULL);
+    double Ax[4], Ay[4], dAx[4], dAy[4];
+    int want = zx || zy;
+    ts__surf_basis(s->x, s->ax, i, s->form, x, Ax, want ? dAx : NULL);
+    ts__surf_basis(s->y, s->ay, j, s->form, y, Ay, want ? dAy : NULL);
+    const double *B = s->B + 16 * (j * s->nx + i);
+    double v = 0.0, vx = 0.0, vy = 0.0;
+    for (int k = 0; k < 4; k++) {
+        double c = 0.0, cy = 0.0;
+        for (int l = 0; l < 4; l++) {
+            c += Ay[l] * B[4 * k + l];
+            if (want)
+                cy += dAy[l] * B[4 * k + l];
+        }
+        v += Ax[k] * c;
+        if (want) {
+            vx += dAx[k] * c;
+            vy += Ax[k] * cy;
+        }
+    }
+    *z = v;
+    if (zx)
+        *zx = vx;
+    if (zy)
+        *zy = vy;
+}
+
+ts_status ts_surface_eval(const ts_surface *s, double x, double y, ts_surface_cursor *cur,
+                          double *z, double *zx, double *zy)
+{
+    set_nan(z);
+    set_nan(zx);
+    set_nan(zy);
+    if (!s)
+        return TS_ERR_NULL;
+    if (!inside(s->x, s->nx, x) || !inside(s->y, s->ny, y))
+        return TS_ERR_DOMAIN;
+    double v;
+    eval_at(s, x, y, cur, &v, zx, zy);
+    if (z)
+        *z = v;
+    return TS_OK;
+}
+
+ts_status ts_surface_eval_batch(const ts_surface *s, const double *xq, const double *yq,
+                                size_t m, double *zq, double *zxq, double *zyq, ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!s || (m > 0 && (!xq || !yq || !zq)))
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    ts_surface_cursor cur = TS_SURFACE_CURSOR_INIT;
+    ts_status st = TS_OK;
+    for (size_t n = 0; n < m; n++) {
+        double *px = zxq ? zxq + n : NULL, *py = zyq ? zyq + n : NULL;
+        if (inside(s->x, s->nx, xq[n]) && inside(s->y, s->ny, yq[n])) {
+            eval_at(s, xq[n], yq[n], &cur, zq + n, px, py);
+            continue;
+        }
+        zq[n] = (double)NAN;
+        set_nan(px);
+        set_nan(py);
+        if (st == TS_OK)
+            st = ts__fail(err, TS_ERR_DOMAIN, n, TS_WHERE_QUERY);
+    }
+    return st;
+}
+
+#define GRID_BLOCK 64
+
+ts_status ts_surface_eval_grid(const ts_surface *s, const double *xq, size_t mx,
+                               const double *yq, size_t my, double *out, ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!s || (mx > 0 && !xq) || (my > 0 && !yq) || (mx > 0 && my > 0 && !out))
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    ts_status st = TS_OK;
+    for (size_t a = 0; a < mx && st == TS_OK; a++)
+        if (!inside(s->x, s->nx, xq[a]))
+            st = ts__fail(err, TS_ERR_DOMAIN, a, TS_WHERE_QUERY);
+    for (size_t b = 0; b < my && st == TS_OK; b++)
+        if (!inside(s->y, s->ny, yq[b]))
+            st = ts__fail(err, TS_ERR_DOMAIN, mx + b, TS_WHERE_QUERY);
+    ts_cursor cx = TS_CURSOR_INIT, cy = TS_CURSOR_INIT;
+    for (size_t a0 = 0; a0 < mx; a0 += GRID_BLOCK) {
+        size_t na = mx - a0 < GRID_BLOCK ? mx - a0 : GRID_BLOCK;
+        double Ax[GRID_BLOCK][4];
+        size_t ia[GRID_BLOCK];
+        for (size_t a = 0; a < na; a++) {
+            double v = xq[a0 + a];
+            ia[a] = SIZE_MAX;
+            if (inside(s->x, s->nx, v)) {
+                ia[a] = ts__search(s->x, s->nx, v, &cx);
+                ts__surf_basis(s->x, s->ax, ia[a], s->form, v, Ax[a], NULL);
+            }
+        }
+        for (size_t b = 0; b < my; b++) {
+            double *row = out + b * mx + a0, v = yq[b];
+            if (!inside(s->y, s->ny, v)) {
+                for (size_t a = 0; a < na; a++)
+                    row[a] = (double)NAN;
+                continue;
+            }
+            size_t j = ts__search(s->y, s->ny, v, &cy), ic = SIZE_MAX;
+            double Ay[4], C[4] = {0.0, 0.0, 0.0, 0.0};
+            ts__surf_basis(s->y, s->ay, j, s->form, v, Ay, NULL);
+            for (size_t a = 0; a < na; a++) {
+                if (ia[a] == SIZE_MAX) {
+                    row[a] = (double)NAN;
+                    continue;
+                }
+                if (ia[a] != ic) { /* the patch's four curves in x at this y */
+                    ic = ia[a];
+                    const double *B = s->B + 16 * (j * s->nx + ic);
+                    for (int k = 0; k < 4; k++)
+                        C[k] = Ay[0] * B[4 * k] + Ay[1] * B[4 * k + 1] + Ay[2] * B[4 * k + 2] +
+                               Ay[3] * B[4 * k + 3];
+                }
+                row[a] = Ax[a][0] * C[0] + Ax[a][1] * C[1] + Ax[a][2] * C[2] + Ax[a][3] * C[3];
+            }
+        }
+    }
+    return st;
+}
+
+ts_status ts_surface_integral(const ts_surface *s, double xa, double xb, double ya, double yb,
+                              double *out)
+{
+    set_nan(out);
+    if (!s || !out)
+        return TS_ERR_NULL;
+    if (!inside(s->x, s->nx, xa) || !inside(s->x, s->nx, xb) || !inside(s->y, s->ny, ya) ||
+        !inside(s->y, s->ny, yb))
+        return TS_ERR_DOMAIN;
+    double sign = 1.0;
+    if (xa > xb) {
+        double t = xa;
+        xa = xb;
+        xb = t;
+        sign = -sign;
+    }
+    if (ya > yb) {
+        double t = ya;
+        ya = yb;
+        yb = t;
+        sign = -sign;
+    }
+    size_t i0 = ts__search(s->x, s->nx, xa, NULL), i1 = ts__search(s->x, s->nx, xb, NULL);
+    size_t j0 = ts__search(s->y, s->ny, ya, NULL), j1 = ts__search(s->y, s->ny, yb, NULL);
+    double sum = 0.0;
+    for (size_t i = i0; i <= i1; i++) {
+        double Wx[4];
+        ts__surf_basis_int(s->x, s->ax, i, s->form, fmax(xa, s->x[i]), fmin(xb, s->x[i + 1]),
+                           Wx);
+        for (size_t j = j0; j <= j1; j++) {
+            double Wy[4];
+            ts__surf_basis_int(s->y, s->ay, j, s->form, fmax(ya, s->y[j]),
+                               fmin(yb, s->y[j + 1]), Wy);
+            const double *B = s->B + 16 * (j * s->nx + i);
+            for (int k = 0; k < 4; k++)
+                for (int l = 0; l < 4; l++)
+                    sum += Wx[k] * Wy[l] * B[4 * k + l];
+        }
+    }
+    *out = sign * sum;
+    return TS_OK;
+}
+
+ts_status ts_surface_control(const ts_surface *s, size_t i, size_t j, double B[16], double X[4],
+                             double Y[4])
+{
+    if (!s || !B)
+        return TS_ERR_NULL;
+    if (i >= s->nx || j >= s->ny)
+        return TS_ERR_INDEX;
+    memcpy(B, s->B + 16 * (j * s->nx + i), 16 * sizeof(double));
+    double hx = s->x[i + 1] - s->x[i], hy = s->y[j + 1] - s->y[j];
+    if (X) {
+        ts__surf_xhat(s->ax, i, s->form, X);
+        for (int k = 0; k < 4; k++)
+            X[k] = s->x[i] + hx * X[k];
+    }
+    if (Y) {
+        ts__surf_xhat(s->ay, j, s->form, Y);
+        for (int l = 0; l < 4; l++)
+            Y[l] = s->y[j] + hy * Y[l];
+    }
+    return TS_OK;
+}

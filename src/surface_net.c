@@ -1,0 +1,191 @@
+/* docs/method.md §11: the control net of a surface patch, the basis of one
+ * direction at a query, and control gaps to a plane. */
+#include "internal.h"
+
+#include <float.h>
+#include <math.h>
+
+/* Gauss–Legendre, 12 points on [-1, 1] (positive half; published values). */
+static const double gl_x[6] = {0.1252334085114689, 0.3678314989981802, 0.5873179542866175,
+                               0.7699026741943047, 0.9041172563704748, 0.9815606342467192};
+static const double gl_w[6] = {0.2491470458134027, 0.23349253653835464, 0.20316742672306565,
+                               0.1600783285433461, 0.10693932599531888, 0.04717533638651202};
+
+static double kappa_of(const double *a, size_t i, ts_form form)
+{
+    return form == TS_FORM_GEOMETRIC ? 2.0 / (3.0 * TS_PI * a[i]) : 2.0 / (3.0 * TS_PI);
+}
+
+void ts__surf_xhat(const double *a, size_t i, ts_form form, double X[4])
+{
+    double kap = kappa_of(a, i, form);
+    X[0] = 0.0;
+    X[1] = kap;
+    X[2] = 1.0 - kap;
+    X[3] = 1.0;
+}
+
+/* X̂'(θ) of the geometric form (docs/method.md §4) from dA/dθ. */
+static double xhat_d1(double kap, const double D[4])
+{
+    return kap * D[1] + (1.0 - kap) * D[2] + D[3];
+}
+
+void ts__surf_basis(const double *t, const double *a, size_t i, ts_form form, double v,
+                    double A[4], double *dA)
+{
+    double h = t[i + 1] - t[i];
+    double u = (v - t[i]) / h, w = (t[i + 1] - v) / h; /* from the nearer end: exact knots */
+    int right = u > 0.5;
+    double phi, s, c;
+    if (form == TS_FORM_GEOMETRIC)
+        phi = ts__geo_solve(2.0 / (3.0 * TS_PI * a[i]), right ? w : u);
+    else
+        phi = TS_HALF_PI * (right ? w : u);
+    s = sin(phi);
+    c = cos(phi);
+    if (right) { /* θ = π/2 − φ */
+        double tmp = s;
+        s = c;
+        c = tmp;
+    }
+    ts__basis(s, c, A);
+    if (dA) {
+        double D[4];
+        ts__basis_d1(s, c, D);
+        double dtheta = form == TS_FORM_GEOMETRIC
+                            ? 1.0 / (h * xhat_d1(2.0 / (3.0 * TS_PI * a[i]), D))
+                            : TS_HALF_PI / h;
+        for (int k = 0; k < 4; k++)
+            dA[k] = D[k] * dtheta;
+    }
+}
+
+/* θ of a point of interval i (geometric: the solve; else linear). */
+static double theta_at(const double *t, const double *a, size_t i, ts_form form, double v)
+{
+    double h = t[i + 1] - t[i];
+    double u = (v - t[i]) / h;
+    if (form != TS_FORM_GEOMETRIC)
+        return TS_HALF_PI * u;
+    double kap = 2.0 / (3.0 * TS_PI * a[i]);
+    return u <= 0.5 ? ts__geo_solve(kap, u) : TS_HALF_PI - ts__geo_solve(kap, (t[i + 1] - v) / h);
+}
+
+/* ∫ A_k(θ) X̂'(θ) dθ over [t0, t1] ⊂ [0, π/2] of length <= π/4: Gauss–Legendre,
+ * exact to rounding for the degree-6 trigonometric integrand. */
+static void geo_int_piece(double kap, double t0, double t1, double W[4])
+{
+    double mid = 0.5 * (t0 + t1), half = 0.5 * (t1 - t0);
+    for (int m = 0; m < 12; m++) {
+        double th = mid + (m < 6 ? -half * gl_x[m] : half * gl_x[m - 6]);
+        double wt = half * gl_w[m < 6 ? m : m - 6];
+        double A[4], D[4], s = sin(th), c = cos(th);
+        ts__basis(s, c, A);
+        ts__basis_d1(s, c, D);
+        double xp = xhat_d1(kap, D) * wt;
+        for (int k = 0; k < 4; k++)
+            W[k] += A[k] * xp;
+    }
+}
+
+void ts__surf_basis_int(const double *t, const double *a, size_t i, ts_form form, double ta,
+                        double tb, double W[4])
+{
+    double h = t[i + 1] - t[i];
+    double th0 = theta_at(t, a, i, form, ta), th1 = theta_at(t, a, i, form, tb);
+    if (form != TS_FORM_GEOMETRIC) {
+        double I0[4], I1[4];
+        ts__basis_int(th0, sin(th0), cos(th0), I0);
+        ts__basis_int(th1, sin(th1), cos(th1), I1);
+        for (int k = 0; k < 4; k++)
+            W[k] = (I1[k] - I0[k]) * h / TS_HALF_PI;
+        return;
+    }
+    double kap = 2.0 / (3.0 * TS_PI * a[i]), q = 0.25 * TS_PI;
+    for (int k = 0; k < 4; k++)
+        W[k] = 0.0;
+    /* pieces of length <= π/4: split at π/4 */
+    if (th0 < q && th1 > q) {
+        geo_int_piece(kap, th0, q, W);
+        geo_int_piece(kap, q, th1, W);
+    } else {
+        geo_int_piece(kap, th0, th1, W);
+    }
+    for (int k = 0; k < 4; k++)
+        W[k] *= h;
+}
+
+double ts__surf_k(const double *t, const double *a, size_t n, size_t i, size_t node,
+                  ts_form form)
+{
+    double K = 2.0 * (t[i + 1] - t[i]) / (3.0 * TS_PI), am = a[i];
+    if (form == TS_FORM_C1) {
+        if (node > 0 && a[node - 1] > am)
+            am = a[node - 1];
+        if (node < n && a[node] > am)
+            am = a[node];
+    }
+    return K / am;
+}
+
+void ts__surf_net(ts_surface *s)
+{
+    size_t nx = s->nx, ny = s->ny, np = nx + 1;
+    for (size_t j = 0; j < ny; j++) {
+        for (size_t i = 0; i < nx; i++) {
+            double *B = s->B + 16 * (j * nx + i);
+            /* the four corners: (k, l) of the corner, σ the inward signs */
+            for (int cy = 0; cy < 2; cy++) {
+                for (int cx = 0; cx < 2; cx++) {
+                    size_t ni = i + (size_t)cx, nj = j + (size_t)cy, n = nj * np + ni;
+                    double ux = ts__surf_k(s->x, s->ax, nx, i, ni, s->form);
+                    double uy = ts__surf_k(s->y, s->ay, ny, j, nj, s->form);
+                    double sx = cx ? -1.0 : 1.0, sy = cy ? -1.0 : 1.0;
+                    double ex = sx * ux * s->p[n], ey = sy * uy * s->q[n];
+                    int k0 = cx ? 3 : 0, l0 = cy ? 3 : 0, k1 = cx ? 2 : 1, l1 = cy ? 2 : 1;
+                    B[4 * k0 + l0] = s->z[n];
+                    B[4 * k1 + l0] = s->z[n] + ex;
+                    B[4 * k0 + l1] = s->z[n] + ey;
+                    B[4 * k1 + l1] = s->z[n] + ex + ey + sx * sy * ux * uy * s->r[n];
+                }
+            }
+        }
+    }
+}
+
+void ts__surf_gaps(const ts_surface *s, size_t i, size_t j, const ts_plane *pl, int sign,
+                   double G[16], double *guard)
+{
+    double X[4], Y[4], hx = s->x[i + 1] - s->x[i], hy = s->y[j + 1] - s->y[j];
+    const double *B = s->B + 16 * (j * s->nx + i);
+    ts__surf_xhat(s->ax, i, s->form, X);
+    ts__surf_xhat(s->ay, j, s->form, Y);
+    int geo = s->form == TS_FORM_GEOMETRIC;
+    double e = 0.0;
+    for (int k = 0; k < 4; k++) {
+        for (int l = 0; l < 4; l++) {
+            /* the plane at the control abscissae (geometric form, docs/method.md
+             * §11.2); in the paper and C¹ forms at the patch corner (the
+             * linear rest is the certificate's, §11.4) */
+            double px = pl->p * (s->x[i] + (geo ? hx * X[k] : 0.0));
+            double qy = pl->q * (s->y[j] + (geo ? hy * Y[l] : 0.0));
+            double L = px + qy + pl->c;
+            double m = fabs(px) + fabs(qy);
+            if (m > e)
+                e = m;
+            G[4 * k + l] = sign > 0 ? B[4 * k + l] - L : L - B[4 * k + l];
+        }
+    }
+    /* the plane's rounding (3 operations, with the abscissae: 6 ε) and the
+     * subtraction; 0 for a constant plane, where the signs are exact */
+    *guard = e > 0.0 ? 16.0 * DBL_EPSILON * (e + fabs(pl->c)) : 0.0;
+}
+
+int ts__surf_gaps_inside(const double G[16], double guard)
+{
+    int ok = 1;
+    for (int k = 0; k < 16; k++)
+        ok &= G[k] >= guard;
+    return ok;
+}

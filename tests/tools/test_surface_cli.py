@@ -1,0 +1,211 @@
+#!/usr/bin/env python3
+"""Script test of `trigspline surface` (docs/method.md §11).
+
+Usage: python3 tests/tools/test_surface_cli.py BUILD_DIR   (standard library only)
+
+The long and matrix layouts give the same surface; rows in any order give the
+same output; nodes are interpolated exactly (round-trip numbers); the
+positive scheme stays >= 0 where the unconstrained surface goes negative (a
+spiky field, values written here); the percentage field stays in [0, 100];
+--json is valid JSON with a certificate per patch; --svg is well-formed XML;
+every data error names the file, the line and the node, exits with status 2
+(3 for an infeasible patch, 1 for a usage error) and writes nothing.
+Also runs the exact check of the Bernstein table (tests/ref/surface_ref.py).
+Prints "test_surface_cli: N passed, M failed" last.
+"""
+import json
+import os
+import shutil
+import random
+import subprocess
+import sys
+import tempfile
+import xml.etree.ElementTree as ET
+
+BUILD = sys.argv[1] if len(sys.argv) > 1 else "build"
+CLI = os.path.abspath(os.path.join(BUILD, "trigspline"))
+HERE = os.path.dirname(os.path.abspath(__file__))
+REPO = os.path.dirname(os.path.dirname(HERE))
+TMP = tempfile.mkdtemp(prefix="ts_surface_cli_")
+passed = failed = 0
+
+
+def check(name, cond, detail=""):
+    global passed, failed
+    if cond:
+        passed += 1
+    else:
+        failed += 1
+        print("FAIL: %s %s" % (name, detail))
+
+
+def run(*args, stdin=None):
+    p = subprocess.run([CLI, "surface", *args], input=stdin, capture_output=True, text=True)
+    return p.returncode, p.stdout, p.stderr
+
+
+def write(name, text):
+    path = os.path.join(TMP, name)
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+def parse_long(text):
+    rows = [l.split(",") for l in text.strip().splitlines()[1:]]
+    return [(float(a), float(b), float(c)) for a, b, c in rows]
+
+
+# a spiky positive field on a non-uniform grid (zeros included)
+X = [0.0, 0.4, 1.5, 1.7, 3.0, 4.2]
+Y = [-1.0, 0.0, 0.3, 2.0, 2.5]
+Z = [[0, 0, 5, 0, 1, 0], [0, 12, 0, 0, 0.5, 3], [7, 0, 0, 9, 0, 0], [0, 0.2, 0, 0, 4, 0],
+     [1, 0, 0, 6, 0, 2]]
+long_rows = [(x, y, Z[j][i]) for j, y in enumerate(Y) for i, x in enumerate(X)]
+LONG = write("spiky.csv", "x,y,z\n" + "".join("%r,%r,%r\n" % r for r in long_rows))
+shuffled = list(long_rows)
+random.Random(7).shuffle(shuffled)
+SHUF = write("spiky_shuffled.csv", "x,y,z\n" + "".join("%r,%r,%r\n" % r for r in shuffled))
+MAT = write("spiky_matrix.csv", "y\\x," + ",".join(map(repr, X)) + "\n" +
+            "".join(repr(y) + "," + ",".join(repr(v) for v in Z[j]) + "\n"
+                    for j, y in enumerate(Y)))
+
+# ---- layouts, order, interpolation ------------------------------------------
+rc1, out1, _ = run(LONG, "--shape", "positive", "--samples", "6")
+rc2, out2, _ = run(SHUF, "--shape", "positive", "--samples", "6")
+rc3, out3, _ = run(MAT, "--matrix", "--shape", "positive", "--samples", "6")
+check("long ok", rc1 == 0, str(rc1))
+check("row order does not matter", out1 == out2)
+check("matrix = long", out1 == out3)
+pts = parse_long(out1)
+check("rows", len(pts) == (5 * 6 + 1) * (4 * 6 + 1), str(len(pts)))
+nodes = {(x, y): z for x, y, z in pts}
+check("nodes exact", all(nodes.get((x, y)) == z for x, y, z in long_rows))
+check("positive >= 0", min(z for _, _, z in pts) >= 0.0)
+rc, outn, _ = run(LONG, "--samples", "6")
+check("unconstrained goes negative", rc == 0 and min(z for _, _, z in parse_long(outn)) < -0.1)
+rc, outm, _ = run(MAT, "--matrix", "--shape", "positive", "--samples", "2", "--matrix-out")
+lines = outm.strip().splitlines()
+check("matrix out", rc == 0 and len(lines) == 4 * 2 + 2 and lines[0].startswith("y\\x,0,"))
+rc, outg, _ = run(LONG, "--grid", "7,5", "--form", "geometric", "--shape", "range")
+gp = parse_long(outg)
+check("grid", rc == 0 and len(gp) == 35 and gp[-1][:2] == (4.2, 2.5))
+check("range", all(0.0 <= z <= 12.0 for _, _, z in gp))
+# stdin
+with open(LONG) as f:
+    rc, outs, _ = run("-", "--shape", "positive", "--samples", "6", stdin=f.read())
+check("stdin", rc == 0 and outs == out1)
+
+# ---- percentages -------------------------------------------------------------
+PCT = write("pct.csv", "x,y,z\n" + "".join("%r,%r,%r\n" % (x, y, min(100.0, 25 * Z[j][i]))
+                                           for j, y in enumerate(Y) for i, x in enumerate(X)))
+for form in ("paper", "c1", "geometric"):
+    rc, o, _ = run(PCT, "--shape", "bounds", "--lower", "0", "--upper", "100", "--form", form,
+                   "--samples", "8")
+    zs = [z for _, _, z in parse_long(o)]
+    check("percent " + form, rc == 0 and min(zs) >= 0.0 and max(zs) <= 100.0,
+          "%s %s" % (min(zs), max(zs)))
+rc, o, _ = run(PCT, "--samples", "8")
+check("percent unconstrained leaves [0, 100]",
+      rc == 0 and (max(z for _, _, z in parse_long(o)) > 100 or min(z for _, _, z in parse_long(o)) < 0))
+
+# ---- JSON and SVG --------------------------------------------------------------
+svg = os.path.join(TMP, "s.svg")
+rc, oj, err = run(LONG, "--shape", "positive", "--json", "--svg", svg)
+check("json rc", rc == 0, err)
+try:
+    doc = json.loads(oj)
+except ValueError:
+    doc = {}
+check("json fields", doc.get("certified") is True and doc.get("nx_points") == 6 and
+      len(doc.get("patches", [])) == 20)
+check("json certificates", all(p["certified"] and p["proven_lower"] >= 0 and
+                               p["proven_lower"] <= p["sampled_lower"] for p in doc.get("patches", [])))
+check("json active", any(p["active"] for p in doc.get("patches", [])))
+try:
+    root = ET.parse(svg).getroot()
+    ok = root.tag.endswith("svg") and len(root.findall(".//{http://www.w3.org/2000/svg}circle")) == 30
+except (ET.ParseError, OSError):
+    ok = False
+check("svg", ok)
+rc, oj, _ = run(LONG, "--json", "--form", "geometric", "--shape", "planes", "--lower", "0.1,0.2,-3",
+                "--upper", "0,0,20")
+doc = json.loads(oj) if rc == 0 else {}
+check("planes json", rc == 0 and doc.get("certified") is True and
+      all("proven_upper" in p for p in doc.get("patches", [])))
+
+# ---- errors: status, message naming line and node, nothing written -----------
+def err_case(name, path, args, status, needles):
+    target = os.path.join(TMP, name + ".out")
+    rc, _, e = run(path, *args, "-o", target)
+    check(name + " status", rc == status, "%d %s" % (rc, e))
+    check(name + " message", all(n in e for n in needles), e)
+    check(name + " nothing written", not os.path.exists(target))
+
+
+neg = list(long_rows)
+neg[8] = (neg[8][0], neg[8][1], -0.5)  # node (2, 1), line 10
+NEG = write("neg.csv", "x,y,z\n" + "".join("%r,%r,%r\n" % r for r in neg))
+err_case("negative", NEG, ["--shape", "positive"], 2, ["neg.csv", "line 10", "node (2, 1)", "z=-0.5"])
+INF = write("infeasible.csv", "x,y,z\n0,0,4\n1,0,1e-310\n2,0,1\n0,1,4\n1,1,1\n2,1,1\n")
+err_case("infeasible", INF, ["--shape", "positive"], 3, ["patch (1, 0) = [1, 2] x [0, 1]"])
+MISS = write("miss.csv", "x,y,z\n" + "".join("%r,%r,%r\n" % r for r in long_rows[:-1]))
+err_case("missing", MISS, [], 2, ["missing node (x=4.2, y=2.5)"])
+DUP = write("dup.csv", "x,y,z\n" + "".join("%r,%r,%r\n" % r for r in long_rows + [long_rows[3]]))
+err_case("duplicate", DUP, [], 2, ["line 32", "duplicate node (x=1.7, y=-1)", "line 5"])
+NAN = write("nan.csv", "x,y,z\n0,0,1\n1,0,nan\n0,1,1\n1,1,1\n")
+err_case("nan", NAN, [], 2, ["nan.csv", ":3"])
+RAG = write("ragged.csv", "x,y,z\n0,0,1\n1,0\n")
+err_case("ragged", RAG, [], 2, ["ragged.csv", ":3"])
+err_case("side", LONG, ["--shape", "bounds", "--lower", "0.1"], 2, ["line 2", "node (0, 0)"])
+err_case("plane side", LONG, ["--shape", "planes", "--form", "geometric", "--lower", "0,0,0"], 2,
+         ["node (0, 0)", "on or across"])
+err_case("lines", LONG, ["--shape", "bounds", "--lower", "5", "--upper", "5"], 2, ["spiky.csv"])
+err_case("sloped paper", LONG, ["--shape", "planes", "--lower", "1,0,-100"], 1, ["spiky.csv"])
+MUNS = write("unsorted.csv", "y\\x,0,2,1\n0,1,2,3\n1,4,5,6\n")
+err_case("matrix unsorted x", MUNS, ["--matrix"], 2, ["line 1", "column 4", "x = 1"])
+MUNY = write("unsorted_y.csv", "y\\x,0,1\n0,1,2\n2,4,5\n1,4,5\n")
+err_case("matrix unsorted y", MUNY, ["--matrix"], 2, ["line 4", "y = 1"])
+MBAD = write("mbad.csv", "y\\x,0,b\n0,1,2\n1,4,5\n")
+err_case("matrix header", MBAD, ["--matrix"], 2, ["column 3", "\"b\""])
+err_case("three columns", MAT, [], 2, ["3 columns"])
+err_case("tiny matrix", write("tiny.csv", "y\\x,0\n0,1\n"), ["--matrix"], 2, ["at least 2"])
+err_case("no file", os.path.join(TMP, "absent.csv"), [], 5, ["absent.csv"])
+for args, needle in ((["--shape", "wobbly"], "--shape"), (["--alpha", "-1"], "--alpha"),
+                     (["--grid", "3"], "--grid"), (["--samples", "0"], "--samples"),
+                     (["--bogus", "1"], "unknown option"), (["--form"], "needs a value"),
+                     (["--lower", "1,2"], "--lower"), (["--slopes", "user"], "--slopes"),
+                     ([LONG], "more than one")):
+    rc, _, e = run(LONG, *args)
+    check("usage " + needle, rc == 1 and needle in e, e)
+rc, _, e = run()
+check("usage missing", rc == 1 and "missing DATA" in e)
+rc, o, _ = run("--help")
+check("help", rc == 0 and "--matrix" in o)
+rc, _, e = run(LONG, "--form", "geometric", "--alpha", "0.1")
+check("geometric bound", rc == 1 and "geometric" in e, e)
+
+# ---- PNG and PDF plots (converted from the SVG, as for fit), and the format
+# given by the option: a plot extension that says another format is refused
+if shutil.which("rsvg-convert"):
+    png, pdf = os.path.join(TMP, "s.png"), os.path.join(TMP, "s.pdf")
+    rc, _, e = run(LONG, "--shape", "positive", "--png", png, "-o", os.devnull)
+    with open(png, "rb") as fh:
+        head = fh.read(8) if rc == 0 else b""
+    check("png", rc == 0 and head == b"\x89PNG\r\n\x1a\n", e)
+    rc, _, e = run(LONG, "--shape", "positive", "--pdf", pdf, "-o", os.devnull)
+    with open(pdf, "rb") as fh:
+        head = fh.read(5) if rc == 0 else b""
+    check("pdf", rc == 0 and head == b"%PDF-", e)
+rc, _, e = run(LONG, "--svg", os.path.join(TMP, "x.png"))
+check("svg into .png refused", rc == 1 and "extension" in e
+      and not os.path.exists(os.path.join(TMP, "x.png")), e)
+
+# ---- the exact reference of the Bernstein table -------------------------------
+p = subprocess.run([sys.executable, os.path.join(REPO, "tests", "ref", "surface_ref.py"), REPO],
+                   capture_output=True, text=True)
+check("surface_ref.py", p.returncode == 0 and "0 failed" in p.stdout, p.stdout)
+
+shutil.rmtree(TMP, ignore_errors=True)
+print("test_surface_cli: %d passed, %d failed" % (passed, failed))
+sys.exit(1 if failed else 0)

@@ -1,0 +1,664 @@
+/* trigspline surface: certified surfaces through gridded data
+ * (docs/method.md §11).  Reads the long format (x,y,z rows, a full grid in
+ * any order) or the matrix layout (first row the x values, first column the
+ * y values); writes samples on a finer grid (CSV, long or matrix), a JSON
+ * report, an SVG heatmap with contours.  Its own options (docs/cli.md). */
+#include "cli.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <strings.h>
+
+typedef struct surf_opts {
+    const char *data, *out, *svg; /* svg: the plot's file, in format fmt */
+    cli_plot_format fmt;
+    int matrix_in, matrix_out, json, zero_twist;
+    ts_surface_options so;
+    size_t samples, grid_x, grid_y;
+} surf_opts;
+
+static const char *const shape_names[] = {"none", "positive", "bounds", "planes", "range"};
+
+static int usage(const char *what, const char *arg)
+{
+    fprintf(stderr, "trigspline surface: %s%s%s\n", what, arg ? " " : "", arg ? arg : "");
+    fprintf(stderr, "Try 'trigspline surface --help' for more information.\n");
+    return CLI_USAGE;
+}
+
+static void print_help(void)
+{
+    printf("Usage: trigspline surface DATA [OPTIONS]\n"
+           "Certified surface through gridded data (docs/method.md section 11).\n\n"
+           "DATA: x,y,z rows of a full rectilinear grid in any order (long format), or\n"
+           "with --matrix a table whose first row holds the x values and first column\n"
+           "the y values (the first cell is ignored). '-' reads standard input.\n\n"
+           "  --matrix               read the matrix layout\n"
+           "  --shape NAME           none (default), positive, bounds, planes, range\n"
+           "  --lower C | P,Q,C      lower bound: constant C or plane z = P x + Q y + C\n"
+           "  --upper C | P,Q,C      upper bound (bounds: constants; planes: planes)\n"
+           "  --form NAME            paper (default), c1, geometric\n"
+           "  --slopes NAME          arithmetic (default), geometric, harmonic,\n"
+           "                         fritsch-carlson, akima, makima\n"
+           "  --alpha A --beta B --margin T   shape parameters (docs/method.md 11.3)\n"
+           "  --zero-twist           twist 0 instead of the estimate\n"
+           "  --samples N            output N samples per patch side (default 4)\n"
+           "  --grid NX,NY           output a uniform NX x NY grid instead\n"
+           "  --matrix-out           write samples in the matrix layout\n"
+           "  --json                 write the report (JSON) instead of samples\n"
+           "  --svg|--png|--pdf FILE heatmap with contours, nodes and active patches\n"
+           "                         (PNG and PDF converted from the SVG, as for fit)\n"
+           "  -o FILE                output file (default standard output)\n\n"
+           "Exit status: 0 ok, 1 usage, 2 bad data (names the line and node),\n"
+           "3 infeasible patch, 5 input/output error.\n");
+}
+
+static int parse_num(const char *s, double *v)
+{
+    const char *stop;
+    return tsu_parse_double(s, s + strlen(s), v, &stop) == TSU_NUM_OK && *stop == '\0' &&
+           isfinite(*v);
+}
+
+/* "C" or "P,Q,C" */
+static int parse_plane(const char *s, ts_plane *pl)
+{
+    ts_plane r = {0.0, 0.0, 0.0};
+    const char *c1 = strchr(s, ',');
+    if (!c1) {
+        if (!parse_num(s, &r.c))
+            return 0;
+        *pl = r;
+        return 1;
+    }
+    char buf[256];
+    if (strlen(s) >= sizeof buf)
+        return 0;
+    strcpy(buf, s);
+    char *a = buf, *b = strchr(a, ','), *c;
+    *b++ = '\0';
+    c = strchr(b, ',');
+    if (!c)
+        return 0;
+    *c++ = '\0';
+    if (!parse_num(a, &r.p) || !parse_num(b, &r.q) || !parse_num(c, &r.c))
+        return 0;
+    *pl = r;
+    return 1;
+}
+
+static int parse_size(const char *s, size_t *v)
+{
+    double d;
+    if (!parse_num(s, &d) || d < 1 || d > 1e7 || d != floor(d))
+        return 0;
+    *v = (size_t)d;
+    return 1;
+}
+
+static int parse_args(int argc, char **argv, surf_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    ts_surface_options_init(&o->so);
+    o->samples = 4;
+    for (int k = 0; k < argc; k++) {
+        const char *a = argv[k], *v = k + 1 < argc ? argv[k + 1] : NULL;
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+            print_help();
+            return CLI_HELP;
+        }
+        if (strcmp(a, "--matrix") == 0) {
+            o->matrix_in = 1;
+            continue;
+        }
+        if (strcmp(a, "--matrix-out") == 0) {
+            o->matrix_out = 1;
+            continue;
+        }
+        if (strcmp(a, "--json") == 0) {
+            o->json = 1;
+            continue;
+        }
+        if (strcmp(a, "--zero-twist") == 0) {
+            o->so.zero_twist = 1;
+            continue;
+        }
+        if (a[0] == '-' && a[1] != '\0') {
+            if (!v)
+                return usage("this option needs a value:", a);
+            k++;
+            int ok = 1;
+            if (strcmp(a, "--shape") == 0) {
+                ok = 0;
+                for (size_t i = 0; i < 5; i++)
+                    if (strcmp(v, shape_names[i]) == 0)
+                        o->so.shape = (ts_surface_shape)i, ok = 1;
+            } else if (strcmp(a, "--lower") == 0) {
+                ok = parse_plane(v, &o->so.lower);
+                o->so.has_lower = 1;
+            } else if (strcmp(a, "--upper") == 0) {
+                ok = parse_plane(v, &o->so.upper);
+                o->so.has_upper = 1;
+            } else if (strcmp(a, "--form") == 0) {
+                int i = cli_name_index(&cli_form_names, v);
+                ok = i >= 0;
+                o->so.form = (ts_form)(ok ? i : 0);
+            } else if (strcmp(a, "--slopes") == 0) {
+                int i = cli_name_index(&cli_slopes_names, v);
+                ok = i >= 0 && i != TS_SLOPES_USER && i != TS_SLOPES_PERIODIC;
+                o->so.slopes = (ts_slopes)(ok ? i : 0);
+            } else if (strcmp(a, "--alpha") == 0) {
+                ok = parse_num(v, &o->so.alpha) && o->so.alpha > 0;
+            } else if (strcmp(a, "--beta") == 0) {
+                ok = parse_num(v, &o->so.beta) && o->so.beta >= 0;
+            } else if (strcmp(a, "--margin") == 0) {
+                ok = parse_num(v, &o->so.margin) && o->so.margin > 0;
+            } else if (strcmp(a, "--samples") == 0) {
+                ok = parse_size(v, &o->samples);
+            } else if (strcmp(a, "--grid") == 0) {
+                char buf[64];
+                const char *c = strchr(v, ',');
+                ok = c && (size_t)(c - v) < sizeof buf;
+                if (ok) {
+                    memcpy(buf, v, (size_t)(c - v));
+                    buf[c - v] = '\0';
+                    ok = parse_size(buf, &o->grid_x) && parse_size(c + 1, &o->grid_y) &&
+                         o->grid_x >= 2 && o->grid_y >= 2;
+                }
+            } else if (strcmp(a, "-o") == 0) {
+                o->out = v;
+            } else if (strcmp(a, "--svg") == 0 || strcmp(a, "--png") == 0 ||
+                       strcmp(a, "--pdf") == 0) {
+                /* the format is the option's; a plot extension that says
+                 * another is refused (no SVG silently written into a .png) */
+                static const char *const ext[3] = {".svg", ".png", ".pdf"};
+                const char *dot = strrchr(v, '.');
+                o->fmt = strcmp(a, "--svg") == 0   ? CLI_PLOT_SVG
+                         : strcmp(a, "--png") == 0 ? CLI_PLOT_PNG
+                                                   : CLI_PLOT_PDF;
+                for (int e = 0; e < 3; e++)
+                    if (dot && e != (int)o->fmt && strcasecmp(dot, ext[e]) == 0)
+                        return usage("the plot's extension contradicts", a);
+                o->svg = v;
+            } else {
+                return usage("unknown option", a);
+            }
+            if (!ok) {
+                fprintf(stderr, "trigspline surface: bad value \"%s\" for %s\n", v, a);
+                return CLI_USAGE;
+            }
+            continue;
+        }
+        if (o->data)
+            return usage("more than one DATA argument:", a);
+        o->data = a;
+    }
+    if (!o->data)
+        return usage("missing DATA", NULL);
+    return CLI_OK;
+}
+
+/* ---- reading the grid ------------------------------------------------------ */
+typedef struct surf_grid {
+    size_t nx, ny;
+    double *x, *y, *z;
+    unsigned long long *line; /* per node */
+    const char *name;
+} surf_grid;
+
+static void grid_free(surf_grid *g)
+{
+    free(g->x);
+    free(g->y);
+    free(g->z);
+    free(g->line);
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double u = *(const double *)a, v = *(const double *)b;
+    return (u > v) - (u < v);
+}
+
+/* sorted distinct values of v[0..n) into *out */
+static size_t distinct(const double *v, size_t n, double **out)
+{
+    double *s = malloc((n ? n : 1) * sizeof *s);
+    if (!s)
+        return 0;
+    memcpy(s, v, n * sizeof *s);
+    qsort(s, n, sizeof *s, cmp_double);
+    size_t k = 0;
+    for (size_t i = 0; i < n; i++)
+        if (k == 0 || s[i] != s[k - 1])
+            s[k++] = s[i];
+    *out = s;
+    return k;
+}
+
+static size_t find(const double *v, size_t n, double key)
+{
+    size_t lo = 0, hi = n;
+    while (hi - lo > 1) {
+        size_t mid = lo + (hi - lo) / 2;
+        if (v[mid] <= key)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    return lo;
+}
+
+static int read_grid(const surf_opts *o, surf_grid *g)
+{
+    memset(g, 0, sizeof *g);
+    g->name = strcmp(o->data, "-") == 0 ? "<stdin>" : o->data;
+    tsu_read_options ro;
+    tsu_read_options_init(&ro);
+    tsu_table t;
+    tsu_io_error e;
+    tsu_io_status st = tsu_read_table_path(o->data, &ro, &t, &e);
+    if (st != TSU_IO_OK)
+        return cli_report_io(&e);
+    char nb[TSU_FMT_SIZE], nb2[TSU_FMT_SIZE];
+    int rc = CLI_DATA;
+    if (!o->matrix_in) {
+        if (t.ncols != 3) {
+            cli_error("%s: the long format needs 3 columns x,y,z (found %zu)", g->name, t.ncols);
+            goto done;
+        }
+        size_t n = t.nrows;
+        g->nx = distinct(t.cols[0], n, &g->x);
+        g->ny = distinct(t.cols[1], n, &g->y);
+        if (!g->x || !g->y || g->nx * g->ny / g->ny != g->nx) {
+            rc = cli_nomem();
+            goto done;
+        }
+        size_t nn = g->nx * g->ny;
+        g->z = malloc(nn * sizeof *g->z);
+        g->line = calloc(nn, sizeof *g->line);
+        if (!g->z || !g->line) {
+            rc = cli_nomem();
+            goto done;
+        }
+        for (size_t r = 0; r < n; r++) {
+            size_t i = find(g->x, g->nx, t.cols[0][r]), j = find(g->y, g->ny, t.cols[1][r]);
+            size_t k = j * g->nx + i;
+            if (g->line[k]) {
+                cli_error("%s: line %llu: duplicate node (x=%s, y=%s), first on line %llu",
+                          g->name, t.lines[r], cli_num(g->x[i], nb), cli_num(g->y[j], nb2),
+                          g->line[k]);
+                goto done;
+            }
+            g->line[k] = t.lines[r];
+            g->z[k] = t.cols[2][r];
+        }
+        for (size_t k = 0; k < nn; k++)
+            if (!g->line[k]) {
+                cli_error("%s: missing node (x=%s, y=%s): the grid is %zu x %zu but has %zu rows",
+                          g->name, cli_num(g->x[k % g->nx], nb), cli_num(g->y[k / g->nx], nb2),
+                          g->nx, g->ny, n);
+                goto done;
+            }
+    } else {
+        /* the first row holds the x values: a header (parsed) or data */
+        int hdr = t.names != NULL;
+        size_t rows = t.nrows - (hdr ? 0 : 1);
+        if (t.ncols < 3 || rows < 2) {
+            cli_error("%s: the matrix layout needs at least 2 x values and 2 y rows", g->name);
+            goto done;
+        }
+        g->nx = t.ncols - 1;
+        g->ny = rows;
+        g->x = malloc(g->nx * sizeof *g->x);
+        g->y = malloc(g->ny * sizeof *g->y);
+        g->z = malloc(g->nx * g->ny * sizeof *g->z);
+        g->line = malloc(g->nx * g->ny * sizeof *g->line);
+        if (!g->x || !g->y || !g->z || !g->line) {
+            rc = cli_nomem();
+            goto done;
+        }
+        for (size_t i = 0; i < g->nx; i++) {
+            if (hdr) {
+                if (!parse_num(t.names[i + 1], &g->x[i])) {
+                    cli_error("%s: line 1: column %zu: x value \"%s\" is not a number", g->name,
+                              i + 2, t.names[i + 1]);
+                    goto done;
+                }
+            } else {
+                g->x[i] = t.cols[i + 1][0];
+            }
+        }
+        for (size_t i = 1; i < g->nx; i++)
+            if (!(g->x[i] > g->x[i - 1])) {
+                cli_error("%s: line %llu: column %zu: x = %s is not above the x before it",
+                          g->name, hdr ? 1ULL : t.lines[0], i + 2, cli_num(g->x[i], nb));
+                goto done;
+            }
+        for (size_t j = 0; j < g->ny; j++) {
+            size_t r = j + (hdr ? 0 : 1);
+            g->y[j] = t.cols[0][r];
+            if (j > 0 && !(g->y[j] > g->y[j - 1])) {
+                cli_error("%s: line %llu: y = %s is not above the y before it", g->name,
+                          t.lines[r], cli_num(g->y[j], nb));
+                goto done;
+            }
+            for (size_t i = 0; i < g->nx; i++) {
+                g->z[j * g->nx + i] = t.cols[i + 1][r];
+                g->line[j * g->nx + i] = t.lines[r];
+            }
+        }
+    }
+    rc = CLI_OK;
+done:
+    tsu_table_free(&t);
+    if (rc != CLI_OK)
+        grid_free(g);
+    return rc;
+}
+
+/* ---- building ---------------------------------------------------------------- */
+static int report_error(const surf_grid *g, ts_status st, const ts_error *e)
+{
+    char nb[TSU_FMT_SIZE], nb2[TSU_FMT_SIZE], nb3[TSU_FMT_SIZE], nb4[TSU_FMT_SIZE];
+    const char *why = ts_strerror(st);
+    if (e->where == TS_WHERE_POINT && e->index < g->nx * g->ny) {
+        size_t i = e->index % g->nx, j = e->index / g->nx;
+        cli_error("%s: line %llu: node (%zu, %zu) at x=%s, y=%s, z=%s: %s", g->name,
+                  g->line[e->index], i, j, cli_num(g->x[i], nb), cli_num(g->y[j], nb2),
+                  cli_num(g->z[e->index], nb3), why);
+        return CLI_DATA;
+    }
+    if (e->where == TS_WHERE_INTERVAL) {
+        size_t i = e->index % (g->nx - 1), j = e->index / (g->nx - 1);
+        cli_error("%s: patch (%zu, %zu) = [%s, %s] x [%s, %s]: %s", g->name, i, j,
+                  cli_num(g->x[i], nb), cli_num(g->x[i + 1], nb2), cli_num(g->y[j], nb3),
+                  cli_num(g->y[j + 1], nb4), why);
+        return st == TS_ERR_INFEASIBLE ? CLI_INFEASIBLE : CLI_DATA;
+    }
+    cli_error("%s: %s", g->name, why);
+    return st == TS_ERR_NOMEM ? CLI_IO : (st == TS_ERR_OPTION || st == TS_ERR_ALPHA ||
+                                          st == TS_ERR_BETA || st == TS_ERR_MARGIN ||
+                                          st == TS_ERR_GEOMETRIC)
+                                             ? CLI_USAGE
+                                             : CLI_DATA;
+}
+
+/* the sample abscissae: n per interval (knots included) or a uniform grid */
+static double *sample_axis(const double *t, size_t np, size_t per, size_t uniform, size_t *m)
+{
+    size_t k = uniform ? uniform : (np - 1) * per + 1;
+    double *v = malloc(k * sizeof *v);
+    if (!v)
+        return NULL;
+    if (uniform) {
+        for (size_t a = 0; a < k; a++)
+            v[a] = t[0] + (t[np - 1] - t[0]) * (double)a / (double)(k - 1);
+    } else {
+        for (size_t i = 0; i + 1 < np; i++)
+            for (size_t a = 0; a < per; a++)
+                v[i * per + a] = t[i] + (t[i + 1] - t[i]) * (double)a / (double)per;
+    }
+    v[0] = t[0];
+    v[k - 1] = t[np - 1];
+    *m = k;
+    return v;
+}
+
+/* ---- SVG: heatmap, contours, nodes, active patches ------------------------- */
+static void ramp(double u, char col[8])
+{
+    /* blue -> white -> orange-red (diverging, colour-blind safe ends) */
+    double r, gg, b;
+    if (u < 0.5) {
+        double s = u / 0.5;
+        r = 0.13 + 0.87 * s, gg = 0.40 + 0.60 * s, b = 0.67 + 0.33 * s;
+    } else {
+        double s = (u - 0.5) / 0.5;
+        r = 1.0 - 0.16 * s, gg = 1.0 - 0.63 * s, b = 1.0 - 0.93 * s;
+    }
+    snprintf(col, 8, "#%02x%02x%02x", (unsigned)(r * 255), (unsigned)(gg * 255), (unsigned)(b * 255));
+}
+
+static int render_svg(const surf_grid *g, const ts_surface *s, const ts_patch_report *rep,
+                      const int *active, tsu_plot_buf *svg)
+{
+    const size_t N = 120;
+    double W = 560, H = 420, L = 60, T = 30;
+    double xs[120], ys[120], *v = malloc(N * N * sizeof *v);
+    if (!v)
+        return ENOMEM;
+    for (size_t a = 0; a < N; a++) {
+        xs[a] = g->x[0] + (g->x[g->nx - 1] - g->x[0]) * ((double)a + 0.5) / (double)N;
+        ys[a] = g->y[0] + (g->y[g->ny - 1] - g->y[0]) * ((double)a + 0.5) / (double)N;
+    }
+    ts_surface_eval_grid(s, xs, N, ys, N, v, NULL);
+    double lo = (double)INFINITY, hi = -(double)INFINITY;
+    for (size_t k = 0; k < N * N; k++)
+        lo = fmin(lo, v[k]), hi = fmax(hi, v[k]);
+    if (!(hi > lo))
+        hi = lo + 1;
+    double x0 = g->x[0], x1 = g->x[g->nx - 1], y0 = g->y[0], y1 = g->y[g->ny - 1];
+#define PX(x) (L + W * ((x) - x0) / (x1 - x0))
+#define PY(y) (T + H * (1.0 - ((y) - y0) / (y1 - y0)))
+    tsu_plot_buf_printf(svg,
+                        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%g\" height=\"%g\" "
+                        "viewBox=\"0 0 %g %g\" font-family=\"sans-serif\" font-size=\"12\">\n",
+                        W + L + 120, H + T + 50, W + L + 120, H + T + 50);
+    tsu_plot_buf_puts(svg, "<g shape-rendering=\"crispEdges\">\n");
+    double cw = W / (double)N, ch = H / (double)N;
+    for (size_t b = 0; b < N; b++)
+        for (size_t a = 0; a < N; a++) {
+            char col[8];
+            ramp((v[b * N + a] - lo) / (hi - lo), col);
+            tsu_plot_buf_printf(svg, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"%s\"/>\n",
+                                L + cw * (double)a, T + H - ch * (double)(b + 1), cw + 0.3, ch + 0.3, col);
+        }
+    tsu_plot_buf_puts(svg, "</g>\n<g stroke=\"#222\" stroke-width=\"0.8\" fill=\"none\">\n");
+    /* contours: marching squares on the cell centres, 8 levels */
+    for (int c = 1; c <= 8; c++) {
+        double level = lo + (hi - lo) * c / 9.0;
+        for (size_t b = 0; b + 1 < N; b++)
+            for (size_t a = 0; a + 1 < N; a++) {
+                double q[4] = {v[b * N + a], v[b * N + a + 1], v[(b + 1) * N + a + 1], v[(b + 1) * N + a]};
+                double px[4] = {xs[a], xs[a + 1], xs[a + 1], xs[a]};
+                double py[4] = {ys[b], ys[b], ys[b + 1], ys[b + 1]};
+                double ex[4], ey[4];
+                int k = 0;
+                for (int e = 0; e < 4 && k < 4; e++) {
+                    double f0 = q[e] - level, f1 = q[(e + 1) % 4] - level;
+                    if ((f0 < 0) != (f1 < 0)) {
+                        double u = f0 / (f0 - f1);
+                        ex[k] = px[e] + u * (px[(e + 1) % 4] - px[e]);
+                        ey[k] = py[e] + u * (py[(e + 1) % 4] - py[e]);
+                        k++;
+                    }
+                }
+                for (int m = 0; m + 1 < k; m += 2)
+                    tsu_plot_buf_printf(svg, "<path d=\"M%.2f %.2fL%.2f %.2f\"/>\n", PX(ex[m]),
+                                        PY(ey[m]), PX(ex[m + 1]), PY(ey[m + 1]));
+            }
+    }
+    tsu_plot_buf_puts(svg, "</g>\n<g fill=\"none\" stroke=\"#d55e00\" stroke-width=\"2\">\n");
+    size_t np = (g->nx - 1) * (g->ny - 1);
+    for (size_t c = 0; rep && c < np; c++)
+        if (active[c])
+            tsu_plot_buf_printf(svg, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\"><title>patch (%zu, %zu): bound active</title></rect>\n",
+                                PX(rep[c].x0), PY(rep[c].y1), PX(rep[c].x1) - PX(rep[c].x0),
+                                PY(rep[c].y0) - PY(rep[c].y1), rep[c].i, rep[c].j);
+    tsu_plot_buf_puts(svg, "</g>\n<g fill=\"#000\">\n");
+    for (size_t k = 0; k < g->nx * g->ny; k++)
+        tsu_plot_buf_printf(svg, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"2\"/>\n", PX(g->x[k % g->nx]),
+                            PY(g->y[k / g->nx]));
+    tsu_plot_buf_puts(svg, "</g>\n");
+    char b1[TSU_FMT_SIZE], b2[TSU_FMT_SIZE];
+    tsu_plot_buf_printf(svg, "<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"none\" stroke=\"#000\"/>\n",
+                        L, T, W, H);
+    tsu_plot_buf_printf(svg, "<text x=\"%g\" y=\"%g\" text-anchor=\"middle\">x: %s .. %s</text>\n",
+                        L + W / 2, T + H + 30, cli_num(x0, b1), cli_num(x1, b2));
+    tsu_plot_buf_printf(svg, "<text x=\"%g\" y=\"%g\" transform=\"rotate(-90 %g %g)\" text-anchor=\"middle\">y: %s .. %s</text>\n",
+                        L - 20, T + H / 2, L - 20, T + H / 2, cli_num(y0, b1), cli_num(y1, b2));
+    for (int c = 0; c <= 10; c++) {
+        char col[8];
+        ramp(c / 10.0, col);
+        tsu_plot_buf_printf(svg, "<rect x=\"%g\" y=\"%g\" width=\"20\" height=\"%g\" fill=\"%s\"/>\n",
+                            L + W + 20, T + H - H * (c + 1) / 11.0, H / 11.0 + 0.3, col);
+    }
+    tsu_plot_buf_printf(svg, "<text x=\"%g\" y=\"%g\">%s</text>\n", L + W + 45, T + H, cli_num(lo, b1));
+    tsu_plot_buf_printf(svg, "<text x=\"%g\" y=\"%g\">%s</text>\n", L + W + 45, T + 10, cli_num(hi, b1));
+    tsu_plot_buf_puts(svg, "</svg>\n");
+#undef PX
+#undef PY
+    free(v);
+    return 0;
+}
+
+/* ---- the command ------------------------------------------------------------ */
+int cli_surface(int argc, char **argv)
+{
+    surf_opts o;
+    int rc = parse_args(argc, argv, &o);
+    if (rc != CLI_OK)
+        return rc == CLI_HELP ? (fflush(stdout) == 0 ? CLI_OK : CLI_IO) : rc;
+    surf_grid g;
+    if ((rc = read_grid(&o, &g)) != CLI_OK)
+        return rc;
+    ts_surface *s = NULL;
+    ts_error e;
+    ts_status st = ts_surface_new(g.x, g.nx, g.y, g.ny, g.z, &o.so, &s, &e);
+    if (st != TS_OK) {
+        rc = report_error(&g, st, &e);
+        grid_free(&g);
+        return rc;
+    }
+    size_t np = (g.nx - 1) * (g.ny - 1);
+    ts_patch_report *rep = NULL;
+    int *active = NULL;
+    double *xq = NULL, *yq = NULL, *zq = NULL;
+    size_t mx = 0, my = 0;
+    tsu_plot_buf text, svg;
+    tsu_plot_buf_init(&text);
+    tsu_plot_buf_init(&svg);
+    int shaped = o.so.shape != TS_SURFACE_NONE;
+    if (o.json || o.svg) {
+        rep = calloc(np, sizeof *rep);
+        active = calloc(np, sizeof *active);
+        if (!rep || !active) {
+            rc = cli_nomem();
+            goto out;
+        }
+        double zl = (double)INFINITY, zh = -(double)INFINITY;
+        for (size_t k = 0; k < g.nx * g.ny; k++)
+            zl = fmin(zl, g.z[k]), zh = fmax(zh, g.z[k]);
+        for (size_t c = 0; c < np; c++) {
+            ts_surface_report(s, c % (g.nx - 1), c / (g.nx - 1), &rep[c]);
+            double tol = 0.01 * (zh - zl);
+            active[c] = shaped && ((rep[c].has_lower && rep[c].proven_lower <= tol) ||
+                                   (rep[c].has_upper && rep[c].proven_upper <= tol));
+        }
+    }
+    xq = sample_axis(g.x, g.nx, o.samples, o.grid_x, &mx);
+    yq = sample_axis(g.y, g.ny, o.samples, o.grid_y, &my);
+    zq = xq && yq ? malloc(mx * my * sizeof *zq) : NULL;
+    if (!zq) {
+        rc = cli_nomem();
+        goto out;
+    }
+    ts_surface_eval_grid(s, xq, mx, yq, my, zq, NULL);
+    double smin = (double)INFINITY, smax = -(double)INFINITY;
+    for (size_t k = 0; k < mx * my; k++)
+        smin = fmin(smin, zq[k]), smax = fmax(smax, zq[k]);
+    char nb[TSU_FMT_SIZE];
+    if (o.json) {
+        cli_json j;
+        cli_json_init(&j);
+        cli_json_begin(&j, '{');
+        cli_json_kstr(&j, "command", "surface");
+        cli_json_kstr(&j, "data", g.name);
+        cli_json_kuint(&j, "nx_points", g.nx);
+        cli_json_kuint(&j, "ny_points", g.ny);
+        cli_json_kstr(&j, "form", cli_form_name(o.so.form));
+        cli_json_kstr(&j, "shape", shape_names[o.so.shape]);
+        cli_json_kstr(&j, "slopes", cli_slopes_name(o.so.slopes));
+        cli_json_kbool(&j, "certified", ts_surface_certified(s));
+        cli_json_knum(&j, "sample_min", smin);
+        cli_json_knum(&j, "sample_max", smax);
+        cli_json_kuint(&j, "samples", (unsigned long long)(mx * my));
+        cli_json_key(&j, "patches");
+        cli_json_begin(&j, '[');
+        for (size_t c = 0; c < np; c++) {
+            cli_json_nl(&j);
+            cli_json_begin(&j, '{');
+            cli_json_kuint(&j, "i", rep[c].i);
+            cli_json_kuint(&j, "j", rep[c].j);
+            cli_json_knum(&j, "ax", rep[c].ax);
+            cli_json_knum(&j, "ay", rep[c].ay);
+            if (rep[c].has_lower) {
+                cli_json_knum(&j, "proven_lower", rep[c].proven_lower);
+                cli_json_knum(&j, "sampled_lower", rep[c].sampled_lower);
+                cli_json_key(&j, "at_lower");
+                cli_json_begin(&j, '[');
+                cli_json_num(&j, rep[c].at_lower[0]);
+                cli_json_num(&j, rep[c].at_lower[1]);
+                cli_json_end(&j, ']');
+            }
+            if (rep[c].has_upper) {
+                cli_json_knum(&j, "proven_upper", rep[c].proven_upper);
+                cli_json_knum(&j, "sampled_upper", rep[c].sampled_upper);
+                cli_json_key(&j, "at_upper");
+                cli_json_begin(&j, '[');
+                cli_json_num(&j, rep[c].at_upper[0]);
+                cli_json_num(&j, rep[c].at_upper[1]);
+                cli_json_end(&j, ']');
+            }
+            cli_json_kbool(&j, "certified", rep[c].certified);
+            cli_json_kbool(&j, "active", active[c]);
+            cli_json_end(&j, '}');
+        }
+        cli_json_end(&j, ']');
+        cli_json_end(&j, '}');
+        cli_json_raw(&j, "\n");
+        if (j.failed) {
+            cli_json_free(&j);
+            rc = cli_nomem();
+            goto out;
+        }
+        text = j.b;
+    } else if (o.matrix_out) {
+        tsu_plot_buf_puts(&text, "y\\x");
+        for (size_t a = 0; a < mx; a++)
+            tsu_plot_buf_printf(&text, ",%s", cli_num(xq[a], nb));
+        tsu_plot_buf_puts(&text, "\n");
+        for (size_t b = 0; b < my; b++) {
+            tsu_plot_buf_puts(&text, cli_num(yq[b], nb));
+            for (size_t a = 0; a < mx; a++)
+                tsu_plot_buf_printf(&text, ",%s", cli_num(zq[b * mx + a], nb));
+            tsu_plot_buf_puts(&text, "\n");
+        }
+    } else {
+        tsu_plot_buf_puts(&text, "x,y,z\n");
+        for (size_t b = 0; b < my; b++)
+            for (size_t a = 0; a < mx; a++) {
+                char n1[TSU_FMT_SIZE], n2[TSU_FMT_SIZE];
+                tsu_plot_buf_printf(&text, "%s,%s,%s\n", cli_num(xq[a], n1), cli_num(yq[b], n2),
+                                    cli_num(zq[b * mx + a], nb));
+            }
+    }
+    if (o.svg && render_svg(&g, s, rep, active, &svg) != 0) {
+        rc = cli_nomem();
+        goto out;
+    }
+    rc = cli_write_outputs(o.out, &text, NULL, NULL, o.svg, o.fmt, o.svg ? &svg : NULL);
+out:
+    tsu_plot_buf_free(&text);
+    tsu_plot_buf_free(&svg);
+    free(rep);
+    free(active);
+    free(xq);
+    free(yq);
+    free(zq);
+    ts_surface_free(s);
+    grid_free(&g);
+    return rc;
+}
