@@ -375,10 +375,11 @@ def bicubic_range(xs, ys, zs, m=8):
 
 def surface_panel(label, caption, args, note=""):
     st, js, svg, err, cmd = surface_run(args)
-    shown = " ".join(shlex.quote(os.path.basename(a) if i == 0 or a.startswith(DATA) or
-                                 a.startswith(SURF) else a) for i, a in enumerate(cmd[:-3]))
+    shown = " ".join(shlex.quote(os.path.basename(a) if i == 0 or i == len(cmd) - 1 or
+                                 a.startswith(DATA) or a.startswith(SURF) else a)
+                     for i, a in enumerate(cmd))
     parts = ['<div class="panel"><h4>(%s) %s</h4>' % (html.escape(label), html.escape(caption)),
-             "<pre>$ %s --json --svg …</pre>" % html.escape(shown)]
+             "<pre>$ %s</pre>" % html.escape(shown)]
     if svg:
         parts.append('<div class="svg">%s</div>' % svg)
     summary = ["exit status %d" % st]

@@ -81,6 +81,13 @@ def read_xy(path):
     return rows[:, 0], rows[:, 1], cols
 
 
+def read_cli_xy(text):
+    """The first two columns of a CSV the command wrote (its header names
+    are the input's column names, so columns are taken by position)."""
+    d = np.loadtxt(io.StringIO(text), delimiter=",", skiprows=1, ndmin=2)
+    return d[:, 0], d[:, 1]
+
+
 def read_csv_samples(path):
     d = np.genfromtxt(path, delimiter=",", names=True)
     return [np.asarray(d[c], float) for c in d.dtype.names]
@@ -462,9 +469,9 @@ def alpha_study():
             cmd2 = [CLI, "fit", data, "--form", FORM] + args + ["--alpha", a, "--samples", "41"]
             q = run(cmd2)
             cmds.append(cmd2)
-            d = np.genfromtxt(io.StringIO(q.stdout), delimiter=",", names=True)
-            lin = np.interp(d["x"], x, f)
-            dev = float(np.max(np.abs(d["y"] - lin))) / span
+            sx, sy = read_cli_xy(q.stdout)
+            lin = np.interp(sx, x, f)
+            dev = float(np.max(np.abs(sy - lin))) / span
             k = "alpha/%s/%s" % (name.split("_")[0], a)
             KEYS[k + "/excursion"] = exc
             rows.append("<tr><td>%s</td><td>%s</td><td data-key=\"%s/excursion\">%s %%</td><td>%s</td><td>%s %%</td>"
@@ -493,8 +500,8 @@ def alpha_study():
                  "--derivative", "1"]
         q = run(cmd_d)
         cmds.append(cmd_d)
-        d = np.genfromtxt(io.StringIO(q.stdout), delimiter=",", names=True)
-        jumps = list(np.abs(d["y"][1::2] - d["y"][0::2]))
+        _, sy = read_cli_xy(q.stdout)
+        jumps = list(np.abs(sy[1::2] - sy[0::2]))
         KEYS["form/%s/kink" % form] = max(jumps)
         frows.append("<tr><td><code>--form %s</code></td><td data-key=\"form/%s/kink\">%s</td><td>%s %%</td>"
                      "<td>%s</td></tr>" % (form, form, fmt(max(jumps), 3),

@@ -54,6 +54,13 @@ CLI = os.path.join(BUILD, "trigspline")
 passed = failed = 0
 
 
+def cli_xy(text):
+    """Samples the command wrote: x and y by position (the header carries the
+    input's column names)."""
+    d = np.loadtxt(io.StringIO(text), delimiter=",", skiprows=1, ndmin=2)
+    return {"x": d[:, 0], "y": d[:, 1]}
+
+
 def check(cond, what):
     global passed, failed
     if cond:
@@ -177,7 +184,7 @@ def main():
                                 ("growth", "growth_above_trend.csv", ["--lower", "1.5,10"], lambda s: 1.5 * s + 10)):
         q = subprocess.run([CLI, "fit", os.path.join(DATA, name), "--form", "paper"] + args +
                            ["--alpha", "1", "--samples", "2001"], capture_output=True, text=True)
-        d = np.genfromtxt(io.StringIO(q.stdout), delimiter=",", names=True)
+        d = cli_xy(q.stdout)
         smin = float(np.min(d["y"] - lo(d["x"])))
         page_v = vals["%s/ours/lower" % key]
         span = float(np.max(d["y"]) - np.min(d["y"]))
@@ -190,7 +197,7 @@ def main():
     # ---- the overshoot example
     q = subprocess.run([CLI, "fit", os.path.join(DATA, "rainfall_daily.csv"), "--form", "paper", "--shape",
                         "positive", "--alpha", "0.1", "--samples", "2001"], capture_output=True, text=True)
-    d = np.genfromtxt(io.StringIO(q.stdout), delimiter=",", names=True)
+    d = cli_xy(q.stdout)
     ymax = float(np.max(d["y"]))
     check(close(vals["overshoot/0.1/y_max"], ymax, 1e-3),
           "overshoot example: page y_max %r, sampled %r" % (vals["overshoot/0.1/y_max"], ymax))
