@@ -222,6 +222,8 @@ ts_status ts__geo_check(ts_spline *sp, size_t i0, size_t i1, ts_error *err);
 void ts__geo_eval(const ts_spline *sp, size_t i, double x, int want, double out[3]);
 /* ∫_{x_i}^{x} S dx' on interval i (x in the interval). */
 double ts__geo_integral(const ts_spline *sp, size_t i, double x);
+/* The same times 2^-k, finite where that is (|f|, |B| <= TS_VALUE_MAX). */
+double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k);
 
 /* ==== L2 ============================================================ */
 
@@ -229,11 +231,10 @@ double ts__geo_integral(const ts_spline *sp, size_t i, double x);
 /* Value and derivatives (in x; out[1], out[2] only if want > 0, > 1) of
  * interval i at x, any form; x may lie outside the interval (extension). */
 void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double o[3]);
-/* ∫_{x_i}^{x} S on interval i, x in the interval. */
-double ts__interval_integral(const ts_spline *sp, size_t i, double x);
-/* 2^-k ∫_a^b S on interval i (a, b in the interval), the factors ordered so
- * that it stays finite where the integral times 2^-k is (ts_integral's
- * path when sums overflow). */
+/* 2^-k ∫_a^b S on interval i (x_i <= a <= b <= x_{i+1}), the factors ordered
+ * so that it stays finite where the integral times 2^-k is.  A piece shorter
+ * than h/16 is integrated directly (12-point Gauss–Legendre in x), so its
+ * relative error is a few ε of the piece, not of the interval. */
 double ts__interval_integral_scaled(const ts_spline *sp, size_t i, double a, double b, int k);
 
 /* ---- shape.c (docs/method.md §5) ----------------------------------------------- */

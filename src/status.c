@@ -43,6 +43,10 @@ static const char *const ts_messages[TS_STATUS_COUNT_] = {
     [TS_ERR_DIMENSION] = "curve dimension must be 2 or 3",
     [TS_ERR_INDEX] = "index out of range",
     [TS_ERR_ZERO_SLOPE] = "slope of the wrong sign at a knot on the boundary",
+    [TS_ERR_SLOPE_OVERFLOW] = "a slope overflows: the data change too fast for the interval width",
+    [TS_ERR_TOO_LARGE] = "a data or control value exceeds DBL_MAX/4: the spline could overflow",
+    [TS_ERR_CONTROL_OVERFLOW] = "control values overflow: alpha + beta is too small for the slopes",
+    [TS_ERR_WIDTH] = "an interval width overflows, or underflows below the smallest normal double",
 };
 
 const char *ts_strerror(ts_status status)

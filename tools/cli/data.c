@@ -1,6 +1,8 @@
 /* Reading the data table and explaining data / scheme errors. */
 #include "cli.h"
 
+#include <float.h>
+
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -159,6 +161,17 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
             cli_error("%s: point %zu (x = %s, f = %s): the step from the previous point, or a "
                       "slope there, overflows a double",
                       w, off + i, cli_num(x[i], bx), cli_num(f[i], bf));
+            return CLI_DATA;
+        }
+        break;
+    case TS_ERR_WIDTH:
+        if (point && i > 0) {
+            double h = x[i] - x[i - 1];
+            cli_error("%s: point %zu (x = %s): the step %s from the previous x = %s %s", w,
+                      off + i, cli_num(x[i], bx), cli_num(h, bf), cli_num(x[i - 1], b2),
+                      h <= DBL_MAX ? "underflows: steps below 2.2250738585072014e-308 (the "
+                                     "smallest normal double) are refused"
+                                   : "overflows a double");
             return CLI_DATA;
         }
         break;
