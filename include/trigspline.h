@@ -89,7 +89,12 @@ typedef enum ts_status {
     TS_ERR_WIDTH = 27,            /* an interval width x_{i+1} − x_i overflows (x of both signs
                                      near ±DBL_MAX) or underflows (below DBL_MIN, subnormal);
                                      index = its right point */
-    TS_STATUS_COUNT_ = 28    /* not a status: number of codes */
+    TS_ERR_PRECISION = 28,        /* line schemes: a beta_i whose exact gap is positive exists, but the
+                                     gap stays below the rounding bound of the certificate: cannot
+                                     be certified in double precision; index = interval */
+    TS_ERR_UNPROVEN = 29,         /* C¹ form: no beta was found that certifies the interval, and
+                                     the search did not prove that none exists; index = interval */
+    TS_STATUS_COUNT_ = 30    /* not a status: number of codes */
 } ts_status;
 
 /* The largest |f_i| and |B_l| a spline accepts (TS_ERR_TOO_LARGE beyond):
@@ -252,13 +257,20 @@ typedef enum ts_slopes {
  *    steep line, close data), the largest certificate over all beta_i >= 0
  *    is searched (golden section; exact in the paper form, where the gap is
  *    concave in 1/a) and the smallest certified a taken.  If none exists:
- *    TS_ERR_INFEASIBLE, index = interval.  (Any scheme also reports it when
+ *    TS_ERR_INFEASIBLE, index = interval; if the best gap is positive but
+ *    below the certificate's rounding bound: TS_ERR_PRECISION.  (Any scheme also reports it when
  *    the a needed exceeds 1e307, e.g. a value near the underflow threshold
  *    next to a slope of order one.)  In the C¹ form an interval's
  *    curve also depends on its neighbours' a (d̂ of docs/method.md §3); there a
  *    neighbour whose larger a caps the shared knot's slope may be lowered
- *    once, and the error means no beta_i was found with the neighbours as
- *    they then are.
+ *    once; if that fails too, the uniform family a_j = max(alpha_j, A) for
+ *    all j is searched (A from max alpha_j upwards by factors 1.1 to 1e6
+ *    times it, then bisection to the smallest certified A, plus t).  If
+ *    that fails, TS_ERR_INFEASIBLE only where the interval alone is
+ *    infeasible (its gap, concave in the two capped slopes' 1/a, has a
+ *    negative maximum over every beta >= 0 of it and its neighbours),
+ *    TS_ERR_PRECISION where that maximum is positive but below the guard,
+ *    and TS_ERR_UNPROVEN otherwise (the search gave up without a proof).
  */
 typedef enum ts_shape {
     TS_SHAPE_NONE = 0,      /* beta given by the caller */
@@ -357,7 +369,8 @@ typedef struct ts_spline ts_spline;
  * TS_ERR_MARGIN, TS_ERR_LENGTH, TS_ERR_OPTION, TS_ERR_PERIODIC,
  * TS_ERR_NEGATIVE, TS_ERR_SIDE, TS_ERR_LINES, TS_ERR_NONMONOTONE,
  * TS_ERR_INFEASIBLE, TS_ERR_GEOMETRIC, TS_ERR_ZERO_SLOPE, TS_ERR_SLOPE_OVERFLOW,
- * TS_ERR_TOO_LARGE, TS_ERR_CONTROL_OVERFLOW, TS_ERR_WIDTH.
+ * TS_ERR_TOO_LARGE, TS_ERR_CONTROL_OVERFLOW, TS_ERR_WIDTH, TS_ERR_PRECISION,
+ * TS_ERR_UNPROVEN.
  *
  * Which fault is reported when the input has several: first the arguments
  * (NULL, too few points, an enum out of range, sizes), then every point

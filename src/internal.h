@@ -319,6 +319,7 @@ typedef struct ts__repair_ops {
     int (*inside)(void *ctx, size_t i);            /* certified as it stands */
     int (*limit_inside)(void *ctx, size_t i);      /* certified in the limit a -> ∞ */
     double (*margin)(void *ctx, size_t i);         /* min of gap − guard; NULL: none */
+    double (*gap)(void *ctx, size_t i);            /* min of the gaps (with margin) */
 } ts__repair_ops;
 /* docs/method.md §5: the a_i that certifies interval i, starting from a0 (alpha al).
  *  - If the limit a -> ∞ is certified, a is raised: doubling, then bisection
@@ -329,7 +330,8 @@ typedef struct ts__repair_ops {
  *    it is not certified no a is (TS_ERR_INFEASIBLE); else the smallest
  *    certified a >= al, plus t towards the maximum.  In the C¹ form the gap
  *    also depends on the neighbours' a (fixed here): a heuristic there.
- * TS_OK with a_i set, or TS_ERR_INFEASIBLE with a_i = a0 again. */
+ * TS_OK with a_i set, or TS_ERR_INFEASIBLE (TS_ERR_PRECISION where the best
+ * gap is positive but not above its guard) with a_i = a0 again. */
 ts_status ts__repair_search(const ts__repair_ops *o, size_t i, double al, double a0, double t);
 /* Certify intervals [i0, i1) of a shape spline (their controls set), raising
  * beta_i where a gap is not positive; in order.  The C¹ form steps back after

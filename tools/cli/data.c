@@ -237,6 +237,18 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
         }
         cli_error("%s: infeasible constraint: %s", name, ts_strerror(st));
         return CLI_INFEASIBLE;
+    case TS_ERR_PRECISION:
+    case TS_ERR_UNPROVEN:
+        if (lines && interval)
+            snprintf(ln, sizeof ln, "%s:%llu-%llu", name, lines[i], lines[i + 1]);
+        else
+            snprintf(ln, sizeof ln, "%s", name);
+        if (interval)
+            cli_error("%s: interval %zu [%s, %s]: %s", ln, off + i, cli_num(x[i], bx),
+                      cli_num(x[i + 1], b2), ts_strerror(st));
+        else
+            cli_error("%s: %s", ln, ts_strerror(st));
+        return CLI_INFEASIBLE;
     case TS_ERR_GEOMETRIC:
         if (interval) {
             double a = (opt->alphas ? opt->alphas[off + i] : opt->alpha) +
