@@ -46,8 +46,7 @@ static const char *const ts_messages[TS_STATUS_COUNT_] = {
     [TS_ERR_SLOPE_OVERFLOW] = "a slope overflows: the data change too fast for the interval width",
     [TS_ERR_TOO_LARGE] = "a data or control value exceeds DBL_MAX/4: the spline could overflow",
     [TS_ERR_CONTROL_OVERFLOW] = "control values overflow: alpha + beta is too small for the slopes",
-    [TS_ERR_PRECISION] = "cannot be certified in double precision: the best gap is below the "
-                          "rounding bound",
+    [TS_ERR_PRECISION] = "cannot be certified in double precision: gap below the rounding bound",
     [TS_ERR_UNPROVEN] = "no certified beta found, and no proof that none exists (C1 search gave up)",
     [TS_ERR_WIDTH] = "an interval width overflows, or underflows below the smallest normal double",
 };

@@ -25,7 +25,7 @@
 
 static int rel_ok(double got, long double want, double tol)
 {
-    return fabsl((long double)got - want) <= tol * fabsl(want);
+    return fabsl((long double)got - want) <= (long double)tol * fabsl(want);
 }
 
 static void slopes_no_intermediate_overflow(void)
@@ -41,8 +41,8 @@ static void slopes_no_intermediate_overflow(void)
     CHECKF(st == TS_OK, "%s at %zu", ts_strerror(st), e.index);
     long double D[3], H[3];
     for (int j = 0; j < 3; j++) {
-        H[j] = (long double)x[j + 1] - x[j];
-        D[j] = ((long double)f[j + 1] - f[j]) / H[j];
+        H[j] = (long double)x[j + 1] - (long double)x[j];
+        D[j] = ((long double)f[j + 1] - (long double)f[j]) / H[j];
     }
     long double want[4];
     want[0] = D[0] + (D[0] - D[1]) * H[0] / (H[0] + H[1]);
