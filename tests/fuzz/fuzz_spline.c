@@ -19,6 +19,15 @@
 #define NMAX 24
 #define PER 24 /* samples per interval */
 
+static double bits11(double m)
+{
+    if (!isfinite(m) || m == 0.0)
+        return m;
+    int e;
+    double fr = frexp(m, &e);
+    return ldexp(nearbyint(ldexp(fr, 11)), e - 11);
+}
+
 static int documented(ts_status st)
 {
     switch (st) {
@@ -148,6 +157,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         o.upper.m = fuzz_double(&in);
         o.upper.c = fuzz_double(&in);
     }
+    /* slopes of at most 11 significant bits: m x is then exact in long
+     * double, and the check of the samples is not blurred by the line */
+    o.lower.m = bits11(o.lower.m);
+    o.upper.m = bits11(o.upper.m);
     if (o.slopes == TS_SLOPES_USER) {
         for (size_t i = 0; i < np; i++)
             d[i] = fuzz_double(&in);
