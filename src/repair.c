@@ -277,7 +277,7 @@ static int c1_uniform(ts_spline *sp, double t, int exact)
     double lo = -1.0, hi = a0;
     while (!c1_uniform_ok(sp, hi, exact)) {
         lo = hi;
-        hi *= 1.1;
+        hi = fmax(hi * 1.1, hi + DBL_MIN); /* grows also from a subnormal a0 */
         if (!(hi <= 1e6 * a0 && hi <= TS_A_MAX))
             return 0;
     }
