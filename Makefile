@@ -12,6 +12,9 @@
 #   make bench-python  the Python package against SciPy (also run by make bench)
 #   make accuracy   convergence study -> docs/accuracy.md, docs/accuracy.svg
 #   make valgrind   memcheck of the test programs
+#   make tsan       ThreadSanitizer build of the threads and core tests
+#   make coverage   line and branch coverage of the library (gcovr)
+#   make fuzz       the libFuzzer harnesses, FUZZ_SECONDS each (corpus replay is in make test)
 # Each target installs the Debian packages it needs (apt-get) when missing.
 # The compiler of a build directory is fixed when it is first configured
 # (CC=gcc or CC=clang below); `make clean` starts over.
@@ -236,3 +239,45 @@ test-web: web build $(WEB_BUILD)/reference-musl $(WEB_BUILD)/trigspline-musl tes
 	test -e bindings/web/node_modules/playwright-core/package.json || \
 	  (cd bindings/web && npm ci --no-audit --no-fund)
 	bindings/web/test/run.sh $(WEB_OUT) $(WEB_BUILD) build out/web-test
+# ---- trust at the edges: thread sanitizer, coverage, fuzzing ----
+.PHONY: tsan coverage fuzz
+
+# ThreadSanitizer (gcc) build of the threaded batch test and the core test.
+tsan:
+	$(call need,$(BUILD_TOOLS))
+	CC=gcc $(CMAKE) -S . -B build-tsan -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+	  -DCMAKE_C_FLAGS=-fsanitize=thread -DTS_BUILD_TOOLS=OFF -DTS_BUILD_EXAMPLES=OFF >/dev/null
+	$(CMAKE) --build build-tsan -j $(JOBS) --target test_threads test_core
+	TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/test_threads
+	TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/test_core
+
+# Line and branch coverage of the library (src/) by the C test programs:
+# gcc --coverage, the programs of tests/api and tests/unit, then gcovr.
+coverage:
+	$(call need,$(BUILD_TOOLS) gcovr:gcovr)
+	CC=gcc $(CMAKE) -S . -B build-coverage -DCMAKE_BUILD_TYPE=Debug \
+	  -DCMAKE_C_FLAGS="--coverage -fprofile-update=atomic -O0" -DTS_BUILD_EXAMPLES=OFF >/dev/null
+	$(CMAKE) --build build-coverage -j $(JOBS)
+	find build-coverage -name '*.gcda' -delete
+	@for t in build-coverage/tests/test_*; do \
+	  case $$t in *test_package*|*test_random_tool_inputs*|*test_io*|*test_plot*) continue;; esac; \
+	  [ -x $$t ] && { $$t >/dev/null 2>&1 || echo "coverage: $$t failed"; }; done; true
+	gcovr -r . --object-directory build-coverage --filter 'src/' --txt
+	gcovr -r . --object-directory build-coverage --filter 'src/' --branches --txt
+
+# libFuzzer harnesses of tests/fuzz/ (clang, ASan+UBSan), each run for
+# FUZZ_SECONDS seconds from its checked-in corpus (new inputs go to
+# build-fuzz/corpus/NAME, not into the repository).  `make test` replays
+# the checked-in corpus through the same harnesses (test_fuzz_* programs).
+FUZZ_SECONDS ?= 60
+fuzz:
+	$(call need,$(BUILD_TOOLS) clang:clang)
+	$(call need_file,/usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a,libclang-rt-14-dev)
+	CC=clang $(CMAKE) -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTS_FUZZ=ON \
+	  -DCMAKE_C_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all" \
+	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DTS_BUILD_EXAMPLES=OFF >/dev/null
+	$(CMAKE) --build build-fuzz -j $(JOBS) --target fuzzers
+	@set -e; for h in tests/fuzz/fuzz_*.c; do n=$$(basename $$h .c); n=$${n#fuzz_}; \
+	  mkdir -p build-fuzz/corpus/$$n; echo "fuzz $$n: $(FUZZ_SECONDS) s"; \
+	  build-fuzz/fuzz/fuzz_$$n -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 \
+	    build-fuzz/corpus/$$n tests/fuzz/corpus/$$n 2>&1 | tail -n 12; done

@@ -57,9 +57,10 @@ typedef enum ts_status {
     TS_ERR_NOMEM = 2,        /* allocation failed */
     TS_ERR_OVERFLOW = 3,     /* n * sizeof(...) would overflow size_t */
     TS_ERR_TOO_FEW = 4,      /* fewer than 2 points (n < 1 interval) */
-    TS_ERR_NONFINITE = 5,    /* NaN or ±Inf in x, f, slopes or line coefficients; an interval width
-                                that overflows or is subnormal (index = its right point); control
-                                values that overflow (tiny alpha + beta; index = interval) */
+    TS_ERR_NONFINITE = 5,    /* NaN or ±Inf in x, f, user slopes or line coefficients (index =
+                                point); quantities of finite data that leave the double range
+                                have codes of their own (TS_ERR_SLOPE_OVERFLOW, TS_ERR_TOO_LARGE,
+                                TS_ERR_CONTROL_OVERFLOW, TS_ERR_WIDTH) */
     TS_ERR_UNSORTED = 6,     /* x not strictly increasing (unsorted or duplicate); index = i with x[i] <= x[i-1] */
     TS_ERR_ALPHA = 7,        /* alpha <= 0 or not finite; index = interval */
     TS_ERR_BETA = 8,         /* beta < 0 or not finite, or alpha + beta <= 0 or not finite; index = interval */
@@ -78,8 +79,28 @@ typedef enum ts_status {
     TS_ERR_DIMENSION = 21,   /* curve dimension not 2 or 3 */
     TS_ERR_INDEX = 22,       /* accessor index out of range */
     TS_ERR_ZERO_SLOPE = 23,  /* a knot where the data touch a boundary (f = 0) got a user slope of the wrong sign; index = point */
-    TS_STATUS_COUNT_ = 24    /* not a status: number of codes */
+    TS_ERR_SLOPE_OVERFLOW = 24,   /* finite data whose slope estimate overflows a double (huge steps
+                                     of f over narrow intervals); index = point */
+    TS_ERR_TOO_LARGE = 25,        /* |f_i| > TS_VALUE_MAX (index = point) or a control value
+                                     |B_l| > TS_VALUE_MAX (index = interval): beyond it S could
+                                     overflow between the knots */
+    TS_ERR_CONTROL_OVERFLOW = 26, /* control values overflow: alpha + beta too small for the
+                                     slopes (B = f ± 2h d/(3π a)); index = interval */
+    TS_ERR_WIDTH = 27,            /* an interval width x_{i+1} − x_i overflows (x of both signs
+                                     near ±DBL_MAX) or underflows (below DBL_MIN, subnormal);
+                                     index = its right point */
+    TS_ERR_PRECISION = 28,        /* line schemes: a beta_i whose exact gap is positive exists, but the
+                                     gap stays below the rounding bound of the certificate: cannot
+                                     be certified in double precision; index = interval */
+    TS_ERR_UNPROVEN = 29,         /* C¹ form: no beta was found that certifies the interval, and
+                                     the search did not prove that none exists; index = interval */
+    TS_STATUS_COUNT_ = 30    /* not a status: number of codes */
 } ts_status;
+
+/* The largest |f_i| and |B_l| a spline accepts (TS_ERR_TOO_LARGE beyond):
+ * a quarter of DBL_MAX, so that S = Σ A_l B_l (Σ A_l = 1 up to rounding) and
+ * the differences B_{l+1} − B_l of its derivative cannot overflow. */
+#define TS_VALUE_MAX 0x1p1022
 
 /* A fixed, never-NULL English string for any value (unknown codes too). */
 TS_API const char *ts_strerror(ts_status status);
@@ -192,8 +213,9 @@ typedef enum ts_form {
  *              exactly (TS_ERR_PERIODIC, index n).
  *
  * ts_slopes_compute fills d with NaN when it fails; finite data whose
- * secants overflow (huge f over a tiny h) give TS_ERR_NONFINITE with the
- * index of the first point whose slope is not finite.
+ * slope overflows (huge f over a tiny h) give TS_ERR_SLOPE_OVERFLOW with the
+ * index of the first such point.  No intermediate overflows where the slope
+ * is finite (secants of f near ±DBL_MAX, the end formula's Δ_0 − Δ_1).
  */
 typedef enum ts_slopes {
     TS_SLOPES_ARITHMETIC = 0,     /* three-point arithmetic mean (default) */
@@ -235,13 +257,20 @@ typedef enum ts_slopes {
  *    steep line, close data), the largest certificate over all beta_i >= 0
  *    is searched (golden section; exact in the paper form, where the gap is
  *    concave in 1/a) and the smallest certified a taken.  If none exists:
- *    TS_ERR_INFEASIBLE, index = interval.  (Any scheme also reports it when
+ *    TS_ERR_INFEASIBLE, index = interval; if the best gap is positive but
+ *    below the certificate's rounding bound: TS_ERR_PRECISION.  (Any scheme also reports it when
  *    the a needed exceeds 1e307, e.g. a value near the underflow threshold
  *    next to a slope of order one.)  In the C¹ form an interval's
  *    curve also depends on its neighbours' a (d̂ of docs/method.md §3); there a
  *    neighbour whose larger a caps the shared knot's slope may be lowered
- *    once, and the error means no beta_i was found with the neighbours as
- *    they then are.
+ *    once; if that fails too, the uniform family a_j = max(alpha_j, A) for
+ *    all j is searched (A from max alpha_j upwards by factors 1.1 to 1e6
+ *    times it, then bisection to the smallest certified A, plus t).  If
+ *    that fails, TS_ERR_INFEASIBLE only where the interval alone is
+ *    infeasible (its gap, concave in the two capped slopes' 1/a, has a
+ *    negative maximum over every beta >= 0 of it and its neighbours),
+ *    TS_ERR_PRECISION where that maximum is positive but below the guard,
+ *    and TS_ERR_UNPROVEN otherwise (the search gave up without a proof).
  */
 typedef enum ts_shape {
     TS_SHAPE_NONE = 0,      /* beta given by the caller */
@@ -317,9 +346,9 @@ TS_API void ts_options_init(ts_options *opt);
 
 /*
  * Estimate slopes d[0..n_points-1] by a method of docs/method.md §6 (not TS_SLOPES_USER).
- * Returns TS_OK, TS_ERR_NULL, TS_ERR_TOO_FEW, TS_ERR_NONFINITE (also when an
- * interval width or a slope overflows; index = point), TS_ERR_UNSORTED,
- * TS_ERR_OPTION, TS_ERR_PERIODIC.  On failure d (if not NULL) is filled with NaN.
+ * Returns TS_OK, TS_ERR_NULL, TS_ERR_TOO_FEW, TS_ERR_NONFINITE (index =
+ * point), TS_ERR_UNSORTED, TS_ERR_WIDTH (a width overflows), TS_ERR_OPTION,
+ * TS_ERR_PERIODIC, TS_ERR_SLOPE_OVERFLOW (a slope overflows; index = point).  On failure d (if not NULL) is filled with NaN.
  */
 TS_API ts_status ts_slopes_compute(ts_slopes method, const double *x, const double *f,
                             size_t n_points, double *d, ts_error *err);
@@ -339,19 +368,22 @@ typedef struct ts_spline ts_spline;
  * TS_ERR_NONFINITE, TS_ERR_UNSORTED, TS_ERR_ALPHA, TS_ERR_BETA,
  * TS_ERR_MARGIN, TS_ERR_LENGTH, TS_ERR_OPTION, TS_ERR_PERIODIC,
  * TS_ERR_NEGATIVE, TS_ERR_SIDE, TS_ERR_LINES, TS_ERR_NONMONOTONE,
- * TS_ERR_INFEASIBLE, TS_ERR_GEOMETRIC, TS_ERR_ZERO_SLOPE.
+ * TS_ERR_INFEASIBLE, TS_ERR_GEOMETRIC, TS_ERR_ZERO_SLOPE, TS_ERR_SLOPE_OVERFLOW,
+ * TS_ERR_TOO_LARGE, TS_ERR_CONTROL_OVERFLOW, TS_ERR_WIDTH, TS_ERR_PRECISION,
+ * TS_ERR_UNPROVEN.
  *
  * Which fault is reported when the input has several: first the arguments
  * (NULL, too few points, an enum out of range, sizes), then every point
- * (non-finite, unsorted, widths), then options that concern all the data
+ * (non-finite, unsorted, widths, |f| > TS_VALUE_MAX), then options that concern all the data
  * (user slopes array, periodic ends, array lengths, the scheme's options and
  * lines); then the intervals are built in consecutive blocks of 1024, and
  * in each block the stages run in order — slopes (non-finite), alpha, beta
  * or the scheme's data checks and rule, the geometric bound, controls and
  * certificates (TS_ERR_INFEASIBLE) — so the fault reported is the first of
  * the first block that has one (for n_points <= 1025: the first in stage
- * order).  In the C¹ form certificates follow all blocks.  Non-finite
- * control values (TS_ERR_NONFINITE, an interval) are reported last.
+ * order).  In the C¹ form certificates follow all blocks.  Control values
+ * that overflow (TS_ERR_CONTROL_OVERFLOW) or exceed TS_VALUE_MAX
+ * (TS_ERR_TOO_LARGE), an interval, are reported last.
  */
 TS_API ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
                         const ts_options *opt, ts_spline **out, ts_error *err);
@@ -581,8 +613,9 @@ TS_API void ts_curve_options_init(ts_curve_options *opt);
  *   TS_ERR_TOO_FEW     n_points < 2; closed: fewer than 3 distinct points
  *   TS_ERR_OVERFLOW    n_points * dim * sizeof(double) overflows size_t
  *   TS_ERR_NONFINITE   NaN/Inf coordinate (index = point); a non-finite box
- *                      bound; or knots, slopes or control points that overflow
+ *                      bound; or knots or control points that overflow
  *                      (index = point, or segment for control points)
+ *   TS_ERR_SLOPE_OVERFLOW  a slope in t overflows (index = point)
  *   TS_ERR_LENGTH      alphas/betas given with n_* != segments
  *   TS_ERR_ALPHA       alpha_i <= 0 or not finite (index = segment)
  *   TS_ERR_BETA        beta_i < 0 or not finite, or alpha_i + beta_i overflows (index = segment)

@@ -239,9 +239,10 @@ int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double
 {
     cr->glo = cr->alo = cr->gup = cr->aup = (double)NAN;
     double f0 = sp->f[i], f1 = sp->f[i + 1], guard;
-    /* an overflowed control value (tiny a_i) proves nothing: S would be NaN */
+    /* a control value beyond TS_VALUE_MAX (tiny a_i) proves nothing: S could
+     * overflow (NaN where B overflowed); the repair raises a_i instead */
     for (int l = 0; l < 4; l++)
-        if (!isfinite(B[l]) || (X && !isfinite(X[l])))
+        if (!(fabs(B[l]) <= TS_VALUE_MAX) || (X && !isfinite(X[l])))
             return 0;
     if (sp->shape == TS_SHAPE_MONOTONE) {
         int ok = monotone_proof(B[0], B[1], B[2], B[3]);
@@ -307,7 +308,7 @@ TS_INLINE int proven(const double *restrict f, const double *restrict b1,
                          const double *restrict b2, size_t i, int positive)
 {
     double B0 = f[i], B1 = b1[i], B2 = b2[i], B3 = f[i + 1];
-    int finite = (fabs(B1) <= DBL_MAX) & (fabs(B2) <= DBL_MAX);
+    int finite = (fabs(B1) <= TS_VALUE_MAX) & (fabs(B2) <= TS_VALUE_MAX);
     return finite & (positive ? positive_proof(B0, B1, B2, B3) : monotone_proof(B0, B1, B2, B3));
 }
 
@@ -363,8 +364,8 @@ TS_VECTOR_LOOP static void mono_certify(const double *restrict f, const double *
         bmax = fabs(B1) > bmax ? fabs(B1) : bmax;
         bmax = fabs(B2) > bmax ? fabs(B2) : bmax;
         bmax = fabs(B3) > bmax ? fabs(B3) : bmax;
-        int good = (fabs(B0) <= DBL_MAX) & (fabs(B1) <= DBL_MAX) & (fabs(B2) <= DBL_MAX) &
-                   (fabs(B3) <= DBL_MAX);
+        int good = (fabs(B0) <= TS_VALUE_MAX) & (fabs(B1) <= TS_VALUE_MAX) &
+                   (fabs(B2) <= TS_VALUE_MAX) & (fabs(B3) <= TS_VALUE_MAX);
         double L0 = m * xi + c;
         double C0 = sg * (B0 - L0), C1 = sg * (B1 - L0), C2 = sg * (B2 - L0), C3 = sg * (B3 - L0);
         /* gap_ctl has 0 for m = 0: ±0 here, the same from here on (|κ|, the

@@ -195,7 +195,7 @@ static int curve_limit_inside(void *ctx, size_t i)
 
 static int seg_repair(ts_curve *c, size_t i, double t)
 {
-    ts__repair_ops o = {c, curve_set_a, curve_inside, curve_limit_inside, NULL};
+    ts__repair_ops o = {c, curve_set_a, curve_inside, curve_limit_inside, NULL, NULL};
     return ts__repair_search(&o, i, c->alpha[i], c->alpha[i] + c->beta[i], t) == TS_OK ? 0 : -1;
 }
 

@@ -217,10 +217,11 @@ ts_status ts_integral(const ts_spline *s, double a, double b, double *out)
     ib = ts__locate(s, b, NULL);
     double r;
     if (ia == ib)
-        r = ts__interval_integral(s, ia, b) - ts__interval_integral(s, ia, a);
+        r = ts__interval_integral_scaled(s, ia, a, b, 0);
     else
-        r = (s->cum[ib] - s->cum[ia + 1]) + (s->cum[ia + 1] - s->cum[ia] - ts__interval_integral(s, ia, a)) +
-            ts__interval_integral(s, ib, b);
+        r = (s->cum[ib] - s->cum[ia + 1]) +
+            ts__interval_integral_scaled(s, ia, a, s->x[ia + 1], 0) +
+            ts__interval_integral_scaled(s, ib, s->x[ib], b, 0);
     if (!isfinite(r)) {
         /* the cumulative sums (or two antiderivatives) overflowed: sum the
          * pieces again scaled by 2^-k, k enough for every partial sum of

@@ -178,10 +178,12 @@ static const double gl_weight[6] = {
     0.04717533638651182719462, 0.1069393259953184309603, 0.1600783285433462263347,
     0.2031674267230659217491, 0.2334925365383548087608, 0.2491470458134027850006};
 
-/* h ∫_0^φ Y(t) X̂'(t) dt on one side, φ <= π/4: the integrand is a
+/* 2^-k h ∫_0^φ Y(t) X̂'(t) dt on one side, φ <= π/4: the integrand is a
  * trigonometric polynomial of degree 6, and the 12-point rule's error on
- * [0, π/4] is below 1e-17 of its coefficients (docs/accuracy.md §1). */
-static double geo_side_int(const geo_side *g, double phi)
+ * [0, π/4] is below 1e-17 of its coefficients (docs/accuracy.md §1).  The
+ * half-length goes into the weights, so the sum stays below DBL_MAX for
+ * |Y| <= TS_VALUE_MAX. */
+static double geo_side_int(const geo_side *g, double phi, int k)
 {
     double half = 0.5 * phi, sum = 0.0;
     for (int j = 0; j < 12; j++) {
@@ -192,37 +194,45 @@ static double geo_side_int(const geo_side *g, double phi)
         ts__basis_d1(s, c, D);
         double Y = g->F0 * c * c + g->F1 * s * s + g->k * (g->D0 * A[1] - g->D1 * A[2]);
         double Xp = 2.0 * s * c + g->kappa * (D[1] - D[2]);
-        sum += w * Y * Xp;
+        sum += (half * w) * Y * Xp;
     }
-    return g->h * half * sum;
+    return ldexp(g->h, -k) * sum;
 }
 
-/* ∫ over the whole interval: h Σ Y_l P_l + k Σ Y_l Q_l with
+/* 2^-k ∫ over the whole interval: h Σ Y_l P_l + k Σ Y_l Q_l with
  * P = (1/10, 2/5, 2/5, 1/10), Q = Q0 (1, −1, −1, 1), Q0 = 56/5 − 111π/32,
- * i.e. h(f_i + f_{i+1})/2 + k(d_i − d_{i+1})(2h/5 − Q0 k). */
-static double geo_whole(const ts_spline *sp, size_t i)
+ * i.e. h(f_i + f_{i+1})/2 + k(d_i − d_{i+1})(2h/5 − Q0 k).  k d_i = B1 − f_i
+ * is at most 2 TS_VALUE_MAX, so k d_i − k d_{i+1} cannot overflow; the
+ * scale 2^-k goes on the factors of h. */
+static double geo_whole(const ts_spline *sp, size_t i, int k)
 {
     const double Q0 = 56.0 / 5.0 - 111.0 * TS_PI / 32.0;
     double a = sp->alpha[i] + sp->beta[i], h = sp->h[i];
-    double k = 2.0 / (3.0 * TS_PI * a) * h;
-    return 0.5 * h * (sp->f[i] + sp->f[i + 1]) +
-           k * (sp->d[i] - sp->d[i + 1]) * (0.4 * h - Q0 * k);
+    double kk = 2.0 / (3.0 * TS_PI * a) * h;
+    double hs = ldexp(h, -k), ks = ldexp(kk, -k);
+    return 0.5 * hs * (sp->f[i] + sp->f[i + 1]) +
+           (kk * sp->d[i] - kk * sp->d[i + 1]) * (0.4 * hs - Q0 * ks);
 }
 
-double ts__geo_integral(const ts_spline *sp, size_t i, double x)
+double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k)
 {
     double x0 = sp->x[i], x1 = sp->x[i + 1];
     if (!(x > x0))
         return 0.0;
     if (x >= x1)
-        return geo_whole(sp, i);
+        return geo_whole(sp, i, k);
     double dl = x - x0, dr = x1 - x;
     int right = dr < dl;
     geo_side g;
     geo_side_init(sp, i, right, &g);
     double phi = geo_solve(g.kappa, (right ? dr : dl) / g.h);
-    double part = geo_side_int(&g, phi);
-    return right ? geo_whole(sp, i) - part : part;
+    double part = geo_side_int(&g, phi, k);
+    return right ? geo_whole(sp, i, k) - part : part;
+}
+
+double ts__geo_integral(const ts_spline *sp, size_t i, double x)
+{
+    return ts__geo_integral_scaled(sp, i, x, 0);
 }
 
 /* docs/method.md §4 bound; the policy is documented at TS_FORM_GEOMETRIC. */

@@ -331,6 +331,8 @@ double ts__geo_integral(const ts_spline *sp, size_t i, double x);
 /* φ in [0, π/4] with X̂(φ) = u, u in [0, 1/2], κ = 2/(3π a) (the solve of
  * ts__geo_eval; used by the surfaces of docs/method.md §11). */
 double ts__geo_solve(double kappa, double u);
+/* The same times 2^-k, finite where that is (|f|, |B| <= TS_VALUE_MAX). */
+double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k);
 
 /* ==== L2 ============================================================ */
 
@@ -338,11 +340,10 @@ double ts__geo_solve(double kappa, double u);
 /* Value and derivatives (in x; out[1], out[2] only if want > 0, > 1) of
  * interval i at x, any form; x may lie outside the interval (extension). */
 void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double o[3]);
-/* ∫_{x_i}^{x} S on interval i, x in the interval. */
-double ts__interval_integral(const ts_spline *sp, size_t i, double x);
-/* 2^-k ∫_a^b S on interval i (a, b in the interval), the factors ordered so
- * that it stays finite where the integral times 2^-k is (ts_integral's
- * path when sums overflow). */
+/* 2^-k ∫_a^b S on interval i (x_i <= a <= b <= x_{i+1}), the factors ordered
+ * so that it stays finite where the integral times 2^-k is.  A piece shorter
+ * than h/16 is integrated directly (12-point Gauss–Legendre in x), so its
+ * relative error is a few ε of the piece, not of the interval. */
 double ts__interval_integral_scaled(const ts_spline *sp, size_t i, double a, double b, int k);
 
 /* ---- shape.c (docs/method.md §5) ----------------------------------------------- */
@@ -472,6 +473,7 @@ typedef struct ts__repair_ops {
     int (*inside)(void *ctx, size_t i);            /* certified as it stands */
     int (*limit_inside)(void *ctx, size_t i);      /* certified in the limit a -> ∞ */
     double (*margin)(void *ctx, size_t i);         /* min of gap − guard; NULL: none */
+    double (*gap)(void *ctx, size_t i);            /* min of the gaps (with margin) */
 } ts__repair_ops;
 /* docs/method.md §5: the a_i that certifies interval i, starting from a0 (alpha al).
  *  - If the limit a -> ∞ is certified, a is raised: doubling, then bisection
@@ -482,7 +484,8 @@ typedef struct ts__repair_ops {
  *    it is not certified no a is (TS_ERR_INFEASIBLE); else the smallest
  *    certified a >= al, plus t towards the maximum.  In the C¹ form the gap
  *    also depends on the neighbours' a (fixed here): a heuristic there.
- * TS_OK with a_i set, or TS_ERR_INFEASIBLE with a_i = a0 again. */
+ * TS_OK with a_i set, or TS_ERR_INFEASIBLE (TS_ERR_PRECISION where the best
+ * gap is positive but not above its guard) with a_i = a0 again. */
 ts_status ts__repair_search(const ts__repair_ops *o, size_t i, double al, double a0, double t);
 /* Certify intervals [i0, i1) of a shape spline (their controls set), raising
  * beta_i where a gap is not positive; in order.  The C¹ form steps back after

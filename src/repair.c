@@ -73,8 +73,15 @@ ts_status ts__repair_search(const ts__repair_ops *o, size_t i, double al, double
                 return infeasible(o, i, a0);
             amax = TS_A_MAX;
         }
-        if (!ok_at(o, i, amax))
-            return infeasible(o, i, a0);
+        if (!ok_at(o, i, amax)) {
+            /* infeasible only where the best gap is below minus its
+             * rounding guard (a proof); within ±guard it cannot be decided
+             * in double precision (docs/method.md §5) */
+            double g = o->gap(o->ctx, i), m = o->margin(o->ctx, i);
+            int precision = g + (g - m) >= 0.0; /* guard = g − m */
+            (void)infeasible(o, i, a0);
+            return precision ? TS_ERR_PRECISION : TS_ERR_INFEASIBLE;
+        }
         if (ok_at(o, i, al)) {
             lo = hi = al;
         } else {
@@ -169,13 +176,27 @@ static double spline_margin(void *ctx, size_t i)
     return r;
 }
 
+/* The smallest gap over the active boundaries (no guard). */
+static double spline_gap(void *ctx, size_t i)
+{
+    const ts_spline *sp = ((spline_ctx *)ctx)->sp;
+    double B[4], X[4], r = (double)INFINITY, guard, at;
+    int geo;
+    ts__controls_of(sp, i, B, X, &geo);
+    if (sp->has_lower)
+        r = fmin(r, ts__gap_ctl(sp, i, B, geo ? X : NULL, &sp->lower, 1, &at, &guard));
+    if (sp->has_upper)
+        r = fmin(r, ts__gap_ctl(sp, i, B, geo ? X : NULL, &sp->upper, -1, &at, &guard));
+    return r;
+}
+
 /* docs/method.md §5: raise beta_i until interval i is certified (ts__repair_search);
  * the geometric form has no concave search (a line the chord crosses). */
 static ts_status repair(ts_spline *sp, size_t i, double t, int exact, ts_error *err)
 {
     spline_ctx z = {sp, exact};
     ts__repair_ops o = {&z, spline_set_a, spline_inside, spline_limit_inside,
-                        sp->form == TS_FORM_GEOMETRIC ? NULL : spline_margin};
+                        sp->form == TS_FORM_GEOMETRIC ? NULL : spline_margin, spline_gap};
     ts_status st = ts__repair_search(&o, i, sp->alpha[i], sp->alpha[i] + sp->beta[i], t);
     if (st != TS_OK)
         return ts__fail(err, st, i, TS_WHERE_INTERVAL);
@@ -227,6 +248,144 @@ static int relax_neighbours(ts_spline *sp, size_t i, int exact)
     return changed;
 }
 
+/* C¹ form: a_j = max(alpha_j, A) for every j, controls of all intervals;
+ * 1 if every interval is then certified. */
+static int c1_uniform_ok(ts_spline *sp, double A, int exact)
+{
+    size_t n = sp->n;
+    for (size_t j = 0; j < n; j++) {
+        double a = sp->alpha[j] > A ? sp->alpha[j] : A;
+        sp->beta[j] = a - sp->alpha[j];
+    }
+    ts__controls(sp, 0, n);
+    for (size_t j = 0; j < n; j++)
+        if (!ts__check_interval(sp, j, exact))
+            return 0;
+    return 1;
+}
+
+/* C¹ form, after the per-interval repair failed: the uniform family
+ * (header, TS_SHAPE_*): A from max alpha_j up by factors 1.1 to 1e6 times
+ * it; then bisection down to the smallest certified A, plus the margin t
+ * where that is still certified.  1 with every interval certified. */
+static int c1_uniform(ts_spline *sp, double t, int exact)
+{
+    size_t n = sp->n;
+    double a0 = 0.0;
+    for (size_t j = 0; j < n; j++)
+        a0 = sp->alpha[j] > a0 ? sp->alpha[j] : a0;
+    double lo = -1.0, hi = a0;
+    while (!c1_uniform_ok(sp, hi, exact)) {
+        lo = hi;
+        hi = fmax(hi * 1.1, hi + DBL_MIN); /* grows also from a subnormal a0 */
+        if (!(hi <= 1e6 * a0 && hi <= TS_A_MAX))
+            return 0;
+    }
+    for (int it = 0; lo > 0.0 && it < 60 && hi - lo > 1e-12 * hi; it++) {
+        double mid = lo + 0.5 * (hi - lo);
+        if (c1_uniform_ok(sp, mid, exact))
+            hi = mid;
+        else
+            lo = mid;
+    }
+    if (!c1_uniform_ok(sp, hi + t, exact))
+        (void)c1_uniform_ok(sp, hi, exact);
+    for (size_t j = 0; j < n; j++)
+        if (sp->beta[j] > 0.0)
+            sp->term[j] = (unsigned char)TS_TERM_CERTIFY;
+    return 1;
+}
+
+/* Margin (gap − guard) of interval i of a C¹ spline with the capped slopes'
+ * factors uL = 1/max(a_{i-1}, a_i), uR = 1/max(a_i, a_{i+1}); *gap receives
+ * gap + guard (above the true gap). */
+static double c1_margin(const ts_spline *sp, size_t i, double uL, double uR, double *gap)
+{
+    double K = 2.0 / (3.0 * TS_PI) * sp->h[i], r = (double)INFINITY, g = r, guard, at;
+    double B[4] = {sp->f[i], sp->f[i] + K * (sp->d[i] * uL), sp->f[i + 1] - K * (sp->d[i + 1] * uR),
+                   sp->f[i + 1]};
+    for (int side = 0; side < 2; side++) {
+        if (!(side == 0 ? sp->has_lower : sp->has_upper))
+            continue;
+        double gs = ts__gap_ctl(sp, i, B, NULL, side == 0 ? &sp->lower : &sp->upper,
+                                side == 0 ? 1 : -1, &at, &guard);
+        g = fmin(g, gs + guard);
+        r = fmin(r, gs - guard);
+    }
+    *gap = g;
+    return r;
+}
+
+/* Best margin over uR in [0, UR] at uL (golden section; the gap is concave
+ * in (uL, uR), a minimum of affine functions); *gap the largest gap seen. */
+static double c1_best_right(const ts_spline *sp, size_t i, double uL, double UR, double *gap)
+{
+    const double r = 0.6180339887498949;
+    double a = 0.0, b = UR, u1 = b - r * (b - a), u2 = a + r * (b - a), g1, g2;
+    double m1 = c1_margin(sp, i, uL, u1, &g1), m2 = c1_margin(sp, i, uL, u2, &g2);
+    *gap = fmax(g1, g2);
+    for (int it = 0; it < 60 && b - a > 1e-12 * UR; it++) {
+        if (m1 < m2) {
+            a = u1, u1 = u2, m1 = m2;
+            u2 = a + r * (b - a);
+            m2 = c1_margin(sp, i, uL, u2, &g2);
+        } else {
+            b = u2, u2 = u1, m2 = m1;
+            u1 = b - r * (b - a);
+            m1 = c1_margin(sp, i, uL, u1, &g2);
+        }
+        *gap = fmax(*gap, g2);
+    }
+    return fmax(m1, m2);
+}
+
+/* C¹ form: why interval i was refused.  Its gap depends on a_{i-1}, a_i,
+ * a_{i+1} only through uL, uR, each anywhere in (0, 1/max of the two
+ * alphas]; the interval alone is infeasible where the best gap over that
+ * box is below minus its guard (TS_ERR_INFEASIBLE, a proof), not decidable
+ * in double precision where it is within ±guard (TS_ERR_PRECISION); else
+ * the search gave up (TS_ERR_UNPROVEN). */
+static ts_status c1_refusal(const ts_spline *sp, size_t i)
+{
+    size_t n = sp->n;
+    double al = sp->alpha[i];
+    double aL = i > 0 && sp->alpha[i - 1] > al ? sp->alpha[i - 1] : al;
+    double aR = i + 1 < n && sp->alpha[i + 1] > al ? sp->alpha[i + 1] : al;
+    double UL = 1.0 / aL, UR = 1.0 / aR;
+    UL = UL <= DBL_MAX ? UL : DBL_MAX;
+    UR = UR <= DBL_MAX ? UR : DBL_MAX;
+    const double r = 0.6180339887498949;
+    double a = 0.0, b = UL, u1 = b - r * (b - a), u2 = a + r * (b - a), g, gbest;
+    double m1 = c1_best_right(sp, i, u1, UR, &gbest), m2 = c1_best_right(sp, i, u2, UR, &g);
+    gbest = fmax(gbest, g);
+    for (int it = 0; it < 60 && b - a > 1e-12 * UL; it++) {
+        if (m1 < m2) {
+            a = u1, u1 = u2, m1 = m2;
+            u2 = a + r * (b - a);
+            m2 = c1_best_right(sp, i, u2, UR, &g);
+        } else {
+            b = u2, u2 = u1, m2 = m1;
+            u1 = b - r * (b - a);
+            m1 = c1_best_right(sp, i, u1, UR, &g);
+        }
+        gbest = fmax(gbest, g);
+    }
+    if (fmax(m1, m2) > 0.0)
+        return TS_ERR_UNPROVEN;
+    return gbest > 0.0 ? TS_ERR_PRECISION : TS_ERR_INFEASIBLE;
+}
+
+/* C¹ form, interval i not certified by the per-interval repair: the uniform
+ * family, else the reason (c1_refusal). */
+static ts_status c1_fallback(ts_spline *sp, size_t i, double t, int exact, ts_error *err)
+{
+    if (c1_uniform(sp, t, exact)) {
+        ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+        return TS_OK;
+    }
+    return ts__fail(err, c1_refusal(sp, i), i, TS_WHERE_INTERVAL);
+}
+
 /* The certification loop over [i0, i1).  In the paper and geometric forms
  * every interval is checked (and repaired) on its own; the C¹ form steps back
  * after a repair, so it runs once over [0, n). */
@@ -259,16 +418,16 @@ static ts_status certify_loop(ts_spline *sp, const ts_options *opt, size_t i0, s
             i++;
             continue;
         }
-        if (budget-- == 0) {
-            ts__error_set(err, TS_ERR_INFEASIBLE, i, TS_WHERE_INTERVAL);
-            return TS_ERR_INFEASIBLE;
-        }
         double t = opt->margins ? opt->margins[i] : opt->margin;
+        if (budget-- == 0) /* only the C¹ form steps back */
+            return c1_fallback(sp, i, t, exact, err);
         ts_status st = repair(sp, i, t, exact, err);
         if (st != TS_OK && sp->form == TS_FORM_C1 && relax_neighbours(sp, i, exact)) {
             ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
             st = repair(sp, i, t, exact, err);
         }
+        if (st != TS_OK && sp->form == TS_FORM_C1)
+            return c1_fallback(sp, i, t, exact, err);
         if (st != TS_OK)
             return st;
         /* C¹: the repair changed d̂_i, so re-check the left neighbour */

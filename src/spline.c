@@ -169,13 +169,23 @@ static void spline_release(ts_spline *s);
  * cache (~100 KiB) from the slopes to the integrals (docs/design.md). */
 #define TS_BLOCK 1024
 
+/* 1 if every |b1[i]|, |b2[i]| <= TS_VALUE_MAX, i < n (NaN-safe). */
+TS_VECTOR_LOOP static int values_ok(const double *restrict b1, const double *restrict b2,
+                                    size_t n)
+{
+    int ok = 1;
+    for (size_t i = 0; i < n; i++)
+        ok &= (fabs(b1[i]) <= TS_VALUE_MAX) & (fabs(b2[i]) <= TS_VALUE_MAX);
+    return ok;
+}
+
 /* The first non-finite d_i, i in [p0, p1) (there is one). */
 static ts_status nonfinite_slope(const ts_spline *sp, size_t p0, size_t p1, ts_error *err)
 {
     size_t i = p0;
     while (i + 1 < p1 && isfinite(sp->d[i]))
         i++;
-    return ts__fail(err, TS_ERR_NONFINITE, i, TS_WHERE_POINT);
+    return ts__fail(err, TS_ERR_SLOPE_OVERFLOW, i, TS_WHERE_POINT);
 }
 
 /* The one construction path, every form: the stages (docs/method.md §6 slopes, alpha,
@@ -250,11 +260,17 @@ static ts_status build(ts_spline *sp, const ts_options *o, const double *x, cons
     if (shaped)
         ts__certify_done(sp, o);
     /* control values must be finite (a tiny a_i with a large slope can
-     * overflow B1, B2 with no scheme to catch it); an integral that overflows
+     * overflow B1, B2 with no scheme to catch it) and at most TS_VALUE_MAX
+     * (so S between the knots cannot overflow); an integral that overflows
      * is not an error: ts_integral then returns ±Inf */
-    for (size_t i = 0; i < n; i++)
-        if (!(fabs(sp->b1[i]) <= DBL_MAX && fabs(sp->b2[i]) <= DBL_MAX))
-            return ts__fail(err, TS_ERR_NONFINITE, i, TS_WHERE_INTERVAL);
+    if (!values_ok(sp->b1, sp->b2, n)) {
+        for (size_t i = 0; i < n; i++) {
+            double m = fmax(fabs(sp->b1[i]), fabs(sp->b2[i]));
+            if (!(m <= TS_VALUE_MAX))
+                return ts__fail(err, m <= DBL_MAX ? TS_ERR_TOO_LARGE : TS_ERR_CONTROL_OVERFLOW,
+                                i, TS_WHERE_INTERVAL);
+        }
+    }
     return TS_OK;
 }
 
@@ -265,14 +281,14 @@ TS_VECTOR_LOOP static int points_ok(const double *restrict x, const double *rest
 {
     int ok = 1;
     for (size_t i = i0; i < i1; i++)
-        ok &= (fabs(x[i]) <= DBL_MAX) & (fabs(f[i]) <= DBL_MAX) & (x[i] > x[i - 1]) &
+        ok &= (fabs(x[i]) <= DBL_MAX) & (fabs(f[i]) <= TS_VALUE_MAX) & (x[i] > x[i - 1]) &
               (x[i] - x[i - 1] <= DBL_MAX) & (x[i] - x[i - 1] >= DBL_MIN);
     return ok;
 }
 
 static int points_valid(const double *x, const double *f, size_t np)
 {
-    int ok = fabs(x[0]) <= DBL_MAX && fabs(f[0]) <= DBL_MAX;
+    int ok = fabs(x[0]) <= DBL_MAX && fabs(f[0]) <= TS_VALUE_MAX;
     for (size_t i0 = 1; i0 < np && ok; i0 += 4096)
         ok = points_ok(x, f, i0, np - i0 > 4096 ? i0 + 4096 : np);
     return ok;
@@ -322,7 +338,11 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
         /* widths must be finite and normal: dθ/dx = (π/2)/h must not overflow */
         for (size_t i = 0; i < n; i++)
             if (!(x[i + 1] - x[i] <= DBL_MAX && x[i + 1] - x[i] >= DBL_MIN))
-                return ts__fail(err, TS_ERR_NONFINITE, i + 1, TS_WHERE_POINT);
+                return ts__fail(err, TS_ERR_WIDTH, i + 1, TS_WHERE_POINT);
+        /* docs: |f| <= TS_VALUE_MAX, so that S cannot overflow between knots */
+        for (size_t i = 0; i < n_points; i++)
+            if (!(fabs(f[i]) <= TS_VALUE_MAX))
+                return ts__fail(err, TS_ERR_TOO_LARGE, i, TS_WHERE_POINT);
     }
 
     ts_spline *sp = ts__calloc(1, sizeof *sp);

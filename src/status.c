@@ -43,6 +43,12 @@ static const char *const ts_messages[TS_STATUS_COUNT_] = {
     [TS_ERR_DIMENSION] = "curve dimension must be 2 or 3",
     [TS_ERR_INDEX] = "index out of range",
     [TS_ERR_ZERO_SLOPE] = "slope of the wrong sign at a knot on the boundary",
+    [TS_ERR_SLOPE_OVERFLOW] = "a slope overflows: the data change too fast for the interval width",
+    [TS_ERR_TOO_LARGE] = "a data or control value exceeds DBL_MAX/4: the spline could overflow",
+    [TS_ERR_CONTROL_OVERFLOW] = "control values overflow: alpha + beta is too small for the slopes",
+    [TS_ERR_PRECISION] = "cannot be certified in double precision: gap below the rounding bound",
+    [TS_ERR_UNPROVEN] = "no certified beta found, and no proof that none exists (C1 search gave up)",
+    [TS_ERR_WIDTH] = "an interval width overflows, or underflows below the smallest normal double",
 };
 
 const char *ts_strerror(ts_status status)
@@ -63,17 +69,17 @@ void ts__error_set(ts_error *err, ts_status st, size_t index, ts_where where)
 
 #ifdef TS_TEST_HOOKS
 long ts__test_fail_alloc;
-
-static int alloc_should_fail(void)
-{
-    return ts__test_fail_alloc > 0 && --ts__test_fail_alloc == 0;
-}
-#else
-static int alloc_should_fail(void)
-{
-    return 0;
-}
 #endif
+
+/* One definition for both builds (coverage tools merge the two by line). */
+static int alloc_should_fail(void)
+{
+#ifdef TS_TEST_HOOKS
+    return ts__test_fail_alloc > 0 && --ts__test_fail_alloc == 0;
+#else
+    return 0;
+#endif
+}
 
 void *ts__malloc(size_t bytes)
 {

@@ -35,8 +35,16 @@ _block = re.search(r"set\(TS_LIBRARY_SOURCES(.*?)\)", read(os.path.join(SRC, "CM
                    re.S).group(1)
 LIB_SOURCES = [os.path.join(SRC, name)
                for name in re.findall(r"([A-Za-z0-9_]+\.c)\b", re.sub(r"#[^\n]*", "", _block))]
-# Per-source options of src/CMakeLists.txt (set_source_files_properties).
-LIB_SOURCE_FLAGS = {"kernels.c": ["-O3", "-ffp-contract=fast"]}
+# Per-source options, read from src/CMakeLists.txt's
+# set_source_files_properties(.../NAME.c PROPERTIES COMPILE_OPTIONS "a;b")
+# so that the extension computes what the C library computes, bit for bit.
+LIB_SOURCE_FLAGS = {
+    name: opts.split(";")
+    for name, opts in re.findall(
+        r"set_source_files_properties\(\$\{CMAKE_CURRENT_SOURCE_DIR\}/([A-Za-z0-9_]+\.c)\s+"
+        r"PROPERTIES\s+COMPILE_OPTIONS\s+\"([^\"]*)\"\)",
+        read(os.path.join(SRC, "CMakeLists.txt")))}
+assert LIB_SOURCE_FLAGS, "src/CMakeLists.txt: no per-source compile options found"
 INCLUDE_DIRS = [os.path.join(ROOT, "include"), SRC, numpy.get_include()]
 # C11 as the CMake build; the library's public functions stay hidden in the
 # extension (TS_API empty, -fvisibility=hidden): each module has its own copy.

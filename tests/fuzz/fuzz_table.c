@@ -14,22 +14,17 @@
  * the reader is run on the same input through tsu_read_table and must agree
  * with itself.
  *
- * Built with clang -fsanitize=fuzzer (libFuzzer) it is a fuzz target;
- * without TS_LIBFUZZER it has a main that runs LLVMFuzzerTestOneInput on
- * each file (or each file of each directory) named on the command line, the
- * seed corpus tests/fuzz/corpus/table/, and prints "fuzz_table: N passed, M
- * failed".
+ * A libFuzzer target (`make fuzz`); `make test` replays the seed corpus
+ * tests/fuzz/corpus/table/ through it (replay_main.c, test_fuzz_table).
  */
 #define _GNU_SOURCE /* timegm */
 #include "tsu_io.h"
 
-#include <dirent.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <time.h>
 
 typedef struct ropts {
@@ -450,7 +445,8 @@ static void fail(const char *what, const uint8_t *data, size_t size)
     abort();
 }
 
-int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+#include "fuzz.h"
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     if (size < 2 || size > 4096)
@@ -507,45 +503,3 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     free(r.v);
     return 0;
 }
-
-#ifndef TS_LIBFUZZER
-static int passed, failed_files;
-
-static void run_file(const char *path)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        failed_files++;
-        return;
-    }
-    uint8_t buf[4097];
-    size_t n = fread(buf, 1, sizeof buf, f);
-    fclose(f);
-    LLVMFuzzerTestOneInput(buf, n); /* aborts on a mismatch */
-    passed++;
-}
-
-int main(int argc, char **argv)
-{
-    for (int i = 1; i < argc; i++) {
-        struct stat sb;
-        if (stat(argv[i], &sb) == 0 && S_ISDIR(sb.st_mode)) {
-            DIR *dir = opendir(argv[i]);
-            struct dirent *de;
-            while (dir && (de = readdir(dir)) != NULL) {
-                char p[4096];
-                if (de->d_name[0] == '.')
-                    continue;
-                snprintf(p, sizeof p, "%s/%s", argv[i], de->d_name);
-                run_file(p);
-            }
-            if (dir)
-                closedir(dir);
-        } else {
-            run_file(argv[i]);
-        }
-    }
-    printf("fuzz_table: %d passed, %d failed\n", passed, failed_files);
-    return failed_files != 0;
-}
-#endif

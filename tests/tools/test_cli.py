@@ -430,6 +430,32 @@ def test_exit_statuses():
     check("no temp files left", not no_leftovers(), no_leftovers())
 
 
+def test_range_messages():
+    # the library's own statuses for quantities that leave the double range
+    # (each names what overflowed or underflowed), exit status 2
+    p = tmp("subnormal.csv")
+    with open(p, "w") as fh:
+        fh.write("0,1\n1e-310,2\n1,3\n")
+    rc, out, err = run(["fit", p])
+    check("subnormal step rc 2", rc == 2 and "underflows" in err and "subnormal.csv:2" in err
+          and "overflow" not in err, err)
+    p = tmp("wide.csv")
+    with open(p, "w") as fh:
+        fh.write("-1e308,1\n1e308,2\n")
+    rc, out, err = run(["fit", p])
+    check("overflowing step rc 2", rc == 2 and "overflows" in err and "wide.csv:2" in err, err)
+    rc, out, err = run(["fit", T1, "--alpha", "1e-310"])
+    check("tiny alpha: alpha + beta too small", rc == 2 and "alpha + beta is too small" in err
+          and "NaN" not in err, err)
+    p = tmp("huge.csv")
+    with open(p, "w") as fh:
+        fh.write("0,1.7976931348623157e308\n1,1.7976931348623157e308\n")
+    for extra in ([], ["--shape", "positive"], ["--form", "geometric"]):
+        rc, out, err = run(["fit", p, "-o", tmp("huge_out.csv")] + extra)
+        check("f = DBL_MAX refused %s" % extra, rc == 2 and "DBL_MAX/4" in err
+              and not os.path.exists(tmp("huge_out.csv")), err)
+
+
 def test_options():
     # shapes from lines alone
     for args, shape in ((["--lower", "0.03,0.3"], "above"), (["--upper", "1,30"], "below"),
@@ -979,7 +1005,8 @@ def main():
         return 1
     try:
         for t in (test_help_version, test_usage_errors, test_table1_positive, test_roundtrip,
-                  test_inputs, test_malformed, test_exit_statuses, test_options, test_svg,
+                  test_inputs, test_malformed, test_exit_statuses, test_range_messages,
+                  test_options, test_svg,
                   test_curve, test_streaming_identical, test_streaming_errors,
                   test_streaming_memory, test_signals, test_same_output, test_edges_cli):
             try:

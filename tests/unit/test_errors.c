@@ -410,13 +410,14 @@ static void test_overflowing_controls(void)
         ts_spline *s = NULL;
         ts_error e;
         ts_status st = ts_spline_new(x, f, 4, &o, &s, &e);
-        CHECKF(st == TS_ERR_NONFINITE && s == NULL && e.index == 0 && e.where == TS_WHERE_INTERVAL,
+        CHECKF(st == TS_ERR_CONTROL_OVERFLOW && s == NULL && e.index == 0 &&
+                   e.where == TS_WHERE_INTERVAL,
                "form %d: %d index %zu", form, (int)st, e.index);
     }
     ts_spline *s = NULL;
     ts_error e;
     ts_status st = ts_spline_new(x2, f2, 3, NULL, &s, &e);
-    CHECKF(st == TS_ERR_NONFINITE && s == NULL && e.index == 1 && e.where == TS_WHERE_POINT, "%d index %zu",
+    CHECKF(st == TS_ERR_WIDTH && s == NULL && e.index == 1 && e.where == TS_WHERE_POINT, "%d index %zu",
            (int)st, e.index);
 }
 

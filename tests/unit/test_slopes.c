@@ -625,17 +625,17 @@ static void test_errors(void)
     {
         const double xo[3] = {0, 1e-300, 1}, fo[3] = {0, 1e300, 0};
         for (size_t k = 0; k < NALL; k++) {
-            EXPECT_ERR(ts_slopes_compute(ALL[k], xo, fo, 3, d, &e_), TS_ERR_NONFINITE, 0,
+            EXPECT_ERR(ts_slopes_compute(ALL[k], xo, fo, 3, d, &e_), TS_ERR_SLOPE_OVERFLOW, 0,
                        TS_WHERE_POINT);
             CHECK(all_nan(d, 3));
         }
         const double xo2[4] = {0, 1, 1 + 1e-15, 2}, fo2[4] = {0, 0, 1e300, 1e300};
-        EXPECT_ERR(ts_slopes_compute(TS_SLOPES_AKIMA, xo2, fo2, 4, d, &e_), TS_ERR_NONFINITE, 0,
+        EXPECT_ERR(ts_slopes_compute(TS_SLOPES_AKIMA, xo2, fo2, 4, d, &e_), TS_ERR_SLOPE_OVERFLOW, 0,
                    TS_WHERE_POINT);
         /* Δ = 0, inf, 0: the end formula gives 0 + (0 - inf) h0/(h0+h1) = -inf
          * at point 0 already */
         EXPECT_ERR(ts_slopes_compute(TS_SLOPES_ARITHMETIC, xo2, fo2, 4, d, &e_),
-                   TS_ERR_NONFINITE, 0, TS_WHERE_POINT);
+                   TS_ERR_SLOPE_OVERFLOW, 0, TS_WHERE_POINT);
     }
 
     /* success resets err; err may be NULL */

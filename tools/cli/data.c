@@ -2,6 +2,7 @@
 #include "cli.h"
 
 #include <errno.h>
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -238,6 +239,17 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
             return CLI_DATA;
         }
         break;
+    case TS_ERR_WIDTH:
+        if (point && i > 0) {
+            double h = x[i] - x[i - 1];
+            cli_error("%s: point %zu (x = %s): the step %s from the previous x = %s %s", w,
+                      off + i, cli_num(x[i], bx), cli_num(h, bf), cli_num(x[i - 1], b2),
+                      h <= DBL_MAX ? "underflows: steps below 2.2250738585072014e-308 (the "
+                                     "smallest normal double) are refused"
+                                   : "overflows a double");
+            return CLI_DATA;
+        }
+        break;
     case TS_ERR_PERIODIC:
         cli_error("%s: --slopes periodic needs the last value equal to the first: f = %s here, "
                   "f = %s%s%s",
@@ -299,6 +311,18 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
             return CLI_INFEASIBLE;
         }
         cli_error("%s: infeasible constraint: %s", name, ts_strerror(st));
+        return CLI_INFEASIBLE;
+    case TS_ERR_PRECISION:
+    case TS_ERR_UNPROVEN:
+        if (lines && interval)
+            snprintf(ln, sizeof ln, "%s:%llu-%llu", name, lines[i], lines[i + 1]);
+        else
+            snprintf(ln, sizeof ln, "%s", name);
+        if (interval)
+            cli_error("%s: interval %zu [%s, %s]: %s", ln, off + i, cli_num(x[i], bx),
+                      cli_num(x[i + 1], b2), ts_strerror(st));
+        else
+            cli_error("%s: %s", ln, ts_strerror(st));
         return CLI_INFEASIBLE;
     case TS_ERR_GEOMETRIC:
         if (interval) {

@@ -1,6 +1,7 @@
 """Every error path reachable from Python: a ValueError (TrigsplineError) with
 .name, .index, .where and a message naming the point; no floating-point
 warnings on valid input."""
+import os
 import warnings
 
 import numpy as np
@@ -121,3 +122,19 @@ def test_error_pickles():
     e2 = pickle.loads(pickle.dumps(e))
     assert (e2.name, e2.index, e2.where, str(e2)) == (e.name, e.index, e.where, str(e))
     assert isinstance(trigspline.strerror(14), str) and trigspline.strerror(14)
+
+
+def test_status_names_are_the_headers():
+    """The package's status table is the ts_status enum of include/trigspline.h,
+    read from the header here (names and values), so a new status cannot be
+    missed."""
+    import re
+    from conftest import REPO
+    from trigspline import _util
+    with open(os.path.join(REPO, "include", "trigspline.h"), encoding="utf-8") as fh:
+        text = fh.read()
+    enum = text[text.index("typedef enum ts_status"):]
+    enum = enum[:enum.index("} ts_status;")]
+    pairs = re.findall(r"\b(TS_(?:OK|ERR_[A-Z0-9_]+))\s*=\s*(\d+)", enum)
+    assert pairs and [int(v) for _, v in pairs] == list(range(len(pairs)))
+    assert tuple(n for n, _ in pairs) == _util.STATUS_NAMES

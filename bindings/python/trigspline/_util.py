@@ -9,7 +9,9 @@ STATUS_NAMES = ("TS_OK", "TS_ERR_NULL", "TS_ERR_NOMEM", "TS_ERR_OVERFLOW", "TS_E
                 "TS_ERR_MARGIN", "TS_ERR_LENGTH", "TS_ERR_OPTION", "TS_ERR_PERIODIC",
                 "TS_ERR_DOMAIN", "TS_ERR_NEGATIVE", "TS_ERR_SIDE", "TS_ERR_LINES",
                 "TS_ERR_NONMONOTONE", "TS_ERR_INFEASIBLE", "TS_ERR_VIOLATED",
-                "TS_ERR_GEOMETRIC", "TS_ERR_DIMENSION", "TS_ERR_INDEX", "TS_ERR_ZERO_SLOPE")
+                "TS_ERR_GEOMETRIC", "TS_ERR_DIMENSION", "TS_ERR_INDEX", "TS_ERR_ZERO_SLOPE",
+                "TS_ERR_SLOPE_OVERFLOW", "TS_ERR_TOO_LARGE", "TS_ERR_CONTROL_OVERFLOW",
+                "TS_ERR_WIDTH", "TS_ERR_PRECISION", "TS_ERR_UNPROVEN")
 WHERE_NAMES = (None, "point", "interval", "query")
 FORMS = ("paper", "c1", "geometric")
 SLOPES = ("arithmetic", "geometric", "harmonic", "fritsch_carlson", "akima", "makima", "user",
