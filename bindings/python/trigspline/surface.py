@@ -200,7 +200,7 @@ class Surface:
                  margin: Optional[float] = None, zero_twist: bool = False,
                  bounds_error: bool = True, fill_value: Optional[float] = np.nan) -> None:
         if z is None:
-            if isinstance(x, (tuple, list)) and len(x) == 2:
+            if isinstance(x, (tuple, list)) and len(x) == 2 and np.ndim(x[0]) == 1:
                 x, y, z = x[0], x[1], y  # RegularGridInterpolator((x, y), z)
             else:
                 raise TypeError("Surface(x, y, z) or Surface((x, y), z): z is missing")
