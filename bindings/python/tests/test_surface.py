@@ -674,3 +674,18 @@ def test_repr_and_exports():
     s = Surface(x, y, z, shape="positive")
     assert "Surface 6 x 4 patches" in repr(s) and "positive" in repr(s)
     assert "Surface" in trigspline.__all__
+
+
+def test_smallest_grid_and_empty_queries():
+    # 2 x 2 nodes: the slopes are the secants (docs/method.md §6), so the
+    # geometric form reproduces the bilinear interpolant of the four values
+    x, y = np.array([0.0, 1.0]), np.array([0.0, 2.0])
+    z = np.array([[1.0, 2.0], [3.0, 7.0]])
+    s = Surface(x, y, z, form="geometric")
+    u, v = np.meshgrid(np.linspace(0, 1, 11), np.linspace(0, 2, 7), indexing="ij")
+    want = (z[0, 0] * (1 - u) * (2 - v) + z[1, 0] * u * (2 - v) + z[0, 1] * (1 - u) * v
+            + z[1, 1] * u * v) / 2
+    assert np.allclose(s((u, v)), want, rtol=0, atol=1e-14 * 7)
+    assert s(np.empty((0, 2))).shape == (0,)
+    assert s(np.empty(0), np.empty(0)).shape == (0, 0)
+    assert all(a.shape == (0, 3) for a in s.partials(np.empty((0, 3, 2))))
