@@ -56,8 +56,12 @@ def extension(name, source):
     return Extension(name, sources=[source], include_dirs=INCLUDE_DIRS,
                      define_macros=DEFINE_MACROS, extra_compile_args=COMPILE_ARGS,
                      libraries=LIBRARIES,
+                     # setup.py and src/CMakeLists.txt hold the compile options:
+                     # a change there relinks (build_ext skips an up-to-date module)
                      depends=LIB_SOURCES + [os.path.join(ROOT, "include", "trigspline.h"),
-                                            os.path.join(SRC, "internal.h")])
+                                            os.path.join(SRC, "internal.h"),
+                                            os.path.join(SRC, "CMakeLists.txt"),
+                                            os.path.join(HERE, "setup.py")])
 
 
 EXT_MODULES = [
