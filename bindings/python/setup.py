@@ -3,7 +3,7 @@
 The C library is compiled from the repository's own sources (../../src) into
 every extension module listed in EXT_MODULES, so the installed package needs
 nothing else on the system.  One place for what the library needs to compile:
-LIB_SOURCES (read from src/CMakeLists.txt), LIB_SOURCE_FLAGS, INCLUDE_DIRS,
+LIB_SOURCES and LIB_SOURCE_FLAGS (read from src/CMakeLists.txt), INCLUDE_DIRS,
 COMPILE_ARGS, DEFINE_MACROS.  A further extension is one more extension(...)
 line in EXT_MODULES.  The version is the CMake project version.
 """
@@ -35,15 +35,14 @@ _block = re.search(r"set\(TS_LIBRARY_SOURCES(.*?)\)", read(os.path.join(SRC, "CM
                    re.S).group(1)
 LIB_SOURCES = [os.path.join(SRC, name)
                for name in re.findall(r"([A-Za-z0-9_]+\.c)\b", re.sub(r"#[^\n]*", "", _block))]
-# Per-source options, read from src/CMakeLists.txt's
-# set_source_files_properties(.../NAME.c PROPERTIES COMPILE_OPTIONS "a;b")
-# so that the extension computes what the C library computes, bit for bit.
+# Per-source options of src/CMakeLists.txt (set_source_files_properties ...
+# COMPILE_OPTIONS "a;b"), read from there so that the package's objects are
+# compiled exactly as the CMake library's (bit-identical results).
 LIB_SOURCE_FLAGS = {
     name: opts.split(";")
-    for name, opts in re.findall(
-        r"set_source_files_properties\(\$\{CMAKE_CURRENT_SOURCE_DIR\}/([A-Za-z0-9_]+\.c)\s+"
-        r"PROPERTIES\s+COMPILE_OPTIONS\s+\"([^\"]*)\"\)",
-        read(os.path.join(SRC, "CMakeLists.txt")))}
+    for name, opts in re.findall(r"set_source_files_properties\(\$\{CMAKE_CURRENT_SOURCE_DIR\}/"
+                                 r"([A-Za-z0-9_]+\.c)\s+PROPERTIES\s+COMPILE_OPTIONS\s+\"([^\"]*)\"",
+                                 read(os.path.join(SRC, "CMakeLists.txt")))}
 assert LIB_SOURCE_FLAGS, "src/CMakeLists.txt: no per-source compile options found"
 INCLUDE_DIRS = [os.path.join(ROOT, "include"), SRC, numpy.get_include()]
 # C11 as the CMake build; the library's public functions stay hidden in the
@@ -58,8 +57,12 @@ def extension(name, source):
     return Extension(name, sources=[source], include_dirs=INCLUDE_DIRS,
                      define_macros=DEFINE_MACROS, extra_compile_args=COMPILE_ARGS,
                      libraries=LIBRARIES,
+                     # setup.py and src/CMakeLists.txt hold the compile options:
+                     # a change there relinks (build_ext skips an up-to-date module)
                      depends=LIB_SOURCES + [os.path.join(ROOT, "include", "trigspline.h"),
-                                            os.path.join(SRC, "internal.h")])
+                                            os.path.join(SRC, "internal.h"),
+                                            os.path.join(SRC, "CMakeLists.txt"),
+                                            os.path.join(HERE, "setup.py")])
 
 
 EXT_MODULES = [

@@ -1,8 +1,9 @@
 /* trigspline._core: the C extension behind the Python package.
  *
  * libtrigspline's sources are compiled into this module (setup.py), so the
- * installed package needs nothing else.  Two handle types own one C object
- * each (SplineHandle: ts_spline, CurveHandle: ts_curve); it is freed only in
+ * installed package needs nothing else.  Three handle types own one C object
+ * each (SplineHandle: ts_spline, CurveHandle: ts_curve, SurfaceHandle:
+ * ts_surface); it is freed only in
  * tp_dealloc, when the last Python reference is gone, so no call reachable
  * from Python can use it after free or free it twice.  Fitted objects are
  * immutable (include/trigspline.h): the GIL is released around construction,
@@ -1178,6 +1179,483 @@ static PyTypeObject CurveHandleType = {
 };
 
 /* ------------------------------------------------------------------ */
+/* SurfaceHandle                                                        */
+/* ------------------------------------------------------------------ */
+
+/* Queries outside the grid (not NaN): the per-object policy. */
+enum { SURF_ERROR = 0, SURF_FILL = 1 };
+
+typedef struct {
+    PyObject_HEAD
+    ts_surface *s;
+    size_t nx, ny; /* patches */
+    double x0, xn, y0, yn;
+} SurfaceHandle;
+
+static void surface_dealloc(SurfaceHandle *self)
+{
+    ts_surface_free(self->s);
+    self->s = NULL;
+    Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+static PyTypeObject SurfaceHandleType;
+
+static int opt_plane(PyObject *obj, int *has, ts_plane *pl)
+{
+    if (obj == Py_None)
+        return 0;
+    *has = 1;
+    return PyArg_ParseTuple(obj, "ddd", &pl->p, &pl->q, &pl->c) ? 0 : -1;
+}
+
+/* surface_new(x, y, zt, *, form=None, slopes=None, zero_twist=0, alpha=None,
+ * beta=None, margin=None, shape=0, lower=None, upper=None); zt the values in
+ * the library's layout (ny+1, nx+1); lower/upper (p, q, c) or None.  None
+ * keeps the ts_surface_options_init default. */
+static PyObject *surface_new(PyObject *mod, PyObject *args, PyObject *kw)
+{
+    (void)mod;
+    static char *kwlist[] = {"x", "y", "zt", "form", "slopes", "zero_twist", "alpha", "beta",
+                             "margin", "shape", "lower", "upper", NULL};
+    PyObject *ox, *oy, *oz, *oform = Py_None, *oslopes = Py_None, *oalpha = Py_None,
+                            *obeta = Py_None, *omargin = Py_None, *olower = Py_None,
+                            *oupper = Py_None;
+    int zero_twist = 0, shape = 0;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "OOO|$OOpOOOiOO", kwlist, &ox, &oy, &oz, &oform,
+                                     &oslopes, &zero_twist, &oalpha, &obeta, &omargin, &shape,
+                                     &olower, &oupper))
+        return NULL;
+    ts_surface_options opt;
+    ts_surface_options_init(&opt);
+    PyArrayObject *ax = NULL, *ay = NULL, *az = NULL;
+    PyObject *result = NULL;
+    if (!(ax = as_vector(ox, "x")) || !(ay = as_vector(oy, "y")))
+        goto done;
+    az = (PyArrayObject *)PyArray_FROMANY(oz, NPY_DOUBLE, 2, 2, NPY_ARRAY_IN_ARRAY);
+    if (!az)
+        goto done;
+    if (PyArray_DIM(az, 0) != PyArray_SIZE(ay) || PyArray_DIM(az, 1) != PyArray_SIZE(ax)) {
+        raise_status(TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
+        goto done;
+    }
+    if (oform != Py_None && (opt.form = (ts_form)PyLong_AsLong(oform), PyErr_Occurred()))
+        goto done;
+    if (oslopes != Py_None &&
+        (opt.slopes = (ts_slopes)PyLong_AsLong(oslopes), PyErr_Occurred()))
+        goto done;
+    if (oalpha != Py_None && (opt.alpha = PyFloat_AsDouble(oalpha), PyErr_Occurred()))
+        goto done;
+    if (obeta != Py_None && (opt.beta = PyFloat_AsDouble(obeta), PyErr_Occurred()))
+        goto done;
+    if (omargin != Py_None && (opt.margin = PyFloat_AsDouble(omargin), PyErr_Occurred()))
+        goto done;
+    if (opt_plane(olower, &opt.has_lower, &opt.lower) < 0 ||
+        opt_plane(oupper, &opt.has_upper, &opt.upper) < 0)
+        goto done;
+    opt.zero_twist = zero_twist;
+    opt.shape = (ts_surface_shape)shape;
+    const double *px = PyArray_DATA(ax), *py = PyArray_DATA(ay), *pz = PyArray_DATA(az);
+    size_t nxp = (size_t)PyArray_SIZE(ax), nyp = (size_t)PyArray_SIZE(ay);
+    ts_surface *s = NULL;
+    ts_error err;
+    ts_status st;
+    Py_BEGIN_ALLOW_THREADS
+    st = ts_surface_new(px, nxp, py, nyp, pz, &opt, &s, &err);
+    Py_END_ALLOW_THREADS
+    if (st != TS_OK) {
+        raise_err(st, &err);
+        goto done;
+    }
+    SurfaceHandle *h = PyObject_New(SurfaceHandle, &SurfaceHandleType);
+    if (!h) {
+        ts_surface_free(s);
+        goto done;
+    }
+    h->s = s;
+    h->nx = ts_surface_nx(s);
+    h->ny = ts_surface_ny(s);
+    h->x0 = ts_surface_x(s)[0];
+    h->xn = ts_surface_x(s)[h->nx];
+    h->y0 = ts_surface_y(s)[0];
+    h->yn = ts_surface_y(s)[h->ny];
+    result = (PyObject *)h;
+done:
+    Py_XDECREF(ax);
+    Py_XDECREF(ay);
+    Py_XDECREF(az);
+    return result;
+}
+
+static int surf_inside(const SurfaceHandle *h, double x, double y)
+{
+    return h->x0 <= x && x <= h->xn && h->y0 <= y && y <= h->yn;
+}
+
+#define SURF_BLOCK 1024
+
+/* eval(xq, yq, partials=0, mode=SURF_ERROR, fill=nan) -> z, or (z, zx, zy)
+ * with partials; xq, yq float64 arrays of one size and stride (the package
+ * passes the columns of a points array, or two broadcast arrays).  Queries
+ * go to ts_surface_eval_batch in blocks; a NaN coordinate gives NaN; a point
+ * outside the grid raises (SURF_ERROR, index = the first) or gets fill. */
+static PyObject *surface_eval(SurfaceHandle *self, PyObject *args, PyObject *kw)
+{
+    static char *kwlist[] = {"xq", "yq", "partials", "mode", "fill", NULL};
+    PyObject *oxq, *oyq;
+    int partials = 0, mode = SURF_ERROR;
+    double fill = (double)NAN;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|pid", kwlist, &oxq, &oyq, &partials, &mode,
+                                     &fill))
+        return NULL;
+    PyArrayObject *aq[2] = {NULL, NULL}, *ao[3] = {NULL, NULL, NULL};
+    PyObject *result = NULL;
+    for (int k = 0; k < 2; k++) {
+        aq[k] = (PyArrayObject *)PyArray_FROMANY(k ? oyq : oxq, NPY_DOUBLE, 1, 1, NPY_ARRAY_ALIGNED);
+        if (!aq[k])
+            goto done;
+    }
+    npy_intp m = PyArray_SIZE(aq[0]);
+    if (PyArray_SIZE(aq[1]) != m) {
+        PyErr_SetString(PyExc_ValueError, "xq and yq must have the same number of values");
+        goto done;
+    }
+    for (int k = 0; k < (partials ? 3 : 1); k++)
+        if (!(ao[k] = (PyArrayObject *)PyArray_SimpleNew(1, &m, NPY_DOUBLE)))
+            goto done;
+    const char *bx = PyArray_BYTES(aq[0]), *by = PyArray_BYTES(aq[1]);
+    npy_intp sx = PyArray_STRIDE(aq[0], 0), sy = PyArray_STRIDE(aq[1], 0);
+    double *z = PyArray_DATA(ao[0]);
+    double *zx = partials ? PyArray_DATA(ao[1]) : NULL, *zy = partials ? PyArray_DATA(ao[2]) : NULL;
+    npy_intp bad = -1;
+    ts_status st = TS_OK;
+    Py_BEGIN_ALLOW_THREADS
+    double xs[SURF_BLOCK], ys[SURF_BLOCK];
+    for (npy_intp b0 = 0; b0 < m && bad < 0 && st == TS_OK; b0 += SURF_BLOCK) {
+        size_t nb = (size_t)(m - b0 < SURF_BLOCK ? m - b0 : SURF_BLOCK);
+        for (size_t k = 0; k < nb; k++) {
+            xs[k] = *(const double *)(bx + (b0 + (npy_intp)k) * sx);
+            ys[k] = *(const double *)(by + (b0 + (npy_intp)k) * sy);
+        }
+        ts_error err;
+        st = ts_surface_eval_batch(self->s, xs, ys, nb, z + b0, zx ? zx + b0 : NULL,
+                                   zy ? zy + b0 : NULL, &err);
+        if (st != TS_ERR_DOMAIN)
+            continue;
+        st = TS_OK;
+        for (size_t k = err.index; k < nb; k++) {
+            if (xs[k] != xs[k] || ys[k] != ys[k] || surf_inside(self, xs[k], ys[k]))
+                continue; /* NaN stays NaN */
+            if (mode == SURF_ERROR) {
+                bad = b0 + (npy_intp)k;
+                break;
+            }
+            z[b0 + k] = fill;
+            if (zx) {
+                zx[b0 + k] = fill;
+                zy[b0 + k] = fill;
+            }
+        }
+    }
+    Py_END_ALLOW_THREADS
+    if (st != TS_OK) {
+        raise_status(st, TS_NO_INDEX, TS_WHERE_NONE);
+        goto done;
+    }
+    if (bad >= 0) {
+        raise_status(TS_ERR_DOMAIN, (size_t)bad, TS_WHERE_QUERY);
+        goto done;
+    }
+    if (partials)
+        result = Py_BuildValue("(OOO)", ao[0], ao[1], ao[2]);
+    else
+        result = (PyObject *)ao[0], Py_INCREF(result);
+done:
+    for (int k = 0; k < 2; k++)
+        Py_XDECREF(aq[k]);
+    for (int k = 0; k < 3; k++)
+        Py_XDECREF(ao[k]);
+    return result;
+}
+
+/* eval_grid(xq, yq, mode=SURF_ERROR, fill=nan) -> array (len(yq), len(xq)),
+ * out[b, a] = S(xq[a], yq[b]) (ts_surface_eval_grid; the package returns its
+ * transpose).  NaN coordinates give NaN; outside: raise (index a for xq[a],
+ * len(xq) + b for yq[b]) or fill. */
+static PyObject *surface_eval_grid(SurfaceHandle *self, PyObject *args, PyObject *kw)
+{
+    static char *kwlist[] = {"xq", "yq", "mode", "fill", NULL};
+    PyObject *oxq, *oyq;
+    int mode = SURF_ERROR;
+    double fill = (double)NAN;
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|id", kwlist, &oxq, &oyq, &mode, &fill))
+        return NULL;
+    PyArrayObject *ax = as_vector(oxq, "xq"), *ay = ax ? as_vector(oyq, "yq") : NULL;
+    if (!ay) {
+        Py_XDECREF(ax);
+        return NULL;
+    }
+    const double *xq = PyArray_DATA(ax), *yq = PyArray_DATA(ay);
+    size_t mx = (size_t)PyArray_SIZE(ax), my = (size_t)PyArray_SIZE(ay);
+    PyObject *result = NULL;
+    /* a query outside (not NaN) under SURF_ERROR: named before any work */
+    for (size_t k = 0; mode == SURF_ERROR && k < mx + my; k++) {
+        double v = k < mx ? xq[k] : yq[k - mx];
+        double lo = k < mx ? self->x0 : self->y0, hi = k < mx ? self->xn : self->yn;
+        if (v == v && !(lo <= v && v <= hi)) {
+            raise_status(TS_ERR_DOMAIN, k, TS_WHERE_QUERY);
+            goto done;
+        }
+    }
+    npy_intp dims[2] = {(npy_intp)my, (npy_intp)mx};
+    PyArrayObject *ao = (PyArrayObject *)PyArray_SimpleNew(2, dims, NPY_DOUBLE);
+    if (!ao)
+        goto done;
+    double *out = PyArray_DATA(ao);
+    ts_status st;
+    ts_error err;
+    Py_BEGIN_ALLOW_THREADS
+    st = ts_surface_eval_grid(self->s, xq, mx, yq, my, out, &err);
+    if (st == TS_ERR_DOMAIN) {
+        st = TS_OK;
+        for (size_t b = 0; b < my; b++) {
+            double y = yq[b];
+            int yout = y == y && !(self->y0 <= y && y <= self->yn);
+            for (size_t a = 0; a < mx; a++) {
+                double x = xq[a];
+                int xout = x == x && !(self->x0 <= x && x <= self->xn);
+                if ((xout || yout) && x == x && y == y)
+                    out[b * mx + a] = fill;
+            }
+        }
+    }
+    Py_END_ALLOW_THREADS
+    if (st != TS_OK) {
+        Py_DECREF(ao);
+        raise_status(st, TS_NO_INDEX, TS_WHERE_NONE);
+        goto done;
+    }
+    result = (PyObject *)ao;
+done:
+    Py_DECREF(ax);
+    Py_DECREF(ay);
+    return result;
+}
+
+/* integral(xa, xb, ya, yb) -> float (limits on the grid). */
+static PyObject *surface_integral(SurfaceHandle *self, PyObject *args)
+{
+    double xa, xb, ya, yb, r;
+    if (!PyArg_ParseTuple(args, "dddd", &xa, &xb, &ya, &yb))
+        return NULL;
+    ts_status st;
+    Py_BEGIN_ALLOW_THREADS
+    st = ts_surface_integral(self->s, xa, xb, ya, yb, &r);
+    Py_END_ALLOW_THREADS
+    if (st != TS_OK)
+        return raise_status(st, TS_NO_INDEX, TS_WHERE_NONE);
+    return PyFloat_FromDouble(r);
+}
+
+/* A patch report as one row of SURF_REPORT_FIELDS doubles: i, j, x0, x1, y0,
+ * y1, ax, ay, B[16], has_lower, has_upper, proven_lower, sampled_lower,
+ * at_lower[2], proven_upper, sampled_upper, at_upper[2], certified. */
+#define SURF_REPORT_FIELDS 35
+
+static void report_row(const ts_patch_report *r, double *o)
+{
+    double head[8] = {(double)r->i, (double)r->j, r->x0, r->x1, r->y0, r->y1, r->ax, r->ay};
+    memcpy(o, head, sizeof head);
+    memcpy(o + 8, r->B, sizeof r->B);
+    double tail[11] = {r->has_lower, r->has_upper, r->proven_lower, r->sampled_lower,
+                       r->at_lower[0], r->at_lower[1], r->proven_upper, r->sampled_upper,
+                       r->at_upper[0], r->at_upper[1], r->certified};
+    memcpy(o + 24, tail, sizeof tail);
+}
+
+/* report() -> array (ny * nx, SURF_REPORT_FIELDS), patch (i, j) in row
+ * j * nx + i, against the scheme's own bounds (ts_surface_report). */
+static PyObject *surface_report(SurfaceHandle *self, PyObject *unused)
+{
+    (void)unused;
+    npy_intp dims[2] = {(npy_intp)(self->nx * self->ny), SURF_REPORT_FIELDS};
+    PyObject *a = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
+    if (!a)
+        return NULL;
+    double *o = PyArray_DATA((PyArrayObject *)a);
+    ts_status st = TS_OK;
+    Py_BEGIN_ALLOW_THREADS
+    for (size_t j = 0; j < self->ny && st == TS_OK; j++)
+        for (size_t i = 0; i < self->nx && st == TS_OK; i++) {
+            ts_patch_report r;
+            st = ts_surface_report(self->s, i, j, &r);
+            report_row(&r, o + (j * self->nx + i) * SURF_REPORT_FIELDS);
+        }
+    Py_END_ALLOW_THREADS
+    if (st != TS_OK) {
+        Py_DECREF(a);
+        return raise_status(st, TS_NO_INDEX, TS_WHERE_NONE);
+    }
+    return a;
+}
+
+/* certify(lower, upper) -> (ok, first patch not certified (j * nx + i) or
+ * None, report array as report()); lower/upper (p, q, c) or None. */
+static PyObject *surface_certify(SurfaceHandle *self, PyObject *args)
+{
+    PyObject *olo, *oup;
+    if (!PyArg_ParseTuple(args, "OO", &olo, &oup))
+        return NULL;
+    int hl = 0, hu = 0;
+    ts_plane lo = {0, 0, 0}, up = {0, 0, 0};
+    if (opt_plane(olo, &hl, &lo) < 0 || opt_plane(oup, &hu, &up) < 0)
+        return NULL;
+    size_t np_ = self->nx * self->ny;
+    ts_patch_report *reps = PyMem_Calloc(np_ ? np_ : 1, sizeof *reps);
+    if (!reps)
+        return PyErr_NoMemory();
+    npy_intp dims[2] = {(npy_intp)np_, SURF_REPORT_FIELDS};
+    PyObject *a = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
+    if (!a) {
+        PyMem_Free(reps);
+        return NULL;
+    }
+    double *o = PyArray_DATA((PyArrayObject *)a);
+    ts_error err;
+    ts_status st;
+    Py_BEGIN_ALLOW_THREADS
+    st = ts_surface_certify(self->s, hl ? &lo : NULL, hu ? &up : NULL, reps, &err);
+    for (size_t c = 0; c < np_; c++)
+        report_row(&reps[c], o + c * SURF_REPORT_FIELDS);
+    Py_END_ALLOW_THREADS
+    PyMem_Free(reps);
+    if (st != TS_OK && st != TS_ERR_VIOLATED) {
+        Py_DECREF(a);
+        return raise_err(st, &err);
+    }
+    PyObject *idx = st == TS_OK ? (Py_INCREF(Py_None), Py_None) : PyLong_FromSize_t(err.index);
+    return Py_BuildValue("(ONN)", st == TS_OK ? Py_True : Py_False, idx, a);
+}
+
+/* control(i, j) -> (B (4, 4) with [k, l], k along x; X (4,); Y (4,)). */
+static PyObject *surface_control(SurfaceHandle *self, PyObject *args)
+{
+    Py_ssize_t i, j;
+    if (!PyArg_ParseTuple(args, "nn", &i, &j))
+        return NULL;
+    npy_intp d2[2] = {4, 4}, d1 = 4;
+    PyObject *B = PyArray_SimpleNew(2, d2, NPY_DOUBLE);
+    PyObject *X = B ? PyArray_SimpleNew(1, &d1, NPY_DOUBLE) : NULL;
+    PyObject *Y = X ? PyArray_SimpleNew(1, &d1, NPY_DOUBLE) : NULL;
+    if (!Y) {
+        Py_XDECREF(B);
+        Py_XDECREF(X);
+        return NULL;
+    }
+    ts_status st = i < 0 || j < 0 ? TS_ERR_INDEX
+                                  : ts_surface_control(self->s, (size_t)i, (size_t)j,
+                                                       PyArray_DATA((PyArrayObject *)B),
+                                                       PyArray_DATA((PyArrayObject *)X),
+                                                       PyArray_DATA((PyArrayObject *)Y));
+    if (st != TS_OK) {
+        Py_DECREF(B);
+        Py_DECREF(X);
+        Py_DECREF(Y);
+        return raise_status(st, TS_NO_INDEX, TS_WHERE_INTERVAL);
+    }
+    return Py_BuildValue("(NNN)", B, X, Y);
+}
+
+/* ---- accessors: read-only views (node arrays in the library's layout,
+ * (ny+1) rows of nx+1; the package transposes them) */
+static PyObject *surface_x(SurfaceHandle *self, void *c)
+{
+    (void)c;
+    return view((PyObject *)self, ts_surface_x(self->s), (npy_intp)self->nx + 1);
+}
+static PyObject *surface_y(SurfaceHandle *self, void *c)
+{
+    (void)c;
+    return view((PyObject *)self, ts_surface_y(self->s), (npy_intp)self->ny + 1);
+}
+#define SURF_NODES(name, fn)                                                                 \
+    static PyObject *name(SurfaceHandle *self, void *c)                                      \
+    {                                                                                        \
+        (void)c;                                                                             \
+        return view((PyObject *)self, fn(self->s), (npy_intp)((self->nx + 1) * (self->ny + 1))); \
+    }
+SURF_NODES(surface_z, ts_surface_z)
+SURF_NODES(surface_dzdx, ts_surface_dzdx)
+SURF_NODES(surface_dzdy, ts_surface_dzdy)
+SURF_NODES(surface_twist, ts_surface_twist)
+static PyObject *surface_ax(SurfaceHandle *self, void *c)
+{
+    (void)c;
+    return view((PyObject *)self, ts_surface_ax(self->s), (npy_intp)self->nx);
+}
+static PyObject *surface_ay(SurfaceHandle *self, void *c)
+{
+    (void)c;
+    return view((PyObject *)self, ts_surface_ay(self->s), (npy_intp)self->ny);
+}
+static PyObject *surface_patches(SurfaceHandle *self, void *c)
+{
+    (void)c;
+    return Py_BuildValue("(nn)", (Py_ssize_t)self->nx, (Py_ssize_t)self->ny);
+}
+static PyObject *surface_form(SurfaceHandle *self, void *c)
+{
+    (void)c;
+    return PyLong_FromLong((long)ts_surface_form(self->s));
+}
+static PyObject *surface_shape(SurfaceHandle *self, void *c)
+{
+    (void)c;
+    return PyLong_FromLong((long)ts_surface_shape_of(self->s));
+}
+static PyObject *surface_certified(SurfaceHandle *self, void *c)
+{
+    (void)c;
+    return PyBool_FromLong(ts_surface_certified(self->s));
+}
+
+static PyMethodDef surface_methods[] = {
+    {"eval", (PyCFunction)(void (*)(void))surface_eval, METH_VARARGS | METH_KEYWORDS,
+     "eval(xq, yq, partials=False, mode=0, fill=nan)"},
+    {"eval_grid", (PyCFunction)(void (*)(void))surface_eval_grid, METH_VARARGS | METH_KEYWORDS,
+     "eval_grid(xq, yq, mode=0, fill=nan) -> (len(yq), len(xq))"},
+    {"integral", (PyCFunction)surface_integral, METH_VARARGS, "integral(xa, xb, ya, yb)"},
+    {"report", (PyCFunction)surface_report, METH_NOARGS, "report() -> (patches, 35)"},
+    {"certify", (PyCFunction)surface_certify, METH_VARARGS, "certify(lower, upper)"},
+    {"control", (PyCFunction)surface_control, METH_VARARGS, "control(i, j) -> (B, X, Y)"},
+    {NULL, NULL, 0, NULL}};
+
+static PyGetSetDef surface_getset[] = {
+    {"x", (getter)surface_x, NULL, "grid x (read-only view)", NULL},
+    {"y", (getter)surface_y, NULL, "grid y (read-only view)", NULL},
+    {"z", (getter)surface_z, NULL, "values, library layout (read-only view)", NULL},
+    {"dzdx", (getter)surface_dzdx, NULL, "slopes p used (read-only view)", NULL},
+    {"dzdy", (getter)surface_dzdy, NULL, "slopes q used (read-only view)", NULL},
+    {"twist", (getter)surface_twist, NULL, "twists r used (read-only view)", NULL},
+    {"ax", (getter)surface_ax, NULL, "a^x per column interval (read-only view)", NULL},
+    {"ay", (getter)surface_ay, NULL, "a^y per row interval (read-only view)", NULL},
+    {"patches", (getter)surface_patches, NULL, "(nx, ny) patches", NULL},
+    {"form", (getter)surface_form, NULL, "ts_form", NULL},
+    {"shape", (getter)surface_shape, NULL, "ts_surface_shape", NULL},
+    {"certified", (getter)surface_certified, NULL, "ts_surface_certified", NULL},
+    {NULL, NULL, NULL, NULL, NULL}};
+
+static PyTypeObject SurfaceHandleType = {
+    PyVarObject_HEAD_INIT(NULL, 0).tp_name = "trigspline._core.SurfaceHandle",
+    .tp_basicsize = sizeof(SurfaceHandle),
+    .tp_dealloc = (destructor)surface_dealloc,
+    .tp_flags = Py_TPFLAGS_DEFAULT,
+    .tp_doc = "A fitted ts_surface (immutable; made by surface_new).",
+    .tp_methods = surface_methods,
+    .tp_getset = surface_getset,
+};
+
+/* ------------------------------------------------------------------ */
 /* Module                                                               */
 /* ------------------------------------------------------------------ */
 
@@ -1249,11 +1727,26 @@ static PyObject *options_defaults(PyObject *mod, PyObject *unused)
                          o.certify);
 }
 
+/* surface_options_defaults() -> (form, slopes, zero_twist, alpha, beta, margin) of
+ * ts_surface_options_init. */
+static PyObject *surface_options_defaults(PyObject *mod, PyObject *unused)
+{
+    (void)mod, (void)unused;
+    ts_surface_options o;
+    ts_surface_options_init(&o);
+    return Py_BuildValue("(iiiddd)", (int)o.form, (int)o.slopes, o.zero_twist, o.alpha, o.beta,
+                         o.margin);
+}
+
 static PyMethodDef module_methods[] = {
     {"spline_new", (PyCFunction)(void (*)(void))spline_new, METH_VARARGS | METH_KEYWORDS,
      "spline_new(x, f, **options) -> SplineHandle"},
     {"curve_new", (PyCFunction)(void (*)(void))curve_new, METH_VARARGS | METH_KEYWORDS,
      "curve_new(points, **options) -> CurveHandle"},
+    {"surface_new", (PyCFunction)(void (*)(void))surface_new, METH_VARARGS | METH_KEYWORDS,
+     "surface_new(x, y, zt, **options) -> SurfaceHandle"},
+    {"surface_options_defaults", surface_options_defaults, METH_NOARGS,
+     "defaults of ts_surface_options_init"},
     {"slopes_compute", slopes_compute, METH_VARARGS, "slopes_compute(method, x, f)"},
     {"strerror", strerror_, METH_O, "ts_strerror(status)"},
     {"library_version", library_version, METH_NOARGS, "ts_version() of the compiled library"},
@@ -1271,7 +1764,8 @@ PyMODINIT_FUNC PyInit__core(void)
 {
     import_array();
     init_bernstein();
-    if (PyType_Ready(&SplineHandleType) < 0 || PyType_Ready(&CurveHandleType) < 0)
+    if (PyType_Ready(&SplineHandleType) < 0 || PyType_Ready(&CurveHandleType) < 0 ||
+        PyType_Ready(&SurfaceHandleType) < 0)
         return NULL;
     PyObject *m = PyModule_Create(&module_def);
     if (!m)
@@ -1288,12 +1782,16 @@ PyMODINIT_FUNC PyInit__core(void)
         PyModule_AddIntConstant(m, "MODE_CLAMP", MODE_CLAMP) < 0 ||
         PyModule_AddIntConstant(m, "MODE_LINEAR", MODE_LINEAR) < 0 ||
         PyModule_AddIntConstant(m, "MODE_NAN", MODE_NAN) < 0 ||
-        PyModule_AddIntConstant(m, "MODE_ERROR", MODE_ERROR) < 0)
+        PyModule_AddIntConstant(m, "MODE_ERROR", MODE_ERROR) < 0 ||
+        PyModule_AddIntConstant(m, "SURF_ERROR", SURF_ERROR) < 0 ||
+        PyModule_AddIntConstant(m, "SURF_FILL", SURF_FILL) < 0)
         goto fail;
     Py_INCREF(&SplineHandleType);
     Py_INCREF(&CurveHandleType);
+    Py_INCREF(&SurfaceHandleType);
     if (PyModule_AddObject(m, "SplineHandle", (PyObject *)&SplineHandleType) < 0 ||
-        PyModule_AddObject(m, "CurveHandle", (PyObject *)&CurveHandleType) < 0)
+        PyModule_AddObject(m, "CurveHandle", (PyObject *)&CurveHandleType) < 0 ||
+        PyModule_AddObject(m, "SurfaceHandle", (PyObject *)&SurfaceHandleType) < 0)
         goto fail;
     return m;
 fail:

@@ -29,10 +29,11 @@ if _core.library_version() != __version__ or _core.HEADER_VERSION != __version__
 from .curve import Curve  # noqa: E402
 from .errors import TrigsplineError, strerror  # noqa: E402
 from .spline import Antiderivative, Derivative, Spline, estimate_slopes  # noqa: E402
+from .surface import Surface  # noqa: E402
 from .interp import interp  # noqa: E402
 
-__all__ = ["Spline", "Curve", "Derivative", "Antiderivative", "TrigsplineError", "interp",
-           "estimate_slopes", "strerror", "library_version", "__version__"]
+__all__ = ["Spline", "Curve", "Surface", "Derivative", "Antiderivative", "TrigsplineError",
+           "interp", "estimate_slopes", "strerror", "library_version", "__version__"]
 
 
 def library_version() -> str:

@@ -29,20 +29,27 @@ class TrigsplineError(ValueError):
         The text (also ``str(err)``), naming the point, interval or query.
     index : int or None
         The point, interval or query it concerns.
-    where : {"point", "interval", "query", None}
-        What ``index`` counts.
+    where : {"point", "interval", "query", "node", "patch", "x", "y", None}
+        What ``index`` counts (``"node"``, ``"patch"``, ``"x"``, ``"y"``:
+        surfaces).
     series : tuple of int or None
         For vector-valued data: the index of the series (``f`` without the
         interpolation axis) that failed.
+    node, patch : tuple of int or None
+        Surfaces: the node ``(i, j)`` at ``(x[i], y[j])`` or the patch
+        ``(i, j)`` = ``[x[i], x[i+1]] × [y[j], y[j+1]]`` the error names.
     """
 
-    def __init__(self, status, message, index=None, where=None, series=None):
+    def __init__(self, status, message, index=None, where=None, series=None, node=None,
+                 patch=None):
         super().__init__(message)
         self.status = int(status)
         self.message = message
         self.index = index
         self.where = where
         self.series = series
+        self.node = node
+        self.patch = patch
 
     @property
     def name(self):
@@ -55,7 +62,7 @@ class TrigsplineError(ValueError):
 
     def __reduce__(self):
         return (TrigsplineError, (self.status, self.message, self.index, self.where,
-                                  self.series))
+                                  self.series, self.node, self.patch))
 
 
 def _line_text(line):
