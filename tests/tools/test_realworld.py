@@ -336,8 +336,91 @@ def test_bad_inputs():
               rc == status and msg in err and out == "", "rc=%d err=%r" % (rc, err))
 
 
+def test_text_columns():
+    """Columns not chosen by --columns / --x / --y hold any text (station names, notes,
+    words, a quoted line break); the chosen ones are still checked to FILE:LINE:COLUMN."""
+    f = c("stations_text.csv")
+    # the file as typed: the dates and values of its date and rain_mm columns
+    xs = ["2024-05-01", "2024-05-02", "2024-05-04", "2024-05-05", "2024-05-07"]
+    ys = [0.5, 2.25, 7, 1.5, 0]
+    ref = os.path.join(TMP, "stations_plain.csv")
+    plain_csv(ref, xs, ys)
+    rc2, out2, err2 = run(["fit", ref, "--samples", "5"])
+    # "gauge 1,5 m above ground" is unquoted: two fields, so that row has one field more
+    # than the header; the quoted note of Delta spans two lines
+    rc, out, err = run(["fit", f, "--x", "date", "--y", "rain_mm", "--samples", "5"])
+    check("text columns: a row with a delimiter in an unquoted note is still refused",
+          rc == 2 and "stations_text.csv:4:" in err and "wrong number of fields (6, expected 5)"
+          in err, err)
+    good = os.path.join(TMP, "stations_ok.csv")
+    with open(f) as fh:
+        text = fh.read().replace("gauge 1,5 m above ground", '"gauge 1,5 m above ground"')
+    with open(good, "w") as fh:
+        fh.write(text)
+    for opts in (["--x", "date", "--y", "rain_mm"], ["--columns", "2,3"],
+                 ["--columns", "date,rain_mm", "--no-stream"]):
+        rc, out, err = run(["fit", good, "--samples", "5"] + opts)
+        lines, lines2 = out.strip().split("\n"), out2.strip().split("\n")
+        check("text columns fit %s" % opts, rc == 0 and rc2 == 0, err + err2)
+        check("text columns header %s" % opts, lines[0] == "date,rain_mm", lines[0])
+        check("text columns samples %s" % opts, len(lines) == len(lines2) and
+              [l.split(",")[1] for l in lines[1:]] == [l.split(",")[1] for l in lines2[1:]] and
+              all(abs(epoch(a.split(",")[0]) - float(b.split(",")[0])) < 1e-6
+                  for a, b in zip(lines[1:], lines2[1:])), (lines[:3], lines2[:3]))
+    rc, out, err = run(["fit", good, "--x", "date", "--y", "rain_mm", "--json", "--form",
+                        "paper"])
+    js = json.loads(out) if rc == 0 else {}
+    check("text columns json", rc == 0 and [k["f"] for k in js["knots"]] == ys and
+          js["rows"] == {"used": 5, "skipped_missing": 0}, err)
+    rc, out, err = run(["certify", good, "--x", "date", "--y", "rain_mm", "--alpha", "1",
+                        "--beta", "0.5", "--shape", "positive"])
+    check("text columns certify", rc in (0, 4) and out.startswith("interval,date_start,") and
+          len(out.strip().split("\n")) == len(xs), err + out[:200])
+    # streaming across chunk borders (chunks of 4 intervals) equals the in-memory fit
+    big = os.path.join(TMP, "stations_big.csv")
+    with open(big, "w") as fh:
+        fh.write("id,name,t,v,comment\n")
+        for i in range(60):
+            fh.write('%d,"St, %d",%d,%r,%s\n' % (i, i, 2 * i, 1 + (i * 7 % 11) / 4.0,
+                                                   "ok" if i % 3 else "check ""this"""))
+    rc, out, err = run(["fit", big, "--columns", "t,v", "--samples", "4"],
+                       env={"TRIGSPLINE_CHUNK": "4"})
+    rc2, out3, err3 = run(["fit", big, "--columns", "t,v", "--samples", "4", "--no-stream"])
+    check("text columns streaming = in memory", rc == 0 and rc2 == 0 and out == out3 and
+          out.startswith("t,v\n"), err + err3)
+    # no header, numeric choice: the text of column 1 does not make line 1 a header
+    nh = os.path.join(TMP, "stations_nohdr.csv")
+    with open(nh, "w") as fh:
+        fh.write("Alpha,1,0.5\nBeta,2,2.25\nGamma,4,7\n")
+    rc, out, err = run(["fit", nh, "--columns", "2,3", "--json", "--form", "paper"])
+    js = json.loads(out) if rc == 0 else {}
+    check("text columns without header", rc == 0 and [k["x"] for k in js["knots"]] == [1, 2, 4]
+          and js["columns"]["x"] == "x", err + out[:200])
+    # the chosen columns are still numbers, dates or missing values, errors name the field
+    line2 = text.split("\n")[1]
+    for opts, status, msg in [
+        (["--columns", "date,station"], 2,
+         "stations_ok.csv:2:1: expected a number, found \"Alpha Ridge\""),
+        (["--columns", "date,quality"], 2, "stations_ok.csv:2:%d: expected a number, found "
+         "\"good\"" % (line2.index(",good,") + 2)),
+        (["--columns", "note,rain_mm"], 2, "stations_ok.csv:2:%d: expected a number, found "
+         "\"first day, sunny\"" % (line2.index('"first') + 1)),
+    ]:
+        rc, out, err = run(["fit", good] + opts)
+        check("text columns chosen %s" % opts, rc == status and msg in err and out == "",
+              "rc=%d err=%r" % (rc, err))
+    bad = os.path.join(TMP, "stations_missing.csv")
+    with open(bad, "w") as fh:
+        fh.write(text.replace("2024-05-04,7,", "2024-05-04,NA,"))
+    col = text.split("\n")[3].index("2024-05-04,7,") + len("2024-05-04,") + 1
+    rc, out, err = run(["fit", bad, "--x", "date", "--y", "rain_mm"])
+    check("text columns missing value", rc == 2 and "stations_missing.csv:4:%d: missing value "
+          "in column 3 (\"rain_mm\"); use --missing skip" % col in err, err)
+
+
 test_corpus()
 test_logy_and_formats()
+test_text_columns()
 test_bad_inputs()
 shutil.rmtree(TMP, ignore_errors=True)
 print("test_realworld: %d passed, %d failed" % (passed, failed))

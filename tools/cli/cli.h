@@ -276,7 +276,12 @@ struct cli_cols {
 typedef struct cli_cols cli_cols;
 /* Reader options from --delimiter, --decimal-comma, --na, --skip (dates detected). */
 void cli_read_options(const cli_opts *o, tsu_read_options *ro);
-/* After the first row: resolve --columns / --x / --y (numbers or names).
+/* Before the first row: resolve --columns / --x / --y (numbers or header
+ * names; tsu_reader_layout) and have the reader parse only those two columns,
+ * so the others may hold any text (a numeric choice also limits the header
+ * test to them).  CLI_OK or an exit status (message printed). */
+int cli_cols_select(const cli_opts *o, tsu_reader *r, const char *name, cli_cols *c);
+/* After the first row: whether x is a time (--x-time checked; y must not be).
  * CLI_OK or CLI_DATA (message printed). */
 int cli_cols_resolve(const cli_opts *o, const tsu_reader *r, const char *name, cli_cols *c);
 /* x, y of row: 1 taken, 0 skipped (missing, --missing skip), -1 error

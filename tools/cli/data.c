@@ -78,6 +78,8 @@ int cli_read_data(const cli_opts *o, cli_data *d)
         rc = cli_report_io(&e);
         goto done;
     }
+    if (o->cmd != CLI_CURVE && (rc = cli_cols_select(o, r, d->name, &d->cols)) != CLI_OK)
+        goto done;
     for (;;) {
         const double *row;
         tsu_io_status st = tsu_reader_next(r, &row, &e);

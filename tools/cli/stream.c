@@ -349,6 +349,8 @@ int cli_fit_stream(const cli_opts *o, const ts_options *opt)
         rc = cli_report_io(&ie);
         goto done;
     }
+    if ((rc = cli_cols_select(o, s.r, s.name, &s.cols)) != CLI_OK)
+        goto done;
 
     /* first chunk: no left context */
     pend.e0 = 0;
