@@ -418,8 +418,49 @@ def test_text_columns():
           "in column 3 (\"rain_mm\"); use --missing skip" % col in err, err)
 
 
+def test_time_in_messages():
+    """Data errors name x in the ISO form of the input (written by Python's datetime here),
+    not in seconds since the epoch, both streaming and in memory."""
+    def iso(t):  # the text Python writes for the instant, in the file's offset
+        return datetime.datetime.fromisoformat(t).isoformat()
+    xs = ["2024-03-01T00:00:00+01:00", "2024-03-01T06:00:00+01:00",
+          "2024-03-01T05:30:00+01:00", "2024-03-01T09:00:00+01:00"]
+    f = os.path.join(TMP, "not_increasing.csv")
+    with open(f, "w") as fh:
+        fh.write("time,v\n" + "".join("%s,%d\n" % (x, k + 1) for k, x in enumerate(xs)))
+    want = ("not_increasing.csv:4: point 2 (x = %s) is not greater than the previous x = %s "
+            "(line 3)" % (iso(xs[2]), iso(xs[1])))
+    for extra in ([], ["--no-stream"], ["--json"]):
+        rc, out, err = run(["fit", f] + extra)
+        check("time in 'not increasing' %s" % extra, rc == 2 and want in err and
+              str(int(epoch(xs[2]))) not in err, err)
+    days = ["2024-03-01", "2024-03-02", "2024-03-04"]
+    neg = os.path.join(TMP, "negative_day.csv")
+    with open(neg, "w") as fh:
+        fh.write("day,v\n%s,1\n%s,-2\n%s,3\n" % tuple(days))
+    d1 = datetime.date.fromisoformat(days[1]).isoformat()
+    rc, out, err = run(["fit", neg, "--shape", "positive"])
+    check("time in 'negative'", rc == 2 and "negative_day.csv:3: point 1 (x = %s, f = -2) is "
+          "negative" % d1 in err and "(negative at x = %s)" % d1 in err, err)
+    mono = os.path.join(TMP, "mono_day.csv")
+    with open(mono, "w") as fh:
+        fh.write("day,v\n%s,1\n%s,2\n%s,1\n" % tuple(days))
+    d2 = datetime.date.fromisoformat(days[2]).isoformat()
+    for extra in ([], ["--no-stream"]):
+        rc, out, err = run(["fit", mono, "--shape", "monotone"] + extra)
+        check("time in 'change direction' %s" % extra, rc == 2 and "mono_day.csv:4: point 2 "
+              "(x = %s, f = 1): the data change direction" % d2 in err, err)
+    # certify's list of violated intervals: the interval ends are knots, in the file's form
+    rc, out, err = run(["certify", mono, "--alpha", "0.2", "--beta", "0", "--upper", "0,2",
+                        "-o", os.devnull])
+    check("time in certify's violations", rc == 4 and "interval 1 [%s, %s] (lines 3-4)" %
+          (datetime.date.fromisoformat(days[1]).isoformat(), d2) in err and
+          re.search(r"at x = 2024-03-0[234]T\d\d:\d\d", err) is not None, err)
+
+
 test_corpus()
 test_logy_and_formats()
+test_time_in_messages()
 test_text_columns()
 test_bad_inputs()
 shutil.rmtree(TMP, ignore_errors=True)
