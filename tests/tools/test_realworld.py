@@ -178,7 +178,12 @@ def test_corpus():
         if ok:
             kx = [kk["x"] for kk in js["knots"]]
             kf = [kk["f"] for kk in js["knots"]]
-            check("knots x " + label, kx == [xnum(x) for x in xs], kx)
+            if is_time(xs):
+                # ISO text in the file's own form (as typed in CASES), the same instants
+                check("knots x as ISO text " + label, kx == xs and
+                      [epoch(v) for v in kx] == [xnum(x) for x in xs], kx)
+            else:
+                check("knots x " + label, kx == [xnum(x) for x in xs], kx)
             check("knots f " + label, kf == [float(y) for y in ys], kf)
             check("json names " + label, js["columns"] == {"x": xn, "y": yn,
                                                            "x_time": is_time(xs)}, js["columns"])
@@ -371,6 +376,7 @@ def test_text_columns():
                         "paper"])
     js = json.loads(out) if rc == 0 else {}
     check("text columns json", rc == 0 and [k["f"] for k in js["knots"]] == ys and
+          [k["x"] for k in js["knots"]] == xs and js["schema"] == "trigspline-fit/1" and
           js["rows"] == {"used": 5, "skipped_missing": 0}, err)
     rc, out, err = run(["certify", good, "--x", "date", "--y", "rain_mm", "--alpha", "1",
                         "--beta", "0.5", "--shape", "positive"])
@@ -458,8 +464,36 @@ def test_time_in_messages():
           re.search(r"at x = 2024-03-0[234]T\d\d:\d\d", err) is not None, err)
 
 
+def test_json_time_knots():
+    """--json knots x in the input's ISO form (Python's datetime writes the expected text,
+    offset kept), the same as samples.x at the knots; certify --json alike."""
+    xs = ["2024-03-01T00:00:00+05:30", "2024-03-01T06:00:00+05:30", "2024-03-02T00:00:00+05:30",
+          "2024-03-02T09:15:30+05:30"]
+    f = os.path.join(TMP, "offset_knots.csv")
+    with open(f, "w") as fh:
+        fh.write("t,c\n" + "".join("%s,%d\n" % (x, k + 2) for k, x in enumerate(xs)))
+    want = [datetime.datetime.fromisoformat(x).isoformat() for x in xs]
+    rc, out, err = run(["fit", f, "--json", "--with-samples", "--samples", "3"])
+    js = json.loads(out) if rc == 0 else {}
+    check("json knots ISO (offset)", rc == 0 and [k["x"] for k in js["knots"]] == want and
+          js["columns"]["x_time"] is True and js["schema"] == "trigspline-fit/1", err + out[:300])
+    if rc == 0:
+        check("json knots = samples.x at the knots",
+              all(k["x"] in js["samples"]["x"] for k in js["knots"]), js["samples"]["x"][:6])
+    rc, out, err = run(["certify", f, "--json", "--alpha", "1", "--beta", "0.5", "--shape",
+                        "positive"])
+    js = json.loads(out) if rc in (0, 4) else {}
+    check("certify json knots ISO", rc in (0, 4) and [k["x"] for k in js["knots"]] == want, err)
+    # numbers stay numbers
+    rc, out, err = run(["fit", c("gaps_pk.csv"), "--missing", "skip", "--json"])
+    js = json.loads(out) if rc == 0 else {}
+    check("json knots numeric x", rc == 0 and [k["x"] for k in js["knots"]] ==
+          [0.25, 1, 4, 8, 12, 24], err)
+
+
 test_corpus()
 test_logy_and_formats()
+test_json_time_knots()
 test_time_in_messages()
 test_text_columns()
 test_bad_inputs()
