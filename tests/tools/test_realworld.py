@@ -491,8 +491,59 @@ def test_json_time_knots():
           [0.25, 1, 4, 8, 12, 24], err)
 
 
+def test_zone_names():
+    """Time-zone names are refused with a message naming FILE:LINE:COLUMN and the name;
+    Z and numeric offsets are read (the same instants Python's datetime gives)."""
+    # each line: (text of the x field, delimiter); the field sits in column 2 after "id,"
+    names = [("2024-03-01T06:00:00CET", "CET"), ("2024-03-01T06:00:00 UTC", "UTC"),
+             ("2024-03-01 06:00 Europe/Berlin", "Europe/Berlin"),
+             ("2024-03-01T06:00:00+01:00[Europe/Paris]", "[Europe/Paris]"),
+             ("2024-03-01 EST", "EST")]
+    for k, (field, name) in enumerate(names):
+        for row in (1, 3):  # the first data row (column not yet known as dates) or later
+            f = os.path.join(TMP, "zone%d_%d.csv" % (k, row))
+            rows = ["2024-03-01T00:00:00Z", "2024-03-01T03:00:00Z", "2024-03-01T09:00:00Z"]
+            rows[row - 1] = field
+            with open(f, "w") as fh:
+                fh.write("id,time,v\n" + "".join('%d,%s,%d\n' % (i, t, i + 1)
+                                                  for i, t in enumerate(rows)))
+            col = len("%d," % (row - 1)) + 1
+            rc, out, err = run(["fit", f, "--x", "time", "--y", "v"])
+            want = ('zone%d_%d.csv:%d:%d: time-zone name "%s" in "%s": time-zone names are not '
+                    "accepted, write Z or a numeric UTC offset" % (k, row, row + 1, col, name,
+                                                                   field))
+            check("zone name %r row %d" % (field, row), rc == 2 and want in err and out == "",
+                  "rc=%d err=%r" % (rc, err))
+    # without a header: the zone name on line 1 is data (not a header), refused on line 1
+    f = os.path.join(TMP, "zone_nohdr.csv")
+    with open(f, "w") as fh:
+        fh.write("2024-03-01 CET;1\n2024-03-02 CET;2\n")
+    rc, out, err = run(["fit", f])
+    check("zone name without header", rc == 2 and "zone_nohdr.csv:1:1: time-zone name \"CET\""
+          in err, err)
+    # accepted: Z, z and offsets (+HH:MM, +HHMM, +HH, -HH:MM)
+    xs = ["2024-03-01T00:00:00+01:00", "2024-03-01T06:00:00+0100", "2024-03-01T09:00:00+01",
+          "2024-03-01T12:00:00z", "2024-03-01T14:30:00-02:30"]
+    f = os.path.join(TMP, "zone_ok.csv")
+    with open(f, "w") as fh:
+        fh.write("time,v\n" + "".join("%s,%d\n" % (x, i) for i, x in enumerate(xs)))
+    rc, out, err = run(["fit", f, "--json", "--form", "paper"])
+    js = json.loads(out) if rc == 0 else {}
+    check("numeric offsets read", rc == 0 and [epoch(k["x"]) for k in js["knots"]] ==
+          [datetime.datetime.fromisoformat(x.replace("z", "+00:00").replace("+0100", "+01:00")
+                                           .replace("+01,", "+01:00,")
+                                           if not x.endswith("+01") else x + ":00").timestamp()
+           for x in xs], err + out[:200])
+    # documented in the man page
+    with open(os.path.join(os.path.dirname(os.path.dirname(HERE)), "docs", "trigspline.1")) as fh:
+        man = " ".join(fh.read().split())
+    check("man page: zone names", "only .B Z (or z) and numeric UTC offsets" in man and
+          "time-zone name \"CET\" in" in man, "")
+
+
 test_corpus()
 test_logy_and_formats()
+test_zone_names()
 test_json_time_knots()
 test_time_in_messages()
 test_text_columns()

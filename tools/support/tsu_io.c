@@ -1757,6 +1757,35 @@ static int num_field(tsu_reader *r, const char *s, const char *e, double *v)
     return (int)ns;
 }
 
+#define IS_ALPHA(c) ((unsigned)(((unsigned char)(c) | 0x20) - 'a') < 26u)
+
+/* A date or date-time followed by a time-zone name ("CET", " Europe/Paris",
+ * "[Europe/Paris]": two letters or a '['), which is not accepted: 1 and
+ * *name where the name starts, else 0. */
+static int zone_name(const char *s, const char *e, const char **name)
+{
+    const char *stop, *p;
+    if (!tsu_parse_time(s, e, NULL, NULL, &stop))
+        return 0;
+    for (p = stop; p < e && IS_BLANK(*p); p++)
+        ;
+    if (!(p < e && (*p == '[' || (p + 1 < e && IS_ALPHA(p[0]) && IS_ALPHA(p[1])))))
+        return 0;
+    *name = p;
+    return 1;
+}
+
+/* The error for a field [s, e) at `at` that is a date with a zone name at `name`. */
+#define ZONE_FAIL(r, at, fieldno, s, e, name)                                              \
+    do {                                                                                   \
+        char zq_[200], zn_[120];                                                           \
+        quote_text(zq_, sizeof zq_, (s), (e));                                             \
+        quote_text(zn_, sizeof zn_, (name), (e));                                          \
+        POS_FAIL((r), TSU_IO_ERR_TIME, (at), (fieldno),                                    \
+                 "time-zone name %s in %s: time-zone names are not accepted, write Z or a " \
+                 "numeric UTC offset (+HH:MM, +HHMM or +HH)", zn_, zq_);                   \
+    } while (0)
+
 enum { FK_EMPTY, FK_NUMBER, FK_NA, FK_TIME, FK_TEXT, FK_NOMEM };
 
 /* Is column j parsed (tsu_reader_use_columns)? */
@@ -1785,6 +1814,8 @@ static int classify(tsu_reader *r, const field *f)
         const char *stop;
         if (tsu_parse_time(s, e, NULL, NULL, &stop) && stop == e)
             return FK_TIME;
+        if (zone_name(s, e, &stop))
+            return FK_TIME; /* a date all the same: data, refused when parsed */
     }
     return FK_TEXT;
 }
@@ -1985,7 +2016,10 @@ static tsu_io_status value_error(tsu_reader *r, int ns, const field *f, const ch
 {
     char q[200], hint[200] = "";
     int all_text = 0;
+    const char *zn;
     quote_text(q, sizeof q, s, e);
+    if (ns == TSU_NUM_SYNTAX && r->time_detect && r->rows == 0 && zone_name(s, e, &zn))
+        ZONE_FAIL(r, f->at, fieldno, s, e, zn);
     if (ns == TSU_NUM_NONFINITE)
         POS_FAIL(r, TSU_IO_ERR_NONFINITE, f->at, fieldno, "not a finite number: %s", q);
     if (ns == TSU_NUM_RANGE)
@@ -2136,6 +2170,9 @@ static tsu_io_status parse_data(tsu_reader *r, const char *ls, const char *le)
             tsu_time_form tf;
             char q[200];
             if (!tsu_parse_time(s, e, &v, &tf, &stop) || stop != e) {
+                const char *zn;
+                if (zone_name(s, e, &zn))
+                    ZONE_FAIL(r, f.at, nf + 1, s, e, zn);
                 quote_text(q, sizeof q, s, e);
                 POS_FAIL(r, TSU_IO_ERR_TIME, f.at, nf + 1,
                          "not a valid ISO 8601 date or date-time: %s (YYYY-MM-DD[THH:MM[:SS]]"

@@ -211,7 +211,11 @@ typedef struct tsu_io_error {
  *     YYYY-MM-DD(T|t| )HH:MM[:SS[.fraction]]    a date-time
  *     ... followed by Z, z, +HH:MM, -HH:MM, +HHMM or +HH   its UTC offset
  *
- * A date-time without an offset is taken as UTC.  Years 0000-9999; month,
+ * A date-time without an offset is taken as UTC.  Time-zone names are not
+ * accepted: a date followed by one (two letters or '[': "CET", " UTC",
+ * "[Europe/Paris]") counts as a date in the header test and is an error
+ * TSU_IO_ERR_TIME naming the name ("time-zone name ... not accepted, write Z
+ * or a numeric UTC offset") in a time column or in the first data row.  Years 0000-9999; month,
  * day, hour (00-23), minute and second (00-59) are range-checked (day
  * against the month, leap years by the Gregorian rule).  Leap seconds do
  * not exist on this time scale (POSIX time): ":60" is an error.  The value
