@@ -126,7 +126,8 @@ int cli_certify(cli_opts *o)
             if (r->certified)
                 continue;
             fprintf(stderr, "  interval %zu [%s, %s] (lines %llu-%llu):", i,
-                    cli_x_text(&d.cols, r->x0, b[0]), cli_x_text(&d.cols, r->x1, b[1]), d.line ? d.line[i] : 0ULL, d.line ? d.line[i + 1] : 0ULL);
+                    cli_x_text(&d.cols, r->x0, b[0]), cli_x_text(&d.cols, r->x1, b[1]),
+                    d.line ? d.line[i] : 0ULL, d.line ? d.line[i + 1] : 0ULL);
             if (r->has_lower && !(r->gap_lower > 0.0))
                 fprintf(stderr, " min gap above the lower boundary %s at x = %s;",
                         cli_num(r->gap_lower, b[2]), cli_x_text(&d.cols, r->at_lower, b[3]));

@@ -194,7 +194,8 @@ static void list_points(char *buf, size_t len, const ts_options *opt, point_pred
         if (cnt == 12)
             w = snprintf(buf + used, len - used, ", ...");
         else if (cnt < 12)
-            w = snprintf(buf + used, len - used, "%s%s", cnt ? ", " : "", cli_x_text(cols, x[i], b));
+            w = snprintf(buf + used, len - used, "%s%s", cnt ? ", " : "",
+                         cli_x_text(cols, x[i], b));
         else
             w = 0;
         cnt++;
@@ -227,7 +228,8 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
         if (point && i > 0) {
             cli_error("%s: point %zu (x = %s) is not greater than the previous x = %s%s%s; x must "
                       "be strictly increasing",
-                      w, off + i, cli_x_text(cols, x[i], bx), cli_x_text(cols, x[i - 1], b2), lines ? " (line " : "",
+                      w, off + i, cli_x_text(cols, x[i], bx), cli_x_text(cols, x[i - 1], b2),
+                      lines ? " (line " : "",
                       lines ? (snprintf(ln, sizeof ln, "%llu)", lines[i - 1]), ln) : "");
             return CLI_DATA;
         }
@@ -265,8 +267,9 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
                         f, n);
             cli_error("%s: point %zu (x = %s, f = %s) is not %s the %s line %s; the data are on "
                       "or %s it at x = %s",
-                      w, off + i, cli_x_text(cols, x[i], bx), cli_num(f[i], bf), low ? "above" : "below",
-                      low ? "lower" : "upper", ln, low ? "below" : "above", list);
+                      w, off + i, cli_x_text(cols, x[i], bx), cli_num(f[i], bf),
+                      low ? "above" : "below", low ? "lower" : "upper", ln, low ? "below" : "above",
+                      list);
             return CLI_DATA;
         }
         break;
@@ -314,8 +317,8 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
                 snprintf(lr, sizeof lr, "%s", name);
             cli_error("%s: interval %zu [%s, %s]: alpha + beta = %s is below the geometric-form "
                       "bound %s; raise --alpha or --beta",
-                      lr, off + i, cli_x_text(cols, x[i], bx), cli_x_text(cols, x[i + 1], b2), cli_num(a, bf),
-                      cli_num(TS_GEOMETRIC_A_MIN, ln));
+                      lr, off + i, cli_x_text(cols, x[i], bx), cli_x_text(cols, x[i + 1], b2),
+                      cli_num(a, bf), cli_num(TS_GEOMETRIC_A_MIN, ln));
             return CLI_USAGE;
         }
         break;
@@ -341,7 +344,8 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
     }
     (void)o;
     if (point)
-        cli_error("%s: point %zu (x = %s): %s", w, off + i, cli_x_text(cols, x[i], bx), ts_strerror(st));
+        cli_error("%s: point %zu (x = %s): %s", w, off + i, cli_x_text(cols, x[i], bx),
+                  ts_strerror(st));
     else if (interval)
         cli_error("%s: interval %zu [%s, %s]: %s", w, off + i, cli_x_text(cols, x[i], bx),
                   cli_x_text(cols, x[i + 1], b2), ts_strerror(st));

@@ -279,8 +279,9 @@ size_t tsu_format_time(double t, const tsu_time_form *form, char buf[TSU_TIME_SI
  *    or tsu_read_options.ncols when not 0, or else the first data row's.
  *  - A field of a column not chosen by tsu_reader_use_columns (when it was
  *    called) is any text.  Every other field is a number of tsu_parse_double
- *    and nothing else (surrounding blanks aside); with decimal_comma the decimal mark is ',' and '.' is an
- *    error (it may be a digit-group separator).  nan/inf, overflow and text
+ *    and nothing else (surrounding blanks aside); with decimal_comma the
+ *    decimal mark is ',' and '.' is an error (it may be a digit-group
+ *    separator).  nan/inf, overflow and text
  *    are errors.  With na set, an empty field and the words of na (ASCII
  *    case-insensitive) are missing values: the row holds NaN there and
  *    tsu_reader_missing() counts them.  In a time column every field is a
