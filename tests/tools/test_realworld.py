@@ -415,6 +415,9 @@ def test_text_columns():
         rc, out, err = run(["fit", good] + opts)
         check("text columns chosen %s" % opts, rc == status and msg in err and out == "",
               "rc=%d err=%r" % (rc, err))
+    rc, out, err = run(["fit", nh, "--columns", "2,999999999999"])
+    check("text columns: a huge column number", rc == 2 and "--columns 999999999999: the table "
+          "has 3 columns" in err, err)
     bad = os.path.join(TMP, "stations_missing.csv")
     with open(bad, "w") as fh:
         fh.write(text.replace("2024-05-04,7,", "2024-05-04,NA,"))

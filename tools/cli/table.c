@@ -18,6 +18,9 @@ void cli_read_options(const cli_opts *o, tsu_read_options *ro)
     ro->time_detect = o->cmd != CLI_CURVE;
 }
 
+/* Column numbers up to this are given to the reader before the header test. */
+#define CLI_MAX_PRESELECT 65536
+
 /* spec as a 1-based column number: 1 and *k, or 0 (a name). */
 static int col_number(const char *spec, size_t *k)
 {
@@ -78,9 +81,11 @@ int cli_cols_select(const cli_opts *o, tsu_reader *r, const char *name, cli_cols
     int rc;
     const char *opt_x = o->columns_set && o->xcol && o->ycol ? "--columns" : "--x";
     const char *opt_y = o->columns_set && o->xcol && o->ycol ? "--columns" : "--y";
-    /* numbers: only these columns count in the header test */
+    /* numbers: only these columns count in the header test (a number beyond
+     * any real table is left to the range check below, not allocated for) */
     if ((o->xcol || o->ycol) && (!o->xcol || col_number(o->xcol, &kx)) &&
-        (!o->ycol || col_number(o->ycol, &ky)) && kx >= 1 && ky >= 1) {
+        (!o->ycol || col_number(o->ycol, &ky)) && kx >= 1 && ky >= 1 &&
+        kx <= CLI_MAX_PRESELECT && ky <= CLI_MAX_PRESELECT) {
         if (!o->ycol)
             ky = kx == 2 ? 1 : 2;
         size_t use[2] = {kx - 1, ky - 1};
