@@ -1148,6 +1148,112 @@ static void test_reader_realworld(void)
     }
 }
 
+/* tsu_reader_layout and tsu_reader_use_columns: the columns not chosen hold any text. */
+static void test_reader_columns(void)
+{
+    static const char text[] = "name,t,v,note\nAlpha, 1 ,0.5,\"a, b\"\n\"Beta \"\"x\"\"\",2,NA,"
+                               "-\nGamma,4,7,\n";
+    static const char nohdr[] = "Alpha,1,0.5\nBeta,2,2.25\n";
+    tsu_read_options o;
+    tsu_io_error e;
+    tsu_reader *r = NULL;
+    const double *row;
+    size_t use[2] = {1, 2};
+    tsu_read_options_init(&o);
+    o.na = "NA";
+    FILE *f = mem_file(text, sizeof text - 1);
+    CHECK(f && tsu_reader_open(&r, f, "c.csv", &o, &e) == TSU_IO_OK);
+    if (f && r) {
+        CHECK(tsu_reader_layout(r, &e) == TSU_IO_OK && tsu_reader_ncols(r) == 4 &&
+              tsu_reader_nnames(r) == 4 && strcmp(tsu_reader_name(r, 3), "note") == 0 &&
+              tsu_reader_line(r) == 2 && tsu_reader_rows(r) == 0);
+        CHECK(tsu_reader_layout(r, &e) == TSU_IO_OK && tsu_reader_line(r) == 2); /* idempotent */
+        CHECK(tsu_reader_use_columns(r, use, 2, &e) == TSU_IO_OK);
+        CHECK(tsu_reader_next(r, &row, &e) == TSU_IO_OK && row[1] == 1 && row[2] == 0.5 &&
+              isnan(row[0]) && isnan(row[3]) && tsu_reader_missing(r) == 0 &&
+              tsu_reader_line(r) == 2);
+        CHECK(tsu_reader_next(r, &row, &e) == TSU_IO_OK && row[1] == 2 && isnan(row[2]) &&
+              tsu_reader_missing(r) == 1);
+        CHECK(tsu_reader_next(r, &row, &e) == TSU_IO_OK && row[1] == 4 && row[2] == 7);
+        CHECK(tsu_reader_next(r, &row, &e) == TSU_IO_END);
+        tsu_reader_free(r);
+        r = NULL;
+    }
+    if (f)
+        fclose(f);
+    /* every column parsed (no choice): the text is an error naming line and column */
+    f = mem_file(text, sizeof text - 1);
+    CHECK(f && tsu_reader_open(&r, f, "c.csv", &o, &e) == TSU_IO_OK);
+    if (f && r) {
+        CHECK(tsu_reader_next(r, &row, &e) == TSU_IO_ERR_NUMBER &&
+              strcmp(e.msg, "c.csv:2:1: expected a number, found \"Alpha\"") == 0);
+        tsu_reader_free(r);
+        r = NULL;
+    }
+    if (f)
+        fclose(f);
+    /* chosen before the header test: line 1 is data, not a header */
+    f = mem_file(nohdr, sizeof nohdr - 1);
+    CHECK(f && tsu_reader_open(&r, f, "n.csv", &o, &e) == TSU_IO_OK);
+    if (f && r) {
+        size_t u2[2] = {1, 2};
+        CHECK(tsu_reader_use_columns(r, u2, 2, &e) == TSU_IO_OK);
+        CHECK(tsu_reader_layout(r, &e) == TSU_IO_OK && tsu_reader_nnames(r) == 0 &&
+              tsu_reader_ncols(r) == 3 && tsu_reader_line(r) == 1);
+        CHECK(tsu_reader_next(r, &row, &e) == TSU_IO_OK && row[1] == 1 && row[2] == 0.5);
+        tsu_reader_free(r);
+        r = NULL;
+    }
+    if (f)
+        fclose(f);
+    /* a chosen column still checked; a quote error in another one is still an error */
+    f = mem_file("a,b\nu,2\n3,x\n", 12);
+    CHECK(f && tsu_reader_open(&r, f, "q.csv", &o, &e) == TSU_IO_OK);
+    if (f && r) {
+        size_t u1[1] = {1};
+        CHECK(tsu_reader_use_columns(r, u1, 1, &e) == TSU_IO_OK);
+        CHECK(tsu_reader_next(r, &row, &e) == TSU_IO_OK && row[1] == 2);
+        CHECK(tsu_reader_next(r, &row, &e) == TSU_IO_ERR_NUMBER &&
+              strcmp(e.msg, "q.csv:3:3: expected a number, found \"x\"") == 0);
+        tsu_reader_free(r);
+        r = NULL;
+    }
+    if (f)
+        fclose(f);
+    f = mem_file("a,b\n\"x\"y,1\n", 11);
+    CHECK(f && tsu_reader_open(&r, f, "q.csv", &o, &e) == TSU_IO_OK);
+    if (f && r) {
+        size_t u1[1] = {1};
+        CHECK(tsu_reader_use_columns(r, u1, 1, &e) == TSU_IO_OK);
+        CHECK(tsu_reader_layout(r, &e) == TSU_IO_OK);
+        CHECK(tsu_reader_next(r, &row, &e) == TSU_IO_ERR_QUOTE && e.line == 2 && e.column == 4);
+        tsu_reader_free(r);
+        r = NULL;
+    }
+    if (f)
+        fclose(f);
+    /* a quote error in the first row is reported by the layout itself */
+    f = mem_file("\"x\"y,1\n", 7);
+    CHECK(f && tsu_reader_open(&r, f, "q.csv", &o, &e) == TSU_IO_OK);
+    if (f && r) {
+        CHECK(tsu_reader_layout(r, &e) == TSU_IO_ERR_QUOTE && e.line == 1 && e.column == 4);
+        tsu_reader_free(r);
+    }
+    if (f)
+        fclose(f);
+    CHECK(tsu_reader_layout(NULL, &e) == TSU_IO_ERR_NULL);
+    CHECK(tsu_reader_use_columns(NULL, use, 2, &e) == TSU_IO_ERR_NULL);
+    /* empty input */
+    f = mem_file("", 0);
+    CHECK(f && tsu_reader_open(&r, f, "e.csv", &o, &e) == TSU_IO_OK);
+    if (f && r) {
+        CHECK(tsu_reader_layout(r, &e) == TSU_IO_ERR_EMPTY);
+        tsu_reader_free(r);
+    }
+    if (f)
+        fclose(f);
+}
+
 static void test_reader_stream(void)
 {
     long nrows = SCALE(200000), i;
@@ -1585,6 +1691,7 @@ int main(void)
     test_reader_valid();
     test_reader_errors();
     test_reader_realworld();
+    test_reader_columns();
     test_reader_stream();
     test_out();
     test_writer();

@@ -178,7 +178,12 @@ def test_corpus():
         if ok:
             kx = [kk["x"] for kk in js["knots"]]
             kf = [kk["f"] for kk in js["knots"]]
-            check("knots x " + label, kx == [xnum(x) for x in xs], kx)
+            if is_time(xs):
+                # ISO text in the file's own form (as typed in CASES), the same instants
+                check("knots x as ISO text " + label, kx == xs and
+                      [epoch(v) for v in kx] == [xnum(x) for x in xs], kx)
+            else:
+                check("knots x " + label, kx == [xnum(x) for x in xs], kx)
             check("knots f " + label, kf == [float(y) for y in ys], kf)
             check("json names " + label, js["columns"] == {"x": xn, "y": yn,
                                                            "x_time": is_time(xs)}, js["columns"])
@@ -336,8 +341,215 @@ def test_bad_inputs():
               rc == status and msg in err and out == "", "rc=%d err=%r" % (rc, err))
 
 
+def test_text_columns():
+    """Columns not chosen by --columns / --x / --y hold any text (station names, notes,
+    words, a quoted line break); the chosen ones are still checked to FILE:LINE:COLUMN."""
+    f = c("stations_text.csv")
+    # the file as typed: the dates and values of its date and rain_mm columns
+    xs = ["2024-05-01", "2024-05-02", "2024-05-04", "2024-05-05", "2024-05-07"]
+    ys = [0.5, 2.25, 7, 1.5, 0]
+    ref = os.path.join(TMP, "stations_plain.csv")
+    plain_csv(ref, xs, ys)
+    rc2, out2, err2 = run(["fit", ref, "--samples", "5"])
+    # "gauge 1,5 m above ground" is unquoted: two fields, so that row has one field more
+    # than the header; the quoted note of Delta spans two lines
+    rc, out, err = run(["fit", f, "--x", "date", "--y", "rain_mm", "--samples", "5"])
+    check("text columns: a row with a delimiter in an unquoted note is still refused",
+          rc == 2 and "stations_text.csv:4:" in err and "wrong number of fields (6, expected 5)"
+          in err, err)
+    good = os.path.join(TMP, "stations_ok.csv")
+    with open(f) as fh:
+        text = fh.read().replace("gauge 1,5 m above ground", '"gauge 1,5 m above ground"')
+    with open(good, "w") as fh:
+        fh.write(text)
+    for opts in (["--x", "date", "--y", "rain_mm"], ["--columns", "2,3"],
+                 ["--columns", "date,rain_mm", "--no-stream"]):
+        rc, out, err = run(["fit", good, "--samples", "5"] + opts)
+        lines, lines2 = out.strip().split("\n"), out2.strip().split("\n")
+        check("text columns fit %s" % opts, rc == 0 and rc2 == 0, err + err2)
+        check("text columns header %s" % opts, lines[0] == "date,rain_mm", lines[0])
+        check("text columns samples %s" % opts, len(lines) == len(lines2) and
+              [l.split(",")[1] for l in lines[1:]] == [l.split(",")[1] for l in lines2[1:]] and
+              all(abs(epoch(a.split(",")[0]) - float(b.split(",")[0])) < 1e-6
+                  for a, b in zip(lines[1:], lines2[1:])), (lines[:3], lines2[:3]))
+    rc, out, err = run(["fit", good, "--x", "date", "--y", "rain_mm", "--json", "--form",
+                        "paper"])
+    js = json.loads(out) if rc == 0 else {}
+    check("text columns json", rc == 0 and [k["f"] for k in js["knots"]] == ys and
+          [k["x"] for k in js["knots"]] == xs and js["schema"] == "trigspline-fit/1" and
+          js["rows"] == {"used": 5, "skipped_missing": 0}, err)
+    rc, out, err = run(["certify", good, "--x", "date", "--y", "rain_mm", "--alpha", "1",
+                        "--beta", "0.5", "--shape", "positive"])
+    check("text columns certify", rc in (0, 4) and out.startswith("interval,date_start,") and
+          len(out.strip().split("\n")) == len(xs), err + out[:200])
+    # streaming across chunk borders (chunks of 4 intervals) equals the in-memory fit
+    big = os.path.join(TMP, "stations_big.csv")
+    with open(big, "w") as fh:
+        fh.write("id,name,t,v,comment\n")
+        for i in range(60):
+            fh.write('%d,"St, %d",%d,%r,%s\n' % (i, i, 2 * i, 1 + (i * 7 % 11) / 4.0,
+                                                   "ok" if i % 3 else "check ""this"""))
+    rc, out, err = run(["fit", big, "--columns", "t,v", "--samples", "4"],
+                       env={"TRIGSPLINE_CHUNK": "4"})
+    rc2, out3, err3 = run(["fit", big, "--columns", "t,v", "--samples", "4", "--no-stream"])
+    check("text columns streaming = in memory", rc == 0 and rc2 == 0 and out == out3 and
+          out.startswith("t,v\n"), err + err3)
+    # no header, numeric choice: the text of column 1 does not make line 1 a header
+    nh = os.path.join(TMP, "stations_nohdr.csv")
+    with open(nh, "w") as fh:
+        fh.write("Alpha,1,0.5\nBeta,2,2.25\nGamma,4,7\n")
+    rc, out, err = run(["fit", nh, "--columns", "2,3", "--json", "--form", "paper"])
+    js = json.loads(out) if rc == 0 else {}
+    check("text columns without header", rc == 0 and [k["x"] for k in js["knots"]] == [1, 2, 4]
+          and js["columns"]["x"] == "x", err + out[:200])
+    # the chosen columns are still numbers, dates or missing values, errors name the field
+    line2 = text.split("\n")[1]
+    for opts, status, msg in [
+        (["--columns", "date,station"], 2,
+         "stations_ok.csv:2:1: expected a number, found \"Alpha Ridge\""),
+        (["--columns", "date,quality"], 2, "stations_ok.csv:2:%d: expected a number, found "
+         "\"good\"" % (line2.index(",good,") + 2)),
+        (["--columns", "note,rain_mm"], 2, "stations_ok.csv:2:%d: expected a number, found "
+         "\"first day, sunny\"" % (line2.index('"first') + 1)),
+    ]:
+        rc, out, err = run(["fit", good] + opts)
+        check("text columns chosen %s" % opts, rc == status and msg in err and out == "",
+              "rc=%d err=%r" % (rc, err))
+    rc, out, err = run(["fit", nh, "--columns", "2,999999999999"])
+    check("text columns: a huge column number", rc == 2 and "--columns 999999999999: the table "
+          "has 3 columns" in err, err)
+    bad = os.path.join(TMP, "stations_missing.csv")
+    with open(bad, "w") as fh:
+        fh.write(text.replace("2024-05-04,7,", "2024-05-04,NA,"))
+    col = text.split("\n")[3].index("2024-05-04,7,") + len("2024-05-04,") + 1
+    rc, out, err = run(["fit", bad, "--x", "date", "--y", "rain_mm"])
+    check("text columns missing value", rc == 2 and "stations_missing.csv:4:%d: missing value "
+          "in column 3 (\"rain_mm\"); use --missing skip" % col in err, err)
+
+
+def test_time_in_messages():
+    """Data errors name x in the ISO form of the input (written by Python's datetime here),
+    not in seconds since the epoch, both streaming and in memory."""
+    def iso(t):  # the text Python writes for the instant, in the file's offset
+        return datetime.datetime.fromisoformat(t).isoformat()
+    xs = ["2024-03-01T00:00:00+01:00", "2024-03-01T06:00:00+01:00",
+          "2024-03-01T05:30:00+01:00", "2024-03-01T09:00:00+01:00"]
+    f = os.path.join(TMP, "not_increasing.csv")
+    with open(f, "w") as fh:
+        fh.write("time,v\n" + "".join("%s,%d\n" % (x, k + 1) for k, x in enumerate(xs)))
+    want = ("not_increasing.csv:4: point 2 (x = %s) is not greater than the previous x = %s "
+            "(line 3)" % (iso(xs[2]), iso(xs[1])))
+    for extra in ([], ["--no-stream"], ["--json"]):
+        rc, out, err = run(["fit", f] + extra)
+        check("time in 'not increasing' %s" % extra, rc == 2 and want in err and
+              str(int(epoch(xs[2]))) not in err, err)
+    days = ["2024-03-01", "2024-03-02", "2024-03-04"]
+    neg = os.path.join(TMP, "negative_day.csv")
+    with open(neg, "w") as fh:
+        fh.write("day,v\n%s,1\n%s,-2\n%s,3\n" % tuple(days))
+    d1 = datetime.date.fromisoformat(days[1]).isoformat()
+    rc, out, err = run(["fit", neg, "--shape", "positive"])
+    check("time in 'negative'", rc == 2 and "negative_day.csv:3: point 1 (x = %s, f = -2) is "
+          "negative" % d1 in err and "(negative at x = %s)" % d1 in err, err)
+    mono = os.path.join(TMP, "mono_day.csv")
+    with open(mono, "w") as fh:
+        fh.write("day,v\n%s,1\n%s,2\n%s,1\n" % tuple(days))
+    d2 = datetime.date.fromisoformat(days[2]).isoformat()
+    for extra in ([], ["--no-stream"]):
+        rc, out, err = run(["fit", mono, "--shape", "monotone"] + extra)
+        check("time in 'change direction' %s" % extra, rc == 2 and "mono_day.csv:4: point 2 "
+              "(x = %s, f = 1): the data change direction" % d2 in err, err)
+    # certify's list of violated intervals: the interval ends are knots, in the file's form
+    rc, out, err = run(["certify", mono, "--alpha", "0.2", "--beta", "0", "--upper", "0,2",
+                        "-o", os.devnull])
+    check("time in certify's violations", rc == 4 and "interval 1 [%s, %s] (lines 3-4)" %
+          (datetime.date.fromisoformat(days[1]).isoformat(), d2) in err and
+          re.search(r"at x = 2024-03-0[234]T\d\d:\d\d", err) is not None, err)
+
+
+def test_json_time_knots():
+    """--json knots x in the input's ISO form (Python's datetime writes the expected text,
+    offset kept), the same as samples.x at the knots; certify --json alike."""
+    xs = ["2024-03-01T00:00:00+05:30", "2024-03-01T06:00:00+05:30", "2024-03-02T00:00:00+05:30",
+          "2024-03-02T09:15:30+05:30"]
+    f = os.path.join(TMP, "offset_knots.csv")
+    with open(f, "w") as fh:
+        fh.write("t,c\n" + "".join("%s,%d\n" % (x, k + 2) for k, x in enumerate(xs)))
+    want = [datetime.datetime.fromisoformat(x).isoformat() for x in xs]
+    rc, out, err = run(["fit", f, "--json", "--with-samples", "--samples", "3"])
+    js = json.loads(out) if rc == 0 else {}
+    check("json knots ISO (offset)", rc == 0 and [k["x"] for k in js["knots"]] == want and
+          js["columns"]["x_time"] is True and js["schema"] == "trigspline-fit/1", err + out[:300])
+    if rc == 0:
+        check("json knots = samples.x at the knots",
+              all(k["x"] in js["samples"]["x"] for k in js["knots"]), js["samples"]["x"][:6])
+    rc, out, err = run(["certify", f, "--json", "--alpha", "1", "--beta", "0.5", "--shape",
+                        "positive"])
+    js = json.loads(out) if rc in (0, 4) else {}
+    check("certify json knots ISO", rc in (0, 4) and [k["x"] for k in js["knots"]] == want, err)
+    # numbers stay numbers
+    rc, out, err = run(["fit", c("gaps_pk.csv"), "--missing", "skip", "--json"])
+    js = json.loads(out) if rc == 0 else {}
+    check("json knots numeric x", rc == 0 and [k["x"] for k in js["knots"]] ==
+          [0.25, 1, 4, 8, 12, 24], err)
+
+
+def test_zone_names():
+    """Time-zone names are refused with a message naming FILE:LINE:COLUMN and the name;
+    Z and numeric offsets are read (the same instants Python's datetime gives)."""
+    # each line: (text of the x field, delimiter); the field sits in column 2 after "id,"
+    names = [("2024-03-01T06:00:00CET", "CET"), ("2024-03-01T06:00:00 UTC", "UTC"),
+             ("2024-03-01 06:00 Europe/Berlin", "Europe/Berlin"),
+             ("2024-03-01T06:00:00+01:00[Europe/Paris]", "[Europe/Paris]"),
+             ("2024-03-01 EST", "EST")]
+    for k, (field, name) in enumerate(names):
+        for row in (1, 3):  # the first data row (column not yet known as dates) or later
+            f = os.path.join(TMP, "zone%d_%d.csv" % (k, row))
+            rows = ["2024-03-01T00:00:00Z", "2024-03-01T03:00:00Z", "2024-03-01T09:00:00Z"]
+            rows[row - 1] = field
+            with open(f, "w") as fh:
+                fh.write("id,time,v\n" + "".join('%d,%s,%d\n' % (i, t, i + 1)
+                                                  for i, t in enumerate(rows)))
+            col = len("%d," % (row - 1)) + 1
+            rc, out, err = run(["fit", f, "--x", "time", "--y", "v"])
+            want = ('zone%d_%d.csv:%d:%d: time-zone name "%s" in "%s": time-zone names are not '
+                    "accepted, write Z or a numeric UTC offset" % (k, row, row + 1, col, name,
+                                                                   field))
+            check("zone name %r row %d" % (field, row), rc == 2 and want in err and out == "",
+                  "rc=%d err=%r" % (rc, err))
+    # without a header: the zone name on line 1 is data (not a header), refused on line 1
+    f = os.path.join(TMP, "zone_nohdr.csv")
+    with open(f, "w") as fh:
+        fh.write("2024-03-01 CET;1\n2024-03-02 CET;2\n")
+    rc, out, err = run(["fit", f])
+    check("zone name without header", rc == 2 and "zone_nohdr.csv:1:1: time-zone name \"CET\""
+          in err, err)
+    # accepted: Z, z and offsets (+HH:MM, +HHMM, +HH, -HH:MM)
+    xs = ["2024-03-01T00:00:00+01:00", "2024-03-01T06:00:00+0100", "2024-03-01T09:00:00+01",
+          "2024-03-01T12:00:00z", "2024-03-01T14:30:00-02:30"]
+    f = os.path.join(TMP, "zone_ok.csv")
+    with open(f, "w") as fh:
+        fh.write("time,v\n" + "".join("%s,%d\n" % (x, i) for i, x in enumerate(xs)))
+    rc, out, err = run(["fit", f, "--json", "--form", "paper"])
+    js = json.loads(out) if rc == 0 else {}
+    check("numeric offsets read", rc == 0 and [epoch(k["x"]) for k in js["knots"]] ==
+          [datetime.datetime.fromisoformat(x.replace("z", "+00:00").replace("+0100", "+01:00")
+                                           .replace("+01,", "+01:00,")
+                                           if not x.endswith("+01") else x + ":00").timestamp()
+           for x in xs], err + out[:200])
+    # documented in the man page
+    with open(os.path.join(os.path.dirname(os.path.dirname(HERE)), "docs", "trigspline.1")) as fh:
+        man = " ".join(fh.read().split())
+    check("man page: zone names", "only .B Z (or z) and numeric UTC offsets" in man and
+          "time-zone name \"CET\" in" in man, "")
+
+
 test_corpus()
 test_logy_and_formats()
+test_zone_names()
+test_json_time_knots()
+test_time_in_messages()
+test_text_columns()
 test_bad_inputs()
 shutil.rmtree(TMP, ignore_errors=True)
 print("test_realworld: %d passed, %d failed" % (passed, failed))

@@ -201,6 +201,42 @@ rc, _, e = run(LONG, "--svg", os.path.join(TMP, "x.png"))
 check("svg into .png refused", rc == 1 and "extension" in e
       and not os.path.exists(os.path.join(TMP, "x.png")), e)
 
+# ---- the documentation: every option of --help in trigspline(1)'s SURFACE
+# section (as a .TP item), its exit statuses, and the README's surface example runs
+import re  # noqa: E402
+
+rc, o, _ = run("--help")
+opts = sorted(set(re.findall(r"(?<![\w-])(--[a-z][a-z-]*|-o|-h)\b", o)))
+with open(os.path.join(REPO, "docs", "trigspline.1")) as fh:
+    man = fh.read()
+sec = man[man.index(".SH SURFACE"):man.index(".SH", man.index(".SH SURFACE") + 4)]
+items = [sec.split("\n")[k + 1].replace("\\-", "-") for k, ln in
+         enumerate(sec.split("\n")) if ln == ".TP"]
+check("help lists options", len(opts) >= 18, opts)
+for op in opts:
+    check("man page documents surface " + op, any(re.search(r"(?<![\w-])%s\b" % re.escape(op),
+                                                            it) for it in items), op)
+check("man page surface synopsis", ".B trigspline surface" in man[:man.index(".SH DESCRIPTION")])
+for code, word in (("0", "success"), ("1", "usage"), ("2", "bad data"), ("3", "a patch"),
+                   ("5", "a file cannot be read")):
+    check("man page surface exit %s" % code, re.search(r"\b%s %s" % (code, word),
+                                                       " ".join(sec.split())) is not None)
+for fmt in ("matrix layout", "long format", "--svg", "--png", "--pdf"):
+    check("man page surface " + fmt, fmt in sec.replace("\\-", "-").replace(".B ", ""), fmt)
+with open(os.path.join(REPO, "README.md")) as fh:
+    readme = fh.read()
+block = readme[readme.index("## Using the command"):]
+block = block[block.index("```sh"):block.index("```", block.index("```sh") + 5)]
+cmd = re.search(r"build/trigspline surface (.*?)(?<!\\)\n", block, re.S)
+check("README has a surface example", cmd is not None, block[-400:])
+if cmd:
+    args = cmd.group(1).replace("\\\n", " ").split()
+    args = [os.path.join(REPO, a) if a.startswith("data/") else
+            os.path.join(TMP, a) if a.endswith((".svg", ".csv")) else a for a in args]
+    rc, out, e = run(*args)
+    check("README surface example runs", rc == 0 and out == "" and
+          os.path.getsize(args[args.index("-o") + 1]) > 0, e)
+
 # ---- the exact reference of the Bernstein table -------------------------------
 p = subprocess.run([sys.executable, os.path.join(REPO, "tests", "ref", "surface_ref.py"), REPO],
                    capture_output=True, text=True)

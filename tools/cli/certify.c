@@ -113,7 +113,7 @@ int cli_certify(cli_opts *o)
         cli_overshoot ov;
         cli_overshoot_init(&ov);
         cli_overshoot_add(&ov, s, 0, n, 0);
-        cli_overshoot_warn(&ov);
+        cli_overshoot_warn(&ov, &d.cols);
     }
     if (rc == CLI_OK && !certified) {
         size_t cnt = 0;
@@ -122,17 +122,18 @@ int cli_certify(cli_opts *o)
         cli_error("certificate violated on %zu of %zu intervals:", cnt, n);
         for (size_t i = 0; i < n; i++) {
             const ts_interval_report *r = &reps[i];
-            char b[6][TSU_FMT_SIZE];
+            char b[6][TSU_TIME_SIZE];
             if (r->certified)
                 continue;
-            fprintf(stderr, "  interval %zu [%s, %s] (lines %llu-%llu):", i, cli_num(r->x0, b[0]),
-                    cli_num(r->x1, b[1]), d.line ? d.line[i] : 0ULL, d.line ? d.line[i + 1] : 0ULL);
+            fprintf(stderr, "  interval %zu [%s, %s] (lines %llu-%llu):", i,
+                    cli_x_text(&d.cols, r->x0, b[0]), cli_x_text(&d.cols, r->x1, b[1]),
+                    d.line ? d.line[i] : 0ULL, d.line ? d.line[i + 1] : 0ULL);
             if (r->has_lower && !(r->gap_lower > 0.0))
                 fprintf(stderr, " min gap above the lower boundary %s at x = %s;",
-                        cli_num(r->gap_lower, b[2]), cli_num(r->at_lower, b[3]));
+                        cli_num(r->gap_lower, b[2]), cli_x_text(&d.cols, r->at_lower, b[3]));
             if (r->has_upper && !(r->gap_upper > 0.0))
                 fprintf(stderr, " min gap below the upper boundary %s at x = %s;",
-                        cli_num(r->gap_upper, b[4]), cli_num(r->at_upper, b[5]));
+                        cli_num(r->gap_upper, b[4]), cli_x_text(&d.cols, r->at_upper, b[5]));
             if ((!r->has_lower || r->gap_lower > 0.0) && (!r->has_upper || r->gap_upper > 0.0))
                 fprintf(stderr, " gap within rounding of zero;");
             fputc('\n', stderr);

@@ -276,7 +276,12 @@ struct cli_cols {
 typedef struct cli_cols cli_cols;
 /* Reader options from --delimiter, --decimal-comma, --na, --skip (dates detected). */
 void cli_read_options(const cli_opts *o, tsu_read_options *ro);
-/* After the first row: resolve --columns / --x / --y (numbers or names).
+/* Before the first row: resolve --columns / --x / --y (numbers or header
+ * names; tsu_reader_layout) and have the reader parse only those two columns,
+ * so the others may hold any text (a numeric choice also limits the header
+ * test to them).  CLI_OK or an exit status (message printed). */
+int cli_cols_select(const cli_opts *o, tsu_reader *r, const char *name, cli_cols *c);
+/* After the first row: whether x is a time (--x-time checked; y must not be).
  * CLI_OK or CLI_DATA (message printed). */
 int cli_cols_resolve(const cli_opts *o, const tsu_reader *r, const char *name, cli_cols *c);
 /* x, y of row: 1 taken, 0 skipped (missing, --missing skip), -1 error
@@ -307,9 +312,10 @@ typedef struct cli_data cli_data;
 int cli_read_data(const cli_opts *o, cli_data *d);
 void cli_data_free(cli_data *d);
 /* Report a ts_spline_new failure on points x[0..n) (lines[i] their lines,
- * NULL if unknown) read from name.  Returns the exit status. */
+ * NULL if unknown) read from name; x is written as cli_x_text(cols) (cols
+ * NULL: numbers).  Returns the exit status. */
 int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char *name,
-                           const double *x, const double *f,
+                           const cli_cols *cols, const double *x, const double *f,
                            const unsigned long long *lines, size_t n, const ts_error *e,
                            ts_status st, size_t index_offset);
 /* Read DATA (cli_read_data) and fit the spline with opt; on failure the
@@ -391,8 +397,9 @@ void cli_overshoot_init(cli_overshoot *w);
 void cli_overshoot_add(cli_overshoot *w, const ts_spline *s, size_t i0, size_t i1, size_t offset);
 /* The larger excursion relative to the data range (0 for no data). */
 double cli_overshoot_ratio(const cli_overshoot *w);
-/* One warning line on stderr when cli_overshoot_ratio > CLI_OVERSHOOT_FRACTION. */
-void cli_overshoot_warn(const cli_overshoot *w);
+/* One warning line on stderr when cli_overshoot_ratio > CLI_OVERSHOOT_FRACTION
+ * (x written as cli_x_text(c)). */
+void cli_overshoot_warn(const cli_overshoot *w, const cli_cols *c);
 /* The "overshoot" object of the JSON report. */
 void cli_overshoot_json(cli_json *j, const cli_overshoot *w);
 

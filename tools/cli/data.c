@@ -79,6 +79,8 @@ int cli_read_data(const cli_opts *o, cli_data *d)
         rc = cli_report_io(&e);
         goto done;
     }
+    if (o->cmd != CLI_CURVE && (rc = cli_cols_select(o, r, d->name, &d->cols)) != CLI_OK)
+        goto done;
     for (;;) {
         const double *row;
         tsu_io_status st = tsu_reader_next(r, &row, &e);
@@ -181,10 +183,10 @@ static int pred_not_below(const ts_options *opt, double x, double f)
 }
 
 static void list_points(char *buf, size_t len, const ts_options *opt, point_pred pred,
-                        const double *x, const double *f, size_t n)
+                        const cli_cols *cols, const double *x, const double *f, size_t n)
 {
     size_t cnt = 0, used = 0;
-    char b[TSU_FMT_SIZE];
+    char b[TSU_TIME_SIZE];
     buf[0] = '\0';
     for (size_t i = 0; i < n; i++) {
         if (!pred(opt, x[i], f[i]))
@@ -193,7 +195,8 @@ static void list_points(char *buf, size_t len, const ts_options *opt, point_pred
         if (cnt == 12)
             w = snprintf(buf + used, len - used, ", ...");
         else if (cnt < 12)
-            w = snprintf(buf + used, len - used, "%s%s", cnt ? ", " : "", cli_num(x[i], b));
+            w = snprintf(buf + used, len - used, "%s%s", cnt ? ", " : "",
+                         cli_x_text(cols, x[i], b));
         else
             w = 0;
         cnt++;
@@ -204,11 +207,11 @@ static void list_points(char *buf, size_t len, const ts_options *opt, point_pred
 }
 
 int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char *name,
-                           const double *x, const double *f,
+                           const cli_cols *cols, const double *x, const double *f,
                            const unsigned long long *lines, size_t n, const ts_error *e,
                            ts_status st, size_t off)
 {
-    char w[TSU_IO_MSG_SIZE], bx[TSU_FMT_SIZE], bf[TSU_FMT_SIZE], b2[TSU_FMT_SIZE];
+    char w[TSU_IO_MSG_SIZE], bx[TSU_TIME_SIZE], bf[TSU_FMT_SIZE], b2[TSU_TIME_SIZE];
     char ln[160], list[400];
     size_t i = e->index;
     int point = e->where == TS_WHERE_POINT && i < n;
@@ -226,7 +229,8 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
         if (point && i > 0) {
             cli_error("%s: point %zu (x = %s) is not greater than the previous x = %s%s%s; x must "
                       "be strictly increasing",
-                      w, off + i, cli_num(x[i], bx), cli_num(x[i - 1], b2), lines ? " (line " : "",
+                      w, off + i, cli_x_text(cols, x[i], bx), cli_x_text(cols, x[i - 1], b2),
+                      lines ? " (line " : "",
                       lines ? (snprintf(ln, sizeof ln, "%llu)", lines[i - 1]), ln) : "");
             return CLI_DATA;
         }
@@ -235,7 +239,7 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
         if (point) {
             cli_error("%s: point %zu (x = %s, f = %s): the step from the previous point, or a "
                       "slope there, overflows a double",
-                      w, off + i, cli_num(x[i], bx), cli_num(f[i], bf));
+                      w, off + i, cli_x_text(cols, x[i], bx), cli_num(f[i], bf));
             return CLI_DATA;
         }
         break;
@@ -258,10 +262,10 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
         return CLI_DATA;
     case TS_ERR_NEGATIVE:
         if (point) {
-            list_points(list, sizeof list, opt, pred_negative, x, f, n);
+            list_points(list, sizeof list, opt, pred_negative, cols, x, f, n);
             cli_error("%s: point %zu (x = %s, f = %s) is negative; --shape positive needs f >= 0 "
                       "(negative at x = %s)",
-                      w, off + i, cli_num(x[i], bx), cli_num(f[i], bf), list);
+                      w, off + i, cli_x_text(cols, x[i], bx), cli_num(f[i], bf), list);
             return CLI_DATA;
         }
         break;
@@ -271,11 +275,13 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
                       pred_not_above(opt, x[i], f[i]);
             const ts_line *l = low ? &opt->lower : &opt->upper;
             cli_line_text(l, ln, sizeof ln);
-            list_points(list, sizeof list, opt, low ? pred_not_above : pred_not_below, x, f, n);
+            list_points(list, sizeof list, opt, low ? pred_not_above : pred_not_below, cols, x,
+                        f, n);
             cli_error("%s: point %zu (x = %s, f = %s) is not %s the %s line %s; the data are on "
                       "or %s it at x = %s",
-                      w, off + i, cli_num(x[i], bx), cli_num(f[i], bf), low ? "above" : "below",
-                      low ? "lower" : "upper", ln, low ? "below" : "above", list);
+                      w, off + i, cli_x_text(cols, x[i], bx), cli_num(f[i], bf),
+                      low ? "above" : "below", low ? "lower" : "upper", ln, low ? "below" : "above",
+                      list);
             return CLI_DATA;
         }
         break;
@@ -285,7 +291,7 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
             cli_line_text(&opt->lower, lo, sizeof lo);
             cli_line_text(&opt->upper, ln, sizeof ln);
             cli_error("%s: at point %zu (x = %s) the lower line %s is not below the upper line %s",
-                      w, off + i, cli_num(x[i], bx), lo, ln);
+                      w, off + i, cli_x_text(cols, x[i], bx), lo, ln);
             return CLI_DATA;
         }
         break;
@@ -293,7 +299,7 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
         if (point) {
             cli_error("%s: point %zu (x = %s, f = %s): the data change direction here; --shape "
                       "monotone needs monotone data",
-                      w, off + i, cli_num(x[i], bx), cli_num(f[i], bf));
+                      w, off + i, cli_x_text(cols, x[i], bx), cli_num(f[i], bf));
             return CLI_DATA;
         }
         break;
@@ -307,7 +313,7 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
                 snprintf(ln, sizeof ln, "%s", name);
             cli_error("%s: interval %zu [%s, %s]: infeasible constraint: no beta >= 0 keeps the "
                       "spline inside the region on this interval",
-                      ln, off + i, cli_num(x[i], bx), cli_num(x[i + 1], b2));
+                      ln, off + i, cli_x_text(cols, x[i], bx), cli_x_text(cols, x[i + 1], b2));
             return CLI_INFEASIBLE;
         }
         cli_error("%s: infeasible constraint: %s", name, ts_strerror(st));
@@ -335,8 +341,8 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
                 snprintf(lr, sizeof lr, "%s", name);
             cli_error("%s: interval %zu [%s, %s]: alpha + beta = %s is below the geometric-form "
                       "bound %s; raise --alpha or --beta",
-                      lr, off + i, cli_num(x[i], bx), cli_num(x[i + 1], b2), cli_num(a, bf),
-                      cli_num(TS_GEOMETRIC_A_MIN, ln));
+                      lr, off + i, cli_x_text(cols, x[i], bx), cli_x_text(cols, x[i + 1], b2),
+                      cli_num(a, bf), cli_num(TS_GEOMETRIC_A_MIN, ln));
             return CLI_USAGE;
         }
         break;
@@ -362,10 +368,11 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
     }
     (void)o;
     if (point)
-        cli_error("%s: point %zu (x = %s): %s", w, off + i, cli_num(x[i], bx), ts_strerror(st));
+        cli_error("%s: point %zu (x = %s): %s", w, off + i, cli_x_text(cols, x[i], bx),
+                  ts_strerror(st));
     else if (interval)
-        cli_error("%s: interval %zu [%s, %s]: %s", w, off + i, cli_num(x[i], bx),
-                  cli_num(x[i + 1], b2), ts_strerror(st));
+        cli_error("%s: interval %zu [%s, %s]: %s", w, off + i, cli_x_text(cols, x[i], bx),
+                  cli_x_text(cols, x[i + 1], b2), ts_strerror(st));
     else
         cli_error("%s: %s", name, ts_strerror(st));
     return CLI_DATA;
@@ -380,7 +387,8 @@ int cli_read_and_fit(const cli_opts *o, const ts_options *opt, cli_data *d, ts_s
     ts_error e;
     ts_status st = ts_spline_new(d->col[0], d->col[1], d->n, opt, s, &e);
     if (st != TS_OK) {
-        rc = cli_report_build_error(o, opt, d->name, d->col[0], d->col[1], d->line, d->n, &e, st, 0);
+        rc = cli_report_build_error(o, opt, d->name, &d->cols, d->col[0], d->col[1], d->line, d->n,
+                                    &e, st, 0);
         cli_data_free(d);
         return rc;
     }

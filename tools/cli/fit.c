@@ -208,7 +208,7 @@ int cli_fit(cli_opts *o)
         cli_overshoot ov;
         cli_overshoot_init(&ov);
         cli_overshoot_add(&ov, s, 0, ts_spline_intervals(s), 0);
-        cli_overshoot_warn(&ov);
+        cli_overshoot_warn(&ov, &d.cols);
     }
 done:
     cli_json_free(&j);

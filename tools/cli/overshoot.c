@@ -52,14 +52,14 @@ double cli_overshoot_ratio(const cli_overshoot *w)
     return range > 0.0 ? e / range : (double)INFINITY;
 }
 
-void cli_overshoot_warn(const cli_overshoot *w)
+void cli_overshoot_warn(const cli_overshoot *w, const cli_cols *c)
 {
     double ratio = cli_overshoot_ratio(w);
     if (!(ratio > CLI_OVERSHOOT_FRACTION))
         return;
     int up = w->above >= w->below;
     const ts_interval_report *r = up ? &w->r_above : &w->r_below;
-    char b[7][TSU_FMT_SIZE];
+    char b[7][TSU_TIME_SIZE];
     char pct[32];
     if (isfinite(ratio))
         snprintf(pct, sizeof pct, "%.3g%% of", 100.0 * ratio);
@@ -69,9 +69,9 @@ void cli_overshoot_warn(const cli_overshoot *w)
               "%s the data range %s); a certificate covers the bounds, not overshoot: a larger "
               "--alpha reduces it",
               up ? "rises" : "dips", cli_num(up ? w->above : w->below, b[0]),
-              up ? "above" : "below", up ? w->i_above : w->i_below, cli_num(r->x0, b[1]),
-              cli_num(r->x1, b[2]), cli_num(up ? r->y_max : r->y_min, b[3]),
-              cli_num(up ? r->at_y_max : r->at_y_min, b[4]), pct,
+              up ? "above" : "below", up ? w->i_above : w->i_below, cli_x_text(c, r->x0, b[1]),
+              cli_x_text(c, r->x1, b[2]), cli_num(up ? r->y_max : r->y_min, b[3]),
+              cli_x_text(c, up ? r->at_y_max : r->at_y_min, b[4]), pct,
               cli_num(w->data_max - w->data_min, b[5]));
 }
 

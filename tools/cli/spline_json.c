@@ -61,9 +61,13 @@ void cli_spline_json(cli_json *j, const cli_opts *o, const ts_spline *s, ts_shap
     cli_json_key(j, "knots");
     cli_json_begin(j, '[');
     for (size_t i = 0; i <= n; i++) {
+        char b[TSU_TIME_SIZE];
         cli_json_nl(j);
         cli_json_begin(j, '{');
-        cli_json_knum(j, "x", x[i]);
+        if (data->cols.x_time) /* as samples.x: the input's ISO form */
+            cli_json_kstr(j, "x", cli_x_text(&data->cols, x[i], b));
+        else
+            cli_json_knum(j, "x", x[i]);
         cli_json_knum(j, "f", f[i]);
         cli_json_knum(j, "d", d[i]);
         cli_json_end(j, '}');

@@ -122,7 +122,7 @@ static int fill(stream *s, size_t want)
 {
     tsu_io_error ie;
     const double *row;
-    char bx[TSU_FMT_SIZE], b2[TSU_FMT_SIZE], bf[TSU_FMT_SIZE];
+    char bx[TSU_TIME_SIZE], b2[TSU_TIME_SIZE], bf[TSU_FMT_SIZE];
     while (!s->eof && npts(s) < want) {
         tsu_io_status st = tsu_reader_next(s->r, &row, &ie);
         if (st == TSU_IO_END) {
@@ -148,7 +148,8 @@ static int fill(stream *s, size_t want)
             if (!(x > px)) {
                 cli_error("%s:%llu: point %zu (x = %s) is not greater than the previous x = %s "
                           "(line %llu); x must be strictly increasing",
-                          s->name, ln, npts(s), cli_num(x, bx), cli_num(px, b2),
+                          s->name, ln, npts(s), cli_x_text(&s->cols, x, bx),
+                          cli_x_text(&s->cols, px, b2),
                           s->line[s->len - 1]);
                 return CLI_DATA;
             }
@@ -160,7 +161,7 @@ static int fill(stream *s, size_t want)
                 else if (sg && sg != s->dir) {
                     cli_error("%s:%llu: point %zu (x = %s, f = %s): the data change direction "
                               "here; --shape monotone needs monotone data",
-                              s->name, ln, npts(s), cli_num(x, bx), cli_num(f, bf));
+                              s->name, ln, npts(s), cli_x_text(&s->cols, x, bx), cli_num(f, bf));
                     return CLI_DATA;
                 }
             }
@@ -182,8 +183,8 @@ static int fill(stream *s, size_t want)
 static int report(const stream *s, const chunk *c)
 {
     size_t off = c->wl - s->base, np = npts(s) ? c->wr - c->wl + 1 : 0;
-    return cli_report_build_error(s->o, s->opt, s->name, s->x + off, s->f + off, s->line + off, np,
-                                  &c->err, c->st, c->wl);
+    return cli_report_build_error(s->o, s->opt, s->name, &s->cols, s->x + off, s->f + off,
+                                  s->line + off, np, &c->err, c->st, c->wl);
 }
 
 /* Build c->s for c->e0, c->lctx, c->rctx.  Returns CLI_OK, ART_LEFT /
@@ -349,6 +350,8 @@ int cli_fit_stream(const cli_opts *o, const ts_options *opt)
         rc = cli_report_io(&ie);
         goto done;
     }
+    if ((rc = cli_cols_select(o, s.r, s.name, &s.cols)) != CLI_OK)
+        goto done;
 
     /* first chunk: no left context */
     pend.e0 = 0;
@@ -424,7 +427,7 @@ done:
                 cli_error("%s", msg);
                 rc = CLI_IO;
             } else {
-                cli_overshoot_warn(&s.ov);
+                cli_overshoot_warn(&s.ov, &s.cols);
             }
         } else {
             if (!o->out || strcmp(o->out, "-") == 0)

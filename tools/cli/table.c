@@ -18,6 +18,20 @@ void cli_read_options(const cli_opts *o, tsu_read_options *ro)
     ro->time_detect = o->cmd != CLI_CURVE;
 }
 
+/* Column numbers up to this are given to the reader before the header test. */
+#define CLI_MAX_PRESELECT 65536
+
+/* spec as a 1-based column number: 1 and *k, or 0 (a name). */
+static int col_number(const char *spec, size_t *k)
+{
+    size_t v = 0;
+    const char *p = spec;
+    for (; *p >= '0' && *p <= '9' && v < ((size_t)-1) / 10; p++)
+        v = v * 10 + (size_t)(*p - '0');
+    *k = v;
+    return !*p && p > spec;
+}
+
 /* Column j (0-based) of spec: a 1-based number, or a header name. */
 static int find_col(const tsu_reader *r, const char *name, unsigned long long line,
                     const char *opt, const char *spec, size_t def, size_t *j)
@@ -27,11 +41,8 @@ static int find_col(const tsu_reader *r, const char *name, unsigned long long li
         *j = def;
         return CLI_OK;
     }
-    size_t k = 0;
-    const char *p = spec;
-    for (; *p >= '0' && *p <= '9' && k < ((size_t)-1) / 10; p++)
-        k = k * 10 + (size_t)(*p - '0');
-    if (!*p && p > spec) {
+    size_t k;
+    if (col_number(spec, &k)) {
         if (k < 1 || k > nc) {
             cli_error("%s:%llu: %s %s: the table has %zu column%s", name, line, opt, spec, nc,
                       nc == 1 ? "" : "s");
@@ -63,13 +74,28 @@ static int find_col(const tsu_reader *r, const char *name, unsigned long long li
     return CLI_DATA;
 }
 
-int cli_cols_resolve(const cli_opts *o, const tsu_reader *r, const char *name, cli_cols *c)
+int cli_cols_select(const cli_opts *o, tsu_reader *r, const char *name, cli_cols *c)
 {
-    unsigned long long ln = tsu_reader_line(r);
-    size_t nc = tsu_reader_ncols(r);
+    tsu_io_error ie;
+    size_t kx = 1, ky = 2;
     int rc;
     const char *opt_x = o->columns_set && o->xcol && o->ycol ? "--columns" : "--x";
     const char *opt_y = o->columns_set && o->xcol && o->ycol ? "--columns" : "--y";
+    /* numbers: only these columns count in the header test (a number beyond
+     * any real table is left to the range check below, not allocated for) */
+    if ((o->xcol || o->ycol) && (!o->xcol || col_number(o->xcol, &kx)) &&
+        (!o->ycol || col_number(o->ycol, &ky)) && kx >= 1 && ky >= 1 &&
+        kx <= CLI_MAX_PRESELECT && ky <= CLI_MAX_PRESELECT) {
+        if (!o->ycol)
+            ky = kx == 2 ? 1 : 2;
+        size_t use[2] = {kx - 1, ky - 1};
+        if (tsu_reader_use_columns(r, use, 2, &ie) != TSU_IO_OK)
+            return cli_report_io(&ie);
+    }
+    if (tsu_reader_layout(r, &ie) != TSU_IO_OK)
+        return cli_report_io(&ie);
+    unsigned long long ln = tsu_reader_line(r);
+    size_t nc = tsu_reader_ncols(r);
     if (!o->xcol && !o->ycol && nc != 2) {
         cli_error("%s:%llu: %zu field%s per row, expected 2 (x and f)%s", name, ln, nc,
                   nc == 1 ? "" : "s",
@@ -87,6 +113,16 @@ int cli_cols_resolve(const cli_opts *o, const tsu_reader *r, const char *name, c
     const char *xn = tsu_reader_name(r, c->ix), *yn = tsu_reader_name(r, c->iy);
     snprintf(c->xname, sizeof c->xname, "%s", xn && *xn ? xn : "x");
     snprintf(c->yname, sizeof c->yname, "%s", yn && *yn ? yn : "y");
+    /* the other columns are not read: they may hold any text */
+    size_t use[2] = {c->ix, c->iy};
+    if (tsu_reader_use_columns(r, use, 2, &ie) != TSU_IO_OK)
+        return cli_report_io(&ie);
+    return CLI_OK;
+}
+
+int cli_cols_resolve(const cli_opts *o, const tsu_reader *r, const char *name, cli_cols *c)
+{
+    unsigned long long ln = tsu_reader_line(r);
     c->x_time = tsu_reader_is_time(r, c->ix, &c->tform);
     if (tsu_reader_is_time(r, c->iy, NULL)) {
         cli_error("%s:%llu: column %zu (\"%s\") holds dates; only x can be a time", name, ln,

@@ -1187,6 +1187,10 @@ struct tsu_reader {
     char *tmp;      /* scratch: unquoted / decimal-comma field text */
     size_t tmpcap;
     const char *ls; /* start of the current record */
+    unsigned char *use; /* per column (rowcap): 1 = parsed, when selected */
+    int selected;       /* tsu_reader_use_columns was called */
+    int pending;        /* tsu_reader_layout left a data record unparsed: */
+    const char *pend_le; /* its content end (r->ls its start) */
     int rec_scanned;      /* its last line was quote-scanned: */
     const char *rec_hash; /* then its comment '#' (NULL: none) */
     int failed;
@@ -1269,6 +1273,7 @@ void tsu_reader_free(tsu_reader *r)
     free(r->time_name);
     free(r->is_time);
     free(r->tform);
+    free(r->use);
     free(r->tmp);
     free(r);
 }
@@ -1752,7 +1757,42 @@ static int num_field(tsu_reader *r, const char *s, const char *e, double *v)
     return (int)ns;
 }
 
+#define IS_ALPHA(c) ((unsigned)(((unsigned char)(c) | 0x20) - 'a') < 26u)
+
+/* A date or date-time followed by a time-zone name ("CET", " Europe/Paris",
+ * "[Europe/Paris]": two letters or a '['), which is not accepted: 1 and
+ * *name where the name starts, else 0. */
+static int zone_name(const char *s, const char *e, const char **name)
+{
+    const char *stop, *p;
+    if (!tsu_parse_time(s, e, NULL, NULL, &stop))
+        return 0;
+    for (p = stop; p < e && IS_BLANK(*p); p++)
+        ;
+    if (!(p < e && (*p == '[' || (p + 1 < e && IS_ALPHA(p[0]) && IS_ALPHA(p[1])))))
+        return 0;
+    *name = p;
+    return 1;
+}
+
+/* The error for a field [s, e) at `at` that is a date with a zone name at `name`. */
+#define ZONE_FAIL(r, at, fieldno, s, e, name)                                              \
+    do {                                                                                   \
+        char zq_[200], zn_[120];                                                           \
+        quote_text(zq_, sizeof zq_, (s), (e));                                             \
+        quote_text(zn_, sizeof zn_, (name), (e));                                          \
+        POS_FAIL((r), TSU_IO_ERR_TIME, (at), (fieldno),                                    \
+                 "time-zone name %s in %s: time-zone names are not accepted, write Z or a " \
+                 "numeric UTC offset (+HH:MM, +HHMM or +HH)", zn_, zq_);                   \
+    } while (0)
+
 enum { FK_EMPTY, FK_NUMBER, FK_NA, FK_TIME, FK_TEXT, FK_NOMEM };
+
+/* Is column j parsed (tsu_reader_use_columns)? */
+static int col_used(const tsu_reader *r, size_t j)
+{
+    return !r->selected || (j < r->rowcap && r->use[j]);
+}
 
 static int classify(tsu_reader *r, const field *f)
 {
@@ -1774,6 +1814,8 @@ static int classify(tsu_reader *r, const field *f)
         const char *stop;
         if (tsu_parse_time(s, e, NULL, NULL, &stop) && stop == e)
             return FK_TIME;
+        if (zone_name(s, e, &stop))
+            return FK_TIME; /* a date all the same: data, refused when parsed */
     }
     return FK_TEXT;
 }
@@ -1784,9 +1826,12 @@ static int is_header(tsu_reader *r, const char *ls, const char *le, int *all_tex
     const char *p = ls;
     field f;
     int first = 1, k, hdr = 0, any_value = 0;
+    size_t j = 0;
     while ((k = next_field(r, &p, le, first, &f, 0)) == 1) {
-        int c = classify(r, &f);
         first = 0;
+        if (!col_used(r, j++))
+            continue;
+        int c = classify(r, &f);
         if (c == FK_NOMEM)
             return -1;
         if (c == FK_TEXT)
@@ -1829,6 +1874,11 @@ static int grow_row(tsu_reader *r, size_t need)
     if (!tf)
         return RFAIL(r, TSU_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
     r->tform = tf;
+    unsigned char *us = io_realloc(r->use, nc);
+    if (!us)
+        return RFAIL(r, TSU_IO_ERR_NOMEM, 0, 0, 0, 0, "out of memory");
+    memset(us + r->rowcap, 0, nc - r->rowcap);
+    r->use = us;
     r->rowcap = nc;
     return 0;
 }
@@ -1966,7 +2016,10 @@ static tsu_io_status value_error(tsu_reader *r, int ns, const field *f, const ch
 {
     char q[200], hint[200] = "";
     int all_text = 0;
+    const char *zn;
     quote_text(q, sizeof q, s, e);
+    if (ns == TSU_NUM_SYNTAX && r->time_detect && r->rows == 0 && zone_name(s, e, &zn))
+        ZONE_FAIL(r, f->at, fieldno, s, e, zn);
     if (ns == TSU_NUM_NONFINITE)
         POS_FAIL(r, TSU_IO_ERR_NONFINITE, f->at, fieldno, "not a finite number: %s", q);
     if (ns == TSU_NUM_RANGE)
@@ -2010,6 +2063,14 @@ static tsu_io_status parse_data(tsu_reader *r, const char *ls, const char *le)
         if (grow_row(r, nf + 1))
             return r->saved.status;
         r->fcol[nf] = (size_t)(p - ls);
+        if (!col_used(r, nf)) { /* any text: split off, not read */
+            const char *fp = p;
+            if (next_field(r, &fp, le, 1, &f, nf + 1) < 0)
+                return r->saved.status;
+            p = fp;
+            r->row[nf++] = (double)NAN;
+            goto next;
+        }
         /* fast path: an unquoted number in a number column */
         if (p < le && *p != '"' && r->is_time[nf] == 1) {
             const char *stop, *q;
@@ -2109,6 +2170,9 @@ static tsu_io_status parse_data(tsu_reader *r, const char *ls, const char *le)
             tsu_time_form tf;
             char q[200];
             if (!tsu_parse_time(s, e, &v, &tf, &stop) || stop != e) {
+                const char *zn;
+                if (zone_name(s, e, &zn))
+                    ZONE_FAIL(r, f.at, nf + 1, s, e, zn);
                 quote_text(q, sizeof q, s, e);
                 POS_FAIL(r, TSU_IO_ERR_TIME, f.at, nf + 1,
                          "not a valid ISO 8601 date or date-time: %s (YYYY-MM-DD[THH:MM[:SS]]"
@@ -2150,28 +2214,22 @@ static tsu_io_status parse_data(tsu_reader *r, const char *ls, const char *le)
     return TSU_IO_OK;
 }
 
-tsu_io_status tsu_reader_next(tsu_reader *r, const double **row, tsu_io_error *err)
+/* The next data record (header and blank lines consumed) into r->ls and
+ * *le: 1, 0 at the end, -1 on an error (r->saved). */
+static int next_record(tsu_reader *r, const char **lep)
 {
-    err_clear(err);
-    if (row)
-        *row = NULL;
-    if (!r) {
-        err_set(err, TSU_IO_ERR_NULL, 0, NULL, 0, 0, 0, "null argument");
-        return TSU_IO_ERR_NULL;
-    }
     while (!r->failed) {
         char *ls, *h;
         const char *le, *p;
         size_t ll;
         int g = get_record(r, &ls, &ll);
-        tsu_io_status st;
         if (g == 0) {
             if (r->rows == 0) {
                 (void)RFAIL(r, TSU_IO_ERR_EMPTY, 0, 0, 0, 0,
                             r->seen_content ? "no data rows" : "no data (empty input)");
                 break;
             }
-            return TSU_IO_END;
+            return 0;
         }
         if (g < 0)
             break;
@@ -2215,14 +2273,96 @@ tsu_io_status tsu_reader_next(tsu_reader *r, const double **row, tsu_io_error *e
             if (r->ncols && set_columns(r, r->ncols) != TSU_IO_OK)
                 break;
         }
-        st = parse_data(r, ls, le);
-        if (st != TSU_IO_OK)
-            break;
-        r->rows++;
-        r->row_line = r->rec_line;
-        if (row)
-            *row = r->row;
+        *lep = le;
+        return 1;
+    }
+    return -1;
+}
+
+tsu_io_status tsu_reader_layout(tsu_reader *r, tsu_io_error *err)
+{
+    const char *le;
+    int g;
+    err_clear(err);
+    if (!r) {
+        err_set(err, TSU_IO_ERR_NULL, 0, NULL, 0, 0, 0, "null argument");
+        return TSU_IO_ERR_NULL;
+    }
+    if (r->failed || r->pending || r->rows)
+        goto out;
+    g = next_record(r, &le);
+    if (g <= 0)
+        goto out; /* g == 0 cannot happen before a row: TSU_IO_ERR_EMPTY */
+    if (!r->ncols) {
+        const char *p = r->ls;
+        field f;
+        size_t n = 0;
+        int k;
+        while ((k = next_field(r, &p, le, n == 0, &f, n + 1)) == 1)
+            n++;
+        if (k < 0 || set_columns(r, n) != TSU_IO_OK)
+            goto out; /* a quote error in the first row: reported as such */
+    }
+    r->pending = 1;
+    r->pend_le = le;
+    r->row_line = r->rec_line;
+out:
+    if (r->failed && err)
+        *err = r->saved;
+    return r->failed ? r->saved.status : TSU_IO_OK;
+}
+
+tsu_io_status tsu_reader_use_columns(tsu_reader *r, const size_t *cols, size_t n,
+                                     tsu_io_error *err)
+{
+    size_t need = 1;
+    err_clear(err);
+    if (!r || (n && !cols)) {
+        err_set(err, TSU_IO_ERR_NULL, 0, r ? r->name : NULL, 0, 0, 0, "null argument");
+        return TSU_IO_ERR_NULL;
+    }
+    for (size_t k = 0; k < n; k++)
+        if (cols[k] >= need)
+            need = cols[k] + 1;
+    if (!r->failed && grow_row(r, need) == 0) {
+        memset(r->use, 0, r->rowcap);
+        for (size_t k = 0; k < n; k++)
+            r->use[cols[k]] = 1;
+        r->selected = 1;
         return TSU_IO_OK;
+    }
+    if (err)
+        *err = r->saved;
+    return r->saved.status;
+}
+
+tsu_io_status tsu_reader_next(tsu_reader *r, const double **row, tsu_io_error *err)
+{
+    err_clear(err);
+    if (row)
+        *row = NULL;
+    if (!r) {
+        err_set(err, TSU_IO_ERR_NULL, 0, NULL, 0, 0, 0, "null argument");
+        return TSU_IO_ERR_NULL;
+    }
+    if (!r->failed) {
+        const char *le;
+        int g = 1;
+        if (r->pending) {
+            r->pending = 0;
+            le = r->pend_le;
+        } else {
+            g = next_record(r, &le);
+        }
+        if (g == 0)
+            return TSU_IO_END;
+        if (g > 0 && parse_data(r, r->ls, le) == TSU_IO_OK) {
+            r->rows++;
+            r->row_line = r->rec_line;
+            if (row)
+                *row = r->row;
+            return TSU_IO_OK;
+        }
     }
     if (err)
         *err = r->saved;

@@ -211,7 +211,11 @@ typedef struct tsu_io_error {
  *     YYYY-MM-DD(T|t| )HH:MM[:SS[.fraction]]    a date-time
  *     ... followed by Z, z, +HH:MM, -HH:MM, +HHMM or +HH   its UTC offset
  *
- * A date-time without an offset is taken as UTC.  Years 0000-9999; month,
+ * A date-time without an offset is taken as UTC.  Time-zone names are not
+ * accepted: a date followed by one (two letters or '[': "CET", " UTC",
+ * "[Europe/Paris]") counts as a date in the header test and is an error
+ * TSU_IO_ERR_TIME naming the name ("time-zone name ... not accepted, write Z
+ * or a numeric UTC offset") in a time column or in the first data row.  Years 0000-9999; month,
  * day, hour (00-23), minute and second (00-59) are range-checked (day
  * against the month, leap years by the Gregorian rule).  Leap seconds do
  * not exist on this time scale (POSIX time): ":60" is an error.  The value
@@ -266,15 +270,18 @@ size_t tsu_format_time(double t, const tsu_time_form *form, char buf[TSU_TIME_SI
  *    field are ignored (with ',' and ';' tabs too); with white space any run
  *    of spaces and tabs separates fields.
  *  - Header: the first content line is a header (TSU_HEADER_AUTO) when one
- *    of its fields, unquoted and trimmed, is none of: empty, a number
+ *    of its fields (of the columns chosen by tsu_reader_use_columns, when it
+ *    was called first), unquoted and trimmed, is none of: empty, a number
  *    (nan/inf included, so "nan,1" is data; "nanoseconds" is a name), a
  *    missing-value word (when na is set), a date (when time columns are on).
  *    Names are unquoted and trimmed.
  *  - Every other line has the same number of fields: that of the header,
  *    or tsu_read_options.ncols when not 0, or else the first data row's.
- *  - A field is a number of tsu_parse_double and nothing else (surrounding
- *    blanks aside); with decimal_comma the decimal mark is ',' and '.' is an
- *    error (it may be a digit-group separator).  nan/inf, overflow and text
+ *  - A field of a column not chosen by tsu_reader_use_columns (when it was
+ *    called) is any text.  Every other field is a number of tsu_parse_double
+ *    and nothing else (surrounding blanks aside); with decimal_comma the
+ *    decimal mark is ',' and '.' is an error (it may be a digit-group
+ *    separator).  nan/inf, overflow and text
  *    are errors.  With na set, an empty field and the words of na (ASCII
  *    case-insensitive) are missing values: the row holds NaN there and
  *    tsu_reader_missing() counts them.  In a time column every field is a
@@ -342,6 +349,29 @@ tsu_io_status tsu_reader_open(tsu_reader **out, FILE *fp, const char *name,
  * After an error every later call returns the same error and message.
  */
 tsu_io_status tsu_reader_next(tsu_reader *r, const double **row, tsu_io_error *err);
+
+/*
+ * Read up to the first data row without parsing it: the delimiter, the
+ * header (names, tsu_reader_header_line) and the number of columns are then
+ * known, and tsu_reader_line gives the line of that row (the next
+ * tsu_reader_next returns it).  Only before the first row is returned (later
+ * calls do nothing).  TSU_IO_OK, or an error of tsu_reader_next
+ * (TSU_IO_ERR_EMPTY when there is no data row).
+ */
+tsu_io_status tsu_reader_layout(tsu_reader *r, tsu_io_error *err);
+
+/*
+ * Parse only the columns cols[0..n) (0-based) of the rows returned from now
+ * on: the other fields are split off (quotes honoured, a quote error there
+ * is still an error) but not read, so they may hold any text; their row
+ * entries are NaN and count neither as missing values nor as dates.  Called
+ * before the header is known (before tsu_reader_layout or the first
+ * tsu_reader_next), the header test looks only at these columns, so a text
+ * field elsewhere does not make the first line a header.  Columns beyond a
+ * row's fields are ignored.  TSU_IO_OK, TSU_IO_ERR_NOMEM, TSU_IO_ERR_NULL.
+ */
+tsu_io_status tsu_reader_use_columns(tsu_reader *r, const size_t *cols, size_t n,
+                                     tsu_io_error *err);
 
 size_t tsu_reader_ncols(const tsu_reader *r);               /* 0 until known */
 unsigned long long tsu_reader_line(const tsu_reader *r);    /* line of the last row returned */
