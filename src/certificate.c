@@ -170,8 +170,8 @@ static void set_excursions(const double B[4], ts_interval_report *rep)
 {
     double hi = B[0] > B[3] ? B[0] : B[3], lo = B[0] < B[3] ? B[0] : B[3];
     double ea = rep->y_max - hi, eb = lo - rep->y_min;
-    rep->excursion_above = ea < 0.0 ? 0.0 : ea; /* NaN stays NaN */
-    rep->excursion_below = eb < 0.0 ? 0.0 : eb;
+    rep->excursion_above = ea <= 0.0 ? 0.0 : ea; /* +0 also for -0; NaN stays NaN */
+    rep->excursion_below = eb <= 0.0 ? 0.0 : eb;
 }
 
 void ts__range_ctl(const ts_spline *sp, size_t i, const double B[4], const double *X,

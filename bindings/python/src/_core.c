@@ -725,6 +725,31 @@ static PyObject *report_tuple(const ts_interval_report *r)
                          r->excursion_above, r->excursion_below);
 }
 
+/* The result of a certify call: (ok, first violating index or None, [report
+ * tuples]); raises for any other failure.  Frees reps. */
+static PyObject *certify_result(ts_status st, const ts_error *err, ts_interval_report *reps,
+                                size_t n)
+{
+    if (st != TS_OK && st != TS_ERR_VIOLATED) {
+        PyMem_Free(reps);
+        return raise_err(st, err);
+    }
+    PyObject *list = PyList_New((Py_ssize_t)n);
+    for (size_t i = 0; list && i < n; i++) {
+        PyObject *t = report_tuple(&reps[i]);
+        if (!t) {
+            Py_CLEAR(list);
+            break;
+        }
+        PyList_SET_ITEM(list, (Py_ssize_t)i, t);
+    }
+    PyMem_Free(reps);
+    if (!list)
+        return NULL;
+    PyObject *idx = st == TS_OK ? (Py_INCREF(Py_None), Py_None) : PyLong_FromSize_t(err->index);
+    return Py_BuildValue("(ONN)", st == TS_OK ? Py_True : Py_False, idx, list);
+}
+
 /* report(i) -> tuple (x0, x1, alpha, beta, a, (B0..B3), term, has_lower,
  * has_upper, gap_lower, at_lower, gap_upper, at_upper, certified, y_min, at_y_min,
  * y_max, at_y_max, excursion_above, excursion_below). */
@@ -759,24 +784,7 @@ static PyObject *spline_certify(SplineHandle *self, PyObject *args)
     Py_BEGIN_ALLOW_THREADS
     st = ts_certify(self->s, olo == Py_None ? NULL : &lo, oup == Py_None ? NULL : &up, reps, &err);
     Py_END_ALLOW_THREADS
-    if (st != TS_OK && st != TS_ERR_VIOLATED) {
-        PyMem_Free(reps);
-        return raise_err(st, &err);
-    }
-    PyObject *list = PyList_New((Py_ssize_t)n);
-    for (size_t i = 0; list && i < n; i++) {
-        PyObject *t = report_tuple(&reps[i]);
-        if (!t) {
-            Py_CLEAR(list);
-            break;
-        }
-        PyList_SET_ITEM(list, (Py_ssize_t)i, t);
-    }
-    PyMem_Free(reps);
-    if (!list)
-        return NULL;
-    PyObject *idx = st == TS_OK ? (Py_INCREF(Py_None), Py_None) : PyLong_FromSize_t(err.index);
-    return Py_BuildValue("(ONN)", st == TS_OK ? Py_True : Py_False, idx, list);
+    return certify_result(st, &err, reps, n);
 }
 
 /* error_bound(fprime_max, fsecond_max, exact_slopes) -> (bound, per-interval array). */
@@ -1131,24 +1139,7 @@ static PyObject *curve_certify(CurveHandle *self, PyObject *args)
     st = own ? ts_curve_certify(self->c, reps, &err)
              : ts_curve_certify_box(self->c, has_lo, lo, has_hi, hi, reps, &err);
     Py_END_ALLOW_THREADS
-    if (st != TS_OK && st != TS_ERR_VIOLATED) {
-        PyMem_Free(reps);
-        return raise_err(st, &err);
-    }
-    PyObject *list = PyList_New((Py_ssize_t)nr);
-    for (size_t i = 0; list && i < nr; i++) {
-        PyObject *t = report_tuple(&reps[i]);
-        if (!t) {
-            Py_CLEAR(list);
-            break;
-        }
-        PyList_SET_ITEM(list, (Py_ssize_t)i, t);
-    }
-    PyMem_Free(reps);
-    if (!list)
-        return NULL;
-    PyObject *idx = st == TS_OK ? (Py_INCREF(Py_None), Py_None) : PyLong_FromSize_t(err.index);
-    return Py_BuildValue("(ONN)", st == TS_OK ? Py_True : Py_False, idx, list);
+    return certify_result(st, &err, reps, nr);
 }
 
 static PyMethodDef curve_methods[] = {
