@@ -68,9 +68,33 @@ TS_INLINE ts_status eval_deriv(const ts_spline *s, double x, ts_cursor *cur, dou
     return st;
 }
 
-ts_status ts_eval(const ts_spline *s, double x, ts_cursor *cur, double *y)
+#if defined(__GNUC__)
+#define TS_NOINLINE __attribute__((noinline))
+#else
+#define TS_NOINLINE
+#endif
+
+/* ts_eval's every other case, out of line so that its usual one needs no
+ * stack frame. */
+static TS_NOINLINE ts_status eval_value(const ts_spline *s, double x, ts_cursor *cur, double *y)
 {
     return eval_deriv(s, x, cur, y, NULL, NULL);
+}
+
+ts_status ts_eval(const ts_spline *s, double x, ts_cursor *cur, double *y)
+{
+    /* the usual case: paper or C¹ form, x inside the data (NaN fails) and in
+     * the cursor's interval; the same value as eval_one's */
+    if (s && y && s->form != TS_FORM_GEOMETRIC && x <= s->x[s->n]) {
+        size_t i = ts__cursor_interval(s, x, cur);
+        if (i < s->n) {
+            double o[3];
+            ts__trig_eval_in(s, i, x, 0, o);
+            *y = o[0];
+            return TS_OK;
+        }
+    }
+    return eval_value(s, x, cur, y);
 }
 
 ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur, double *y, double *dy,

@@ -138,13 +138,17 @@ void ts__seg_sc(const double B[4], double s, double c, int want, double out[3]);
  * xs[i] <= x, trying the cursor (may be NULL) and its successor first. */
 size_t ts__search(const double *xs, size_t n, double x, ts_cursor *cur);
 /* The interval of a spline containing x (x already in [x0, xn]). */
+/* The cursor's interval if it holds x (x >= x0), as ts__search tries it
+ * first, else n; no call. */
+static inline size_t ts__cursor_interval(const ts_spline *sp, double x, const ts_cursor *cur)
+{
+    size_t i = cur ? cur->interval : sp->n;
+    return i < sp->n && sp->x[i] <= x && (x < sp->x[i + 1] || i + 1 == sp->n) ? i : sp->n;
+}
 static inline size_t ts__locate(const ts_spline *sp, double x, ts_cursor *cur)
 {
-    /* the cursor's interval first, as ts__search, without a call */
-    size_t i = cur ? cur->interval : sp->n;
-    if (i < sp->n && sp->x[i] <= x && (x < sp->x[i + 1] || i + 1 == sp->n))
-        return i;
-    return ts__search(sp->x, sp->n, x, cur);
+    size_t i = ts__cursor_interval(sp, x, cur);
+    return i < sp->n ? i : ts__search(sp->x, sp->n, x, cur);
 }
 
 /* sin u, cos u, 1 − sin u, 1 − cos u for u in [0, π/4] (a hair beyond by
