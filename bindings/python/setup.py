@@ -36,7 +36,7 @@ _block = re.search(r"set\(TS_LIBRARY_SOURCES(.*?)\)", read(os.path.join(SRC, "CM
 LIB_SOURCES = [os.path.join(SRC, name)
                for name in re.findall(r"([A-Za-z0-9_]+\.c)\b", re.sub(r"#[^\n]*", "", _block))]
 # Per-source options of src/CMakeLists.txt (set_source_files_properties).
-LIB_SOURCE_FLAGS = {"kernels.c": ["-O3", "-ffp-contract=fast"]}
+LIB_SOURCE_FLAGS = {"kernels.c": ["-O3", "-ffp-contract=fast", "-fno-math-errno", "-fno-trapping-math"]}
 INCLUDE_DIRS = [os.path.join(ROOT, "include"), SRC, numpy.get_include()]
 # C11 as the CMake build; the library's public functions stay hidden in the
 # extension (TS_API empty, -fvisibility=hidden): each module has its own copy.
