@@ -61,37 +61,6 @@ void ts__seg_sc(const double B[4], double s, double c, int want, double out[3])
     ts__seg_scm(B, s, c, one_minus(s, c), one_minus(c, s), want, out);
 }
 
-void ts__seg_scm(const double B[4], double s, double c, double ms, double mc, int want, double out[3])
-{
-    double A[4];
-    A[0] = ms * ms * ms; /* ts__basis */
-    A[1] = s * ms * (3.0 - s);
-    A[2] = c * mc * (3.0 - c);
-    A[3] = mc * mc * mc;
-    out[0] = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
-    if (want > 0) {
-        /* docs/method.md (2.1) */
-        out[1] = 3.0 * ms * ms * c * (B[1] - B[0]) + 2.0 * s * c * (B[2] - B[1]) +
-                 3.0 * mc * mc * s * (B[3] - B[2]);
-    }
-    if (want > 1) {
-        /* ts__basis_d2 */
-        A[0] = 6.0 * ms * c * c + 3.0 * ms * ms * s;
-        A[1] = -s * (3.0 - 8.0 * s + 3.0 * s * s) + c * c * (6.0 * s - 8.0);
-        A[2] = -c * (3.0 - 8.0 * c + 3.0 * c * c) + s * s * (6.0 * c - 8.0);
-        A[3] = 6.0 * mc * s * s + 3.0 * mc * mc * c;
-        out[2] = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
-    }
-    /* a flat segment is constant (Σ A_l need not round to 1, Σ A_l'' to 0) */
-    if (B[0] == B[1] && B[1] == B[2] && B[2] == B[3]) {
-        out[0] = B[0];
-        if (want > 0)
-            out[1] = 0.0;
-        if (want > 1)
-            out[2] = 0.0;
-    }
-}
-
 size_t ts__search(const double *xs, size_t n, double x, ts_cursor *cur)
 {
     if (cur) {

@@ -7,17 +7,24 @@
 #include <pthread.h>
 #include <unistd.h>
 
-static ts_status eval_one(const ts_spline *sp, double x, ts_cursor *cur, int want, double o[3])
+/* Inline into ts_eval and ts_eval_deriv with want a constant: inside the
+ * data (the usual case) the cursor's interval and the paper or C¹ form's
+ * value without a call. */
+TS_INLINE ts_status eval_one(const ts_spline *sp, double x, ts_cursor *cur, int want, double o[3])
 {
     o[1] = o[2] = 0.0;
-    if (isnan(x) || (isinf(x) && sp->extrap != TS_EXTRAP_CLAMP))
-        return TS_ERR_DOMAIN;
     size_t n = sp->n;
     double x0 = sp->x[0], xn = sp->x[n];
-    if (x0 <= x && x <= xn) {
-        ts__interval_eval(sp, ts__locate(sp, x, cur), x, want, o);
+    if (x0 <= x && x <= xn) { /* NaN fails */
+        size_t i = ts__locate(sp, x, cur);
+        if (sp->form != TS_FORM_GEOMETRIC)
+            ts__trig_eval_in(sp, i, x, want, o);
+        else
+            ts__interval_eval(sp, i, x, want, o);
         return TS_OK;
     }
+    if (isnan(x) || (isinf(x) && sp->extrap != TS_EXTRAP_CLAMP))
+        return TS_ERR_DOMAIN;
     int left = x < x0;
     size_t i = left ? 0 : n - 1;
     double xe = left ? x0 : xn;
@@ -41,8 +48,8 @@ static ts_status eval_one(const ts_spline *sp, double x, ts_cursor *cur, int wan
     }
 }
 
-static ts_status eval_deriv(const ts_spline *s, double x, ts_cursor *cur, double *y,
-                            double *dy, double *d2y)
+TS_INLINE ts_status eval_deriv(const ts_spline *s, double x, ts_cursor *cur, double *y,
+                               double *dy, double *d2y)
 {
     double o[3] = {(double)NAN, (double)NAN, (double)NAN};
     ts_status st = TS_ERR_NULL;
@@ -61,9 +68,33 @@ static ts_status eval_deriv(const ts_spline *s, double x, ts_cursor *cur, double
     return st;
 }
 
-ts_status ts_eval(const ts_spline *s, double x, ts_cursor *cur, double *y)
+#if defined(__GNUC__)
+#define TS_NOINLINE __attribute__((noinline))
+#else
+#define TS_NOINLINE
+#endif
+
+/* ts_eval's every other case, out of line so that its usual one needs no
+ * stack frame. */
+static TS_NOINLINE ts_status eval_value(const ts_spline *s, double x, ts_cursor *cur, double *y)
 {
     return eval_deriv(s, x, cur, y, NULL, NULL);
+}
+
+ts_status ts_eval(const ts_spline *s, double x, ts_cursor *cur, double *y)
+{
+    /* the usual case: paper or C¹ form, x inside the data (NaN fails) and in
+     * the cursor's interval; the same value as eval_one's */
+    if (s && y && s->form != TS_FORM_GEOMETRIC && x <= s->x[s->n]) {
+        size_t i = ts__cursor_interval(s, x, cur);
+        if (i < s->n) {
+            double o[3];
+            ts__trig_eval_in(s, i, x, 0, o);
+            *y = o[0];
+            return TS_OK;
+        }
+    }
+    return eval_value(s, x, cur, y);
 }
 
 ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur, double *y, double *dy,

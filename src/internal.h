@@ -138,9 +138,17 @@ void ts__seg_sc(const double B[4], double s, double c, int want, double out[3]);
  * xs[i] <= x, trying the cursor (may be NULL) and its successor first. */
 size_t ts__search(const double *xs, size_t n, double x, ts_cursor *cur);
 /* The interval of a spline containing x (x already in [x0, xn]). */
+/* The cursor's interval if it holds x (x >= x0), as ts__search tries it
+ * first, else n; no call. */
+static inline size_t ts__cursor_interval(const ts_spline *sp, double x, const ts_cursor *cur)
+{
+    size_t i = cur ? cur->interval : sp->n;
+    return i < sp->n && sp->x[i] <= x && (x < sp->x[i + 1] || i + 1 == sp->n) ? i : sp->n;
+}
 static inline size_t ts__locate(const ts_spline *sp, double x, ts_cursor *cur)
 {
-    return ts__search(sp->x, sp->n, x, cur);
+    size_t i = ts__cursor_interval(sp, x, cur);
+    return i < sp->n ? i : ts__search(sp->x, sp->n, x, cur);
 }
 
 /* sin u, cos u, 1 − sin u, 1 − cos u for u in [0, π/4] (a hair beyond by
@@ -229,8 +237,38 @@ TS_INLINE double ts__geo_halley(double phi, double k, double u, double *so, doub
     *mco = mc + (s * e + c * e2);
     return next;
 }
-/* ts__seg_sc with 1 − s and 1 − c given (ms, mc). */
-void ts__seg_scm(const double B[4], double s, double c, double ms, double mc, int want, double out[3]);
+/* ts__seg_sc with 1 − s and 1 − c given (ms, mc); inline: single
+ * evaluation's path (ts__trig_eval_in). */
+TS_INLINE void ts__seg_scm(const double B[4], double s, double c, double ms, double mc, int want, double out[3])
+{
+    double A[4];
+    A[0] = ms * ms * ms; /* ts__basis */
+    A[1] = s * ms * (3.0 - s);
+    A[2] = c * mc * (3.0 - c);
+    A[3] = mc * mc * mc;
+    out[0] = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
+    if (want > 0) {
+        /* docs/method.md (2.1) */
+        out[1] = 3.0 * ms * ms * c * (B[1] - B[0]) + 2.0 * s * c * (B[2] - B[1]) +
+                 3.0 * mc * mc * s * (B[3] - B[2]);
+    }
+    if (want > 1) {
+        /* ts__basis_d2 */
+        A[0] = 6.0 * ms * c * c + 3.0 * ms * ms * s;
+        A[1] = -s * (3.0 - 8.0 * s + 3.0 * s * s) + c * c * (6.0 * s - 8.0);
+        A[2] = -c * (3.0 - 8.0 * c + 3.0 * c * c) + s * s * (6.0 * c - 8.0);
+        A[3] = 6.0 * mc * s * s + 3.0 * mc * mc * c;
+        out[2] = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
+    }
+    /* a flat segment is constant (Σ A_l need not round to 1, Σ A_l'' to 0) */
+    if (B[0] == B[1] && B[1] == B[2] && B[2] == B[3]) {
+        out[0] = B[0];
+        if (want > 0)
+            out[1] = 0.0;
+        if (want > 1)
+            out[2] = 0.0;
+    }
+}
 
 /* ---- trigmin.c (docs/method.md §2, §5) ----------------------------------------- */
 /* Exact minimum over θ in [0, π/2] of g(θ) = Σ A_l(θ) C_l − κ θ.  Returns the
@@ -340,6 +378,26 @@ double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k);
 /* Value and derivatives (in x; out[1], out[2] only if want > 0, > 1) of
  * interval i at x, any form; x may lie outside the interval (extension). */
 void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double o[3]);
+/* The same, paper and C¹ forms, x inside the interval (x_i <= x <= x_{i+1}):
+ * ϑ from the nearer end (<= π/4), so the kernels' polynomial sine and cosine
+ * (sin and cos of π/2 − θ are exact at the right knot: both knots are
+ * interpolated exactly).  Inline: ts_eval's path. */
+TS_INLINE void ts__trig_eval_in(const ts_spline *sp, size_t i, double x, int want, double o[3])
+{
+    double B[4], s, c, ms, mc;
+    ts__B(sp, i, B);
+    double w = TS_HALF_PI / sp->h[i]; /* dθ/dx */
+    double u = x - sp->x[i], v = sp->x[i + 1] - x;
+    ts__sincos_q(u <= v ? u * w : v * w, &s, &c, &ms, &mc);
+    if (u <= v)
+        ts__seg_scm(B, s, c, ms, mc, want, o);
+    else
+        ts__seg_scm(B, c, s, mc, ms, want, o);
+    if (want > 0)
+        o[1] *= w;
+    if (want > 1)
+        o[2] *= w * w;
+}
 /* 2^-k ∫_a^b S on interval i (x_i <= a <= b <= x_{i+1}), the factors ordered
  * so that it stays finite where the integral times 2^-k is.  A piece shorter
  * than h/16 is integrated directly (12-point Gauss–Legendre in x), so its

@@ -12,22 +12,16 @@ void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double
         ts__geo_eval(sp, i, x, want, o);
         return;
     }
+    double u = x - sp->x[i], v = sp->x[i + 1] - x;
+    if (u >= 0.0 && v >= 0.0) {
+        ts__trig_eval_in(sp, i, x, want, o);
+        return;
+    }
+    /* outside (TS_EXTRAP_EXTEND): θ from the nearer end, libm */
     double h = sp->h[i], B[4];
     ts__B(sp, i, B);
     double w = TS_HALF_PI / h; /* dθ/dx */
-    double u = x - sp->x[i], v = sp->x[i + 1] - x;
-    /* θ from the nearer end: sin and cos of π/2 − θ' are exact at the right
-     * knot (s = 1, c = 0), so both knots are interpolated exactly.  Inside
-     * the interval that angle is <= π/4: the kernels' polynomials; outside
-     * (TS_EXTRAP_EXTEND) libm. */
-    double s, c, ms, mc;
-    if (u >= 0.0 && v >= 0.0) {
-        ts__sincos_q(u <= v ? u * w : v * w, &s, &c, &ms, &mc);
-        if (u <= v)
-            ts__seg_scm(B, s, c, ms, mc, want, o);
-        else
-            ts__seg_scm(B, c, s, mc, ms, want, o);
-    } else if (u <= v) {
+    if (u <= v) {
         ts__seg_sc(B, sin(u * w), cos(u * w), want, o);
     } else {
         ts__seg_sc(B, cos(v * w), sin(v * w), want, o);

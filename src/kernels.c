@@ -323,7 +323,9 @@ TS_ALWAYS_INLINE void geo_side(const geo_stage *st, size_t j, int *right, double
     *u = (*right ? dr : dl) / st->h[j];
 }
 
-TS_ALWAYS_INLINE void geo_solve_block(geo_stage *st, size_t nb)
+/* Returns 0 when every query of the block has stopped (the usual case: then
+ * geo_finish has nothing to do). */
+TS_ALWAYS_INLINE int geo_solve_block(geo_stage *st, size_t nb)
 {
     for (size_t j = 0; j < nb; j++) {
         int right;
@@ -334,26 +336,29 @@ TS_ALWAYS_INLINE void geo_solve_block(geo_stage *st, size_t nb)
         st->res[j] = 1.0;
     }
     for (int pass = 0; pass < TS_GEO_PASSES; pass++) {
-        long open = 0; /* an integer count: this loop vectorises */
+        double open = 0.0; /* a double flag: this loop vectorises on every ISA */
         for (size_t j = 0; j < nb; j++) {
-            /* a query stops at its own first small step, whatever the others
-             * of the block still need: its value does not depend on them */
-            int live = st->res[j] > 0.0;
+            /* A query stops at its own first small step (below 2^-20 φ),
+             * whatever the others of the block still need, so that its value
+             * does not depend on them: its φ stays where that step started,
+             * and every later pass repeats the same step from there, giving
+             * the same bits.  s, c, ms, mc: at the step's end, for the
+             * evaluation.  res: 1 while open, 0 once stopped. */
             double phi = st->phi[j], s, c, ms, mc;
             double next = ts__geo_halley(phi, st->kappa[j], st->u[j], &s, &c, &ms, &mc);
-            double e = next - phi, r = fabs(e) - 0x1p-20 * next;
-            r = r <= 0.0 ? r : 1.0; /* NaN too */
-            open += live && r > 0.0;
-            st->res[j] = live ? r : st->res[j];
-            st->phi[j] = live ? next : phi;
-            st->s[j] = live ? s : st->s[j]; /* at next, for the evaluation when this is the last step */
-            st->c[j] = live ? c : st->c[j];
-            st->ms[j] = live ? ms : st->ms[j];
-            st->mc[j] = live ? mc : st->mc[j];
+            double more = fabs(next - phi) <= 0x1p-20 * next ? 0.0 : 1.0; /* NaN: 1 */
+            open = more > 0.0 ? more : open;
+            st->res[j] = more;
+            st->phi[j] = more > 0.0 ? next : phi;
+            st->s[j] = s;
+            st->c[j] = c;
+            st->ms[j] = ms;
+            st->mc[j] = mc;
         }
-        if (!open)
-            break;
+        if (open == 0.0)
+            return 0;
     }
+    return 1;
 }
 
 /* docs/method.md §4 at the solved φ from the nearer end: the value, or its
@@ -366,9 +371,9 @@ TS_ALWAYS_INLINE void geo_solve_block(geo_stage *st, size_t nb)
     double F0 = right ? (st)->f1[j] : (st)->f0[j], F1 = right ? (st)->f0[j] : (st)->f1[j]; \
     double D0 = right ? -(st)->d1[j] : (st)->d0[j], D1 = right ? -(st)->d0[j] : (st)->d1[j]
 
-TS_ALWAYS_INLINE void geo_eval_block(int deriv, geo_stage *st, size_t nb, double *y)
+TS_ALWAYS_INLINE int geo_eval_block(int deriv, geo_stage *st, size_t nb, double *y)
 {
-    geo_solve_block(st, nb);
+    int open = geo_solve_block(st, nb);
     if (deriv == 0) {
         for (size_t j = 0; j < nb; j++) {
             TS_GEO_NEAR(st, j);
@@ -377,7 +382,7 @@ TS_ALWAYS_INLINE void geo_eval_block(int deriv, geo_stage *st, size_t nb, double
             /* a flat interval is constant (c² + s² need not round to 1) */
             y[j] = (F0 == F1 && k * D0 == 0.0 && k * D1 == 0.0) ? F0 : v;
         }
-        return;
+        return open;
     }
     for (size_t j = 0; j < nb; j++) {
         TS_GEO_NEAR(st, j);
@@ -394,6 +399,7 @@ TS_ALWAYS_INLINE void geo_eval_block(int deriv, geo_stage *st, size_t nb, double
         double v2 = (Ypp * Xp - Yp * Xpp) / (Xp * Xp * Xp) / h / h;
         y[j] = deriv == 1 ? (right ? -v1 : v1) : v2;
     }
+    return open;
 }
 
 /* Fills the stage's unused places [nb, TS_FAST_BLOCK) with its first query. */
@@ -442,10 +448,11 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
             if (!stage_block(sp, xq + j0, nb, 0, NULL, &st.g, cur))
                 break;
             geo_pad(&st.g, nb); /* as below */
-            geo_eval_block(deriv, &st.g, TS_FAST_BLOCK, yt);
+            int open = geo_eval_block(deriv, &st.g, TS_FAST_BLOCK, yt);
             for (size_t j = 0; j < nb; j++)
                 yq[j0 + j] = yt[j];
-            geo_finish(sp, deriv, &st.g, xq + j0, nb, yq + j0);
+            if (open)
+                geo_finish(sp, deriv, &st.g, xq + j0, nb, yq + j0);
             j0 += nb;
         }
         return j0;
