@@ -153,6 +153,8 @@ const char *cli_extrap_name(ts_extrap e);
 #endif
 /* "trigspline: ..." on stderr. */
 void cli_error(const char *fmt, ...) CLI_PRINTF(1, 2);
+/* Map an I/O reader failure to an exit status (message printed). */
+int cli_report_io(const tsu_io_error *e);
 /* "trigspline CMD: ...", then the hint to --help; returns CLI_USAGE. */
 int cli_usage(cli_cmd cmd, const char *fmt, ...) CLI_PRINTF(2, 3);
 /* Shortest round-trip text of v (tsu_format_double). */
@@ -322,8 +324,6 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
  * error is reported (cli_report_build_error), d freed, *s NULL.  Returns the
  * exit status. */
 int cli_read_and_fit(const cli_opts *o, const ts_options *opt, cli_data *d, ts_spline **s);
-/* Map an I/O reader failure to an exit status (message printed). */
-int cli_report_io(const tsu_io_error *e);
 
 /* ---- fit_options.c --------------------------------------------------- */
 /* Fill opt from o (fit and certify).  Returns CLI_OK or CLI_USAGE (message

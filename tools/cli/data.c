@@ -9,22 +9,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-int cli_report_io(const tsu_io_error *e)
-{
-    cli_error("%s", e->msg);
-    switch (e->status) {
-    case TSU_IO_ERR_OPEN:
-    case TSU_IO_ERR_READ:
-    case TSU_IO_ERR_NOMEM:
-    case TSU_IO_ERR_OVERFLOW:
-    case TSU_IO_ERR_NULL:
-    case TSU_IO_ERR_OPTION:
-        return CLI_IO;
-    default:
-        return CLI_DATA;
-    }
-}
-
 void cli_data_free(cli_data *d)
 {
     for (int k = 0; k < 3; k++)
