@@ -106,7 +106,8 @@ demo: build
 	$(MAKE) --no-print-directory why-demo
 
 clean:
-	rm -rf build build-asan build-clang build-bench out
+	rm -rf build build-asan build-clang build-bench build-web build-coverage build-fuzz build-tsan \
+	  bindings/python/build out
 
 # ---- Python package (bindings/python) --------------------------------------
 # Debian's own interpreter (/usr/bin/python3, not another python3 on PATH)
