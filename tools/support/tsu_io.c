@@ -1364,6 +1364,22 @@ static char delim_char(tsu_delim d)
 }
 
 /* Could c end a field (for finding quoted fields before the delimiter is known)? */
+/* After a value read by a fast path, ending at stop: the end of its field
+ * (le, or the delimiter dc; with dc = 0 white space separates fields), past
+ * trailing blanks (only spaces when the delimiter is a tab), or NULL if
+ * something else follows the value there. */
+static const char *fast_field_end(const char *stop, const char *le, char dc)
+{
+    const char *q = stop;
+    if (dc == '\t')
+        while (q < le && *q == ' ')
+            q++;
+    else
+        while (q < le && IS_BLANK(*q))
+            q++;
+    return q == le || (dc ? *q == dc : q > stop) ? q : NULL;
+}
+
 static int field_sep(const tsu_reader *r, char c)
 {
     char dc = delim_char(r->delim);
@@ -2076,14 +2092,7 @@ static tsu_io_status parse_data(tsu_reader *r, const char *ls, const char *le)
             const char *stop, *q;
             tsu_time_form tf;
             if (tsu_parse_time(p, le, &v, &tf, &stop)) {
-                q = stop;
-                if (dc == '\t')
-                    while (q < le && *q == ' ')
-                        q++;
-                else
-                    while (q < le && IS_BLANK(*q))
-                        q++;
-                if (q == le || (dc ? *q == dc : q > stop)) {
+                if ((q = fast_field_end(stop, le, dc)) != NULL) {
                     r->row[nf++] = v;
                     if (q == le)
                         break;
@@ -2097,14 +2106,7 @@ static tsu_io_status parse_data(tsu_reader *r, const char *ls, const char *le)
             tsu_num_status ns = tsu_parse_double(p, le, &v, &stop);
             if (ns == TSU_NUM_OK && stop > p &&
                 !(r->decimal_comma && memchr(p, '.', (size_t)(stop - p)))) {
-                q = stop;
-                if (dc == '\t')
-                    while (q < le && *q == ' ')
-                        q++;
-                else
-                    while (q < le && IS_BLANK(*q))
-                        q++;
-                if (q == le || (dc ? *q == dc : q > stop)) {
+                if ((q = fast_field_end(stop, le, dc)) != NULL) {
                     r->row[nf++] = v;
                     if (q == le)
                         break;
