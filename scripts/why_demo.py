@@ -81,6 +81,16 @@ def read_xy(path):
     return rows[:, 0], rows[:, 1], cols
 
 
+def figure_svg(fig):
+    """The figure as inline SVG text (from its <svg> element on), then closed."""
+    fig.tight_layout()
+    buf = io.StringIO()
+    fig.savefig(buf, format="svg")
+    plt.close(fig)
+    text = buf.getvalue()
+    return text[text.find("<svg"):]
+
+
 def read_cli_xy(text):
     """The first two columns of a CSV the command wrote (its header names
     are the input's column names, so columns are taken by position)."""
@@ -250,12 +260,7 @@ def function_panel(key, title, intro, verdict, data_name, lower, upper, our_args
     bx.set_ylabel("gap to the %s bound\n(zoomed; below 0 = violation)" % ("lower" if lower is not None else "upper"))
     bx.set_xlabel(cols[0])
     bx.grid(alpha=0.25)
-    fig.tight_layout()
-    svg = io.StringIO()
-    fig.savefig(svg, format="svg")
-    plt.close(fig)
-    svg_text = svg.getvalue()
-    svg_text = svg_text[svg_text.find("<svg"):]
+    svg_text = figure_svg(fig)
 
     # ---- table
     sides = [s for s, ln in (("lower", lower), ("upper", upper)) if ln is not None]
@@ -345,12 +350,7 @@ def curve_panel():
     ax.legend(fontsize=7.5, loc="center", frameon=False)
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
-    fig.tight_layout()
-    svg = io.StringIO()
-    fig.savefig(svg, format="svg")
-    plt.close(fig)
-    svg_text = svg.getvalue()
-    svg_text = svg_text[svg_text.find("<svg"):]
+    svg_text = figure_svg(fig)
     SUMMARY.append(("Closed outline inside a box", "trigspline", "box", js["min_gap"], 0 if js["certified"] else -1))
     KEYS["outline/ours/box"] = js["min_gap"]
     body = ('<tr class="ours"><td>trigspline (exact certificate; certified: <b>%s</b>)</td>%s<td>0</td></tr>'
@@ -415,12 +415,7 @@ def rejected_panel():
     ax.set_ylabel("cloud cover (%)")
     ax.legend(fontsize=7.5, ncol=3, frameon=False, loc="lower left")
     ax.grid(alpha=0.25)
-    fig.tight_layout()
-    svg = io.StringIO()
-    fig.savefig(svg, format="svg")
-    plt.close(fig)
-    svg_text = svg.getvalue()
-    svg_text = svg_text[svg_text.find("<svg"):]
+    svg_text = figure_svg(fig)
     pchip_ok = all(KEYS["%s/%s/%s" % (key, n, s)] >= 0 for n in ("SciPy PCHIP", "GSL steffen")
                    for s in ("lower", "upper"))
     SECTIONS.append(
