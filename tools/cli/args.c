@@ -644,10 +644,8 @@ int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o)
         if (!(d->cmds & bit))
             return cli_usage(cmd, "option %s is not available for \"%s\"", d->name,
                              cli_cmd_name(cmd));
-        if (d->id == O_HELP) {
-            cli_print_help(cmd);
+        if (d->id == O_HELP)
             return CLI_HELP;
-        }
         const char *val = NULL;
         if (d->has_arg) {
             if (eq)
