@@ -212,6 +212,9 @@ typedef struct cli_out {
     tsu_out *o;
     FILE *direct;
 } cli_out;
+/* 1: the same path, or two names of one existing file (stat(2) only):
+ * -o and the plot must differ. */
+int cli_same_file(const char *a, const char *b);
 /* 0 or an errno (message in msg). */
 int cli_out_open(cli_out *c, const char *path, char *msg, size_t len);
 FILE *cli_out_file(const cli_out *c);

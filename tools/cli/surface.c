@@ -164,6 +164,8 @@ int cli_surface_parse(int argc, char **argv, cli_surface_opts *o)
                          o->grid_x >= 2 && o->grid_y >= 2;
                 }
             } else if (strcmp(a, "-o") == 0) {
+                if (!*v)
+                    return usage("%s: empty file name", a);
                 o->out = v;
             } else if (strcmp(a, "--svg") == 0 || strcmp(a, "--png") == 0 ||
                        strcmp(a, "--pdf") == 0) {
@@ -171,6 +173,8 @@ int cli_surface_parse(int argc, char **argv, cli_surface_opts *o)
                  * another is refused (no SVG silently written into a .png) */
                 static const char *const ext[3] = {".svg", ".png", ".pdf"};
                 const char *dot = strrchr(v, '.');
+                if (!*v || strcmp(v, "-") == 0)
+                    return usage("%s needs a file name", a);
                 o->fmt = strcmp(a, "--svg") == 0   ? CLI_PLOT_SVG
                          : strcmp(a, "--png") == 0 ? CLI_PLOT_PNG
                                                    : CLI_PLOT_PDF;
@@ -181,10 +185,8 @@ int cli_surface_parse(int argc, char **argv, cli_surface_opts *o)
             } else {
                 return usage("unknown option %s", a);
             }
-            if (!ok) {
-                fprintf(cli_messages(), "trigspline surface: bad value \"%s\" for %s\n", v, a);
-                return CLI_USAGE;
-            }
+            if (!ok)
+                return usage("bad value \"%s\" for %s", v, a);
             continue;
         }
         if (o->data)
@@ -193,6 +195,9 @@ int cli_surface_parse(int argc, char **argv, cli_surface_opts *o)
     }
     if (!o->data)
         return usage("missing DATA");
+    if (o->out && o->svg && strcmp(o->out, "-") != 0 && cli_same_file(o->out, o->svg))
+        return usage("-o and the plot name the same file (\"%s\"): the plot would replace the "
+                     "samples", o->svg);
     return CLI_OK;
 }
 
