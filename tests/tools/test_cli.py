@@ -902,6 +902,16 @@ def test_surface_usage():
         check("surface usage %s" % " ".join(args), rc == 1 and word in err and so == ""
               and "Try 'trigspline surface --help'" in err, "%d %r" % (rc, err))
     check("surface -o X --svg X wrote nothing", not os.path.exists(out))
+    # every sample is held in memory: more than 1e7 refused at once (10000 x 1001
+    # points; 12 x 10 nodes, --samples 400: 4401 x 3601), nothing written
+    big = tmp("surf_big.csv")
+    for args in (["--grid", "10000,1001"], ["--samples", "400"]):
+        rc, so, err = run(["surface", grid, "-o", big] + args, timeout=30)
+        check("surface %s over the limit" % " ".join(args), rc == 1 and "10000000" in err,
+              "%d %r" % (rc, err))
+    check("surface over the limit wrote nothing", not os.path.exists(big))
+    rc, so, err = run(["surface", grid, "--grid", "1000,1000", "--json"])
+    check("surface 1e6 samples", rc == 0 and json.loads(so)["samples"] == 1000000, err[:200])
     rc, so, err = run(["surface", grid, "-o", tmp("surf.csv"), "--svg", tmp("surf.svg")])
     check("surface -o X --svg Y", rc == 0 and svg_ok(tmp("surf.svg")) and
           open(tmp("surf.csv")).readline() == "x,y,z\n", "%d %r" % (rc, err))

@@ -44,6 +44,7 @@ static void print_help(void)
            "  --zero-twist           twist 0 instead of the estimate\n"
            "  --samples N            output N samples per patch side (default 4)\n"
            "  --grid NX,NY           output a uniform NX x NY grid instead\n"
+           "                         (at most 10000000 points in all)\n"
            "  --matrix-out           write samples in the matrix layout\n"
            "  --json                 write the report (JSON) instead of samples\n"
            "  --svg|--png|--pdf FILE heatmap with contours, nodes and active patches\n"
@@ -530,6 +531,16 @@ int cli_surface(int argc, char **argv)
     surf_grid g;
     if ((rc = read_grid(&o, &g)) != CLI_OK)
         return rc;
+    /* every sample is held in memory (text, JSON range, plot): a documented limit */
+    double px = o.grid_x ? (double)o.grid_x : (double)(g.nx - 1) * (double)o.samples + 1.0;
+    double py = o.grid_y ? (double)o.grid_y : (double)(g.ny - 1) * (double)o.samples + 1.0;
+    if (px * py > CLI_MAX_HELD_SAMPLES) {
+        cli_error("%s: %.0f x %.0f sample points exceed the limit of %u that surface holds in "
+                  "memory; lower --samples or --grid",
+                  g.name, px, py, CLI_MAX_HELD_SAMPLES);
+        grid_free(&g);
+        return CLI_USAGE;
+    }
     ts_surface *s = NULL;
     ts_error e;
     ts_status st = ts_surface_new(g.x, g.nx, g.y, g.ny, g.z, &o.so, &s, &e);
