@@ -268,17 +268,30 @@ coverage:
 
 # libFuzzer harnesses of tests/fuzz/ (clang, ASan+UBSan), each run for
 # FUZZ_SECONDS seconds from its checked-in corpus (new inputs go to
-# build-fuzz/corpus/NAME, not into the repository).  `make test` replays
-# the checked-in corpus through the same harnesses (test_fuzz_* programs).
+# $(FUZZ_BUILD)/corpus/NAME, not into the repository), with the dictionary
+# tests/fuzz/NAME.dict when there is one.  One summary line per harness;
+# a harness that fails (crash, failed check, leak, timeout) leaves its input
+# in $(FUZZ_BUILD)/artifacts/ and its log, the others still run, and the
+# target fails.  `make test` replays the checked-in corpus through the same
+# harnesses (test_fuzz_* programs).  FUZZ_FLAGS: more libFuzzer flags.
 FUZZ_SECONDS ?= 60
+FUZZ_BUILD ?= build-fuzz
+FUZZ_FLAGS ?=
 fuzz:
 	$(call need,$(BUILD_TOOLS) clang:clang)
 	$(call need_file,/usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a,libclang-rt-14-dev)
-	CC=clang $(CMAKE) -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTS_FUZZ=ON \
+	CC=clang $(CMAKE) -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTS_FUZZ=ON \
 	  -DCMAKE_C_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all" \
 	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DTS_BUILD_EXAMPLES=OFF >/dev/null
-	$(CMAKE) --build build-fuzz -j $(JOBS) --target fuzzers
-	@set -e; for h in tests/fuzz/fuzz_*.c; do n=$$(basename $$h .c); n=$${n#fuzz_}; \
-	  mkdir -p build-fuzz/corpus/$$n; echo "fuzz $$n: $(FUZZ_SECONDS) s"; \
-	  build-fuzz/fuzz/fuzz_$$n -max_total_time=$(FUZZ_SECONDS) -print_final_stats=1 \
-	    build-fuzz/corpus/$$n tests/fuzz/corpus/$$n 2>&1 | tail -n 12; done
+	$(CMAKE) --build $(FUZZ_BUILD) -j $(JOBS) --target fuzzers
+	@failed=""; for h in tests/fuzz/fuzz_*.c; do n=$$(basename $$h .c); n=$${n#fuzz_}; \
+	  b=$(FUZZ_BUILD); mkdir -p $$b/corpus/$$n $$b/artifacts; \
+	  dict=""; test -f tests/fuzz/$$n.dict && dict="-dict=tests/fuzz/$$n.dict"; \
+	  if $$b/fuzz/fuzz_$$n -max_total_time=$(FUZZ_SECONDS) -timeout=30 -print_final_stats=1 \
+	      -artifact_prefix=$$b/artifacts/$$n- $$dict $(FUZZ_FLAGS) \
+	      $$b/corpus/$$n tests/fuzz/corpus/$$n >$$b/fuzz_$$n.log 2>&1; then st=ok; \
+	  else st=FAILED; failed="$$failed $$n"; tail -n 40 $$b/fuzz_$$n.log; fi; \
+	  runs=$$(sed -n 's/^stat::number_of_executed_units: *//p' $$b/fuzz_$$n.log); \
+	  echo "fuzz $$n: $$st, $${runs:-?} runs in $(FUZZ_SECONDS) s, corpus $$(ls $$b/corpus/$$n | wc -l) new + $$(ls tests/fuzz/corpus/$$n | wc -l) checked in (log $$b/fuzz_$$n.log)"; \
+	done; \
+	if [ -n "$$failed" ]; then echo "fuzz: FAILED:$$failed (inputs in $(FUZZ_BUILD)/artifacts/)"; exit 1; fi

@@ -890,6 +890,33 @@ def test_same_output():
     os.remove(out)
 
 
+def test_surface_usage():
+    """surface's usage errors as the others' (docs/cli.md: exit 1, the message,
+    the hint to --help, nothing written); found by tests/fuzz/fuzz_cli.c."""
+    grid = os.path.join(REPO, "data", "surface", "cloud_percent_long.csv")
+    out = tmp("surf_same.svg")
+    for args, word in ((["--alpha", "-1"], "--alpha"), (["--grid", "1,5"], "--grid"),
+                       (["-o", ""], "-o"), (["--png", "-"], "--png"),
+                       (["-o", out, "--svg", out], "same file")):
+        rc, so, err = run(["surface", grid] + args)
+        check("surface usage %s" % " ".join(args), rc == 1 and word in err and so == ""
+              and "Try 'trigspline surface --help'" in err, "%d %r" % (rc, err))
+    check("surface -o X --svg X wrote nothing", not os.path.exists(out))
+    # every sample is held in memory: more than 1e7 refused at once (10000 x 1001
+    # points; 12 x 10 nodes, --samples 400: 4401 x 3601), nothing written
+    big = tmp("surf_big.csv")
+    for args in (["--grid", "10000,1001"], ["--samples", "400"]):
+        rc, so, err = run(["surface", grid, "-o", big] + args, timeout=30)
+        check("surface %s over the limit" % " ".join(args), rc == 1 and "10000000" in err,
+              "%d %r" % (rc, err))
+    check("surface over the limit wrote nothing", not os.path.exists(big))
+    rc, so, err = run(["surface", grid, "--grid", "1000,1000", "--json"])
+    check("surface 1e6 samples", rc == 0 and json.loads(so)["samples"] == 1000000, err[:200])
+    rc, so, err = run(["surface", grid, "-o", tmp("surf.csv"), "--svg", tmp("surf.svg")])
+    check("surface -o X --svg Y", rc == 0 and svg_ok(tmp("surf.svg")) and
+          open(tmp("surf.csv")).readline() == "x,y,z\n", "%d %r" % (rc, err))
+
+
 def test_signals():
     """SIGINT, SIGTERM, SIGHUP while a streamed fit writes -o FILE: the
     temporary file is removed, FILE is not created, and the process still
@@ -1008,7 +1035,8 @@ def main():
                   test_inputs, test_malformed, test_exit_statuses, test_range_messages,
                   test_options, test_svg,
                   test_curve, test_streaming_identical, test_streaming_errors,
-                  test_streaming_memory, test_signals, test_same_output, test_edges_cli):
+                  test_streaming_memory, test_signals, test_same_output, test_surface_usage,
+                  test_edges_cli):
             try:
                 t()
             except Exception as e:  # a crash in one group is one failure, keep going

@@ -3,8 +3,6 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
 
-#include <sys/stat.h>
-
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -582,16 +580,6 @@ static int apply(cli_cmd cmd, const optdef *d, const char *name, const char *v, 
     return CLI_OK;
 }
 
-/* The same path, or two names of one existing file. */
-static int same_file(const char *a, const char *b)
-{
-    struct stat sa, sb;
-    if (strcmp(a, b) == 0)
-        return 1;
-    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev &&
-           sa.st_ino == sb.st_ino;
-}
-
 int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o)
 {
     unsigned bit = cmd == CLI_FIT ? F : cmd == CLI_CERTIFY ? C : V;
@@ -644,10 +632,8 @@ int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o)
         if (!(d->cmds & bit))
             return cli_usage(cmd, "option %s is not available for \"%s\"", d->name,
                              cli_cmd_name(cmd));
-        if (d->id == O_HELP) {
-            cli_print_help(cmd);
+        if (d->id == O_HELP)
             return CLI_HELP;
-        }
         const char *val = NULL;
         if (d->has_arg) {
             if (eq)
@@ -672,7 +658,7 @@ int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o)
     if (o->xcol && o->ycol && strcmp(o->xcol, o->ycol) == 0)
         return cli_usage(cmd, "--columns / --x / --y: X and Y must be different columns (both "
                               "\"%s\")", o->xcol);
-    if (o->out && o->svg && strcmp(o->out, "-") != 0 && same_file(o->out, o->svg))
+    if (o->out && o->svg && strcmp(o->out, "-") != 0 && cli_same_file(o->out, o->svg))
         return cli_usage(cmd, "-o and the plot name the same file (\"%s\"): the plot would replace "
                               "the samples", o->svg);
     if (o->svg) {

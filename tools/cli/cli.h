@@ -11,7 +11,7 @@
  *   sample.c       sampling a spline into sinks; growable point arrays
  *   table.c        reading DATA rows: options, columns by name, missing values
  *   data.c         reading DATA, explaining data and scheme errors
- *   fit_options.c  cli_opts -> ts_options for fit and certify
+ *   fit_options.c  cli_opts -> ts_options (fit, certify), ts_curve_options (curve)
  *   axis.c         date and log ticks of plots
  *   spline_json.c  the JSON report of a spline
  *   spline_plot.c  the SVG plot of a spline
@@ -151,7 +151,12 @@ const char *cli_extrap_name(ts_extrap e);
 #else
 #define CLI_PRINTF(a, b)
 #endif
-/* "trigspline: ..." on stderr. */
+/* Where cli_error, cli_usage and the option parsers write their messages:
+ * stderr, unless cli_set_messages gave another stream (NULL: back to stderr;
+ * the parser's fuzz harness, tests/fuzz/fuzz_cli.c, captures them). */
+void cli_set_messages(FILE *fp);
+FILE *cli_messages(void);
+/* "trigspline: ..." on cli_messages(). */
 void cli_error(const char *fmt, ...) CLI_PRINTF(1, 2);
 /* Map an I/O reader failure to an exit status (message printed). */
 int cli_report_io(const tsu_io_error *e);
@@ -207,6 +212,9 @@ typedef struct cli_out {
     tsu_out *o;
     FILE *direct;
 } cli_out;
+/* 1: the same path, or two names of one existing file (stat(2) only):
+ * -o and the plot must differ. */
+int cli_same_file(const char *a, const char *b);
 /* 0 or an errno (message in msg). */
 int cli_out_open(cli_out *c, const char *path, char *msg, size_t len);
 FILE *cli_out_file(const cli_out *c);
@@ -326,9 +334,14 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
 int cli_read_and_fit(const cli_opts *o, const ts_options *opt, cli_data *d, ts_spline **s);
 
 /* ---- fit_options.c --------------------------------------------------- */
-/* Fill opt from o (fit and certify).  Returns CLI_OK or CLI_USAGE (message
+/* The checks of options that depend on each other, after cli_parse; like
+ * it they read no file and print only on cli_messages().
+ * Fill opt from o (fit and certify).  Returns CLI_OK or CLI_USAGE (message
  * printed). */
 int cli_fit_options(const cli_opts *o, ts_options *opt);
+/* Fill co from o (curve; the box as given, whatever the data's dimension).
+ * Returns CLI_OK or CLI_USAGE (message printed). */
+int cli_curve_options(const cli_opts *o, ts_curve_options *co);
 /* The boundaries certify checks (after cli_fit_options succeeded): the
  * resolved shape and the lower / upper lines (*hl, *hu: present). */
 void cli_certify_bounds(const cli_opts *o, ts_shape *sh, ts_line *lo, int *hl, ts_line *up,
@@ -377,6 +390,18 @@ int cli_certify(cli_opts *o);
 int cli_curve(cli_opts *o);
 /* surface.c: the whole `surface` command, its own options (argv after it). */
 int cli_surface(int argc, char **argv);
+/* The surface command's options (docs/cli.md). */
+typedef struct cli_surface_opts {
+    const char *data, *out, *svg; /* svg: the plot's file, in format fmt */
+    cli_plot_format fmt;
+    int matrix_in, matrix_out, json, zero_twist;
+    ts_surface_options so;
+    size_t samples, grid_x, grid_y; /* samples 1 to 1e7; grid: 0 (none) or 2 to 1e7 each */
+} cli_surface_opts;
+/* Parse argv (after "surface") into o: CLI_OK, CLI_USAGE (message printed on
+ * cli_messages()) or CLI_HELP (--help given; not printed).  Allocates
+ * nothing, reads no file (stat(2) only, as cli_parse). */
+int cli_surface_parse(int argc, char **argv, cli_surface_opts *o);
 
 /* ---- overshoot.c ----------------------------------------------------- */
 /* The curve's range and its largest excursions beyond the data of an
@@ -409,7 +434,10 @@ void cli_print_main_help(void);
 
 /* ---- args.c ---------------------------------------------------------- */
 /* Parse argv (after the sub-command).  Returns CLI_OK, CLI_USAGE (message
- * printed) or CLI_HELP (help printed). */
+ * printed on cli_messages()) or CLI_HELP (--help given: the caller prints
+ * cli_print_help).  Only stat(2) is called (to tell whether -o and the plot
+ * name one file); nothing is read, written or printed elsewhere.  Call
+ * cli_opts_free afterwards whatever it returned. */
 int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o);
 void cli_opts_free(cli_opts *o);
 

@@ -76,21 +76,9 @@ static void box_line(cli_xy *a, double x0, double y0, double x1, double y1)
 int cli_curve(cli_opts *o)
 {
     int rc;
-    if (!o->svg && (o->title || o->show_control || o->points_only))
-        return cli_usage(o->cmd, "%s only applies to the plot (--svg FILE)",
-                         o->title ? "--title" : o->show_control ? "--show-control" : "--points-only");
-    if (o->show_control && o->points_only)
-        return cli_usage(o->cmd, "--show-control and --points-only do not fit together");
-    if (o->logy)
-        return cli_usage(o->cmd, "--logy is not available for curve (equal axes)");
-    if (o->alpha_set && o->alphas)
-        return cli_usage(o->cmd, "give --alpha or --alphas, not both");
-    if (o->beta_set && o->betas)
-        return cli_usage(o->cmd, "give --beta or --betas, not both");
-    if (o->margin_set && !o->box_set)
-        return cli_usage(o->cmd, "--margin only applies with --box");
-    if (o->slopes == TS_SLOPES_PERIODIC && !o->closed)
-        return cli_usage(o->cmd, "--slopes periodic needs --closed");
+    ts_curve_options co;
+    if ((rc = cli_curve_options(o, &co)) != CLI_OK)
+        return rc;
 
     cli_data d;
     if ((rc = cli_read_data(o, &d)) != CLI_OK)
@@ -99,28 +87,6 @@ int cli_curve(cli_opts *o)
     if (o->box_set && o->n_box / 2 > dim) {
         cli_data_free(&d);
         return cli_usage(o->cmd, "--box has 6 values but the data have 2 columns");
-    }
-    ts_curve_options co;
-    ts_curve_options_init(&co);
-    co.param = o->param;
-    co.closed = o->closed;
-    co.slopes = o->slopes;
-    co.alpha = o->alpha;
-    co.alphas = o->alphas;
-    co.n_alphas = o->n_alphas;
-    co.beta = o->beta;
-    co.betas = o->betas;
-    co.n_betas = o->n_betas;
-    co.margin = o->margin;
-    for (size_t k = 0; o->box_set && k < o->n_box / 2; k++) {
-        if (isfinite(o->box[2 * k])) {
-            co.has_lo[k] = 1;
-            co.lo[k] = o->box[2 * k];
-        }
-        if (isfinite(o->box[2 * k + 1])) {
-            co.has_hi[k] = 1;
-            co.hi[k] = o->box[2 * k + 1];
-        }
     }
     double *pts = malloc((n ? n : 1) * dim * sizeof *pts);
     if (!pts) {

@@ -122,8 +122,6 @@ int cli_fit(cli_opts *o)
     int rc = cli_fit_options(o, &opt);
     if (rc != CLI_OK)
         return rc;
-    if (o->at && strcmp(o->at, "-") == 0 && strcmp(o->data, "-") == 0)
-        return cli_usage(o->cmd, "DATA and --at cannot both be standard input");
     if (cli_can_stream(o))
         return cli_fit_stream(o, &opt);
 

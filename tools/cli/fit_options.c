@@ -1,5 +1,8 @@
-/* From the command-line options to the ts_options of fit and certify. */
+/* From the command-line options to the ts_options of fit and certify and
+ * the ts_curve_options of curve. */
 #include "cli.h"
+
+#include <string.h>
 
 /* Lines of a shape from --line / --lower / --upper (fit and certify). */
 static int resolve_lines(const cli_opts *o, ts_shape *sh, ts_line *lo, int *has_lo, ts_line *up,
@@ -142,6 +145,49 @@ int cli_fit_options(const cli_opts *o, ts_options *opt)
     opt->beta = o->beta;
     opt->betas = o->betas;
     opt->n_betas = o->n_betas;
+    if (o->at && strcmp(o->at, "-") == 0 && strcmp(o->data, "-") == 0)
+        return cli_usage(o->cmd, "DATA and --at cannot both be standard input");
+    return CLI_OK;
+}
+
+int cli_curve_options(const cli_opts *o, ts_curve_options *co)
+{
+    ts_curve_options_init(co);
+    if (!o->svg && (o->title || o->show_control || o->points_only))
+        return cli_usage(o->cmd, "%s only applies to the plot (--svg FILE)",
+                         o->title ? "--title" : o->show_control ? "--show-control" : "--points-only");
+    if (o->show_control && o->points_only)
+        return cli_usage(o->cmd, "--show-control and --points-only do not fit together");
+    if (o->logy)
+        return cli_usage(o->cmd, "--logy is not available for curve (equal axes)");
+    if (o->alpha_set && o->alphas)
+        return cli_usage(o->cmd, "give --alpha or --alphas, not both");
+    if (o->beta_set && o->betas)
+        return cli_usage(o->cmd, "give --beta or --betas, not both");
+    if (o->margin_set && !o->box_set)
+        return cli_usage(o->cmd, "--margin only applies with --box");
+    if (o->slopes == TS_SLOPES_PERIODIC && !o->closed)
+        return cli_usage(o->cmd, "--slopes periodic needs --closed");
+    co->param = o->param;
+    co->closed = o->closed;
+    co->slopes = o->slopes;
+    co->alpha = o->alpha;
+    co->alphas = o->alphas;
+    co->n_alphas = o->n_alphas;
+    co->beta = o->beta;
+    co->betas = o->betas;
+    co->n_betas = o->n_betas;
+    co->margin = o->margin;
+    for (size_t k = 0; o->box_set && k < o->n_box / 2; k++) {
+        if (isfinite(o->box[2 * k])) {
+            co->has_lo[k] = 1;
+            co->lo[k] = o->box[2 * k];
+        }
+        if (isfinite(o->box[2 * k + 1])) {
+            co->has_hi[k] = 1;
+            co->hi[k] = o->box[2 * k + 1];
+        }
+    }
     return CLI_OK;
 }
 

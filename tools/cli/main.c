@@ -40,6 +40,7 @@ int main(int argc, char **argv)
     int rc = cli_parse(cmd, argc - 2, argv + 2, &o);
     if (rc == CLI_HELP) {
         cli_opts_free(&o);
+        cli_print_help(cmd);
         return fflush(stdout) == 0 ? CLI_OK : CLI_IO;
     }
     if (rc == CLI_OK) {

@@ -5,24 +5,38 @@
 #include <stdio.h>
 #include <string.h>
 
+static FILE *msg_stream; /* NULL: stderr */
+
+void cli_set_messages(FILE *fp)
+{
+    msg_stream = fp;
+}
+
+FILE *cli_messages(void)
+{
+    return msg_stream ? msg_stream : stderr;
+}
+
 void cli_error(const char *fmt, ...)
 {
+    FILE *fp = cli_messages();
     va_list ap;
-    fputs("trigspline: ", stderr);
+    fputs("trigspline: ", fp);
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    vfprintf(fp, fmt, ap);
     va_end(ap);
-    fputc('\n', stderr);
+    fputc('\n', fp);
 }
 
 int cli_usage(cli_cmd cmd, const char *fmt, ...)
 {
+    FILE *fp = cli_messages();
     va_list ap;
-    fprintf(stderr, "trigspline %s: ", cli_cmd_name(cmd));
+    fprintf(fp, "trigspline %s: ", cli_cmd_name(cmd));
     va_start(ap, fmt);
-    vfprintf(stderr, fmt, ap);
+    vfprintf(fp, fmt, ap);
     va_end(ap);
-    fprintf(stderr, "\nTry 'trigspline %s --help' for more information.\n", cli_cmd_name(cmd));
+    fprintf(fp, "\nTry 'trigspline %s --help' for more information.\n", cli_cmd_name(cmd));
     return CLI_USAGE;
 }
 

@@ -14,6 +14,15 @@
 #include <stdio.h>
 #include <string.h>
 
+int cli_same_file(const char *a, const char *b)
+{
+    struct stat sa, sb;
+    if (strcmp(a, b) == 0)
+        return 1;
+    return stat(a, &sa) == 0 && stat(b, &sb) == 0 && sa.st_dev == sb.st_dev &&
+           sa.st_ino == sb.st_ino;
+}
+
 int cli_out_open(cli_out *c, const char *path, char *msg, size_t len)
 {
     struct stat st;

@@ -6,24 +6,23 @@
 #include "cli.h"
 
 #include <errno.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 
-typedef struct surf_opts {
-    const char *data, *out, *svg; /* svg: the plot's file, in format fmt */
-    cli_plot_format fmt;
-    int matrix_in, matrix_out, json, zero_twist;
-    ts_surface_options so;
-    size_t samples, grid_x, grid_y;
-} surf_opts;
-
 static const char *const shape_names[] = {"none", "positive", "bounds", "planes", "range"};
 
-static int usage(const char *what, const char *arg)
+static int usage(const char *fmt, ...) CLI_PRINTF(1, 2);
+static int usage(const char *fmt, ...)
 {
-    fprintf(stderr, "trigspline surface: %s%s%s\n", what, arg ? " " : "", arg ? arg : "");
-    fprintf(stderr, "Try 'trigspline surface --help' for more information.\n");
+    FILE *fp = cli_messages();
+    va_list ap;
+    fputs("trigspline surface: ", fp);
+    va_start(ap, fmt);
+    vfprintf(fp, fmt, ap);
+    va_end(ap);
+    fprintf(fp, "\nTry 'trigspline surface --help' for more information.\n");
     return CLI_USAGE;
 }
 
@@ -45,6 +44,7 @@ static void print_help(void)
            "  --zero-twist           twist 0 instead of the estimate\n"
            "  --samples N            output N samples per patch side (default 4)\n"
            "  --grid NX,NY           output a uniform NX x NY grid instead\n"
+           "                         (at most 10000000 points in all)\n"
            "  --matrix-out           write samples in the matrix layout\n"
            "  --json                 write the report (JSON) instead of samples\n"
            "  --svg|--png|--pdf FILE heatmap with contours, nodes and active patches\n"
@@ -97,17 +97,15 @@ static int parse_size(const char *s, size_t *v)
     return 1;
 }
 
-static int parse_args(int argc, char **argv, surf_opts *o)
+int cli_surface_parse(int argc, char **argv, cli_surface_opts *o)
 {
     memset(o, 0, sizeof *o);
     ts_surface_options_init(&o->so);
     o->samples = 4;
     for (int k = 0; k < argc; k++) {
         const char *a = argv[k], *v = k + 1 < argc ? argv[k + 1] : NULL;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
-            print_help();
+        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0)
             return CLI_HELP;
-        }
         if (strcmp(a, "--matrix") == 0) {
             o->matrix_in = 1;
             continue;
@@ -126,7 +124,7 @@ static int parse_args(int argc, char **argv, surf_opts *o)
         }
         if (a[0] == '-' && a[1] != '\0') {
             if (!v)
-                return usage("this option needs a value:", a);
+                return usage("this option needs a value: %s", a);
             k++;
             int ok = 1;
             if (strcmp(a, "--shape") == 0) {
@@ -167,6 +165,8 @@ static int parse_args(int argc, char **argv, surf_opts *o)
                          o->grid_x >= 2 && o->grid_y >= 2;
                 }
             } else if (strcmp(a, "-o") == 0) {
+                if (!*v)
+                    return usage("%s: empty file name", a);
                 o->out = v;
             } else if (strcmp(a, "--svg") == 0 || strcmp(a, "--png") == 0 ||
                        strcmp(a, "--pdf") == 0) {
@@ -174,28 +174,31 @@ static int parse_args(int argc, char **argv, surf_opts *o)
                  * another is refused (no SVG silently written into a .png) */
                 static const char *const ext[3] = {".svg", ".png", ".pdf"};
                 const char *dot = strrchr(v, '.');
+                if (!*v || strcmp(v, "-") == 0)
+                    return usage("%s needs a file name", a);
                 o->fmt = strcmp(a, "--svg") == 0   ? CLI_PLOT_SVG
                          : strcmp(a, "--png") == 0 ? CLI_PLOT_PNG
                                                    : CLI_PLOT_PDF;
                 for (int e = 0; e < 3; e++)
                     if (dot && e != (int)o->fmt && strcasecmp(dot, ext[e]) == 0)
-                        return usage("the plot's extension contradicts", a);
+                        return usage("the plot's extension contradicts %s", a);
                 o->svg = v;
             } else {
-                return usage("unknown option", a);
+                return usage("unknown option %s", a);
             }
-            if (!ok) {
-                fprintf(stderr, "trigspline surface: bad value \"%s\" for %s\n", v, a);
-                return CLI_USAGE;
-            }
+            if (!ok)
+                return usage("bad value \"%s\" for %s", v, a);
             continue;
         }
         if (o->data)
-            return usage("more than one DATA argument:", a);
+            return usage("more than one DATA argument: %s", a);
         o->data = a;
     }
     if (!o->data)
-        return usage("missing DATA", NULL);
+        return usage("missing DATA");
+    if (o->out && o->svg && strcmp(o->out, "-") != 0 && cli_same_file(o->out, o->svg))
+        return usage("-o and the plot name the same file (\"%s\"): the plot would replace the "
+                     "samples", o->svg);
     return CLI_OK;
 }
 
@@ -250,7 +253,7 @@ static size_t find(const double *v, size_t n, double key)
     return lo;
 }
 
-static int read_grid(const surf_opts *o, surf_grid *g)
+static int read_grid(const cli_surface_opts *o, surf_grid *g)
 {
     memset(g, 0, sizeof *g);
     g->name = strcmp(o->data, "-") == 0 ? "<stdin>" : o->data;
@@ -517,13 +520,27 @@ static int render_svg(const surf_grid *g, const ts_surface *s, const ts_patch_re
 /* ---- the command ------------------------------------------------------------ */
 int cli_surface(int argc, char **argv)
 {
-    surf_opts o;
-    int rc = parse_args(argc, argv, &o);
+    cli_surface_opts o;
+    int rc = cli_surface_parse(argc, argv, &o);
+    if (rc == CLI_HELP) {
+        print_help();
+        return fflush(stdout) == 0 ? CLI_OK : CLI_IO;
+    }
     if (rc != CLI_OK)
-        return rc == CLI_HELP ? (fflush(stdout) == 0 ? CLI_OK : CLI_IO) : rc;
+        return rc;
     surf_grid g;
     if ((rc = read_grid(&o, &g)) != CLI_OK)
         return rc;
+    /* every sample is held in memory (text, JSON range, plot): a documented limit */
+    double px = o.grid_x ? (double)o.grid_x : (double)(g.nx - 1) * (double)o.samples + 1.0;
+    double py = o.grid_y ? (double)o.grid_y : (double)(g.ny - 1) * (double)o.samples + 1.0;
+    if (px * py > CLI_MAX_HELD_SAMPLES) {
+        cli_error("%s: %.0f x %.0f sample points exceed the limit of %u that surface holds in "
+                  "memory; lower --samples or --grid",
+                  g.name, px, py, CLI_MAX_HELD_SAMPLES);
+        grid_free(&g);
+        return CLI_USAGE;
+    }
     ts_surface *s = NULL;
     ts_error e;
     ts_status st = ts_surface_new(g.x, g.nx, g.y, g.ny, g.z, &o.so, &s, &e);
