@@ -75,35 +75,42 @@ TS_ALWAYS_INLINE size_t gallop(const double *xs, size_t n, size_t i, double x)
 
 /* ---- stage ----------------------------------------------------------- */
 
-typedef struct fast_b4 {
-    double b0, b1, b2, b3;
-} fast_b4;
-
 /* Per query: θ measured from both ends, tu = (x − x_i)·w and tv = (x_{i+1} − x)·w
- * (w = (π/2)/h_i, dθ/dx; the products eval.c forms), and B0..B3.  The
- * evaluation uses the nearer end, as eval.c: ϑ = min(tu, tv) <= π/4 and, from
- * the right end, the control values reversed (docs/method.md §2: A3(θ) = A0(π/2 − θ),
+ * (w = (π/2)/h_i, dθ/dx; the products eval.c forms), and B0..B3, one array
+ * each (the vector loop loads them without shuffles).  The evaluation uses
+ * the nearer end, as eval.c: ϑ = min(tu, tv) <= π/4 and, from the right end,
+ * the control values reversed (docs/method.md §2: A3(θ) = A0(π/2 − θ),
  * A2(θ) = A1(π/2 − θ)) and dϑ/dθ = −1.  Choosing in the vector loop keeps
- * this loop free of data-dependent branches. */
+ * this loop free of data-dependent branches.  A flat interval (B0 = B1 = B2
+ * = B3) is staged with w = 0: ϑ = 0 gives A = (1, 0, 0, 0) exactly, so its
+ * value is B0 (Σ A_l need not round to 1 elsewhere) and its derivatives 0,
+ * without a test per query. */
 typedef struct fast_stage {
     double tu[TS_FAST_BLOCK], tv[TS_FAST_BLOCK], w[TS_FAST_BLOCK]; /* w: derivatives only */
-    fast_b4 B[TS_FAST_BLOCK];
+    double b0[TS_FAST_BLOCK], b1[TS_FAST_BLOCK], b2[TS_FAST_BLOCK], b3[TS_FAST_BLOCK];
 } fast_stage;
 
-TS_ALWAYS_INLINE fast_b4 control4(const ts_spline *sp, size_t i)
+typedef struct fast_iv {
+    double x0, x1, w, b0, b1, b2, b3;
+} fast_iv;
+
+TS_ALWAYS_INLINE fast_iv fast_interval(const ts_spline *sp, size_t i)
 {
-    fast_b4 b = {sp->f[i], sp->b1[i], sp->b2[i], sp->f[i + 1]};
-    return b;
+    fast_iv v = {sp->x[i], sp->x[i + 1], TS_HALF_PI / sp->h[i], sp->f[i], sp->b1[i], sp->b2[i], sp->f[i + 1]};
+    v.w = v.b0 == v.b1 && v.b1 == v.b2 && v.b2 == v.b3 ? 0.0 : v.w;
+    return v;
 }
 
-TS_ALWAYS_INLINE void stage_one(fast_stage *st, size_t j, double x, double x0, double x1, double w,
-                                fast_b4 b, int want_w)
+TS_ALWAYS_INLINE void stage_one(fast_stage *st, size_t j, double x, const fast_iv *v, int want_w)
 {
-    st->tu[j] = (x - x0) * w;
-    st->tv[j] = (x1 - x) * w;
+    st->tu[j] = (x - v->x0) * v->w;
+    st->tv[j] = (v->x1 - x) * v->w;
     if (want_w)
-        st->w[j] = w;
-    st->B[j] = b;
+        st->w[j] = v->w;
+    st->b0[j] = v->b0;
+    st->b1[j] = v->b1;
+    st->b2[j] = v->b2;
+    st->b3[j] = v->b3;
 }
 
 /* Sorted q[0..nb), xs[i] <= q[0]: walk the cursor; the current interval's
@@ -111,24 +118,20 @@ TS_ALWAYS_INLINE void stage_one(fast_stage *st, size_t j, double x, double x0, d
 TS_ALWAYS_INLINE size_t stage_sorted(const ts_spline *sp, const double *q, size_t nb, int want_w,
                                      fast_stage *st, size_t i)
 {
-    const double *xs = sp->x, *h = sp->h;
+    const double *xs = sp->x;
     size_t n = sp->n;
-    double x0 = xs[i], x1 = xs[i + 1], wi = TS_HALF_PI / h[i];
-    double next = i + 1 < n ? x1 : (double)INFINITY; /* the last interval never advances */
-    fast_b4 b = control4(sp, i);
+    fast_iv v = fast_interval(sp, i);
+    double next = i + 1 < n ? v.x1 : (double)INFINITY; /* the last interval never advances */
     for (size_t j = 0; j < nb; j++) {
         double x = q[j];
         if (x >= next) {
             i++;
             if (i + 1 < n && xs[i + 1] <= x)
                 i = gallop(xs, n, i, x);
-            x0 = xs[i];
-            x1 = xs[i + 1];
-            next = i + 1 < n ? x1 : (double)INFINITY;
-            wi = TS_HALF_PI / h[i];
-            b = control4(sp, i);
+            v = fast_interval(sp, i);
+            next = i + 1 < n ? v.x1 : (double)INFINITY;
         }
-        stage_one(st, j, x, x0, x1, wi, b, want_w);
+        stage_one(st, j, x, &v, want_w);
     }
     return i;
 }
@@ -243,7 +246,8 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
             geo_iv g = geo_interval(sp, i);
             geo_stage_one(gs, j, q[j], &g, i);
         } else {
-            stage_one(st, j, q[j], xs[i], xs[i + 1], TS_HALF_PI / sp->h[i], control4(sp, i), want_w);
+            fast_iv v = fast_interval(sp, i);
+            stage_one(st, j, q[j], &v, want_w);
         }
     }
     *cur = i;
@@ -260,11 +264,11 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
 #define TS_FAST_NEAR(st, j)                                                        \
     double tu = (st)->tu[j], tv = (st)->tv[j];                                     \
     int left = tu <= tv;                                                           \
-    const fast_b4 *Bj = &(st)->B[j];                                               \
-    double B0 = left ? Bj->b0 : Bj->b3, B1 = left ? Bj->b1 : Bj->b2;               \
-    double B2 = left ? Bj->b2 : Bj->b1, B3 = left ? Bj->b3 : Bj->b0;               \
+    double b0 = (st)->b0[j], b1 = (st)->b1[j], b2 = (st)->b2[j], b3 = (st)->b3[j]; \
+    double B0 = left ? b0 : b3, B1 = left ? b1 : b2;                               \
+    double B2 = left ? b2 : b1, B3 = left ? b3 : b0;                               \
     double s, c, ms, mc;                                                           \
-    fast_trig(left ? tu : tv, &s, &c, &ms, &mc)
+    fast_trig(tv < tu ? tv : tu, &s, &c, &ms, &mc) /* minpd: left ? tu : tv */
 
 TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, double *y)
 {
@@ -272,10 +276,8 @@ TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, dou
         for (size_t j = 0; j < nb; j++) {
             TS_FAST_NEAR(st, j);
             /* docs/method.md §2, the expressions of basis.c */
-            double v = (ms * ms * ms) * B0 + (s * ms * (3.0 - s)) * B1 +
-                       (c * mc * (3.0 - c)) * B2 + (mc * mc * mc) * B3;
-            /* a flat interval is constant (Σ A_l need not round to 1) */
-            y[j] = (B0 == B1 && B1 == B2 && B2 == B3) ? B0 : v;
+            y[j] = (ms * ms * ms) * B0 + (s * ms * (3.0 - s)) * B1 + (c * mc * (3.0 - c)) * B2 +
+                   (mc * mc * mc) * B3;
         }
     } else if (deriv == 1) {
         for (size_t j = 0; j < nb; j++) {
@@ -470,7 +472,10 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
             st.p.tu[j] = st.p.tu[0];
             st.p.tv[j] = st.p.tv[0];
             st.p.w[j] = deriv > 0 ? st.p.w[0] : 0.0;
-            st.p.B[j] = st.p.B[0];
+            st.p.b0[j] = st.p.b0[0];
+            st.p.b1[j] = st.p.b1[0];
+            st.p.b2[j] = st.p.b2[0];
+            st.p.b3[j] = st.p.b3[0];
         }
         eval_block(deriv, &st.p, TS_FAST_BLOCK, yt);
         for (size_t j = 0; j < nb; j++)

@@ -44,7 +44,8 @@
  * structure() checks the contract of ts__fast_batch (prefix up to the first
  * block with a query outside, cursor, kernels chosen by number), knots
  * exactly, the geometric form's prefix and knots, sparse sorted queries (galloping) and
- * ts_eval_batch / ts_eval_batch_mt against the kernel.
+ * ts_eval_batch / ts_eval_batch_mt against the kernel.  flat() checks flat
+ * intervals exactly (value f_i, derivatives 0).
  */
 #include "th.h"
 #include "common/th_rng.h"
@@ -312,6 +313,56 @@ static void accuracy(void)
                NREF, S[isa].worst_ref[0], S[isa].worst_ref[1], S[isa].worst_ref[2], S[isa].worst_plain[0],
                S[isa].worst_plain[1], S[isa].worst_plain[2]);
         CHECK(S[isa].count[0] >= 10000000 / TF_SCALE);
+    }
+}
+
+/* Flat intervals (B0 = B1 = B2 = B3 = f_i: constant data, zero slopes): the
+ * value is f_i exactly and both derivatives 0 exactly (docs/method.md §2: a
+ * constant is reproduced; in floating point Σ A_l need not round to 1, so a
+ * kernel that summed A_l·B_l there would be off by an ulp at some queries),
+ * for every kernel, form and order of the queries. */
+static void flat(void)
+{
+    enum { NP = 41, M = 4000 };
+    static double x[NP], f[NP], q[M], y[M];
+    th_seed(0x13198A2E03707344u);
+    x[0] = 0.0;
+    for (size_t i = 1; i < NP; i++)
+        x[i] = x[i - 1] + 0.05 + th_unit();
+    for (int c = 0; c < 3; c++) {
+        const double level[3] = {0.1, 3.3, -7.7e5}; /* not sums of powers of two */
+        for (size_t i = 0; i < NP; i++)
+            f[i] = level[c];
+        for (int form = 0; form < 2; form++) {
+            ts_options o;
+            ts_options_init(&o);
+            o.form = form ? TS_FORM_C1 : TS_FORM_PAPER;
+            ts_spline *s = NULL;
+            ts_error e;
+            CHECK(ts_spline_new(x, f, NP, &o, &s, &e) == TS_OK);
+            if (!s)
+                continue;
+            for (int sorted = 0; sorted <= 1; sorted++) {
+                for (size_t j = 0; j < M; j++)
+                    q[j] = x[NP - 1] * th_unit();
+                if (sorted)
+                    qsort(q, M, sizeof *q, cmp_double);
+                for (int isa = 0; isa <= 2; isa++) {
+                    if (!have_kernel(isa))
+                        continue;
+                    for (int deriv = 0; deriv <= 2; deriv++) {
+                        ts_cursor cur = TS_CURSOR_INIT;
+                        CHECK(ts__fast_batch_isa(s, deriv, q, M, y, &cur, isa, NULL) == 1);
+                        long bad = 0;
+                        for (size_t j = 0; j < M; j++)
+                            bad += !(y[j] == (deriv ? 0.0 : level[c]));
+                        CHECKF(bad == 0, "flat %g, form %d, kernel %d, deriv %d, %s: %ld queries not exact",
+                               level[c], form, isa, deriv, sorted ? "sorted" : "random", bad);
+                    }
+                }
+            }
+            ts_spline_free(s);
+        }
     }
 }
 
@@ -673,5 +724,7 @@ int main(void)
     accuracy();
     TH_CASE("geometric");
     geometric();
+    TH_CASE("flat");
+    flat();
     return th_report("test_fast");
 }
