@@ -68,8 +68,9 @@ size_t ts__search(const double *xs, size_t n, double x, ts_cursor *cur)
         if (i < n && xs[i] <= x) {
             if (x < xs[i + 1] || (i + 1 == n))
                 return i;
-            /* sorted queries: try the next interval before searching */
-            if (i + 2 <= n && (x < xs[i + 2] || i + 2 == n)) {
+            /* sorted queries: try the next interval before searching
+             * (i + 1 < n here) */
+            if (x < xs[i + 2] || i + 2 == n) {
                 cur->interval = i + 1;
                 return i + 1;
             }

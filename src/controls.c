@@ -75,10 +75,6 @@ static void controls_c1_one(ts_spline *sp, size_t i)
 void ts__controls(ts_spline *sp, size_t i0, size_t i1)
 {
     size_t n = sp->n;
-    if (i1 > n)
-        i1 = n;
-    if (i0 >= i1)
-        return;
     if (sp->form == TS_FORM_C1) {
         size_t m0 = i0 > 0 ? i0 : 1, m1 = i1 < n ? i1 : n - 1; /* both neighbours */
         if (i0 == 0)

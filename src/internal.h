@@ -336,18 +336,21 @@ double ts__theta_of(double t);
 /* ==== L1 ============================================================ */
 
 /* ---- slopes.c (docs/method.md §6) ---------------------------------------------- */
-/* Unchecked: x strictly increasing and finite, np >= 2, method valid. */
+/* Unchecked: x strictly increasing and finite, np >= 2, method valid and not
+ * TS_SLOPES_USER (every caller checks its options first). */
 ts_status ts__slopes(ts_slopes method, const double *x, const double *f, size_t np,
                      double *d, ts_error *err);
-/* d[p0..p1) only, the same values as ts__slopes (which checks method, periodic
- * ends and finiteness; this does not).  For construction in blocks. */
+/* d[p0..p1) only (p0 < p1 <= np), the same values as ts__slopes (which
+ * checks the periodic ends and finiteness; this does not).  For
+ * construction in blocks. */
 void ts__slopes_range(ts_slopes method, const double *x, const double *f, size_t np, double *d,
                       size_t p0, size_t p1);
 
 /* ---- controls.c (docs/method.md §3, §4) ---------------------------------------- */
 /* Recompute b1, b2 (and xc1, xc2 in the geometric form) of intervals
- * i0..i1-1 from x, f, d, alpha, beta, per the form.  For the C¹ form the
- * knots' d̂ depend on both neighbours, so callers pass the widened range. */
+ * i0..i1-1 (i0 < i1 <= n) from x, f, d, alpha, beta, per the form.  For the
+ * C¹ form the knots' d̂ depend on both neighbours, so callers pass the
+ * widened range. */
 void ts__controls(ts_spline *sp, size_t i0, size_t i1);
 /* The four control values of interval i. */
 static inline void ts__B(const ts_spline *sp, size_t i, double B[4])

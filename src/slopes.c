@@ -118,9 +118,7 @@ static void interior(const double *x, const double *f, size_t n, double *d,
                      void (*weights)(const double *, size_t, double *, double *), size_t p0,
                      size_t p1)
 {
-    size_t lo = p0 > 1 ? p0 : 1, hi = p1 < n ? p1 : n;
-    if (lo >= hi)
-        return;
+    size_t lo = p0 > 1 ? p0 : 1, hi = p1 < n ? p1 : n; /* lo <= n: p0 <= n */
     double Dl = secant(x, f, lo - 1);
     for (size_t i = lo; i < hi; i++) {
         double Dr = secant(x, f, i), w0, w1;
@@ -270,10 +268,6 @@ void ts__slopes_range(ts_slopes method, const double *x, const double *f, size_t
                       size_t p0, size_t p1)
 {
     size_t n = np - 1;
-    if (p1 > np)
-        p1 = np;
-    if (p0 >= p1)
-        return;
     if (n == 1) { /* docs/method.md §6: two points */
         double D = secant(x, f, 0);
         for (size_t i = p0; i < p1; i++)
@@ -315,10 +309,6 @@ ts_status ts__slopes(ts_slopes method, const double *x, const double *f, size_t 
                      double *d, ts_error *err)
 {
     size_t n = np - 1;
-    if (!((int)method >= 0 && (int)method < TS_SLOPES_COUNT_) || method == TS_SLOPES_USER) {
-        ts__error_set(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
-        return TS_ERR_OPTION;
-    }
     if (method == TS_SLOPES_PERIODIC && f[0] != f[n]) {
         ts__error_set(err, TS_ERR_PERIODIC, n, TS_WHERE_POINT);
         return TS_ERR_PERIODIC;
@@ -332,6 +322,30 @@ ts_status ts__slopes(ts_slopes method, const double *x, const double *f, size_t 
         i++;
     ts__error_set(err, TS_ERR_SLOPE_OVERFLOW, i, TS_WHERE_POINT);
     return TS_ERR_SLOPE_OVERFLOW;
+}
+
+/* Where inputs_ok failed, its checks in order: the first offender. */
+static ts_status first_offender(const double *x, const double *f, size_t np, size_t *idx)
+{
+    size_t i;
+    for (i = 0; i < np; i++) {
+        if (!isfinite(x[i]) || !isfinite(f[i])) {
+            *idx = i;
+            return TS_ERR_NONFINITE;
+        }
+    }
+    for (i = 1; i < np; i++) {
+        if (!(x[i] > x[i - 1])) {
+            *idx = i;
+            return TS_ERR_UNSORTED;
+        }
+    }
+    /* the one failure of inputs_ok left (as ts_spline_new): a width
+     * overflows, so this loop stops before np */
+    for (i = 1; isfinite(x[i] - x[i - 1]); i++)
+        ;
+    *idx = i;
+    return TS_ERR_WIDTH;
 }
 
 ts_status ts_slopes_compute(ts_slopes method, const double *x, const double *f,
@@ -348,28 +362,9 @@ ts_status ts_slopes_compute(ts_slopes method, const double *x, const double *f,
         st = TS_ERR_TOO_FEW;
         goto fail;
     }
-    if (!inputs_ok(x, f, n_points)) { /* the checks in order: the first offender */
-        for (size_t i = 0; i < n_points; i++) {
-            if (!isfinite(x[i]) || !isfinite(f[i])) {
-                st = TS_ERR_NONFINITE;
-                idx = i;
-                goto fail;
-            }
-        }
-        for (size_t i = 1; i < n_points; i++) {
-            if (!(x[i] > x[i - 1])) {
-                st = TS_ERR_UNSORTED;
-                idx = i;
-                goto fail;
-            }
-        }
-        for (size_t i = 1; i < n_points; i++) {
-            if (!isfinite(x[i] - x[i - 1])) { /* as ts_spline_new: a width overflows */
-                st = TS_ERR_WIDTH;
-                idx = i;
-                goto fail;
-            }
-        }
+    if (!inputs_ok(x, f, n_points)) {
+        st = first_offender(x, f, n_points, &idx);
+        goto fail;
     }
     if (!((int)method >= 0 && (int)method < TS_SLOPES_COUNT_) || method == TS_SLOPES_USER) {
         st = TS_ERR_OPTION;

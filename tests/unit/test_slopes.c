@@ -646,10 +646,8 @@ static void test_errors(void)
     CHECK(e.status == TS_OK && e.index == TS_NO_INDEX && e.where == TS_WHERE_NONE);
     CHECK(ts_slopes_compute(TS_SLOPES_HARMONIC, x, f, 6, d, NULL) == TS_OK);
 
-    /* the internal entry point: unchecked data, but the method and the
-     * periodic condition are still refused */
-    EXPECT_ERR(ts__slopes(TS_SLOPES_USER, x, f, 6, d, &e_), TS_ERR_OPTION, TS_NO_INDEX,
-               TS_WHERE_NONE);
+    /* the internal entry point: unchecked data and method (its callers
+     * check their options), but the periodic condition is still refused */
     EXPECT_ERR(ts__slopes(TS_SLOPES_PERIODIC, x, f, 6, d, &e_), TS_ERR_PERIODIC, 5,
                TS_WHERE_POINT);
     CHECK(ts__slopes(TS_SLOPES_MAKIMA, x, f, 6, d, NULL) == TS_OK);
