@@ -84,24 +84,24 @@ static double geo_bracketed(double kappa, double u)
     return phi;
 }
 
-/* X̂(φ) = u as the batch kernel solves it (internal.h: Halley from a model
- * root with the polynomial sine and cosine, until a step is below 2^-20 φ);
- * the bracketed iteration above where that does not converge in 8 steps
- * (a_i very near a*, u near 1/2). */
+/* X̂(φ) = u as the batch kernel solves it (ts__geo_root); the bracketed
+ * iteration above where that does not converge (a_i very near a*, u near
+ * 1/2).  sc: sin, cos, 1 − sin, 1 − cos at the root. */
+static double geo_solve_sc(double kappa, double u, double sc[4])
+{
+    double phi = !(u > 0.0) ? 0.0 : u >= 0.5 ? 0.25 * TS_PI : ts__geo_root(u, kappa, sc);
+    if (phi >= 0.0 && u > 0.0 && u < 0.5)
+        return phi;
+    if (phi < 0.0)
+        phi = geo_bracketed(kappa, u);
+    ts__sincos_q(phi, &sc[0], &sc[1], &sc[2], &sc[3]);
+    return phi;
+}
+
 static double geo_solve(double kappa, double u)
 {
-    if (!(u > 0.0))
-        return 0.0;
-    if (u >= 0.5)
-        return 0.25 * TS_PI;
-    double phi = ts__geo_start(u, kappa), s, c, ms, mc;
-    for (int it = 0; it < 8; it++) {
-        double next = ts__geo_halley(phi, kappa, u, &s, &c, &ms, &mc);
-        if (fabs(next - phi) <= 0x1p-20 * next)
-            return next;
-        phi = next;
-    }
-    return geo_bracketed(kappa, u);
+    double sc[4];
+    return geo_solve_sc(kappa, u, sc);
 }
 
 /* Value and derivatives in u = (x − x_i)/h (so h² never under- or
@@ -134,15 +134,6 @@ static void geo_side_eval_u(const geo_side *g, double phi, double sign, int want
     out[2] = (Ypp * Xp - Yp * Xpp) / (Xp * Xp * Xp);
 }
 
-static void geo_side_eval(const geo_side *g, double phi, double sign, int want, double out[3])
-{
-    geo_side_eval_u(g, phi, sign, want, out);
-    if (want > 0)
-        out[1] = out[1] / g->h;
-    if (want > 1)
-        out[2] = out[2] / g->h / g->h;
-}
-
 void ts__geo_eval(const ts_spline *sp, size_t i, double x, int want, double out[3])
 {
     double x0 = sp->x[i], x1 = sp->x[i + 1];
@@ -161,12 +152,15 @@ void ts__geo_eval(const ts_spline *sp, size_t i, double x, int want, double out[
             out[2] = e[2] / g.h / g.h;
         return;
     }
-    double dl = x - x0, dr = x1 - x;
+    /* inside: the batch kernel's solve and expressions (internal.h) */
+    if (ts__geo_in(sp, i, x, want, out))
+        return;
+    double dl = x - x0, dr = x1 - x, sc[4];
     int right = dr < dl;
     geo_side_init(sp, i, right, &g);
-    double u = (right ? dr : dl) / g.h;
-    double phi = geo_solve(g.kappa, u);
-    geo_side_eval(&g, phi, right ? -1.0 : 1.0, want, out);
+    (void)geo_solve_sc(g.kappa, (right ? dr : dl) / g.h, sc);
+    for (int k = 0; k <= want; k++)
+        out[k] = ts__geo_y(k, g.F0, g.F1, g.D0, g.D1, g.h, g.kappa, right, sc[0], sc[1], sc[2], sc[3]);
 }
 
 /* 12-point Gauss–Legendre nodes and weights on [−1, 1] (positive half),
