@@ -208,6 +208,25 @@ static double geo_whole(const ts_spline *sp, size_t i, int k)
            (kk * sp->d[i] - kk * sp->d[i + 1]) * (0.4 * hs - Q0 * ks);
 }
 
+/* geo_whole at k = 0 (ldexp by 0 is the identity) for i in [i0, i1), into
+ * cum[i + 1]: the same operations, in a loop that vectorises. */
+TS_VECTOR_LOOP static void geo_wholes(const double *restrict alpha, const double *restrict beta,
+                                      const double *restrict h, const double *restrict f,
+                                      const double *restrict d, double *restrict cum, size_t i0,
+                                      size_t i1)
+{
+    const double Q0 = 56.0 / 5.0 - 111.0 * TS_PI / 32.0;
+    for (size_t i = i0; i < i1; i++) {
+        double kk = 2.0 / (3.0 * TS_PI * (alpha[i] + beta[i])) * h[i];
+        cum[i + 1] = 0.5 * h[i] * (f[i] + f[i + 1]) + (kk * d[i] - kk * d[i + 1]) * (0.4 * h[i] - Q0 * kk);
+    }
+}
+
+void ts__geo_wholes(const ts_spline *sp, size_t i0, size_t i1, double *cum)
+{
+    geo_wholes(sp->alpha, sp->beta, sp->h, sp->f, sp->d, cum, i0, i1);
+}
+
 double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k)
 {
     double x0 = sp->x[i], x1 = sp->x[i + 1];
@@ -224,14 +243,22 @@ double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k)
     return right ? geo_whole(sp, i, k) - part : part;
 }
 
-double ts__geo_integral(const ts_spline *sp, size_t i, double x)
+/* Every alpha[i] + beta[i] >= amin, i in [i0, i1) (NaN fails). */
+TS_VECTOR_LOOP static int all_at_least(const double *restrict alpha, const double *restrict beta,
+                                       size_t i0, size_t i1, double amin)
 {
-    return ts__geo_integral_scaled(sp, i, x, 0);
+    double low = 0.0; /* a double flag: this form vectorises */
+    for (size_t i = i0; i < i1; i++)
+        low = alpha[i] + beta[i] >= amin ? low : 1.0;
+    return low == 0.0;
 }
 
 /* docs/method.md §4 bound; the policy is documented at TS_FORM_GEOMETRIC. */
 ts_status ts__geo_check(ts_spline *sp, size_t i0, size_t i1, ts_error *err)
 {
+    double amin = sp->shape == TS_SHAPE_NONE ? TS_GEOMETRIC_A_MIN : TS_GEOMETRIC_A_RAISE;
+    if (all_at_least(sp->alpha, sp->beta, i0, i1, amin))
+        return TS_OK; /* the loop below would change nothing */
     for (size_t i = i0; i < i1; i++) {
         double al = sp->alpha[i], a = al + sp->beta[i];
         if (sp->shape == TS_SHAPE_NONE) {

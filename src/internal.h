@@ -412,11 +412,11 @@ static inline void ts__B(const ts_spline *sp, size_t i, double B[4])
 ts_status ts__geo_check(ts_spline *sp, size_t i0, size_t i1, ts_error *err);
 /* Value and derivatives in x of interval i of a geometric-form spline at x. */
 void ts__geo_eval(const ts_spline *sp, size_t i, double x, int want, double out[3]);
-/* ∫_{x_i}^{x} S dx' on interval i (x in the interval). */
-double ts__geo_integral(const ts_spline *sp, size_t i, double x);
 /* φ in [0, π/4] with X̂(φ) = u, u in [0, 1/2], κ = 2/(3π a) (the solve of
  * ts__geo_eval; used by the surfaces of docs/method.md §11). */
 double ts__geo_solve(double kappa, double u);
+/* cum[i + 1] = ∫ over interval i, i in [i0, i1) (ts__geo_integral_scaled at x_{i+1}, k = 0). */
+void ts__geo_wholes(const ts_spline *sp, size_t i0, size_t i1, double *cum);
 /* The same times 2^-k, finite where that is (|f|, |B| <= TS_VALUE_MAX). */
 double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k);
 /* S, S', S'' (out[0..want]) of interval i of a geometric-form spline at x
