@@ -175,11 +175,15 @@ TS_INLINE void ts__sincos_q(double u, double *s, double *c, double *ms, double *
 }
 /* The geometric form's X̂(φ) = s² + κ(A1 − A2) = u, φ in [0, π/4]
  * (docs/method.md §4; geometric.c), as the batch kernel and single
- * evaluation solve it.  ts__geo_start: two Newton steps on the quartic model
+ * evaluation solve it.  ts__geo_start: one Newton step on the quartic model
  * M(φ) = 3κφ + (1 − 5κ)φ² + c3 φ³ + c4 φ⁴ of X̂ (Taylor to second order at
- * 0; M(π/4) = 1/2, M'(π/4) = X̂'(π/4) = 1 − (8 − 9/√2)κ) from the root of its
- * quadratic part (exact as κ → 0 and as u → 0): within 1.1e-2 (relative) of
- * the root for κ <= 1/2 (a >= 4/(3π)), 2.8e-3 for a >= 1. */
+ * 0; M(π/4) = 1/2, M'(π/4) = X̂'(π/4) = 1 − (8 − 9/√2)κ) from the root of
+ * 3κφ + b φ², b the larger of 1 − 5κ (exact as κ → 0 and as u → 0) and the
+ * chord's (1/2 − 3κπ/4)/(π/4)² (through X̂(π/4) = 1/2: the better one for κ
+ * above about 0.2).  Within 3.0e-3 (relative) of the root for κ <= 2/(3π)
+ * (a >= 1), 1.05e-2 for κ <= 0.4, 6.7e-2 for κ <= 1/2 (a >= 4/(3π)):
+ * then two Halley steps, three for some u at κ above 0.4 (bench/geo_start.py,
+ * numerically; the kernels take as many steps as a query needs). */
 #define TS_GEO_G1 1.6360389693210722 /* 8 − 9/√2 */
 #define TS_GEO_Q (0.25 * TS_PI)
 /* c3 Q³ + c4 Q⁴ = v, 3 c3 Q² + 4 c4 Q³ = v' with v = 1/2 − 3κQ − (1 − 5κ)Q²,
@@ -193,21 +197,23 @@ TS_INLINE void ts__sincos_q(double u, double *s, double *c, double *ms, double *
 #define TS_GEO_C41 ((TS_GEO_W1 - 3.0 * TS_GEO_V1 / TS_GEO_Q) / TS_GEO_Q3)
 #define TS_GEO_C30 (TS_GEO_V0 / TS_GEO_Q3 - TS_GEO_C40 * TS_GEO_Q)
 #define TS_GEO_C31 (TS_GEO_V1 / TS_GEO_Q3 - TS_GEO_C41 * TS_GEO_Q)
+/* the chord's b = B0 − B1 κ */
+#define TS_GEO_B0 (0.5 / (TS_GEO_Q * TS_GEO_Q))
+#define TS_GEO_B1 (3.0 / TS_GEO_Q)
 TS_INLINE double ts__geo_start(double u, double k)
 {
     const double Q = TS_GEO_Q;
-    double b = 1.0 - 5.0 * k, d = 9.0 * k * k + 4.0 * b * u;
+    double b = 1.0 - 5.0 * k, bc = TS_GEO_B0 - TS_GEO_B1 * k;
+    double bq = bc > b ? bc : b, d = 9.0 * k * k + 4.0 * bq * u;
     /* max(d, 0) without a select, which a compiler could move past the
      * square root (FE_INVALID from a vector lane's negative d) */
     double phi = (u + u) / (3.0 * k + sqrt(0.5 * (d + fabs(d))));
     double c3 = TS_GEO_C30 + TS_GEO_C31 * k, c4 = TS_GEO_C40 + TS_GEO_C41 * k;
-    for (int it = 0; it < 2; it++) {
-        phi = phi < Q ? phi : Q;
-        double M = phi * (3.0 * k + phi * (b + phi * (c3 + phi * c4))) - u;
-        double Mp = 3.0 * k + phi * (2.0 * b + phi * (3.0 * c3 + 4.0 * c4 * phi));
-        phi = phi - M / (Mp > DBL_MIN ? Mp : DBL_MIN);
-        phi = phi > 0.0 ? phi : 0.0;
-    }
+    phi = phi < Q ? phi : Q;
+    double M = phi * (3.0 * k + phi * (b + phi * (c3 + phi * c4))) - u;
+    double Mp = 3.0 * k + phi * (2.0 * b + phi * (3.0 * c3 + 4.0 * c4 * phi));
+    phi = phi - M / (Mp > DBL_MIN ? Mp : DBL_MIN);
+    phi = phi > 0.0 ? phi : 0.0;
     return phi < Q ? phi : Q;
 }
 /* One Halley step from φ (ts__sincos_q there): returns the next φ, clamped

@@ -301,17 +301,14 @@ TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, dou
 
 /* The geometric form: solve X̂(φ) = u for φ in [0, π/4] (u = distance to
  * the nearer end / h; geometric.c), all queries of the block a step at a
- * time.  Start: two Newton steps on the quartic model
- * M(φ) = 3κφ + (1 − 5κ)φ² + c3 φ³ + c4 φ⁴ of X̂ (its Taylor polynomial at 0
- * to second order, and X̂(π/4) = 1/2, X̂'(π/4) = 1 − (8 − 9/√2)κ), from the
- * root of its quadratic part (exact as κ → 0 and as u → 0): the start is
- * within 1.1e-2 (relative) of the root for κ <= 1/2, a_i >= 4/(3π), and
- * within 2.8e-3 for a_i >= 1.  Then Halley steps on X̂ with the polynomial
- * sine and cosine, until every step of the block is below 2^-20 φ (Halley's
- * error after such a step is of the order of its cube: rounding; two steps
- * for κ <= 1/2).  The last step is applied to (sin φ, cos φ) by its Taylor
- * rotation (|e| <= 2^-20: the dropped e³/6 is below 2^-62), so the
- * evaluation needs no further sine.  A query whose iteration has not
+ * time.  Start: ts__geo_start (internal.h: one Newton step on a quartic
+ * model of X̂; within 3.0e-3 of the root for a_i >= 1, 6.7e-2 for
+ * a_i >= 4/(3π)).  Then Halley steps on X̂ with the polynomial sine and
+ * cosine, until every step of the block is below 2^-20 φ (Halley's error
+ * after such a step is of the order of its cube: rounding; two steps for
+ * κ <= 0.4, three for some u up to κ = 1/2).  The last step is applied to
+ * (sin φ, cos φ) by its Taylor rotation (|e| <= 2^-20: the dropped e³/6 is
+ * below 2^-62), so the evaluation needs no further sine.  A query whose iteration has not
  * converged after TS_GEO_PASSES steps (a_i very near a*, u near 1/2, where X̂'
  * nearly vanishes) is evaluated by ts__geo_eval.  One query runs the
  * steps of ts__geo_root (internal.h), which single evaluation runs. */
