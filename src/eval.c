@@ -81,11 +81,26 @@ static TS_NOINLINE ts_status eval_value(const ts_spline *s, double x, ts_cursor 
     return eval_deriv(s, x, cur, y, NULL, NULL);
 }
 
+/* ts_eval's usual case in the geometric form (x in the cursor's interval),
+ * out of line so that the other forms' needs no stack frame. */
+static TS_NOINLINE ts_status eval_geo(const ts_spline *s, double x, ts_cursor *cur, double *y)
+{
+    size_t i = ts__cursor_interval(s, x, cur);
+    double o[3];
+    if (i < s->n && ts__geo_in(s, i, x, 0, o)) {
+        *y = o[0];
+        return TS_OK;
+    }
+    return eval_value(s, x, cur, y);
+}
+
 ts_status ts_eval(const ts_spline *s, double x, ts_cursor *cur, double *y)
 {
-    /* the usual case: paper or C¹ form, x inside the data (NaN fails) and in
-     * the cursor's interval; the same value as eval_one's */
-    if (s && y && s->form != TS_FORM_GEOMETRIC && x <= s->x[s->n]) {
+    /* the usual case: x inside the data (NaN fails) and in the cursor's
+     * interval; the same value as eval_one's */
+    if (s && y && x <= s->x[s->n]) {
+        if (s->form == TS_FORM_GEOMETRIC)
+            return eval_geo(s, x, cur, y);
         size_t i = ts__cursor_interval(s, x, cur);
         if (i < s->n) {
             double o[3];

@@ -84,24 +84,24 @@ static double geo_bracketed(double kappa, double u)
     return phi;
 }
 
-/* X̂(φ) = u as the batch kernel solves it (internal.h: Halley from a model
- * root with the polynomial sine and cosine, until a step is below 2^-20 φ);
- * the bracketed iteration above where that does not converge in 8 steps
- * (a_i very near a*, u near 1/2). */
+/* X̂(φ) = u as the batch kernel solves it (ts__geo_root); the bracketed
+ * iteration above where that does not converge (a_i very near a*, u near
+ * 1/2).  sc: sin, cos, 1 − sin, 1 − cos at the root. */
+static double geo_solve_sc(double kappa, double u, double sc[4])
+{
+    double phi = !(u > 0.0) ? 0.0 : u >= 0.5 ? 0.25 * TS_PI : ts__geo_root(u, kappa, sc);
+    if (phi >= 0.0 && u > 0.0 && u < 0.5)
+        return phi;
+    if (phi < 0.0)
+        phi = geo_bracketed(kappa, u);
+    ts__sincos_q(phi, &sc[0], &sc[1], &sc[2], &sc[3]);
+    return phi;
+}
+
 static double geo_solve(double kappa, double u)
 {
-    if (!(u > 0.0))
-        return 0.0;
-    if (u >= 0.5)
-        return 0.25 * TS_PI;
-    double phi = ts__geo_start(u, kappa), s, c, ms, mc;
-    for (int it = 0; it < 8; it++) {
-        double next = ts__geo_halley(phi, kappa, u, &s, &c, &ms, &mc);
-        if (fabs(next - phi) <= 0x1p-20 * next)
-            return next;
-        phi = next;
-    }
-    return geo_bracketed(kappa, u);
+    double sc[4];
+    return geo_solve_sc(kappa, u, sc);
 }
 
 /* Value and derivatives in u = (x − x_i)/h (so h² never under- or
@@ -134,15 +134,6 @@ static void geo_side_eval_u(const geo_side *g, double phi, double sign, int want
     out[2] = (Ypp * Xp - Yp * Xpp) / (Xp * Xp * Xp);
 }
 
-static void geo_side_eval(const geo_side *g, double phi, double sign, int want, double out[3])
-{
-    geo_side_eval_u(g, phi, sign, want, out);
-    if (want > 0)
-        out[1] = out[1] / g->h;
-    if (want > 1)
-        out[2] = out[2] / g->h / g->h;
-}
-
 void ts__geo_eval(const ts_spline *sp, size_t i, double x, int want, double out[3])
 {
     double x0 = sp->x[i], x1 = sp->x[i + 1];
@@ -161,12 +152,15 @@ void ts__geo_eval(const ts_spline *sp, size_t i, double x, int want, double out[
             out[2] = e[2] / g.h / g.h;
         return;
     }
-    double dl = x - x0, dr = x1 - x;
+    /* inside: the batch kernel's solve and expressions (internal.h) */
+    if (ts__geo_in(sp, i, x, want, out))
+        return;
+    double dl = x - x0, dr = x1 - x, sc[4];
     int right = dr < dl;
     geo_side_init(sp, i, right, &g);
-    double u = (right ? dr : dl) / g.h;
-    double phi = geo_solve(g.kappa, u);
-    geo_side_eval(&g, phi, right ? -1.0 : 1.0, want, out);
+    (void)geo_solve_sc(g.kappa, (right ? dr : dl) / g.h, sc);
+    for (int k = 0; k <= want; k++)
+        out[k] = ts__geo_y(k, g.F0, g.F1, g.D0, g.D1, g.h, g.kappa, right, sc[0], sc[1], sc[2], sc[3]);
 }
 
 /* 12-point Gauss–Legendre nodes and weights on [−1, 1] (positive half),
@@ -214,6 +208,25 @@ static double geo_whole(const ts_spline *sp, size_t i, int k)
            (kk * sp->d[i] - kk * sp->d[i + 1]) * (0.4 * hs - Q0 * ks);
 }
 
+/* geo_whole at k = 0 (ldexp by 0 is the identity) for i in [i0, i1), into
+ * cum[i + 1]: the same operations, in a loop that vectorises. */
+TS_VECTOR_LOOP static void geo_wholes(const double *restrict alpha, const double *restrict beta,
+                                      const double *restrict h, const double *restrict f,
+                                      const double *restrict d, double *restrict cum, size_t i0,
+                                      size_t i1)
+{
+    const double Q0 = 56.0 / 5.0 - 111.0 * TS_PI / 32.0;
+    for (size_t i = i0; i < i1; i++) {
+        double kk = 2.0 / (3.0 * TS_PI * (alpha[i] + beta[i])) * h[i];
+        cum[i + 1] = 0.5 * h[i] * (f[i] + f[i + 1]) + (kk * d[i] - kk * d[i + 1]) * (0.4 * h[i] - Q0 * kk);
+    }
+}
+
+void ts__geo_wholes(const ts_spline *sp, size_t i0, size_t i1, double *cum)
+{
+    geo_wholes(sp->alpha, sp->beta, sp->h, sp->f, sp->d, cum, i0, i1);
+}
+
 double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k)
 {
     double x0 = sp->x[i], x1 = sp->x[i + 1];
@@ -230,14 +243,22 @@ double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k)
     return right ? geo_whole(sp, i, k) - part : part;
 }
 
-double ts__geo_integral(const ts_spline *sp, size_t i, double x)
+/* Every alpha[i] + beta[i] >= amin, i in [i0, i1) (NaN fails). */
+TS_VECTOR_LOOP static int all_at_least(const double *restrict alpha, const double *restrict beta,
+                                       size_t i0, size_t i1, double amin)
 {
-    return ts__geo_integral_scaled(sp, i, x, 0);
+    double low = 0.0; /* a double flag: this form vectorises */
+    for (size_t i = i0; i < i1; i++)
+        low = alpha[i] + beta[i] >= amin ? low : 1.0;
+    return low == 0.0;
 }
 
 /* docs/method.md §4 bound; the policy is documented at TS_FORM_GEOMETRIC. */
 ts_status ts__geo_check(ts_spline *sp, size_t i0, size_t i1, ts_error *err)
 {
+    double amin = sp->shape == TS_SHAPE_NONE ? TS_GEOMETRIC_A_MIN : TS_GEOMETRIC_A_RAISE;
+    if (all_at_least(sp->alpha, sp->beta, i0, i1, amin))
+        return TS_OK; /* the loop below would change nothing */
     for (size_t i = i0; i < i1; i++) {
         double al = sp->alpha[i], a = al + sp->beta[i];
         if (sp->shape == TS_SHAPE_NONE) {

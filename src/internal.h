@@ -175,11 +175,15 @@ TS_INLINE void ts__sincos_q(double u, double *s, double *c, double *ms, double *
 }
 /* The geometric form's X̂(φ) = s² + κ(A1 − A2) = u, φ in [0, π/4]
  * (docs/method.md §4; geometric.c), as the batch kernel and single
- * evaluation solve it.  ts__geo_start: two Newton steps on the quartic model
+ * evaluation solve it.  ts__geo_start: one Newton step on the quartic model
  * M(φ) = 3κφ + (1 − 5κ)φ² + c3 φ³ + c4 φ⁴ of X̂ (Taylor to second order at
- * 0; M(π/4) = 1/2, M'(π/4) = X̂'(π/4) = 1 − (8 − 9/√2)κ) from the root of its
- * quadratic part (exact as κ → 0 and as u → 0): within 1.1e-2 (relative) of
- * the root for κ <= 1/2 (a >= 4/(3π)), 2.8e-3 for a >= 1. */
+ * 0; M(π/4) = 1/2, M'(π/4) = X̂'(π/4) = 1 − (8 − 9/√2)κ) from the root of
+ * 3κφ + b φ², b the larger of 1 − 5κ (exact as κ → 0 and as u → 0) and the
+ * chord's (1/2 − 3κπ/4)/(π/4)² (through X̂(π/4) = 1/2: the better one for κ
+ * above about 0.2).  Within 3.0e-3 (relative) of the root for κ <= 2/(3π)
+ * (a >= 1), 1.05e-2 for κ <= 0.4, 6.7e-2 for κ <= 1/2 (a >= 4/(3π)):
+ * then two Halley steps, three for some u at κ above 0.4 (bench/geo_start.py,
+ * numerically; the kernels take as many steps as a query needs). */
 #define TS_GEO_G1 1.6360389693210722 /* 8 − 9/√2 */
 #define TS_GEO_Q (0.25 * TS_PI)
 /* c3 Q³ + c4 Q⁴ = v, 3 c3 Q² + 4 c4 Q³ = v' with v = 1/2 − 3κQ − (1 − 5κ)Q²,
@@ -193,21 +197,23 @@ TS_INLINE void ts__sincos_q(double u, double *s, double *c, double *ms, double *
 #define TS_GEO_C41 ((TS_GEO_W1 - 3.0 * TS_GEO_V1 / TS_GEO_Q) / TS_GEO_Q3)
 #define TS_GEO_C30 (TS_GEO_V0 / TS_GEO_Q3 - TS_GEO_C40 * TS_GEO_Q)
 #define TS_GEO_C31 (TS_GEO_V1 / TS_GEO_Q3 - TS_GEO_C41 * TS_GEO_Q)
+/* the chord's b = B0 − B1 κ */
+#define TS_GEO_B0 (0.5 / (TS_GEO_Q * TS_GEO_Q))
+#define TS_GEO_B1 (3.0 / TS_GEO_Q)
 TS_INLINE double ts__geo_start(double u, double k)
 {
     const double Q = TS_GEO_Q;
-    double b = 1.0 - 5.0 * k, d = 9.0 * k * k + 4.0 * b * u;
+    double b = 1.0 - 5.0 * k, bc = TS_GEO_B0 - TS_GEO_B1 * k;
+    double bq = bc > b ? bc : b, d = 9.0 * k * k + 4.0 * bq * u;
     /* max(d, 0) without a select, which a compiler could move past the
      * square root (FE_INVALID from a vector lane's negative d) */
     double phi = (u + u) / (3.0 * k + sqrt(0.5 * (d + fabs(d))));
     double c3 = TS_GEO_C30 + TS_GEO_C31 * k, c4 = TS_GEO_C40 + TS_GEO_C41 * k;
-    for (int it = 0; it < 2; it++) {
-        phi = phi < Q ? phi : Q;
-        double M = phi * (3.0 * k + phi * (b + phi * (c3 + phi * c4))) - u;
-        double Mp = 3.0 * k + phi * (2.0 * b + phi * (3.0 * c3 + 4.0 * c4 * phi));
-        phi = phi - M / (Mp > DBL_MIN ? Mp : DBL_MIN);
-        phi = phi > 0.0 ? phi : 0.0;
-    }
+    phi = phi < Q ? phi : Q;
+    double M = phi * (3.0 * k + phi * (b + phi * (c3 + phi * c4))) - u;
+    double Mp = 3.0 * k + phi * (2.0 * b + phi * (3.0 * c3 + 4.0 * c4 * phi));
+    phi = phi - M / (Mp > DBL_MIN ? Mp : DBL_MIN);
+    phi = phi > 0.0 ? phi : 0.0;
     return phi < Q ? phi : Q;
 }
 /* One Halley step from φ (ts__sincos_q there): returns the next φ, clamped
@@ -236,6 +242,54 @@ TS_INLINE double ts__geo_halley(double phi, double k, double u, double *so, doub
     *mso = ms - (c * e - s * e2);
     *mco = mc + (s * e + c * e2);
     return next;
+}
+/* Halley steps from ts__geo_start until one is below 2^-20 φ (Halley's
+ * error after it is of the order of its cube: rounding), at most
+ * TS_GEO_PASSES; sin, cos, 1 − sin, 1 − cos at the root from that step's
+ * rotation (s[4]).  Returns the root, or −1 if it has not converged (a_i
+ * very near a*, u near 1/2: the caller takes geometric.c's bracketed
+ * iteration).  The batch kernel runs the same steps a pass at a time. */
+#define TS_GEO_PASSES 8
+TS_INLINE double ts__geo_root(double u, double k, double sc[4])
+{
+    double phi = ts__geo_start(u, k);
+    for (int it = 0; it < TS_GEO_PASSES; it++) {
+        double next = ts__geo_halley(phi, k, u, &sc[0], &sc[1], &sc[2], &sc[3]);
+        if (fabs(next - phi) <= 0x1p-20 * next)
+            return next;
+        phi = next;
+    }
+    return -1.0;
+}
+/* The geometric form at the solved φ, seen from the end φ is measured from
+ * (docs/method.md §4; geometric.c's geo_side): F0, F1 the values there and
+ * at the other end, D0, D1 the slopes (negated from the right end), h, κ;
+ * (s, c, ms, mc) at φ.  deriv 0: the value (a flat interval exactly
+ * constant: c² + s² need not round to 1); 1: dS/dx = ±Y'/(h X̂') (right:
+ * x decreases with φ); 2: d²S/dx² = (Y''X̂' − Y'X̂'')/(h² X̂'³) (the signs
+ * cancel).  The batch kernel and single evaluation both use this. */
+TS_INLINE double ts__geo_y(int deriv, double F0, double F1, double D0, double D1, double h,
+                           double kappa, int right, double s, double c, double ms, double mc)
+{
+    double k = kappa * h;
+    if (deriv == 0) {
+        double v = F0 * (c * c) + F1 * (s * s) +
+                   k * (D0 * (s * ms * (3.0 - s)) - D1 * (c * mc * (3.0 - c)));
+        return (F0 == F1 && k * D0 == 0.0 && k * D1 == 0.0) ? F0 : v;
+    }
+    double p1 = 3.0 - 8.0 * s + 3.0 * (s * s), p2 = 3.0 - 8.0 * c + 3.0 * (c * c);
+    double a1 = c * p1, a2 = -s * p2, dF = F1 - F0, sc2 = 2.0 * (s * c);
+    double Yp = dF * sc2 + k * (D0 * a1 - D1 * a2);
+    double Xp = sc2 + kappa * (a1 - a2);
+    if (deriv == 1) {
+        double v1 = Yp / Xp / h;
+        return right ? -v1 : v1;
+    }
+    double b1 = -s * p1 + (c * c) * (6.0 * s - 8.0), b2 = -c * p2 + (s * s) * (6.0 * c - 8.0);
+    double c2 = 2.0 * (c * c - s * s);
+    double Ypp = dF * c2 + k * (D0 * b1 - D1 * b2);
+    double Xpp = c2 + kappa * (b1 - b2);
+    return (Ypp * Xp - Yp * Xpp) / (Xp * Xp * Xp) / h / h;
 }
 /* ts__seg_sc with 1 − s and 1 − c given (ms, mc); inline: single
  * evaluation's path (ts__trig_eval_in). */
@@ -367,13 +421,31 @@ static inline void ts__B(const ts_spline *sp, size_t i, double B[4])
 ts_status ts__geo_check(ts_spline *sp, size_t i0, size_t i1, ts_error *err);
 /* Value and derivatives in x of interval i of a geometric-form spline at x. */
 void ts__geo_eval(const ts_spline *sp, size_t i, double x, int want, double out[3]);
-/* ∫_{x_i}^{x} S dx' on interval i (x in the interval). */
-double ts__geo_integral(const ts_spline *sp, size_t i, double x);
 /* φ in [0, π/4] with X̂(φ) = u, u in [0, 1/2], κ = 2/(3π a) (the solve of
  * ts__geo_eval; used by the surfaces of docs/method.md §11). */
 double ts__geo_solve(double kappa, double u);
+/* cum[i + 1] = ∫ over interval i, i in [i0, i1) (ts__geo_integral_scaled at x_{i+1}, k = 0). */
+void ts__geo_wholes(const ts_spline *sp, size_t i0, size_t i1, double *cum);
 /* The same times 2^-k, finite where that is (|f|, |B| <= TS_VALUE_MAX). */
 double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k);
+/* S, S', S'' (out[0..want]) of interval i of a geometric-form spline at x
+ * inside it (x_i <= x <= x_{i+1}), as the batch kernel computes them:
+ * ts__geo_root, then ts__geo_y.  Returns 0, o untouched, where the solve
+ * has not converged (then ts__geo_eval).  Inline: ts_eval's path. */
+TS_INLINE int ts__geo_in(const ts_spline *sp, size_t i, double x, int want, double o[3])
+{
+    double h = sp->h[i], a = sp->alpha[i] + sp->beta[i];
+    double kappa = 2.0 / (3.0 * TS_PI * a), dl = x - sp->x[i], dr = sp->x[i + 1] - x, sc[4];
+    int right = dr < dl;
+    if (!(ts__geo_root((right ? dr : dl) / h, kappa, sc) >= 0.0))
+        return 0;
+    size_t i0 = right ? i + 1 : i, i1 = right ? i : i + 1;
+    double F0 = sp->f[i0], F1 = sp->f[i1];
+    double D0 = right ? -sp->d[i0] : sp->d[i0], D1 = right ? -sp->d[i1] : sp->d[i1];
+    for (int k = 0; k <= want; k++)
+        o[k] = ts__geo_y(k, F0, F1, D0, D1, h, kappa, right, sc[0], sc[1], sc[2], sc[3]);
+    return 1;
+}
 
 /* ==== L2 ============================================================ */
 

@@ -303,20 +303,17 @@ TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, dou
 
 /* The geometric form: solve X̂(φ) = u for φ in [0, π/4] (u = distance to
  * the nearer end / h; geometric.c), all queries of the block a step at a
- * time.  Start: two Newton steps on the quartic model
- * M(φ) = 3κφ + (1 − 5κ)φ² + c3 φ³ + c4 φ⁴ of X̂ (its Taylor polynomial at 0
- * to second order, and X̂(π/4) = 1/2, X̂'(π/4) = 1 − (8 − 9/√2)κ), from the
- * root of its quadratic part (exact as κ → 0 and as u → 0): the start is
- * within 1.1e-2 (relative) of the root for κ <= 1/2, a_i >= 4/(3π), and
- * within 2.8e-3 for a_i >= 1.  Then Halley steps on X̂ with the polynomial
- * sine and cosine, until every step of the block is below 2^-20 φ (Halley's
- * error after such a step is of the order of its cube: rounding; two steps
- * for κ <= 1/2).  The last step is applied to (sin φ, cos φ) by its Taylor
- * rotation (|e| <= 2^-20: the dropped e³/6 is below 2^-62), so the
- * evaluation needs no further sine.  A query whose iteration has not
+ * time.  Start: ts__geo_start (internal.h: one Newton step on a quartic
+ * model of X̂; within 3.0e-3 of the root for a_i >= 1, 6.7e-2 for
+ * a_i >= 4/(3π)).  Then Halley steps on X̂ with the polynomial sine and
+ * cosine, until every step of the block is below 2^-20 φ (Halley's error
+ * after such a step is of the order of its cube: rounding; two steps for
+ * κ <= 0.4, three for some u up to κ = 1/2).  The last step is applied to
+ * (sin φ, cos φ) by its Taylor rotation (|e| <= 2^-20: the dropped e³/6 is
+ * below 2^-62), so the evaluation needs no further sine.  A query whose iteration has not
  * converged after TS_GEO_PASSES steps (a_i very near a*, u near 1/2, where X̂'
- * nearly vanishes) is evaluated by ts__geo_eval. */
-#define TS_GEO_PASSES 8
+ * nearly vanishes) is evaluated by ts__geo_eval.  One query runs the
+ * steps of ts__geo_root (internal.h), which single evaluation runs. */
 
 TS_ALWAYS_INLINE void geo_side(const geo_stage *st, size_t j, int *right, double *u)
 {
@@ -364,43 +361,28 @@ TS_ALWAYS_INLINE int geo_solve_block(geo_stage *st, size_t nb)
 }
 
 /* docs/method.md §4 at the solved φ from the nearer end: the value, or its
- * first or second derivative in x. */
-#define TS_GEO_NEAR(st, j)                                                                \
-    double dl = (st)->dl[j], dr = (st)->dr[j];                                          \
-    int right = dr < dl;                                                                \
-    double s = (st)->s[j], c = (st)->c[j], ms = (st)->ms[j], mc = (st)->mc[j];          \
-    double h = (st)->h[j], kappa = (st)->kappa[j], k = kappa * h;                       \
-    double F0 = right ? (st)->f1[j] : (st)->f0[j], F1 = right ? (st)->f0[j] : (st)->f1[j]; \
-    double D0 = right ? -(st)->d1[j] : (st)->d0[j], D1 = right ? -(st)->d0[j] : (st)->d1[j]
+ * first or second derivative in x (ts__geo_y, as single evaluation);
+ * deriv a constant at each call. */
+TS_ALWAYS_INLINE void geo_values(int deriv, const geo_stage *st, size_t nb, double *y)
+{
+    for (size_t j = 0; j < nb; j++) {
+        int right = st->dr[j] < st->dl[j];
+        double F0 = right ? st->f1[j] : st->f0[j], F1 = right ? st->f0[j] : st->f1[j];
+        double D0 = right ? -st->d1[j] : st->d0[j], D1 = right ? -st->d0[j] : st->d1[j];
+        y[j] = ts__geo_y(deriv, F0, F1, D0, D1, st->h[j], st->kappa[j], right, st->s[j], st->c[j],
+                         st->ms[j], st->mc[j]);
+    }
+}
 
 TS_ALWAYS_INLINE int geo_eval_block(int deriv, geo_stage *st, size_t nb, double *y)
 {
     int open = geo_solve_block(st, nb);
-    if (deriv == 0) {
-        for (size_t j = 0; j < nb; j++) {
-            TS_GEO_NEAR(st, j);
-            double v = F0 * (c * c) + F1 * (s * s) +
-                       k * (D0 * (s * ms * (3.0 - s)) - D1 * (c * mc * (3.0 - c)));
-            /* a flat interval is constant (c² + s² need not round to 1) */
-            y[j] = (F0 == F1 && k * D0 == 0.0 && k * D1 == 0.0) ? F0 : v;
-        }
-        return open;
-    }
-    for (size_t j = 0; j < nb; j++) {
-        TS_GEO_NEAR(st, j);
-        (void)ms, (void)mc;
-        double p1 = 3.0 - 8.0 * s + 3.0 * (s * s), p2 = 3.0 - 8.0 * c + 3.0 * (c * c);
-        double a1 = c * p1, a2 = -s * p2, dF = F1 - F0, sc2 = 2.0 * (s * c);
-        double Yp = dF * sc2 + k * (D0 * a1 - D1 * a2);
-        double Xp = sc2 + kappa * (a1 - a2);
-        double v1 = Yp / Xp / h;
-        double b1 = -s * p1 + (c * c) * (6.0 * s - 8.0), b2 = -c * p2 + (s * s) * (6.0 * c - 8.0);
-        double c2 = 2.0 * (c * c - s * s);
-        double Ypp = dF * c2 + k * (D0 * b1 - D1 * b2);
-        double Xpp = c2 + kappa * (b1 - b2);
-        double v2 = (Ypp * Xp - Yp * Xpp) / (Xp * Xp * Xp) / h / h;
-        y[j] = deriv == 1 ? (right ? -v1 : v1) : v2;
-    }
+    if (deriv == 0)
+        geo_values(0, st, nb, y);
+    else if (deriv == 1)
+        geo_values(1, st, nb, y);
+    else
+        geo_values(2, st, nb, y);
     return open;
 }
 

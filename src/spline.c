@@ -151,8 +151,7 @@ static double cumulate(ts_spline *sp, size_t i0, size_t i1, double sum)
 {
     double *cum = sp->cum;
     if (sp->form == TS_FORM_GEOMETRIC) {
-        for (size_t i = i0; i < i1; i++)
-            cum[i + 1] = ts__geo_integral(sp, i, sp->x[i + 1]);
+        ts__geo_wholes(sp, i0, i1, cum);
     } else {
         wholes(sp->h, sp->f, sp->b1, sp->b2, cum, i0, i1);
     }

@@ -590,27 +590,32 @@ static void structure(void)
 }
 
 /* ---- the geometric form's kernel (docs/method.md §4) ------------------
- * Expected values: ts_eval_deriv (geometric.c: X̂(φ) = u solved by a
- * safeguarded Newton iteration to rounding with libm sine and cosine,
- * checked against the high-precision reference in test_geometric.c).
+ * Expected values: docs/method.md §4 re-derived here in long double
+ * (geo_ref: X̂(φ) = u from the nearer end by Newton's method inside a
+ * bisection bracket with sinl and cosl, then Y, Y', Y'' and the quotients
+ * of §4); ts_eval_deriv itself is checked against the mpmath reference in
+ * test_geometric.c.  Single evaluation runs the kernels' solve (internal.h:
+ * ts__geo_root, ts__geo_y): without FMA (the portable kernel on x86-64,
+ * where neither contracts) its values are the portable kernel's bit for bit.
  * Unit: ε·(M/h^k + |S^(k)|), M = max(|f_i|, |f_{i+1}|, |k d_i|, |k d_{i+1}|)
- * (k = κh), the coefficients of Y.  Tolerance: both paths find φ to a few
- * ulps (Halley's error after a step below 2^-20 φ is of the order of the
- * step's cube); |dY/dφ| <= 2|f_{i+1} − f_i| + k(|d_i||A1'| + |d_{i+1}||A2'|)
- * <= 10M (|A_l'| <= 3 on [0, π/4]), so φ's error adds <= 10M·(π/4)·4ε; Y's
- * own evaluation (as the paper form's value above: <= 77ε·M with both
- * paths' trigonometric inputs) -> TOLG0 = 120.  S' = Y'/(h X̂') and S'' =
- * (Y''X̂' − Y'X̂'')/(h² X̂'³) divide by X̂' (>= 0.31 at π/4 for a_i >= 1/2, but
- * 3κ at φ = 0, small for large a_i, where S'' can be far above M/h²): the
- * relative error of the quotient is that of its terms times at most 2 and 4
- * roundings more, hence the |S^(k)| term in the unit; TOLG1 = 120·2/0.31 ≈
- * 800, TOLG2 = 1600·3/0.31³ ≈ 1.7e5 — loose worst-case products; the
- * measured maxima are printed.  A wrong coefficient, sign or side is off by
- * >= 1e-6·M and fails.  Splines: α_i in [1/2, 100]; a second set with α_i
- * just above a* (0.3472..0.36), where X̂'(π/4) = 1 − (8 − 9/√2)κ nearly
- * vanishes, checks the value only (the derivatives are ill-conditioned
- * there in both paths): φ's rounding error there is ε/X̂'(π/4), so the unit
- * is ε·M/X̂'(π/4), same TOLG0. */
+ * (k = κh), the coefficients of Y.  Tolerance (derived for the difference
+ * of two double paths, so it bounds one path against a more exact
+ * reference too): both find φ to a few ulps (Halley's error after a step
+ * below 2^-20 φ is of the order of the step's cube); |dY/dφ| <= 2|f_{i+1} −
+ * f_i| + k(|d_i||A1'| + |d_{i+1}||A2'|) <= 10M (|A_l'| <= 3 on [0, π/4]), so
+ * φ's error adds <= 10M·(π/4)·4ε; Y's own evaluation (as the paper form's
+ * value above: <= 77ε·M with both paths' trigonometric inputs) -> TOLG0 =
+ * 120.  S' = Y'/(h X̂') and S'' = (Y''X̂' − Y'X̂'')/(h² X̂'³) divide by X̂'
+ * (>= 0.31 at π/4 for a_i >= 1/2, but 3κ at φ = 0, small for large a_i,
+ * where S'' can be far above M/h²): the relative error of the quotient is
+ * that of its terms times at most 2 and 4 roundings more, hence the
+ * |S^(k)| term in the unit; TOLG1 = 120·2/0.31 ≈ 800, TOLG2 = 1600·3/0.31³
+ * ≈ 1.7e5 — loose worst-case products; the measured maxima are printed.  A
+ * wrong coefficient, sign or side is off by >= 1e-6·M and fails.  Splines:
+ * α_i in [1/2, 100]; a second set with α_i just above a* (0.3472..0.36),
+ * where X̂'(π/4) = 1 − (8 − 9/√2)κ nearly vanishes, checks the value only
+ * (the derivatives are ill-conditioned there): φ's rounding error there is
+ * ε/X̂'(π/4), so the unit is ε·M/X̂'(π/4), same TOLG0. */
 #define TOLG0 120.0
 #define TOLG1 800.0
 #define TOLG2 170000.0
@@ -645,13 +650,56 @@ done:
     return s;
 }
 
+/* S, S', S'' of interval i at x (docs/method.md §4) in long double. */
+static void geo_ref(const ts_spline *s, size_t i, double x, double out[3])
+{
+    const double *X = ts_spline_x(s), *F = ts_spline_f(s), *D = ts_spline_slopes(s);
+    const long double PI = 3.141592653589793238462643383279502884L;
+    long double x0 = (long double)X[i], x1 = (long double)X[i + 1], xl = (long double)x;
+    long double h = x1 - x0, dl = xl - x0, dr = x1 - xl;
+    long double a = (long double)ts_spline_alpha(s)[i] + (long double)ts_spline_beta(s)[i], kap = 2 / (3 * PI * a);
+    int right = dr < dl;
+    size_t i0 = right ? i + 1 : i, i1 = right ? i : i + 1;
+    long double u = (right ? dr : dl) / h, F0 = (long double)F[i0], F1 = (long double)F[i1];
+    long double D0 = right ? -(long double)D[i0] : (long double)D[i0];
+    long double D1 = right ? -(long double)D[i1] : (long double)D[i1];
+    long double lo = 0, hi = PI / 4, phi = fminl(u / (3 * kap), asinl(sqrtl(u))), s1 = 0, c1 = 1;
+    for (int it = 0; it < 200 && hi - lo > 4 * LDBL_EPSILON; it++) {
+        s1 = sinl(phi), c1 = cosl(phi);
+        long double g = s1 * s1 + kap * (s1 * (1 - s1) * (3 - s1) - c1 * (1 - c1) * (3 - c1)) - u;
+        long double gp = 2 * s1 * c1 + kap * (c1 * (3 - 8 * s1 + 3 * s1 * s1) + s1 * (3 - 8 * c1 + 3 * c1 * c1));
+        if (g == 0)
+            break;
+        if (g < 0)
+            lo = phi;
+        else
+            hi = phi;
+        long double next = phi - g / gp;
+        if (fabsl(next - phi) <= 2 * LDBL_EPSILON * phi)
+            break;
+        phi = next > lo && next < hi ? next : (lo + hi) / 2;
+    }
+    s1 = sinl(phi), c1 = cosl(phi);
+    long double k = kap * h, p1 = 3 - 8 * s1 + 3 * s1 * s1, p2 = 3 - 8 * c1 + 3 * c1 * c1;
+    long double A1 = s1 * (1 - s1) * (3 - s1), A2 = c1 * (1 - c1) * (3 - c1);
+    long double Y = F0 * c1 * c1 + F1 * s1 * s1 + k * (D0 * A1 - D1 * A2);
+    long double a1 = c1 * p1, a2 = -s1 * p2, Yp = (F1 - F0) * 2 * s1 * c1 + k * (D0 * a1 - D1 * a2);
+    long double Xp = 2 * s1 * c1 + kap * (a1 - a2);
+    long double b1 = -s1 * p1 + c1 * c1 * (6 * s1 - 8), b2 = -c1 * p2 + s1 * s1 * (6 * c1 - 8);
+    long double c2 = 2 * (c1 * c1 - s1 * s1), Ypp = (F1 - F0) * c2 + k * (D0 * b1 - D1 * b2);
+    long double Xpp = c2 + kap * (b1 - b2);
+    out[0] = (double)Y;
+    out[1] = (double)((right ? -Yp : Yp) / (h * Xp));
+    out[2] = (double)((Ypp * Xp - Yp * Xpp) / (Xp * Xp * Xp) / (h * h));
+}
+
 static void geometric(void)
 {
     th_seed(0x452821E638D01377u);
     const size_t m = 1000000 / TF_SCALE;
     double *q = malloc(m * sizeof *q), *y = malloc(m * sizeof *y), *ref = malloc(3 * m * sizeof *ref);
-    double *y1 = malloc(3 * m * sizeof *y1);
-    if (!q || !y || !ref || !y1) {
+    double *y1 = malloc(3 * m * sizeof *y1), *yd = malloc(3 * m * sizeof *yd);
+    if (!q || !y || !ref || !y1 || !yd) {
         CHECKF(0, "out of memory in the test");
         goto done;
     }
@@ -667,8 +715,12 @@ static void geometric(void)
                                : X[0] + (X[n] - X[0]) * th_unit();
         if (set == 0)
             qsort(q, m / 2, sizeof *q, cmp_double); /* half sorted, half random */
-        for (size_t j = 0; j < m; j++)
-            CHECK(ts_eval_deriv(s, q[j], NULL, &ref[j], &ref[m + j], &ref[2 * m + j]) == TS_OK);
+        for (size_t j = 0; j < m; j++) {
+            double o[3];
+            geo_ref(s, interval_of(s, q[j]), q[j], o);
+            ref[j] = o[0], ref[m + j] = o[1], ref[2 * m + j] = o[2];
+            CHECK(ts_eval_deriv(s, q[j], NULL, &yd[j], &yd[m + j], &yd[2 * m + j]) == TS_OK);
+        }
         for (int isa = 0; isa <= 2; isa++) {
             if (!have_kernel(isa))
                 continue;
@@ -676,6 +728,12 @@ static void geometric(void)
             for (int deriv = 0; deriv <= (set == 0 ? 2 : 0); deriv++) {
                 ts_cursor c = TS_CURSOR_INIT;
                 CHECK(ts__fast_batch_isa(s, deriv, q, m, y, &c, isa, NULL) == 1);
+#if defined(__x86_64__)
+                if (isa == 0)
+                    CHECKF(!memcmp(yd + (size_t)deriv * m, y, m * sizeof *y),
+                           "geometric set %d deriv %d: ts_eval_deriv differs from the portable kernel",
+                           set, deriv);
+#endif
                 double tol = deriv == 0 ? TOLG0 : deriv == 1 ? TOLG1 : TOLG2;
                 long bad = 0;
                 size_t first = 0;
@@ -702,7 +760,7 @@ static void geometric(void)
                     CHECKF(!memcmp(y1 + (size_t)deriv * m, y, m * sizeof *y),
                            "geometric set %d deriv %d: AVX2 and AVX-512 kernels differ", set, deriv);
             }
-            printf("test_fast: geometric %s, kernel %d: max |fast - plain| / unit = %.2f, %.2f, %.2f\n",
+            printf("test_fast: geometric %s, kernel %d: max |kernel - long double| / unit = %.2f, %.2f, %.2f\n",
                    set == 0 ? "a in [1/2, 100]" : "a in [0.3472, 0.36], value only", isa, worst[0], worst[1],
                    worst[2]);
         }
@@ -713,6 +771,7 @@ done:
     free(y);
     free(ref);
     free(y1);
+    free(yd);
 }
 
 
