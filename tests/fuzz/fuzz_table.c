@@ -171,6 +171,23 @@ static int ref_time(const char *s, size_t n, double *t)
     return 1;
 }
 
+/* A date or date-time followed by a time-zone name (blanks, then '[' or two
+ * letters): the reader takes it for a date all the same and refuses it. */
+static int ascii_letter(char c) { return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z'); }
+
+static int ref_zone(const char *s, size_t n)
+{
+    for (size_t k = n; k >= 10; k--) {
+        double t;
+        if (!ref_time(s, k, &t))
+            continue;
+        while (k < n && blank(s[k]))
+            k++;
+        return k < n && (s[k] == '[' || (k + 1 < n && ascii_letter(s[k]) && ascii_letter(s[k + 1])));
+    }
+    return 0;
+}
+
 static int is_na_word(const char *s, size_t n)
 {
     static const char *const w[3] = {"NA", "NaN", "null"};
@@ -371,7 +388,7 @@ static void ref_read(const char *d, size_t n, const ropts *o, ref *r)
                     continue;
                 if (ref_number(f[q].t, f[q].n, o->dcomma, &v, &nf) || nf)
                     continue;
-                if (o->tdetect && ref_time(f[q].t, f[q].n, &v))
+                if (o->tdetect && (ref_time(f[q].t, f[q].n, &v) || ref_zone(f[q].t, f[q].n)))
                     continue;
                 hdr = 1;
             }
