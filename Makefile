@@ -303,6 +303,8 @@ coverage:
 FUZZ_SECONDS ?= 60
 FUZZ_BUILD ?= build-fuzz
 FUZZ_FLAGS ?=
+# the harnesses to run (default: every tests/fuzz/fuzz_NAME.c), e.g. FUZZ_HARNESSES="spline curve"
+FUZZ_HARNESSES ?= $(patsubst tests/fuzz/fuzz_%.c,%,$(wildcard tests/fuzz/fuzz_*.c))
 fuzz:
 	$(call need,$(BUILD_TOOLS) clang:clang)
 	$(call need_file,/usr/lib/llvm-14/lib/clang/14.0.6/lib/linux/libclang_rt.fuzzer-x86_64.a,libclang-rt-14-dev)
@@ -310,7 +312,7 @@ fuzz:
 	  -DCMAKE_C_FLAGS="-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all" \
 	  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DTS_BUILD_EXAMPLES=OFF >/dev/null
 	$(CMAKE) --build $(FUZZ_BUILD) -j $(JOBS) --target fuzzers
-	@failed=""; for h in tests/fuzz/fuzz_*.c; do n=$$(basename $$h .c); n=$${n#fuzz_}; \
+	@failed=""; for n in $(FUZZ_HARNESSES); do \
 	  b=$(FUZZ_BUILD); mkdir -p $$b/corpus/$$n $$b/artifacts; \
 	  dict=""; test -f tests/fuzz/$$n.dict && dict="-dict=tests/fuzz/$$n.dict"; \
 	  if $$b/fuzz/fuzz_$$n -max_total_time=$(FUZZ_SECONDS) -timeout=30 -print_final_stats=1 \
