@@ -425,8 +425,10 @@ typedef struct ts__cert {
 void ts__controls_of(const ts_spline *sp, size_t i, double B[4], double X[4], int *geo);
 /* Gap of a segment with control values B on [xi, xi + h] (paper and C¹
  * forms, and curve coordinates) to the line ln: sign +1 min of S − L, −1 min
- * of L − S, exact (ts__trig_min_core); *theta (and *tpar = tan(θ/2)) of the
- * minimum, *guard its rounding guard, *proven = 1 when the line is constant
+ * of L − S, exact (ts__trig_min_core) in local coordinates (L_i = m xi + c
+ * rounded once, docs/method.md §5.6); *theta (and *tpar = tan(θ/2)) of the
+ * minimum, *guard its rounding guard (h taken as exact: ts__gap_ctl adds
+ * |m| times its rounding), *proven = 1 when the line is constant
  * and every control gap ±(B_l − c) is > 0 (a proof by itself: S − L =
  * Σ A_l C_l, A_l >= 0, Σ A_l = 1).  Any out-pointer may be NULL. */
 double ts__gap_segment(const double B[4], double xi, double h, const ts_line *ln, int sign,
@@ -447,9 +449,11 @@ void ts__range_ctl(const ts_spline *sp, size_t i, const double B[4], const doubl
 void ts__range_segment(const double B[4], double ti, double h, ts_interval_report *rep);
 /* The same for interval i as stored. */
 double ts__interval_gap(const ts_spline *sp, size_t i, const ts_line *line, int sign, double *at);
-/* Geometric form: every local control gap above its rounding and the
- * evaluator's (a proof by itself); X the local abscissae of ts__controls_of. */
-int ts__hull_inside(const ts_spline *sp, size_t i, const double B[4], const double X[4],
+/* The control gaps' proof (docs/method.md §5.6): geometric form (X the local
+ * abscissae of ts__controls_of), every local control gap above its rounding
+ * and the evaluator's; paper and C¹ forms (X NULL), a constant line strictly
+ * below (sign +1) or above (−1) every B_l. */
+int ts__hull_inside(const ts_spline *sp, size_t i, const double B[4], const double *X,
                     const ts_line *ln, int sign);
 /* Is interval i with controls B (X) inside the region of sp's scheme?  exact:
  * with the trig-min certificates (into *cr, places if want_at); else only

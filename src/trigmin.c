@@ -33,8 +33,9 @@
  *  (3) root location: brackets end below 4ε in t; the value error is
  *      ≤ ½ max|g''| (8ε)² (negligible against (1), since |g''| ≤ 40 max|C|).
  * guard = 2 × [(1) + 2η] (factor 2 for second-order terms).  The interval
- * certificate adds the rounding of C_l = ±(B_l − L(x_i)) and of
- * κ = ±2mh/π: 8ε (max|B| + |m|(|x_i| + h) + |c|).
+ * certificate (certificate.c, docs/method.md §5.6 items 4–7) adds the
+ * rounding of C_l = ±(B_l − L_i), L_i = fma(m, x_i, c), of κ = ±2mh/π and
+ * of where evaluation places x: 8ε (max|B| + |L_i| + |m| h) + |m| err(h).
  */
 #include "internal.h"
 
