@@ -36,9 +36,11 @@
 #endif
 
 /* Construction loops that vectorise.  With GCC on x86-64 Linux
- * they are compiled for x86-64-v4 (AVX-512), AVX2 and the baseline, one
- * picked at load time (ifunc), vectorised also at -O2, and without
- * trapping-math so that loops with selects vectorise.  Every version gives
+ * they are compiled for x86-64-v4 (AVX-512), x86-64-v3 (AVX2 with FMA, so
+ * that the loops' fma() calls of docs/method.md §5.6 stay inline and
+ * vectorise) and the baseline, one picked at load time (ifunc), vectorised
+ * also at -O2, and without trapping-math so that loops with selects
+ * vectorise.  Every version gives
  * the same values (bitwise: no contraction into FMA, fp-contract=off; no
  * reassociation); no floating-point exception flag is part of the library's
  * behaviour.  Loops meant to vectorise take their arrays as restrict
@@ -49,7 +51,7 @@
 #elif defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
     !defined(TS_FAST_PORTABLE) && !defined(__SANITIZE_THREAD__)
 #define TS_VECTOR_LOOP                                                                   \
-    __attribute__((target_clones("arch=x86-64-v4", "avx2", "default"),                 \
+    __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"),       \
                    optimize("no-trapping-math", "fp-contract=off", "tree-vectorize",     \
                             "vect-cost-model=dynamic")))
 #else
