@@ -23,13 +23,12 @@ TS_INLINE int positive_proof(double B0, double B1, double B2, double B3)
     return (B0 >= 0.0) & (B1 >= 0.0) & (B2 >= 0.0) & (B3 >= 0.0);
 }
 
-/* docs/method.md §5.5: B monotone in the data's direction gives S' of that sign by
- * (2.1); equal ends need equal control values. */
+/* docs/method.md §5.5: B monotone (either way) gives S' of one sign by
+ * (2.1); it is the data's direction, as B0 = f_i, B3 = f_{i+1}, and equal
+ * ends need equal control values (both directions at once).  Branch-free. */
 TS_INLINE int monotone_proof(double B0, double B1, double B2, double B3)
 {
-    return B3 > B0   ? B0 <= B1 && B1 <= B2 && B2 <= B3
-           : B3 < B0 ? B0 >= B1 && B1 >= B2 && B2 >= B3
-                     : B0 == B1 && B1 == B2 && B2 == B3;
+    return ((B0 <= B1) & (B1 <= B2) & (B2 <= B3)) | ((B0 >= B1) & (B1 >= B2) & (B2 >= B3));
 }
 
 /* ------------------------------------------------------------------ */
@@ -144,15 +143,14 @@ double ts__gap_segment(const double B[4], double xi, double h, const ts_line *ln
     }
     double kappa = m != 0.0 ? sg * m * (2.0 * h / TS_PI) : 0.0;
     double g = ts__trig_min_core(C[0], C[1], C[2], C[3], kappa, &th, &t, &eb);
-    if (theta)
-        *theta = th;
+    *theta = th;
     if (tpar)
         *tpar = t;
     if (guard)
         *guard = local_guard(eb, bmax, Li, fabs(m), h);
     /* a constant line (κ = 0) below every control value: S − L = Σ A_l C_l > 0 */
     if (proven)
-        *proven = pos && m == 0.0;
+        *proven = pos & (m == 0.0);
     return g;
 }
 
@@ -185,7 +183,7 @@ double ts__gap_ctl(const ts_spline *sp, size_t i, const double B[4], const doubl
             ts__basis_t(t, A);
             double u = A[0] * X[0] + A[1] * X[1] + A[2] * X[2] + A[3] * X[3];
             double xa = xi + h * u;
-            *at = xa < xi ? xi : xa > sp->x[i + 1] ? sp->x[i + 1] : xa;
+            *at = xa > sp->x[i + 1] ? sp->x[i + 1] : xa; /* u >= 0: xa >= xi */
         }
     }
     if (guard)
@@ -271,7 +269,7 @@ int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double
     /* a control value beyond TS_VALUE_MAX (tiny a_i) proves nothing: S could
      * overflow (NaN where B overflowed); the repair raises a_i instead */
     for (int l = 0; l < 4; l++)
-        if (!(fabs(B[l]) <= TS_VALUE_MAX) || (X && !isfinite(X[l])))
+        if (!(fabs(B[l]) <= TS_VALUE_MAX))
             return 0;
     if (sp->shape == TS_SHAPE_MONOTONE) {
         int ok = monotone_proof(B[0], B[1], B[2], B[3]);
@@ -279,10 +277,13 @@ int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double
             /* X' > 0 by (2.1) when D0, D2 > 0 and D1 >= -min(D0, D2)/4: at
              * a_i = 4/(3π) (TS_TERM_GEOMETRIC) D1 = h - 2k is 0 up to rounding.
              * min over θ of [(1-s)²c + (1-c)²s]/(sc) is 0.2426 (θ = π/4),
-             * so X' >= sc·min(D0, D2)(3·0.2426 - 2/4) > 0 inside. */
+             * so X' >= sc·min(D0, D2)(3·0.2426 - 2/4) > 0 inside.  Here
+             * D0 = κ > 0 and D2 = 1 − fl(1 − κ) >= 0 (X̂ of ts__controls_of,
+             * or [0, 0, 1, 1] in the limit), so D1 >= 0 (a monotone polygon)
+             * or D1 >= -min(D0, D2)/4 (then min > 0) is the whole test. */
             double D0 = X[1] - X[0], D1 = X[2] - X[1], D2 = X[3] - X[2];
             double dm = D0 < D2 ? D0 : D2;
-            ok = ok && ((D0 >= 0.0 && D1 >= 0.0 && D2 >= 0.0) || (dm > 0.0 && D1 >= -0.25 * dm));
+            ok = ok & (D1 >= -0.25 * dm);
         }
         return ok;
     }
@@ -339,7 +340,8 @@ TS_INLINE int proven(const double *restrict f, const double *restrict b1,
 {
     double B0 = f[i], B1 = b1[i], B2 = b2[i], B3 = f[i + 1];
     int finite = (fabs(B1) <= TS_VALUE_MAX) & (fabs(B2) <= TS_VALUE_MAX);
-    return finite & (positive ? positive_proof(B0, B1, B2, B3) : monotone_proof(B0, B1, B2, B3));
+    return finite & ((positive & positive_proof(B0, B1, B2, B3)) |
+                     ((positive == 0) & monotone_proof(B0, B1, B2, B3)));
 }
 
 /* 1 if every interval of [i0, i1) is positive_proof'ed (a flag, so that it
@@ -364,7 +366,7 @@ size_t ts__skip_proven(const ts_spline *sp, size_t i, size_t i1)
     int positive = sp->shape == TS_SHAPE_POSITIVE;
     if (!(positive || (sp->shape == TS_SHAPE_MONOTONE && sp->form != TS_FORM_GEOMETRIC)))
         return i;
-    if (positive && i < i1 && all_proven_positive(sp->f, sp->b1, sp->b2, i, i1))
+    if (positive && all_proven_positive(sp->f, sp->b1, sp->b2, i, i1)) /* i < i1 */
         return i1;
     while (i < i1 && proven(sp->f, sp->b1, sp->b2, i, positive))
         i++;

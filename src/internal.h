@@ -407,7 +407,9 @@ TS_INLINE void ts__trig_eval_in(const ts_spline *sp, size_t i, double x, int wan
 double ts__interval_integral_scaled(const ts_spline *sp, size_t i, double a, double b, int k);
 
 /* ---- shape.c (docs/method.md §5) ----------------------------------------------- */
-/* ts__shape_begin checks the options and sets the boundaries (*dir: the
+/* For a scheme (opt->shape one of TS_SHAPE_POSITIVE..TS_SHAPE_MONOTONE, as
+ * ts_spline_new has checked; sp, opt not NULL): ts__shape_begin checks the
+ * margins' length and sets the boundaries (*dir: the
  * direction of the data f[0..n], monotone; f: the caller's values, sp->f need
  * not be filled yet); ts__shape_range then checks margins of intervals
  * [i0, i1), data of points [p0, p1), adjusts their slopes (d there already
@@ -432,7 +434,8 @@ void ts__controls_of(const ts_spline *sp, size_t i, double B[4], double X[4], in
  * minimum, *guard its rounding guard (h taken as exact: ts__gap_ctl adds
  * |m| times its rounding), *proven = 1 when the line is constant
  * and every control gap ±(B_l − c) is > 0 (a proof by itself: S − L =
- * Σ A_l C_l, A_l >= 0, Σ A_l = 1).  Any out-pointer may be NULL. */
+ * Σ A_l C_l, A_l >= 0, Σ A_l = 1).  theta is required; the other
+ * out-pointers may be NULL. */
 double ts__gap_segment(const double B[4], double xi, double h, const ts_line *ln, int sign,
                        double *theta, double *tpar, double *guard, int *proven);
 /* Gap of interval i with control values B (abscissae X in the geometric
@@ -551,7 +554,7 @@ typedef struct ts__repair_ops {
  * TS_OK with a_i set, or TS_ERR_INFEASIBLE (TS_ERR_PRECISION where the best
  * gap is positive but not above its guard) with a_i = a0 again. */
 ts_status ts__repair_search(const ts__repair_ops *o, size_t i, double al, double a0, double t);
-/* Certify intervals [i0, i1) of a shape spline (their controls set), raising
+/* Certify intervals [i0, i1) of a shape spline (shape != TS_SHAPE_NONE; their controls set), raising
  * beta_i where a gap is not positive; in order.  The C¹ form steps back after
  * a repair: call it once on [0, n).  After the last range ts__certify_done
  * sets certified and have_certs. */

@@ -135,10 +135,10 @@ static ts_status check_data(const ts_spline *sp, ts_shape shape, int dir, size_t
     if (shape == TS_SHAPE_POSITIVE) {
         if (all_nonnegative(f, p0, p1, &zero))
             return TS_OK;
-        for (size_t i = p0; i < p1; i++)
-            if (!(f[i] >= 0.0))
-                return fail(err, TS_ERR_NEGATIVE, i, TS_WHERE_POINT);
-        return TS_OK;
+        size_t i = p0;
+        while (f[i] >= 0.0) /* one of f[p0..p1) is not */
+            i++;
+        return fail(err, TS_ERR_NEGATIVE, i, TS_WHERE_POINT);
     }
     if (shape == TS_SHAPE_MONOTONE) {
         for (size_t i = p0 > 1 ? p0 : 1; i < p1; i++) {
@@ -172,8 +172,9 @@ static ts_status zero_slopes(ts_spline *sp, const ts_options *opt, size_t p0, si
     int periodic = opt->slopes == TS_SLOPES_PERIODIC;
     double *d = sp->d;
     int zero;
-    if (all_nonnegative(sp->f, p0, p1, &zero) && !zero && !(periodic && p1 > n && sp->f[0] == 0.0))
-        return TS_OK; /* no zero knot here */
+    (void)all_nonnegative(sp->f, p0, p1, &zero); /* checked: all are */
+    if (!zero)
+        return TS_OK; /* no zero knot here (periodic, f[0] = 0: f[n] = 0 is one) */
     for (size_t i = p0; i < p1; i++) {
         if (sp->f[i] != 0.0)
             continue;
@@ -209,7 +210,7 @@ static void monotone_slopes(ts_spline *sp, int dir, size_t p0, size_t p1)
 static ts_status check_margins(const ts_options *opt, size_t i0, size_t i1, ts_error *err)
 {
     double t0 = opt->margin;
-    if (!opt->margins && i0 < i1 && t0 > 0.0 && t0 <= DBL_MAX)
+    if (!opt->margins && t0 > 0.0 && t0 <= DBL_MAX)
         return TS_OK; /* one margin for all */
     for (size_t i = i0; i < i1; i++) {
         double t = opt->margins ? opt->margins[i] : opt->margin;
@@ -219,15 +220,9 @@ static ts_status check_margins(const ts_options *opt, size_t i0, size_t i1, ts_e
     return TS_OK;
 }
 
-/* Option and margin-array length checks. */
+/* The margin array's length. */
 static ts_status check_options(const ts_spline *sp, const ts_options *opt, ts_error *err)
 {
-    if (!sp || !opt)
-        return fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
-    ts_shape shape = opt->shape;
-    if (!(shape == TS_SHAPE_POSITIVE || shape == TS_SHAPE_ABOVE || shape == TS_SHAPE_BELOW ||
-          shape == TS_SHAPE_BETWEEN || shape == TS_SHAPE_MONOTONE))
-        return fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
     if (opt->margins && opt->n_margins != sp->n)
         return fail(err, TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
     return TS_OK;
