@@ -238,7 +238,8 @@ typedef enum ts_slopes {
  *  - Data checks, first offending point named: TS_ERR_NEGATIVE (f < 0),
  *    TS_ERR_LINES (lower line not strictly below the upper at a data point;
  *    checked before TS_ERR_SIDE at the same point), TS_ERR_SIDE (a point on
- *    or across a line: touching a sloped line cannot be kept), and
+ *    or across a line: touching a sloped line cannot be kept; both decided
+ *    in exact arithmetic, docs/method.md §5.8), and
  *    TS_ERR_NONMONOTONE (index = first i such that f[0..i] is not monotone;
  *    flat runs are allowed).
  *  - Positive data may contain zeros: there S >= 0 (and S > 0 wherever both
@@ -437,7 +438,7 @@ typedef struct ts_interval_report {
     double at_lower;        /* the x where it is attained */
     double gap_upper;       /* exact min of upper(x) - S(x) (NaN if !has_upper) */
     double at_upper;
-    int certified;          /* every active gap > 0 (with the rounding guard of certify.c) */
+    int certified;          /* every active gap > 0 (with the rounding guard of docs/method.md §5.6) */
     /* Range and overshoot of the interval (docs/method.md §5.9), for every
      * spline (shape scheme or not; also from ts_certify, and per coordinate
      * from ts_curve_certify*, there in the parameter t).  Exact extrema of the
@@ -452,14 +453,22 @@ typedef struct ts_interval_report {
 /*
  * The gaps are exact: the minimum of a degree-3 trigonometric polynomial
  * (minus a linear function) from all its critical points (docs/method.md §2, §5),
- * computed in floating point.  "certified" requires gap > guard, a bound on
- * the rounding of that computation (about 1e-14 of the size of the control
- * values and the line over the interval; certify.c derives it).  Exceptions:
+ * computed in floating point, in the interval's own coordinates (the line
+ * as its value at x0 and its rise m (x1 - x0): translating x and the line
+ * together by an exact shift changes nothing).  "certified" requires
+ * gap > guard, a bound on the rounding of that computation (about 1e-14 of
+ * the size of the control values, of the line at x0 and of its rise over the
+ * interval, never of m x or c on their own; docs/method.md §5.6 derives it).
+ * Where no beta brings the gap above it although the gap may be positive,
+ * construction returns TS_ERR_PRECISION.  Exceptions:
  * positive intervals are also certified by B1, B2 >= 0 and B0, B3 > 0, and
  * an interval with a zero end (positive data with zeros) by all B_l >= 0;
  * its gap is then 0, attained at the zero knot.  Monotone intervals are
  * certified by a monotone control polygon and have no gap (NaN).  In the
- * geometric form a line interval (and ts_certify there) is also certified
+ * paper and C¹ forms an interval against a constant line (m = 0) is also
+ * certified when every control value B_l is strictly on the line's side
+ * (S - c = Σ A_l (B_l - c), a convex combination), however small the gaps.
+ * In the geometric form a line interval (and ts_certify there) is also certified
  * when every control gap Y_l - m X_l - c is positive (convex hull, docs/method.md §4),
  * each evaluated to the rounding of the gap itself (fma and error-free sums),
  * so a knot 1e-14 of |c| from the line is no obstacle; its guard likewise.

@@ -1,8 +1,10 @@
 /* docs/method.md §4, §5: per-interval certificates of a shape spline: exact gaps to a
  * line, the convex-hull and control-value proofs, their rounding guards.
- * Read-only: nothing here changes a spline.  The interval certificate adds
- * to the trigonometric minimum's guard (trigmin.c) the rounding of
- * C_l = ±(B_l − L(x_i)) and of κ = ±2mh/π: 8ε (max|B| + |m|(|x_i| + h) + |c|). */
+ * Read-only: nothing here changes a spline.  Gaps are taken in the local
+ * coordinates evaluation uses (docs/method.md §5.6): the paper and C¹ forms'
+ * C_l = ±(B_l − L_i) with L_i = fma(m, x_i, c) rounded once, so the guard
+ * added to the trigonometric minimum's (trigmin.c) is
+ * 8ε (max|B| + |L_i| + |m| h) + |m| times the rounding of h, never |m x_i|. */
 #include "internal.h"
 
 #include <float.h>
@@ -21,18 +23,35 @@ TS_INLINE int positive_proof(double B0, double B1, double B2, double B3)
     return (B0 >= 0.0) & (B1 >= 0.0) & (B2 >= 0.0) & (B3 >= 0.0);
 }
 
-/* docs/method.md §5.5: B monotone in the data's direction gives S' of that sign by
- * (2.1); equal ends need equal control values. */
+/* docs/method.md §5.5: B monotone (either way) gives S' of one sign by
+ * (2.1); it is the data's direction, as B0 = f_i, B3 = f_{i+1}, and equal
+ * ends need equal control values (both directions at once).  Branch-free. */
 TS_INLINE int monotone_proof(double B0, double B1, double B2, double B3)
 {
-    return B3 > B0   ? B0 <= B1 && B1 <= B2 && B2 <= B3
-           : B3 < B0 ? B0 >= B1 && B1 >= B2 && B2 >= B3
-                     : B0 == B1 && B1 == B2 && B2 == B3;
+    return ((B0 <= B1) & (B1 <= B2) & (B2 <= B3)) | ((B0 >= B1) & (B1 >= B2) & (B2 >= B3));
 }
 
 /* ------------------------------------------------------------------ */
 /* Interval gaps                                                        */
 /* ------------------------------------------------------------------ */
+
+/* |x1 − x0 − h| for h = fl(x1 − x0): the TwoSum error, exact (0 where the
+ * knots are within a factor 2 of each other).  Evaluation measures x from
+ * the nearer knot, so the curve of width h sits up to this much aside. */
+TS_INLINE double width_error(double x0, double x1, double h)
+{
+    double z = h - x1;
+    return fabs((x1 - (h - z)) + (-x0 - z));
+}
+
+/* The guard of docs/method.md §5.6 (paper and C¹ forms) beyond the
+ * trigonometric minimum's eb: the rounding of L_i = fma(m, x_i, c), of
+ * C_l = ±(B_l − L_i) and of κ, and where evaluation places x, all in
+ * 8ε (max|B| + |L_i| + |m| h), plus 4·2^-1074 for underflow. */
+TS_INLINE double local_guard(double eb, double bmax, double Li, double am, double h)
+{
+    return eb + 8.0 * TM_EPS * (bmax + fabs(Li) + am * h) + 4.0 * DBL_TRUE_MIN;
+}
 
 /* docs/method.md §4: one control gap sg·(Y − m X − c) of the geometric form, to the
  * rounding of the gap itself (not of the line's size: a knot may lie 1e-14
@@ -81,17 +100,24 @@ static void geo_local_gaps(const ts_spline *sp, size_t i, const double B[4], con
     /* h = fl(x_{i+1} − x_i) may differ from the true width (rarely: the
      * difference is exact when the knots are within a factor 2): measured
      * from the right end the curve sits that much aside */
-    double x0 = sp->x[i], x1 = sp->x[i + 1], z = h - x1;
-    double eh = fabs((x1 - (h - z)) + (-x0 - z)); /* TwoSum error of x1 − x0 */
+    double eh = width_error(sp->x[i], sp->x[i + 1], h);
     for (int l = 0; l < 4; l++)
         G[l] -= fabs(m) * eh * (1.0 + 2.0 * TM_EPS);
     G[1] -= 12.0 * TM_EPS * fabs(mh);
     G[2] -= 12.0 * TM_EPS * fabs(mh);
 }
 
-int ts__hull_inside(const ts_spline *sp, size_t i, const double B[4], const double X[4],
+int ts__hull_inside(const ts_spline *sp, size_t i, const double B[4], const double *X,
                     const ts_line *ln, int sign)
 {
+    if (!X) {
+        /* paper and C¹ forms, docs/method.md §5.6: a constant line, S − c =
+         * Σ A_l (B_l − c); the comparisons are exact */
+        int ok = ln->m == 0.0;
+        for (int l = 0; l < 4; l++)
+            ok = ok && (sign > 0 ? B[l] > ln->c : B[l] < ln->c);
+        return ok;
+    }
     double G[4], err[4];
     geo_local_gaps(sp, i, B, X, ln, sign, G, err);
     int ok = 1;
@@ -103,30 +129,28 @@ int ts__hull_inside(const ts_spline *sp, size_t i, const double B[4], const doub
 double ts__gap_segment(const double B[4], double xi, double h, const ts_line *ln, int sign,
                        double *theta, double *tpar, double *guard, int *proven)
 {
-    double C[4], t, eb, m = ln->m, c = ln->c, sg = sign > 0 ? 1.0 : -1.0, th;
-    double bmax = 0.0, xmax = fabs(xi) + h;
+    double C[4], t, eb, m = ln->m, sg = sign > 0 ? 1.0 : -1.0, th, bmax = 0.0;
     for (int l = 0; l < 4; l++)
         bmax = fabs(B[l]) > bmax ? fabs(B[l]) : bmax;
-    /* docs/method.md §5: S − L = Σ A_l (B_l − L(x_i)) − (2mh/π) θ since Σ A_l = 1
-     * (m = 0: κ = ±0, the same as 0 below) */
-    double L0 = m * xi + c;
+    /* docs/method.md §5.6 in local coordinates, x = x_i + (2h/π)θ:
+     * S − L = Σ A_l (B_l − L_i) − (2mh/π) θ since Σ A_l = 1, with
+     * L_i = m x_i + c rounded once (m = 0: L_i = c exactly, κ = 0) */
+    double Li = fma(m, xi, ln->c);
     int pos = 1;
     for (int l = 0; l < 4; l++) {
-        C[l] = sg * (B[l] - L0);
-        pos = pos && C[l] > 0.0; /* m = 0: L0 = c exactly, and the sign of a
-                                  * rounded difference is exact */
+        C[l] = sg * (B[l] - Li);
+        pos = pos && C[l] > 0.0; /* m = 0: the sign of a rounded difference is exact */
     }
     double kappa = m != 0.0 ? sg * m * (2.0 * h / TS_PI) : 0.0;
     double g = ts__trig_min_core(C[0], C[1], C[2], C[3], kappa, &th, &t, &eb);
-    if (theta)
-        *theta = th;
+    *theta = th;
     if (tpar)
         *tpar = t;
     if (guard)
-        *guard = eb + 8.0 * TM_EPS * (bmax + fabs(m) * xmax + fabs(c));
+        *guard = local_guard(eb, bmax, Li, fabs(m), h);
     /* a constant line (κ = 0) below every control value: S − L = Σ A_l C_l > 0 */
     if (proven)
-        *proven = pos && m == 0.0;
+        *proven = pos & (m == 0.0);
     return g;
 }
 
@@ -140,6 +164,8 @@ double ts__gap_ctl(const ts_spline *sp, size_t i, const double B[4], const doubl
     if (!X) {
         double theta, t;
         double g = ts__gap_segment(B, xi, h, ln, sign, &theta, &t, guard, NULL);
+        if (guard) /* the curve of width h measured from x_{i+1} (docs/method.md §5.6) */
+            *guard += fabs(ln->m) * width_error(xi, sp->x[i + 1], h) * (1.0 + 2.0 * TM_EPS);
         if (at)
             *at = isnan(g) ? (double)NAN : t >= 1.0 ? sp->x[i + 1] : xi + h * (theta / TS_HALF_PI);
         return g;
@@ -157,7 +183,7 @@ double ts__gap_ctl(const ts_spline *sp, size_t i, const double B[4], const doubl
             ts__basis_t(t, A);
             double u = A[0] * X[0] + A[1] * X[1] + A[2] * X[2] + A[3] * X[3];
             double xa = xi + h * u;
-            *at = xa < xi ? xi : xa > sp->x[i + 1] ? sp->x[i + 1] : xa;
+            *at = xa > sp->x[i + 1] ? sp->x[i + 1] : xa; /* u >= 0: xa >= xi */
         }
     }
     if (guard)
@@ -229,8 +255,9 @@ double ts__interval_gap(const ts_spline *sp, size_t i, const ts_line *line, int 
  *  positive with a zero end (promise S >= 0): all B_l >= 0;
  *  monotone: B monotone in the data's direction gives S' of that sign by
  *    (2.1) (and X' > 0 in the geometric form); no gaps (NaN);
- *  lines, geometric form only: every Y_l − m X_l − c above its rounding
- *    (hull_inside); with exact, also a trig-min gap above its guard will do.
+ *  lines: in the geometric form every Y_l − m X_l − c above its rounding,
+ *    in the others a constant line strictly beyond every B_l (hull_inside);
+ *    with exact, also a trig-min gap above its guard will do.
  * Without want_at (the build, which keeps no gaps: ts_spline_report
  * recomputes them) a control-value proof that holds decides alone, and the
  * gaps it makes unnecessary are not computed (the same decision). */
@@ -242,7 +269,7 @@ int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double
     /* a control value beyond TS_VALUE_MAX (tiny a_i) proves nothing: S could
      * overflow (NaN where B overflowed); the repair raises a_i instead */
     for (int l = 0; l < 4; l++)
-        if (!(fabs(B[l]) <= TS_VALUE_MAX) || (X && !isfinite(X[l])))
+        if (!(fabs(B[l]) <= TS_VALUE_MAX))
             return 0;
     if (sp->shape == TS_SHAPE_MONOTONE) {
         int ok = monotone_proof(B[0], B[1], B[2], B[3]);
@@ -250,10 +277,13 @@ int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double
             /* X' > 0 by (2.1) when D0, D2 > 0 and D1 >= -min(D0, D2)/4: at
              * a_i = 4/(3π) (TS_TERM_GEOMETRIC) D1 = h - 2k is 0 up to rounding.
              * min over θ of [(1-s)²c + (1-c)²s]/(sc) is 0.2426 (θ = π/4),
-             * so X' >= sc·min(D0, D2)(3·0.2426 - 2/4) > 0 inside. */
+             * so X' >= sc·min(D0, D2)(3·0.2426 - 2/4) > 0 inside.  Here
+             * D0 = κ > 0 and D2 = 1 − fl(1 − κ) >= 0 (X̂ of ts__controls_of,
+             * or [0, 0, 1, 1] in the limit), so D1 >= 0 (a monotone polygon)
+             * or D1 >= -min(D0, D2)/4 (then min > 0) is the whole test. */
             double D0 = X[1] - X[0], D1 = X[2] - X[1], D2 = X[3] - X[2];
             double dm = D0 < D2 ? D0 : D2;
-            ok = ok && ((D0 >= 0.0 && D1 >= 0.0 && D2 >= 0.0) || (dm > 0.0 && D1 >= -0.25 * dm));
+            ok = ok & (D1 >= -0.25 * dm);
         }
         return ok;
     }
@@ -271,14 +301,15 @@ int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double
             continue;
         const ts_line *ln = side == 0 ? &sp->lower : &sp->upper;
         int sign = side == 0 ? 1 : -1;
-        /* geometric form: the control gaps are a proof by themselves */
-        int hull = X && ts__hull_inside(sp, i, B, X, ln, sign);
+        /* the control gaps are a proof by themselves (geometric form; a
+         * constant line in the others) */
+        int hull = (X || ln->m == 0.0) && ts__hull_inside(sp, i, B, X, ln, sign);
         if (exact && !(hull && !want_at)) {
             double *g = side == 0 ? &cr->glo : &cr->gup, *a = side == 0 ? &cr->alo : &cr->aup;
             *g = ts__gap_ctl(sp, i, B, X, ln, sign, want_at ? a : NULL, &guard);
             ok = ok && (hull || *g > guard);
         } else {
-            ok = ok && hull; /* only the geometric form gets here */
+            ok = ok && hull; /* the build's proof, or not exact (geometric form) */
         }
     }
     return ok;
@@ -309,7 +340,8 @@ TS_INLINE int proven(const double *restrict f, const double *restrict b1,
 {
     double B0 = f[i], B1 = b1[i], B2 = b2[i], B3 = f[i + 1];
     int finite = (fabs(B1) <= TS_VALUE_MAX) & (fabs(B2) <= TS_VALUE_MAX);
-    return finite & (positive ? positive_proof(B0, B1, B2, B3) : monotone_proof(B0, B1, B2, B3));
+    return finite & ((positive & positive_proof(B0, B1, B2, B3)) |
+                     ((positive == 0) & monotone_proof(B0, B1, B2, B3)));
 }
 
 /* 1 if every interval of [i0, i1) is positive_proof'ed (a flag, so that it
@@ -334,7 +366,7 @@ size_t ts__skip_proven(const ts_spline *sp, size_t i, size_t i1)
     int positive = sp->shape == TS_SHAPE_POSITIVE;
     if (!(positive || (sp->shape == TS_SHAPE_MONOTONE && sp->form != TS_FORM_GEOMETRIC)))
         return i;
-    if (positive && i < i1 && all_proven_positive(sp->f, sp->b1, sp->b2, i, i1))
+    if (positive && all_proven_positive(sp->f, sp->b1, sp->b2, i, i1)) /* i < i1 */
         return i1;
     while (i < i1 && proven(sp->f, sp->b1, sp->b2, i, positive))
         i++;
@@ -356,17 +388,17 @@ TS_VECTOR_LOOP static void mono_certify(const double *restrict f, const double *
                                         double m, double c, double sg, int positive,
                                         unsigned char *restrict ok)
 {
-    const double gm = 8.0 * TM_EPS, am = fabs(m), ac = fabs(c);
+    const double am = fabs(m);
     for (size_t i = i0; i < i1; i++) {
         double B0 = f[i], B1 = b1[i], B2 = b2[i], B3 = f[i + 1];
-        double xi = x[i], hi = h[i], xmax = fabs(xi) + hi, bmax = 0.0;
+        double xi = x[i], hi = h[i], bmax = 0.0;
         bmax = fabs(B0) > bmax ? fabs(B0) : bmax;
         bmax = fabs(B1) > bmax ? fabs(B1) : bmax;
         bmax = fabs(B2) > bmax ? fabs(B2) : bmax;
         bmax = fabs(B3) > bmax ? fabs(B3) : bmax;
         int good = (fabs(B0) <= TS_VALUE_MAX) & (fabs(B1) <= TS_VALUE_MAX) &
                    (fabs(B2) <= TS_VALUE_MAX) & (fabs(B3) <= TS_VALUE_MAX);
-        double L0 = m * xi + c;
+        double L0 = fma(m, xi, c);
         double C0 = sg * (B0 - L0), C1 = sg * (B1 - L0), C2 = sg * (B2 - L0), C3 = sg * (B3 - L0);
         /* gap_ctl has 0 for m = 0: ±0 here, the same from here on (|κ|, the
          * signs of κ·2^-e, κ != 0 do not see the sign of a zero) */
@@ -393,7 +425,8 @@ TS_VECTOR_LOOP static void mono_certify(const double *restrict f, const double *
         double at1;
         good &= ts__trig_min_ends(c0, c1, c2, c3, ks, b, &best, &at1, &babs);
         double gd = ts__trig_min_guard(0, babs, Ms, fabs(ks));
-        double g = best * q, guard = gd * q + gm * (bmax + am * xmax + ac);
+        double g = best * q, guard = local_guard(gd * q, bmax, L0, am, hi);
+        guard += am * width_error(xi, x[i + 1], hi) * (1.0 + 2.0 * TM_EPS); /* as gap_ctl */
         int pass = g > guard;
         /* positive: the control-value proof, or (both ends > 0) the gap */
         int ends_pos = (B0 > 0.0) & (B3 > 0.0);

@@ -36,9 +36,11 @@
 #endif
 
 /* Construction loops that vectorise.  With GCC on x86-64 Linux
- * they are compiled for x86-64-v4 (AVX-512), AVX2 and the baseline, one
- * picked at load time (ifunc), vectorised also at -O2, and without
- * trapping-math so that loops with selects vectorise.  Every version gives
+ * they are compiled for x86-64-v4 (AVX-512), x86-64-v3 (AVX2 with FMA, so
+ * that the loops' fma() calls of docs/method.md §5.6 stay inline and
+ * vectorise) and the baseline, one picked at load time (ifunc), vectorised
+ * also at -O2, and without trapping-math so that loops with selects
+ * vectorise.  Every version gives
  * the same values (bitwise: no contraction into FMA, fp-contract=off; no
  * reassociation); no floating-point exception flag is part of the library's
  * behaviour.  Loops meant to vectorise take their arrays as restrict
@@ -49,7 +51,7 @@
 #elif defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
     !defined(TS_FAST_PORTABLE) && !defined(__SANITIZE_THREAD__)
 #define TS_VECTOR_LOOP                                                                   \
-    __attribute__((target_clones("arch=x86-64-v4", "avx2", "default"),                 \
+    __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"),       \
                    optimize("no-trapping-math", "fp-contract=off", "tree-vectorize",     \
                             "vect-cost-model=dynamic")))
 #else
@@ -484,7 +486,9 @@ TS_INLINE void ts__trig_eval_in(const ts_spline *sp, size_t i, double x, int wan
 double ts__interval_integral_scaled(const ts_spline *sp, size_t i, double a, double b, int k);
 
 /* ---- shape.c (docs/method.md §5) ----------------------------------------------- */
-/* ts__shape_begin checks the options and sets the boundaries (*dir: the
+/* For a scheme (opt->shape one of TS_SHAPE_POSITIVE..TS_SHAPE_MONOTONE, as
+ * ts_spline_new has checked; sp, opt not NULL): ts__shape_begin checks the
+ * margins' length and sets the boundaries (*dir: the
  * direction of the data f[0..n], monotone; f: the caller's values, sp->f need
  * not be filled yet); ts__shape_range then checks margins of intervals
  * [i0, i1), data of points [p0, p1), adjusts their slopes (d there already
@@ -504,10 +508,13 @@ typedef struct ts__cert {
 void ts__controls_of(const ts_spline *sp, size_t i, double B[4], double X[4], int *geo);
 /* Gap of a segment with control values B on [xi, xi + h] (paper and C¹
  * forms, and curve coordinates) to the line ln: sign +1 min of S − L, −1 min
- * of L − S, exact (ts__trig_min_core); *theta (and *tpar = tan(θ/2)) of the
- * minimum, *guard its rounding guard, *proven = 1 when the line is constant
+ * of L − S, exact (ts__trig_min_core) in local coordinates (L_i = m xi + c
+ * rounded once, docs/method.md §5.6); *theta (and *tpar = tan(θ/2)) of the
+ * minimum, *guard its rounding guard (h taken as exact: ts__gap_ctl adds
+ * |m| times its rounding), *proven = 1 when the line is constant
  * and every control gap ±(B_l − c) is > 0 (a proof by itself: S − L =
- * Σ A_l C_l, A_l >= 0, Σ A_l = 1).  Any out-pointer may be NULL. */
+ * Σ A_l C_l, A_l >= 0, Σ A_l = 1).  theta is required; the other
+ * out-pointers may be NULL. */
 double ts__gap_segment(const double B[4], double xi, double h, const ts_line *ln, int sign,
                        double *theta, double *tpar, double *guard, int *proven);
 /* Gap of interval i with control values B (abscissae X in the geometric
@@ -526,9 +533,11 @@ void ts__range_ctl(const ts_spline *sp, size_t i, const double B[4], const doubl
 void ts__range_segment(const double B[4], double ti, double h, ts_interval_report *rep);
 /* The same for interval i as stored. */
 double ts__interval_gap(const ts_spline *sp, size_t i, const ts_line *line, int sign, double *at);
-/* Geometric form: every local control gap above its rounding and the
- * evaluator's (a proof by itself); X the local abscissae of ts__controls_of. */
-int ts__hull_inside(const ts_spline *sp, size_t i, const double B[4], const double X[4],
+/* The control gaps' proof (docs/method.md §5.6): geometric form (X the local
+ * abscissae of ts__controls_of), every local control gap above its rounding
+ * and the evaluator's; paper and C¹ forms (X NULL), a constant line strictly
+ * below (sign +1) or above (−1) every B_l. */
+int ts__hull_inside(const ts_spline *sp, size_t i, const double B[4], const double *X,
                     const ts_line *ln, int sign);
 /* Is interval i with controls B (X) inside the region of sp's scheme?  exact:
  * with the trig-min certificates (into *cr, places if want_at); else only
@@ -624,7 +633,7 @@ typedef struct ts__repair_ops {
  * TS_OK with a_i set, or TS_ERR_INFEASIBLE (TS_ERR_PRECISION where the best
  * gap is positive but not above its guard) with a_i = a0 again. */
 ts_status ts__repair_search(const ts__repair_ops *o, size_t i, double al, double a0, double t);
-/* Certify intervals [i0, i1) of a shape spline (their controls set), raising
+/* Certify intervals [i0, i1) of a shape spline (shape != TS_SHAPE_NONE; their controls set), raising
  * beta_i where a gap is not positive; in order.  The C¹ form steps back after
  * a repair: call it once on [0, n).  After the last range ts__certify_done
  * sets certified and have_certs. */

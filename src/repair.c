@@ -89,8 +89,10 @@ ts_status ts__repair_search(const ts__repair_ops *o, size_t i, double al, double
             hi = amax;
         }
     }
-    /* bisection: lo fails, hi is certified */
-    for (int it = 0; it < 200 && lo != hi && fabs(hi - lo) > 1e-12 * hi; it++) {
+    /* bisection: lo fails, hi is certified; each step halves hi − lo, so it
+     * ends by the relative width (at most ~2100 steps from 1e307 down to a
+     * subnormal a) or, for subnormal a, at adjacent doubles */
+    while (lo != hi && fabs(hi - lo) > 1e-12 * hi) {
         double mid = lo + 0.5 * (hi - lo);
         if (mid == lo || mid == hi)
             break;
@@ -103,10 +105,10 @@ ts_status ts__repair_search(const ts__repair_ops *o, size_t i, double al, double
     double cand = hi + t;
     if (cand > amax)
         cand = 0.5 * (hi + amax);
-    if (!(cand <= TS_A_MAX)) /* a huge margin t */
-        cand = hi > TS_A_MAX ? hi : TS_A_MAX;
-    if (!ok_at(o, i, cand) && !ok_at(o, i, hi))
-        return infeasible(o, i, a0);
+    if (!(cand <= TS_A_MAX)) /* a huge margin t (hi <= TS_A_MAX) */
+        cand = TS_A_MAX;
+    if (!ok_at(o, i, cand))
+        (void)ok_at(o, i, hi); /* certified: every hi above was */
     return TS_OK;
 }
 
@@ -160,16 +162,12 @@ static int spline_limit_inside(void *ctx, size_t i)
 static double spline_margin(void *ctx, size_t i)
 {
     const ts_spline *sp = ((spline_ctx *)ctx)->sp;
-    double B[4], X[4], r = (double)INFINITY, guard, at;
-    int geo;
-    ts__controls_of(sp, i, B, X, &geo);
-    if (sp->has_lower) {
-        double g = ts__gap_ctl(sp, i, B, geo ? X : NULL, &sp->lower, 1, &at, &guard) - guard;
-        if (!(g >= r))
-            r = g;
-    }
+    double B[4], r = (double)INFINITY, guard, at;
+    ts__B(sp, i, B); /* paper and C¹ forms only (the geometric form has no margin) */
+    if (sp->has_lower)
+        r = ts__gap_ctl(sp, i, B, NULL, &sp->lower, 1, &at, &guard) - guard;
     if (sp->has_upper) {
-        double g = ts__gap_ctl(sp, i, B, geo ? X : NULL, &sp->upper, -1, &at, &guard) - guard;
+        double g = ts__gap_ctl(sp, i, B, NULL, &sp->upper, -1, &at, &guard) - guard;
         if (!(g >= r))
             r = g;
     }
@@ -180,13 +178,12 @@ static double spline_margin(void *ctx, size_t i)
 static double spline_gap(void *ctx, size_t i)
 {
     const ts_spline *sp = ((spline_ctx *)ctx)->sp;
-    double B[4], X[4], r = (double)INFINITY, guard, at;
-    int geo;
-    ts__controls_of(sp, i, B, X, &geo);
+    double B[4], r = (double)INFINITY, guard, at;
+    ts__B(sp, i, B); /* paper and C¹ forms only, as spline_margin */
     if (sp->has_lower)
-        r = fmin(r, ts__gap_ctl(sp, i, B, geo ? X : NULL, &sp->lower, 1, &at, &guard));
+        r = fmin(r, ts__gap_ctl(sp, i, B, NULL, &sp->lower, 1, &at, &guard));
     if (sp->has_upper)
-        r = fmin(r, ts__gap_ctl(sp, i, B, geo ? X : NULL, &sp->upper, -1, &at, &guard));
+        r = fmin(r, ts__gap_ctl(sp, i, B, NULL, &sp->upper, -1, &at, &guard));
     return r;
 }
 
@@ -253,10 +250,8 @@ static int relax_neighbours(ts_spline *sp, size_t i, int exact)
 static int c1_uniform_ok(ts_spline *sp, double A, int exact)
 {
     size_t n = sp->n;
-    for (size_t j = 0; j < n; j++) {
-        double a = sp->alpha[j] > A ? sp->alpha[j] : A;
-        sp->beta[j] = a - sp->alpha[j];
-    }
+    for (size_t j = 0; j < n; j++) /* A >= every alpha_j (c1_uniform) */
+        sp->beta[j] = A - sp->alpha[j];
     ts__controls(sp, 0, n);
     for (size_t j = 0; j < n; j++)
         if (!ts__check_interval(sp, j, exact))
@@ -281,7 +276,7 @@ static int c1_uniform(ts_spline *sp, double t, int exact)
         if (!(hi <= 1e6 * a0 && hi <= TS_A_MAX))
             return 0;
     }
-    for (int it = 0; lo > 0.0 && it < 60 && hi - lo > 1e-12 * hi; it++) {
+    while (lo > 0.0 && hi - lo > 1e-12 * hi) { /* from hi = 1.1 lo: 37 halvings */
         double mid = lo + 0.5 * (hi - lo);
         if (c1_uniform_ok(sp, mid, exact))
             hi = mid;
@@ -324,7 +319,7 @@ static double c1_best_right(const ts_spline *sp, size_t i, double uL, double UR,
     double a = 0.0, b = UR, u1 = b - r * (b - a), u2 = a + r * (b - a), g1, g2;
     double m1 = c1_margin(sp, i, uL, u1, &g1), m2 = c1_margin(sp, i, uL, u2, &g2);
     *gap = fmax(g1, g2);
-    for (int it = 0; it < 60 && b - a > 1e-12 * UR; it++) {
+    while (b - a > 1e-12 * UR) { /* 0.618 a step: 58 steps */
         if (m1 < m2) {
             a = u1, u1 = u2, m1 = m2;
             u2 = a + r * (b - a);
@@ -358,7 +353,7 @@ static ts_status c1_refusal(const ts_spline *sp, size_t i)
     double a = 0.0, b = UL, u1 = b - r * (b - a), u2 = a + r * (b - a), g, gbest;
     double m1 = c1_best_right(sp, i, u1, UR, &gbest), m2 = c1_best_right(sp, i, u2, UR, &g);
     gbest = fmax(gbest, g);
-    for (int it = 0; it < 60 && b - a > 1e-12 * UL; it++) {
+    while (b - a > 1e-12 * UL) {
         if (m1 < m2) {
             a = u1, u1 = u2, m1 = m2;
             u2 = a + r * (b - a);
@@ -444,15 +439,11 @@ ts_status ts__certify_range(ts_spline *sp, const ts_options *opt, size_t i0, siz
 {
     sp->certified = 0;
     sp->have_certs = 0;
-    if (sp->shape == TS_SHAPE_NONE)
-        return TS_OK;
     return certify_loop(sp, opt, i0, i1 < sp->n ? i1 : sp->n, err);
 }
 
 void ts__certify_done(ts_spline *sp, const ts_options *opt)
 {
-    if (sp->shape == TS_SHAPE_NONE)
-        return;
     sp->have_certs = ts__certify_exact(opt);
     sp->certified = 1;
 }

@@ -98,16 +98,16 @@ ts_status ts_certify(const ts_spline *s, const ts_line *lower, const ts_line *up
         ts_interval_report r;
         report_base(s, i, &r);
         ts__controls_of(s, i, B, X, &geo);
-        /* geometric form: the convex hull proof (hull_inside) also counts */
+        /* the control gaps' proof (hull_inside) also counts */
         if (lower) {
             r.has_lower = 1;
             r.gap_lower = ts__gap_ctl(s, i, B, geo ? X : NULL, lower, 1, &r.at_lower, &guard);
-            ok = r.gap_lower > guard || (geo && ts__hull_inside(s, i, B, X, lower, 1));
+            ok = r.gap_lower > guard || ts__hull_inside(s, i, B, geo ? X : NULL, lower, 1);
         }
         if (upper) {
             r.has_upper = 1;
             r.gap_upper = ts__gap_ctl(s, i, B, geo ? X : NULL, upper, -1, &r.at_upper, &guard);
-            ok = ok && (r.gap_upper > guard || (geo && ts__hull_inside(s, i, B, X, upper, -1)));
+            ok = ok && (r.gap_upper > guard || ts__hull_inside(s, i, B, geo ? X : NULL, upper, -1));
         }
         r.certified = ok;
         if (!ok && first == TS_NO_INDEX)

@@ -33,8 +33,9 @@
  *  (3) root location: brackets end below 4ε in t; the value error is
  *      ≤ ½ max|g''| (8ε)² (negligible against (1), since |g''| ≤ 40 max|C|).
  * guard = 2 × [(1) + 2η] (factor 2 for second-order terms).  The interval
- * certificate adds the rounding of C_l = ±(B_l − L(x_i)) and of
- * κ = ±2mh/π: 8ε (max|B| + |m|(|x_i| + h) + |c|).
+ * certificate (certificate.c, docs/method.md §5.6 items 4–7) adds the
+ * rounding of C_l = ±(B_l − L_i), L_i = fma(m, x_i, c), of κ = ±2mh/π and
+ * of where evaluation places x: 8ε (max|B| + |L_i| + |m| h) + |m| err(h).
  */
 #include "internal.h"
 
@@ -43,20 +44,28 @@
 #include <stdint.h>
 #include <string.h>
 
-#define TM_MAXC 48   /* candidate slots: ≤ 2 ends + 6 roots + 6 deep leaves (+ split points) */
 #define TM_DEPTH 46  /* subdivision depth limit: width 2^-46 in t */
 
 typedef struct tm_ctx {
     double D0, D1, D2, k; /* scaled differences and κ */
-    double t[TM_MAXC];
-    int nc;
+    double c[4];          /* scaled C_l */
+    double best, bt;      /* least g so far and its t */
     int depth;            /* deepest subdivision level reached */
 } tm_ctx;
 
+/* A candidate t (a root of P, a deep leaf's or a split point): g there,
+ * kept if below the least so far (ts__basis_t is exact at t = 0 and 1). */
 static void add_cand(tm_ctx *z, double t)
 {
-    if (z->nc < TM_MAXC)
-        z->t[z->nc++] = t;
+    double A[4];
+    ts__basis_t(t, A);
+    double g = A[0] * z->c[0] + A[1] * z->c[1] + A[2] * z->c[2] + A[3] * z->c[3];
+    if (z->k != 0.0)
+        g -= z->k * ts__theta_of(t);
+    if (g < z->best) {
+        z->best = g;
+        z->bt = t;
+    }
 }
 
 /* P(t) = q³ g'(θ) in factored form (each term has small relative error). */
@@ -117,7 +126,7 @@ static void refine(tm_ctx *z, const double b[7], double lo, double hi, int s)
     /* start where the Bernstein polygon b (on [lo, hi]) crosses zero */
     double t = 0.5 * (lo + hi), step = hi - lo, step_old = hi - lo;
     for (int j = 0; j < 6; j++) {
-        if ((b[j] < 0.0 && b[j + 1] > 0.0) || (b[j] > 0.0 && b[j + 1] < 0.0)) {
+        if (b[j] < 0.0 && b[j + 1] > 0.0) { /* the only sign change: from − (s) to + */
             double u = (j + b[j] / (b[j] - b[j + 1])) / 6.0, c = lo + (hi - lo) * u;
             if (c > lo && c < hi)
                 t = c;
@@ -290,40 +299,19 @@ double ts__trig_min_core(double C0, double C1, double C2, double C3, double kapp
     z.D1 = c2 - c1;
     z.D2 = c3 - c2;
     z.k = ks;
-    z.nc = 0;
+    z.c[0] = c0, z.c[1] = c1, z.c[2] = c2, z.c[3] = c3;
     z.depth = 0;
-    double b[7], best, babs;
-    double at1;
-    if (!ts__trig_min_ends(c0, c1, c2, c3, ks, b, &best, &at1, &babs)) {
-        add_cand(&z, 0.0);
-        add_cand(&z, 1.0);
+    double b[7], babs, at1;
+    int ends = ts__trig_min_ends(c0, c1, c2, c3, ks, b, &z.best, &at1, &babs);
+    z.bt = at1;
+    if (!ends) /* the roots: candidates after the two ends */
         isolate(&z, b, 0.0, 1.0, 0);
-    }
-    double bt = at1;
-    /* the roots (candidates after the two ends) */
-    for (int j = 2; j < z.nc; j++) {
-        double t = z.t[j], A[4];
-        if (t == 0.0 || t == 1.0) { /* as at the ends */
-            A[0] = t == 0.0 ? 1.0 : 0.0;
-            A[1] = A[2] = 0.0;
-            A[3] = 1.0 - A[0];
-        } else {
-            ts__basis_t(t, A);
-        }
-        double g = A[0] * c0 + A[1] * c1 + A[2] * c2 + A[3] * c3;
-        if (ks != 0.0)
-            g -= ks * ts__theta_of(t);
-        if (g < best) {
-            best = g;
-            bt = t;
-        }
-    }
     double gd = ts__trig_min_guard(z.depth, babs, Ms, fabs(ks));
-    *tbest = bt;
+    *tbest = z.bt;
     if (theta)
-        *theta = ts__theta_of(bt);
+        *theta = ts__theta_of(z.bt);
     *errb = scale2(gd, e);
-    return scale2(best, e);
+    return scale2(z.best, e);
 }
 
 double ts__trig_min(const double C[4], double kappa, double *theta_min)

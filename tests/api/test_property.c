@@ -144,16 +144,19 @@ static int boundaries(const dataset *D, int scheme, ts_line lines[2], int sgn[2]
 
 /* Does interval j have a knot on or across a boundary in exact arithmetic
  * (or too close to decide)? */
-static int knot_outside(const dataset *D, size_t j, int scheme)
+static int point_outside(const dataset *D, size_t l, int scheme)
 {
     ts_line L[2];
     int sg[2], nl = boundaries(D, scheme, L, sg), out = 0;
-    for (int k = 0; k < nl; k++)
-        for (size_t l = j; l <= j + 1; l++) {
-            double eb, v = exact_gap(D->f[l], &L[k], D->x[l], sg[k], &eb);
-            out = out || !(v > eb);
-        }
+    for (int k = 0; k < nl; k++) {
+        double eb, v = exact_gap(D->f[l], &L[k], D->x[l], sg[k], &eb);
+        out = out || !(v > eb);
+    }
     return out;
+}
+static int knot_outside(const dataset *D, size_t j, int scheme)
+{
+    return point_outside(D, j, scheme) || point_outside(D, j + 1, scheme);
 }
 
 /* a "profile" in (0, 1]: mostly order-one, with near-zero points, steep
@@ -330,6 +333,7 @@ static double scale_of(const double B[4], const ts_line *L, double x0, double x1
 typedef struct stats {
     long ok, infeasible, sets, control_violate, control_sets, repaired, unproven;
     long across;        /* sets with a knot on or across a line in exact arithmetic */
+    long side;          /* refused by the data check (TS_ERR_SIDE): each of them across */
     double worst_rule;  /* geometric form: largest rule_ratio of a repaired interval, in ε */
 } stats;
 
@@ -862,7 +866,7 @@ int main(void)
     for (int scheme = TS_SHAPE_POSITIVE; scheme <= TS_SHAPE_MONOTONE; scheme++) {
         TH_CASE(names[scheme]);
         for (int form = 0; form < NFORMS; form++) {
-            stats st = {0, 0, 0, 0, 0, 0, 0, 0, 0.0};
+            stats st = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0.0};
             long fail0 = th_fail_;
             for (unsigned k = 0; k < TS_PROP_SETS; k++) {
                 seed((unsigned)scheme, (unsigned)form, k);
@@ -895,6 +899,15 @@ int main(void)
                                e.index);
                     else if (e.index < D.n)
                         check_infeasible(&D, e.index, form);
+                } else if (rc == TS_ERR_SIDE && lines) {
+                    /* the data check decides the side exactly (docs/method.md
+                     * §5.8): the point named is on or across a line in exact
+                     * arithmetic (or within the independent bound of it) */
+                    st.side++;
+                    CHECK(e.where == TS_WHERE_POINT && e.index <= D.n);
+                    if (e.index <= D.n)
+                        CHECKF(point_outside(&D, e.index, scheme),
+                               "TS_ERR_SIDE at point %zu, inside in exact arithmetic", e.index);
                 } else if (rc == TS_ERR_UNPROVEN && lines && form == TS_FORM_C1) {
                     /* the C¹ search gave up without a proof (it no longer
                      * claims infeasibility there) */
@@ -909,11 +922,11 @@ int main(void)
                     fprintf(stderr, "  ^ scheme %s form %d set %u (n = %zu)\n", names[scheme], form, k,
                             D.n);
             }
-            printf("%-8s form %d: %ld sets, %ld certified (%ld intervals repaired), %ld infeasible "
-                   "(%ld with a knot across a line in exact arithmetic); "
-                   "control: %ld of %ld leave the region\n",
-                   names[scheme], form, st.sets, st.ok, st.repaired, st.infeasible, st.across,
-                   st.control_violate, st.control_sets);
+            printf("%-8s form %d: %ld sets, %ld certified (%ld intervals repaired), %ld infeasible, "
+                   "%ld refused by the data check (%ld with a knot across a line in exact "
+                   "arithmetic); control: %ld of %ld leave the region\n",
+                   names[scheme], form, st.sets, st.ok, st.repaired, st.infeasible, st.side,
+                   st.across, st.control_violate, st.control_sets);
             if (st.unproven)
                 printf("         C1 search gave up without a proof on %ld sets\n", st.unproven);
             if (form == TS_FORM_GEOMETRIC && scheme != TS_SHAPE_MONOTONE)
@@ -923,8 +936,9 @@ int main(void)
                 /* infeasible exactly where the data have a knot across a
                  * line that floating point put inside (each infeasible set
                  * was checked to have one; a set with one cannot be built) */
-                CHECKF(st.infeasible == st.across, "%s geometric: %ld infeasible, %ld across",
-                       names[scheme], st.infeasible, st.across);
+                CHECKF(st.infeasible + st.side == st.across,
+                       "%s geometric: %ld infeasible, %ld refused by the data check, %ld across",
+                       names[scheme], st.infeasible, st.side, st.across);
                 /* monotone: the rule B1 <= B2 and X' > 0 need no repair */
                 if (scheme == TS_SHAPE_MONOTONE)
                     CHECKF(st.repaired == 0, "monotone geometric: %ld intervals repaired",
