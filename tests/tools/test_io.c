@@ -1122,6 +1122,12 @@ static void test_reader_realworld(void)
     EXPECT_ERR("when,v\n2024-02-29,1\n2023-02-29,2\n", &o, TSU_IO_ERR_TIME,
                "t.csv:3:1: not a valid ISO 8601 date or date-time: \"2023-02-29\" "
                "(YYYY-MM-DD[THH:MM[:SS]][Z|+HH:MM])", 3, 1);
+    /* white space as the delimiter ends a date at its blank (the man page: use
+     * the T form there); a date-time with a space was read as one field by
+     * the dates' fast path (found by fuzz_table) */
+    EXPECT_ERR("2024-03-01 1\n2024-03-01 06:30 2\n", &o, TSU_IO_ERR_NUMBER,
+               "t.csv:2:12: expected a number, found \"06:30\" (white space separates fields: write "
+               "a date-time with T, YYYY-MM-DDTHH:MM)", 2, 12);
     /* a first line of dates is data */
     CHECK(RT("2024-01-01,1\n2024-01-02,2\n", &o, &t, &e) == TSU_IO_OK && t.nrows == 2 &&
           t.cols[0][1] - t.cols[0][0] == 86400);

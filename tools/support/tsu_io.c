@@ -2045,6 +2045,11 @@ static tsu_io_status value_error(tsu_reader *r, int ns, const field *f, const ch
     else if (!r->decimal_comma && number_comma(s, e))
         snprintf(hint, sizeof hint, " (digit grouping is not accepted; a decimal comma needs "
                  "--decimal-comma)");
+    else if (!delim_char(r->delim) && fieldno > 1 && fieldno - 2 < r->ncols &&
+             r->is_time[fieldno - 2] && e - s >= 5 && IS_DIGIT(s[0]) && IS_DIGIT(s[1]) &&
+             s[2] == ':')
+        snprintf(hint, sizeof hint, " (white space separates fields: write a date-time with T, "
+                 "YYYY-MM-DDTHH:MM)");
     else
         delim_hint(r, ls, le, hint, sizeof hint);
     if (!hint[0] && r->rows == 0 && r->header_line && is_header(r, ls, le, &all_text) > 0 &&
@@ -2089,9 +2094,12 @@ static tsu_io_status parse_data(tsu_reader *r, const char *ls, const char *le)
         }
         /* fast path: an unquoted number in a number column */
         if (p < le && *p != '"' && r->is_time[nf] == 1) {
-            const char *stop, *q;
+            const char *stop, *q, *fe = le;
             tsu_time_form tf;
-            if (tsu_parse_time(p, le, &v, &tf, &stop)) {
+            if (!dc) /* white space ends the field: "date HH:MM" is two fields */
+                for (fe = p; fe < le && !IS_BLANK(*fe); fe++)
+                    ;
+            if (tsu_parse_time(p, fe, &v, &tf, &stop)) {
                 if ((q = fast_field_end(stop, le, dc)) != NULL) {
                     r->row[nf++] = v;
                     if (q == le)
