@@ -7,27 +7,23 @@
 #include <pthread.h>
 #include <unistd.h>
 
-/* Inline into ts_eval and ts_eval_deriv with want a constant: inside the
- * data (the usual case) the cursor's interval and the paper or C¹ form's
- * value without a call. */
-TS_INLINE ts_status eval_one(const ts_spline *sp, double x, ts_cursor *cur, int want, double o[3])
+#if defined(__GNUC__)
+#define TS_NOINLINE __attribute__((noinline))
+#else
+#define TS_NOINLINE
+#endif
+
+/* x outside [x0, xn] or NaN: the extrapolation of ts_extrap (header); o[1],
+ * o[2] are 0 where it has no derivative. */
+static ts_status eval_out(const ts_spline *sp, double x, int want, double o[3])
 {
     o[1] = o[2] = 0.0;
-    size_t n = sp->n;
-    double x0 = sp->x[0], xn = sp->x[n];
-    if (x0 <= x && x <= xn) { /* NaN fails */
-        size_t i = ts__locate(sp, x, cur);
-        if (sp->form != TS_FORM_GEOMETRIC)
-            ts__trig_eval_in(sp, i, x, want, o);
-        else
-            ts__interval_eval(sp, i, x, want, o);
-        return TS_OK;
-    }
     if (isnan(x) || (isinf(x) && sp->extrap != TS_EXTRAP_CLAMP))
         return TS_ERR_DOMAIN;
-    int left = x < x0;
+    size_t n = sp->n;
+    int left = x < sp->x[0];
     size_t i = left ? 0 : n - 1;
-    double xe = left ? x0 : xn;
+    double xe = left ? sp->x[0] : sp->x[n];
     switch (sp->extrap) {
     case TS_EXTRAP_CLAMP:
         o[0] = sp->f[left ? 0 : n];
@@ -48,37 +44,30 @@ TS_INLINE ts_status eval_one(const ts_spline *sp, double x, ts_cursor *cur, int 
     }
 }
 
-TS_INLINE ts_status eval_deriv(const ts_spline *s, double x, ts_cursor *cur, double *y,
-                               double *dy, double *d2y)
+/* S, S', S'' at any x (o[0..want]; o[1], o[2] 0 beyond want inside, as
+ * eval_out's outside). */
+static ts_status eval_at(const ts_spline *sp, double x, ts_cursor *cur, int want, double o[3])
 {
-    double o[3] = {(double)NAN, (double)NAN, (double)NAN};
-    ts_status st = TS_ERR_NULL;
-    if (s) {
-        int want = d2y ? 2 : dy ? 1 : 0;
-        st = eval_one(s, x, cur, want, o);
-        if (st != TS_OK)
-            o[0] = o[1] = o[2] = (double)NAN;
-    }
-    if (y)
-        *y = o[0];
-    if (dy)
-        *dy = o[1];
-    if (d2y)
-        *d2y = o[2];
-    return st;
+    if (!(sp->x[0] <= x && x <= sp->x[sp->n])) /* NaN fails */
+        return eval_out(sp, x, want, o);
+    o[1] = o[2] = 0.0;
+    size_t i = ts__locate(sp, x, cur);
+    if (sp->form != TS_FORM_GEOMETRIC)
+        ts__trig_eval_in(sp, i, x, want, o);
+    else
+        ts__geo_in(sp, i, x, want, o);
+    return TS_OK;
 }
-
-#if defined(__GNUC__)
-#define TS_NOINLINE __attribute__((noinline))
-#else
-#define TS_NOINLINE
-#endif
 
 /* ts_eval's every other case, out of line so that its usual one needs no
  * stack frame. */
 static TS_NOINLINE ts_status eval_value(const ts_spline *s, double x, ts_cursor *cur, double *y)
 {
-    return eval_deriv(s, x, cur, y, NULL, NULL);
+    double o[3];
+    ts_status st = s ? eval_at(s, x, cur, 0, o) : TS_ERR_NULL;
+    if (y)
+        *y = st == TS_OK ? o[0] : (double)NAN;
+    return st;
 }
 
 /* ts_eval's usual case in the geometric form (x in the cursor's interval),
@@ -86,8 +75,9 @@ static TS_NOINLINE ts_status eval_value(const ts_spline *s, double x, ts_cursor 
 static TS_NOINLINE ts_status eval_geo(const ts_spline *s, double x, ts_cursor *cur, double *y)
 {
     size_t i = ts__cursor_interval(s, x, cur);
-    double o[3];
-    if (i < s->n && ts__geo_in(s, i, x, 0, o)) {
+    if (i < s->n) {
+        double o[3];
+        ts__geo_in(s, i, x, 0, o);
         *y = o[0];
         return TS_OK;
     }
@@ -97,7 +87,7 @@ static TS_NOINLINE ts_status eval_geo(const ts_spline *s, double x, ts_cursor *c
 ts_status ts_eval(const ts_spline *s, double x, ts_cursor *cur, double *y)
 {
     /* the usual case: x inside the data (NaN fails) and in the cursor's
-     * interval; the same value as eval_one's */
+     * interval; the same value as eval_at's */
     if (s && y && x <= s->x[s->n]) {
         if (s->form == TS_FORM_GEOMETRIC)
             return eval_geo(s, x, cur, y);
@@ -115,7 +105,17 @@ ts_status ts_eval(const ts_spline *s, double x, ts_cursor *cur, double *y)
 ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur, double *y, double *dy,
                         double *d2y)
 {
-    return eval_deriv(s, x, cur, y, dy, d2y);
+    double o[3];
+    ts_status st = s ? eval_at(s, x, cur, d2y ? 2 : dy ? 1 : 0, o) : TS_ERR_NULL;
+    if (st != TS_OK)
+        o[0] = o[1] = o[2] = (double)NAN;
+    if (y)
+        *y = o[0];
+    if (dy)
+        *dy = o[1];
+    if (d2y)
+        *d2y = o[2];
+    return st;
 }
 
 static ts_status batch_eval(const ts_spline *s, int deriv, const double *xq, size_t m,
@@ -139,7 +139,7 @@ static ts_status batch_eval(const ts_spline *s, int deriv, const double *xq, siz
     ts_status result = TS_OK;
     /* The kernels take every block of queries inside [x0, xn]; a block that
      * holds a query outside (or NaN) is split into runs of in-range queries
-     * (kernels again) and single queries (eval_one). */
+     * (kernels again) and single queries (eval_out). */
     size_t j = 0;
     while (j < m) {
         j += ts__fast_batch(s, deriv, xq + j, m - j, yq + j, cur);
@@ -147,7 +147,7 @@ static ts_status batch_eval(const ts_spline *s, int deriv, const double *xq, siz
             break;
         size_t end = m - j < TS_FAST_BLOCK ? m : j + TS_FAST_BLOCK;
         size_t run = j; /* start of the current run of in-range queries */
-        for (; j <= end; j++) {
+        for (;; j++) { /* leaves at j == end */
             if (j < end && x0 <= xq[j] && xq[j] <= xn)
                 continue;
             if (j > run)
@@ -156,7 +156,7 @@ static ts_status batch_eval(const ts_spline *s, int deriv, const double *xq, siz
             if (j == end)
                 break;
             double o[3];
-            ts_status st = eval_one(s, xq[j], cur, deriv, o);
+            ts_status st = eval_out(s, xq[j], deriv, o);
             yq[j] = st == TS_OK ? o[deriv] : (double)NAN;
             if (st != TS_OK && result == TS_OK) {
                 result = st;
@@ -195,15 +195,16 @@ static void *mt_run(void *arg)
  * saves (docs/design.md: 0.16x at 1e3 random queries, 1.24-1.49x at 1e4). */
 #define TS_MT_MIN_PER_THREAD 8192
 
+unsigned ts__mt_threads(unsigned asked, long online)
+{
+    unsigned long t = asked ? asked : online > 0 ? (unsigned long)online : 1ul;
+    return t < TS_MT_MAX ? (unsigned)t : TS_MT_MAX;
+}
+
 ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size_t m,
                            double *yq, unsigned nthreads, ts_error *err)
 {
-    if (nthreads == 0) {
-        long c = sysconf(_SC_NPROCESSORS_ONLN);
-        nthreads = c > 0 ? (unsigned)c : 1u;
-    }
-    if (nthreads > TS_MT_MAX)
-        nthreads = TS_MT_MAX;
+    nthreads = ts__mt_threads(nthreads, nthreads ? 0 : sysconf(_SC_NPROCESSORS_ONLN));
     if (!s || nthreads <= 1 || m / TS_MT_MIN_PER_THREAD < (size_t)nthreads)
         return batch_eval(s, deriv, xq, m, yq, NULL, err);
     if (!xq || !yq || deriv < 0 || deriv > 2)
@@ -229,9 +230,9 @@ ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size
     }
     for (unsigned t = 0; t < nthreads; t++) {
         if (jobs[t].st != TS_OK) {
+            /* only TS_ERR_DOMAIN, at a query (the arguments are checked above) */
             result = jobs[t].st;
-            size_t idx = jobs[t].err.index == TS_NO_INDEX ? TS_NO_INDEX : t * chunk + jobs[t].err.index;
-            ts__error_set(err, result, idx, jobs[t].err.where);
+            ts__error_set(err, result, t * chunk + jobs[t].err.index, jobs[t].err.where);
             break;
         }
     }

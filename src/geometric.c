@@ -34,98 +34,28 @@ static void geo_side_init(const ts_spline *sp, size_t i, int right, geo_side *g)
     }
 }
 
-/* X̂(φ) − u and X̂'(φ). */
-static void xhat(double kappa, double phi, double *X, double *Xp)
-{
-    double s = sin(phi), c = cos(phi), A[4], D[4];
-    ts__basis(s, c, A);
-    ts__basis_d1(s, c, D);
-    *X = s * s + kappa * (A[1] - A[2]);
-    *Xp = 2.0 * s * c + kappa * (D[1] - D[2]);
-}
-
-/* Solve X̂(φ) = u for u in (0, 1/2), φ in [0, π/4] (X̂(π/4) = 1/2 by the
- * symmetry above).  Newton inside a bracket that every step shrinks; a
- * Newton step leaving the bracket, or not at most half the step before the
- * last one, is replaced by bisection, so the iteration always converges
- * (at a_i near a*, X̂' nearly vanishes at π/4 and Newton alone is slow). */
-static double geo_bracketed(double kappa, double u)
-{
-    const double quarter = 0.25 * TS_PI;
-    double lo = 0.0, hi = quarter;
-    /* start: near 0 X̂ ≈ 3κφ; for small κ X̂ ≈ sin²φ */
-    double phi = u / (3.0 * kappa), alt = asin(sqrt(u));
-    if (alt < phi)
-        phi = alt;
-    if (!(phi > lo && phi < hi))
-        phi = 0.5 * (lo + hi);
-    double step_old = hi - lo, step = hi - lo;
-    for (int it = 0; it < 400; it++) {
-        double F, Fp;
-        xhat(kappa, phi, &F, &Fp);
-        F -= u;
-        if (F == 0.0)
-            return phi;
-        if (F < 0.0)
-            lo = phi;
-        else
-            hi = phi;
-        double next = Fp > 0.0 ? phi - F / Fp : -1.0;
-        if (Fp > 0.0 && fabs(next - phi) <= 2.0 * DBL_EPSILON * phi)
-            return next; /* converged to rounding */
-        if (!(next > lo && next < hi) || fabs(next - phi) > 0.5 * step_old)
-            next = 0.5 * (lo + hi);
-        step_old = step;
-        step = fabs(next - phi);
-        phi = next;
-        if (hi - lo <= 2.0 * DBL_EPSILON * hi)
-            return phi;
-    }
-    return phi;
-}
-
-/* X̂(φ) = u as the batch kernel solves it (ts__geo_root); the bracketed
- * iteration above where that does not converge (a_i very near a*, u near
- * 1/2).  sc: sin, cos, 1 − sin, 1 − cos at the root. */
-static double geo_solve_sc(double kappa, double u, double sc[4])
-{
-    double phi = !(u > 0.0) ? 0.0 : u >= 0.5 ? 0.25 * TS_PI : ts__geo_root(u, kappa, sc);
-    if (phi >= 0.0 && u > 0.0 && u < 0.5)
-        return phi;
-    if (phi < 0.0)
-        phi = geo_bracketed(kappa, u);
-    ts__sincos_q(phi, &sc[0], &sc[1], &sc[2], &sc[3]);
-    return phi;
-}
-
+/* φ in [0, π/4] with X̂(φ) = u: ts__geo_root (internal.h) for u in (0, 1/2),
+ * the ends exactly (u = 0, and u >= 1/2, which rounding of the nearer
+ * end's distance can give). */
 static double geo_solve(double kappa, double u)
 {
     double sc[4];
-    return geo_solve_sc(kappa, u, sc);
+    return u > 0.0 && u < 0.5 ? ts__geo_root(u, kappa, sc) : u > 0.0 ? 0.25 * TS_PI : 0.0;
 }
 
-/* Value and derivatives in u = (x − x_i)/h (so h² never under- or
- * overflows) on one side at φ.  sign = +1 from the left end, −1 from the
- * right (x decreases with φ there). */
-static void geo_side_eval_u(const geo_side *g, double phi, double sign, int want, double out[3])
+/* The end φ = 0 of one side (s = 0, c = 1): the value (B0 exactly), and the
+ * first and second derivatives in u = (x − x_i)/h (so h² never under- or
+ * overflows).  sign = +1 from the left end, −1 from the right (x decreases
+ * with φ there). */
+static void geo_end(const geo_side *g, double sign, double out[3])
 {
-    double s, c, ms, mc, A[4];
-    ts__sincos_q(phi, &s, &c, &ms, &mc); /* φ in [0, π/4] */
-    A[1] = s * ms * (3.0 - s); /* ts__basis */
-    A[2] = c * mc * (3.0 - c);
-    out[0] = g->F0 * c * c + g->F1 * s * s + g->k * (g->D0 * A[1] - g->D1 * A[2]);
-    /* a flat interval is constant (c² + s² need not round to 1) */
-    if (g->F0 == g->F1 && g->k * g->D0 == 0.0 && g->k * g->D1 == 0.0)
-        out[0] = g->F0;
-    if (want < 1)
-        return;
+    const double s = 0.0, c = 1.0;
+    out[0] = g->F0;
     double D1[4], dF = g->F1 - g->F0, sc2 = 2.0 * s * c;
     ts__basis_d1(s, c, D1);
     double Yp = dF * sc2 + g->k * (g->D0 * D1[1] - g->D1 * D1[2]);
     double Xp = sc2 + g->kappa * (D1[1] - D1[2]); /* X̂' (dx/dφ = ±h X̂') */
     out[1] = sign * (Yp / Xp);
-    if (want < 2)
-        return;
     double D2[4], c2 = 2.0 * (c * c - s * s);
     ts__basis_d2(s, c, D2);
     double Ypp = dF * c2 + g->k * (g->D0 * D2[1] - g->D1 * D2[2]);
@@ -137,30 +67,22 @@ static void geo_side_eval_u(const geo_side *g, double phi, double sign, int want
 void ts__geo_eval(const ts_spline *sp, size_t i, double x, int want, double out[3])
 {
     double x0 = sp->x[i], x1 = sp->x[i + 1];
-    geo_side g;
-    if (!(x0 <= x && x <= x1)) {
-        /* TS_EXTRAP_EXTEND: osculating parabola of the end (header) */
-        int right = x > x1;
-        double e[3];
-        geo_side_init(sp, i, right, &g);
-        double t = (x - (right ? x1 : x0)) / g.h;
-        geo_side_eval_u(&g, 0.0, right ? -1.0 : 1.0, 2, e);
-        out[0] = e[0] + t * (e[1] + 0.5 * t * e[2]);
-        if (want > 0)
-            out[1] = (e[1] + t * e[2]) / g.h;
-        if (want > 1)
-            out[2] = e[2] / g.h / g.h;
+    if (x0 <= x && x <= x1) {
+        ts__geo_in(sp, i, x, want, out); /* the batch kernel's solve and expressions */
         return;
     }
-    /* inside: the batch kernel's solve and expressions (internal.h) */
-    if (ts__geo_in(sp, i, x, want, out))
-        return;
-    double dl = x - x0, dr = x1 - x, sc[4];
-    int right = dr < dl;
+    /* TS_EXTRAP_EXTEND: osculating parabola of the end (header) */
+    int right = x > x1;
+    double e[3];
+    geo_side g;
     geo_side_init(sp, i, right, &g);
-    (void)geo_solve_sc(g.kappa, (right ? dr : dl) / g.h, sc);
-    for (int k = 0; k <= want; k++)
-        out[k] = ts__geo_y(k, g.F0, g.F1, g.D0, g.D1, g.h, g.kappa, right, sc[0], sc[1], sc[2], sc[3]);
+    double t = (x - (right ? x1 : x0)) / g.h;
+    geo_end(&g, right ? -1.0 : 1.0, e);
+    out[0] = e[0] + t * (e[1] + 0.5 * t * e[2]);
+    if (want > 0)
+        out[1] = (e[1] + t * e[2]) / g.h;
+    if (want > 1)
+        out[2] = e[2] / g.h / g.h;
 }
 
 /* 12-point Gauss–Legendre nodes and weights on [−1, 1] (positive half),

@@ -217,8 +217,11 @@ TS_INLINE double ts__geo_start(double u, double k)
     double c3 = TS_GEO_C30 + TS_GEO_C31 * k, c4 = TS_GEO_C40 + TS_GEO_C41 * k;
     phi = phi < Q ? phi : Q;
     double M = phi * (3.0 * k + phi * (b + phi * (c3 + phi * c4))) - u;
+    /* M' > 0 at this φ: at least 0.18·3κ over a dense scan of u in [0, 1/2]
+     * and every κ the library forms (tests/unit/test_cover_eval.c; M'
+     * itself dips below 0 near π/4 for the largest κ, not at this φ) */
     double Mp = 3.0 * k + phi * (2.0 * b + phi * (3.0 * c3 + 4.0 * c4 * phi));
-    phi = phi - M / (Mp > DBL_MIN ? Mp : DBL_MIN);
+    phi = phi - M / Mp;
     phi = phi > 0.0 ? phi : 0.0;
     return phi < Q ? phi : Q;
 }
@@ -237,6 +240,7 @@ TS_INLINE double ts__geo_halley(double phi, double k, double u, double *so, doub
     double X1 = 2.0 * (s * c) + k * (c * p1 + s * p2);
     double X2 = 2.0 * (c * c - s * s) +
                 k * ((c * c) * (6.0 * s - 8.0) - s * p1 + c * p2 - (s * s) * (6.0 * c - 8.0));
+    /* 2X̂'² underflows at φ = 0 for κ below 1e-154 (a_i above 1e153): no 0/0 */
     double den = 2.0 * (X1 * X1) - F * X2;
     den = den > DBL_MIN ? den : DBL_MIN;
     double next = phi - 2.0 * (F * X1) / den;
@@ -252,10 +256,14 @@ TS_INLINE double ts__geo_halley(double phi, double k, double u, double *so, doub
 /* Halley steps from ts__geo_start until one is below 2^-20 φ (Halley's
  * error after it is of the order of its cube: rounding), at most
  * TS_GEO_PASSES; sin, cos, 1 − sin, 1 − cos at the root from that step's
- * rotation (s[4]).  Returns the root, or −1 if it has not converged (a_i
- * very near a*, u near 1/2: the caller takes geometric.c's bracketed
- * iteration).  The batch kernel runs the same steps a pass at a time. */
-#define TS_GEO_PASSES 8
+ * rotation (s[4]).  A dense scan of u in [2^-1022, 1/2] and every κ the
+ * library forms (a_i >= TS_GEOMETRIC_A_MIN) stops within 9 steps, the most
+ * at a_i = 0.3472 and u near 1/2, where X̂' nearly vanishes
+ * (tests/unit/test_cover_eval.c); a subnormal u, where the steps are rounding noise
+ * of a few 2^-1074/κ, ends at the cap with such an iterate
+ * (docs/method.md §4).  The batch kernel runs the same steps a pass at a
+ * time. */
+#define TS_GEO_PASSES 16
 TS_INLINE double ts__geo_root(double u, double k, double sc[4])
 {
     double phi = ts__geo_start(u, k);
@@ -265,7 +273,7 @@ TS_INLINE double ts__geo_root(double u, double k, double sc[4])
             return next;
         phi = next;
     }
-    return -1.0;
+    return phi;
 }
 /* The geometric form at the solved φ, seen from the end φ is measured from
  * (docs/method.md §4; geometric.c's geo_side): F0, F1 the values there and
@@ -436,21 +444,18 @@ void ts__geo_wholes(const ts_spline *sp, size_t i0, size_t i1, double *cum);
 double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k);
 /* S, S', S'' (out[0..want]) of interval i of a geometric-form spline at x
  * inside it (x_i <= x <= x_{i+1}), as the batch kernel computes them:
- * ts__geo_root, then ts__geo_y.  Returns 0, o untouched, where the solve
- * has not converged (then ts__geo_eval).  Inline: ts_eval's path. */
-TS_INLINE int ts__geo_in(const ts_spline *sp, size_t i, double x, int want, double o[3])
+ * ts__geo_root, then ts__geo_y.  Inline: ts_eval's path. */
+TS_INLINE void ts__geo_in(const ts_spline *sp, size_t i, double x, int want, double o[3])
 {
     double h = sp->h[i], a = sp->alpha[i] + sp->beta[i];
     double kappa = 2.0 / (3.0 * TS_PI * a), dl = x - sp->x[i], dr = sp->x[i + 1] - x, sc[4];
     int right = dr < dl;
-    if (!(ts__geo_root((right ? dr : dl) / h, kappa, sc) >= 0.0))
-        return 0;
+    (void)ts__geo_root((right ? dr : dl) / h, kappa, sc);
     size_t i0 = right ? i + 1 : i, i1 = right ? i : i + 1;
     double F0 = sp->f[i0], F1 = sp->f[i1];
     double D0 = right ? -sp->d[i0] : sp->d[i0], D1 = right ? -sp->d[i1] : sp->d[i1];
     for (int k = 0; k <= want; k++)
         o[k] = ts__geo_y(k, F0, F1, D0, D1, h, kappa, right, sc[0], sc[1], sc[2], sc[3]);
-    return 1;
 }
 
 /* ==== L2 ============================================================ */
@@ -610,6 +615,10 @@ size_t ts__fast_batch(const ts_spline *sp, int deriv, const double *xq, size_t m
  * kernel is not available here, else 1 (*done, if not NULL, receives k). */
 int ts__fast_batch_isa(const ts_spline *sp, int deriv, const double *xq, size_t m,
                        double *yq, ts_cursor *cur, int isa, size_t *done);
+/* The kernel for isa (−1 the best available, 0 portable C, 1 AVX2+FMA,
+ * 2 AVX-512F) on a CPU with AVX2+FMA (has2) and AVX-512F (has512): 0, 1, 2,
+ * or −1 if that kernel cannot run there or isa is none of these. */
+int ts__fast_pick(int isa, int has2, int has512);
 
 /* ---- repair.c (docs/method.md §5) ---------------------------------------------- */
 /* One interval (of a spline or a curve) as the repair search sees it. */
@@ -640,6 +649,13 @@ ts_status ts__repair_search(const ts__repair_ops *o, size_t i, double al, double
 ts_status ts__certify_range(ts_spline *sp, const ts_options *opt, size_t i0, size_t i1,
                             ts_error *err);
 void ts__certify_done(ts_spline *sp, const ts_options *opt);
+
+/* ==== L4 ============================================================ */
+
+/* ---- eval.c ----------------------------------------------------------- */
+/* Threads of ts_eval_batch_mt: asked, or if 0 the online processors (1 if
+ * that count is not positive), at most 64. */
+unsigned ts__mt_threads(unsigned asked, long online);
 
 #if defined(__GNUC__)
 #pragma GCC visibility pop

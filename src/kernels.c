@@ -46,6 +46,11 @@
 #define TS_FAST_X86 0
 #define TS_ALWAYS_INLINE static inline
 #endif
+#if defined(__GNUC__)
+#define TS_NOINLINE __attribute__((noinline))
+#else
+#define TS_NOINLINE
+#endif
 
 /* ---- locate ---------------------------------------------------------- */
 
@@ -97,7 +102,7 @@ typedef struct fast_iv {
 TS_ALWAYS_INLINE fast_iv fast_interval(const ts_spline *sp, size_t i)
 {
     fast_iv v = {sp->x[i], sp->x[i + 1], TS_HALF_PI / sp->h[i], sp->f[i], sp->b1[i], sp->b2[i], sp->f[i + 1]};
-    v.w = v.b0 == v.b1 && v.b1 == v.b2 && v.b2 == v.b3 ? 0.0 : v.w;
+    v.w = ((v.b0 == v.b1) & (v.b1 == v.b2) & (v.b2 == v.b3)) ? 0.0 : v.w; /* &: no branch */
     return v;
 }
 
@@ -138,15 +143,13 @@ TS_ALWAYS_INLINE size_t stage_sorted(const ts_spline *sp, const double *q, size_
 
 /* The geometric form (docs/method.md §4), per query as geometric.c's
  * ts__geo_eval: the distances to both ends, the interval's h, κ = 2/(3π a),
- * f_i, f_{i+1}, d_i, d_{i+1}, and its index (for the rare query whose solve
- * does not converge, evaluated by ts__geo_eval).  phi, u, res: the solve's
- * scratch; s, c, ms, mc: sin φ, cos φ, 1 − sin φ, 1 − cos φ at its root. */
+ * f_i, f_{i+1}, d_i, d_{i+1}.  phi, u: the solve's scratch; s, c, ms, mc:
+ * sin φ, cos φ, 1 − sin φ, 1 − cos φ at its root. */
 typedef struct geo_stage {
     double dl[TS_FAST_BLOCK], dr[TS_FAST_BLOCK], h[TS_FAST_BLOCK], kappa[TS_FAST_BLOCK];
     double f0[TS_FAST_BLOCK], f1[TS_FAST_BLOCK], d0[TS_FAST_BLOCK], d1[TS_FAST_BLOCK];
-    double phi[TS_FAST_BLOCK], u[TS_FAST_BLOCK], res[TS_FAST_BLOCK];
+    double phi[TS_FAST_BLOCK], u[TS_FAST_BLOCK];
     double s[TS_FAST_BLOCK], c[TS_FAST_BLOCK], ms[TS_FAST_BLOCK], mc[TS_FAST_BLOCK];
-    size_t iv[TS_FAST_BLOCK];
 } geo_stage;
 
 typedef struct geo_iv {
@@ -161,7 +164,7 @@ TS_ALWAYS_INLINE geo_iv geo_interval(const ts_spline *sp, size_t i)
     return g;
 }
 
-TS_ALWAYS_INLINE void geo_stage_one(geo_stage *st, size_t j, double x, const geo_iv *g, size_t i)
+TS_ALWAYS_INLINE void geo_stage_one(geo_stage *st, size_t j, double x, const geo_iv *g)
 {
     st->dl[j] = x - g->x0;
     st->dr[j] = g->x1 - x;
@@ -171,7 +174,6 @@ TS_ALWAYS_INLINE void geo_stage_one(geo_stage *st, size_t j, double x, const geo
     st->f1[j] = g->f1;
     st->d0[j] = g->d0;
     st->d1[j] = g->d1;
-    st->iv[j] = i;
 }
 
 /* stage_sorted for the geometric form. */
@@ -191,7 +193,7 @@ TS_ALWAYS_INLINE size_t geo_stage_sorted(const ts_spline *sp, const double *q, s
             g = geo_interval(sp, i);
             next = i + 1 < n ? g.x1 : (double)INFINITY;
         }
-        geo_stage_one(st, j, x, &g, i);
+        geo_stage_one(st, j, x, &g);
     }
     return i;
 }
@@ -244,7 +246,7 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
         i = idx[j];
         if (gs) {
             geo_iv g = geo_interval(sp, i);
-            geo_stage_one(gs, j, q[j], &g, i);
+            geo_stage_one(gs, j, q[j], &g);
         } else {
             fast_iv v = fast_interval(sp, i);
             stage_one(st, j, q[j], &v, want_w);
@@ -310,10 +312,10 @@ TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, dou
  * after such a step is of the order of its cube: rounding; two steps for
  * κ <= 0.4, three for some u up to κ = 1/2).  The last step is applied to
  * (sin φ, cos φ) by its Taylor rotation (|e| <= 2^-20: the dropped e³/6 is
- * below 2^-62), so the evaluation needs no further sine.  A query whose iteration has not
- * converged after TS_GEO_PASSES steps (a_i very near a*, u near 1/2, where X̂'
- * nearly vanishes) is evaluated by ts__geo_eval.  One query runs the
- * steps of ts__geo_root (internal.h), which single evaluation runs. */
+ * below 2^-62), so the evaluation needs no further sine.  Every query stops
+ * within TS_GEO_PASSES steps but one with a subnormal u, which takes the
+ * last iterate (ts__geo_root, internal.h: the same steps, which single
+ * evaluation runs). */
 
 TS_ALWAYS_INLINE void geo_side(const geo_stage *st, size_t j, int *right, double *u)
 {
@@ -322,9 +324,7 @@ TS_ALWAYS_INLINE void geo_side(const geo_stage *st, size_t j, int *right, double
     *u = (*right ? dr : dl) / st->h[j];
 }
 
-/* Returns 0 when every query of the block has stopped (the usual case: then
- * geo_finish has nothing to do). */
-TS_ALWAYS_INLINE int geo_solve_block(geo_stage *st, size_t nb)
+TS_ALWAYS_INLINE void geo_solve_block(geo_stage *st, size_t nb)
 {
     for (size_t j = 0; j < nb; j++) {
         int right;
@@ -332,7 +332,6 @@ TS_ALWAYS_INLINE int geo_solve_block(geo_stage *st, size_t nb)
         geo_side(st, j, &right, &u);
         st->u[j] = u;
         st->phi[j] = ts__geo_start(u, k);
-        st->res[j] = 1.0;
     }
     for (int pass = 0; pass < TS_GEO_PASSES; pass++) {
         double open = 0.0; /* a double flag: this loop vectorises on every ISA */
@@ -342,12 +341,11 @@ TS_ALWAYS_INLINE int geo_solve_block(geo_stage *st, size_t nb)
              * does not depend on them: its φ stays where that step started,
              * and every later pass repeats the same step from there, giving
              * the same bits.  s, c, ms, mc: at the step's end, for the
-             * evaluation.  res: 1 while open, 0 once stopped. */
+             * evaluation. */
             double phi = st->phi[j], s, c, ms, mc;
             double next = ts__geo_halley(phi, st->kappa[j], st->u[j], &s, &c, &ms, &mc);
             double more = fabs(next - phi) <= 0x1p-20 * next ? 0.0 : 1.0; /* NaN: 1 */
             open = more > 0.0 ? more : open;
-            st->res[j] = more;
             st->phi[j] = more > 0.0 ? next : phi;
             st->s[j] = s;
             st->c[j] = c;
@@ -355,9 +353,8 @@ TS_ALWAYS_INLINE int geo_solve_block(geo_stage *st, size_t nb)
             st->mc[j] = mc;
         }
         if (open == 0.0)
-            return 0;
+            return;
     }
-    return 1;
 }
 
 /* docs/method.md §4 at the solved φ from the nearer end: the value, or its
@@ -374,16 +371,15 @@ TS_ALWAYS_INLINE void geo_values(int deriv, const geo_stage *st, size_t nb, doub
     }
 }
 
-TS_ALWAYS_INLINE int geo_eval_block(int deriv, geo_stage *st, size_t nb, double *y)
+TS_ALWAYS_INLINE void geo_eval_block(int deriv, geo_stage *st, size_t nb, double *y)
 {
-    int open = geo_solve_block(st, nb);
+    geo_solve_block(st, nb);
     if (deriv == 0)
         geo_values(0, st, nb, y);
     else if (deriv == 1)
         geo_values(1, st, nb, y);
     else
         geo_values(2, st, nb, y);
-    return open;
 }
 
 /* Fills the stage's unused places [nb, TS_FAST_BLOCK) with its first query. */
@@ -398,20 +394,6 @@ TS_ALWAYS_INLINE void geo_pad(geo_stage *st, size_t nb)
         st->f1[j] = st->f1[0];
         st->d0[j] = st->d0[0];
         st->d1[j] = st->d1[0];
-        st->iv[j] = st->iv[0];
-    }
-}
-
-/* After geo_eval_block: the queries whose solve did not converge. */
-static void geo_finish(const ts_spline *sp, int deriv, const geo_stage *st, const double *q,
-                       size_t nb, double *y)
-{
-    for (size_t j = 0; j < nb; j++) {
-        if (st->res[j] > 0.0) {
-            double o[3];
-            ts__geo_eval(sp, st->iv[j], q[j], deriv, o);
-            y[j] = o[deriv];
-        }
     }
 }
 
@@ -432,11 +414,9 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
             if (!stage_block(sp, xq + j0, nb, 0, NULL, &st.g, cur))
                 break;
             geo_pad(&st.g, nb); /* as below */
-            int open = geo_eval_block(deriv, &st.g, TS_FAST_BLOCK, yt);
+            geo_eval_block(deriv, &st.g, TS_FAST_BLOCK, yt);
             for (size_t j = 0; j < nb; j++)
                 yq[j0 + j] = yt[j];
-            if (open)
-                geo_finish(sp, deriv, &st.g, xq + j0, nb, yq + j0);
             j0 += nb;
         }
         return j0;
@@ -489,21 +469,33 @@ pipeline_avx512(const ts_spline *sp, int deriv, const double *xq, size_t m, doub
 }
 #endif
 
-/* isa: −1 best available, 0 portable C, 1 AVX2+FMA, 2 AVX-512F; NULL if not here. */
-static pipeline_fn pick(int isa)
+/* not inlined: one copy, whose every branch the unit test takes */
+TS_NOINLINE int ts__fast_pick(int isa, int has2, int has512)
 {
     if (isa < -1 || isa > 2)
-        return NULL;
-#if TS_FAST_X86
-    __builtin_cpu_init();
-    int has2 = __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
-    int has512 = has2 && __builtin_cpu_supports("avx512f");
+        return -1;
     if ((isa == -1 || isa == 2) && has512)
-        return pipeline_avx512;
+        return 2;
     if ((isa == -1 || isa == 1) && has2)
-        return pipeline_avx2;
+        return 1;
+    return isa <= 0 ? 0 : -1;
+}
+
+/* The kernel ts__fast_pick chooses on this CPU; NULL if none. */
+static TS_NOINLINE pipeline_fn pick(int isa)
+{
+#if TS_FAST_X86
+    static const pipeline_fn fn[3] = {pipeline_portable, pipeline_avx2, pipeline_avx512};
+    __builtin_cpu_init();
+    /* & rather than &&: no branch on a CPU feature, so every path runs on any CPU */
+    int has2 = (__builtin_cpu_supports("avx2") != 0) & (__builtin_cpu_supports("fma") != 0);
+    int has512 = has2 & (__builtin_cpu_supports("avx512f") != 0);
+#else
+    static const pipeline_fn fn[3] = {pipeline_portable, NULL, NULL};
+    int has2 = 0, has512 = 0;
 #endif
-    return isa <= 0 ? pipeline_portable : NULL;
+    int k = ts__fast_pick(isa, has2, has512);
+    return k < 0 ? NULL : fn[k];
 }
 
 static size_t batch(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq,

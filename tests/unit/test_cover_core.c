@@ -516,7 +516,7 @@ static void geometric_tiny(void)
 {
     /* u = (x − x_i)/h subnormal: the model start and Halley steps cannot
      * reach a step below 2^-20 φ (subnormal φ has too few bits), so both
-     * the scalar solve and the kernel fall back to the bracketed iteration.
+     * the scalar solve and the kernel take the iterate at the step cap.
      * Expected: S(x) = f_i + d_i (x − x_i) + O((x − x_i)²) = f_i to
      * rounding (|d_i|·|x − x_i| < 1e-300), S'(x) = d_i + O(|x − x_i|·S'') =
      * d_i with the solve's rounding: X̂'(0) = 3κ and Y'(0) = 3k d_i are
