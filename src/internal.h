@@ -582,9 +582,14 @@ double ts__surf_k(const double *t, const double *a, size_t n, size_t i, size_t n
                   ts_form form);
 /* Control nets of every patch from z, p, q, r, ax, ay (docs/method.md §11.1). */
 void ts__surf_net(ts_surface *s);
-/* Control gaps of patch (i, j) to a plane: G[16] = sign (B − plane at the
- * control abscissae), *guard the rounding of forming them (0 for a
- * constant plane: then the signs are exact). */
+/* p x + q y + c to about one rounding of the result (error-free products
+ * and sums, docs/method.md §11.3); *err (if not NULL) bounds its error. */
+double ts__surf_plane_at(const ts_plane *pl, double x, double y, double *err);
+/* Control gaps of patch (i, j) to a plane in local coordinates: G[16] =
+ * sign (B − plane at the control abscissae), the plane taken at the patch's
+ * corner and its rise to the abscissae; *guard the rounding of forming them
+ * and of where evaluation places a point (0 for a constant plane: then the
+ * signs are exact). */
 void ts__surf_gaps(const ts_surface *s, size_t i, size_t j, const ts_plane *pl, int sign,
                    double G[16], double *guard);
 /* Are all 16 gaps >= guard (nonzero corners: > guard)?  Proves the patch on

@@ -25,9 +25,10 @@ void ts_surface_options_init(ts_surface_options *opt)
         defaults(opt);
 }
 
+/* docs/method.md §11.3: accurate to its own rounding, not to that of p x */
 static double plane_at(const ts_plane *pl, double x, double y)
 {
-    return pl->p * x + pl->q * y + pl->c;
+    return ts__surf_plane_at(pl, x, y, NULL);
 }
 
 static int finite_plane(const ts_plane *pl)

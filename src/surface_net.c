@@ -154,6 +154,27 @@ void ts__surf_net(ts_surface *s)
     }
 }
 
+double ts__surf_plane_at(const ts_plane *pl, double x, double y, double *err)
+{
+    /* docs/method.md §11.3: p x = P + e, q y = Q + f exactly (fma); P + Q =
+     * s1 + e1, s1 + c = s2 + e2 exactly (TwoSum); the small terms summed */
+    double P = pl->p * x, e = fma(pl->p, x, -P), Q = pl->q * y, f = fma(pl->q, y, -Q);
+    double s1 = P + Q, z1 = s1 - P, e1 = (P - (s1 - z1)) + (Q - z1);
+    double s2 = s1 + pl->c, z2 = s2 - s1, e2 = (s1 - (s2 - z2)) + (pl->c - z2);
+    double v = s2 + (((e1 + e2) + e) + f);
+    if (err)
+        *err = 2.0 * DBL_EPSILON * (fabs(e1) + fabs(e2) + fabs(e) + fabs(f) + fabs(v)) +
+               4.0 * DBL_TRUE_MIN;
+    return v;
+}
+
+/* |x1 − x0 − h| for h = fl(x1 − x0): the TwoSum error, exact */
+static double width_err(double x0, double x1, double h)
+{
+    double z = h - x1;
+    return fabs((x1 - (h - z)) + (-x0 - z));
+}
+
 void ts__surf_gaps(const ts_surface *s, size_t i, size_t j, const ts_plane *pl, int sign,
                    double G[16], double *guard)
 {
@@ -162,24 +183,30 @@ void ts__surf_gaps(const ts_surface *s, size_t i, size_t j, const ts_plane *pl, 
     ts__surf_xhat(s->ax, i, s->form, X);
     ts__surf_xhat(s->ay, j, s->form, Y);
     int geo = s->form == TS_FORM_GEOMETRIC;
-    double e = 0.0;
+    /* docs/method.md §11.3, local coordinates: the plane at the patch's
+     * corner (rounded about once) plus its rise p hx X̂_k + q hy Ŷ_l to the
+     * control abscissae (geometric form; in the paper and C¹ forms the
+     * linear rest is the certificate's, §11.4) */
+    double eL, L0 = ts__surf_plane_at(pl, s->x[i], s->y[j], &eL);
+    double bmax = 0.0, ph = pl->p * hx, qh = pl->q * hy;
     for (int k = 0; k < 4; k++) {
         for (int l = 0; l < 4; l++) {
-            /* the plane at the control abscissae (geometric form, docs/method.md
-             * §11.2); in the paper and C¹ forms at the patch corner (the
-             * linear rest is the certificate's, §11.4) */
-            double px = pl->p * (s->x[i] + (geo ? hx * X[k] : 0.0));
-            double qy = pl->q * (s->y[j] + (geo ? hy * Y[l] : 0.0));
-            double L = px + qy + pl->c;
-            double m = fabs(px) + fabs(qy);
-            if (m > e)
-                e = m;
+            double L = L0 + (geo ? ph * X[k] + qh * Y[l] : 0.0);
+            double b = fabs(B[4 * k + l]);
+            bmax = b > bmax ? b : bmax;
             G[4 * k + l] = sign > 0 ? B[4 * k + l] - L : L - B[4 * k + l];
         }
     }
-    /* the plane's rounding (3 operations, with the abscissae: 6 ε) and the
-     * subtraction; 0 for a constant plane, where the signs are exact */
-    *guard = e > 0.0 ? 16.0 * DBL_EPSILON * (e + fabs(pl->c)) : 0.0;
+    /* 0 for a constant plane (L0 = c: the signs are exact); else the guard
+     * of §11.3 in local quantities only */
+    if (pl->p == 0.0 && pl->q == 0.0)
+        *guard = 0.0;
+    else
+        *guard = eL + 16.0 * DBL_EPSILON * (bmax + fabs(L0) + fabs(ph) + fabs(qh)) +
+                 (fabs(pl->p) * width_err(s->x[i], s->x[i + 1], hx) +
+                  fabs(pl->q) * width_err(s->y[j], s->y[j + 1], hy)) *
+                     (1.0 + 2.0 * DBL_EPSILON) +
+                 4.0 * DBL_TRUE_MIN;
 }
 
 int ts__surf_gaps_inside(const double G[16], double guard)
