@@ -91,6 +91,16 @@ static int check_output_opts(const cli_opts *o)
     return CLI_OK;
 }
 
+/* One value or one per interval, not both (fit, certify and curve). */
+static int check_alpha_beta(const cli_opts *o)
+{
+    if (o->alpha_set && o->alphas)
+        return cli_usage(o->cmd, "give --alpha or --alphas, not both");
+    if (o->beta_set && o->betas)
+        return cli_usage(o->cmd, "give --beta or --betas, not both");
+    return CLI_OK;
+}
+
 int cli_fit_options(const cli_opts *o, ts_options *opt)
 {
     int rc;
@@ -103,10 +113,8 @@ int cli_fit_options(const cli_opts *o, ts_options *opt)
     opt->alphas = o->alphas;
     opt->n_alphas = o->n_alphas;
     opt->extrapolate = o->extrap;
-    if (o->alpha_set && o->alphas)
-        return cli_usage(o->cmd, "give --alpha or --alphas, not both");
-    if (o->beta_set && o->betas)
-        return cli_usage(o->cmd, "give --beta or --betas, not both");
+    if ((rc = check_alpha_beta(o)) != CLI_OK)
+        return rc;
 
     ts_shape sh = o->shape;
     int hl, hu;
@@ -152,6 +160,7 @@ int cli_fit_options(const cli_opts *o, ts_options *opt)
 
 int cli_curve_options(const cli_opts *o, ts_curve_options *co)
 {
+    int rc;
     ts_curve_options_init(co);
     if (!o->svg && (o->title || o->show_control || o->points_only))
         return cli_usage(o->cmd, "%s only applies to the plot (--svg FILE)",
@@ -160,10 +169,8 @@ int cli_curve_options(const cli_opts *o, ts_curve_options *co)
         return cli_usage(o->cmd, "--show-control and --points-only do not fit together");
     if (o->logy)
         return cli_usage(o->cmd, "--logy is not available for curve (equal axes)");
-    if (o->alpha_set && o->alphas)
-        return cli_usage(o->cmd, "give --alpha or --alphas, not both");
-    if (o->beta_set && o->betas)
-        return cli_usage(o->cmd, "give --beta or --betas, not both");
+    if ((rc = check_alpha_beta(o)) != CLI_OK)
+        return rc;
     if (o->margin_set && !o->box_set)
         return cli_usage(o->cmd, "--margin only applies with --box");
     if (o->slopes == TS_SLOPES_PERIODIC && !o->closed)
