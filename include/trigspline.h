@@ -467,7 +467,11 @@ typedef struct ts_interval_report {
  * certified by a monotone control polygon and have no gap (NaN).  In the
  * paper and C¹ forms an interval against a constant line (m = 0) is also
  * certified when every control value B_l is strictly on the line's side
- * (S - c = Σ A_l (B_l - c), a convex combination), however small the gaps.
+ * (S - c = Σ A_l (B_l - c), a convex combination), however small the gaps,
+ * and against any line when min_l B_l - max(L(x0), L(x1)) (lower line; for
+ * the upper min(U(x0), U(x1)) - max_l B_l) exceeds its own rounding guard
+ * (S >= min B_l, and a line is largest at an end: docs/method.md §5.6 item 8);
+ * the reported gap is still the exact minimum.
  * In the geometric form a line interval (and ts_certify there) is also certified
  * when every control gap Y_l - m X_l - c is positive (convex hull, docs/method.md §4),
  * each evaluated to the rounding of the gap itself (fma and error-free sums),

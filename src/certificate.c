@@ -107,16 +107,41 @@ static void geo_local_gaps(const ts_spline *sp, size_t i, const double B[4], con
     G[2] -= 12.0 * TM_EPS * fabs(mh);
 }
 
+/* docs/method.md §5.6 item 8, paper and C¹ forms: S >= min B_l (§2) and the
+ * line's largest value on [x_i, x_{i+1}] is at an end, so
+ * min_l sg·B_l − max(sg·L_i, sg·L_{i+1}) > guard proves the interval.
+ * L_i = fma(m, x_i, c), L_{i+1} = L_i + m h (local coordinates); the guard
+ * bounds their rounding, the subtraction's and |m| times the rounding of h.
+ * Finite control values only.  Branch-free (used in vector loops). */
+TS_INLINE int line_bound(double B0, double B1, double B2, double B3, double xi, double xi1,
+                         double h, double m, double c, double sg)
+{
+    double Li = fma(m, xi, c), mh = m * h, Lr = Li + mh;
+    double b0 = sg * B0, b1 = sg * B1, b2 = sg * B2, b3 = sg * B3;
+    double lo = b0 < b1 ? b0 : b1, lo2 = b2 < b3 ? b2 : b3;
+    lo = lo < lo2 ? lo : lo2;
+    double l0 = sg * Li, l1 = sg * Lr, lmax = l0 > l1 ? l0 : l1;
+    double a0 = fabs(B0), a1 = fabs(B1), a2 = fabs(B2), a3 = fabs(B3);
+    double bmax = a0 > a1 ? a0 : a1, bmax2 = a2 > a3 ? a2 : a3;
+    bmax = bmax > bmax2 ? bmax : bmax2;
+    double guard = 16.0 * TM_EPS * (bmax + fabs(Li) + fabs(mh)) +
+                   fabs(m) * width_error(xi, xi1, h) * (1.0 + 2.0 * TM_EPS) + 4.0 * DBL_TRUE_MIN;
+    int finite = (a0 <= TS_VALUE_MAX) & (a1 <= TS_VALUE_MAX) & (a2 <= TS_VALUE_MAX) &
+                 (a3 <= TS_VALUE_MAX); /* NaN too: min and max above skip it */
+    return finite & (lo - lmax > guard);
+}
+
 int ts__hull_inside(const ts_spline *sp, size_t i, const double B[4], const double *X,
                     const ts_line *ln, int sign)
 {
     if (!X) {
         /* paper and C¹ forms, docs/method.md §5.6: a constant line, S − c =
-         * Σ A_l (B_l − c); the comparisons are exact */
+         * Σ A_l (B_l − c), the comparisons exact; or any line by the bound */
         int ok = ln->m == 0.0;
         for (int l = 0; l < 4; l++)
             ok = ok && (sign > 0 ? B[l] > ln->c : B[l] < ln->c);
-        return ok;
+        return ok | line_bound(B[0], B[1], B[2], B[3], sp->x[i], sp->x[i + 1], sp->h[i], ln->m,
+                               ln->c, sign > 0 ? 1.0 : -1.0);
     }
     double G[4], err[4];
     geo_local_gaps(sp, i, B, X, ln, sign, G, err);
@@ -256,7 +281,8 @@ double ts__interval_gap(const ts_spline *sp, size_t i, const ts_line *line, int 
  *  monotone: B monotone in the data's direction gives S' of that sign by
  *    (2.1) (and X' > 0 in the geometric form); no gaps (NaN);
  *  lines: in the geometric form every Y_l − m X_l − c above its rounding,
- *    in the others a constant line strictly beyond every B_l (hull_inside);
+ *    in the others a constant line strictly beyond every B_l or the line
+ *    bound (hull_inside, docs/method.md §5.6 item 8);
  *    with exact, also a trig-min gap above its guard will do.
  * Without want_at (the build, which keeps no gaps: ts_spline_report
  * recomputes them) a control-value proof that holds decides alone, and the
@@ -303,7 +329,7 @@ int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double
         int sign = side == 0 ? 1 : -1;
         /* the control gaps are a proof by themselves (geometric form; a
          * constant line in the others) */
-        int hull = (X || ln->m == 0.0) && ts__hull_inside(sp, i, B, X, ln, sign);
+        int hull = ts__hull_inside(sp, i, B, X, ln, sign);
         if (exact && !(hull && !want_at)) {
             double *g = side == 0 ? &cr->glo : &cr->gup, *a = side == 0 ? &cr->alo : &cr->aup;
             *g = ts__gap_ctl(sp, i, B, X, ln, sign, want_at ? a : NULL, &guard);
@@ -356,14 +382,63 @@ TS_VECTOR_LOOP static int all_proven_positive(const double *restrict f,
     return ok;
 }
 
+/* The line bound (line_bound) of interval i for each line sp has (hl, hu;
+ * paper and C¹ forms): ts__check_ctl's hull proof of every line, which
+ * passes the interval without a gap. */
+TS_INLINE int lines_bound(const double *restrict f, const double *restrict b1,
+                          const double *restrict b2, const double *restrict x,
+                          const double *restrict h, size_t i, const double lc[4], int hl, int hu)
+{
+    double B0 = f[i], B1 = b1[i], B2 = b2[i], B3 = f[i + 1];
+    return ((1 - hl) | line_bound(B0, B1, B2, B3, x[i], x[i + 1], h[i], lc[0], lc[1], 1.0)) &
+           ((1 - hu) | line_bound(B0, B1, B2, B3, x[i], x[i + 1], h[i], lc[2], lc[3], -1.0));
+}
+
+/* 1 if lines_bound passes every interval of [i0, i1) (a flag, so that it
+ * vectorises). */
+TS_VECTOR_LOOP static int all_bound(const double *restrict f, const double *restrict b1,
+                                    const double *restrict b2, const double *restrict x,
+                                    const double *restrict h, size_t i0, size_t i1,
+                                    const double *restrict lc, int hl, int hu)
+{
+    int ok = 1;
+    for (size_t i = i0; i < i1; i++)
+        ok &= lines_bound(f, b1, b2, x, h, i, lc, hl, hu);
+    return ok;
+}
+
+/* First interval of [i, i1) that lines_bound does not pass: blocks of
+ * TS_BOUND_BLOCK at once (a failing interval costs one block, not the rest). */
+#define TS_BOUND_BLOCK 256
+static size_t skip_lines(const ts_spline *sp, size_t i, size_t i1)
+{
+    const double lc[4] = {sp->lower.m, sp->lower.c, sp->upper.m, sp->upper.c};
+    int hl = sp->has_lower != 0, hu = sp->has_upper != 0;
+    while (i < i1) {
+        size_t k1 = i1 - i > TS_BOUND_BLOCK ? i + TS_BOUND_BLOCK : i1;
+        if (!all_bound(sp->f, sp->b1, sp->b2, sp->x, sp->h, i, k1, lc, hl, hu)) {
+            /* the same operations fail one of [i, k1); the last is left to
+             * the caller's check in any case */
+            while (i + 1 < k1 && lines_bound(sp->f, sp->b1, sp->b2, sp->x, sp->h, i, lc, hl, hu))
+                i++;
+            return i;
+        }
+        i = k1;
+    }
+    return i;
+}
+
 /* First interval in [i, i1) that ts__check_ctl would not pass by its
  * control-value proof alone (which passes it also when exact), for the
  * schemes whose proof is a bare sign test of B (positive, every form: the
  * geometric form's X̂ are finite as a_i >= 4/(3π); monotone, paper and C¹
- * forms; else i). */
+ * forms; the lines' bound, paper and C¹ forms; else i). */
 size_t ts__skip_proven(const ts_spline *sp, size_t i, size_t i1)
 {
     int positive = sp->shape == TS_SHAPE_POSITIVE;
+    if ((sp->has_lower | sp->has_upper) && !positive && sp->form != TS_FORM_GEOMETRIC) {
+        return skip_lines(sp, i, i1);
+    }
     if (!(positive || (sp->shape == TS_SHAPE_MONOTONE && sp->form != TS_FORM_GEOMETRIC)))
         return i;
     if (positive && all_proven_positive(sp->f, sp->b1, sp->b2, i, i1)) /* i < i1 */

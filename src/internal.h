@@ -541,7 +541,9 @@ double ts__interval_gap(const ts_spline *sp, size_t i, const ts_line *line, int 
 /* The control gaps' proof (docs/method.md §5.6): geometric form (X the local
  * abscissae of ts__controls_of), every local control gap above its rounding
  * and the evaluator's; paper and C¹ forms (X NULL), a constant line strictly
- * below (sign +1) or above (−1) every B_l. */
+ * below (sign +1) or above (−1) every B_l, or any line whose larger end
+ * value is below min B_l (above max B_l) by more than its rounding guard
+ * (item 8). */
 int ts__hull_inside(const ts_spline *sp, size_t i, const double B[4], const double *X,
                     const ts_line *ln, int sign);
 /* Is interval i with controls B (X) inside the region of sp's scheme?  exact:
@@ -553,7 +555,9 @@ int ts__check_interval(const ts_spline *sp, size_t i, int exact);
 /* Does certification of a spline built with opt compute the exact trig-min
  * certificates?  (Only meaningful for opt->shape != TS_SHAPE_NONE.) */
 int ts__certify_exact(const ts_options *opt);
-/* First interval in [i, i1) that ts__check_ctl (not exact) would not pass. */
+/* First interval in [i, i1) that ts__check_ctl (not exact) would not pass;
+ * line schemes, paper and C¹ forms: that it would not pass by the line
+ * bound (docs/method.md §5.6 item 8), exact or not. */
 size_t ts__skip_proven(const ts_spline *sp, size_t i, size_t i1);
 /* ok[i - i0] = 1 where ts__check_ctl (exact, paper form, one boundary
  * m x + c with sign sg) passes interval i by an end minimum, else 0. */
