@@ -239,6 +239,19 @@ ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size
     return result;
 }
 
+/* Piece i of an integral over [a, b] times 2^-*ki, *ki the first of k,
+ * k + 128, ... that brings it below 2^(1023 - k) (each factor of h scaled:
+ * finite from k + 1152 on, as h < 2^1024 and |B| <= TS_VALUE_MAX). */
+static double scaled_piece(const ts_spline *s, size_t i, double a, double b, int k, int *ki)
+{
+    double lim = ldexp(1.0, 1023 - k), p;
+    int kk = k;
+    while (!(fabs(p = ts__interval_integral_scaled(s, i, a, b, kk)) <= lim) && kk < k + 1152)
+        kk += 128;
+    *ki = kk;
+    return p;
+}
+
 ts_status ts_integral(const ts_spline *s, double a, double b, double *out)
 {
     if (out)
@@ -270,18 +283,27 @@ ts_status ts_integral(const ts_spline *s, double a, double b, double *out)
             ts__interval_integral_scaled(s, ia, a, s->x[ia + 1], 0) +
             ts__interval_integral_scaled(s, ib, s->x[ib], b, 0);
     if (!isfinite(r)) {
-        /* the cumulative sums (or two antiderivatives) overflowed: sum the
-         * pieces again scaled by 2^-k, k enough for every partial sum of
-         * ib - ia + 1 pieces of at most DBL_MAX·2^-2 to stay finite; then the
-         * result is finite where the integral is, ±Inf where it overflows */
+        /* the cumulative sums, two antiderivatives or one piece overflowed:
+         * sum the pieces again, piece i times 2^-k_i with k_i the first of
+         * k, k + 128, ... that brings it below 2^(1023 - k), k enough for
+         * ib - ia + 1 such pieces to add up without overflow; then on the
+         * largest k_i's scale.  Finite where the integral is, ±Inf where it
+         * overflows, never NaN */
         int k = 2;
         for (size_t np = ib - ia + 1; np > 1; np = (np + 1) / 2)
             k++;
-        double sum = 0.0;
-        for (size_t i = ia; i <= ib; i++)
-            sum += ts__interval_integral_scaled(s, i, i == ia ? a : s->x[i],
-                                                i == ib ? b : s->x[i + 1], k);
-        r = ldexp(sum, k);
+        int kmax = k;
+        for (int pass = 0; pass < 2; pass++) {
+            double sum = 0.0;
+            for (size_t i = ia; i <= ib; i++) {
+                int ki;
+                double p = scaled_piece(s, i, i == ia ? a : s->x[i], i == ib ? b : s->x[i + 1],
+                                        k, &ki);
+                kmax = ki > kmax ? ki : kmax;
+                sum += ldexp(p, ki - kmax);
+            }
+            r = ldexp(sum, kmax);
+        }
     }
     *out = sign * r;
     return TS_OK;
