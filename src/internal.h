@@ -287,8 +287,11 @@ TS_INLINE double ts__geo_y(int deriv, double F0, double F1, double D0, double D1
 {
     double k = kappa * h;
     if (deriv == 0) {
-        double v = F0 * (c * c) + F1 * (s * s) +
-                   k * (D0 * (s * ms * (3.0 - s)) - D1 * (c * mc * (3.0 - c)));
+        /* F0 c² + F1 s² written as F0 + (F1 − F0) s²: F0 exactly at φ = 0,
+         * and no c² + s² ≠ 1 wobble of an ulp of F0 where the interval
+         * changes by less than that (monotone samples) */
+        double v = F0 + ((F1 - F0) * (s * s) +
+                         k * (D0 * (s * ms * (3.0 - s)) - D1 * (c * mc * (3.0 - c))));
         return (F0 == F1 && k * D0 == 0.0 && k * D1 == 0.0) ? F0 : v;
     }
     double p1 = 3.0 - 8.0 * s + 3.0 * (s * s), p2 = 3.0 - 8.0 * c + 3.0 * (c * c);
