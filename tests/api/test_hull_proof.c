@@ -17,6 +17,7 @@
  *    last one not proved, one not proved in a later block of 256; every
  *    result checked by ts_certify and dense samples in long double. */
 #include "th.h"
+#include "common/th_gapmin.h"
 #include "common/th_rng.h"
 #include "trigspline.h"
 
@@ -25,53 +26,15 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define LPI 3.141592653589793238462643383279502884L
 
-static long double g_at(const long double C[4], long double kappa, long double th)
-{
-    long double s = sinl(th), c = cosl(th);
-    long double A0 = (1 - s) * (1 - s) * (1 - s), A1 = s * (1 - s) * (3 - s);
-    long double A2 = c * (1 - c) * (3 - c), A3 = (1 - c) * (1 - c) * (1 - c);
-    return A0 * C[0] + A1 * C[1] + A2 * C[2] + A3 * C[3] - kappa * th;
-}
-
-static long double golden(const long double C[4], long double kappa, long double a, long double b)
-{
-    const long double r = 0.6180339887498948482L;
-    long double u1 = b - r * (b - a), u2 = a + r * (b - a);
-    long double g1 = g_at(C, kappa, u1), g2 = g_at(C, kappa, u2);
-    for (int it = 0; it < 120; it++) {
-        if (g1 < g2) {
-            b = u2, u2 = u1, g2 = g1, u1 = b - r * (b - a), g1 = g_at(C, kappa, u1);
-        } else {
-            a = u1, u1 = u2, g1 = g2, u2 = a + r * (b - a), g2 = g_at(C, kappa, u2);
-        }
-    }
-    return g1 < g2 ? g1 : g2;
-}
-
-/* min over [x0, x1] of sign·(S − L), S = Σ A_l B_l, L = m x + c, in long
- * double (docs/method.md §5.6: g(θ) = Σ A_l C_l − κθ). */
 static long double exact_min(const double B[4], double x0, double x1, double m, double c, int sign)
 {
-    enum { N = 2048 };
     long double Li = (long double)m * (long double)x0 + (long double)c;
     long double h = (long double)x1 - (long double)x0;
-    long double C[4], kappa = sign * (long double)m * (2.0L * h / LPI);
+    long double C[4], kappa = sign * (long double)m * (2.0L * h / TH_LPI);
     for (int l = 0; l < 4; l++)
         C[l] = sign * ((long double)B[l] - Li);
-    long double w = LPI / 2 / N, g[N + 1], best = HUGE_VALL;
-    for (int k = 0; k <= N; k++) {
-        g[k] = g_at(C, kappa, k == N ? LPI / 2 : w * k);
-        best = g[k] < best ? g[k] : best;
-    }
-    for (int k = 0; k <= N; k++)
-        if ((k == 0 || g[k] <= g[k - 1]) && (k == N || g[k] <= g[k + 1])) {
-            long double v = golden(C, kappa, k > 0 ? w * (k - 1) : 0.0L,
-                                   k < N ? w * (k + 1) : LPI / 2);
-            best = v < best ? v : best;
-        }
-    return best;
+    return th_gap_min(C, kappa, 2048);
 }
 
 /* A spline without shape through (x, f) with slopes d. */

@@ -23,6 +23,7 @@
  *  - the side of a line where a point equals the line's rounded value, and
  *    two lines whose doubles coincide (decided exactly, docs/method.md §5.8). */
 #include "th.h"
+#include "common/th_gapmin.h"
 #include "common/th_rng.h"
 #include "trigspline.h"
 
@@ -32,7 +33,6 @@
 
 #define NP 9
 #define PER 512
-#define LPI 3.141592653589793238462643383279502884L
 
 /* A line in the test's local form L(x) = m (x − x0) + c0 (c0 = its value at
  * x0), and the library's global form m x + c, c = c0 − m x0. */
@@ -66,57 +66,14 @@ static long double line_minus(const lline *L, double dq, double y, long double *
 }
 
 /* The minimum of g(θ) = Σ A_l (B_l − L_i) − κ θ, κ = m (2h/π), over
- * [0, π/2] (sign +1; −1 for L − S), in long double: a 2048-point grid, and
- * every grid point not above its neighbours (the ends included: a dip
- * narrower than a grid step next to a knot is common) refined by golden
- * section on its two grid steps to 1e-15 in θ.  The result is a value g
- * attains, so the true minimum is not above it; that it is not below is
- * what the comparison with the library's (root isolation, docs/method.md
- * §5.6, an independent method) checks: a dip one of them missed shows as a
- * disagreement. */
-static long double g_at(const long double C[4], long double kappa, long double th)
-{
-    long double s = sinl(th), c = cosl(th);
-    long double A0 = (1 - s) * (1 - s) * (1 - s), A1 = s * (1 - s) * (3 - s);
-    long double A2 = c * (1 - c) * (3 - c), A3 = (1 - c) * (1 - c) * (1 - c);
-    return A0 * C[0] + A1 * C[1] + A2 * C[2] + A3 * C[3] - kappa * th;
-}
-static long double golden(const long double C[4], long double kappa, long double a, long double b)
-{
-    const long double r = 0.6180339887498948482L;
-    long double u1 = b - r * (b - a), u2 = a + r * (b - a);
-    long double g1 = g_at(C, kappa, u1), g2 = g_at(C, kappa, u2);
-    while (b - a > 1e-15L) {
-        if (g1 < g2) {
-            b = u2, u2 = u1, g2 = g1;
-            u1 = b - r * (b - a);
-            g1 = g_at(C, kappa, u1);
-        } else {
-            a = u1, u1 = u2, g1 = g2;
-            u2 = a + r * (b - a);
-            g2 = g_at(C, kappa, u2);
-        }
-    }
-    return g1 < g2 ? g1 : g2;
-}
+ * [0, π/2] (sign +1; −1 for L − S), in long double on a 2048-point grid
+ * refined by golden section (tests/common/th_gapmin.h). */
 static long double exact_min(const double B[4], long double Li, double m, double h, int sign)
 {
-    enum { N = 2048 };
-    long double C[4], kappa = sign * (long double)m * (2.0L * (long double)h / LPI);
+    long double C[4], kappa = sign * (long double)m * (2.0L * (long double)h / TH_LPI);
     for (int l = 0; l < 4; l++)
         C[l] = sign * ((long double)B[l] - Li);
-    long double w = LPI / 2 / N, g[N + 1], best = HUGE_VALL;
-    for (int k = 0; k <= N; k++) {
-        g[k] = g_at(C, kappa, k == N ? LPI / 2 : w * k);
-        best = g[k] < best ? g[k] : best;
-    }
-    for (int k = 0; k <= N; k++)
-        if ((k == 0 || g[k] <= g[k - 1]) && (k == N || g[k] <= g[k + 1])) {
-            long double v = golden(C, kappa, k > 0 ? w * (k - 1) : 0.0L,
-                                   k < N ? w * (k + 1) : LPI / 2);
-            best = v < best ? v : best;
-        }
-    return best;
+    return th_gap_min(C, kappa, 2048);
 }
 
 typedef struct tally {
@@ -418,7 +375,7 @@ static void sloped_line(void)
 static void negative(void)
 {
     long double th = 0.4L, sn = sinl(th), cs = cosl(th);
-    long double bstar = (2.0L / (3.0L * LPI)) * cs * (1 - cs) * (3 - cs) + sn * sn - 2.0L * th / LPI;
+    long double bstar = (2.0L / (3.0L * TH_LPI)) * cs * (1 - cs) * (3 - cs) + sn * sn - 2.0L * th / TH_LPI;
     CHECKF(bstar < -0.05L, "b*(0.4) = %.6Lg", bstar);
     static const double offs[2] = {1e6, 1e12};
     for (int oi = 0; oi < 2; oi++)

@@ -4,9 +4,10 @@
  * changes down to the depth limit (src/trigmin.c, docs/method.md §5.6);
  * every outcome of the monotone control-polygon proof; a margin so large
  * that a_i + t overflows (src/repair.c: capped at 1e307).  Expected values
- * from closed forms and from a minimiser written here (grid and golden
- * section in long double), not from the code under test. */
+ * from closed forms and from a minimiser in long double (grid and golden
+ * section, tests/common/th_gapmin.h), not from the code under test. */
 #include "th.h"
+#include "common/th_gapmin.h"
 #include "internal.h"
 #include "trigspline.h"
 
@@ -14,49 +15,14 @@
 #include <math.h>
 #include <string.h>
 
-#define LPI 3.141592653589793238462643383279502884L
 
-/* g(θ) = Σ A_l C_l − κ θ (docs/method.md §2, with libm's long double sin, cos) */
-static long double g_at(const double C[4], double k, long double th)
-{
-    long double s = sinl(th), c = cosl(th);
-    return (1 - s) * (1 - s) * (1 - s) * (long double)C[0] + s * (1 - s) * (3 - s) * (long double)C[1] +
-           c * (1 - c) * (3 - c) * (long double)C[2] + (1 - c) * (1 - c) * (1 - c) * (long double)C[3] -
-           (long double)k * th;
-}
-
-/* The minimum over [0, π/2]: a 4096-point grid, each grid point not above
- * its neighbours (ends included) refined by golden section to 1e-15. */
+/* The minimum over [0, π/2] of g(θ) = Σ A_l C_l − κ θ (tests/common/th_gapmin.h,
+ * a 4096-point grid). */
 static long double ref_min(const double C[4], double k)
 {
-    enum { N = 4096 };
-    long double w = LPI / 2 / N, g[N + 1], best = HUGE_VALL;
-    for (int j = 0; j <= N; j++) {
-        g[j] = g_at(C, k, j == N ? LPI / 2 : w * j);
-        best = g[j] < best ? g[j] : best;
-    }
-    for (int j = 0; j <= N; j++) {
-        if (!((j == 0 || g[j] <= g[j - 1]) && (j == N || g[j] <= g[j + 1])))
-            continue;
-        long double a = j > 0 ? w * (j - 1) : 0, b = j < N ? w * (j + 1) : LPI / 2;
-        const long double r = 0.6180339887498948482L;
-        long double u1 = b - r * (b - a), u2 = a + r * (b - a);
-        long double g1 = g_at(C, k, u1), g2 = g_at(C, k, u2);
-        while (b - a > 1e-15L) {
-            if (g1 < g2) {
-                b = u2, u2 = u1, g2 = g1;
-                u1 = b - r * (b - a);
-                g1 = g_at(C, k, u1);
-            } else {
-                a = u1, u1 = u2, g1 = g2;
-                u2 = a + r * (b - a);
-                g2 = g_at(C, k, u2);
-            }
-        }
-        best = g1 < best ? g1 : best;
-        best = g2 < best ? g2 : best;
-    }
-    return best;
+    long double Cl[4] = {(long double)C[0], (long double)C[1], (long double)C[2],
+                         (long double)C[3]};
+    return th_gap_min(Cl, (long double)k, 4096);
 }
 
 /* P(t) = q³ g'(θ) = 3D0 (1−t)⁵(1+t) + 4D1 t(1−t⁴) + 24D2 t⁵ − κ q³
