@@ -60,8 +60,9 @@ static void geo_end(const geo_side *g, double sign, double out[3])
     ts__basis_d2(s, c, D2);
     double Ypp = dF * c2 + g->k * (g->D0 * D2[1] - g->D1 * D2[2]);
     double Xpp = c2 + g->kappa * (D2[1] - D2[2]);
-    /* (Y''X' − Y'X'')/X'³; the sign cancels (see docs/accuracy.md §1) */
-    out[2] = (Ypp * Xp - Yp * Xpp) / (Xp * Xp * Xp);
+    /* (Y''X' − Y'X'')/X'³ as ts__geo_y forms it (X'³ underflows for huge a);
+     * the sign cancels (see docs/accuracy.md §1) */
+    out[2] = (Ypp - (Yp / Xp) * Xpp) / Xp / Xp;
 }
 
 void ts__geo_eval(const ts_spline *sp, size_t i, double x, int want, double out[3])

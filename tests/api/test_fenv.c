@@ -8,6 +8,7 @@
 #include "trigspline.h"
 
 #include <fenv.h>
+#include <math.h>
 #include <stddef.h>
 
 static int flags(void)
@@ -70,6 +71,71 @@ int main(void)
                            shape, sl);
                     ts_spline_free(s);
                 }
+    TH_CASE("geometric form, huge tension");
+    /* a = α up to 1e300: κ = 2/(3π a) down to 2e-301, X̂'(0) = 3κ; κ³
+     * underflows from a ≈ 2e102 on.  At the knot x_i (φ = 0, from the left
+     * end) docs/method.md §4 gives, in closed form,
+     *   S''·h² = (2/9)(Δf − h d_i)/κ² + (2/9) h (d_i − d_{i+1})/κ,
+     * finite up to a ≈ 1e154 here; the S'' formula used to divide by X̂'³ and
+     * returned ±inf (and, under clang, raised FE_DIVBYZERO even for S).
+     * Tolerance: the closed form's terms are each rounded a few times, the
+     * code's S'' passes through Y'/X' and two divisions: 64 ε relative is far
+     * above both and far below the old inf. */
+    {
+        static const double xg[3] = {0, 1, 3}, fg[3] = {1, 2, 2.5};
+        static const double avals[8] = {1e50, 1e100, 1e103, 1e105, 1e110, 1e150, 1e153, 1e300};
+        for (int ka = 0; ka < 8; ka++) {
+            ts_options o;
+            ts_options_init(&o);
+            o.form = TS_FORM_GEOMETRIC;
+            o.alpha = avals[ka];
+            feclearexcept(FE_ALL_EXCEPT);
+            ts_spline *s = NULL;
+            CHECKF(ts_spline_new(xg, fg, 3, &o, &s, NULL) == TS_OK, "a = %g", avals[ka]);
+            if (!s)
+                continue;
+            const double *d = ts_spline_slopes(s);
+            double y[3], dy[3], d2[3], yb[3];
+            for (int j = 0; j < 3; j++)
+                (void)ts_eval_deriv(s, xg[j], NULL, &y[j], &dy[j], &d2[j]);
+            for (int der = 0; der <= 2; der++)
+                (void)ts_eval_batch(s, der, xg, 3, yb, NULL, NULL);
+            for (int j = 0; j < 3; j++)
+                (void)ts_eval(s, xg[j], NULL, &y[j]);
+            CHECKF(flags() == 0, "a = %g: evaluation at the knots raised a flag", avals[ka]);
+            /* x = 0 is interval 0 seen from its left end */
+            double kappa = 2.0 / (3.0 * 3.14159265358979323846 * avals[ka]);
+            double want = (2.0 / 9.0) * ((fg[1] - fg[0]) - d[0]) / kappa / kappa +
+                          (2.0 / 9.0) * (d[0] - d[1]) / kappa;
+            if (fabs(want) < 1e300)
+                CHECKF(fabs(d2[0] - want) <= 64 * 2.220446049250313e-16 * fabs(want),
+                       "a = %g: S''(x0) = %.17g, closed form %.17g", avals[ka], d2[0], want);
+            else if (isinf(want))
+                CHECKF(isinf(d2[0]) && (d2[0] > 0) == (want > 0), "a = %g: S''(x0) = %g, want %g",
+                       avals[ka], d2[0], want);
+            CHECKF(y[0] == fg[0] && y[1] == fg[1] && y[2] == fg[2], "a = %g: knots", avals[ka]);
+            ts_spline_free(s);
+            /* extension past x_2 by the end's osculating parabola: f_2 + d_2 δ
+             * + S''(x_2) δ²/2, S''(x_2) from interval 1 seen from its right
+             * end (F0 = f_2, F1 = f_1, D0 = −d_2, D1 = −d_1, h = 2) */
+            o.extrapolate = TS_EXTRAP_EXTEND;
+            CHECK(ts_spline_new(xg, fg, 3, &o, &s, NULL) == TS_OK);
+            if (!s)
+                continue;
+            d = ts_spline_slopes(s);
+            feclearexcept(FE_ALL_EXCEPT);
+            double ye;
+            (void)ts_eval(s, 3.5, NULL, &ye);
+            CHECKF(flags() == 0, "a = %g: extension raised a flag", avals[ka]);
+            double s2 = ((2.0 / 9.0) * ((fg[1] - fg[2]) + 2.0 * d[2]) / kappa / kappa +
+                         (2.0 / 9.0) * 2.0 * (d[1] - d[2]) / kappa) / 4.0;
+            double wante = fg[2] + 0.5 * d[2] + 0.125 * s2;
+            if (fabs(wante) < 1e300)
+                CHECKF(fabs(ye - wante) <= 64 * 2.220446049250313e-16 * fabs(wante),
+                       "a = %g: S(3.5) = %.17g, closed form %.17g", avals[ka], ye, wante);
+            ts_spline_free(s);
+        }
+    }
     TH_CASE("curves");
     static const double pts[6][2] = {{-1, 0}, {0, -1}, {1, 0}, {1, 1}, {0, 2}, {-1, 1}};
     for (int closed = 0; closed < 2; closed++) {
