@@ -508,6 +508,13 @@ ts_status ts__shape_begin(ts_spline *sp, const ts_options *opt, const double *f,
                           ts_error *err);
 ts_status ts__shape_range(ts_spline *sp, const ts_options *opt, int dir, size_t p0, size_t p1,
                           size_t i0, size_t i1, ts_error *err);
+/* The sign (−1, 0, 1) of the exact sum of v[0..n), n <= TS_EXACT_TERMS,
+ * each |v_j| <= 2^1020 (so that no partial sum overflows): Shewchuk's
+ * expansion sum (TwoSum keeps each rounding error; the largest nonzero
+ * component of the nonoverlapping result has the sum's sign).  The data
+ * checks' side of a line or plane (docs/method.md §5.8, §11.3). */
+#define TS_EXACT_TERMS 12
+int ts__exact_sign(const double *v, int n);
 
 /* ---- certificate.c (docs/method.md §4, §5) -------------------------------------- */
 /* The exact gaps of one interval (NaN where absent or not computed). */

@@ -37,13 +37,9 @@ static double line_at(const ts_line *l, double x)
     return fma(l->m, x, l->c);
 }
 
-/* The sign of the exact sum of v[0..n), n <= 8, each |v_j| <= 2^1020 (so
- * that no partial sum overflows): Shewchuk's expansion sum (TwoSum keeps
- * each rounding error; the largest nonzero component of the nonoverlapping
- * result has the sum's sign). */
-static int exact_sign(const double *v, int n)
+int ts__exact_sign(const double *v, int n)
 {
-    double e[8];
+    double e[TS_EXACT_TERMS];
     int k = 0;
     for (int j = 0; j < n; j++) {
         double q = v[j];
@@ -62,7 +58,7 @@ static int exact_sign(const double *v, int n)
 
 /* sg times the terms of m x + c − Lh (Lh = line_at(l, x): its rounding
  * error) into v[0..3]: m x = p + e exactly (fma) where m x is 0 or far from
- * underflow, and every term within exact_sign's range; else no terms
+ * underflow, and every term within ts__exact_sign's range; else no terms
  * (undecided: taken as on the line). */
 static int rounding_terms(const ts_line *l, double x, double Lh, double sg, double *v)
 {
@@ -85,7 +81,7 @@ static int side_of(double v, const ts_line *l, double x, double Lh)
     double t[4];
     if (v != Lh)
         return (v > Lh) - (v < Lh);
-    return exact_sign(t, rounding_terms(l, x, Lh, -1.0, t));
+    return ts__exact_sign(t, rounding_terms(l, x, Lh, -1.0, t));
 }
 
 /* Sign of up(x) − lo(x), exact as side_of (Ll, Lu their line_at). */
@@ -95,7 +91,7 @@ static int order_of(const ts_line *lo, const ts_line *up, double x, double Ll, d
     if (Ll != Lu)
         return (Lu > Ll) - (Lu < Ll);
     int n = rounding_terms(up, x, Lu, 1.0, t), k = rounding_terms(lo, x, Ll, -1.0, t + 4);
-    return n && k ? exact_sign(t, 8) : 0;
+    return n && k ? ts__exact_sign(t, 8) : 0;
 }
 
 static int line_finite(const ts_line *l)

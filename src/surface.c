@@ -31,6 +31,50 @@ static double plane_at(const ts_plane *pl, double x, double y)
     return ts__surf_plane_at(pl, x, y, NULL);
 }
 
+/* sg times the terms of p x + q y + c (p x = P + e, q y = Q + f exactly by
+ * fma) into v[0..5), or none where a term is beyond ts__exact_sign's range
+ * or a product is so small that its fma error is not exact (undecided). */
+static int plane_terms(const ts_plane *pl, double x, double y, double sg, double *v)
+{
+    double P = pl->p * x, Q = pl->q * y;
+    if (!(fabs(P) <= 0x1p1020 && fabs(Q) <= 0x1p1020 && fabs(pl->c) <= 0x1p1020) ||
+        (fabs(P) < 0x1p-960 && pl->p != 0.0 && x != 0.0) ||
+        (fabs(Q) < 0x1p-960 && pl->q != 0.0 && y != 0.0))
+        return 0;
+    v[0] = sg * P;
+    v[1] = sg * fma(pl->p, x, -P);
+    v[2] = sg * Q;
+    v[3] = sg * fma(pl->q, y, -Q);
+    v[4] = sg * pl->c;
+    return 5;
+}
+
+/* Sign of z − (p x + q y + c), exact (docs/method.md §5.8, §11.3): decided
+ * by the accurate plane value where z is farther from it than its error
+ * bound (fl(z − L) has the sign of z − L), else by the exact sum; 0 (on the
+ * plane) where undecidable. */
+static int plane_side(double z, const ts_plane *pl, double x, double y)
+{
+    double err, L = ts__surf_plane_at(pl, x, y, &err), t[6];
+    double g = z - L;
+    if (fabs(g) > 2.0 * err)
+        return (g > 0.0) - (g < 0.0);
+    int n = plane_terms(pl, x, y, -1.0, t);
+    t[n] = z;
+    return n && fabs(z) <= 0x1p1020 ? ts__exact_sign(t, n + 1) : 0;
+}
+
+/* Sign of up(x, y) − lo(x, y), exact as plane_side. */
+static int plane_order(const ts_plane *lo, const ts_plane *up, double x, double y)
+{
+    double el, eu, Ll = ts__surf_plane_at(lo, x, y, &el), Lu = ts__surf_plane_at(up, x, y, &eu);
+    double g = Lu - Ll, t[10];
+    if (fabs(g) > 2.0 * (el + eu))
+        return (g > 0.0) - (g < 0.0);
+    int n = plane_terms(up, x, y, 1.0, t), k = plane_terms(lo, x, y, -1.0, t + 5);
+    return n && k ? ts__exact_sign(t, 10) : 0;
+}
+
 static int finite_plane(const ts_plane *pl)
 {
     return isfinite(pl->p) && isfinite(pl->q) && isfinite(pl->c);
@@ -125,13 +169,13 @@ static ts_status check_nodes(ts_surface *s, const ts_surface_options *o, const d
     int strict = o->shape == TS_SURFACE_PLANES;
     for (size_t n = 0; n < nn; n++) {
         double xv = s->x[n % np], yv = s->y[n / np];
-        double lo = plane_at(&s->lower, xv, yv), hi = plane_at(&s->upper, xv, yv);
         if (o->shape == TS_SURFACE_POSITIVE && z[n] < 0.0)
             return ts__fail(err, TS_ERR_NEGATIVE, n, TS_WHERE_POINT);
-        if (strict && s->has_lower && s->has_upper && !(lo < hi))
+        if (strict && s->has_lower && s->has_upper && plane_order(&s->lower, &s->upper, xv, yv) <= 0)
             return ts__fail(err, TS_ERR_LINES, n, TS_WHERE_POINT);
-        if ((s->has_lower && (strict ? !(z[n] > lo) : z[n] < lo)) ||
-            (s->has_upper && (strict ? !(z[n] < hi) : z[n] > hi)))
+        int below = s->has_lower ? plane_side(z[n], &s->lower, xv, yv) : 1;
+        int above = s->has_upper ? plane_side(z[n], &s->upper, xv, yv) : -1;
+        if ((strict ? below <= 0 : below < 0) || (strict ? above >= 0 : above > 0))
             return ts__fail(err, TS_ERR_SIDE, n, TS_WHERE_POINT);
     }
     return TS_OK;

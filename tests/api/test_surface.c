@@ -882,6 +882,86 @@ static void test_sloped_certify(void)
     }
 }
 
+/* Which side of a sloped plane a node lies on, and the planes' order, are
+ * decided exactly (docs/method.md §5.8, §11.3), at coordinates where p x is
+ * about 2^70 and the plane's value rounds by up to 2^17.  Integer
+ * coordinates and coefficients make the exact value V = p x + q y + c an
+ * integer computed exactly in __int128 (independent of the library); the
+ * node's z = V rounded to a double (doubles beyond 2^53 are integers), so
+ * sign(z − V) is known exactly.  Expected: TS_ERR_SIDE at that node exactly
+ * when z <= V; otherwise the node passes the check (the build may still
+ * find the patch infeasible, as a node within rounding of the plane). */
+__extension__ typedef __int128 i128;
+static void test_exact_side(void)
+{
+    TH_CASE("exact side of a plane");
+    uint64_t r = 0x2545F4914F6CDD1Du;
+    int refused_above = 0, passed_below = 0, trials = 0, on_or_below = 0;
+    for (int t = 0; t < 600; t++) {
+        r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+        int64_t X0 = (int64_t)(r >> 24) | ((int64_t)1 << 39); /* 2^39 .. 2^40 */
+        r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+        int64_t Y0 = (int64_t)(r >> 25) | ((int64_t)1 << 38);
+        r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+        int64_t P = (int64_t)((r >> 34) | (1u << 29)), Q = -(int64_t)((r & 0x3fffffff) | (1u << 28));
+        r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+        int64_t C = (int64_t)(r >> 12) - ((int64_t)1 << 51);
+        double x[3], y[3], z[9];
+        for (int k = 0; k < 3; k++) {
+            x[k] = (double)(X0 + k);
+            y[k] = (double)(Y0 + k);
+        }
+        i128 V4 = (i128)P * (X0 + 1) + (i128)Q * (Y0 + 1) + C;
+        for (int n = 0; n < 9; n++) {
+            i128 V = (i128)P * (X0 + n % 3) + (i128)Q * (Y0 + n / 3) + C;
+            /* the other nodes far above: 2^-20 of the value (ulp 2^-52 of it) */
+            double vd = (double)V;
+            z[n] = n == 4 ? vd : vd + fabs(vd) * 0x1p-20;
+        }
+        int sgn = ((i128)z[4] > V4) - ((i128)z[4] < V4);
+        on_or_below += sgn <= 0;
+        ts_surface_options o;
+        ts_surface_options_init(&o);
+        o.form = TS_FORM_GEOMETRIC;
+        o.shape = TS_SURFACE_PLANES;
+        o.has_lower = 1;
+        o.lower = (ts_plane){(double)P, (double)Q, (double)C};
+        ts_surface *s = NULL;
+        ts_error e;
+        ts_status st = ts_surface_new(x, 3, y, 3, z, &o, &s, &e);
+        int side = st == TS_ERR_SIDE && e.index == 4;
+        CHECKF(st == TS_OK || st == TS_ERR_SIDE || st == TS_ERR_INFEASIBLE, "trial %d: %s", t,
+               ts_strerror(st));
+        CHECKF(st != TS_ERR_SIDE || e.index == 4, "trial %d: SIDE at node %zu", t, e.index);
+        refused_above += sgn > 0 && side;
+        passed_below += sgn <= 0 && !side;
+        trials++;
+        ts_surface_free(s);
+        /* the order of two planes differing by 1 in c: exactly ordered although
+         * equal as rounded; no double lies strictly between them */
+        o.has_upper = 1;
+        o.upper = o.lower;
+        o.upper.c = (double)(C + 1);
+        if ((int64_t)o.upper.c == C + 1) {
+            st = ts_surface_new(x, 3, y, 3, z, &o, &s, &e);
+            CHECKF(st == TS_ERR_SIDE && e.index == 0, "trial %d: upper = lower + 1: %s at %zu", t,
+                   ts_strerror(st), e.index);
+            ts_surface_free(s);
+            o.upper.c = (double)(C - 1);
+            st = ts_surface_new(x, 3, y, 3, z, &o, &s, &e);
+            CHECKF(st == TS_ERR_LINES && e.index == 0, "trial %d: upper = lower - 1: %s at %zu", t,
+                   ts_strerror(st), e.index);
+            ts_surface_free(s);
+        }
+    }
+    CHECKF(refused_above == 0, "%d of %d nodes strictly above the plane refused", refused_above,
+           trials);
+    CHECKF(passed_below == 0, "%d of %d nodes on or below the plane accepted", passed_below, trials);
+    /* both sides occur (the test can tell them apart) */
+    CHECKF(on_or_below > 50 && on_or_below < trials - 50, "%d of %d on or below", on_or_below,
+           trials);
+}
+
 /* no floating-point exception flag but inexact on valid input */
 static void test_fenv(void)
 {
@@ -922,6 +1002,7 @@ static void test_fenv(void)
 int main(void)
 {
     test_fenv();
+    test_exact_side();
     test_errors();
     test_plane_and_integral();
     test_transpose();
