@@ -70,7 +70,7 @@ typedef enum ts_status {
     TS_ERR_PERIODIC = 12,    /* periodic slopes need f[0] == f[n] */
     TS_ERR_DOMAIN = 13,      /* query outside [x0, xn] under TS_EXTRAP_ERROR, or a NaN query; index = query */
     TS_ERR_NEGATIVE = 14,    /* positive scheme: f[i] < 0; index = point */
-    TS_ERR_SIDE = 15,        /* a data point on or across a constraint line; index = point */
+    TS_ERR_SIDE = 15,        /* a data point across a constraint line, or on a sloped one; index = point */
     TS_ERR_LINES = 16,       /* lower line not strictly below the upper line at a data point; index = point */
     TS_ERR_NONMONOTONE = 17, /* monotone scheme: data change direction; index = point */
     TS_ERR_INFEASIBLE = 18,  /* no beta >= 0 keeps interval inside the region; index = interval */
@@ -78,7 +78,7 @@ typedef enum ts_status {
     TS_ERR_GEOMETRIC = 20,   /* geometric form: alpha+beta below the bound of docs/method.md §4; index = interval */
     TS_ERR_DIMENSION = 21,   /* curve dimension not 2 or 3 */
     TS_ERR_INDEX = 22,       /* accessor index out of range */
-    TS_ERR_ZERO_SLOPE = 23,  /* a knot where the data touch a boundary (f = 0) got a user slope of the wrong sign; index = point */
+    TS_ERR_ZERO_SLOPE = 23,  /* a knot where the data touch a boundary (f = 0, or f = c on a constant line) got a user slope of the wrong sign; index = point */
     TS_ERR_SLOPE_OVERFLOW = 24,   /* finite data whose slope estimate overflows a double (huge steps
                                      of f over narrow intervals); index = point */
     TS_ERR_TOO_LARGE = 25,        /* |f_i| > TS_VALUE_MAX (index = point) or a control value
@@ -237,9 +237,9 @@ typedef enum ts_slopes {
  * where the certificate fails (term TS_TERM_CERTIFY).
  *  - Data checks, first offending point named: TS_ERR_NEGATIVE (f < 0),
  *    TS_ERR_LINES (lower line not strictly below the upper at a data point;
- *    checked before TS_ERR_SIDE at the same point), TS_ERR_SIDE (a point on
- *    or across a line: touching a sloped line cannot be kept; both decided
- *    in exact arithmetic, docs/method.md §5.8), and
+ *    checked before TS_ERR_SIDE at the same point), TS_ERR_SIDE (a point
+ *    across a line, or on a sloped one: touching a sloped line cannot be
+ *    kept; both decided in exact arithmetic, docs/method.md §5.8), and
  *    TS_ERR_NONMONOTONE (index = first i such that f[0..i] is not monotone;
  *    flat runs are allowed).
  *  - Positive data may contain zeros: there S >= 0 (and S > 0 wherever both
@@ -248,6 +248,12 @@ typedef enum ts_slopes {
  *    slopes both ends are one knot, d_0 = d_n = 0).  Estimated slopes are
  *    changed silently (see ts_spline_slopes); user slopes that break this are
  *    refused with TS_ERR_ZERO_SLOPE (index = the knot).
+ *  - Likewise data may touch a constant line (m = 0) of above, below or
+ *    between, e.g. probabilities with exact 0 and 1 between y = 0 and
+ *    y = 1: there S >= lower (S <= upper), strict on every interval whose
+ *    ends are both off that line; the slope at a touching knot is set as
+ *    for a zero (pointing into the region at the first and last knot),
+ *    user slopes that break it refused with TS_ERR_ZERO_SLOPE.
  *  - Monotone: slopes of the wrong sign are set to 0, user slopes too
  *    (docs/method.md §5.5), and both slopes of a flat interval are 0.  There is no boundary
  *    line: the certificate is the control polygon's monotonicity, which
@@ -276,9 +282,9 @@ typedef enum ts_slopes {
 typedef enum ts_shape {
     TS_SHAPE_NONE = 0,      /* beta given by the caller */
     TS_SHAPE_POSITIVE = 1,  /* S >= 0 (S > 0 where all data > 0); Theorem 2 */
-    TS_SHAPE_ABOVE = 2,     /* S > lower line; Theorem 3 */
-    TS_SHAPE_BELOW = 3,     /* S < upper line; Theorem 4 (corrected signs) */
-    TS_SHAPE_BETWEEN = 4,   /* lower < S < upper; Theorem 5 (corrected) */
+    TS_SHAPE_ABOVE = 2,     /* S > lower line (S >= a constant one the data touch); Theorem 3 */
+    TS_SHAPE_BELOW = 3,     /* S < upper line (S <= a constant one the data touch); Theorem 4 (corrected signs) */
+    TS_SHAPE_BETWEEN = 4,   /* lower < S < upper (<= where data touch a constant line); Theorem 5 (corrected) */
     TS_SHAPE_MONOTONE = 5   /* S monotone where the data are; docs/method.md §5.5 */
 } ts_shape;
 

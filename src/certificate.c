@@ -134,20 +134,24 @@ TS_INLINE int line_bound(double B0, double B1, double B2, double B3, double xi, 
 int ts__hull_inside(const ts_spline *sp, size_t i, const double B[4], const double *X,
                     const ts_line *ln, int sign)
 {
+    /* a constant line that an end touches (docs/method.md §5.8): S − c =
+     * Σ A_l (B_l − c) with every B_l − c >= 0 (its sign exact) proves S >= c */
+    int touch = ln->m == 0.0 && (B[0] == ln->c || B[3] == ln->c);
     if (!X) {
         /* paper and C¹ forms, docs/method.md §5.6: a constant line, S − c =
          * Σ A_l (B_l − c), the comparisons exact; or any line by the bound */
         int ok = ln->m == 0.0;
         for (int l = 0; l < 4; l++)
-            ok = ok && (sign > 0 ? B[l] > ln->c : B[l] < ln->c);
+            ok = ok && (sign > 0 ? B[l] > ln->c || (touch && B[l] == ln->c)
+                                 : B[l] < ln->c || (touch && B[l] == ln->c));
         return ok | line_bound(B[0], B[1], B[2], B[3], sp->x[i], sp->x[i + 1], sp->h[i], ln->m,
                                ln->c, sign > 0 ? 1.0 : -1.0);
     }
     double G[4], err[4];
     geo_local_gaps(sp, i, B, X, ln, sign, G, err);
     int ok = 1;
-    for (int l = 0; l < 4; l++)
-        ok = ok && G[l] > err[l];
+    for (int l = 0; l < 4; l++) /* m = 0: G_l = ±fl(B_l − c), its sign exact */
+        ok = ok && (G[l] > err[l] || (touch && G[l] >= 0.0));
     return ok;
 }
 

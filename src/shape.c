@@ -151,40 +151,64 @@ static ts_status check_data(const ts_spline *sp, ts_shape shape, int dir, size_t
         double Lu = sp->has_upper ? line_at(up, x[i]) : 0.0;
         if (sp->has_lower && sp->has_upper && order_of(lo, up, x[i], Ll, Lu) <= 0)
             return fail(err, TS_ERR_LINES, i, TS_WHERE_POINT);
-        if (sp->has_lower && side_of(f[i], lo, x[i], Ll) <= 0)
-            return fail(err, TS_ERR_SIDE, i, TS_WHERE_POINT);
-        if (sp->has_upper && side_of(f[i], up, x[i], Lu) >= 0)
+        /* a constant line may be touched (docs/method.md §5.8), a sloped one not */
+        int sl = sp->has_lower ? side_of(f[i], lo, x[i], Ll) : 1;
+        int su = sp->has_upper ? side_of(f[i], up, x[i], Lu) : -1;
+        if (sl < 0 || (sl == 0 && lo->m != 0.0) || su > 0 || (su == 0 && up->m != 0.0))
             return fail(err, TS_ERR_SIDE, i, TS_WHERE_POINT);
     }
     return TS_OK;
 }
 
-/* docs/method.md §5.1: zero knots of non-negative data, points [p0, p1). */
-static ts_status zero_slopes(ts_spline *sp, const ts_options *opt, size_t p0, size_t p1,
-                             ts_error *err)
+/* docs/method.md §5.1, §5.8: knots of points [p0, p1) where the data touch
+ * the constant level v (f = v; up = +1 for a lower bound, the curve leaving
+ * upwards; −1 for an upper): an inner knot needs d = 0, the first up·d >= 0,
+ * the last up·d <= 0 (periodic: both ends one inner knot).  Estimated
+ * slopes are set so, user slopes that break it refused. */
+static ts_status touch_slopes(ts_spline *sp, const ts_options *opt, size_t p0, size_t p1, double v,
+                              double up, ts_error *err)
 {
     size_t n = sp->n;
     int user = opt->slopes == TS_SLOPES_USER;
     int periodic = opt->slopes == TS_SLOPES_PERIODIC;
     double *d = sp->d;
-    int zero;
-    (void)all_nonnegative(sp->f, p0, p1, &zero); /* checked: all are */
-    if (!zero)
-        return TS_OK; /* no zero knot here (periodic, f[0] = 0: f[n] = 0 is one) */
     for (size_t i = p0; i < p1; i++) {
-        if (sp->f[i] != 0.0)
+        if (sp->f[i] != v)
             continue;
         int inner = (i > 0 && i < n) || periodic;
-        int bad = inner ? d[i] != 0.0 : (i == 0 ? d[i] < 0.0 : d[i] > 0.0);
+        int bad = inner ? d[i] != 0.0 : (i == 0 ? up * d[i] < 0.0 : up * d[i] > 0.0);
         if (!bad)
             continue;
         if (user)
             return fail(err, TS_ERR_ZERO_SLOPE, i, TS_WHERE_POINT);
         d[i] = 0.0;
     }
-    if (periodic && p1 > n && sp->f[0] == 0.0)
+    if (periodic && p1 > n && sp->f[0] == v)
         d[0] = d[n] = 0.0;
     return TS_OK;
+}
+
+/* docs/method.md §5.1: zero knots of non-negative data (all checked >= 0). */
+static ts_status zero_slopes(ts_spline *sp, const ts_options *opt, size_t p0, size_t p1,
+                             ts_error *err)
+{
+    int zero;
+    (void)all_nonnegative(sp->f, p0, p1, &zero);
+    if (!zero)
+        return TS_OK; /* no zero knot here (periodic, f[0] = 0: f[n] = 0 is one) */
+    return touch_slopes(sp, opt, p0, p1, 0.0, 1.0, err);
+}
+
+/* docs/method.md §5.8: knots on a constant line of a line scheme. */
+static ts_status line_touch_slopes(ts_spline *sp, const ts_options *opt, size_t p0, size_t p1,
+                                   ts_error *err)
+{
+    ts_status st = TS_OK;
+    if (sp->has_lower && sp->lower.m == 0.0)
+        st = touch_slopes(sp, opt, p0, p1, sp->lower.c, 1.0, err);
+    if (st == TS_OK && sp->has_upper && sp->upper.m == 0.0)
+        st = touch_slopes(sp, opt, p0, p1, sp->upper.c, -1.0, err);
+    return st;
 }
 
 /* docs/method.md §5.5: wrong-sign slopes to 0, both slopes of a flat interval 0;
@@ -367,9 +391,11 @@ static ts_status adjust(ts_spline *sp, const ts_options *opt, int dir, size_t p0
 {
     if (opt->shape == TS_SHAPE_POSITIVE)
         return zero_slopes(sp, opt, p0, p1, err);
-    if (opt->shape == TS_SHAPE_MONOTONE)
+    if (opt->shape == TS_SHAPE_MONOTONE) {
         monotone_slopes(sp, dir, p0, p1);
-    return TS_OK;
+        return TS_OK;
+    }
+    return line_touch_slopes(sp, opt, p0, p1, err);
 }
 
 ts_status ts__shape_begin(ts_spline *sp, const ts_options *opt, const double *f, int *dir,

@@ -2,6 +2,7 @@
  * parameters, certified and checked by dense sampling; the printed
  * Theorem 4 signs; zeros; monotone; certificate repair; every bad-data
  * error with its exact status and index. */
+#include "common/th_gapmin.h"
 #include "th.h"
 #include "trigspline.h"
 
@@ -935,6 +936,165 @@ static void test_horizontal(void)
     }
 }
 
+
+/* Data touching a constant bound (docs/method.md §5.8): probabilities with
+ * exact 0 and 1, between y = 0 and y = 1 (and above 0, below 1 alone), every
+ * form, estimated slope method, α and certify.  Expected, from the method
+ * re-derived: at a touching knot the slope is 0 (first knot: pointing into
+ * the region, last likewise); the curve minus the bound is Σ A_l (B_l − c)
+ * (§2), whose minimum over θ is found independently in long double
+ * (tests/common/th_gapmin.h, κ = 0 for a constant line): >= 0 everywhere
+ * (to the long double rounding of the sum, 1e-17 of the values), > 0 on
+ * intervals with neither end on the bound; dense samples of ts_eval inside
+ * [0, 1] to ts_eval's rounding (16 ε·max|B|, as dense_check) and >= 0
+ * exactly for the bound 0 (a sum of non-negative products); the report
+ * certified with gap 0 at a touching knot; ts_certify agrees. */
+static void touch_one(const double *x, const double *f, size_t np, const ts_options *o,
+                      const char *what)
+{
+    ts_status st;
+    ts_error e;
+    ts_spline *s = build(x, f, np, o, &st, &e);
+    CHECKF(st == TS_OK, "%s: %s at %zu", what, ts_strerror(st), e.index);
+    if (!s)
+        return;
+    size_t n = np - 1;
+    const double *d = ts_spline_slopes(s);
+    int lower = o->shape != TS_SHAPE_BELOW, upper = o->shape != TS_SHAPE_ABOVE;
+    for (size_t j = 0; j <= n; j++) {
+        for (int side = 0; side < 2; side++) {
+            if (!(side == 0 ? lower : upper) || f[j] != (side == 0 ? o->lower.c : o->upper.c))
+                continue;
+            double up = side == 0 ? 1.0 : -1.0; /* into the region */
+            int periodic = o->slopes == TS_SLOPES_PERIODIC;
+            int ok = (j > 0 && j < n) || periodic ? d[j] == 0.0
+                                                  : (j == 0 ? up * d[j] >= 0.0 : up * d[j] <= 0.0);
+            CHECKF(ok, "%s: slope %.17g at touching knot %zu", what, d[j], j);
+        }
+    }
+    CHECKF(ts_spline_certified(s) == 1, "%s: not certified", what);
+    for (size_t i = 0; i < n; i++) {
+        double B[4];
+        ts_spline_control(s, i, B, NULL);
+        double sc = 0;
+        for (int l = 0; l < 4; l++)
+            sc = fabs(B[l]) > sc ? fabs(B[l]) : sc;
+        ts_interval_report r;
+        CHECK(ts_spline_report(s, i, &r) == TS_OK);
+        CHECKF(r.certified == 1, "%s: interval %zu not certified", what, i);
+        for (int side = 0; side < 2; side++) {
+            if (!(side == 0 ? lower : upper))
+                continue;
+            double c = side == 0 ? o->lower.c : o->upper.c, sg = side == 0 ? 1.0 : -1.0;
+            long double C[4];
+            for (int l = 0; l < 4; l++)
+                C[l] = (long double)sg * ((long double)B[l] - (long double)c);
+            long double mn = th_gap_min(C, 0.0L, 512);
+            int touch = f[i] == c || f[i + 1] == c;
+            CHECKF(mn >= -1e-17L * (long double)(sc + 1), "%s: interval %zu side %d: minimum %Lg", what, i,
+                   side, mn);
+            CHECKF(touch || mn > 1e-17L * (long double)(sc + 1), "%s: interval %zu side %d: minimum %Lg",
+                   what, i, side, mn);
+            double gap = side == 0 ? r.gap_lower : r.gap_upper;
+            CHECKF(touch ? gap == 0.0 : gap > 0.0, "%s: interval %zu side %d: gap %.17g", what,
+                   i, side, gap);
+        }
+        for (int k = 0; k <= 400; k++) {
+            double xx = k == 400 ? x[i + 1] : x[i] + (x[i + 1] - x[i]) * k / 400.0, y;
+            ts_eval(s, xx, NULL, &y);
+            if (lower)
+                CHECKF(o->lower.c == 0.0 ? y >= 0.0 : y >= o->lower.c - 16 * EPS * sc,
+                       "%s: S(%.17g) = %.17g below", what, xx, y);
+            if (upper)
+                CHECKF(y <= o->upper.c + 16 * EPS * sc, "%s: S(%.17g) = %.17g above", what, xx, y);
+        }
+    }
+    ts_interval_report reps[16];
+    CHECKF(ts_certify(s, lower ? &o->lower : NULL, upper ? &o->upper : NULL, reps, NULL) == TS_OK,
+           "%s: ts_certify", what);
+    ts_spline_free(s);
+}
+
+static void test_touch_constant(void)
+{
+    static const double xa[] = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10};
+    static const double fa[] = {0, 0, 0.1, 0.5, 0.9, 1, 1, 0.7, 0.2, 0, 0.4};
+    static const double xb[] = {0, 0.5, 2, 3, 4.5, 5, 6};
+    static const double fb[] = {0, 0.02, 0.2, 0.6, 0.95, 1, 1}; /* a distribution function */
+    static const double xp[] = {0, 1, 2, 3, 4};
+    static const double fp[] = {0, 0.5, 1, 0.3, 0}; /* periodic */
+    static const ts_shape shapes[3] = {TS_SHAPE_BETWEEN, TS_SHAPE_ABOVE, TS_SHAPE_BELOW};
+    static const double alphas[3] = {0.1, 1, 3};
+    char what[128];
+    for (int form = 0; form < 3; form++)
+        for (int sh = 0; sh < 3; sh++)
+            for (int sl = 0; sl < TS_SLOPES_COUNT_; sl++)
+                for (int ka = 0; ka < 3; ka++)
+                    for (int data = 0; data < 3; data++) {
+                        if (sl == TS_SLOPES_USER || (sl == TS_SLOPES_PERIODIC) != (data == 2))
+                            continue;
+                        ts_options o;
+                        ts_options_init(&o);
+                        o.form = (ts_form)form;
+                        o.shape = shapes[sh];
+                        o.slopes = (ts_slopes)sl;
+                        o.alpha = alphas[ka];
+                        o.certify = (ka + sl) % 2;
+                        o.lower = (ts_line){0, 0};
+                        o.upper = (ts_line){0, 1};
+                        snprintf(what, sizeof what, "touch form %d shape %d slopes %d alpha %g data %d",
+                                 form, (int)o.shape, sl, o.alpha, data);
+                        if (data == 0)
+                            touch_one(xa, fa, 11, &o, what);
+                        else if (data == 1)
+                            touch_one(xb, fb, 7, &o, what);
+                        else
+                            touch_one(xp, fp, 5, &o, what);
+                    }
+    /* error paths: user slopes that leave the region at a touching knot; a
+     * point an ulp outside; a sloped line still may not be touched */
+    ts_options o;
+    ts_options_init(&o);
+    o.shape = TS_SHAPE_BETWEEN;
+    o.lower = (ts_line){0, 0};
+    o.upper = (ts_line){0, 1};
+    o.slopes = TS_SLOPES_USER;
+    double us[11] = {0.1, 0, 0.1, 0.4, 0.3, 0, 0, -0.4, -0.3, 0, 0.4};
+    o.user_slopes = us;
+    o.n_user_slopes = 11;
+    ts_status st;
+    ts_error e;
+    ts_spline *s = build(xa, fa, 11, &o, &st, &e);
+    CHECK(st == TS_OK);
+    ts_spline_free(s);
+    us[6] = 0.01; /* inner knot on y = 1 */
+    s = build(xa, fa, 11, &o, &st, &e);
+    CHECK(st == TS_ERR_ZERO_SLOPE && e.index == 6 && s == NULL);
+    us[6] = 0;
+    us[0] = -0.01; /* first knot on y = 0, pointing below */
+    s = build(xa, fa, 11, &o, &st, &e);
+    CHECK(st == TS_ERR_ZERO_SLOPE && e.index == 0 && s == NULL);
+    us[0] = 0.1;
+    o.slopes = TS_SLOPES_ARITHMETIC;
+    double fo[11];
+    memcpy(fo, fa, sizeof fo);
+    fo[5] = 1 + 2 * EPS; /* above the upper bound */
+    s = build(xa, fo, 11, &o, &st, &e);
+    CHECK(st == TS_ERR_SIDE && e.index == 5 && s == NULL);
+    fo[5] = 1;
+    fo[9] = -0x1p-1074; /* below the lower */
+    s = build(xa, fo, 11, &o, &st, &e);
+    CHECK(st == TS_ERR_SIDE && e.index == 9 && s == NULL);
+    o.upper = (ts_line){0, 0}; /* bounds equal */
+    s = build(xa, fa, 11, &o, &st, &e);
+    CHECK(st == TS_ERR_LINES && e.index == 0 && s == NULL);
+    o.shape = TS_SHAPE_ABOVE; /* y = 0.1 x touches (1, 0.1) */
+    o.lower = (ts_line){0.1, 0};
+    static const double xs[] = {0, 1, 2}, fs[] = {0.5, 0.1, 0.9};
+    s = build(xs, fs, 3, &o, &st, &e);
+    CHECK(st == TS_ERR_SIDE && e.index == 1 && s == NULL);
+}
+
 int main(void)
 {
     TH_CASE("tables");
@@ -957,5 +1117,7 @@ int main(void)
     test_certify_off();
     TH_CASE("horizontal");
     test_horizontal();
+    TH_CASE("touch_constant");
+    test_touch_constant();
     return th_report("test_shape");
 }

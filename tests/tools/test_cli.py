@@ -381,6 +381,18 @@ def test_exit_statuses():
     rc, out, err = run(["fit", fix("cli_infeasible.csv"), "--shape", "above", "--line", "0.5,0",
                         "--form", "geometric"])
     check("geometric form feasible there", rc == 0, err)
+    # data touching constant bounds (docs/method.md §5.8): probabilities with 0 and 1
+    probs = b"0,0\n1,0\n2,0.1\n3,0.5\n4,0.9\n5,1\n6,1\n7,0.7\n8,0.2\n9,0\n"
+    for form in ("paper", "c1", "geometric"):
+        rc, out, err = run(["fit", "-", "--lower", "0,0", "--upper", "0,1", "--form", form,
+                            "--json", "--samples", "200"], stdin=probs)
+        js = json.loads(out) if rc == 0 else {}
+        check("touching 0 and 1 (%s)" % form, rc == 0 and js["certified"] is True
+              and js["samples"]["min_y"] >= 0 and js["samples"]["max_y"] <= 1
+              and js["intervals"][0]["gap_lower"] == 0, err)
+    rc, out, err = run(["fit", "-", "--lower", "0,0", "--upper", "0,1"],
+                       stdin=probs.replace(b"5,1\n", b"5,1.0000001\n"))
+    check("above a constant upper bound rc 2", rc == 2 and "x = 5" in err, err)
     # 4: certify Table 1 at a = 0.04 (docs/method.md §9.6: dips below zero, intervals 0 and 7)
     rc, out, err = run(["certify", T1, "--alpha", "0.04", "--beta", "0", "--shape", "positive"])
     check("certify violated rc 4", rc == 4, err)

@@ -246,3 +246,19 @@ def test_cubic_hermite_and_akima_migration():
     ak = interp.Akima1DInterpolator(x, f)
     assert np.allclose(trigspline.estimate_slopes(x, f, "akima"), ak(x, 1), rtol=1e-12,
                        atol=1e-13)
+
+
+@pytest.mark.parametrize("form", ["paper", "c1", "geometric"])
+def test_probabilities_touch_constant_bounds(form):
+    """Data with exact 0 and 1 between y = 0 and y = 1 (docs/method.md §5.8):
+    built, certified, every sample inside [0, 1] to the evaluation's rounding
+    (16 eps of the values, as the C tests), the knots kept exactly."""
+    x = np.arange(10.0)
+    p = np.array([0, 0, 0.1, 0.5, 0.9, 1, 1, 0.7, 0.2, 0])
+    s = Spline(x, p, shape="between", lower=(0, 0), upper=(0, 1), form=form)
+    assert s.certified
+    y = s(np.linspace(0, 9, 20001))
+    assert y.min() >= 0 and y.max() <= 1 + 16 * EPS
+    assert np.array_equal(s(x), p)
+    with pytest.raises(TrigsplineError):
+        Spline(x, np.where(p == 1, 1 + 2 * EPS, p), shape="between", lower=(0, 0), upper=(0, 1))
