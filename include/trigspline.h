@@ -610,7 +610,9 @@ typedef struct ts_curve_options {
     size_t n_betas;
     /* Box constraint (docs/method.md §5 per coordinate, shared beta per segment):
      * coordinate k kept > lo[k] when has_lo[k], < hi[k] when has_hi[k]
-     * (nonzero = active; entries k >= dim are ignored).  beta_i is the max over
+     * (nonzero = active; entries k >= dim are ignored); a point may lie on
+     * a side (>=, <= there: its tangent component along k is set to 0,
+     * clamped into the box at an open curve's ends; docs/method.md §5.8).  beta_i is the max over
      * the coordinates of the lower/upper-boundary rule with a constant line
      * (and margin t), then every segment and coordinate is certified exactly;
      * where a certificate fails (rounding only: the rule is rigorous for a
@@ -644,7 +646,7 @@ TS_API void ts_curve_options_init(ts_curve_options *opt);
  *   TS_ERR_UNSORTED    two consecutive equal points, any parameterisation
  *                      (index = the second of the pair; for the seam of a closed
  *                      curve, the last point kept), or a knot step lost to rounding
- *   TS_ERR_SIDE        a point on or outside the box (index = point)
+ *   TS_ERR_SIDE        a point outside the box (index = point)
  *   TS_ERR_INFEASIBLE  the docs/method.md §5 value of beta_i overflows, or no finite
  *                      beta_i certifies (slope/gap ratios beyond ~1e300 only;
  *                      index = segment)

@@ -165,10 +165,11 @@ double ts__gap_segment(const double B[4], double xi, double h, const ts_line *ln
      * S − L = Σ A_l (B_l − L_i) − (2mh/π) θ since Σ A_l = 1, with
      * L_i = m x_i + c rounded once (m = 0: L_i = c exactly, κ = 0) */
     double Li = fma(m, xi, ln->c);
-    int pos = 1;
+    int pos = 1, nonneg = 1;
     for (int l = 0; l < 4; l++) {
         C[l] = sg * (B[l] - Li);
         pos = pos && C[l] > 0.0; /* m = 0: the sign of a rounded difference is exact */
+        nonneg = nonneg && C[l] >= 0.0;
     }
     double kappa = m != 0.0 ? sg * m * (2.0 * h / TS_PI) : 0.0;
     double g = ts__trig_min_core(C[0], C[1], C[2], C[3], kappa, &th, &t, &eb);
@@ -177,9 +178,10 @@ double ts__gap_segment(const double B[4], double xi, double h, const ts_line *ln
         *tpar = t;
     if (guard)
         *guard = local_guard(eb, bmax, Li, fabs(m), h);
-    /* a constant line (κ = 0) below every control value: S − L = Σ A_l C_l > 0 */
+    /* a constant line (κ = 0) below every control value: S − L = Σ A_l C_l > 0;
+     * or touched at an end, none beyond it: >= 0 (docs/method.md §5.8) */
     if (proven)
-        *proven = pos & (m == 0.0);
+        *proven = (pos | (nonneg & ((C[0] == 0.0) | (C[3] == 0.0)))) & (m == 0.0);
     return g;
 }
 

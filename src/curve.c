@@ -167,6 +167,28 @@ static int seg_certified(const ts_curve *c, size_t i)
     return 1;
 }
 
+/* docs/method.md §5.8 per coordinate: where a point lies on a side of the
+ * box, that coordinate's slope is 0 (an open curve's first and last point:
+ * clamped to point into the box); estimated slopes only (curves take no
+ * user slopes). */
+static void touch_slopes(ts_curve *c)
+{
+    size_t n = c->n, dim = c->dim;
+    for (size_t i = 0; i <= n; i++)
+        for (size_t k = 0; k < dim; k++) {
+            double v = c->p[i * dim + k], *d = &c->d[i * dim + k];
+            int inner = c->closed || (i > 0 && i < n);
+            for (int side = 0; side < 2; side++) {
+                int has = side == 0 ? c->box.has_lo[k] : c->box.has_hi[k];
+                double up = side == 0 ? 1.0 : -1.0; /* into the box */
+                if (!has || v != (side == 0 ? c->box.lo[k] : c->box.hi[k]))
+                    continue;
+                if (inner || (i == 0 ? up * *d < 0.0 : up * *d > 0.0))
+                    *d = 0.0;
+            }
+        }
+}
+
 /* The repair search of splines (ts__repair_search, docs/method.md §5) on segment i. */
 static void curve_set_a(void *ctx, size_t i, double a)
 {
@@ -342,11 +364,11 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
         if (same)
             return fail(err, TS_ERR_UNSORTED, m - 1, TS_WHERE_POINT);
     }
-    /* docs/method.md §5: every point strictly inside the box */
+    /* docs/method.md §7: every point inside the box (on a side allowed, §5.8) */
     for (size_t i = 0; i < m; i++)
         for (size_t k = 0; k < dim; k++) {
             double v = points[i * dim + k];
-            if ((opt->has_lo[k] && !(v > opt->lo[k])) || (opt->has_hi[k] && !(v < opt->hi[k])))
+            if ((opt->has_lo[k] && !(v >= opt->lo[k])) || (opt->has_hi[k] && !(v <= opt->hi[k])))
                 return fail(err, TS_ERR_SIDE, i, TS_WHERE_POINT);
         }
 
@@ -415,6 +437,8 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
             goto out;
     }
     /* (ts__slopes refuses non-finite slopes: TS_ERR_SLOPE_OVERFLOW) */
+    if (has_box)
+        touch_slopes(c);
 
     /* alpha, beta: user values; with a box docs/method.md §5 per coordinate, shared max */
     for (size_t i = 0; i < n; i++) {
@@ -432,13 +456,20 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
             double f0 = c->p[i * dim + k], f1 = c->p[(i + 1) * dim + k];
             double d0 = c->d[i * dim + k], d1 = c->d[(i + 1) * dim + k];
             double cand[4] = {-(double)INFINITY, -(double)INFINITY, -(double)INFINITY, -(double)INFINITY};
+            /* a point on the side drops its term (its slope is 0, §5.8) */
+            /* (divisors 1 there: a compiler may form the quotient before the
+             * select, and x/0 would raise FE_DIVBYZERO on valid data) */
+            double gl0 = f0 - c->box.lo[k], gl1 = f1 - c->box.lo[k];
+            double gu0 = c->box.hi[k] - f0, gu1 = c->box.hi[k] - f1;
+            double sl0 = gl0 > 0.0 ? gl0 : 1.0, sl1 = gl1 > 0.0 ? gl1 : 1.0;
+            double su0 = gu0 > 0.0 ? gu0 : 1.0, su1 = gu1 > 0.0 ? gu1 : 1.0;
             if (c->box.has_lo[k]) { /* docs/method.md §5 lower-boundary rule, l = lo[k] */
-                cand[0] = -a - K * d0 / (f0 - c->box.lo[k]);
-                cand[1] = -a + K * d1 / (f1 - c->box.lo[k]);
+                cand[0] = gl0 > 0.0 ? -a - K * d0 / sl0 : cand[0];
+                cand[1] = gl1 > 0.0 ? -a + K * d1 / sl1 : cand[1];
             }
             if (c->box.has_hi[k]) { /* docs/method.md §5 upper-boundary rule, u = hi[k] */
-                cand[2] = -a + K * d0 / (c->box.hi[k] - f0);
-                cand[3] = -a - K * d1 / (c->box.hi[k] - f1);
+                cand[2] = gu0 > 0.0 ? -a + K * d0 / su0 : cand[2];
+                cand[3] = gu1 > 0.0 ? -a - K * d1 / su1 : cand[3];
             }
             for (int j = 0; j < 4; j++)
                 if (cand[j] > best) {

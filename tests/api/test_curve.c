@@ -2,11 +2,13 @@
  * from docs/method.md §2, §3, §5, §6 (test-side implementation below, "tk_"), from
  * geometry (convex hulls, affine maps, circles) or from the mpmath script
  * tests/ref/curve_circle_length.py. */
+#include "common/th_gapmin.h"
 #include "th.h"
 #include "common/th_basis.h"
 #include "common/th_rng.h"
 #include "trigspline.h"
 
+#include <fenv.h>
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -875,6 +877,91 @@ static void test_box(void)
  * rounding of the floor (B1 rounds onto it), the certificate cannot tell
  * the true minimum (~2e-16) from rounding, so beta is raised by the repair
  * until B1 rounds back above the floor. */
+
+/* Points on the sides of the box (docs/method.md §5.8, §7): a closed diamond
+ * touching all four sides of [0, 1]², an open curve starting on x = 0 and a
+ * 3-D one through a corner of its box.  Expected from the method re-derived:
+ * the touching coordinate's tangent component 0 (clamped into the box at an
+ * open end); per segment and coordinate the curve minus the side is
+ * Σ A_l (q_l − side) (§2), whose minimum is found independently in long
+ * double (tests/common/th_gapmin.h, κ = 0): >= 0 (to 1e-17 of the values),
+ * 0 where an end touches; every control value inside the closed box; dense
+ * samples inside to the evaluation's rounding (16 ε, values <= 1 here); the
+ * certificate accepts. */
+static void test_box_touch(void)
+{
+    static const double D[] = {0, 0.5, 0.5, 0, 1, 0.5, 0.5, 1};        /* closed */
+    static const double O[] = {0, 0.2, 0.3, 0.9, 0.7, 0.4, 1, 0.1};   /* open */
+    static const double T[] = {0, 0, 0, 0.5, 0.4, 0.3, 1, 1, 0.6, 0.2, 0.9, 1}; /* 3-D */
+    const double *pts[3] = {D, O, T};
+    size_t np[3] = {4, 4, 4}, dims[3] = {2, 2, 3};
+    for (int set = 0; set < 3; set++)
+        for (int param = 0; param < 3; param++)
+            for (int ka = 0; ka < 3; ka++) {
+                size_t dim = dims[set], m = np[set];
+                ts_curve_options o;
+                ts_curve_options_init(&o);
+                o.closed = set == 0;
+                o.param = (ts_param)param;
+                o.alpha = ka == 0 ? 0.1 : ka == 1 ? 0.37 : 2.0;
+                for (size_t k = 0; k < dim; k++) {
+                    o.has_lo[k] = o.has_hi[k] = 1;
+                    o.lo[k] = 0;
+                    o.hi[k] = 1;
+                }
+                ts_curve *c = NULL;
+                ts_error e;
+                feclearexcept(FE_ALL_EXCEPT);
+                ts_status st = ts_curve_new(pts[set], m, dim, &o, &c, &e);
+                CHECKF(st == TS_OK, "set %d param %d: %s at %zu", set, param, ts_strerror(st),
+                       e.index);
+                CHECKF(fetestexcept(FE_DIVBYZERO | FE_INVALID) == 0, "set %d: a flag raised", set);
+                if (!c)
+                    continue;
+                size_t n = ts_curve_segments(c);
+                const double *P = pts[set];
+                for (size_t i = 0; i < n; i++) {
+                    double q[12];
+                    ts_curve_control(c, i, q);
+                    for (size_t k = 0; k < dim; k++) {
+                        double p0 = P[i * dim + k], p1 = P[((i + 1) % m) * dim + k];
+                        for (int side = 0; side < 2; side++) {
+                            double b = side == 0 ? 0.0 : 1.0, sg = side == 0 ? 1.0 : -1.0;
+                            long double C[4];
+                            for (int l = 0; l < 4; l++) {
+                                C[l] = (long double)sg * ((long double)q[(size_t)l * dim + k] - (long double)b);
+                                CHECKF(C[l] >= 0, "set %d seg %zu coord %zu: control %d outside",
+                                       set, i, k, l);
+                            }
+                            long double mn = th_gap_min(C, 0.0L, 512);
+                            int touch = p0 == b || p1 == b;
+                            CHECKF(mn >= -1e-17L && (touch || mn > 1e-17L),
+                                   "set %d seg %zu coord %zu side %d: minimum %Lg", set, i, k,
+                                   side, mn);
+                            /* the touching end's tangent component: q1 (left end) or q2
+                             * (right end) on the side too */
+                            if (p0 == b && (o.closed || i > 0))
+                                CHECK(q[dim + k] == b);
+                            if (p1 == b && (o.closed || i + 1 < n))
+                                CHECK(q[2 * dim + k] == b);
+                        }
+                    }
+                }
+                CHECKF(ts_curve_certify(c, NULL, NULL) == TS_OK, "set %d: certify", set);
+                double buf[(8 * 64 + 1) * 4];
+                size_t rows;
+                ts_curve_sample(c, 65, buf, sizeof buf / sizeof buf[0], &rows);
+                int out = 0;
+                for (size_t r = 0; r < rows; r++)
+                    for (size_t k = 0; k < dim; k++) {
+                        double v = buf[r * (1 + dim) + 1 + k];
+                        out += !(v >= -16 * DBL_EPSILON && v <= 1 + 16 * DBL_EPSILON);
+                    }
+                CHECKF(out == 0, "set %d param %d: %d samples outside", set, param, out);
+                ts_curve_free(c);
+            }
+}
+
 static void test_box_repair(void)
 {
     double P[] = {0, 1 + 0x1p-52, 1, 2, 2, 3};
@@ -1258,7 +1345,10 @@ static void test_errors(void)
     }
     ts_curve_options_init(&o);
     o.has_lo[0] = 1;
-    o.lo[0] = 0; /* point 0 has x = 0: on the wall */
+    o.lo[0] = 0; /* point 0 has x = 0: on the wall, allowed (docs/method.md §5.8) */
+    CHECK(ts_curve_new(P, 4, 2, &o, &c, &e) == TS_OK);
+    ts_curve_free(c);
+    o.lo[0] = 0x1p-1074; /* point 0 has x = 0: outside */
     NEW_EXPECT(P, 4, 2, &o, TS_ERR_SIDE, 0);
     o.lo[0] = -1;
     o.has_hi[1] = 1;
@@ -1420,6 +1510,8 @@ int main(void)
     test_sample();
     TH_CASE("box");
     test_box();
+    TH_CASE("box_touch");
+    test_box_touch();
     TH_CASE("box_repair");
     test_box_repair();
     TH_CASE("length");

@@ -53,7 +53,8 @@ class Curve:
     alpha, beta : float or array_like (one per segment), optional
     box : sequence of (lo, hi) pairs, optional
         One pair per coordinate, ``None`` for an open side: each coordinate
-        kept strictly inside (β raised where needed, certified).
+        kept inside (β raised where needed, certified); a point may lie on a
+        side, where the curve then touches it.
     slopes : str, optional
         Slope method per coordinate (docs/method.md §6).
     margin : float, optional
