@@ -56,3 +56,17 @@ def test_curve_box_certified():
     y = c(t)[:, 1]
     assert y.min() > 0.0 and y.max() < 1.0
     assert c.certify(box=[None, (0.2, 0.8)]) is False  # data at 0.1 and 0.9
+
+
+def test_curve_touching_box_sides():
+    """A closed diamond with a point on each side of [0, 1]² (docs/method.md
+    §5.8): built, certified, every sample inside to the evaluation's rounding
+    (16 eps, values <= 1); a point outside the box is refused."""
+    pts = [(0, 0.5), (0.5, 0), (1, 0.5), (0.5, 1)]
+    c = Curve(pts, closed=True, box=[(0, 1), (0, 1)])
+    assert c.certify() is True
+    xy = c(np.linspace(0, c.knots[-1], 20001))
+    eps = np.finfo(float).eps
+    assert xy.min() >= -16 * eps and xy.max() <= 1 + 16 * eps
+    with pytest.raises(Exception):
+        Curve([(-1e-9, 0.5)] + pts[1:], closed=True, box=[(0, 1), (0, 1)])
