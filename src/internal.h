@@ -266,10 +266,10 @@ TS_INLINE double ts__geo_halley(double phi, double k, double u, double *so, doub
 #define TS_GEO_PASSES 16
 TS_INLINE double ts__geo_root(double u, double k, double sc[4])
 {
-    double phi = ts__geo_halley(ts__geo_start(u, k), k, u, &sc[0], &sc[1], &sc[2], &sc[3]);
-    for (int it = 1; it < TS_GEO_PASSES; it++) {
+    double phi = ts__geo_start(u, k);
+    for (int it = 0; it < TS_GEO_PASSES; it++) {
         double next = ts__geo_halley(phi, k, u, &sc[0], &sc[1], &sc[2], &sc[3]);
-        if (fabs(next - phi) <= 0x1p-20 * next)
+        if (it > 0 && fabs(next - phi) <= 0x1p-20 * next)
             return next;
         phi = next;
     }
