@@ -330,8 +330,8 @@ TS_ALWAYS_INLINE void geo_solve_block(geo_stage *st, size_t nb, int p0)
     for (int pass = p0; pass < TS_GEO_PASSES; pass++) {
         double open = 0.0; /* a double flag: this loop vectorises on every ISA */
         for (size_t j = 0; j < nb; j++) {
-            /* A query stops at its own first small step (below 2^-20 φ),
-             * whatever the others of the block still need, so that its value
+            /* A query stops at its own first small step (below 2^-20 φ)
+             * from the second on, whatever the others of the block still need, so that its value
              * does not depend on them: its φ stays where that step started,
              * and every later pass repeats the same step from there, giving
              * the same bits.  s, c, ms, mc: at the step's end, for the
