@@ -434,7 +434,7 @@ TS_ALWAYS_INLINE void geo_pad(geo_stage *st, size_t nb)
 /* The whole batch, or its prefix up to the first block with a query outside
  * [x0, xn]; *cur is the cursor; returns the number of queries evaluated. */
 TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *xq, size_t m,
-                                 double *yq, size_t *cur)
+                                 double *yq, size_t *cur, int geo)
 {
     union {
         fast_stage p;
@@ -442,7 +442,7 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
     } st;
     _Alignas(64) double yt[TS_FAST_BLOCK];
     size_t j0 = 0;
-    if (sp->form == TS_FORM_GEOMETRIC) {
+    if (geo) {
         while (j0 < m) {
             size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
             if (!stage_block(sp, xq + j0, nb, 0, NULL, &st.g, cur))
@@ -483,23 +483,56 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
 
 typedef size_t (*pipeline_fn)(const ts_spline *, int, const double *, size_t, double *, size_t *);
 
-static size_t pipeline_portable(const ts_spline *sp, int deriv, const double *xq, size_t m,
-                                double *yq, size_t *cur)
+/* Per ISA, the geometric form's pipeline and the others' in functions of
+ * their own (one's loops do not change the other's register allocation),
+ * chosen by the spline's form. */
+#define TS_PIPELINE_ARGS const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur
+static TS_NOINLINE size_t pipeline_geo_portable(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur);
+    return pipeline(sp, deriv, xq, m, yq, cur, 1);
+}
+
+static TS_NOINLINE size_t pipeline_trig_portable(TS_PIPELINE_ARGS)
+{
+    return pipeline(sp, deriv, xq, m, yq, cur, 0);
+}
+
+static size_t pipeline_portable(TS_PIPELINE_ARGS)
+{
+    return (sp->form == TS_FORM_GEOMETRIC ? pipeline_geo_portable : pipeline_trig_portable)(sp, deriv, xq, m,
+                                                                                           yq, cur);
 }
 
 #if TS_FAST_X86
-__attribute__((target("avx2,fma"))) static size_t
-pipeline_avx2(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur)
+__attribute__((target("avx2,fma"))) static TS_NOINLINE size_t pipeline_geo_avx2(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur);
+    return pipeline(sp, deriv, xq, m, yq, cur, 1);
 }
 
-__attribute__((target(TS_TARGET_512))) static size_t
-pipeline_avx512(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur)
+__attribute__((target("avx2,fma"))) static TS_NOINLINE size_t pipeline_trig_avx2(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur);
+    return pipeline(sp, deriv, xq, m, yq, cur, 0);
+}
+
+static size_t pipeline_avx2(TS_PIPELINE_ARGS)
+{
+    return (sp->form == TS_FORM_GEOMETRIC ? pipeline_geo_avx2 : pipeline_trig_avx2)(sp, deriv, xq, m, yq, cur);
+}
+
+__attribute__((target(TS_TARGET_512))) static TS_NOINLINE size_t pipeline_geo_avx512(TS_PIPELINE_ARGS)
+{
+    return pipeline(sp, deriv, xq, m, yq, cur, 1);
+}
+
+__attribute__((target(TS_TARGET_512))) static TS_NOINLINE size_t pipeline_trig_avx512(TS_PIPELINE_ARGS)
+{
+    return pipeline(sp, deriv, xq, m, yq, cur, 0);
+}
+
+static size_t pipeline_avx512(TS_PIPELINE_ARGS)
+{
+    return (sp->form == TS_FORM_GEOMETRIC ? pipeline_geo_avx512 : pipeline_trig_avx512)(sp, deriv, xq, m, yq,
+                                                                                       cur);
 }
 #endif
 
