@@ -253,9 +253,9 @@ TS_INLINE double ts__geo_halley(double phi, double k, double u, double *so, doub
     *mco = mc + (s * e + c * e2);
     return next;
 }
-/* Halley steps from ts__geo_start until one is below 2^-20 φ (Halley's
- * error after it is of the order of its cube: rounding), at most
- * TS_GEO_PASSES; sin, cos, 1 − sin, 1 − cos at the root from that step's
+/* Halley steps from ts__geo_start, at least two (the batch kernel runs the
+ * first without a test), then until one is below 2^-20 φ (Halley's error
+ * after it is of the order of its cube: rounding), at most TS_GEO_PASSES; sin, cos, 1 − sin, 1 − cos at the root from that step's
  * rotation (s[4]).  A dense scan of u in [2^-1022, 1/2] and every κ the
  * library forms (a_i >= TS_GEOMETRIC_A_MIN) stops within 9 steps, the most
  * at a_i = 0.3472 and u near 1/2, where X̂' nearly vanishes
@@ -269,7 +269,7 @@ TS_INLINE double ts__geo_root(double u, double k, double sc[4])
     double phi = ts__geo_start(u, k);
     for (int it = 0; it < TS_GEO_PASSES; it++) {
         double next = ts__geo_halley(phi, k, u, &sc[0], &sc[1], &sc[2], &sc[3]);
-        if (fabs(next - phi) <= 0x1p-20 * next)
+        if (it > 0 && fabs(next - phi) <= 0x1p-20 * next)
             return next;
         phi = next;
     }

@@ -308,7 +308,7 @@ TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, dou
  * time.  Start: ts__geo_start (internal.h: one Newton step on a quartic
  * model of X̂; within 3.0e-3 of the root for a_i >= 1, 6.7e-2 for
  * a_i >= 4/(3π)).  Then Halley steps on X̂ with the polynomial sine and
- * cosine, until every step of the block is below 2^-20 φ (Halley's error
+ * cosine, at least two, until every step of the block is below 2^-20 φ (Halley's error
  * after such a step is of the order of its cube: rounding; two steps for
  * κ <= 0.4, three for some u up to κ = 1/2).  The last step is applied to
  * (sin φ, cos φ) by its Taylor rotation (|e| <= 2^-20: the dropped e³/6 is
@@ -324,20 +324,14 @@ TS_ALWAYS_INLINE void geo_side(const geo_stage *st, size_t j, int *right, double
     *u = (*right ? dr : dl) / st->h[j];
 }
 
-TS_ALWAYS_INLINE void geo_solve_block(geo_stage *st, size_t nb)
+/* Passes p0 .. TS_GEO_PASSES − 1 from st->phi, st->u. */
+TS_ALWAYS_INLINE void geo_solve_block(geo_stage *st, size_t nb, int p0)
 {
-    for (size_t j = 0; j < nb; j++) {
-        int right;
-        double u, k = st->kappa[j];
-        geo_side(st, j, &right, &u);
-        st->u[j] = u;
-        st->phi[j] = ts__geo_start(u, k);
-    }
-    for (int pass = 0; pass < TS_GEO_PASSES; pass++) {
+    for (int pass = p0; pass < TS_GEO_PASSES; pass++) {
         double open = 0.0; /* a double flag: this loop vectorises on every ISA */
         for (size_t j = 0; j < nb; j++) {
-            /* A query stops at its own first small step (below 2^-20 φ),
-             * whatever the others of the block still need, so that its value
+            /* A query stops at its own first small step (below 2^-20 φ)
+             * from the second on, whatever the others of the block still need, so that its value
              * does not depend on them: its φ stays where that step started,
              * and every later pass repeats the same step from there, giving
              * the same bits.  s, c, ms, mc: at the step's end, for the
@@ -371,15 +365,55 @@ TS_ALWAYS_INLINE void geo_values(int deriv, const geo_stage *st, size_t nb, doub
     }
 }
 
+/* What nearly every query needs, with the fewest arrays between loops
+ * (docs/method.md §4): u and the start; the first Halley step, untested
+ * (ts__geo_root); the second step, its stop test and the value.  (One loop
+ * for all of it is not vectorised by GCC 12: jump threading leaves control
+ * flow in it.)  A query whose second step is not small (some u at κ above
+ * 0.4) leaves the block to geo_solve_block's remaining passes from where
+ * ts__geo_root takes its third step, and the whole block's values are then
+ * formed again (a stopped query repeats its stopping step from where it
+ * started: the same bits). */
+TS_ALWAYS_INLINE void geo_fused(int deriv, geo_stage *st, size_t nb, double *y)
+{
+    for (size_t j = 0; j < nb; j++) {
+        int right;
+        double u;
+        geo_side(st, j, &right, &u);
+        st->u[j] = u;
+        st->phi[j] = ts__geo_start(u, st->kappa[j]);
+    }
+    for (size_t j = 0; j < nb; j++) {
+        double s, c, ms, mc;
+        st->phi[j] = ts__geo_halley(st->phi[j], st->kappa[j], st->u[j], &s, &c, &ms, &mc);
+    }
+    double open = 0.0; /* a double flag: this loop vectorises on every ISA */
+    for (size_t j = 0; j < nb; j++) {
+        double k = st->kappa[j], s, c, ms, mc, phi1 = st->phi[j];
+        double phi2 = ts__geo_halley(phi1, k, st->u[j], &s, &c, &ms, &mc);
+        double more = fabs(phi2 - phi1) <= 0x1p-20 * phi2 ? 0.0 : 1.0; /* NaN: 1 */
+        open = more > 0.0 ? more : open;
+        st->phi[j] = more > 0.0 ? phi2 : phi1;
+        int right = st->dr[j] < st->dl[j];
+        double F0 = right ? st->f1[j] : st->f0[j], F1 = right ? st->f0[j] : st->f1[j];
+        double D0 = right ? -st->d1[j] : st->d0[j], D1 = right ? -st->d0[j] : st->d1[j];
+        y[j] = ts__geo_y(deriv, F0, F1, D0, D1, st->h[j], k, right, s, c, ms, mc);
+    }
+    if (open == 0.0)
+        return;
+    geo_solve_block(st, nb, 2);
+    geo_values(deriv, st, nb, y);
+}
+
+/* deriv a constant in each loop */
 TS_ALWAYS_INLINE void geo_eval_block(int deriv, geo_stage *st, size_t nb, double *y)
 {
-    geo_solve_block(st, nb);
     if (deriv == 0)
-        geo_values(0, st, nb, y);
+        geo_fused(0, st, nb, y);
     else if (deriv == 1)
-        geo_values(1, st, nb, y);
+        geo_fused(1, st, nb, y);
     else
-        geo_values(2, st, nb, y);
+        geo_fused(2, st, nb, y);
 }
 
 /* Fills the stage's unused places [nb, TS_FAST_BLOCK) with its first query. */
@@ -400,7 +434,7 @@ TS_ALWAYS_INLINE void geo_pad(geo_stage *st, size_t nb)
 /* The whole batch, or its prefix up to the first block with a query outside
  * [x0, xn]; *cur is the cursor; returns the number of queries evaluated. */
 TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *xq, size_t m,
-                                 double *yq, size_t *cur)
+                                 double *yq, size_t *cur, int geo)
 {
     union {
         fast_stage p;
@@ -408,7 +442,7 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
     } st;
     _Alignas(64) double yt[TS_FAST_BLOCK];
     size_t j0 = 0;
-    if (sp->form == TS_FORM_GEOMETRIC) {
+    if (geo) {
         while (j0 < m) {
             size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
             if (!stage_block(sp, xq + j0, nb, 0, NULL, &st.g, cur))
@@ -449,23 +483,56 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
 
 typedef size_t (*pipeline_fn)(const ts_spline *, int, const double *, size_t, double *, size_t *);
 
-static size_t pipeline_portable(const ts_spline *sp, int deriv, const double *xq, size_t m,
-                                double *yq, size_t *cur)
+/* Per ISA, the geometric form's pipeline and the others' in functions of
+ * their own (one's loops do not change the other's register allocation),
+ * chosen by the spline's form. */
+#define TS_PIPELINE_ARGS const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur
+static TS_NOINLINE size_t pipeline_geo_portable(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur);
+    return pipeline(sp, deriv, xq, m, yq, cur, 1);
+}
+
+static TS_NOINLINE size_t pipeline_trig_portable(TS_PIPELINE_ARGS)
+{
+    return pipeline(sp, deriv, xq, m, yq, cur, 0);
+}
+
+static size_t pipeline_portable(TS_PIPELINE_ARGS)
+{
+    return (sp->form == TS_FORM_GEOMETRIC ? pipeline_geo_portable : pipeline_trig_portable)(sp, deriv, xq, m,
+                                                                                           yq, cur);
 }
 
 #if TS_FAST_X86
-__attribute__((target("avx2,fma"))) static size_t
-pipeline_avx2(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur)
+__attribute__((target("avx2,fma"))) static TS_NOINLINE size_t pipeline_geo_avx2(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur);
+    return pipeline(sp, deriv, xq, m, yq, cur, 1);
 }
 
-__attribute__((target(TS_TARGET_512))) static size_t
-pipeline_avx512(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur)
+__attribute__((target("avx2,fma"))) static TS_NOINLINE size_t pipeline_trig_avx2(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur);
+    return pipeline(sp, deriv, xq, m, yq, cur, 0);
+}
+
+static size_t pipeline_avx2(TS_PIPELINE_ARGS)
+{
+    return (sp->form == TS_FORM_GEOMETRIC ? pipeline_geo_avx2 : pipeline_trig_avx2)(sp, deriv, xq, m, yq, cur);
+}
+
+__attribute__((target(TS_TARGET_512))) static TS_NOINLINE size_t pipeline_geo_avx512(TS_PIPELINE_ARGS)
+{
+    return pipeline(sp, deriv, xq, m, yq, cur, 1);
+}
+
+__attribute__((target(TS_TARGET_512))) static TS_NOINLINE size_t pipeline_trig_avx512(TS_PIPELINE_ARGS)
+{
+    return pipeline(sp, deriv, xq, m, yq, cur, 0);
+}
+
+static size_t pipeline_avx512(TS_PIPELINE_ARGS)
+{
+    return (sp->form == TS_FORM_GEOMETRIC ? pipeline_geo_avx512 : pipeline_trig_avx512)(sp, deriv, xq, m, yq,
+                                                                                       cur);
 }
 #endif
 

@@ -53,9 +53,9 @@ static long double xhat_l(long double k, long double phi, long double *dx)
  * 2^-20 φ; 99 if none within 99. */
 static int root_steps(double u, double k, double *root)
 {
-    double phi = ts__geo_start(u, k);
-    for (int it = 1; it < 99; it++) {
-        double s, c, ms, mc, next = ts__geo_halley(phi, k, u, &s, &c, &ms, &mc);
+    double s, c, ms, mc, phi = ts__geo_halley(ts__geo_start(u, k), k, u, &s, &c, &ms, &mc);
+    for (int it = 2; it < 99; it++) {
+        double next = ts__geo_halley(phi, k, u, &s, &c, &ms, &mc);
         if (fabs(next - phi) <= 0x1p-20 * next) {
             *root = next;
             return it;
