@@ -45,7 +45,8 @@
  * block with a query outside, cursor, kernels chosen by number), knots
  * exactly, the geometric form's prefix and knots, sparse sorted queries (galloping) and
  * ts_eval_batch / ts_eval_batch_mt against the kernel.  flat() checks flat
- * intervals exactly (value f_i, derivatives 0).
+ * intervals exactly (value f_i, derivatives 0).  order() checks that sorted
+ * and shuffled batches give the same bits (widths that round included).
  */
 #include "th.h"
 #include "common/th_rng.h"
@@ -786,6 +787,80 @@ done:
     free(yd);
 }
 
+/* The order of a batch does not change a value: sorted queries take the
+ * cursor walk, shuffled ones the binary search per query, whose staging
+ * takes h_i as x_{i+1} − x_i from the knots instead of the stored width;
+ * both must give the same bits for every form, kernel and derivative.
+ * Knots of both signs growing by factors 1.5 to 4.5, so that many widths
+ * x_{i+1} − x_i round (x_{i+1} > 2x_i: no Sterbenz): the stored h_i is that same rounded
+ * difference (spline.c), checked here too.  Expected values: the sorted
+ * batch, so the check is exact; a staged width one ulp off changes values
+ * and fails it (the geometric form's sorted path reads the stored width). */
+static void order(void)
+{
+    enum { NP = 40, M = 3000 };
+    static double x[NP], f[NP], qs[M], q[M], ys[M], y[M];
+    static size_t perm[M];
+    th_seed(0xA4093822299F31D0u);
+    x[0] = -1.0 - th_unit();
+    size_t inexact = 0;
+    for (size_t i = 1; i < NP; i++) {
+        x[i] = x[i - 1] + (0.5 + 3.0 * th_unit()) * (fabs(x[i - 1]) + 0.1); /* ×1.5..4.5 above 0 */
+        inexact += (long double)x[i] - (long double)x[i - 1] != (long double)(x[i] - x[i - 1]);
+    }
+    CHECKF(inexact >= 8, "only %zu rounded widths: the data do not test what they should", inexact);
+    for (size_t i = 0; i < NP; i++)
+        f[i] = 2.0 + sin(0.7 * (double)i) + th_unit();
+    for (size_t j = 0; j < M; j++) { /* an interval, then a point in it; every 13th a knot */
+        size_t i = (size_t)(th_unit() * (NP - 1)) % (NP - 1);
+        double t = x[i] + (x[i + 1] - x[i]) * th_unit();
+        qs[j] = j % 13 == 0 ? x[j / 13 % NP] : t <= x[i + 1] ? t : x[i + 1];
+    }
+    qsort(qs, M, sizeof *qs, cmp_double);
+    for (size_t j = 0; j < M; j++)
+        perm[j] = j;
+    for (size_t j = M - 1; j > 0; j--) { /* Fisher-Yates */
+        size_t k = (size_t)(th_unit() * (double)(j + 1)) % (j + 1), t = perm[j];
+        perm[j] = perm[k];
+        perm[k] = t;
+    }
+    for (size_t j = 0; j < M; j++)
+        q[j] = qs[perm[j]];
+    const ts_form forms[3] = {TS_FORM_PAPER, TS_FORM_C1, TS_FORM_GEOMETRIC};
+    for (int k = 0; k < 3; k++) {
+        ts_options o;
+        ts_options_init(&o);
+        o.form = forms[k];
+        ts_spline *s = NULL;
+        ts_error e;
+        CHECKF(ts_spline_new(x, f, NP, &o, &s, &e) == TS_OK, "order: form %d not built", k);
+        if (!s)
+            continue;
+        /* what the kernels rely on: the stored width is the knots' difference */
+        long wbad = 0;
+        for (size_t i = 0; i + 1 < NP; i++) {
+            double w = s->x[i + 1] - s->x[i];
+            wbad += memcmp(&w, &s->h[i], sizeof w) != 0;
+        }
+        CHECKF(wbad == 0, "order: form %d: %ld stored widths are not x[i+1] - x[i]", k, wbad);
+        for (int isa = 0; isa <= 2; isa++) {
+            if (!have_kernel(isa))
+                continue;
+            for (int deriv = 0; deriv <= 2; deriv++) {
+                size_t dn = 0, dr = 0;
+                CHECK(ts__fast_batch_isa(s, deriv, qs, M, ys, NULL, isa, &dn) == 1 && dn == M);
+                CHECK(ts__fast_batch_isa(s, deriv, q, M, y, NULL, isa, &dr) == 1 && dr == M);
+                long bad = 0;
+                for (size_t j = 0; j < M; j++)
+                    bad += memcmp(&y[j], &ys[perm[j]], sizeof y[j]) != 0;
+                CHECKF(bad == 0, "order: form %d, kernel %d, deriv %d: %ld shuffled queries differ from sorted",
+                       k, isa, deriv, bad);
+            }
+        }
+        ts_spline_free(s);
+    }
+}
+
 
 int main(void)
 {
@@ -797,5 +872,7 @@ int main(void)
     geometric();
     TH_CASE("flat");
     flat();
+    TH_CASE("order");
+    order();
     return th_report("test_fast");
 }
