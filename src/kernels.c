@@ -159,11 +159,13 @@ typedef struct geo_iv {
     double x0, x1, h, kappa, f0, f1, d0, d1;
 } geo_iv;
 
+/* h_i from the knots as fast_interval. */
 TS_ALWAYS_INLINE geo_iv geo_interval(const ts_spline *sp, size_t i)
 {
     double a = sp->alpha[i] + sp->beta[i]; /* κ as geometric.c computes it */
-    geo_iv g = {sp->x[i],  sp->x[i + 1], sp->h[i], 2.0 / (3.0 * TS_PI * a),
-                sp->f[i],  sp->f[i + 1], sp->d[i], sp->d[i + 1]};
+    double x0 = sp->x[i], x1 = sp->x[i + 1];
+    geo_iv g = {x0,       x1,           x1 - x0,  2.0 / (3.0 * TS_PI * a),
+                sp->f[i], sp->f[i + 1], sp->d[i], sp->d[i + 1]};
     return g;
 }
 
@@ -249,7 +251,6 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
         i = idx[j];
         if (gs) {
             geo_iv g = geo_interval(sp, i);
-            g.h = g.x1 - g.x0; /* bitwise sp->h[i], whose load this drops: as fast_interval */
             geo_stage_one(gs, j, q[j], &g);
         } else {
             fast_iv v = fast_interval(sp, i);
