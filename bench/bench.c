@@ -1185,6 +1185,7 @@ static timing lib_run(const ts_spline *s, const double *q, size_t m, double *y, 
  * the other processes used meanwhile (/proc/stat less this process's CPU).
  * The probes' 1-thread time is about the library's, at most 0.25 s. */
 #define MT_PROBE_MAX 0.25
+#define MT_BEST 3
 
 static int child_mt(int random_q, int rounds, double *out_v)
 {
@@ -1228,10 +1229,15 @@ static int child_mt(int random_q, int rounds, double *out_v)
             timing T[6];
             for (int k = 0; k < nt; k++) {
                 int t = last ? round_order(r, k, 6) : (k + r) % 2; /* library 1, 2; compute 1, 2; memory 1, 2 */
-                T[t] = t < 2 ? lib_run(s, q, m, D.y, t + 1, reps)
-                             : probe_run(t >= 4, t % 2 + 1, q, D.y, m, passes, iters);
-                if (T[t].wall < 0)
-                    return -1;
+                /* the best of MT_BEST timings: a single 1e7-query call (30 ms)
+                 * took 1× to 4× its median when the host interfered */
+                for (int b = 0; b < MT_BEST; b++) {
+                    timing u = t < 2 ? lib_run(s, q, m, D.y, t + 1, reps)
+                                     : probe_run(t >= 4, t % 2 + 1, q, D.y, m, passes, iters);
+                    if (u.wall < 0)
+                        return -1;
+                    T[t] = b == 0 || u.wall < T[t].wall ? u : T[t];
+                }
             }
             for (int t = 0; t < 2; t++)
                 out_v[(MT_NS + qi * 2 + t) * MAXR + r] = T[t].wall * 1e9 / (double)(reps * m);
@@ -1557,8 +1563,9 @@ int main(int argc, char **argv)
         out("### ts_eval_batch_mt (2 threads) against ts_eval_batch, 1e6 knots, paper form: wall ns/point\n\n");
         out("Median of %d interleaved rounds (both warmed up; which runs first alternates); speed-up: the median "
             "of the rounds' own ratios (min–max). A timing repeats the call up to 1e6 points below 1e6 queries, "
-            "1e7 from there.\n\n",
-            rounds);
+            "1e7 from there, and is the best of %d such timings (a single 1e7-query call took 1× to 4× its "
+            "median when the host interfered).\n\n",
+            rounds, MT_BEST);
         out("| queries | order | ts_eval_batch | ts_eval_batch_mt, 2 threads | speed-up: median (min–max) |\n"
             "|---:|---|---:|---:|---:|\n");
         static child C[2];
@@ -1584,13 +1591,14 @@ int main(int argc, char **argv)
             "2 threads and two probes on 1 and 2 threads, run as ts_eval_batch_mt runs (the caller's thread does "
             "one half, a thread created for the call the other; wall time): *compute*, 16 independent "
             "multiply-add chains per thread, no memory; *memory*, y[i] = 0.5 q[i] + 1 over the same query and "
-            "output arrays (read + write). A probe's 1-thread time is about the library's (at most %.2f s). "
+            "output arrays (read + write); each the best of %d timings, as the library's. A probe's 1-thread time "
+            "is about the library's (at most %.2f s). "
             "Speed-ups: median of the rounds' ratios (min–max). CPU/wall: process CPU time over wall time, "
             "median (2.00: both threads ran throughout; less: a thread was descheduled or waited for the other; "
             "the involuntary context switches, median, tell which). "
             "Other processes: busy CPU of the whole machine (/proc/stat) less this process's, over the wall time "
             "of these timings, in cores of %ld; steal: the share of vCPU time the host kept.\n\n",
-            MT_PROBE_MAX, sysconf(_SC_NPROCESSORS_ONLN));
+            MT_BEST, MT_PROBE_MAX, sysconf(_SC_NPROCESSORS_ONLN));
         static const char *row[] = {
             "ts_eval_batch_mt speed-up over ts_eval_batch",
             "compute probe speed-up",
