@@ -212,7 +212,8 @@ def test_bad_series_status_and_errors_raise():
     assert np.isnan(r.values[1]).all()
     with pytest.raises(ValueError, match=r"series \(1,\).*point 2"):
         interp(x, f, [0.5], shape="positive", errors="raise")
-    r2 = interp(x, f[:1], [0.5], lower=(0.0, 1.0), shape="above", full=True)
+    # point 0 (f = 1) below y = 1.5 (on y = 1 it may touch: docs/method.md §5.8)
+    r2 = interp(x, f[:1], [0.5], lower=(0.0, 1.5), shape="above", full=True)
     assert r2.status[0] == TS_ERR_SIDE and r2.index[0] == 0
 
 

@@ -178,7 +178,8 @@ test('every status the library can return reaches JavaScript as a TrigSplineErro
   t(() => ts.spline(x, f, { ...P, form: 9 }), 'TS_ERR_OPTION');
   t(() => ts.spline(x, f, { ...P, slopes: 'periodic' }), 'TS_ERR_PERIODIC', 3, 'point');
   t(() => ts.spline(x, [1, -2, 1, 1], { ...P, shape: 'positive' }), 'TS_ERR_NEGATIVE', 1, 'point');
-  t(() => ts.spline(x, f, { ...P, shape: 'above', lower: { m: 0, c: 1 } }), 'TS_ERR_SIDE', 0, 'point');
+  // f[0] = 1 may touch y = 1 (docs/method.md §5.8); f[2] = 0.5 lies below it
+  t(() => ts.spline(x, f, { ...P, shape: 'above', lower: { m: 0, c: 1 } }), 'TS_ERR_SIDE', 2, 'point');
   t(() => ts.spline(x, [0.5, 1.5, 2.2, 3], { ...P, shape: 'between', lower: { m: 1, c: 0 }, upper: { m: 0, c: 2.5 } }), 'TS_ERR_LINES', 3, 'point');
   t(() => ts.spline(x, f, { ...P, shape: 'monotone' }), 'TS_ERR_NONMONOTONE', 2, 'point');
   t(() => ts.spline(x, [1, 10.3, 21, 31], { ...P, shape: 'above', lower: { m: 10, c: 0 }, alpha: 10 }), 'TS_ERR_INFEASIBLE', 0, 'interval');
