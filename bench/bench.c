@@ -56,18 +56,22 @@
 
 static int quick, skip_eval, skip_build, skip_small, skip_decisions;
 
-static double cpu_now(void)
+/* Seconds on clock id (thread CPU, process CPU, wall). */
+static double clock_s(clockid_t id)
 {
     struct timespec t;
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+    clock_gettime(id, &t);
     return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+}
+
+static double cpu_now(void)
+{
+    return clock_s(CLOCK_THREAD_CPUTIME_ID);
 }
 
 static double wall_now(void)
 {
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+    return clock_s(CLOCK_MONOTONIC);
 }
 
 /* The 1-minute load average (NaN if unknown). */
@@ -1067,9 +1071,7 @@ typedef struct timing {
 
 static double proc_cpu_now(void)
 {
-    struct timespec t;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
+    return clock_s(CLOCK_PROCESS_CPUTIME_ID);
 }
 
 static double preempted_now(void)
