@@ -316,11 +316,13 @@ TS_INLINE double ts__geo_y(int deriv, double F0, double F1, double D0, double D1
 TS_INLINE void ts__seg_scm(const double B[4], double s, double c, double ms, double mc, int want, double out[3])
 {
     double A[4];
-    A[0] = ms * ms * ms; /* ts__basis */
-    A[1] = s * ms * (3.0 - s);
+    A[1] = s * ms * (3.0 - s); /* ts__basis */
     A[2] = c * mc * (3.0 - c);
     A[3] = mc * mc * mc;
-    out[0] = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
+    /* Σ A_l B_l as B0 + Σ_{l>0} A_l (B_l − B0) (Σ A_l = 1, docs/method.md §2):
+     * no ulp of B0 from Σ A_l ≠ 1 in rounding, so a rise of a few ulps
+     * after a flat interval is not sampled below it (monotone data) */
+    out[0] = B[0] + (A[1] * (B[1] - B[0]) + A[2] * (B[2] - B[0]) + A[3] * (B[3] - B[0]));
     if (want > 0) {
         /* docs/method.md (2.1) */
         out[1] = 3.0 * ms * ms * c * (B[1] - B[0]) + 2.0 * s * c * (B[2] - B[1]) +

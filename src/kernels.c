@@ -282,9 +282,9 @@ TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, dou
     if (deriv == 0) {
         for (size_t j = 0; j < nb; j++) {
             TS_FAST_NEAR(st, j);
-            /* docs/method.md §2, the expressions of basis.c */
-            y[j] = (ms * ms * ms) * B0 + (s * ms * (3.0 - s)) * B1 + (c * mc * (3.0 - c)) * B2 +
-                   (mc * mc * mc) * B3;
+            /* docs/method.md §2, the expressions of ts__seg_scm (B0 + Σ A_l (B_l − B0)) */
+            y[j] = B0 + ((s * ms * (3.0 - s)) * (B1 - B0) + (c * mc * (3.0 - c)) * (B2 - B0) +
+                         (mc * mc * mc) * (B3 - B0));
         }
     } else if (deriv == 1) {
         for (size_t j = 0; j < nb; j++) {

@@ -1095,6 +1095,69 @@ static void test_touch_constant(void)
     CHECK(st == TS_ERR_SIDE && e.index == 1 && s == NULL);
 }
 
+
+/* Monotone samples where data rise by a few ulps after a flat interval
+ * (found by fuzz_spline: paper form, x = −20.545, 71.455, 163.455, f = −1.6882786079646144e260
+ * twice, then 9e-15 higher: ts_eval_batch at x = 79.12 gave one ulp below f_1).
+ * Expected, from the monotone promise (docs/method.md §5.5; S non-decreasing
+ * for increasing data) applied to the computed samples, as fuzz_spline does:
+ * every sample of ts_eval_batch and of ts_eval, in increasing x, is >= the
+ * one before, on every form; the data's magnitudes 1 to 1e300 and rises of
+ * 1 to 64 ulps. */
+static void test_monotone_ulps(void)
+{
+    const double xr[3] = {-20.545000000000002, 71.454999999999998, 163.45499999999998};
+    const double fr[3] = {-1.6882786079646144e+260, -1.6882786079646144e+260,
+                          -1.6882786079645996e+260};
+    static const double mags[5] = {1.0, -3.5e7, 1e150, -1.6882786079646144e+260, 1e300};
+    double xq[2001], yb[2001];
+    int bad = 0, cases = 0;
+    for (int form = 0; form < 3; form++)
+        for (int sl = 0; sl < TS_SLOPES_COUNT_; sl++)
+            for (int v = 0; v < 1 + 5 * 4; v++) {
+                if (sl == TS_SLOPES_USER || sl == TS_SLOPES_PERIODIC)
+                    continue;
+                double f[3];
+                if (v == 0) {
+                    memcpy(f, fr, sizeof f);
+                } else {
+                    double F = mags[(v - 1) % 5];
+                    int ulps = 1 << (2 * ((v - 1) / 5)); /* 1, 4, 16, 64 */
+                    f[0] = f[1] = F;
+                    f[2] = F;
+                    for (int k = 0; k < ulps; k++)
+                        f[2] = nextafter(f[2], INFINITY);
+                }
+                ts_options o;
+                ts_options_init(&o);
+                o.form = (ts_form)form;
+                o.shape = TS_SHAPE_MONOTONE;
+                o.slopes = (ts_slopes)sl;
+                o.alpha = v % 3 == 0 ? 3.06e-176 : v % 3 == 1 ? 0.5 : 40;
+                ts_spline *s = NULL;
+                if (ts_spline_new(xr, f, 3, &o, &s, NULL) != TS_OK)
+                    continue;
+                cases++;
+                for (int j = 0; j <= 2000; j++)
+                    xq[j] = j == 2000 ? xr[2] : xr[0] + (xr[2] - xr[0]) * j / 2000.0;
+                CHECK(ts_eval_batch(s, 0, xq, 2001, yb, NULL, NULL) == TS_OK);
+                double prev = -INFINITY, prevs = -INFINITY;
+                for (int j = 0; j <= 2000; j++) {
+                    double y;
+                    ts_eval(s, xq[j], NULL, &y);
+                    int ok = yb[j] >= prev && y >= prevs;
+                    if (!ok && bad++ < 5)
+                        CHECKF(ok, "form %d slopes %d case %d: at x = %.17g batch %.17g after %.17g, "
+                                   "ts_eval %.17g after %.17g", form, sl, v, xq[j], yb[j], prev, y, prevs);
+                    prev = yb[j];
+                    prevs = y;
+                }
+                ts_spline_free(s);
+            }
+    CHECKF(bad == 0, "%d samples below the one before (%d splines)", bad, cases);
+    CHECK(cases > 200);
+}
+
 int main(void)
 {
     TH_CASE("tables");
@@ -1119,5 +1182,7 @@ int main(void)
     test_horizontal();
     TH_CASE("touch_constant");
     test_touch_constant();
+    TH_CASE("monotone_ulps");
+    test_monotone_ulps();
     return th_report("test_shape");
 }
