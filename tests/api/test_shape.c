@@ -1126,7 +1126,7 @@ static void test_monotone_ulps(void)
                     f[0] = f[1] = F;
                     f[2] = F;
                     for (int k = 0; k < ulps; k++)
-                        f[2] = nextafter(f[2], INFINITY);
+                        f[2] = nextafter(f[2], HUGE_VAL);
                 }
                 ts_options o;
                 ts_options_init(&o);
@@ -1141,7 +1141,7 @@ static void test_monotone_ulps(void)
                 for (int j = 0; j <= 2000; j++)
                     xq[j] = j == 2000 ? xr[2] : xr[0] + (xr[2] - xr[0]) * j / 2000.0;
                 CHECK(ts_eval_batch(s, 0, xq, 2001, yb, NULL, NULL) == TS_OK);
-                double prev = -INFINITY, prevs = -INFINITY;
+                double prev = -HUGE_VAL, prevs = -HUGE_VAL;
                 for (int j = 0; j <= 2000; j++) {
                     double y;
                     ts_eval(s, xq[j], NULL, &y);
