@@ -483,10 +483,16 @@ TS_INLINE void ts__trig_eval_in(const ts_spline *sp, size_t i, double x, int wan
     double w = TS_HALF_PI / sp->h[i]; /* dθ/dx */
     double u = x - sp->x[i], v = sp->x[i + 1] - x;
     ts__sincos_q(u <= v ? u * w : v * w, &s, &c, &ms, &mc);
-    if (u <= v)
+    if (u <= v) {
         ts__seg_scm(B, s, c, ms, mc, want, o);
-    else
-        ts__seg_scm(B, c, s, mc, ms, want, o);
+    } else {
+        /* from the right end as the kernels: ϑ = π/2 − θ, the control
+         * values reversed (docs/method.md §2), dϑ/dθ = −1 */
+        double R[4] = {B[3], B[2], B[1], B[0]};
+        ts__seg_scm(R, s, c, ms, mc, want, o);
+        if (want > 0)
+            o[1] = -o[1];
+    }
     if (want > 0)
         o[1] *= w;
     if (want > 1)
