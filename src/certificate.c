@@ -35,15 +35,6 @@ TS_INLINE int monotone_proof(double B0, double B1, double B2, double B3)
 /* Interval gaps                                                        */
 /* ------------------------------------------------------------------ */
 
-/* |x1 − x0 − h| for h = fl(x1 − x0): the TwoSum error, exact (0 where the
- * knots are within a factor 2 of each other).  Evaluation measures x from
- * the nearer knot, so the curve of width h sits up to this much aside. */
-TS_INLINE double width_error(double x0, double x1, double h)
-{
-    double z = h - x1;
-    return fabs((x1 - (h - z)) + (-x0 - z));
-}
-
 /* The guard of docs/method.md §5.6 (paper and C¹ forms) beyond the
  * trigonometric minimum's eb: the rounding of L_i = fma(m, x_i, c), of
  * C_l = ±(B_l − L_i) and of κ, and where evaluation places x, all in
@@ -100,7 +91,7 @@ static void geo_local_gaps(const ts_spline *sp, size_t i, const double B[4], con
     /* h = fl(x_{i+1} − x_i) may differ from the true width (rarely: the
      * difference is exact when the knots are within a factor 2): measured
      * from the right end the curve sits that much aside */
-    double eh = width_error(sp->x[i], sp->x[i + 1], h);
+    double eh = ts__width_error(sp->x[i], sp->x[i + 1], h);
     for (int l = 0; l < 4; l++)
         G[l] -= fabs(m) * eh * (1.0 + 2.0 * TM_EPS);
     G[1] -= 12.0 * TM_EPS * fabs(mh);
@@ -125,28 +116,38 @@ TS_INLINE int line_bound(double B0, double B1, double B2, double B3, double xi, 
     double bmax = a0 > a1 ? a0 : a1, bmax2 = a2 > a3 ? a2 : a3;
     bmax = bmax > bmax2 ? bmax : bmax2;
     double guard = 16.0 * TM_EPS * (bmax + fabs(Li) + fabs(mh)) +
-                   fabs(m) * width_error(xi, xi1, h) * (1.0 + 2.0 * TM_EPS) + 4.0 * DBL_TRUE_MIN;
+                   fabs(m) * ts__width_error(xi, xi1, h) * (1.0 + 2.0 * TM_EPS) + 4.0 * DBL_TRUE_MIN;
     int finite = (a0 <= TS_VALUE_MAX) & (a1 <= TS_VALUE_MAX) & (a2 <= TS_VALUE_MAX) &
                  (a3 <= TS_VALUE_MAX); /* NaN too: min and max above skip it */
     return finite & (lo - lmax > guard);
 }
 
+/* docs/method.md §5.6, §5.8: the control gaps C_l = ±(B_l − c) to a
+ * constant line (signs exact: fl(B − c) has the sign of B − c), S − c =
+ * Σ A_l C_l: all > 0 prove S > c; none < 0 with an end on the line (touched,
+ * §5.8) prove S >= c.  Branch-free. */
+TS_INLINE int const_line_proof(const double C[4])
+{
+    int pos = (C[0] > 0.0) & (C[1] > 0.0) & (C[2] > 0.0) & (C[3] > 0.0);
+    int nonneg = (C[0] >= 0.0) & (C[1] >= 0.0) & (C[2] >= 0.0) & (C[3] >= 0.0);
+    return pos | (nonneg & ((C[0] == 0.0) | (C[3] == 0.0)));
+}
+
 int ts__hull_inside(const ts_spline *sp, size_t i, const double B[4], const double *X,
                     const ts_line *ln, int sign)
 {
-    /* a constant line that an end touches (docs/method.md §5.8): S − c =
-     * Σ A_l (B_l − c) with every B_l − c >= 0 (its sign exact) proves S >= c */
-    int touch = ln->m == 0.0 && (B[0] == ln->c || B[3] == ln->c);
     if (!X) {
-        /* paper and C¹ forms, docs/method.md §5.6: a constant line, S − c =
-         * Σ A_l (B_l − c), the comparisons exact; or any line by the bound */
-        int ok = ln->m == 0.0;
+        /* paper and C¹ forms: a constant line by its control gaps, or any
+         * line by the bound */
+        double C[4];
         for (int l = 0; l < 4; l++)
-            ok = ok && (sign > 0 ? B[l] > ln->c || (touch && B[l] == ln->c)
-                                 : B[l] < ln->c || (touch && B[l] == ln->c));
-        return ok | line_bound(B[0], B[1], B[2], B[3], sp->x[i], sp->x[i + 1], sp->h[i], ln->m,
-                               ln->c, sign > 0 ? 1.0 : -1.0);
+            C[l] = sign > 0 ? B[l] - ln->c : ln->c - B[l];
+        return ((ln->m == 0.0) & const_line_proof(C)) |
+               line_bound(B[0], B[1], B[2], B[3], sp->x[i], sp->x[i + 1], sp->h[i], ln->m, ln->c,
+                          sign > 0 ? 1.0 : -1.0);
     }
+    /* a constant line that an end touches (docs/method.md §5.8) */
+    int touch = ln->m == 0.0 && (B[0] == ln->c || B[3] == ln->c);
     double G[4], err[4];
     geo_local_gaps(sp, i, B, X, ln, sign, G, err);
     int ok = 1;
@@ -165,12 +166,8 @@ double ts__gap_segment(const double B[4], double xi, double h, const ts_line *ln
      * S − L = Σ A_l (B_l − L_i) − (2mh/π) θ since Σ A_l = 1, with
      * L_i = m x_i + c rounded once (m = 0: L_i = c exactly, κ = 0) */
     double Li = fma(m, xi, ln->c);
-    int pos = 1, nonneg = 1;
-    for (int l = 0; l < 4; l++) {
+    for (int l = 0; l < 4; l++)
         C[l] = sg * (B[l] - Li);
-        pos = pos && C[l] > 0.0; /* m = 0: the sign of a rounded difference is exact */
-        nonneg = nonneg && C[l] >= 0.0;
-    }
     double kappa = m != 0.0 ? sg * m * (2.0 * h / TS_PI) : 0.0;
     double g = ts__trig_min_core(C[0], C[1], C[2], C[3], kappa, &th, &t, &eb);
     *theta = th;
@@ -178,10 +175,9 @@ double ts__gap_segment(const double B[4], double xi, double h, const ts_line *ln
         *tpar = t;
     if (guard)
         *guard = local_guard(eb, bmax, Li, fabs(m), h);
-    /* a constant line (κ = 0) below every control value: S − L = Σ A_l C_l > 0;
-     * or touched at an end, none beyond it: >= 0 (docs/method.md §5.8) */
+    /* a constant line (κ = 0, L_i = c exactly): the control gaps' proof */
     if (proven)
-        *proven = (pos | (nonneg & ((C[0] == 0.0) | (C[3] == 0.0)))) & (m == 0.0);
+        *proven = (m == 0.0) & const_line_proof(C);
     return g;
 }
 
@@ -196,7 +192,7 @@ double ts__gap_ctl(const ts_spline *sp, size_t i, const double B[4], const doubl
         double theta, t;
         double g = ts__gap_segment(B, xi, h, ln, sign, &theta, &t, guard, NULL);
         if (guard) /* the curve of width h measured from x_{i+1} (docs/method.md §5.6) */
-            *guard += fabs(ln->m) * width_error(xi, sp->x[i + 1], h) * (1.0 + 2.0 * TM_EPS);
+            *guard += fabs(ln->m) * ts__width_error(xi, sp->x[i + 1], h) * (1.0 + 2.0 * TM_EPS);
         if (at)
             *at = isnan(g) ? (double)NAN : t >= 1.0 ? sp->x[i + 1] : xi + h * (theta / TS_HALF_PI);
         return g;
@@ -507,7 +503,7 @@ TS_VECTOR_LOOP static void mono_certify(const double *restrict f, const double *
         good &= ts__trig_min_ends(c0, c1, c2, c3, ks, b, &best, &at1, &babs);
         double gd = ts__trig_min_guard(0, babs, Ms, fabs(ks));
         double g = best * q, guard = local_guard(gd * q, bmax, L0, am, hi);
-        guard += am * width_error(xi, x[i + 1], hi) * (1.0 + 2.0 * TM_EPS); /* as gap_ctl */
+        guard += am * ts__width_error(xi, x[i + 1], hi) * (1.0 + 2.0 * TM_EPS); /* as gap_ctl */
         int pass = g > guard;
         /* positive: the control-value proof, or (both ends > 0) the gap */
         int ends_pos = (B0 > 0.0) & (B3 > 0.0);

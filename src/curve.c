@@ -183,7 +183,7 @@ static void touch_slopes(ts_curve *c)
                 double up = side == 0 ? 1.0 : -1.0; /* into the box */
                 if (!has || v != (side == 0 ? c->box.lo[k] : c->box.hi[k]))
                     continue;
-                if (inner || (i == 0 ? up * *d < 0.0 : up * *d > 0.0))
+                if (ts__touch_leaves(*d, inner, i == 0, up))
                     *d = 0.0;
             }
         }

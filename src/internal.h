@@ -126,6 +126,23 @@ void *ts__malloc(size_t bytes);
 void *ts__calloc(size_t count, size_t size);
 /* A large block (the spline's arrays); freed with free(). */
 void *ts__alloc_block(size_t bytes);
+/* |x1 − x0 − h| for h = fl(x1 − x0): the TwoSum error, exact (0 where the
+ * knots are within a factor 2 of each other).  Evaluation measures x from
+ * the nearer knot, so the curve of width h sits up to this much aside: the
+ * certificates' guards (certificate.c, surface_net.c). */
+TS_INLINE double ts__width_error(double x0, double x1, double h)
+{
+    double z = h - x1;
+    return fabs((x1 - (h - z)) + (-x0 - z));
+}
+/* docs/method.md §5.1, §5.8: does slope d at a knot where the data touch a
+ * constant bound leave the region?  up = +1 for a lower bound, −1 for an
+ * upper; an inner knot needs d = 0, the first up·d >= 0, the last
+ * up·d <= 0 (splines, shape.c; curves per coordinate, curve.c). */
+TS_INLINE int ts__touch_leaves(double d, int inner, int first, double up)
+{
+    return inner ? d != 0.0 : (first ? up * d < 0.0 : up * d > 0.0);
+}
 
 /* ---- basis.c (docs/method.md §2) ----------------------------------------------- */
 /* Basis A0..A3 at (s, c) = (sin θ, cos θ). */
@@ -523,6 +540,18 @@ ts_status ts__shape_range(ts_spline *sp, const ts_options *opt, int dir, size_t 
  * checks' side of a line or plane (docs/method.md §5.8, §11.3). */
 #define TS_EXACT_TERMS 12
 int ts__exact_sign(const double *v, int n);
+/* sg times the two terms of a x = P + e (exact by fma) into v[0..2), for
+ * ts__exact_sign: returns 2, or 0 where P is beyond its range or so small
+ * (nonzero factors, |P| < 2^-960) that e is not exact. */
+TS_INLINE int ts__exact_product(double a, double x, double sg, double v[2])
+{
+    double P = a * x;
+    if (!(fabs(P) <= 0x1p1020) || (fabs(P) < 0x1p-960 && a != 0.0 && x != 0.0))
+        return 0;
+    v[0] = sg * P;
+    v[1] = sg * fma(a, x, -P);
+    return 2;
+}
 
 /* ---- certificate.c (docs/method.md §4, §5) -------------------------------------- */
 /* The exact gaps of one interval (NaN where absent or not computed). */

@@ -359,15 +359,20 @@ TS_ALWAYS_INLINE void geo_solve_block(geo_stage *st, size_t nb, int p0)
 /* docs/method.md §4 at the solved φ from the nearer end: the value, or its
  * first or second derivative in x (ts__geo_y, as single evaluation);
  * deriv a constant at each call. */
+TS_ALWAYS_INLINE double geo_value(int deriv, const geo_stage *st, size_t j, double s, double c,
+                                   double ms, double mc)
+{
+    int right = st->dr[j] < st->dl[j];
+    double F0 = right ? st->f1[j] : st->f0[j], F1 = right ? st->f0[j] : st->f1[j];
+    double D0 = right ? -st->d1[j] : st->d0[j], D1 = right ? -st->d0[j] : st->d1[j];
+    return ts__geo_y(deriv, F0, F1, D0, D1, st->h[j], st->kappa[j], right, s, c, ms, mc);
+}
+
+/* geo_value of every query at its stored (s, c, ms, mc). */
 TS_ALWAYS_INLINE void geo_values(int deriv, const geo_stage *st, size_t nb, double *y)
 {
-    for (size_t j = 0; j < nb; j++) {
-        int right = st->dr[j] < st->dl[j];
-        double F0 = right ? st->f1[j] : st->f0[j], F1 = right ? st->f0[j] : st->f1[j];
-        double D0 = right ? -st->d1[j] : st->d0[j], D1 = right ? -st->d0[j] : st->d1[j];
-        y[j] = ts__geo_y(deriv, F0, F1, D0, D1, st->h[j], st->kappa[j], right, st->s[j], st->c[j],
-                         st->ms[j], st->mc[j]);
-    }
+    for (size_t j = 0; j < nb; j++)
+        y[j] = geo_value(deriv, st, j, st->s[j], st->c[j], st->ms[j], st->mc[j]);
 }
 
 /* What nearly every query needs, with the fewest arrays between loops
@@ -399,10 +404,7 @@ TS_ALWAYS_INLINE void geo_fused(int deriv, geo_stage *st, size_t nb, double *y)
         double more = fabs(phi2 - phi1) <= 0x1p-20 * phi2 ? 0.0 : 1.0; /* NaN: 1 */
         open = more > 0.0 ? more : open;
         st->phi[j] = more > 0.0 ? phi2 : phi1;
-        int right = st->dr[j] < st->dl[j];
-        double F0 = right ? st->f1[j] : st->f0[j], F1 = right ? st->f0[j] : st->f1[j];
-        double D0 = right ? -st->d1[j] : st->d0[j], D1 = right ? -st->d0[j] : st->d1[j];
-        y[j] = ts__geo_y(deriv, F0, F1, D0, D1, st->h[j], k, right, s, c, ms, mc);
+        y[j] = geo_value(deriv, st, j, s, c, ms, mc);
     }
     if (open == 0.0)
         return;
@@ -489,8 +491,8 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
 typedef size_t (*pipeline_fn)(const ts_spline *, int, const double *, size_t, double *, size_t *);
 
 /* Per ISA, the geometric form's pipeline and the others' in functions of
- * their own (one's loops do not change the other's register allocation),
- * chosen by the spline's form. */
+ * their own (one's loops do not change the other's register allocation);
+ * pick chooses by ISA and form. */
 #define TS_PIPELINE_ARGS const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur
 static TS_NOINLINE size_t pipeline_geo_portable(TS_PIPELINE_ARGS)
 {
@@ -500,12 +502,6 @@ static TS_NOINLINE size_t pipeline_geo_portable(TS_PIPELINE_ARGS)
 static TS_NOINLINE size_t pipeline_trig_portable(TS_PIPELINE_ARGS)
 {
     return pipeline(sp, deriv, xq, m, yq, cur, 0);
-}
-
-static size_t pipeline_portable(TS_PIPELINE_ARGS)
-{
-    return (sp->form == TS_FORM_GEOMETRIC ? pipeline_geo_portable : pipeline_trig_portable)(sp, deriv, xq, m,
-                                                                                           yq, cur);
 }
 
 #if TS_FAST_X86
@@ -519,11 +515,6 @@ __attribute__((target("avx2,fma"))) static TS_NOINLINE size_t pipeline_trig_avx2
     return pipeline(sp, deriv, xq, m, yq, cur, 0);
 }
 
-static size_t pipeline_avx2(TS_PIPELINE_ARGS)
-{
-    return (sp->form == TS_FORM_GEOMETRIC ? pipeline_geo_avx2 : pipeline_trig_avx2)(sp, deriv, xq, m, yq, cur);
-}
-
 __attribute__((target(TS_TARGET_512))) static TS_NOINLINE size_t pipeline_geo_avx512(TS_PIPELINE_ARGS)
 {
     return pipeline(sp, deriv, xq, m, yq, cur, 1);
@@ -532,12 +523,6 @@ __attribute__((target(TS_TARGET_512))) static TS_NOINLINE size_t pipeline_geo_av
 __attribute__((target(TS_TARGET_512))) static TS_NOINLINE size_t pipeline_trig_avx512(TS_PIPELINE_ARGS)
 {
     return pipeline(sp, deriv, xq, m, yq, cur, 0);
-}
-
-static size_t pipeline_avx512(TS_PIPELINE_ARGS)
-{
-    return (sp->form == TS_FORM_GEOMETRIC ? pipeline_geo_avx512 : pipeline_trig_avx512)(sp, deriv, xq, m, yq,
-                                                                                       cur);
 }
 #endif
 
@@ -553,21 +538,24 @@ TS_NOINLINE int ts__fast_pick(int isa, int has2, int has512)
     return isa <= 0 ? 0 : -1;
 }
 
-/* The kernel ts__fast_pick chooses on this CPU; NULL if none. */
-static TS_NOINLINE pipeline_fn pick(int isa)
+/* The kernel ts__fast_pick chooses on this CPU for the form (geo: the
+ * geometric form); NULL if none. */
+static TS_NOINLINE pipeline_fn pick(int isa, int geo)
 {
 #if TS_FAST_X86
-    static const pipeline_fn fn[3] = {pipeline_portable, pipeline_avx2, pipeline_avx512};
+    static const pipeline_fn fn[3][2] = {{pipeline_trig_portable, pipeline_geo_portable},
+                                         {pipeline_trig_avx2, pipeline_geo_avx2},
+                                         {pipeline_trig_avx512, pipeline_geo_avx512}};
     __builtin_cpu_init();
     /* & rather than &&: no branch on a CPU feature, so every path runs on any CPU */
     int has2 = (__builtin_cpu_supports("avx2") != 0) & (__builtin_cpu_supports("fma") != 0);
     int has512 = has2 & (__builtin_cpu_supports("avx512f") != 0);
 #else
-    static const pipeline_fn fn[3] = {pipeline_portable, NULL, NULL};
+    static const pipeline_fn fn[3][2] = {{pipeline_trig_portable, pipeline_geo_portable}, {NULL, NULL}, {NULL, NULL}};
     int has2 = 0, has512 = 0;
 #endif
     int k = ts__fast_pick(isa, has2, has512);
-    return k < 0 ? NULL : fn[k];
+    return k < 0 ? NULL : fn[k][geo != 0];
 }
 
 static size_t batch(const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq,
@@ -583,13 +571,13 @@ static size_t batch(const ts_spline *sp, int deriv, const double *xq, size_t m, 
 size_t ts__fast_batch(const ts_spline *sp, int deriv, const double *xq, size_t m,
                       double *yq, ts_cursor *cur)
 {
-    return batch(sp, deriv, xq, m, yq, cur, pick(-1));
+    return batch(sp, deriv, xq, m, yq, cur, pick(-1, sp->form == TS_FORM_GEOMETRIC));
 }
 
 int ts__fast_batch_isa(const ts_spline *sp, int deriv, const double *xq, size_t m,
                        double *yq, ts_cursor *cur, int isa, size_t *done)
 {
-    pipeline_fn fn = pick(isa);
+    pipeline_fn fn = pick(isa, sp->form == TS_FORM_GEOMETRIC);
     if (!fn)
         return 0;
     size_t k = batch(sp, deriv, xq, m, yq, cur, fn);

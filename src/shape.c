@@ -62,12 +62,8 @@ int ts__exact_sign(const double *v, int n)
  * (undecided: taken as on the line). */
 static int rounding_terms(const ts_line *l, double x, double Lh, double sg, double *v)
 {
-    double p = l->m * x;
-    if (!(fabs(p) <= 0x1p1020 && fabs(l->c) <= 0x1p1020 && fabs(Lh) <= 0x1p1020) ||
-        (fabs(p) < 0x1p-960 && l->m != 0.0 && x != 0.0))
+    if (!ts__exact_product(l->m, x, sg, v) || !(fabs(l->c) <= 0x1p1020 && fabs(Lh) <= 0x1p1020))
         return 0;
-    v[0] = sg * p;
-    v[1] = sg * fma(l->m, x, -p);
     v[2] = sg * l->c;
     v[3] = -sg * Lh;
     return 4;
@@ -175,9 +171,7 @@ static ts_status touch_slopes(ts_spline *sp, const ts_options *opt, size_t p0, s
     for (size_t i = p0; i < p1; i++) {
         if (sp->f[i] != v)
             continue;
-        int inner = (i > 0 && i < n) || periodic;
-        int bad = inner ? d[i] != 0.0 : (i == 0 ? up * d[i] < 0.0 : up * d[i] > 0.0);
-        if (!bad)
+        if (!ts__touch_leaves(d[i], (i > 0 && i < n) || periodic, i == 0, up))
             continue;
         if (user)
             return fail(err, TS_ERR_ZERO_SLOPE, i, TS_WHERE_POINT);

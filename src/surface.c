@@ -36,15 +36,9 @@ static double plane_at(const ts_plane *pl, double x, double y)
  * or a product is so small that its fma error is not exact (undecided). */
 static int plane_terms(const ts_plane *pl, double x, double y, double sg, double *v)
 {
-    double P = pl->p * x, Q = pl->q * y;
-    if (!(fabs(P) <= 0x1p1020 && fabs(Q) <= 0x1p1020 && fabs(pl->c) <= 0x1p1020) ||
-        (fabs(P) < 0x1p-960 && pl->p != 0.0 && x != 0.0) ||
-        (fabs(Q) < 0x1p-960 && pl->q != 0.0 && y != 0.0))
+    if (!ts__exact_product(pl->p, x, sg, v) || !ts__exact_product(pl->q, y, sg, v + 2) ||
+        !(fabs(pl->c) <= 0x1p1020))
         return 0;
-    v[0] = sg * P;
-    v[1] = sg * fma(pl->p, x, -P);
-    v[2] = sg * Q;
-    v[3] = sg * fma(pl->q, y, -Q);
     v[4] = sg * pl->c;
     return 5;
 }

@@ -168,13 +168,6 @@ double ts__surf_plane_at(const ts_plane *pl, double x, double y, double *err)
     return v;
 }
 
-/* |x1 − x0 − h| for h = fl(x1 − x0): the TwoSum error, exact */
-static double width_err(double x0, double x1, double h)
-{
-    double z = h - x1;
-    return fabs((x1 - (h - z)) + (-x0 - z));
-}
-
 void ts__surf_gaps(const ts_surface *s, size_t i, size_t j, const ts_plane *pl, int sign,
                    double G[16], double *guard)
 {
@@ -203,8 +196,8 @@ void ts__surf_gaps(const ts_surface *s, size_t i, size_t j, const ts_plane *pl, 
         *guard = 0.0;
     else
         *guard = eL + 16.0 * DBL_EPSILON * (bmax + fabs(L0) + fabs(ph) + fabs(qh)) +
-                 (fabs(pl->p) * width_err(s->x[i], s->x[i + 1], hx) +
-                  fabs(pl->q) * width_err(s->y[j], s->y[j + 1], hy)) *
+                 (fabs(pl->p) * ts__width_error(s->x[i], s->x[i + 1], hx) +
+                  fabs(pl->q) * ts__width_error(s->y[j], s->y[j + 1], hy)) *
                      (1.0 + 2.0 * DBL_EPSILON) +
                  4.0 * DBL_TRUE_MIN;
 }
