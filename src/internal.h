@@ -89,8 +89,8 @@ struct ts_spline {
     double *h;           /* n: x[i+1] - x[i] */
     double *alpha, *beta;/* n */
     double *b1, *b2;     /* n: control values B1, B2 (B0 = f[i], B3 = f[i+1]) */
-    double *xc1, *xc2;   /* n: geometric form abscissae X1, X2 (docs/method.md §4); NULL in the
-                          * other forms (X1 = x_i + K_i, X2 = x_{i+1} - K_i there) */
+    double *kappa;       /* n: geometric form only (NULL otherwise), κ_i = 2/(3π(α_i + β_i))
+                          * (docs/method.md §4), the one expression every user of κ reads */
     unsigned char *term; /* n: ts_term */
     double *cum;         /* n+1: cum[i] = ∫_{x0}^{x_i} S dx (set last by spline.c) */
 };
@@ -440,7 +440,7 @@ void ts__slopes_range(ts_slopes method, const double *x, const double *f, size_t
                       size_t p0, size_t p1);
 
 /* ---- controls.c (docs/method.md §3, §4) ---------------------------------------- */
-/* Recompute b1, b2 (and xc1, xc2 in the geometric form) of intervals
+/* Recompute b1, b2 (and κ in the geometric form) of intervals
  * i0..i1-1 (i0 < i1 <= n) from x, f, d, alpha, beta, per the form.  For the
  * C¹ form the knots' d̂ depend on both neighbours, so callers pass the
  * widened range. */
@@ -472,8 +472,7 @@ double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k);
  * ts__geo_root, then ts__geo_y.  Inline: ts_eval's path. */
 TS_INLINE void ts__geo_in(const ts_spline *sp, size_t i, double x, int want, double o[3])
 {
-    double h = sp->h[i], a = sp->alpha[i] + sp->beta[i];
-    double kappa = 2.0 / (3.0 * TS_PI * a), dl = x - sp->x[i], dr = sp->x[i + 1] - x, sc[4];
+    double h = sp->h[i], kappa = sp->kappa[i], dl = x - sp->x[i], dr = sp->x[i + 1] - x, sc[4];
     int right = dr < dl;
     (void)ts__geo_root((right ? dr : dl) / h, kappa, sc);
     size_t i0 = right ? i + 1 : i, i1 = right ? i : i + 1;
