@@ -252,8 +252,8 @@ void ts__controls_of(const ts_spline *sp, size_t i, double B[4], double X[4], in
 {
     ts__B(sp, i, B);
     *geo = sp->form == TS_FORM_GEOMETRIC;
-    /* the local abscissae X̂_l of geometric.c: κ = 2/(3π a_i) as it computes it */
-    double kappa = *geo ? 2.0 / (3.0 * TS_PI * (sp->alpha[i] + sp->beta[i])) : (double)NAN;
+    /* the local abscissae X̂_l of geometric.c (docs/method.md §4) */
+    double kappa = *geo ? sp->kappa[i] : (double)NAN;
     X[0] = 0.0;
     X[1] = kappa;
     X[2] = 1.0 - kappa;

@@ -19,20 +19,19 @@ TS_VECTOR_LOOP static void controls_paper(const double *restrict f, const double
     }
 }
 
-TS_VECTOR_LOOP static void controls_geo(const double *restrict x, const double *restrict f,
+TS_VECTOR_LOOP static void controls_geo(const double *restrict f,
                                         const double *restrict d, const double *restrict h,
                                         const double *restrict al, const double *restrict be,
                                         double *restrict b1, double *restrict b2,
-                                        double *restrict xc1, double *restrict xc2, size_t i0,
-                                        size_t i1)
+                                        double *restrict kappa, size_t i0, size_t i1)
 {
     for (size_t i = i0; i < i1; i++) {
         double k = TS_K0 * h[i] / (al[i] + be[i]);
         b1[i] = f[i] + k * d[i];
         b2[i] = f[i + 1] - k * d[i + 1];
-        /* docs/method.md §4: X = [x_i, x_i + k, x_{i+1} - k, x_{i+1}] */
-        xc1[i] = x[i] + k;
-        xc2[i] = x[i + 1] - k;
+        /* docs/method.md §4 (X = [x_i, x_i + k, x_{i+1} - k, x_{i+1}] is
+         * ts_spline_control's, formed there) */
+        kappa[i] = 2.0 / (3.0 * TS_PI * (al[i] + be[i]));
     }
 }
 
@@ -84,8 +83,7 @@ void ts__controls(ts_spline *sp, size_t i0, size_t i1)
         if (i1 == n && n - 1 > 0)
             controls_c1_one(sp, n - 1);
     } else if (sp->form == TS_FORM_GEOMETRIC) {
-        controls_geo(sp->x, sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, sp->xc1,
-                     sp->xc2, i0, i1);
+        controls_geo(sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, sp->kappa, i0, i1);
     } else {
         controls_paper(sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, i0, i1);
     }

@@ -89,8 +89,8 @@ struct ts_spline {
     double *h;           /* n: x[i+1] - x[i] */
     double *alpha, *beta;/* n */
     double *b1, *b2;     /* n: control values B1, B2 (B0 = f[i], B3 = f[i+1]) */
-    double *xc1, *xc2;   /* n: geometric form abscissae X1, X2 (docs/method.md §4); NULL in the
-                          * other forms (X1 = x_i + K_i, X2 = x_{i+1} - K_i there) */
+    double *kappa;       /* n: geometric form only (NULL otherwise), κ_i = 2/(3π(α_i + β_i))
+                          * (docs/method.md §4), the one expression every user of κ reads */
     unsigned char *term; /* n: ts_term */
     double *cum;         /* n+1: cum[i] = ∫_{x0}^{x_i} S dx (set last by spline.c) */
 };
@@ -353,11 +353,11 @@ TS_INLINE void ts__seg_scm(const double B[4], double s, double c, double ms, dou
         A[3] = 6.0 * mc * s * s + 3.0 * mc * mc * c;
         out[2] = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
     }
-    /* a flat segment is constant (Σ A_l need not round to 1, Σ A_l'' to 0) */
-    if (B[0] == B[1] && B[1] == B[2] && B[2] == B[3]) {
-        out[0] = B[0];
-        if (want > 0)
-            out[1] = 0.0;
+    /* a flat segment's value is B0 already (every difference is 0; a −0 B0
+     * gives +0, as in the kernels); its derivatives are 0 (Σ A_l'' need not
+     * round to 0) */
+    if (want > 0 && B[0] == B[1] && B[1] == B[2] && B[2] == B[3]) {
+        out[1] = 0.0;
         if (want > 1)
             out[2] = 0.0;
     }
@@ -440,7 +440,7 @@ void ts__slopes_range(ts_slopes method, const double *x, const double *f, size_t
                       size_t p0, size_t p1);
 
 /* ---- controls.c (docs/method.md §3, §4) ---------------------------------------- */
-/* Recompute b1, b2 (and xc1, xc2 in the geometric form) of intervals
+/* Recompute b1, b2 (and κ in the geometric form) of intervals
  * i0..i1-1 (i0 < i1 <= n) from x, f, d, alpha, beta, per the form.  For the
  * C¹ form the knots' d̂ depend on both neighbours, so callers pass the
  * widened range. */
@@ -472,8 +472,7 @@ double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k);
  * ts__geo_root, then ts__geo_y.  Inline: ts_eval's path. */
 TS_INLINE void ts__geo_in(const ts_spline *sp, size_t i, double x, int want, double o[3])
 {
-    double h = sp->h[i], a = sp->alpha[i] + sp->beta[i];
-    double kappa = 2.0 / (3.0 * TS_PI * a), dl = x - sp->x[i], dr = sp->x[i + 1] - x, sc[4];
+    double h = sp->h[i], kappa = sp->kappa[i], dl = x - sp->x[i], dr = sp->x[i + 1] - x, sc[4];
     int right = dr < dl;
     (void)ts__geo_root((right ? dr : dl) / h, kappa, sc);
     size_t i0 = right ? i + 1 : i, i1 = right ? i : i + 1;
@@ -495,23 +494,19 @@ void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double
  * interpolated exactly).  Inline: ts_eval's path. */
 TS_INLINE void ts__trig_eval_in(const ts_spline *sp, size_t i, double x, int want, double o[3])
 {
-    double B[4], s, c, ms, mc;
-    ts__B(sp, i, B);
     double w = TS_HALF_PI / sp->h[i]; /* dθ/dx */
-    double u = x - sp->x[i], v = sp->x[i + 1] - x;
-    ts__sincos_q(u <= v ? u * w : v * w, &s, &c, &ms, &mc);
-    if (u <= v) {
-        ts__seg_scm(B, s, c, ms, mc, want, o);
-    } else {
-        /* from the right end as the kernels: ϑ = π/2 − θ, the control
-         * values reversed (docs/method.md §2), dϑ/dθ = −1 */
-        double R[4] = {B[3], B[2], B[1], B[0]};
-        ts__seg_scm(R, s, c, ms, mc, want, o);
-        if (want > 0)
-            o[1] = -o[1];
-    }
+    double tu = (x - sp->x[i]) * w, tv = (sp->x[i + 1] - x) * w;
+    /* from the right end as the kernels (the same test, on the products):
+     * ϑ = π/2 − θ, the control values reversed (docs/method.md §2),
+     * dϑ/dθ = −1; chosen by index and pointer, not by a branch, which
+     * sorted queries would mispredict at every interval's midpoint */
+    size_t r = tv < tu;
+    double B[4] = {sp->f[i + r], (r ? sp->b2 : sp->b1)[i], (r ? sp->b1 : sp->b2)[i], sp->f[i + 1 - r]};
+    double s, c, ms, mc;
+    ts__sincos_q(tv < tu ? tv : tu, &s, &c, &ms, &mc);
+    ts__seg_scm(B, s, c, ms, mc, want, o);
     if (want > 0)
-        o[1] *= w;
+        o[1] *= r ? -w : w;
     if (want > 1)
         o[2] *= w * w;
 }

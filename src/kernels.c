@@ -162,10 +162,8 @@ typedef struct geo_iv {
 /* h_i from the knots as fast_interval. */
 TS_ALWAYS_INLINE geo_iv geo_interval(const ts_spline *sp, size_t i)
 {
-    double a = sp->alpha[i] + sp->beta[i]; /* κ as geometric.c computes it */
     double x0 = sp->x[i], x1 = sp->x[i + 1];
-    geo_iv g = {x0,       x1,           x1 - x0,  2.0 / (3.0 * TS_PI * a),
-                sp->f[i], sp->f[i + 1], sp->d[i], sp->d[i + 1]};
+    geo_iv g = {x0, x1, x1 - x0, sp->kappa[i], sp->f[i], sp->f[i + 1], sp->d[i], sp->d[i + 1]};
     return g;
 }
 

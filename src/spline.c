@@ -314,10 +314,10 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
         return ts__fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
 
     /* layout: 4 arrays of n+1 (x, f, d, cum), 5 of n (h, alpha, beta, b1, b2),
-     * 2 of n for the geometric form's X (xc1, xc2), term bytes.  Only
-     * what is used: every byte per knot costs construction time. */
+     * 1 of n for the geometric form's κ, term bytes.  Only what is used:
+     * every byte per knot costs construction time. */
     int geo = opt->form == TS_FORM_GEOMETRIC;
-    size_t per_interval_arrays = 5 + (size_t)(2 * geo);
+    size_t per_interval_arrays = 5 + (size_t)geo;
     size_t n = n_points - 1, a, b, c, total, bytes;
     if (!mul_ok(n_points, 4, &a) || !mul_ok(n, per_interval_arrays, &b))
         return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
@@ -365,10 +365,8 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
     sp->beta = p, p += n;
     sp->b1 = p, p += n;
     sp->b2 = p, p += n;
-    if (geo) {
-        sp->xc1 = p, p += n;
-        sp->xc2 = p, p += n;
-    }
+    if (geo)
+        sp->kappa = p, p += n;
     sp->term = (unsigned char *)p;
     ts_status st = build(sp, opt, x, f, err);
     if (st != TS_OK) {
@@ -423,9 +421,10 @@ ts_status ts_spline_control(const ts_spline *s, size_t i, double B[4], double X[
     if (X) {
         X[0] = s->x[i];
         X[3] = s->x[i + 1];
-        if (s->form == TS_FORM_GEOMETRIC) {
-            X[1] = s->xc1[i];
-            X[2] = s->xc2[i];
+        if (s->form == TS_FORM_GEOMETRIC) { /* docs/method.md §4: k = (2/(3π)) h_i / a_i */
+            double k = 2.0 / (3.0 * TS_PI) * s->h[i] / (s->alpha[i] + s->beta[i]);
+            X[1] = s->x[i] + k;
+            X[2] = s->x[i + 1] - k;
         } else { /* docs/method.md §3: X = [x_i, x_i + K_i, x_{i+1} - K_i, x_{i+1}], as ts__controls had */
             double K = 2.0 / (3.0 * TS_PI) * s->h[i];
             X[1] = s->x[i] + K;

@@ -182,9 +182,10 @@ static int qset_fill(qset *Q)
             Q->unit[k][j] = EPS * M * (k == 0 ? 1.0 : k == 1 ? w : w * w);
         }
         if (j % NREF == 0) {
-            /* the double angle both paths use: from the nearer end (eval.c) */
-            double u = Q->q[j] - X[i], v = X[i + 1] - Q->q[j];
-            long double th = u <= v ? (long double)(u * w) : 1.57079632679489661923132169163975144L - (long double)(v * w);
+            /* the double angle both paths use: from the nearer end, decided
+             * on the products (internal.h's ts__trig_eval_in, the kernels) */
+            double tu = (Q->q[j] - X[i]) * w, tv = (X[i + 1] - Q->q[j]) * w;
+            long double th = tv < tu ? 1.57079632679489661923132169163975144L - (long double)tv : (long double)tu;
             for (int k = 0; k < 3; k++)
                 Q->lref[k][j / NREF] = ref_theta(B, th, k) * (k == 0 ? 1.0L : k == 1 ? (long double)w
                                                                                    : (long double)w * (long double)w);
@@ -361,6 +362,18 @@ static void flat(void)
                                level[c], form, isa, deriv, sorted ? "sorted" : "random", bad);
                     }
                 }
+                /* single evaluation: the value from its differences (all 0),
+                 * the derivatives by the flat test */
+                long bad = 0;
+                ts_cursor cur = TS_CURSOR_INIT;
+                for (size_t j = 0; j < M; j++) {
+                    double v0, v1, v2, v;
+                    bad += ts_eval(s, q[j], &cur, &v) != TS_OK || !(v == level[c]);
+                    bad += ts_eval_deriv(s, q[j], NULL, &v0, &v1, &v2) != TS_OK || !(v0 == level[c]) ||
+                           !(v1 == 0.0) || !(v2 == 0.0);
+                }
+                CHECKF(bad == 0, "flat %g, form %d, ts_eval/ts_eval_deriv, %s: %ld queries not exact", level[c],
+                       form, sorted ? "sorted" : "random", bad);
             }
             ts_spline_free(s);
         }
@@ -862,6 +875,69 @@ static void order(void)
 }
 
 
+/* ts_eval's value inside the data is the portable kernel's, bit for bit:
+ * the same products tu, tv and nearer-end test, the same polynomials and
+ * B0 + Σ A_l (B_l − B0) (internal.h's ts__trig_eval_in).  Only where neither
+ * is contracted into FMA: an x86-64 build without FMA (the default); the
+ * kernels' derivatives group their products differently (tolerances above). */
+static void scalar(void)
+{
+#if defined(__x86_64__) && !defined(__FMA__)
+    enum { M = 200000 };
+    double *q = malloc(M * sizeof *q), *y = malloc(M * sizeof *y);
+    if (!q || !y) {
+        CHECKF(0, "out of memory in the test");
+        free(q);
+        free(y);
+        return;
+    }
+    th_seed(0x452821E638D01377u);
+    for (int kind = 0; kind < 4; kind++) {
+        for (int form = 0; form < 2; form++) {
+            ts_spline *s = random_spline(2001, kind, form);
+            if (!s)
+                continue;
+            const double *X = ts_spline_x(s);
+            double x0 = X[0], xn = X[ts_spline_intervals(s)];
+            for (int sorted = 0; sorted <= 1; sorted++) {
+                /* knots, a few ulps around each midpoint (where u > v can
+                 * round to tu = tv: both must take the left end), the rest
+                 * uniform */
+                for (size_t j = 0; j < M; j++) {
+                    size_t i = (j / 8) % 2000;
+                    double mid = X[i] + 0.5 * (X[i + 1] - X[i]);
+                    for (size_t k = j % 8; k > 4; k--)
+                        mid = nextafter(mid, HUGE_VAL);
+                    for (size_t k = j % 8; k > 0 && k <= 4; k--)
+                        mid = nextafter(mid, -HUGE_VAL);
+                    q[j] = j % 97 == 0 ? X[(j / 97) % 2001] : j % 3 == 0 ? mid : x0 + (xn - x0) * th_unit();
+                }
+                if (sorted)
+                    qsort(q, M, sizeof *q, cmp_double);
+                ts_cursor cur = TS_CURSOR_INIT;
+                CHECK(ts__fast_batch_isa(s, 0, q, M, y, &cur, 0, NULL) == 1);
+                long bad = 0;
+                size_t first = 0;
+                ts_cursor c1 = TS_CURSOR_INIT;
+                for (size_t j = 0; j < M; j++) {
+                    double v;
+                    int off = ts_eval(s, q[j], &c1, &v) != TS_OK || memcmp(&v, &y[j], sizeof v) != 0;
+                    if (off && !bad++)
+                        first = j;
+                }
+                CHECKF(bad == 0, "kind %d form %d %s: ts_eval differs from the portable kernel at %ld queries, first x = %.17g",
+                       kind, form, sorted ? "sorted" : "random", bad, q[first]);
+            }
+            ts_spline_free(s);
+        }
+    }
+    free(q);
+    free(y);
+#else
+    printf("scalar: skipped (FMA contraction possible in this build)\n");
+#endif
+}
+
 int main(void)
 {
     TH_CASE("structure");
@@ -874,5 +950,7 @@ int main(void)
     flat();
     TH_CASE("order");
     order();
+    TH_CASE("scalar");
+    scalar();
     return th_report("test_fast");
 }
