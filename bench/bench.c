@@ -1282,13 +1282,13 @@ static int bd_rounds;
 
 /* Median over the rounds of on/off in the same round (a round's memory
  * placement and page faults weigh on both; the ratio of the medians mixes
- * rounds); NaN without rounds. */
-static double paired_ratio(int on, int off)
+ * rounds); without rounds, the ratio of the medians bd. */
+static double paired_ratio(const double *bd, int on, int off)
 {
     double r[MAXR];
     for (int k = 0; k < bd_rounds; k++)
         r[k] = bd_round[on][k] / bd_round[off][k];
-    return bd_rounds ? median(r, bd_rounds) : (double)NAN;
+    return bd_rounds ? median(r, bd_rounds) : bd[on] / bd[off];
 }
 
 static void issue_goals(const double *evS, const double *evR, const double *bd, const mt_info *mt)
@@ -1342,10 +1342,10 @@ static void issue_goals(const double *evS, const double *evR, const double *bd, 
      * idle run: 34.79 (18.71–64.66) against 16.83 ns/knot, 2.07) */
     add_goal("construction, geometric form, positive, certify = 1: / paper form <= 1.2 (median of the rounds' own "
              "ratios)",
-             bd_rounds ? paired_ratio(C_GEO_POS_CERT, C_TS_POS_CERT) : bd[C_GEO_POS_CERT] / bd[C_TS_POS_CERT], 1.2);
+             paired_ratio(bd, C_GEO_POS_CERT, C_TS_POS_CERT), 1.2);
     add_goal("construction, geometric form, positive, certify = 0: / paper form <= 1.2 (median of the rounds' own "
              "ratios)",
-             bd_rounds ? paired_ratio(C_GEO_POS, C_TS_POS) : bd[C_GEO_POS] / bd[C_TS_POS], 1.2);
+             paired_ratio(bd, C_GEO_POS, C_TS_POS), 1.2);
     if (!isnan(var_base[P_PAPER])) {
         add_goal("construction, geometric form, positive, certify = 1: / paper form <= 1.2, variant base "
                  "(baseline-ISA loops; construction variants table)",
@@ -1366,7 +1366,7 @@ static void issue_goals(const double *evS, const double *evR, const double *bd, 
     for (int k = 0; k < 6; k++) {
         snprintf(w, sizeof w, "certified construction, %s: / certify = 0 <= 1.2 (median of the rounds' own ratios)",
                  S[k].what);
-        add_goal(w, bd_rounds ? paired_ratio(S[k].on, S[k].off) : bd[S[k].on] / bd[S[k].off], 1.2);
+        add_goal(w, paired_ratio(bd, S[k].on, S[k].off), 1.2);
         snprintf(w, sizeof w, "certified construction, %s: / GSL steffen alloc+init <= 1.0", S[k].what);
         add_goal(w, bd[S[k].on] / bd[C_GSL_STEFFEN], 1.0);
     }
