@@ -121,7 +121,7 @@ ts_status ts_error_constants_get(ts_form form, double a, ts_error_constants *c)
         return TS_ERR_GEOMETRIC;
     grid_tab t;
     grid_fill(&t);
-    double kap = 2.0 / (3.0 * TS_PI * a);
+    double kap = ts__kappa(a);
     int geo = form == TS_FORM_GEOMETRIC;
     bound_fn f1 = {geo, 1, kap, kap, 1.0, 1.0, 1.0};
     bound_fn fl = {geo, 2, kap, kap, 1.0, 0.0, 0.0};

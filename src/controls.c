@@ -1,4 +1,4 @@
-/* Control values B1, B2 (and X1, X2 of the geometric form) of every form
+/* Control values B1, B2 (and κ of the geometric form) of every form
  * (docs/method.md §3, §4). */
 #include "internal.h"
 
@@ -26,12 +26,10 @@ TS_VECTOR_LOOP static void controls_geo(const double *restrict f,
                                         double *restrict kappa, size_t i0, size_t i1)
 {
     for (size_t i = i0; i < i1; i++) {
-        double k = TS_K0 * h[i] / (al[i] + be[i]);
+        double a = al[i] + be[i], k = ts__geo_k(h[i], a);
         b1[i] = f[i] + k * d[i];
         b2[i] = f[i + 1] - k * d[i + 1];
-        /* docs/method.md §4 (X = [x_i, x_i + k, x_{i+1} - k, x_{i+1}] is
-         * ts_spline_control's, formed there) */
-        kappa[i] = 2.0 / (3.0 * TS_PI * (al[i] + be[i]));
+        kappa[i] = ts__kappa(a);
     }
 }
 

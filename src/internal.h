@@ -445,6 +445,17 @@ void ts__slopes_range(ts_slopes method, const double *x, const double *f, size_t
  * C¹ form the knots' d̂ depend on both neighbours, so callers pass the
  * widened range. */
 void ts__controls(ts_spline *sp, size_t i0, size_t i1);
+/* docs/method.md §4: the geometric form's k_i = (2/(3π)) h_i / a_i
+ * (B1 = f_i + k_i d_i, X1 = x_i + k_i; controls.c and ts_spline_control),
+ * and κ = 2/(3π a) (the geometric form's stored κ_i; the error constants). */
+static inline double ts__geo_k(double h, double a)
+{
+    return 2.0 / (3.0 * TS_PI) * h / a;
+}
+static inline double ts__kappa(double a)
+{
+    return 2.0 / (3.0 * TS_PI * a);
+}
 /* The four control values of interval i. */
 static inline void ts__B(const ts_spline *sp, size_t i, double B[4])
 {

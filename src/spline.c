@@ -421,8 +421,8 @@ ts_status ts_spline_control(const ts_spline *s, size_t i, double B[4], double X[
     if (X) {
         X[0] = s->x[i];
         X[3] = s->x[i + 1];
-        if (s->form == TS_FORM_GEOMETRIC) { /* docs/method.md §4: k = (2/(3π)) h_i / a_i */
-            double k = 2.0 / (3.0 * TS_PI) * s->h[i] / (s->alpha[i] + s->beta[i]);
+        if (s->form == TS_FORM_GEOMETRIC) { /* docs/method.md §4: X = [x_i, x_i + k, x_{i+1} - k, x_{i+1}] */
+            double k = ts__geo_k(s->h[i], s->alpha[i] + s->beta[i]);
             X[1] = s->x[i] + k;
             X[2] = s->x[i + 1] - k;
         } else { /* docs/method.md §3: X = [x_i, x_i + K_i, x_{i+1} - K_i, x_{i+1}], as ts__controls had */
