@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The geometric form's start for X̂(φ) = u (src/internal.h, ts__geo_start):
 its accuracy, the Halley steps it leaves, and why no cheap start reaches one
-step (docs/design.md, "Third round").
+step (bench/HISTORY.md, "Third round").
 
 X̂(φ) = s² + κ(A1 − A2), s = sin φ, c = cos φ, A1 = s(1 − s)(3 − s),
 A2 = c(1 − c)(3 − c) (docs/method.md §4), solved for φ in [0, π/4],
