@@ -18,7 +18,7 @@
 # Each target installs the Debian packages it needs (apt-get) when missing.
 # The compiler of a build directory is fixed when it is first configured
 # (CC=gcc or CC=clang below); `make clean` starts over.
-.PHONY: all build build-asan build-clang test demo bench accuracy valgrind clean \
+.PHONY: all build configure-build demo-tools build-asan build-clang test demo bench accuracy valgrind clean \
   python-deps bench-python
 
 JOBS ?= 2
@@ -46,11 +46,19 @@ TEST_TOOLS := valgrind:valgrind pkg-config:pkg-config readelf:binutils
 # libc.a: the package test links a -static program
 STATIC_LIBC := /usr/lib/$(shell gcc -print-multiarch 2>/dev/null || echo x86_64-linux-gnu)/libc.a
 
-build:
+build: configure-build
+	$(CMAKE) --build build -j $(JOBS)
+
+# build/ configured once for both `build` and the demo's two programs.
+configure-build:
 	$(call need,$(BUILD_TOOLS))
 	CC=gcc $(CMAKE) -S . -B build -DCMAKE_BUILD_TYPE=RelWithDebInfo \
 	  -DTS_WERROR=ON >/dev/null
-	$(CMAKE) --build build -j $(JOBS)
+
+# What the demo pages run: the command and the GSL comparison program, not
+# the test programs.
+demo-tools: why-deps configure-build
+	$(CMAKE) --build build -j $(JOBS) --target trigspline_cli gsl_eval
 
 build-clang:
 	$(call need,$(BUILD_TOOLS) clang:clang)
@@ -101,7 +109,7 @@ accuracy: build
 	./build/accuracy --doc docs/accuracy.md --svg docs/accuracy.svg
 
 # The main job: reproduce the paper's numerical section (Figures 2-7) as one page.
-demo: build
+demo: demo-tools
 	python3 scripts/paper_demo.py build/trigspline data/paper out/paper
 	$(MAKE) --no-print-directory why-demo
 
@@ -150,9 +158,7 @@ why-deps:
 	if [ -n "$$missing" ]; then echo "installing:$$missing"; \
 	  apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y $$missing; fi
 
-why-demo: why-deps build
-	CC=gcc $(CMAKE) -S . -B build >/dev/null
-	$(CMAKE) --build build -j $(JOBS) --target gsl_eval
+why-demo: why-deps demo-tools
 	/usr/bin/python3 scripts/why_demo.py build data/examples out/why
 
 # Browser test of the why page: headless Chromium (Debian) driven by
