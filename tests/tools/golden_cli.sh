@@ -108,7 +108,7 @@ fit --extrapolate no
 fit --columns 1
 fit --columns 1,1
 fit --format gif --svg a.svg
-fit --format png --svg a.svg
+fit --format png --svg @PLOT@
 fit --svg a.txt
 fit --png a.svg
 fit --svg a.svg --pdf b.pdf
