@@ -20,6 +20,8 @@
  *   options.c      the one table of every command's options, their values
  *   help.c         --help texts, generated from the table
  *   args.c         argv -> cli_opts / cli_surface_opts
+ *   curve_json.c   the JSON report of a parametric curve
+ *   curve_plot.c   the SVG plot of a parametric curve
  *   fit.c, certify.c, curve.c   the commands
  *   surface.c      the surface command (gridded data)
  *   main.c         picks the command
@@ -509,6 +511,24 @@ int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o);
 void cli_opts_free(cli_opts *o);
 /* The same for surface (argv after "surface"); allocates nothing. */
 int cli_surface_parse(int argc, char **argv, cli_surface_opts *o);
+
+/* ---- curve_json.c, curve_plot.c -------------------------------------- */
+/* A built, sampled and (with a box) certified curve. */
+typedef struct cli_curve_run {
+    const ts_curve *c;
+    const ts_curve_options *co;
+    size_t dim, n, seg;                  /* dimension, points, segments */
+    size_t rows;                         /* samples: rows of t, x, y[, z] */
+    const double *smp;
+    const ts_interval_report *reps;      /* dim per segment; NULL: no box */
+    int certified;                       /* with a box: every segment inside */
+    double min_gap;                      /* with a box: the least gap */
+} cli_curve_run;
+/* The report of curve --json ("command": "curve"). */
+void cli_curve_json(cli_json *j, const cli_opts *o, const cli_curve_run *cr);
+/* The plot of curve --svg into svg.  CLI_OK or CLI_IO (message printed). */
+int cli_curve_plot(const cli_opts *o, const cli_data *d, const cli_curve_run *cr,
+                   tsu_plot_buf *svg);
 
 /* ---- fit.c, certify.c, curve.c, surface.c ---------------------------- */
 int cli_fit(cli_opts *o);
