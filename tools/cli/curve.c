@@ -199,7 +199,8 @@ int cli_curve(cli_opts *o)
     }
     if (o->svg && (rc = cli_curve_plot(o, &d, &cr, &svg)) != CLI_OK)
         goto done;
-    rc = cli_write_outputs(o->out, o->json ? &j.b : &text, NULL, NULL, o->svg, o->plot_format, &svg);
+    rc = cli_write_outputs(o->out, o->json ? &j.b : &text, NULL, NULL, o->svg, o->plot_format,
+                           &svg);
 done:
     tsu_plot_buf_free(&svg);
     tsu_plot_buf_free(&text);

@@ -7,8 +7,9 @@
 
 void cli_curve_json(cli_json *j, const cli_opts *o, const cli_curve_run *cr)
 {
-    double len = (double)NAN, mn[3] = {(double)INFINITY, (double)INFINITY, (double)INFINITY}, mx[3] = {-(double)INFINITY, -(double)INFINITY,
-                                                                        -(double)INFINITY};
+    double len = (double)NAN;
+    double mn[3] = {(double)INFINITY, (double)INFINITY, (double)INFINITY};
+    double mx[3] = {-(double)INFINITY, -(double)INFINITY, -(double)INFINITY};
     const char *axn[3] = {"x", "y", "z"};
     char key[16];
     (void)ts_curve_length(cr->c, 0.0, &len);

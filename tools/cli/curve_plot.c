@@ -60,11 +60,9 @@ int cli_curve_plot(const cli_opts *o, const cli_data *d, const cli_curve_run *cr
             bx.n = 0;
             box_line(&bx, xb, ylo - pad, xb, yhi + pad);
             sty.dash = 1;
+            const char *label = cr->co->has_lo[1] || cr->co->has_hi[1] || s2 ? NULL : "box";
             ps = bx.failed ? TSU_PLOT_ERR_NOMEM
-                           : tsu_plot_add_polyline(p, bx.x, bx.y, bx.n,
-                                                  cr->co->has_lo[1] || cr->co->has_hi[1] || s2 ? NULL
-                                                                                     : "box",
-                                                  &sty);
+                           : tsu_plot_add_polyline(p, bx.x, bx.y, bx.n, label, &sty);
         }
     }
     if (ps == TSU_PLOT_OK && !o->points_only) {

@@ -234,7 +234,8 @@ static int opt_line(const cli_optdef *d, cli_cmd cmd, const char *name, const ch
     size_t n = 0;
     char bad[64];
     if (!parse_list(s, 0, &a, &n, bad, sizeof bad))
-        return cli_usage(cmd, "%s expects M,C (slope and intercept of y = M*x + C), found %s in \"%s\"",
+        return cli_usage(cmd,
+                         "%s expects M,C (slope and intercept of y = M*x + C), found %s in \"%s\"",
                          name, bad, s);
     if (n != 2) {
         free(a);
@@ -599,8 +600,8 @@ static int opt_surface_pdf(const cli_optdef *d, cli_cmd cmd, const char *name, c
 #define ROW(n, sn, meta, cmds, kind, off, set) n, sn, meta, cmds, kind, off, set
 /* the rest: vocabulary, skip, range, defaults, reader, group, help */
 #define REST(voc, skip, lo, hi, def, tdef, fn, g, h) voc, skip, lo, hi, def, tdef, fn, g, h
-#define PLAIN(fn, g, h) REST(CLI_VOCAB_STATUS, 0, 0, 0, NAN, NULL, fn, g, h)
-#define ENUM(voc, skip, g, h) REST(voc, skip, 0, 0, NAN, NULL, NULL, g, h)
+#define PLAIN(fn, g, h) REST(CLI_VOCAB_STATUS, 0, 0, 0, (double)NAN, NULL, fn, g, h)
+#define ENUM(voc, skip, g, h) REST(voc, skip, 0, 0, (double)NAN, NULL, NULL, g, h)
 #define COUNT(lo, hi, def, g, h) REST(CLI_VOCAB_STATUS, 0, lo, hi, def, NULL, NULL, g, h)
 
 const cli_optdef cli_optdefs[] = {
@@ -609,7 +610,8 @@ const cli_optdef cli_optdefs[] = {
      ENUM(CLI_VOCAB_SHAPE, 0, CLI_G_SHAPE, "(default %D)")},
     {ROW("--shape", NULL, NULL, CLI_C, CLI_K_ENUM, OFF(shape), OFF(shape_set)),
      ENUM(CLI_VOCAB_SHAPE, 0, CLI_G_SHAPE,
-          "positive: the lower line y = 0; above / below with --line; between with --lower and --upper")},
+          "positive: the lower line y = 0; above / below with --line; between with --lower "
+          "and --upper")},
     {ROW("--line", NULL, "M,C", CLI_F | CLI_C, CLI_K_CUSTOM, OFF(line), OFF(has_line)),
      PLAIN(opt_line, CLI_G_SHAPE, "the line y = M*x + C for --shape above or below")},
     {ROW("--lower", NULL, "M,C", CLI_F | CLI_C, CLI_K_CUSTOM, OFF(lower), OFF(has_lower)),
@@ -651,7 +653,8 @@ const cli_optdef cli_optdefs[] = {
      PLAIN(NULL, CLI_G_PARAM, "the same as --form c1")},
     {ROW("--box", NULL, "XMIN,XMAX,YMIN,YMAX[,ZMIN,ZMAX]", CLI_V, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_box, CLI_G_PARAM,
-           "keep the curve inside the box (inf / -inf: no bound on that side); beta is raised where needed and the curve is certified")},
+           "keep the curve inside the box (inf / -inf: no bound on that side); beta is raised "
+           "where needed and the curve is certified")},
     {ROW("--margin", NULL, "T", CLI_V, CLI_K_POS, OFF(margin), OFF(margin_set)),
      PLAIN(NULL, CLI_G_PARAM, "margin for the box rule (default %D)")},
     /* output */
@@ -661,13 +664,14 @@ const cli_optdef cli_optdefs[] = {
      COUNT(2, 100000000, 50, CLI_G_OUTPUT,
            "points per interval for the plot and the JSON sample range (default %D)")},
     {ROW("--samples-total", NULL, "N", FCV, CLI_K_COUNT, OFF(samples_total), NOF),
-     COUNT(2, 100000000, NAN, CLI_G_OUTPUT, "N points evenly over the data range instead")},
+     COUNT(2, 100000000, (double)NAN, CLI_G_OUTPUT, "N points evenly over the data range instead")},
     {ROW("--grid", NULL, "A:B:N", CLI_F, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_grid, CLI_G_OUTPUT,
            "N points evenly over [A, B] instead of --samples (A, B numbers or dates)")},
     {ROW("--at", NULL, "FILE", CLI_F, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_at, CLI_G_OUTPUT,
-           "evaluate at the x values of FILE (first column) instead; --at X1,X2,...: at these x values (numbers or dates)")},
+           "evaluate at the x values of FILE (first column) instead; --at X1,X2,...: at these "
+           "x values (numbers or dates)")},
     {ROW("--derivative", NULL, "0|1|2", CLI_F, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_derivative, CLI_G_OUTPUT, "print S, S' or S'' (default 0)")},
     {ROW("--extrapolate", NULL, NULL, CLI_F, CLI_K_ENUM, OFF(extrap), OFF(extrap_set)),
@@ -676,7 +680,8 @@ const cli_optdef cli_optdefs[] = {
      PLAIN(NULL, CLI_G_OUTPUT, "write there instead of standard output")},
     {ROW("--json", NULL, NULL, CLI_F | CLI_C, CLI_K_FLAG, OFF(json), NOF),
      PLAIN(NULL, CLI_G_OUTPUT,
-           "a JSON report instead of CSV: knots, slopes, per interval alpha, beta, control values and certificate")},
+           "a JSON report instead of CSV: knots, slopes, per interval alpha, beta, control "
+           "values and certificate")},
     {ROW("--json", NULL, NULL, CLI_V, CLI_K_FLAG, OFF(json), NOF),
      PLAIN(NULL, CLI_G_OUTPUT, "a JSON report instead of CSV")},
     {ROW("--with-samples", NULL, NULL, CLI_F | CLI_C, CLI_K_FLAG, OFF(with_samples), NOF),
@@ -688,7 +693,8 @@ const cli_optdef cli_optdefs[] = {
      PLAIN(opt_svg, CLI_G_PLOT,
            "plot: data, curve, constraint lines with the forbidden region shaded, legend")},
     {ROW("--png", NULL, "FILE", FCV, CLI_K_CUSTOM, NOF, NOF),
-     PLAIN(opt_png, CLI_G_PLOT, "the plot as PNG, made from the SVG by rsvg-convert (librsvg2-bin)")},
+     PLAIN(opt_png, CLI_G_PLOT, "the plot as PNG, made from the SVG by rsvg-convert "
+                                "(librsvg2-bin)")},
     {ROW("--pdf", NULL, "FILE", FCV, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_pdf, CLI_G_PLOT, "the plot as PDF, made the same way")},
     {ROW("--format", NULL, "svg|png|pdf", FCV, CLI_K_CUSTOM, NOF, NOF),
@@ -712,7 +718,8 @@ const cli_optdef cli_optdefs[] = {
     /* reading DATA */
     {ROW("--columns", NULL, "X,Y", CLI_F | CLI_C, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_columns, CLI_G_INPUT,
-           "take x and f from these columns of a wider table: 1-based numbers or header names; the other columns are not read and may hold any text")},
+           "take x and f from these columns of a wider table: 1-based numbers or header "
+           "names; the other columns are not read and may hold any text")},
     {ROW("--x", NULL, "X", CLI_F | CLI_C, CLI_K_CUSTOM, OFF(xcol), NOF),
      PLAIN(opt_column, CLI_G_INPUT, "the x column alone (as in --columns)")},
     {ROW("--y", NULL, "Y", CLI_F | CLI_C, CLI_K_CUSTOM, OFF(ycol), NOF),
@@ -721,17 +728,21 @@ const cli_optdef cli_optdefs[] = {
      PLAIN(NULL, CLI_G_INPUT, "x must hold ISO 8601 dates (else they are detected)")},
     {ROW("--delimiter", NULL, ",|;|tab|space|auto", FCV, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_delimiter, CLI_G_INPUT,
-           "field separator (default auto: ';' if the first line has one, else ',', else tab, else white space)")},
+           "field separator (default auto: ';' if the first line has one, else ',', else tab, "
+           "else white space)")},
     {ROW("--decimal-comma", NULL, NULL, FCV, CLI_K_FLAG, OFF(decimal_comma), NOF),
      PLAIN(NULL, CLI_G_INPUT, "',' is the decimal mark (then '.' is refused)")},
     {ROW("--na", NULL, "WORDS", FCV, CLI_K_TEXT, OFF(na), NOF),
-     REST(CLI_VOCAB_STATUS, 0, 0, 0, NAN, "NA,NaN,null", NULL, CLI_G_INPUT,
-          "comma-separated words meaning \"missing\" (default %D; any case); an empty field is always missing")},
+     REST(CLI_VOCAB_STATUS, 0, 0, 0, (double)NAN, "NA,NaN,null", NULL, CLI_G_INPUT,
+          "comma-separated words meaning \"missing\" (default %D; any case); an empty field "
+          "is always missing")},
     {ROW("--missing", NULL, "error|skip", FCV, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_missing, CLI_G_INPUT,
-           "a row with a missing x or y: error naming the line (default) or left out (counted in --json, listed with -v)")},
+           "a row with a missing x or y: error naming the line (default) or left out (counted "
+           "in --json, listed with -v)")},
     {ROW("--skip", NULL, "N", FCV, CLI_K_CUSTOM, NOF, NOF),
-     PLAIN(opt_skip, CLI_G_INPUT, "skip N leading lines unread (metadata); '#' comments as always")},
+     PLAIN(opt_skip, CLI_G_INPUT, "skip N leading lines unread (metadata); '#' comments as "
+                                  "always")},
     {ROW("--verbose", "-v", NULL, FCV, CLI_K_FLAG, OFF(verbose), NOF),
      PLAIN(NULL, CLI_G_INPUT, "report skipped rows on standard error")},
 
