@@ -477,8 +477,8 @@ struct cli_optdef {
     cli_vocab vocab;   /* CLI_K_ENUM */
     unsigned skip;     /* CLI_K_ENUM: bit k = value k is not offered */
     double lo, hi;     /* CLI_K_COUNT: the range */
-    double def;        /* CLI_K_COUNT: a default of the command's own (not the
-                          library's: sample counts), NAN: none */
+    double def;        /* a default of the command's own for a size_t field (not
+                          the library's: sample counts), NAN: none */
     const char *tdef;  /* CLI_K_TEXT: the same, NULL: none */
     cli_opt_fn fn;     /* CLI_K_CUSTOM */
     cli_group group;
