@@ -16,10 +16,14 @@
  *   spline_json.c  the JSON report of a spline
  *   spline_plot.c  the SVG plot of a spline
  *   stream.c       fit in constant memory (CSV samples of long inputs)
+ *   overshoot.c    the curve's excursions beyond the data
+ *   options.c      the one table of every command's options, their values
+ *   help.c         --help texts, generated from the table
+ *   args.c         argv -> cli_opts / cli_surface_opts
+ *   curve_json.c   the JSON report of a parametric curve
+ *   curve_plot.c   the SVG plot of a parametric curve
  *   fit.c, certify.c, curve.c   the commands
- *   surface.c      the surface command (its own options; gridded data)
- *   help.c         --help texts
- *   args.c         argv -> cli_opts
+ *   surface.c      the surface command (gridded data)
  *   main.c         picks the command
  */
 #ifndef TS_CLI_H
@@ -44,7 +48,7 @@ enum {
     CLI_HELP = -1       /* --help was printed: exit 0 */
 };
 
-typedef enum cli_cmd { CLI_FIT = 0, CLI_CERTIFY = 1, CLI_CURVE = 2 } cli_cmd;
+typedef enum cli_cmd { CLI_FIT = 0, CLI_CERTIFY = 1, CLI_CURVE = 2, CLI_SURFACE = 3 } cli_cmd;
 
 typedef enum cli_plot_format { CLI_PLOT_SVG = 0, CLI_PLOT_PNG = 1, CLI_PLOT_PDF = 2 } cli_plot_format;
 
@@ -52,9 +56,6 @@ typedef enum cli_plot_format { CLI_PLOT_SVG = 0, CLI_PLOT_PNG = 1, CLI_PLOT_PDF 
  * CSV, --json --with-samples): beyond it --samples is refused (the streaming
  * CSV of fit has no limit). */
 #define CLI_MAX_HELD_SAMPLES 10000000u
-
-/* Samples per interval when --samples is absent. */
-#define CLI_DEFAULT_SAMPLES 50
 
 /* The parsed command line.  Values of options not given are the library's
  * defaults (ts_options_init / ts_curve_options_init); *_set says "given". */
@@ -127,17 +128,23 @@ typedef struct cli_opts {
 } cli_opts;
 
 /* ---- names.c --------------------------------------------------------- */
-/* A table of names, index = enum value. */
-typedef struct cli_names {
-    const char *const *name;
-    size_t n;
-} cli_names;
-extern const cli_names cli_shape_names, cli_slopes_names, cli_form_names, cli_param_names,
-    cli_extrap_names;
-/* Index of s in t, or -1. */
-int cli_name_index(const cli_names *t, const char *s);
+/* The library's vocabulary (ts_vocab, ts_vocab_name, ts_vocab_value,
+ * ts_vocab_count: one canonical name per enum value), through a local
+ * stand-in until the library has it: cli_vocab has the order of ts_vocab,
+ * and names.c's three functions become calls of the library's. */
+typedef enum cli_vocab {
+    CLI_VOCAB_STATUS, CLI_VOCAB_FORM, CLI_VOCAB_SLOPES, CLI_VOCAB_SHAPE, CLI_VOCAB_EXTRAP,
+    CLI_VOCAB_PARAM, CLI_VOCAB_SURFACE_SHAPE, CLI_VOCAB_TERM, CLI_VOCAB_WHERE, CLI_VOCAB_COUNT_
+} cli_vocab;
+/* The canonical name of value in kind, NULL when out of range. */
+const char *cli_vocab_name(cli_vocab kind, int value);
+/* The value of a canonical name: TS_OK, TS_ERR_NULL, TS_ERR_OPTION (unknown name). */
+ts_status cli_vocab_value(cli_vocab kind, const char *name, int *value);
+/* Number of values of kind. */
+int cli_vocab_count(cli_vocab kind);
+/* "fit", "certify", "curve", "surface". */
 const char *cli_cmd_name(cli_cmd c);
-/* Names of enum values as used on the command line and in JSON ("?" if unknown). */
+/* cli_vocab_name, "?" if unknown. */
 const char *cli_shape_name(ts_shape s);
 const char *cli_slopes_name(ts_slopes s);
 const char *cli_form_name(ts_form f);
@@ -384,25 +391,6 @@ int cli_can_stream(const cli_opts *o);
  * of chunk borders), TRIGSPLINE_DEBUG reports border rebuilds. */
 int cli_fit_stream(const cli_opts *o, const ts_options *opt);
 
-/* ---- fit.c, certify.c, curve.c --------------------------------------- */
-int cli_fit(cli_opts *o);
-int cli_certify(cli_opts *o);
-int cli_curve(cli_opts *o);
-/* surface.c: the whole `surface` command, its own options (argv after it). */
-int cli_surface(int argc, char **argv);
-/* The surface command's options (docs/cli.md). */
-typedef struct cli_surface_opts {
-    const char *data, *out, *svg; /* svg: the plot's file, in format fmt */
-    cli_plot_format fmt;
-    int matrix_in, matrix_out, json, zero_twist;
-    ts_surface_options so;
-    size_t samples, grid_x, grid_y; /* samples 1 to 1e7; grid: 0 (none) or 2 to 1e7 each */
-} cli_surface_opts;
-/* Parse argv (after "surface") into o: CLI_OK, CLI_USAGE (message printed on
- * cli_messages()) or CLI_HELP (--help given; not printed).  Allocates
- * nothing, reads no file (stat(2) only, as cli_parse). */
-int cli_surface_parse(int argc, char **argv, cli_surface_opts *o);
-
 /* ---- overshoot.c ----------------------------------------------------- */
 /* The curve's range and its largest excursions beyond the data of an
  * interval (the report's y_min ... excursion_below, docs/method.md §5.9),
@@ -428,7 +416,88 @@ void cli_overshoot_warn(const cli_overshoot *w, const cli_cols *c);
 /* The "overshoot" object of the JSON report. */
 void cli_overshoot_json(cli_json *j, const cli_overshoot *w);
 
+/* ---- options.c ------------------------------------------------------- */
+/* The surface command's options (docs/cli.md). */
+typedef struct cli_surface_opts {
+    const char *data, *out, *svg; /* svg: the plot's file, in format fmt */
+    cli_plot_format fmt;
+    int matrix_in, matrix_out, json;
+    ts_surface_options so;
+    size_t samples, grid_x, grid_y; /* samples 1 to 1e7; grid: 0 (none) or 2 to 1e7 each */
+} cli_surface_opts;
+
+/* Which commands take an option: bit 1 << cli_cmd. */
+enum {
+    CLI_F = 1u << CLI_FIT,
+    CLI_C = 1u << CLI_CERTIFY,
+    CLI_V = 1u << CLI_CURVE,
+    CLI_S = 1u << CLI_SURFACE
+};
+
+/* How an option's value is read into its field (the option's off, in
+ * cli_opts, or in cli_surface_opts for surface's own rows). */
+typedef enum cli_kind {
+    CLI_K_HELP,   /* --help: the parser returns CLI_HELP */
+    CLI_K_FLAG,   /* no value: int field = 1 */
+    CLI_K_TEXT,   /* const char * field = the value */
+    CLI_K_FILE,   /* the same, the value a non-empty file name */
+    CLI_K_POS,    /* double field: a finite number > 0 */
+    CLI_K_NONNEG, /* double field: a finite number >= 0 */
+    CLI_K_ENUM,   /* int-sized enum field: a name of vocab, not one in skip */
+    CLI_K_COUNT,  /* size_t field: an integer (digits) from lo to hi */
+    CLI_K_CUSTOM  /* fn */
+} cli_kind;
+
+/* Help sections (help.c lists an option under its group). */
+typedef enum cli_group {
+    CLI_G_NONE, /* not listed (--help) */
+    CLI_G_SHAPE, CLI_G_PARAM, CLI_G_OUTPUT, CLI_G_PLOT, CLI_G_INPUT
+} cli_group;
+
+typedef struct cli_optdef cli_optdef;
+/* Read value v of the option named name (as given) into the options o (a
+ * cli_opts or a cli_surface_opts).  CLI_OK or CLI_USAGE (message printed). */
+typedef int (*cli_opt_fn)(const cli_optdef *d, cli_cmd cmd, const char *name, const char *v,
+                          void *o);
+
+#define CLI_NO_FIELD ((size_t)-1)
+
+/* One option of one or more commands.  An option name may have several rows
+ * (other commands, another field or help text): a command takes the first
+ * row with its bit. */
+struct cli_optdef {
+    const char *name;  /* "--shape"; NULL: the short name only */
+    const char *sname; /* "-o", or NULL */
+    const char *meta;  /* the value's name in help ("M,C"), NULL: takes no value;
+                          CLI_K_ENUM: NULL (the names, from the vocabulary) */
+    unsigned cmds;     /* CLI_F | CLI_C | CLI_V | CLI_S */
+    cli_kind kind;
+    size_t off;        /* the field */
+    size_t set;        /* an int field set to 1 when given, or CLI_NO_FIELD */
+    cli_vocab vocab;   /* CLI_K_ENUM */
+    unsigned skip;     /* CLI_K_ENUM: bit k = value k is not offered */
+    double lo, hi;     /* CLI_K_COUNT: the range */
+    double def;        /* a default of the command's own for a size_t field (not
+                          the library's: sample counts), NAN: none */
+    const char *tdef;  /* CLI_K_TEXT: the same, NULL: none */
+    cli_opt_fn fn;     /* CLI_K_CUSTOM */
+    cli_group group;
+    const char *help;  /* "%D": the default; "\n": a new line of the text */
+};
+extern const cli_optdef cli_optdefs[];
+extern const size_t cli_n_optdefs;
+/* The options of cmd before argv: the library's defaults (ts_options_init,
+ * ts_curve_options_init, ts_surface_options_init) and the rows' def; o is a
+ * cli_opts, or a cli_surface_opts for CLI_SURFACE. */
+void cli_opts_defaults(cli_cmd cmd, void *o);
+/* The first row of one of cmds (CLI_F | ...) named s[0..len) (long or
+ * short name), or NULL; *nm: the name matched. */
+const cli_optdef *cli_optdef_find(unsigned cmds, const char *s, size_t len, const char **nm);
+/* Read value v (NULL for an option without one) as row d says. */
+int cli_optdef_apply(const cli_optdef *d, cli_cmd cmd, const char *name, const char *v, void *o);
+
 /* ---- help.c ---------------------------------------------------------- */
+/* --help of a command, generated from cli_optdefs (defaults: cli_opts_defaults). */
 void cli_print_help(cli_cmd cmd);
 void cli_print_main_help(void);
 
@@ -440,5 +509,32 @@ void cli_print_main_help(void);
  * cli_opts_free afterwards whatever it returned. */
 int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o);
 void cli_opts_free(cli_opts *o);
+/* The same for surface (argv after "surface"); allocates nothing. */
+int cli_surface_parse(int argc, char **argv, cli_surface_opts *o);
+
+/* ---- curve_json.c, curve_plot.c -------------------------------------- */
+/* A built, sampled and (with a box) certified curve. */
+typedef struct cli_curve_run {
+    const ts_curve *c;
+    const ts_curve_options *co;
+    size_t dim, n, seg;                  /* dimension, points, segments */
+    size_t rows;                         /* samples: rows of t, x, y[, z] */
+    const double *smp;
+    const ts_interval_report *reps;      /* dim per segment; NULL: no box */
+    int certified;                       /* with a box: every segment inside */
+    double min_gap;                      /* with a box: the least gap */
+} cli_curve_run;
+/* The report of curve --json ("command": "curve"). */
+void cli_curve_json(cli_json *j, const cli_opts *o, const cli_curve_run *cr);
+/* The plot of curve --svg into svg.  CLI_OK or CLI_IO (message printed). */
+int cli_curve_plot(const cli_opts *o, const cli_data *d, const cli_curve_run *cr,
+                   tsu_plot_buf *svg);
+
+/* ---- fit.c, certify.c, curve.c, surface.c ---------------------------- */
+int cli_fit(cli_opts *o);
+int cli_certify(cli_opts *o);
+int cli_curve(cli_opts *o);
+/* The whole surface command (argv after "surface"). */
+int cli_surface(int argc, char **argv);
 
 #endif

@@ -1,35 +1,10 @@
-/* The --help texts (defaults shown: the library's, from ts_options_init and
- * ts_curve_options_init). */
+/* The --help texts: every option's line generated from the option table
+ * (options.c) with the defaults the parser starts from (cli_opts_defaults:
+ * the library's, and the command's own sample counts). */
 #include "cli.h"
 
 #include <stdio.h>
-
-static const char input_text[] =
-    "Reading DATA (all commands):\n"
-    "  --delimiter ,|;|tab|space|auto   field separator (default auto: ';' if the first\n"
-    "                      line has one, else ',', else tab, else white space)\n"
-    "  --decimal-comma     ',' is the decimal mark (then '.' is refused)\n"
-    "  --na WORDS          comma-separated words meaning \"missing\" (default NA,NaN,null;\n"
-    "                      any case); an empty field is always missing\n"
-    "  --missing error|skip   a row with a missing x or y: error naming the line\n"
-    "                      (default) or left out (counted in --json, listed with -v)\n"
-    "  --skip N            skip N leading lines unread (metadata); '#' comments as always\n"
-    "  -v, --verbose       report skipped rows on standard error\n"
-    "Fields may be quoted (RFC 4180: \"1,5\", \"say \"\"hi\"\"\"); a quoted number is a\n"
-    "number.  A first line with a field that is text is the header; its names are kept\n"
-    "in the outputs.  ISO 8601 dates and date-times (YYYY-MM-DD[THH:MM[:SS[.f]]]\n"
-    "[Z|+HH:MM]) in the x column are read as seconds since 1970 (UTC, no leap seconds)\n"
-    "and written back in the same form.\n";
-
-static const char plot_text[] =
-    "Plots:\n"
-    "  --svg FILE | --png FILE | --pdf FILE   the plot; the format follows the file's\n"
-    "                      extension (--format svg|png|pdf for another name); PNG and\n"
-    "                      PDF are made from the SVG by rsvg-convert (librsvg2-bin)\n"
-    "  --xlabel TEXT, --ylabel TEXT   axis labels (default: the column names)\n"
-    "  --logy              logarithmic y axis (the data must be > 0)\n"
-    "  --size WxH          size in pixels (default 720x450)\n"
-    "  A plot holds at most 10000000 sample points (--samples times intervals).\n";
+#include <string.h>
 
 static const char exit_text[] =
     "Exit status:\n"
@@ -67,124 +42,234 @@ void cli_print_main_help(void)
            exit_text);
 }
 
+/* ---- generated option lists ------------------------------------------- */
+
+/* The value of d's field in the defaults o, as text. */
+static const char *default_text(const cli_optdef *d, const void *o, char *buf, size_t len)
+{
+    const char *p = (const char *)o + d->off;
+    if (d->off == CLI_NO_FIELD)
+        return "?";
+    switch (d->kind) {
+    case CLI_K_POS:
+    case CLI_K_NONNEG: {
+        double v;
+        memcpy(&v, p, sizeof v);
+        char b[TSU_FMT_SIZE];
+        snprintf(buf, len, "%s", cli_num(v, b));
+        return buf;
+    }
+    case CLI_K_ENUM: {
+        int k;
+        memcpy(&k, p, sizeof k);
+        const char *s = cli_vocab_name(d->vocab, k);
+        return s ? s : "?";
+    }
+    case CLI_K_TEXT: {
+        const char *s;
+        memcpy(&s, p, sizeof s);
+        return s ? s : "";
+    }
+    default: {
+        size_t n;
+        memcpy(&n, p, sizeof n);
+        snprintf(buf, len, "%zu", n);
+        return buf;
+    }
+    }
+}
+
+#define HELP_COL 22 /* where the texts start */
+#define HELP_WIDTH 80
+
+/* The length of the next line of s at most w wide (broken at a space;
+ * a longer word stands alone). */
+static size_t line_length(const char *s, size_t w)
+{
+    size_t len = strlen(s), k = w;
+    if (len <= w)
+        return len;
+    while (k > 0 && s[k] != ' ')
+        k--;
+    if (k == 0)
+        for (k = w; s[k] && s[k] != ' '; k++)
+            ;
+    return k;
+}
+
+/* "  -o, --output FILE   write there ..." with "%D" the default of o; the
+ * text wrapped into lines from HELP_COL to HELP_WIDTH. */
+static void print_option(const cli_optdef *d, const void *o)
+{
+    char syn[512], text[1024], b[64];
+    size_t n = 0;
+    if (d->sname)
+        n += (size_t)snprintf(syn + n, sizeof syn - n, "%s%s", d->sname, d->name ? ", " : "");
+    if (d->name)
+        n += (size_t)snprintf(syn + n, sizeof syn - n, "%s", d->name);
+    if (d->meta)
+        n += (size_t)snprintf(syn + n, sizeof syn - n, " %s", d->meta);
+    else if (d->kind == CLI_K_ENUM)
+        for (int k = 0, first = 1; k < cli_vocab_count(d->vocab) && n < sizeof syn; k++)
+            if (!((d->skip >> k) & 1u)) {
+                n += (size_t)snprintf(syn + n, sizeof syn - n, "%s%s", first ? " " : "|",
+                                      cli_vocab_name(d->vocab, k));
+                first = 0;
+            }
+    /* the text with %D replaced */
+    size_t m = 0;
+    for (const char *s = d->help; *s && m + 1 < sizeof text; s++) {
+        if (s[0] == '%' && s[1] == 'D') {
+            m += (size_t)snprintf(text + m, sizeof text - m, "%s", default_text(d, o, b, sizeof b));
+            s++;
+        } else {
+            text[m++] = *s;
+        }
+    }
+    text[m < sizeof text ? m : sizeof text - 1] = '\0';
+    /* the synopsis, then the text wrapped at HELP_WIDTH from HELP_COL on */
+    const char *s = text;
+    size_t w = HELP_WIDTH - HELP_COL, len = strlen(s);
+    if (2 + n + 2 <= HELP_COL)
+        printf("  %-*s", HELP_COL - 2, syn);
+    else if (2 + n + 3 + len <= HELP_WIDTH)
+        printf("  %s   ", syn), w = len;
+    else
+        printf("  %s\n%*s", syn, HELP_COL, "");
+    for (;;) {
+        size_t k = line_length(s, w);
+        printf("%.*s\n", (int)k, s);
+        s += k;
+        while (*s == ' ')
+            s++;
+        if (!*s)
+            break;
+        printf("%*s", HELP_COL, "");
+        w = HELP_WIDTH - HELP_COL;
+    }
+}
+
+/* The options of cmd in group g, in the table's order. */
+static void print_group(cli_cmd cmd, cli_group g, const void *o)
+{
+    for (size_t k = 0; k < cli_n_optdefs; k++) {
+        const cli_optdef *d = &cli_optdefs[k];
+        if ((d->cmds & (1u << cmd)) && d->group == g && d->help)
+            print_option(d, o);
+    }
+}
+
+/* ---- the pages -------------------------------------------------------- */
+
+typedef struct help_section {
+    cli_group group; /* CLI_G_NONE: the end */
+    const char *title, *tail;
+} help_section;
+
+typedef struct help_page {
+    const char *head;
+    help_section sec[6];
+    const char *tail;
+} help_page;
+
+static const char input_title[] = "\nReading DATA:\n";
+static const char input_tail[] =
+    "Fields may be quoted (RFC 4180: \"1,5\", \"say \"\"hi\"\"\"); a quoted number is a\n"
+    "number.  A first line with a field that is text is the header; its names are kept\n"
+    "in the outputs.  ISO 8601 dates and date-times (YYYY-MM-DD[THH:MM[:SS[.f]]]\n"
+    "[Z|+HH:MM]) in the x column are read as seconds since 1970 (UTC, no leap seconds)\n"
+    "and written back in the same form.\n";
+static const char plot_title[] =
+    "\nPlots (the format follows the file's extension, --format for another name):\n";
+static const char plot_tail[] =
+    "  A plot holds at most 10000000 sample points (--samples times intervals).\n";
+
+static const help_page pages[4] = {
+    [CLI_FIT] = {
+        "Usage: trigspline fit [DATA] [OPTIONS]\n"
+        "\n"
+        "Fit the spline through the points (x, f) of DATA (two numeric columns; \"-\" or\n"
+        "none: standard input) and write samples as CSV \"x,y\" (shortest round-trip\n"
+        "numbers), or a JSON report, and optionally an SVG plot.\n",
+        {{CLI_G_SHAPE, "\nShape (docs/method.md §5):\n", NULL},
+         {CLI_G_PARAM, "Parameters:\n", NULL},
+         {CLI_G_OUTPUT, "Output:\n",
+          "CSV output: header from DATA's names (x,y without a header); derivative columns\n"
+          "are named d_Y_dX and d2_Y_dX2; sample x values strictly increase.\n"},
+         {CLI_G_INPUT, input_title, input_tail},
+         {CLI_G_PLOT, plot_title, plot_tail}},
+        "\n"
+        "Long inputs are processed in constant memory when the output is CSV samples and\n"
+        "none of --json, a plot, --at, --grid, --samples-total, --alphas, --betas,\n"
+        "--slopes periodic is given:\n"
+        "the data are read and checked in chunks as they stream.  An error found after\n"
+        "output has started is reported with its line; what was already written to\n"
+        "standard output is then incomplete (with -o the file is not created).\n"},
+    [CLI_CERTIFY] = {
+        "Usage: trigspline certify [DATA] --alpha A --beta B BOUNDARY [OPTIONS]\n"
+        "\n"
+        "Build the spline with your own alpha and beta (no scheme) and certify it: the\n"
+        "exact minimum distance to each boundary on every interval.\n",
+        {{CLI_G_SHAPE, "\nBoundaries (at least one; --lower and --upper: between):\n", NULL},
+         {CLI_G_PARAM, "Parameters:\n", NULL},
+         {CLI_G_OUTPUT, "Output:\n",
+          "The report is CSV: interval, X_start, X_end, alpha, beta, gap_lower,\n"
+          "X_at_gap_lower, gap_upper, X_at_gap_upper, certified (true/false), X the name\n"
+          "of the x column; an absent boundary leaves its fields empty.  With --json it is\n"
+          "the same object as fit --json.\n"
+          "The violating intervals (index, x-range, minimum gap and where) are listed on\n"
+          "standard error and the exit status is 4; the report and plot are still\n"
+          "written (they are the result).\n"},
+         {CLI_G_INPUT, input_title, input_tail},
+         {CLI_G_PLOT, plot_title, plot_tail}},
+        ""},
+    [CLI_CURVE] = {
+        "Usage: trigspline curve [DATA] [OPTIONS]\n"
+        "\n"
+        "Parametric curve (docs/method.md §7) through the points of DATA (2 or 3 columns).\n"
+        "Writes samples as CSV \"t,x,y\" (or \"t,x,y,z\").\n",
+        {{CLI_G_PARAM, "\nCurve:\n", NULL},
+         {CLI_G_OUTPUT, "Output:\n", "  (curve holds at most 10000000 samples)\n"},
+         {CLI_G_INPUT, input_title, input_tail},
+         {CLI_G_PLOT, plot_title, plot_tail}},
+        ""},
+    [CLI_SURFACE] = {
+        "Usage: trigspline surface DATA [OPTIONS]\n"
+        "Certified surface through gridded data (docs/method.md section 11).\n\n"
+        "DATA: x,y,z rows of a full rectilinear grid in any order (long format), or\n"
+        "with --matrix a table whose first row holds the x values and first column\n"
+        "the y values (the first cell is ignored). '-' reads standard input.\n",
+        {{CLI_G_INPUT, "\n", NULL},
+         {CLI_G_SHAPE, "Shape:\n", NULL},
+         {CLI_G_PARAM, "Parameters:\n", NULL},
+         {CLI_G_OUTPUT, "Output:\n", NULL},
+         {CLI_G_PLOT, "Plots (PNG and PDF converted from the SVG, as for fit):\n", NULL}},
+        "\n"
+        "Exit status: 0 ok, 1 usage, 2 bad data (names the line and node),\n"
+        "3 infeasible patch, 5 input/output error.\n"},
+};
+
 void cli_print_help(cli_cmd cmd)
 {
-    /* the defaults shown are the library's own */
-    ts_options d;
-    ts_curve_options c;
-    char b[3][TSU_FMT_SIZE];
-    ts_options_init(&d);
-    ts_curve_options_init(&c);
-    if (cmd == CLI_FIT) {
-        printf(
-            "Usage: trigspline fit [DATA] [OPTIONS]\n"
-            "\n"
-            "Fit the spline through the points (x, f) of DATA (two numeric columns; \"-\" or\n"
-            "none: standard input) and write samples as CSV \"x,y\" (shortest round-trip\n"
-            "numbers), or a JSON report, and optionally an SVG plot.\n"
-            "\n"
-            "Shape (docs/method.md §5):\n"
-            "  --shape none|positive|above|below|between|monotone   (default %s)\n"
-            "  --line M,C          the line y = M*x + C for --shape above or below\n"
-            "  --lower M,C         lower line (alone: implies above)\n"
-            "  --upper M,C         upper line (alone: implies below; with --lower: between)\n"
-            "  --margin T          margin t added to beta (default %s; shape schemes only)\n"
-            "Parameters:\n"
-            "  --alpha A           alpha on every interval (default %s, > 0)\n"
-            "  --alphas A0,A1,...  alpha per interval (exactly one value per interval)\n"
-            "  --beta B            beta on every interval (default %s; only with --shape none)\n"
-            "  --betas B0,B1,...   beta per interval (only with --shape none)\n"
-            "  --slopes arithmetic|geometric|harmonic|fritsch-carlson|akima|makima|periodic\n"
-            "                      slope estimate at the knots (default %s)\n"
-            "  --form paper|c1|geometric   spline form (default %s); --c1 = --form c1\n"
-            "Output:\n"
-            "  --samples N         points per interval, knots included (default %d)\n"
-            "  --at FILE           evaluate at the x values of FILE (first column) instead\n"
-            "  --derivative 0|1|2  print S, S' or S'' (default 0)\n"
-            "  --extrapolate error|clamp|extend|linear   queries of --at outside the data\n"
-            "                      (default %s)\n"
-            "  -o, --output FILE   write there instead of standard output\n"
-            "  --json              a JSON report instead of CSV: knots, slopes, per interval\n"
-            "                      alpha, beta, control values and certificate\n"
-            "  --svg FILE          plot: data, curve, constraint lines with the forbidden\n"
-            "                      region shaded, legend\n"
-            "  --title TEXT        plot title\n"
-            "  --show-control      also plot the control polygon\n"
-            "  --points-only       plot only the data (and the constraint lines)\n"
-            "  --columns X,Y       take x and f from these columns of a wider table: 1-based\n"
-            "                      numbers or header names (also --x X, --y Y); the other\n"
-            "                      columns are not read and may hold any text\n"
-            "  --x-time            x must hold ISO 8601 dates (else they are detected)\n"
-            "  --grid A:B:N        N points evenly over [A, B] instead of --samples (A, B\n"
-            "                      numbers or dates)\n"
-            "  --samples-total N   N points evenly over the data range instead\n"
-            "  --at X1,X2,...      evaluate at these x values (numbers or dates; --at FILE:\n"
-            "                      the first column of FILE)\n"
-            "  --with-samples      with --json: also the samples (\"samples\": x, y)\n"
-            "  --no-stream         never stream (see below)\n"
-            "CSV output: header from DATA's names (x,y without a header); derivative columns\n"
-            "are named d_Y_dX and d2_Y_dX2; sample x values strictly increase.\n"
-            "\n%s\n%s\n"
-            "Long inputs are processed in constant memory when the output is CSV samples and\n"
-            "none of --json, a plot, --at, --grid, --samples-total, --alphas, --betas,\n"
-            "--slopes periodic is given:\n"
-            "the data are read and checked in chunks as they stream.  An error found after\n"
-            "output has started is reported with its line; what was already written to\n"
-            "standard output is then incomplete (with -o the file is not created).\n"
-            "\n%s",
-            cli_shape_name(d.shape), cli_num(d.margin, b[0]), cli_num(d.alpha, b[1]),
-            cli_num(d.beta, b[2]), cli_slopes_name(d.slopes), cli_form_name(d.form),
-            CLI_DEFAULT_SAMPLES, cli_extrap_name(d.extrapolate), input_text, plot_text,
-            exit_text);
-    } else if (cmd == CLI_CERTIFY) {
-        printf(
-            "Usage: trigspline certify [DATA] --alpha A --beta B BOUNDARY [OPTIONS]\n"
-            "\n"
-            "Build the spline with your own alpha and beta (no scheme) and certify it: the\n"
-            "exact minimum distance to each boundary on every interval.\n"
-            "\n"
-            "Boundaries (at least one):\n"
-            "  --shape positive    the lower line y = 0\n"
-            "  --shape above --line M,C    lower line y = M*x + C (same as --lower M,C)\n"
-            "  --shape below --line M,C    upper line (same as --upper M,C)\n"
-            "  --lower M,C / --upper M,C   either or both (both: --shape between)\n"
-            "Parameters:\n"
-            "  --alpha A | --alphas A0,A1,...   (required, > 0)\n"
-            "  --beta B | --betas B0,B1,...     (required, >= 0)\n"
-            "  --slopes METHOD, --form paper|c1|geometric, --c1   as for fit\n"
-            "Output:\n"
-            "  a per-interval table (or --json, the same object as fit --json) on standard\n"
-            "  output or -o FILE; --svg FILE, --title TEXT, --show-control, --points-only and\n"
-            "  --samples N (for the plot and the JSON sample range) as for fit;\n"
-            "  --columns X,Y, --x, --y, --x-time, --with-samples as for fit.\n"
-            "The report is CSV: interval, X_start, X_end, alpha, beta, gap_lower,\n"
-            "X_at_gap_lower, gap_upper, X_at_gap_upper, certified (true/false), X the name\n"
-            "of the x column; an absent boundary leaves its fields empty.\n"
-            "The violating intervals (index, x-range, minimum gap and where) are listed on\n"
-            "standard error and the exit status is 4; the report and plot are still\n"
-            "written (they are the result).\n"
-            "\n%s\n%s\n%s",
-            input_text, plot_text, exit_text);
+    /* the defaults shown are those the parser starts from */
+    cli_opts o;
+    cli_surface_opts so;
+    const void *def = &o;
+    if (cmd == CLI_SURFACE) {
+        cli_opts_defaults(cmd, &so);
+        def = &so;
     } else {
-        printf(
-            "Usage: trigspline curve [DATA] [OPTIONS]\n"
-            "\n"
-            "Parametric curve (docs/method.md §7) through the points of DATA (2 or 3 columns).\n"
-            "Writes samples as CSV \"t,x,y\" (or \"t,x,y,z\").\n"
-            "\n"
-            "  --closed            closed curve (the first point may be repeated at the end)\n"
-            "  --param uniform|chord|centripetal   parameter knots (default %s)\n"
-            "  --alpha A, --beta B (defaults %s and %s), --alphas/--betas per segment\n"
-            "  --slopes METHOD     as for fit (periodic: closed curves only)\n"
-            "  --box XMIN,XMAX,YMIN,YMAX[,ZMIN,ZMAX]   keep the curve inside the box\n"
-            "                      (inf / -inf: no bound on that side); beta is raised\n"
-            "                      where needed and the curve is certified\n"
-            "  --margin T          margin for the box rule (default %s)\n"
-            "  --samples N         points per segment, knots included (default %d)\n"
-            "  -o, --output FILE, --json, --svg FILE, --title TEXT, --show-control,\n"
-            "  --points-only       as for fit (curve holds at most 10000000 samples)\n"
-            "\n%s\n%s\n%s",
-            cli_param_name(c.param), cli_num(c.alpha, b[0]), cli_num(c.beta, b[1]),
-            cli_num(c.margin, b[2]), CLI_DEFAULT_SAMPLES, input_text, plot_text, exit_text);
+        cli_opts_defaults(cmd, &o);
     }
+    const help_page *p = &pages[cmd];
+    fputs(p->head, stdout);
+    for (size_t k = 0; k < sizeof p->sec / sizeof p->sec[0] && p->sec[k].group; k++) {
+        fputs(p->sec[k].title, stdout);
+        print_group(cmd, p->sec[k].group, def);
+        if (p->sec[k].tail)
+            fputs(p->sec[k].tail, stdout);
+    }
+    fputs(p->tail, stdout);
+    if (cmd != CLI_SURFACE)
+        printf("\n%s", exit_text);
 }

@@ -2,204 +2,18 @@
  * (docs/method.md §11).  Reads the long format (x,y,z rows, a full grid in
  * any order) or the matrix layout (first row the x values, first column the
  * y values); writes samples on a finer grid (CSV, long or matrix), a JSON
- * report, an SVG heatmap with contours.  Its own options (docs/cli.md). */
+ * report, an SVG heatmap with contours (docs/cli.md). */
 #include "cli.h"
 
 #include <errno.h>
-#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
-
-static const char *const shape_names[] = {"none", "positive", "bounds", "planes", "range"};
-
-static int usage(const char *fmt, ...) CLI_PRINTF(1, 2);
-static int usage(const char *fmt, ...)
-{
-    FILE *fp = cli_messages();
-    va_list ap;
-    fputs("trigspline surface: ", fp);
-    va_start(ap, fmt);
-    vfprintf(fp, fmt, ap);
-    va_end(ap);
-    fprintf(fp, "\nTry 'trigspline surface --help' for more information.\n");
-    return CLI_USAGE;
-}
-
-static void print_help(void)
-{
-    printf("Usage: trigspline surface DATA [OPTIONS]\n"
-           "Certified surface through gridded data (docs/method.md section 11).\n\n"
-           "DATA: x,y,z rows of a full rectilinear grid in any order (long format), or\n"
-           "with --matrix a table whose first row holds the x values and first column\n"
-           "the y values (the first cell is ignored). '-' reads standard input.\n\n"
-           "  --matrix               read the matrix layout\n"
-           "  --shape NAME           none (default), positive, bounds, planes, range\n"
-           "  --lower C | P,Q,C      lower bound: constant C or plane z = P x + Q y + C\n"
-           "  --upper C | P,Q,C      upper bound (bounds: constants; planes: planes)\n"
-           "  --form NAME            paper (default), c1, geometric\n"
-           "  --slopes NAME          arithmetic (default), geometric, harmonic,\n"
-           "                         fritsch-carlson, akima, makima\n"
-           "  --alpha A --beta B --margin T   shape parameters (docs/method.md 11.3)\n"
-           "  --zero-twist           twist 0 instead of the estimate\n"
-           "  --samples N            output N samples per patch side (default 4)\n"
-           "  --grid NX,NY           output a uniform NX x NY grid instead\n"
-           "                         (at most 10000000 points in all)\n"
-           "  --matrix-out           write samples in the matrix layout\n"
-           "  --json                 write the report (JSON) instead of samples\n"
-           "  --svg|--png|--pdf FILE heatmap with contours, nodes and active patches\n"
-           "                         (PNG and PDF converted from the SVG, as for fit)\n"
-           "  -o FILE                output file (default standard output)\n\n"
-           "Exit status: 0 ok, 1 usage, 2 bad data (names the line and node),\n"
-           "3 infeasible patch, 5 input/output error.\n");
-}
 
 static int parse_num(const char *s, double *v)
 {
     const char *stop;
     return tsu_parse_double(s, s + strlen(s), v, &stop) == TSU_NUM_OK && *stop == '\0' &&
            isfinite(*v);
-}
-
-/* "C" or "P,Q,C" */
-static int parse_plane(const char *s, ts_plane *pl)
-{
-    ts_plane r = {0.0, 0.0, 0.0};
-    const char *c1 = strchr(s, ',');
-    if (!c1) {
-        if (!parse_num(s, &r.c))
-            return 0;
-        *pl = r;
-        return 1;
-    }
-    char buf[256];
-    if (strlen(s) >= sizeof buf)
-        return 0;
-    strcpy(buf, s);
-    char *a = buf, *b = strchr(a, ','), *c;
-    *b++ = '\0';
-    c = strchr(b, ',');
-    if (!c)
-        return 0;
-    *c++ = '\0';
-    if (!parse_num(a, &r.p) || !parse_num(b, &r.q) || !parse_num(c, &r.c))
-        return 0;
-    *pl = r;
-    return 1;
-}
-
-static int parse_size(const char *s, size_t *v)
-{
-    double d;
-    if (!parse_num(s, &d) || d < 1 || d > 1e7 || d != floor(d))
-        return 0;
-    *v = (size_t)d;
-    return 1;
-}
-
-int cli_surface_parse(int argc, char **argv, cli_surface_opts *o)
-{
-    memset(o, 0, sizeof *o);
-    ts_surface_options_init(&o->so);
-    o->samples = 4;
-    for (int k = 0; k < argc; k++) {
-        const char *a = argv[k], *v = k + 1 < argc ? argv[k + 1] : NULL;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0)
-            return CLI_HELP;
-        if (strcmp(a, "--matrix") == 0) {
-            o->matrix_in = 1;
-            continue;
-        }
-        if (strcmp(a, "--matrix-out") == 0) {
-            o->matrix_out = 1;
-            continue;
-        }
-        if (strcmp(a, "--json") == 0) {
-            o->json = 1;
-            continue;
-        }
-        if (strcmp(a, "--zero-twist") == 0) {
-            o->so.zero_twist = 1;
-            continue;
-        }
-        if (a[0] == '-' && a[1] != '\0') {
-            if (!v)
-                return usage("this option needs a value: %s", a);
-            k++;
-            int ok = 1;
-            if (strcmp(a, "--shape") == 0) {
-                ok = 0;
-                for (size_t i = 0; i < 5; i++)
-                    if (strcmp(v, shape_names[i]) == 0)
-                        o->so.shape = (ts_surface_shape)i, ok = 1;
-            } else if (strcmp(a, "--lower") == 0) {
-                ok = parse_plane(v, &o->so.lower);
-                o->so.has_lower = 1;
-            } else if (strcmp(a, "--upper") == 0) {
-                ok = parse_plane(v, &o->so.upper);
-                o->so.has_upper = 1;
-            } else if (strcmp(a, "--form") == 0) {
-                int i = cli_name_index(&cli_form_names, v);
-                ok = i >= 0;
-                o->so.form = (ts_form)(ok ? i : 0);
-            } else if (strcmp(a, "--slopes") == 0) {
-                int i = cli_name_index(&cli_slopes_names, v);
-                ok = i >= 0 && i != TS_SLOPES_USER && i != TS_SLOPES_PERIODIC;
-                o->so.slopes = (ts_slopes)(ok ? i : 0);
-            } else if (strcmp(a, "--alpha") == 0) {
-                ok = parse_num(v, &o->so.alpha) && o->so.alpha > 0;
-            } else if (strcmp(a, "--beta") == 0) {
-                ok = parse_num(v, &o->so.beta) && o->so.beta >= 0;
-            } else if (strcmp(a, "--margin") == 0) {
-                ok = parse_num(v, &o->so.margin) && o->so.margin > 0;
-            } else if (strcmp(a, "--samples") == 0) {
-                ok = parse_size(v, &o->samples);
-            } else if (strcmp(a, "--grid") == 0) {
-                char buf[64];
-                const char *c = strchr(v, ',');
-                ok = c && (size_t)(c - v) < sizeof buf;
-                if (ok) {
-                    memcpy(buf, v, (size_t)(c - v));
-                    buf[c - v] = '\0';
-                    ok = parse_size(buf, &o->grid_x) && parse_size(c + 1, &o->grid_y) &&
-                         o->grid_x >= 2 && o->grid_y >= 2;
-                }
-            } else if (strcmp(a, "-o") == 0) {
-                if (!*v)
-                    return usage("%s: empty file name", a);
-                o->out = v;
-            } else if (strcmp(a, "--svg") == 0 || strcmp(a, "--png") == 0 ||
-                       strcmp(a, "--pdf") == 0) {
-                /* the format is the option's; a plot extension that says
-                 * another is refused (no SVG silently written into a .png) */
-                static const char *const ext[3] = {".svg", ".png", ".pdf"};
-                const char *dot = strrchr(v, '.');
-                if (!*v || strcmp(v, "-") == 0)
-                    return usage("%s needs a file name", a);
-                o->fmt = strcmp(a, "--svg") == 0   ? CLI_PLOT_SVG
-                         : strcmp(a, "--png") == 0 ? CLI_PLOT_PNG
-                                                   : CLI_PLOT_PDF;
-                for (int e = 0; e < 3; e++)
-                    if (dot && e != (int)o->fmt && strcasecmp(dot, ext[e]) == 0)
-                        return usage("the plot's extension contradicts %s", a);
-                o->svg = v;
-            } else {
-                return usage("unknown option %s", a);
-            }
-            if (!ok)
-                return usage("bad value \"%s\" for %s", v, a);
-            continue;
-        }
-        if (o->data)
-            return usage("more than one DATA argument: %s", a);
-        o->data = a;
-    }
-    if (!o->data)
-        return usage("missing DATA");
-    if (o->out && o->svg && strcmp(o->out, "-") != 0 && cli_same_file(o->out, o->svg))
-        return usage("-o and the plot name the same file (\"%s\"): the plot would replace the "
-                     "samples", o->svg);
-    return CLI_OK;
 }
 
 /* ---- reading the grid ------------------------------------------------------ */
@@ -523,7 +337,7 @@ int cli_surface(int argc, char **argv)
     cli_surface_opts o;
     int rc = cli_surface_parse(argc, argv, &o);
     if (rc == CLI_HELP) {
-        print_help();
+        cli_print_help(CLI_SURFACE);
         return fflush(stdout) == 0 ? CLI_OK : CLI_IO;
     }
     if (rc != CLI_OK)
@@ -596,7 +410,7 @@ int cli_surface(int argc, char **argv)
         cli_json_kuint(&j, "nx_points", g.nx);
         cli_json_kuint(&j, "ny_points", g.ny);
         cli_json_kstr(&j, "form", cli_form_name(o.so.form));
-        cli_json_kstr(&j, "shape", shape_names[o.so.shape]);
+        cli_json_kstr(&j, "shape", cli_vocab_name(CLI_VOCAB_SURFACE_SHAPE, (int)o.so.shape));
         cli_json_kstr(&j, "slopes", cli_slopes_name(o.so.slopes));
         cli_json_kbool(&j, "certified", ts_surface_certified(s));
         cli_json_knum(&j, "sample_min", smin);

@@ -6,25 +6,25 @@
  * Prefix tsu_ / TSU_ ("trigspline support"), never ts_: these are not the
  * library's API and know nothing of it (no trigspline.h, no src/internal.h).
  *
- * Four parts:
+ * Four parts, one source file each (tsu_io.c: what they share):
  *
- *  1. Numbers.  tsu_parse_double() converts decimal text to the correctly
+ *  1. Numbers (tsu_number.c).  tsu_parse_double() converts decimal text to the correctly
  *     rounded double (round-half-even, like glibc strtod) and
  *     tsu_format_double() writes the shortest text that converts back to the
  *     identical double.  Both are exact for every input, independent of the
  *     locale (the decimal point is always '.'), and faster than
  *     strtod / printf("%.17g") (see "Speed" below).
  *
- *  2. Reading tables of numbers (CSV, TSV or whitespace-separated, auto-
- *     detected) either all at once into column arrays (tsu_read_table) or one
+ *  2. Reading tables of numbers (tsu_table.c; dates: tsu_time.c) (CSV, TSV or
+ *     whitespace-separated, auto-detected) either all at once into column arrays (tsu_read_table) or one
  *     row at a time in constant memory (tsu_reader_*).  Errors name file, line
  *     and column:   data.csv:7:3: expected a number, found "abc"
  *
- *  3. Safe output files (tsu_out_*): written to a temporary file in the same
+ *  3. Safe output files (tsu_output.c, tsu_out_*): written to a temporary file in the same
  *     directory and renamed over the target only on success, so a failed
  *     command never leaves a half-written file.  "-" is standard output.
  *
- *  4. A buffered writer of delimited rows of numbers (tsu_writer_*).
+ *  4. A buffered writer of delimited rows of numbers (tsu_output.c, tsu_writer_*).
  *
  * Usage:
  *

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Prints the C table of tools/support/tsu_io.c (p10e): for a = -13..12, 10^(27a) ~= T * 2^s with
+"""Prints the C table of tools/support/tsu_number.c (p10e): for a = -13..12, 10^(27a) ~= T * 2^s with
 2^127 <= T < 2^128, T = floor(10^(27a) / 2^s), exact flag.  Standard library only."""
 from fractions import Fraction
 
