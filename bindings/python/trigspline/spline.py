@@ -224,6 +224,8 @@ class Spline:
             else:
                 upper = line
         shp = _options.name(SHAPES, _options.infer_shape(shape, lower, upper), "shape")
+        if shp == "positive" and lower == (0.0, 0.0) and upper is None:
+            lower = None  # lower=0: the positive scheme's own bound (as interp)
         if shp == "above":
             if lower is None or upper is not None:
                 raise ValueError("shape='above' needs the line lower=(m, c) alone")

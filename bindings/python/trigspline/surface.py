@@ -231,6 +231,8 @@ class Surface:
         lo, up = _plane(lower, "lower"), _plane(upper, "upper")
         shp = _options.name(SURFACE_SHAPES, _options.infer_shape(shape, lo, up, "surface"),
                             "shape")
+        if shape is None and shp == "positive":
+            lo = None  # lower=0 alone: the positive scheme's own bound
         opts = {"shape": SURFACE_SHAPES.index(shp), "zero_twist": zero_twist,
                 "form": FORMS.index(form)}
         kwargs = {"shape": shp, "zero_twist": zero_twist, "extrapolate": ext, "form": form}

@@ -41,6 +41,7 @@ def halo_knots(slopes):
     Akima slope i-2..i+2 (docs/method.md §6).  The queries of a chunk lie in
     its intervals s..e-1 (the last one ends at the next chunk's first knot e),
     so it needs knots s-1..e+1 (three-point) or s-2..e+2 (Akima)."""
+    slopes = _options.name(_options.SLOPES, slopes, "slopes")
     if slopes in _THREE_POINT:
         return 2
     if slopes in _FIVE_POINT:
