@@ -61,7 +61,7 @@ def run_method(method, size, cores):
     da, new = make_cube(size, time_chunk=1000 if method == "trigspline-time-chunked" else -1)
     if method.startswith("trigspline"):
         import trigspline.xarray  # noqa: F401
-        out = da.trigspline.interp(time=new, bounds=(0, None), form="paper")
+        out = da.trigspline.interp(time=new, lower=0, form="paper")
     elif method == "xarray-cubic":
         out = da.interp(time=new, method="cubic")
     elif method == "xarray-linear":

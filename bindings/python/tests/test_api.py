@@ -102,8 +102,10 @@ def test_extrapolate_modes():
     x, f = smooth_data()
     out = np.array([x[0] - 1.0, x[-1] + 2.0])
     for form in ("paper", "geometric"):
-        s = Spline(x, f, form=form)
-        assert s.extrapolate == "extend"                      # SciPy's default
+        # the library's default ('error', ts_options_init); SciPy's is True
+        assert Spline(x, f, form=form).extrapolate == "error"
+        s = Spline(x, f, form=form, extrapolate=True)
+        assert s.extrapolate == "extend"
         # the library's own policies (handles built with each ts_extrap) as reference
         from trigspline import _core
         for mode, code in (("extend", 2), ("clamp", 1), ("linear", 3)):
@@ -125,7 +127,7 @@ def test_extrapolate_modes():
         assert np.array_equal(c(out, extrapolate=True), s(out))
         assert np.isnan(Spline(x, f, extrapolate=False)(out)).all()
         # extend: the paper form continues the end interval's formula
-    s = Spline(x, f, form="paper")
+    s = Spline(x, f, form="paper", extrapolate=True)
     B = s.c[:, 0]
     th = (math.pi / 2) * (out[0] - x[0]) / (x[1] - x[0])
     from conftest import ref_basis
@@ -178,9 +180,9 @@ def test_scipy_pchip_agreement_on_cubic_limit():
     x, f = smooth_data()
     f = np.cumsum(np.abs(f))  # monotone
     p = scipy_interp.PchipInterpolator(x, f)
-    s = Spline(x, f, slopes="pchip", shape="monotone", form="paper")
+    s = Spline(x, f, slopes="fritsch-carlson", shape="monotone", form="paper")
     assert np.array_equal(s(x), f)
-    assert np.allclose(trigspline.estimate_slopes(x, f, "pchip"), p(x, 1), rtol=1e-12)
+    assert np.allclose(trigspline.estimate_slopes(x, f, "fritsch-carlson"), p(x, 1), rtol=1e-12)
     xq = np.linspace(x[0], x[-1], 5001)
     assert np.all(np.diff(s(xq)) >= 0)
 
@@ -234,13 +236,13 @@ def test_form_default_follows_library():
 
 
 def test_cubic_hermite_and_akima_migration():
-    """CubicHermiteSpline(x, y, dydx) -> Spline(x, f, slopes_values=dydx): with α + β = 1
+    """CubicHermiteSpline(x, y, dydx) -> Spline(x, f, slopes=dydx): with α + β = 1
     the slopes at the knots are dydx (docs/method.md §3: S'(x_i+) = d_i/a_i); Akima's
     slopes are SciPy's Akima1DInterpolator's (docs/method.md §6)."""
     interp = pytest.importorskip("scipy.interpolate")
     x, f = smooth_data()
     d = np.cos(x)
-    s = Spline(x, f, slopes_values=d, form="paper")
+    s = Spline(x, f, slopes=d, form="paper")
     assert np.allclose(s(x[:-1], 1), d[:-1], rtol=1e-12, atol=1e-13)
     assert np.array_equal(s(x), f)
     ak = interp.Akima1DInterpolator(x, f)

@@ -27,7 +27,7 @@ def test_local_cluster_chunked_equals_unchunked(monkeypatch):
                       coords={"time": t, "lat": [1.0, 2.0], "lon": [0.0, 1.0, 2.0]},
                       attrs={"units": "mm/h"})
     new = t[0] + np.arange(2 * n - 1) * np.timedelta64(30, "m")
-    ref = da.trigspline.interp(time=new, bounds=(0, None), form="paper")
+    ref = da.trigspline.interp(time=new, lower=0, form="paper")
 
     cluster = distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                        host="127.0.0.1", dashboard_address="127.0.0.1:0",
@@ -35,7 +35,7 @@ def test_local_cluster_chunked_equals_unchunked(monkeypatch):
     try:
         with distributed.Client(cluster) as client:
             assert all(a.startswith("tcp://127.0.0.1:") for a in client.scheduler_info()["workers"])
-            lazy = da.chunk({"time": 100}).trigspline.interp(time=new, bounds=(0, None),
+            lazy = da.chunk({"time": 100}).trigspline.interp(time=new, lower=0,
                                                              form="paper")
             out = client.compute(lazy).result()
             who = client.run(lambda: os.getpid())

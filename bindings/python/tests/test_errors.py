@@ -39,14 +39,14 @@ def test_construction_errors():
     raises("TS_ERR_NONMONOTONE", lambda: Spline(X, [1, 2, 3, 2, 4], shape="monotone"), 3,
            "point")
     raises("TS_ERR_SIDE", lambda: Spline([1, 2, 3, 9, 12, 14, 15], [0.5, 3, 5, 25, 8, 2, 1],
-                                         shape="above", line=(0.31, 1.0)), 0, "point",
+                                         shape="above", lower=(0.31, 1.0)), 0, "point",
            "point 0 (x = 1) lies on or across the line y = 0.31*x + 1 (f = 0.5, line value 1.31)")
     raises("TS_ERR_LINES", lambda: Spline(X, [1, 2, 3, 2, 1], shape="between",
                                           lower=(1.0, 0.0), upper=(-1.0, 4.0)), 2, "point")
     raises("TS_ERR_PERIODIC", lambda: Spline(X, [1, 2, 3, 2, 2], slopes="periodic"), 4,
            "point")
     raises("TS_ERR_ZERO_SLOPE", lambda: Spline(X, [1, 0, 1, 2, 3], shape="positive",
-                                               slopes_values=[0, 1, 0, 1, 1]), 1, "point")
+                                               slopes=[0, 1, 0, 1, 1]), 1, "point")
     raises("TS_ERR_ALPHA", lambda: Spline(X, [1, 2, 3, 2, 1], alpha=[1, 1, -1, 1]), 2,
            "interval")
     raises("TS_ERR_BETA", lambda: Spline(X, [1, 2, 3, 2, 1], beta=-2.0))
@@ -54,17 +54,19 @@ def test_construction_errors():
     raises("TS_ERR_GEOMETRIC", lambda: Spline(X, [1, 2, 3, 2, 1], form="geometric",
                                               alpha=0.1), 0, "interval")
     raises("TS_ERR_LENGTH", lambda: Spline(X, [1, 2, 3, 2, 1], alpha=[1, 1]))
-    raises("TS_ERR_LENGTH", lambda: Spline(X, [1, 2, 3, 2, 1], slopes_values=[1, 2]))
+    raises("TS_ERR_LENGTH", lambda: Spline(X, [1, 2, 3, 2, 1], slopes=[1, 2]))
 
 
 def test_python_argument_errors():
     f = [1, 2, 3, 2, 1]
     for bad in (lambda: Spline(X, f, shape="round"), lambda: Spline(X, f, form="x"),
                 lambda: Spline(X, f, slopes="nope"), lambda: Spline(X, f, shape="above"),
-                lambda: Spline(X, f, line=(1, 2)), lambda: Spline(X, f, shape="positive",
+                lambda: Spline(X, f, shape="positive", lower=(1, 2)),
+                lambda: Spline(X, f, shape="below", lower=(1, 2)),
+                lambda: Spline(X, f, shape="positive",
                                                                    beta=0.3),
                 lambda: Spline(X, f, extrapolate="periodic"), lambda: Spline(X, f, axis=3),
-                lambda: Spline(X, f, shape="between", line=(0, 0)),
+                lambda: Spline(X, f, shape="between", lower=(0, 0)),
                 lambda: Spline(X, f, slopes="user")):
         with pytest.raises(ValueError):
             bad()
@@ -103,13 +105,13 @@ def test_no_floating_point_warnings_on_valid_input():
         warnings.simplefilter("error")
         with np.errstate(all="raise"):
             for name, shape, kw in (("table1_positive.csv", "positive", {"alpha": 0.15}),
-                                    ("table2_above_line.csv", "above", {"line": (0.31, 1.0)}),
+                                    ("table2_above_line.csv", "above", {"lower": (0.31, 1.0)}),
                                     ("table4_between_lines.csv", "between",
                                      {"lower": (1, 0.1), "upper": (8, 6), "alpha": 0.1})):
                 x, f = read_csv(name)
                 if shape == "above":
                     f = f + 10 * x  # the paper's table 2 data violate the line; lift them
-                    kw = {"line": (0.31, 1.0)}
+                    kw = {"lower": (0.31, 1.0)}
                 s = Spline(x, f, shape=shape, **kw)
                 xq = np.linspace(x[0], x[-1], 1001)
                 s(xq), s(xq, 1), s(xq, 2), s(xq, 3), s.integrate(x[0], x[-1]), s.roots()

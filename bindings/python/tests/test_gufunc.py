@@ -31,7 +31,7 @@ def knots(rng, n):
 
 
 def one_by_one(x, f, xq, **kw):
-    """Spline per series; NaN outside the data (interp's default)."""
+    """Spline per series; NaN outside the data (interp's extrapolate='nan')."""
     out = np.full(f.shape[:-1] + xq.shape[-1:], np.nan)
     for idx in np.ndindex(f.shape[:-1]):
         xi = x[idx] if x.ndim > 1 else x
@@ -47,7 +47,7 @@ def test_positive_bit_identical_to_spline(form):
     x = knots(rng, 60)
     f = rain(rng, (3, 4), 60)
     xq = np.sort(rng.uniform(x[0] - 1, x[-1] + 1, 501))
-    y = interp(x, f, xq, shape="positive", form=form)
+    y = interp(x, f, xq, shape="positive", form=form, extrapolate="nan")
     ref = one_by_one(x, f, xq, shape="positive", form=form)
     assert y.shape == (3, 4, 501)
     np.testing.assert_array_equal(y, ref)
@@ -69,14 +69,7 @@ def test_other_shapes_bit_identical(shape, kw):
         f = np.cumsum(f, axis=-1)
     xq = np.linspace(x[0], x[-1], 333)
     y = interp(x, f, xq, shape=shape, **kw)
-    skw = {}
-    if shape == "above":
-        skw["line"] = kw["lower"]
-    elif shape == "below":
-        skw["line"] = kw["upper"]
-    elif shape == "between":
-        skw = dict(kw)
-    np.testing.assert_array_equal(y, one_by_one(x, f, xq, shape=shape, **skw))
+    np.testing.assert_array_equal(y, one_by_one(x, f, xq, shape=shape, **kw))
     if shape == "monotone":
         assert (np.diff(y, axis=-1) >= 0).all()
     if "lower" in kw:
@@ -90,7 +83,7 @@ def test_slopes_alpha_margin_extrapolate_passed_through():
     f = rain(rng, (2,), 30)
     xq = np.linspace(x[0] - 3, x[-1] + 3, 200)
     for ex in ("clamp", "extend", "linear"):
-        for sl in ("fritsch_carlson", "akima", "harmonic"):
+        for sl in ("fritsch-carlson", "akima", "harmonic"):
             y = interp(x, f, xq, shape="positive", slopes=sl, alpha=0.4, margin=0.05,
                        extrapolate=ex)
             for i in range(2):
@@ -207,13 +200,13 @@ def test_nan_series_and_gaps():
 def test_bad_series_status_and_errors_raise():
     x = np.arange(6.0)
     f = np.array([[1, 2, 3, 2, 1, 2], [1, 2, -3, 2, 1, 2]], dtype=float)
-    r = interp(x, f, [0.5, 2.5], shape="positive", full=True)
+    r = interp(x, f, [0.5, 2.5], shape="positive", full=True, errors="nan")
     assert list(r.status) == [0, TS_ERR_NEGATIVE] and r.index[1] == 2
     assert np.isnan(r.values[1]).all()
     with pytest.raises(ValueError, match=r"series \(1,\).*point 2"):
-        interp(x, f, [0.5], shape="positive", errors="raise")
+        interp(x, f, [0.5], shape="positive")  # errors='raise', the default
     # point 0 (f = 1) below y = 1.5 (on y = 1 it may touch: docs/method.md §5.8)
-    r2 = interp(x, f[:1], [0.5], lower=(0.0, 1.5), shape="above", full=True)
+    r2 = interp(x, f[:1], [0.5], lower=(0.0, 1.5), shape="above", full=True, errors="nan")
     assert r2.status[0] == TS_ERR_SIDE and r2.index[0] == 0
 
 
@@ -242,8 +235,9 @@ def test_no_floating_point_warnings():
     with np.errstate(all="raise"):
         for form in ("paper", "geometric"):
             for shape in ("positive", "none"):
-                interp(x, f, xq, shape=shape, form=form, full=True, gap=True)
-                interp(x, f32, xq, shape=shape, form=form, skipna=True)
+                interp(x, f, xq, shape=shape, form=form, full=True, gap=True,
+                       extrapolate="nan")
+                interp(x, f32, xq, shape=shape, form=form, skipna=True, extrapolate="nan")
             interp(x, f, xq, shape="positive", form=form, extrapolate="extend")
 
 

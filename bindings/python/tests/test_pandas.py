@@ -23,7 +23,7 @@ def test_series_with_gaps():
     s = pd.Series(v, index=idx, name="rain")
     s.attrs["units"] = "mm/h"
     new = pd.date_range(idx[0], idx[-1], freq="15min")
-    out = interpolate(s, index=new, shape="positive")
+    out = interpolate(s, index=new, shape="positive", skipna=True)
     keep = np.isfinite(v)
     secs = (idx - idx[0]) / pd.Timedelta(seconds=1)
     q = (new - idx[0]) / pd.Timedelta(seconds=1)
@@ -31,7 +31,8 @@ def test_series_with_gaps():
     np.testing.assert_array_equal(out.values, ref)
     assert (out.values >= 0).all()
     assert out.name == "rain" and out.attrs == {"units": "mm/h"} and out.index.equals(new)
-    # without skipna the column with NaN is NaN
+    # without skipna (the default) the column with NaN is NaN
+    assert np.isnan(interpolate(s, index=new, shape="positive").values).all()
     assert np.isnan(interpolate(s, index=new, shape="positive", skipna=False).values).all()
 
 
@@ -40,11 +41,11 @@ def test_dataframe_columns_and_float32():
     _, w = hourly(seed=2)
     df = pd.DataFrame({"a": v, "b": w.astype(np.float32), "label": ["x"] * len(v)}, index=idx)
     new = idx[:-1] + pd.Timedelta(minutes=30)
-    out = interpolate(df, index=new, bounds=(0, None))
+    out = interpolate(df, index=new, lower=0)
     assert list(out.columns) == ["a", "b", "label"]
     assert out["b"].dtype == np.float32 and (out[["a", "b"]].values >= 0).all()
     np.testing.assert_array_equal(out["a"].values, interpolate(df["a"], index=new,
-                                                               bounds=(0, None)).values)
+                                                               lower=0).values)
     assert out["label"].isna().all()
 
 

@@ -19,13 +19,13 @@ def data(n=200, seed=11):
 
 def variants():
     x, f = data()
-    yield Spline(x, f)
+    yield Spline(x, f, extrapolate=True)
     yield Spline(x, f, shape="positive", alpha=np.linspace(0.2, 1.0, len(x) - 1),
                  form="c1", extrapolate="clamp")
-    yield Spline(x, f, slopes_values=np.cos(x), form="geometric", margin=0.05)
+    yield Spline(x, f, slopes=np.cos(x), form="geometric", margin=0.05, extrapolate="linear")
     yield Spline(x, np.stack([f, f + 1.0, 2 * f + 0.1]), axis=1, shape="between",
-                 lower=(0.0, -1.0), upper=(0.0, 20.0))
-    yield Spline(x, f, shape="above", line=(0.0, -0.5), extrapolate=False)
+                 lower=(0.0, -1.0), upper=(0.0, 20.0), extrapolate="extend")
+    yield Spline(x, f, shape="above", lower=(0.0, -0.5), extrapolate=False)
 
 
 @pytest.mark.parametrize("s", list(variants()))

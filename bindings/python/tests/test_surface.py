@@ -600,7 +600,7 @@ def variants():
     x, y, z = grid_data()
     yield Surface(x, y, z)
     yield Surface(x, y, z, shape="positive", form="c1", alpha=0.4, margin=0.05,
-                  slopes="pchip", bounds_error=False, fill_value=-3.0)
+                  slopes="fritsch-carlson", bounds_error=False, fill_value=-3.0)
     yield Surface(x, y, z + 1, shape="planes", lower=(0.01, 0.0, 0.5), upper=20.0,
                   form="geometric", zero_twist=True)
     yield Surface(x, y, z, shape="bounds", lower=0.0, beta=0.0)

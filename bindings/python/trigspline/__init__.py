@@ -26,6 +26,7 @@ if _core.library_version() != __version__ or _core.HEADER_VERSION != __version__
         "libtrigspline %s (header %s); reinstall the package (a stale build is on the path)"
         % (__version__, _core.__file__, _core.library_version(), _core.HEADER_VERSION))
 
+from ._options import defaults  # noqa: E402
 from .curve import Curve  # noqa: E402
 from .errors import TrigsplineError, strerror  # noqa: E402
 from .spline import Antiderivative, Derivative, Spline, estimate_slopes  # noqa: E402
@@ -33,7 +34,8 @@ from .surface import Surface  # noqa: E402
 from .interp import interp  # noqa: E402
 
 __all__ = ["Spline", "Curve", "Surface", "Derivative", "Antiderivative", "TrigsplineError",
-           "interp", "estimate_slopes", "strerror", "library_version", "__version__"]
+           "interp", "estimate_slopes", "strerror", "defaults", "library_version",
+           "__version__"]
 
 
 def library_version() -> str:

@@ -1,4 +1,5 @@
-"""Enum tables (the order of the C enums in include/trigspline.h) and number text."""
+"""Status and where tables (the order of the C enums in include/trigspline.h) and number
+text.  The option vocabulary is in _options.py."""
 import math
 import numbers
 
@@ -13,27 +14,6 @@ STATUS_NAMES = ("TS_OK", "TS_ERR_NULL", "TS_ERR_NOMEM", "TS_ERR_OVERFLOW", "TS_E
                 "TS_ERR_SLOPE_OVERFLOW", "TS_ERR_TOO_LARGE", "TS_ERR_CONTROL_OVERFLOW",
                 "TS_ERR_WIDTH", "TS_ERR_PRECISION", "TS_ERR_UNPROVEN")
 WHERE_NAMES = (None, "point", "interval", "query")
-FORMS = ("paper", "c1", "geometric")
-SLOPES = ("arithmetic", "geometric", "harmonic", "fritsch_carlson", "akima", "makima", "user",
-          "periodic")
-SLOPE_ALIASES = {"fritsch-carlson": "fritsch_carlson", "pchip": "fritsch_carlson",
-                 "mean": "arithmetic"}
-SHAPES = ("none", "positive", "above", "below", "between", "monotone")
-PARAMS = ("centripetal", "chord", "uniform")
-TERMS = ("user", "margin", "lower_left", "lower_right", "upper_left", "upper_right",
-         "monotone", "certify", "geometric")
-
-
-def enum_value(table, value, what, aliases=None):
-    """Index of value (a name, case-insensitive) in table; ValueError otherwise."""
-    if isinstance(value, str):
-        key = value.strip().lower()
-        if aliases:
-            key = aliases.get(key, key)
-        if key in table:
-            return table.index(key)
-    raise ValueError("%s must be one of %s, not %r" % (what, ", ".join(repr(t) for t in table),
-                                                       value))
 
 
 def num(v):

@@ -3,13 +3,14 @@ from typing import Any, Optional
 
 import numpy as np
 
-from . import _core
-from ._util import (PARAMS, SLOPE_ALIASES, SLOPES, WHERE_NAMES, enum_value, float_array,
-                    is_scalar, num, to_float)
+from . import _core, _options
+from ._options import PARAMS, SLOPES
+from ._util import WHERE_NAMES, num, to_float
 from .errors import _S, TrigsplineError, library_error, simple_error, strerror
 from .spline import _per_interval, _report_dict
 
 _MODES = {"error": _core.MODE_ERROR, "nan": _core.MODE_NAN}
+_MODE_NAMES = {v: k for k, v in _MODES.items()}
 
 
 def _box(box, dim):
@@ -43,24 +44,30 @@ def _rebuild(state):
 class Curve:
     """The trigonometric spline curve through points (rows of 2 or 3 coordinates).
 
+    The keywords and their defaults are the package's one vocabulary
+    (docs/options.md); the defaults are the library's
+    (``ts_curve_options_init``).
+
     Parameters
     ----------
     points : array_like, shape (m, 2) or (m, 3)
-    closed : bool
+    closed : bool, default ${closed}
         A closed curve (the first point may be repeated at the end or not).
-    param : {'centripetal', 'chord', 'uniform'}, optional
-        Parameter knots (t_0 = 0); ``None``: the library default.
-    alpha, beta : float or array_like (one per segment), optional
-    box : sequence of (lo, hi) pairs, optional
+    param : {'centripetal', 'chord', 'uniform'}, default ${param}
+        Parameter knots (t_0 = 0).
+    alpha : float or array_like (one per segment), default ${alpha}
+    beta : float or array_like (one per segment), default ${beta}
+    box : sequence of (lo, hi) pairs, default none
         One pair per coordinate, ``None`` for an open side: each coordinate
         kept inside (β raised where needed, certified); a point may lie on a
         side, where the curve then touches it.
-    slopes : str, optional
+    slopes : str, default ${slopes}
         Slope method per coordinate (docs/method.md §6).
-    margin : float, optional
-    extrapolate : {False, 'nan', 'error'}
-        Parameters outside an open curve's [t0, tn]: ``'error'`` (default)
-        raises, ``False``/``'nan'`` gives NaN.  Closed curves wrap.
+    margin : float, default ${margin}
+        The margin t of the box rule (docs/method.md §5).
+    extrapolate : {'error', 'nan', False}, default ${extrapolate}
+        Parameters outside an open curve's [t0, tn]: ``'error'`` raises,
+        ``'nan'`` (``False``) gives NaN.  Closed curves wrap.
 
     Notes
     -----
@@ -69,10 +76,10 @@ class Curve:
     ``copy``/``pickle`` rebuild it from its inputs.
     """
 
-    def __init__(self, points: Any, *, closed: bool = False, param: Optional[str] = None,
-                 alpha: Any = None, beta: Any = None, box: Any = None,
-                 slopes: Optional[str] = None, margin: Optional[float] = None,
-                 extrapolate: Any = "error") -> None:
+    def __init__(self, points: Any, *, closed: Optional[bool] = None,
+                 param: Optional[str] = None, alpha: Any = None, beta: Any = None,
+                 box: Any = None, slopes: Optional[str] = None, margin: Optional[float] = None,
+                 extrapolate: Any = None) -> None:
         pts = np.array(points, dtype=np.float64)  # a copy: kept for pickling
         if pts.ndim != 2:
             raise TrigsplineError(_S.DIMENSION, "points must be a 2-D array (rows of 2 or 3 "
@@ -81,21 +88,20 @@ class Curve:
         if dim not in (2, 3):
             raise TrigsplineError(_S.DIMENSION, "points need 2 or 3 coordinates, not %d" % dim)
         npts = pts.shape[0]
+        closed = _options.flag("curve", "closed", closed)
         if closed:
             segs = npts - 1 if npts >= 2 and (pts[0] == pts[-1]).all() else npts
         else:
             segs = max(npts - 1, 0)
         self._mode = self._mode_of(extrapolate)
-        kwargs = {"closed": bool(closed), "extrapolate": extrapolate}
-        opts = {"closed": 1 if closed else 0}
-        if param is not None:
-            opts["param"] = enum_value(PARAMS, param, "param")
-            kwargs["param"] = param
-        if slopes is not None:
-            opts["slopes"] = enum_value(SLOPES, slopes, "slopes", SLOPE_ALIASES)
-            kwargs["slopes"] = slopes
+        param = _options.enum("curve", "param", param, PARAMS)
+        slopes = _options.enum("curve", "slopes", slopes, SLOPES)
+        kwargs = {"closed": closed, "extrapolate": _MODE_NAMES[self._mode], "param": param,
+                  "slopes": slopes}
+        opts = {"closed": 1 if closed else 0, "param": PARAMS.index(param),
+                "slopes": SLOPES.index(slopes)}
         for name, value in (("alpha", alpha), ("beta", beta)):
-            sc, arr = _per_interval(value, name, segs)
+            sc, arr = _per_interval(_options.option("curve", name, value), name, segs)
             if sc is not None:
                 opts[name] = kwargs[name] = sc
             elif arr is not None:
@@ -103,8 +109,8 @@ class Curve:
         if box is not None:
             opts["lo"], opts["hi"] = _box(box, dim)
             kwargs["box"] = box
-        if margin is not None:
-            opts["margin"] = kwargs["margin"] = to_float(margin, "margin")
+        opts["margin"] = kwargs["margin"] = to_float(_options.option("curve", "margin", margin),
+                                                     "margin")
         self._points = pts
         self._kwargs = kwargs
         try:
@@ -114,12 +120,8 @@ class Curve:
 
     @staticmethod
     def _mode_of(extrapolate):
-        if extrapolate is False:
-            return _core.MODE_NAN
-        if isinstance(extrapolate, str) and extrapolate.lower() in _MODES:
-            return _MODES[extrapolate.lower()]
-        raise ValueError("Curve: extrapolate must be False, 'nan' or 'error', not %r"
-                         % (extrapolate,))
+        return _MODES[_options.extrapolate(extrapolate, "curve", ("error", "nan"),
+                                           "Curve: extrapolate")]
 
     @staticmethod
     def _error(e, rows):
@@ -258,3 +260,6 @@ class Curve:
         if report:
             return ok, [_report_dict(r) for r in reps]
         return ok
+
+
+_options.document(Curve, "curve")

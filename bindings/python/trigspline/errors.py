@@ -166,7 +166,8 @@ def domain_error(value, index, lo, hi, extrapolate="error"):
     elif v in (float("inf"), float("-inf")):
         detail = "is infinite (only extrapolate='clamp' accepts it)"
     else:
-        detail = "lies outside [%s, %s] (extrapolate=%r)" % (num(lo), num(hi), extrapolate)
+        detail = "lies outside [%s, %s] (extrapolate=%r; 'extend', 'clamp', 'linear' or " \
+                 "'nan' evaluate there)" % (num(lo), num(hi), extrapolate)
     if index is None:
         return TrigsplineError(_S.DOMAIN, "query x = %s %s" % (num(v), detail), None, "query")
     return TrigsplineError(_S.DOMAIN, "query %d (x = %s) %s" % (index, num(v), detail), index,

@@ -8,21 +8,21 @@ runs without the GIL.  Each series gives the values of
 """
 import numpy as np
 
-from . import _gufunc
+from . import _gufunc, _options
+from ._options import FORMS, SHAPES, SLOPES
+from ._util import num
+from .errors import _S, TrigsplineError
 
 __all__ = ["interp", "InterpResult", "status_message", "STATUS_OK", "OPTION_LAYOUT"]
 
 STATUS_OK = 0
 
-SHAPES = {"none": 0, "positive": 1, "above": 2, "below": 3, "between": 4, "monotone": 5}
-FORMS = {"paper": 0, "c1": 1, "geometric": 2}
-SLOPES = {"arithmetic": 0, "geometric": 1, "harmonic": 2, "fritsch_carlson": 3, "pchip": 3,
-          "akima": 4, "makima": 5, "periodic": 7}
-EXTRAPS = {"nan": -1, None: -1, False: -1, "clamp": 1, "extend": 2, True: 2, "linear": 3}
+# The gufunc's extrapolation codes: the ts_extrap values, -1 NaN outside
+# ('error' is checked before the call, see check_queries).
+_EXTRAP_CODES = {"error": -1, "nan": -1, "clamp": 1, "extend": 2, "linear": 3}
 OPTION_LAYOUT = ("shape", "form", "slopes", "extrapolate", "alpha", "lower_m", "lower_c",
                  "upper_m", "upper_c", "margin", "skipna", "certify", "want_gap",
                  "gap_first", "gap_end")
-DEFAULT_MARGIN = 0.01  # TS_DEFAULT_MARGIN of include/trigspline.h
 
 # The ts_status codes a series gets when its data cannot be fitted at all
 # (NaN or too few points): its output is NaN, nothing is raised even with
@@ -41,26 +41,21 @@ def _line(v, name):
         return None
     if np.ndim(v) == 0:
         return (0.0, float(v))
-    m, c = v
+    try:
+        m, c = v
+    except (TypeError, ValueError):
+        raise ValueError("%s must be a number or a pair (m, c) for the line y = m*x + c, not %r"
+                         % (name, v)) from None
     return (float(m), float(c))
 
 
 def resolve_shape(shape, lower, upper):
     """shape name and the (m, c) lines it uses.  shape=None infers it from the
-    bounds: none, 'positive' for lower=0 alone (zeros allowed), 'above',
-    'below' or 'between' (strict: the data must lie strictly inside)."""
+    bounds (docs/options.md): none, 'positive' for lower=0 alone (zeros
+    allowed), 'above', 'below' or 'between' (strict: the data must lie
+    strictly inside)."""
     lo, hi = _line(lower, "lower"), _line(upper, "upper")
-    if shape is None:
-        if lo is None and hi is None:
-            shape = "none"
-        elif hi is None:
-            shape = "positive" if lo == (0.0, 0.0) else "above"
-        elif lo is None:
-            shape = "below"
-        else:
-            shape = "between"
-    if shape not in SHAPES:
-        raise ValueError("shape must be one of %s, not %r" % (", ".join(map(repr, SHAPES)), shape))
+    shape = _options.name(SHAPES, _options.infer_shape(shape, lo, hi), "shape")
     need = {"above": (1, 0), "below": (0, 1), "between": (1, 1)}.get(shape, (0, 0))
     if shape == "positive" and lo not in (None, (0.0, 0.0)) or shape != "positive" and (
             (lo is not None) != bool(need[0]) or (hi is not None) != bool(need[1])):
@@ -70,29 +65,75 @@ def resolve_shape(shape, lower, upper):
     return shape, lo, hi
 
 
-def pack_options(shape="positive", lower=None, upper=None, *, alpha=1.0, form="paper",
-                 slopes="arithmetic", extrapolate="nan", margin=None, skipna=False,
-                 certify=True, want_gap=False, gap_intervals=(0, -1)):
-    """The float64 option vector of the gufunc (layout OPTION_LAYOUT).
-    gap_intervals: the least gap is taken over intervals [first, end) of each
-    fitted series (end -1: to the last)."""
+def resolve(shape=None, lower=None, upper=None, *, alpha=None, form=None, slopes=None,
+            extrapolate=None, margin=None, skipna=None, certify=None, errors=None):
+    """The options of the batch entry points (interp, the xarray accessor,
+    pandas.interpolate) with every None replaced by its default: a dict of
+    canonical values (docs/options.md)."""
     shape, lo, hi = resolve_shape(shape, lower, upper)
-    for name, table, v in (("form", FORMS, form), ("slopes", SLOPES, slopes),
-                           ("extrapolate", EXTRAPS, extrapolate)):
-        if not isinstance(v, (str, bool, type(None))) or v not in table:
-            raise ValueError("%s must be one of %s, not %r" % (
-                name, ", ".join(repr(k) for k in table if k is not None), v))
-    alpha = float(alpha)
+    sl = _options.enum("spline", "slopes", slopes, SLOPES)
+    if sl == "user":
+        raise ValueError("slopes must be one of %s, not 'user' (your own slopes: Spline)"
+                         % ", ".join(repr(t) for t in SLOPES if t != "user"))
+    alpha = float(_options.option("spline", "alpha", alpha))
     if not (alpha > 0 and np.isfinite(alpha)):
         raise ValueError("alpha must be finite and > 0, not %r" % alpha)
-    margin = DEFAULT_MARGIN if margin is None else float(margin)
+    margin = float(_options.option("spline", "margin", margin))
     if not (margin > 0 and np.isfinite(margin)):
         raise ValueError("margin must be finite and > 0, not %r" % margin)
-    lo = lo or (0.0, 0.0)
-    hi = hi or (0.0, 0.0)
-    return np.array([SHAPES[shape], FORMS[form], SLOPES[slopes], EXTRAPS[extrapolate], alpha,
-                     lo[0], lo[1], hi[0], hi[1], margin, bool(skipna), bool(certify),
-                     bool(want_gap), gap_intervals[0], gap_intervals[1]], dtype=np.float64)
+    return {"shape": shape, "lower": lo, "upper": hi, "alpha": alpha,
+            "form": _options.enum("spline", "form", form, FORMS), "slopes": sl,
+            "extrapolate": _options.extrapolate(extrapolate), "margin": margin,
+            "skipna": _options.flag("spline", "skipna", skipna),
+            "certify": _options.flag("spline", "certify", certify),
+            "errors": _options.errors(errors)}
+
+
+def pack(o, want_gap=False, gap_intervals=(0, -1)):
+    """The float64 option vector of the gufunc (layout OPTION_LAYOUT) from
+    resolved options (``resolve``)."""
+    lo = o["lower"] or (0.0, 0.0)
+    hi = o["upper"] or (0.0, 0.0)
+    return np.array([SHAPES.index(o["shape"]), FORMS.index(o["form"]), SLOPES.index(o["slopes"]),
+                     _EXTRAP_CODES[o["extrapolate"]], o["alpha"], lo[0], lo[1], hi[0], hi[1],
+                     o["margin"], bool(o["skipna"]), bool(o["certify"]), bool(want_gap),
+                     gap_intervals[0], gap_intervals[1]], dtype=np.float64)
+
+
+def pack_options(shape=None, lower=None, upper=None, *, alpha=None, form=None, slopes=None,
+                 extrapolate=None, margin=None, skipna=None, certify=None, want_gap=False,
+                 gap_intervals=(0, -1)):
+    """The float64 option vector of the gufunc (layout OPTION_LAYOUT); the
+    options as for ``interp``.  gap_intervals: the least gap is taken over
+    intervals [first, end) of each fitted series (end -1: to the last).
+    extrapolate='error' travels as NaN outside: the caller checks the
+    queries (``check_queries``)."""
+    o = resolve(shape, lower, upper, alpha=alpha, form=form, slopes=slopes,
+                extrapolate=extrapolate, margin=margin, skipna=skipna, certify=certify)
+    return pack(o, want_gap, gap_intervals)
+
+
+def check_queries(x, xq):
+    """extrapolate='error': TrigsplineError (TS_ERR_DOMAIN) naming the first
+    query outside its series' [x[0], x[-1]] (x (..., n) and xq (..., m)
+    broadcast over the leading axes).  NaN queries are not outside."""
+    if x.shape[-1] == 0 or xq.size == 0:
+        return
+    lo, hi = x[..., :1], x[..., -1:]
+    with np.errstate(invalid="ignore"):
+        out = (xq < lo) | (xq > hi)
+    if not out.any():
+        return
+    pos = tuple(int(i[0]) for i in np.nonzero(out))
+    q = np.broadcast_to(xq, out.shape)[pos]
+    series = pos[:-1]
+    s0 = np.broadcast_to(lo, out.shape[:-1] + (1,))[series + (0,)]
+    s1 = np.broadcast_to(hi, out.shape[:-1] + (1,))[series + (0,)]
+    raise TrigsplineError(_S.DOMAIN, "%squery %d (x = %s) lies outside [%s, %s] "
+                          "(extrapolate='error'; 'nan' gives NaN outside, 'extend', 'clamp' "
+                          "or 'linear' evaluate there)"
+                          % ("series %s: " % (series,) if series else "", pos[-1], num(q),
+                             num(s0), num(s1)), pos[-1], "query")
 
 
 class InterpResult:
@@ -139,10 +180,14 @@ def _coerce(a, name):
     return a
 
 
-def interp(x, f, xq, *, shape=None, lower=None, upper=None, alpha=1.0, form="paper",
-           slopes="arithmetic", extrapolate="nan", margin=None, skipna=False,
-           certify=True, axis=-1, full=False, gap=False, errors="nan"):
+def interp(x, f, xq, *, shape=None, lower=None, upper=None, alpha=None, form=None,
+           slopes=None, extrapolate=None, margin=None, skipna=None, certify=None,
+           errors=None, axis=-1, full=False, gap=False):
     """Interpolate every series of ``f`` along ``axis`` at ``xq``, certified.
+
+    The option keywords and their defaults are the package's one vocabulary
+    (docs/options.md), shared with :class:`Spline`, the xarray accessor and
+    :func:`trigspline.pandas.interpolate`.
 
     Parameters
     ----------
@@ -153,40 +198,49 @@ def interp(x, f, xq, *, shape=None, lower=None, upper=None, alpha=1.0, form="pap
         rounded so that the bound still holds and knots come back exactly).
     xq : array_like, (..., m)
         Queries (any order); broadcast against the other axes.
-    shape : {'positive', 'monotone', 'above', 'below', 'between', 'none'}, optional
-        The scheme of docs/method.md §5.  None infers it from ``lower`` /
-        ``upper``: ``lower=0`` alone is 'positive' (zeros allowed).
-    lower, upper : float or (m, c), optional
+    shape : {'none', 'positive', 'above', 'below', 'between', 'monotone'}, default inferred
+        The scheme of docs/method.md §5.  Left out, it follows from the
+        bounds: ``lower=0`` alone ``'positive'`` (zeros allowed), another
+        ``lower`` alone ``'above'``, ``upper`` alone ``'below'``, both
+        ``'between'``, neither ${shape}.
+    lower, upper : float or (m, c), default none
         Bounds: a constant or the line y = m x + c.
-    alpha, form, slopes, margin, certify
+    alpha : float, default ${alpha}
+    form : {'paper', 'c1', 'geometric'}, default ${form}
+    slopes : str, default ${slopes}
+    margin : float, default ${margin}
+    certify : bool, default ${certify}
         As for ``Spline`` (docs/method.md §3-§6).
-    extrapolate : {'nan', 'clamp', 'extend', 'linear'}
-        Queries outside a series' data: NaN (default, like xarray) or the
-        library's policies.
-    skipna : bool
-        Fit each series through its finite points only (gaps).
-    axis : int
-        The axis of ``f`` (and ``x``) holding the series.  The output has the
-        queries on the same axis.
-    full : bool
+    extrapolate : {'error', 'nan', 'clamp', 'extend', 'linear', True, False}, default ${extrapolate}
+        Queries outside a series' data: ``'error'`` raises a
+        ``TrigsplineError`` naming the first (before anything is fitted),
+        ``'nan'`` (``False``) gives NaN (as xarray's interp), or the
+        library's policies.  With ``skipna``, a series is fitted on its
+        finite points: queries beyond them but inside ``x`` give NaN.
+    skipna : bool, default ${skipna}
+        Fit each series through its finite points only (gaps); otherwise a
+        series holding NaN gives NaN.
+    errors : {'raise', 'nan'}, default ${errors}
+        A series that cannot be fitted: ``'raise'`` raises ValueError naming
+        the series and point, ``'nan'`` gives NaN and its status.  A data
+        gap (NaN, too few points) gives NaN either way.
+    axis : int, default -1
+        The axis of ``f`` (and ``x``) holding the series (numpy's gufunc
+        convention).  The output has the queries on the same axis.
+    full : bool, default False
         Return an :class:`InterpResult` (values, status, index, gap).
-    gap : bool
+    gap : bool, default False
         Compute each series' least certified gap (costs a second pass of
         the certificate).
-    errors : {'nan', 'raise'}
-        A series that cannot be fitted gives NaN and its status; with
-        'raise', a status other than a data gap (NaN, too few points) raises
-        ValueError naming the series and point.
 
     Returns
     -------
     ndarray, or InterpResult when ``full``.
     """
-    if errors not in ("nan", "raise"):
-        raise ValueError("errors must be 'nan' or 'raise', not %r" % (errors,))
-    opt = pack_options(shape, lower, upper, alpha=alpha, form=form, slopes=slopes,
-                       extrapolate=extrapolate, margin=margin, skipna=skipna,
-                       certify=certify, want_gap=gap)
+    o = resolve(shape, lower, upper, alpha=alpha, form=form, slopes=slopes,
+                extrapolate=extrapolate, margin=margin, skipna=skipna, certify=certify,
+                errors=errors)
+    opt = pack(o, want_gap=gap)
     f = _coerce(f, "f")
     x = _coerce(x, "x")
     xq = _coerce(xq, "xq")
@@ -198,8 +252,10 @@ def interp(x, f, xq, *, shape=None, lower=None, upper=None, alpha=1.0, form="pap
     qm = np.moveaxis(xq, axis - f.ndim + xq.ndim, -1) if xq.ndim > 1 else xq
     if xm.shape[-1] != fm.shape[-1]:
         raise ValueError("x has %d points along the axis, f has %d" % (xm.shape[-1], fm.shape[-1]))
+    if o["extrapolate"] == "error":
+        check_queries(xm, qm)
     y, status, index, g = _gufunc.interp(xm, fm, qm, opt)
-    if errors == "raise":
+    if o["errors"] == "raise":
         bad = (status != STATUS_OK) & ~np.isin(status, DATA_GAPS)
         if bad.any():
             where = tuple(int(i[0]) for i in np.nonzero(bad))
@@ -211,3 +267,6 @@ def interp(x, f, xq, *, shape=None, lower=None, upper=None, alpha=1.0, form="pap
     if full:
         return InterpResult(y, status, index, g)
     return y
+
+
+_options.document(interp)

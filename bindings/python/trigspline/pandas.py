@@ -8,7 +8,9 @@ index is converted to the old one's zone first).
 import numpy as np
 import pandas as pd
 
-from .interp import DATA_GAPS, STATUS_OK, interp, status_message
+from . import _options
+from .errors import _S, TrigsplineError
+from .interp import DATA_GAPS, STATUS_OK, interp, resolve, status_message
 
 __all__ = ["interpolate"]
 
@@ -32,10 +34,14 @@ def _check_index(index, xf):
                          "position %d (%s)" % (i, index[i], i - 1, index[i - 1]))
 
 
-def interpolate(obj, index, *, shape=None, bounds=None, lower=None, upper=None, form="paper",
-                alpha=1.0, slopes="arithmetic", margin=None, extrapolate="nan", skipna=True,
-                certify=True, errors="raise"):
+def interpolate(obj, index, *, shape=None, lower=None, upper=None, form=None, alpha=None,
+                slopes=None, margin=None, extrapolate=None, skipna=None, certify=None,
+                errors=None, bounds=None):
     """Interpolate a Series or DataFrame at ``index``.
+
+    The option keywords and their defaults are the package's one vocabulary
+    (docs/options.md), those of :func:`trigspline.interp` and
+    ``DataArray.trigspline.interp``.
 
     Parameters
     ----------
@@ -44,25 +50,38 @@ def interpolate(obj, index, *, shape=None, bounds=None, lower=None, upper=None, 
         numeric index.
     index : array_like or Index
         The new index (same kind as the old one).
-    shape, bounds, lower, upper, form, alpha, slopes, margin, extrapolate, certify
+    shape : {'none', 'positive', 'above', 'below', 'between', 'monotone'}, default inferred
+        Left out, it follows from the bounds: ``lower=0`` alone
+        ``'positive'``, another ``lower`` alone ``'above'``, ``upper`` alone
+        ``'below'``, both ``'between'``, neither ${shape}.
+    lower, upper : float or (m, c), default none
+    form : {'paper', 'c1', 'geometric'}, default ${form}
+    alpha : float, default ${alpha}
+    slopes : str, default ${slopes}
+    margin : float, default ${margin}
+    certify : bool, default ${certify}
         As for ``DataArray.trigspline.interp``.
-    skipna : bool
-        Fit through the finite values only (default True: gaps are common
-        in measured series); False gives NaN for a column holding NaN.
-    errors : {'raise', 'nan'}
+    extrapolate : {'error', 'nan', 'clamp', 'extend', 'linear', True, False}, default ${extrapolate}
+        New index values outside the old ones: ``'error'`` raises a
+        ``TrigsplineError`` naming the first, ``'nan'`` gives NaN, or the
+        library's policies.
+    skipna : bool, default ${skipna}
+        Fit through the finite values only (gaps); otherwise a column
+        holding NaN is NaN.
+    errors : {'raise', 'nan'}, default ${errors}
         Data the scheme refuses raise ValueError naming the column and the
         index value, or give a NaN column.
+    bounds : (lower, upper)
+        Deprecated: give ``lower=`` and ``upper=``.
 
     Returns
     -------
     The same type, on the new index; name, column labels and attrs kept.
     """
-    if bounds is not None:
-        if lower is not None or upper is not None:
-            raise ValueError("give bounds=(lower, upper) or lower=/upper=, not both")
-        lower, upper = bounds
-    if errors not in ("raise", "nan"):
-        raise ValueError("errors must be 'raise' or 'nan', not %r" % (errors,))
+    lower, upper = _options.split_bounds(bounds, lower, upper)
+    o = resolve(shape, lower, upper, alpha=alpha, form=form, slopes=slopes,
+                extrapolate=extrapolate, margin=margin, skipna=skipna, certify=certify,
+                errors=errors)
     if not isinstance(obj, (pd.Series, pd.DataFrame)):
         raise TypeError("interpolate takes a pandas Series or DataFrame, not %s"
                         % type(obj).__name__)
@@ -79,6 +98,14 @@ def interpolate(obj, index, *, shape=None, bounds=None, lower=None, upper=None, 
     xf = np.asarray(_as_float(old, epoch), dtype=np.float64)
     _check_index(old, xf)
     qf = np.asarray(_as_float(new, epoch), dtype=np.float64)
+    if o["extrapolate"] == "error" and xf.size:
+        with np.errstate(invalid="ignore"):
+            out = (qf < xf[0]) | (qf > xf[-1])
+        if out.any():
+            i = int(np.argmax(out))
+            raise TrigsplineError(_S.DOMAIN, "index value %s (position %d) lies outside [%s, "
+                                  "%s] (extrapolate='error'; 'nan' gives NaN outside)"
+                                  % (new[i], i, old[0], old[-1]), i, "query")
     frame = obj.to_frame() if isinstance(obj, pd.Series) else obj
     cols = [c for c in frame.columns if frame[c].dtype.kind in "fiu"]
     out = {}
@@ -88,10 +115,12 @@ def interpolate(obj, index, *, shape=None, bounds=None, lower=None, upper=None, 
         if not group:
             continue
         data = np.stack([np.asarray(frame[c], dtype=dtype) for c in group])
-        r = interp(xf, data, qf, shape=shape, lower=lower, upper=upper, alpha=alpha, form=form,
-                   slopes=slopes, extrapolate=extrapolate, margin=margin, skipna=skipna,
-                   certify=certify, full=True)
-        if errors == "raise":
+        r = interp(xf, data, qf, shape=o["shape"], lower=o["lower"], upper=o["upper"],
+                   alpha=o["alpha"], form=o["form"], slopes=o["slopes"],
+                   extrapolate="nan" if o["extrapolate"] == "error" else o["extrapolate"],
+                   margin=o["margin"], skipna=o["skipna"], certify=o["certify"],
+                   errors="nan", full=True)
+        if o["errors"] == "raise":
             bad = (r.status != STATUS_OK) & ~np.isin(r.status, DATA_GAPS)
             if bad.any():
                 j = int(np.argmax(bad))
@@ -108,3 +137,6 @@ def interpolate(obj, index, *, shape=None, bounds=None, lower=None, upper=None, 
                            columns=frame.columns)
     res.attrs = dict(obj.attrs)
     return res
+
+
+_options.document(interpolate)

@@ -5,9 +5,9 @@ from typing import Any, Optional, Tuple, Union
 
 import numpy as np
 
-from . import _core
-from ._util import (FORMS, SHAPES, SLOPE_ALIASES, SLOPES, TERMS, enum_value, float_array,
-                    is_scalar, num, to_float)
+from . import _core, _options
+from ._options import FORMS, SHAPES, SLOPES, TERMS
+from ._util import float_array, is_scalar, num, to_float
 from .errors import (_S, TrigsplineError, domain_error, library_error, simple_error,
                      spline_error, strerror)
 
@@ -20,30 +20,27 @@ _MODE_NAMES = {v: k for k, v in _MODES.items()}
 
 
 def _mode(extrapolate, default=None):
-    """The per-call policy: True = 'extend', False = 'nan' (SciPy), or a name."""
-    if extrapolate is None:
+    """The per-call policy: None the default (the spline's), True = 'extend',
+    False = 'nan' (SciPy), or a name (docs/options.md)."""
+    if extrapolate is None and default is not None:
         return default
-    if extrapolate is True:
-        return _core.MODE_EXTEND
-    if extrapolate is False:
-        return _core.MODE_NAN
-    if isinstance(extrapolate, str) and extrapolate.lower() in _MODES:
-        return _MODES[extrapolate.lower()]
-    raise ValueError("extrapolate must be True, False, 'extend', 'clamp', 'linear', 'nan' or "
-                     "'error', not %r ('periodic' is not supported)" % (extrapolate,))
+    return _MODES[_options.extrapolate(extrapolate)]
 
 
 def _line(value, what):
-    """(m, c) from any pair of numbers."""
+    """(m, c) from a number c (the line y = c) or a pair (m, c)."""
     if value is None:
         return None
+    if is_scalar(value):
+        return (0.0, to_float(value, what))
     try:
         items = list(value)
     except TypeError:
-        raise TypeError("%s must be a pair (m, c) for the line y = m*x + c" % what) from None
+        raise TypeError("%s must be a number or a pair (m, c) for the line y = m*x + c"
+                        % what) from None
     if len(items) != 2:
-        raise ValueError("%s must be a pair (m, c) for the line y = m*x + c, got %d values"
-                         % (what, len(items)))
+        raise ValueError("%s must be a number or a pair (m, c) for the line y = m*x + c, got "
+                         "%d values" % (what, len(items)))
     return (to_float(items[0], what + "[0]"), to_float(items[1], what + "[1]"))
 
 
@@ -71,24 +68,29 @@ def _report_dict(r):
             "excursion_above": r[18], "excursion_below": r[19]}
 
 
-def estimate_slopes(x: ArrayLike, f: ArrayLike, method: str = "arithmetic") -> np.ndarray:
+def estimate_slopes(x: ArrayLike, f: ArrayLike, slopes: Optional[str] = None, *,
+                    method: Optional[str] = None) -> np.ndarray:
     """Slopes d_i of docs/method.md §6 at every point (``ts_slopes_compute``).
 
     Parameters
     ----------
     x, f : array_like, shape (n,)
         Points, x strictly increasing.
+    slopes : str, default ${slopes}
+        ``'arithmetic'``, ``'geometric'``, ``'harmonic'``, ``'fritsch-carlson'``,
+        ``'akima'``, ``'makima'`` or ``'periodic'`` (the ``slopes`` of
+        :class:`Spline`).
     method : str
-        ``'arithmetic'``, ``'geometric'``, ``'harmonic'``, ``'fritsch_carlson'``
-        (``'pchip'``), ``'akima'``, ``'makima'`` or ``'periodic'``.
+        Deprecated name of ``slopes``.
 
     Returns
     -------
     ndarray, shape (n,)
     """
-    m = enum_value(SLOPES, method, "method", SLOPE_ALIASES)
+    slopes = _options.renamed("method", "slopes", method, slopes)
+    m = SLOPES.index(_options.enum("spline", "slopes", slopes, SLOPES))
     if SLOPES[m] == "user":
-        raise ValueError("method 'user' has nothing to estimate")
+        raise ValueError("slopes 'user' has nothing to estimate")
     xa, fa = float_array(x, "x", 1), float_array(f, "f", 1)
     try:
         return _core.slopes_compute(m, xa, fa)
@@ -99,6 +101,9 @@ def estimate_slopes(x: ArrayLike, f: ArrayLike, method: str = "arithmetic") -> n
         raise spline_error(e, {"x": xa, "f": fa}) from None
 
 
+_options.document(estimate_slopes)
+
+
 def _rebuild(state):
     """Unpickling: a Spline from its inputs (see Spline.__reduce__)."""
     return Spline(state["x"], state["f"], **state["kwargs"])
@@ -107,10 +112,17 @@ def _rebuild(state):
 class Spline:
     """The shape-preserving trigonometric spline through (x[i], f[i]).
 
-    A drop-in for :class:`scipy.interpolate.PchipInterpolator` (the same call
-    signature, evaluation, derivatives, integrals, roots and ``axis``) that
-    can also keep the curve positive, above or below a line, between two
-    lines, or monotone, certified exactly on every interval.
+    SciPy's interpolator interface (:class:`scipy.interpolate.PchipInterpolator`:
+    the same call signature, evaluation, derivatives, integrals, roots and
+    ``axis``); it can also keep the curve positive, above or below a line,
+    between two lines, or monotone, certified exactly on every interval.
+    Unlike SciPy, a query outside the data raises by default (the library's
+    ``extrapolate='error'``): ``extrapolate=True`` gives SciPy's behaviour.
+
+    The keywords and their defaults are the package's one vocabulary
+    (docs/options.md), shared with :func:`trigspline.interp`, the xarray
+    accessor, :func:`trigspline.pandas.interpolate`, :class:`Surface` and
+    :class:`Curve`; the defaults are the library's (``ts_options_init``).
 
     Parameters
     ----------
@@ -120,39 +132,43 @@ class Spline:
         Values; ``f`` is interpolated along ``axis``.  Several series (the
         other axes) are fitted independently, each with its own β and
         certificate.
-    axis : int, optional
-        The axis of ``f`` along the knots (default 0, as SciPy).
-    extrapolate : {True, False, 'extend', 'clamp', 'linear', 'nan', 'error'}, optional
-        Default policy outside ``[x[0], x[-1]]``: ``True``/``'extend'`` (the
-        default, as SciPy) continues the end interval's own formula,
-        ``False``/``'nan'`` gives NaN, ``'clamp'`` the end value (derivatives
-        0), ``'linear'`` the tangent line at the end, ``'error'`` raises.
-        Shape guarantees hold on ``[x[0], x[-1]]`` only; ``'clamp'`` keeps
-        positivity and constant bounds outside too.
-    shape : {'none', 'positive', 'above', 'below', 'between', 'monotone'}
+    axis : int, default 0
+        The axis of ``f`` along the knots (as SciPy's interpolators).
+    extrapolate : {'error', 'clamp', 'extend', 'linear', 'nan', True, False}, default ${extrapolate}
+        Policy outside ``[x[0], x[-1]]``: ``'error'`` raises naming the
+        query; ``'extend'`` (``True``, SciPy's default) continues the end
+        interval's own formula; ``'nan'`` (``False``) gives NaN; ``'clamp'``
+        the end value (derivatives 0); ``'linear'`` the tangent line at the
+        end.  Shape guarantees hold on ``[x[0], x[-1]]`` only; ``'clamp'``
+        keeps positivity and constant bounds outside too.
+    shape : {'none', 'positive', 'above', 'below', 'between', 'monotone'}, default inferred
         The region the spline must stay in (docs/method.md §5); ``'none'``
-        uses ``beta`` as given.
-    alpha, beta : float or array_like of n-1 floats
-        Tension parameters; ``beta`` only with ``shape='none'`` (the schemes
-        compute β).
-    margin : float or array_like, optional
-        The margin t of docs/method.md §5 (``None``: the library default).
-    line, lower, upper : (m, c), optional
-        Lines y = m x + c for ``'above'``/``'below'`` (``line``) and
-        ``'between'`` (``lower`` and ``upper``).
-    slopes : str, optional
-        Slope estimate (docs/method.md §6): ``'arithmetic'``, ``'geometric'``,
-        ``'harmonic'``, ``'fritsch_carlson'`` (``'pchip'``), ``'akima'``,
-        ``'makima'``, ``'periodic'``; ``None`` is the library default.
-    slopes_values : array_like, optional
-        Your own slopes d_i, the shape of ``f`` (as ``dydx`` of SciPy's
-        ``CubicHermiteSpline``).
-    form : {'paper', 'c1', 'geometric'}, optional
-        docs/method.md §3/§4; ``None`` is the library default
-        (``ts_options_init``).
-    certify : bool
+        uses ``beta`` as given.  Left out, it follows from the bounds:
+        ``lower=0`` alone ``'positive'`` (zeros allowed), another ``lower``
+        alone ``'above'``, ``upper`` alone ``'below'``, both ``'between'``,
+        neither ${shape}.
+    lower, upper : float or (m, c), default none
+        The lines y = m x + c (a number c: y = c) of ``'above'`` (``lower``),
+        ``'below'`` (``upper``) and ``'between'`` (both).
+    alpha : float or array_like of n-1 floats, default ${alpha}
+        Tension parameter α (docs/method.md §3), > 0.
+    beta : float or array_like of n-1 floats, default ${beta}
+        β, only with ``shape='none'`` (the schemes compute β).
+    margin : float or array_like of n-1 floats, default ${margin}
+        The margin t of docs/method.md §5.
+    slopes : str or array_like, default ${slopes}
+        Slope estimate (docs/method.md §6): ``'arithmetic'``,
+        ``'geometric'``, ``'harmonic'``, ``'fritsch-carlson'``, ``'akima'``,
+        ``'makima'``, ``'periodic'``; or your own slopes d_i, an array the
+        shape of ``f`` (as ``dydx`` of SciPy's ``CubicHermiteSpline``).
+    form : {'paper', 'c1', 'geometric'}, default ${form}
+        docs/method.md §3/§4.
+    certify : bool, default ${certify}
         ``False`` skips the exact certificate where the scheme is a proof by
         itself.
+    line, slopes_values
+        Deprecated: ``line`` is ``lower`` (``'above'``) or ``upper``
+        (``'below'``); ``slopes_values`` is ``slopes`` given an array.
 
     Raises
     ------
@@ -168,13 +184,11 @@ class Spline:
     """
 
     def __init__(self, x: ArrayLike, f: ArrayLike, axis: int = 0,
-                 extrapolate: Extrapolate = None, *, shape: str = "none",
-                 alpha: Any = None, beta: Any = None, margin: Any = None,
-                 line: Optional[Tuple[float, float]] = None,
-                 lower: Optional[Tuple[float, float]] = None,
-                 upper: Optional[Tuple[float, float]] = None, slopes: Optional[str] = None,
-                 slopes_values: ArrayLike = None, form: Optional[str] = None,
-                 certify: bool = True) -> None:
+                 extrapolate: Extrapolate = None, *, shape: Optional[str] = None,
+                 lower: Any = None, upper: Any = None, alpha: Any = None, beta: Any = None,
+                 margin: Any = None, slopes: Any = None, form: Optional[str] = None,
+                 certify: Optional[bool] = None, line: Optional[Tuple[float, float]] = None,
+                 slopes_values: ArrayLike = None) -> None:
         xa = float_array(x, "x", 1)
         fa = float_array(f, "f")
         if fa.ndim == 0:
@@ -187,37 +201,47 @@ class Spline:
             raise TrigsplineError(_S.LENGTH, "x has %d values but f has %d along axis %d"
                                   % (xa.size, fa.shape[ax], ax))
         n = max(xa.size - 1, 0)
-        self._mode = _mode(extrapolate, _core.MODE_EXTEND)
-        kwargs = {"axis": ax, "extrapolate": _MODE_NAMES[self._mode], "shape": shape,
-                  "certify": bool(certify)}
-        opts = {"shape": enum_value(SHAPES, shape, "shape"), "certify": 1 if certify else 0}
-        shp = SHAPES[opts["shape"]]
-        if form is not None:
-            opts["form"] = enum_value(FORMS, form, "form")
-            kwargs["form"] = form
-        # lines
-        line, lower, upper = _line(line, "line"), _line(lower, "lower"), _line(upper, "upper")
+        self._mode = _mode(extrapolate)
+        slopes = _options.renamed("slopes_values", "slopes", slopes_values, slopes)
+        certify = _options.flag("spline", "certify", certify)
+        form = _options.enum("spline", "form", form, FORMS)
+        # bounds and shape
+        lower, upper = _line(lower, "lower"), _line(upper, "upper")
+        if line is not None:
+            _options.deprecated("line= is deprecated; use lower= (shape='above') or upper= "
+                                "(shape='below') (docs/options.md)")
+            line = _line(line, "line")
+            side = {"above": "lower", "below": "upper"}.get(
+                shape.strip().lower() if isinstance(shape, str) else shape)
+            if side is None:
+                raise ValueError("line= goes with shape='above' or 'below' (use lower= and "
+                                 "upper= for 'between')")
+            given = lower if side == "lower" else upper
+            if given is not None and given != line:
+                raise ValueError("shape=%r: give line or %s, not both" % (shape, side))
+            if side == "lower":
+                lower = line
+            else:
+                upper = line
+        shp = _options.name(SHAPES, _options.infer_shape(shape, lower, upper), "shape")
+        if shp == "positive" and lower == (0.0, 0.0) and upper is None:
+            lower = None  # lower=0: the positive scheme's own bound (as interp)
         if shp == "above":
-            if line is not None and lower is not None and line != lower:
-                raise ValueError("shape='above': give line or lower, not both")
-            lower = lower if lower is not None else line
             if lower is None or upper is not None:
-                raise ValueError("shape='above' needs the line: line=(m, c)")
+                raise ValueError("shape='above' needs the line lower=(m, c) alone")
         elif shp == "below":
-            if line is not None and upper is not None and line != upper:
-                raise ValueError("shape='below': give line or upper, not both")
-            upper = upper if upper is not None else line
             if upper is None or lower is not None:
-                raise ValueError("shape='below' needs the line: line=(m, c)")
+                raise ValueError("shape='below' needs the line upper=(m, c) alone")
         elif shp == "between":
-            if line is not None:
-                raise ValueError("shape='between' takes lower=(m, c) and upper=(m, c), not line")
             if lower is None or upper is None:
                 raise ValueError("shape='between' needs lower=(m, c) and upper=(m, c)")
-        elif line is not None or lower is not None or upper is not None:
-            raise ValueError("line, lower and upper go with shape='above', 'below' or "
-                             "'between', not %r" % shp)
-        opts["lower"], opts["upper"] = lower, upper
+        elif lower is not None or upper is not None:
+            raise ValueError("lower and upper go with shape='above', 'below' or 'between', "
+                             "not %r" % shp)
+        kwargs = {"axis": ax, "extrapolate": _MODE_NAMES[self._mode], "shape": shp,
+                  "certify": certify, "form": form}
+        opts = {"shape": SHAPES.index(shp), "certify": 1 if certify else 0,
+                "form": FORMS.index(form), "lower": lower, "upper": upper}
         if lower is not None:
             kwargs["lower"] = lower
         if upper is not None:
@@ -230,29 +254,29 @@ class Spline:
                     continue
                 raise ValueError("beta is chosen by the shape scheme (shape=%r); leave it "
                                  "out and set alpha and margin instead" % shp)
-            sc, arr = _per_interval(value, name, n)
+            sc, arr = _per_interval(_options.option("spline", name, value), name, n)
             if sc is not None:
                 opts[name] = sc
                 kwargs[name] = sc
             elif arr is not None:
                 opts[name + "s"] = arr
                 kwargs[name] = arr
-        # slopes
+        # slopes: a name, or the slopes themselves
         sv = None
-        if slopes_values is not None:
-            if slopes not in (None, "user"):
-                raise ValueError("slopes_values gives the slopes: leave slopes out")
-            sv = np.array(slopes_values, dtype=np.float64)  # a copy: kept for pickling
+        if slopes is not None and not isinstance(slopes, str):
+            sv = np.array(slopes, dtype=np.float64)  # a copy: kept for pickling
             if sv.shape != fa.shape:
-                raise TrigsplineError(_S.LENGTH, "slopes_values has shape %r; it needs one "
-                                      "slope per value of f, shape %r" % (sv.shape, fa.shape))
+                raise TrigsplineError(_S.LENGTH, "slopes has shape %r; your own slopes need "
+                                      "one per value of f, shape %r" % (sv.shape, fa.shape))
             opts["slopes"] = SLOPES.index("user")
-            kwargs["slopes_values"] = sv
-        elif slopes is not None:
-            opts["slopes"] = enum_value(SLOPES, slopes, "slopes", SLOPE_ALIASES)
-            if SLOPES[opts["slopes"]] == "user":
-                raise ValueError("slopes='user' needs slopes_values (one slope per point)")
-            kwargs["slopes"] = slopes
+            kwargs["slopes"] = sv
+        else:
+            sname = _options.enum("spline", "slopes", slopes, SLOPES)
+            if sname == "user":
+                raise ValueError("slopes='user': give the slopes themselves, slopes=array "
+                                 "(one per point)")
+            opts["slopes"] = SLOPES.index(sname)
+            kwargs["slopes"] = sname
         self._kwargs = kwargs
         self._axis = ax
         self._shape = shp
@@ -389,7 +413,7 @@ class Spline:
 
     @property
     def extrapolate(self) -> str:
-        """The default extrapolation policy ('extend', 'clamp', 'linear', 'nan', 'error')."""
+        """The spline's extrapolation policy ('error', 'clamp', 'extend', 'linear', 'nan')."""
         return _MODE_NAMES[self._mode]
 
     @property
@@ -418,7 +442,8 @@ class Spline:
             Derivative order >= 0 (closed form; orders above 2 in the paper
             and c1 forms only).
         extrapolate : optional
-            Policy for this call (see the class); ``None``: the spline's.
+            Policy for this call (the values of the class); default: the
+            spline's own (``self.extrapolate``).
         threads : int, optional
             Split a large batch over threads (0: all cores).
         out : ndarray, optional
@@ -662,6 +687,9 @@ class Spline:
         except _core.LibraryError as e:
             raise library_error(e) from None
         return (b, per) if per_interval else b
+
+
+_options.document(Spline)
 
 
 class Derivative:

@@ -5,15 +5,13 @@ from typing import Any, Optional, Tuple
 
 import numpy as np
 
-from . import _core
-from ._util import (FORMS, SLOPE_ALIASES, SLOPES, WHERE_NAMES, enum_value, float_array,
-                    is_scalar, num, to_float)
+from . import _core, _options
+from ._options import FORMS, SLOPES, SURFACE_SHAPES
+from ._util import WHERE_NAMES, float_array, is_scalar, num, to_float
 from .errors import _S, TrigsplineError, library_error, strerror
 
 ArrayLike = Any
 Plane = Tuple[float, float, float]
-
-SURFACE_SHAPES = ("none", "positive", "bounds", "planes", "range")
 
 _F8 = np.float64
 REPORT_DTYPE = np.dtype([
@@ -140,43 +138,50 @@ class Surface:
     z : array_like, shape (nx, ny)
         ``z[i, j]`` is the value at ``(x[i], y[j])``, as RegularGridInterpolator's
         ``values``.  A Fortran-ordered float64 array goes to C without a copy.
-    shape : {'none', 'positive', 'bounds', 'planes', 'range'}
+    The keywords and their defaults are the package's one vocabulary
+    (docs/options.md); the defaults are the library's
+    (``ts_surface_options_init``).
+
+    shape : {'none', 'positive', 'bounds', 'planes', 'range'}, default inferred
         The region (docs/method.md §11.3): ``'positive'`` S >= 0 (zeros in
         the data allowed); ``'bounds'`` constant ``lower <= S <= upper`` (either
         side; the data may touch them, e.g. 0 and 100 for percentages);
         ``'planes'`` ``lower < S < upper`` for planes (sloped planes need
         ``form='geometric'``, where they are exact); ``'range'``
         ``min(z) <= S <= max(z)`` (no overshoot); ``'none'``: no promise.
-    lower, upper : float or (p, q, c), optional
+        Left out, it follows from the bounds: ``lower=0`` alone
+        ``'positive'``, other constants ``'bounds'``, a sloped plane
+        ``'planes'``, neither ${shape}.
+    lower, upper : float or (p, q, c), default none
         The bounds of ``'bounds'`` (numbers) and ``'planes'`` (a number c or
         the plane z = p x + q y + c).
-    form : {'paper', 'c1', 'geometric'}, optional
-        docs/method.md §11.2; ``None`` is the library's default
-        (``ts_surface_options_init``, the paper form): continuous; ``'c1'``
-        and ``'geometric'`` are C¹, the geometric form reproduces planes (and
+    form : {'paper', 'c1', 'geometric'}, default ${form}
+        docs/method.md §11.2: the paper form is continuous; ``'c1'`` and
+        ``'geometric'`` are C¹, the geometric form reproduces planes (and
         bilinear data) exactly.
-    slopes : str, optional
+    slopes : str, default ${slopes}
         The 1-D slope method applied along every grid line (docs/method.md
-        §6): ``'arithmetic'`` (the library default), ``'geometric'``,
-        ``'harmonic'``, ``'fritsch_carlson'`` (``'pchip'``), ``'akima'``,
-        ``'makima'``.
-    alpha : float, optional
-        Lower bound on every shape parameter a (default 1); with
-        ``shape='none'`` a = alpha + beta.
-    beta : float, optional
-        ``shape='none'`` only (default 0).
-    margin : float, optional
-        The margin t of docs/method.md §5 (default the library's, 0.01).
-    zero_twist : bool
+        §6): ``'arithmetic'``, ``'geometric'``, ``'harmonic'``,
+        ``'fritsch-carlson'``, ``'akima'``, ``'makima'``.
+    alpha : float, default ${alpha}
+        Lower bound on every shape parameter a; with ``shape='none'`` a =
+        alpha + beta.
+    beta : float, default ${beta}
+        ``shape='none'`` only.
+    margin : float, default ${margin}
+        The margin t of docs/method.md §5.
+    zero_twist : bool, default ${zero_twist}
         Cross slopes r = 0 instead of the estimate (docs/method.md §11.1).
-    bounds_error : bool
-        As RegularGridInterpolator: a query outside the grid raises
-        (``True``, the default) or gets ``fill_value``.  NaN queries give NaN
-        either way.
-    fill_value : float
-        The value outside the grid when ``bounds_error=False`` (default
-        NaN).  ``None`` (SciPy's extrapolation) is not offered: the surface
-        and its certificate live on the grid.
+    extrapolate : {'error', 'nan', False}, default ${extrapolate}
+        A query outside the grid raises (``'error'``) or gets ``fill_value``
+        (``'nan'``).  NaN queries give NaN either way.
+    bounds_error : bool, default True
+        RegularGridInterpolator's spelling of ``extrapolate``: ``True`` is
+        ``'error'``, ``False`` ``'nan'``.
+    fill_value : float, default nan
+        The value outside the grid under ``extrapolate='nan'``.  ``None``
+        (SciPy's extrapolation) is not offered: the surface and its
+        certificate live on the grid.
 
     Raises
     ------
@@ -194,11 +199,12 @@ class Surface:
     """
 
     def __init__(self, x: ArrayLike, y: ArrayLike, z: ArrayLike = None, *,
-                 shape: str = "none", lower: Any = None, upper: Any = None,
+                 shape: Optional[str] = None, lower: Any = None, upper: Any = None,
                  form: Optional[str] = None, slopes: Optional[str] = None,
                  alpha: Optional[float] = None, beta: Optional[float] = None,
-                 margin: Optional[float] = None, zero_twist: bool = False,
-                 bounds_error: bool = True, fill_value: Optional[float] = np.nan) -> None:
+                 margin: Optional[float] = None, zero_twist: Optional[bool] = None,
+                 extrapolate: Any = None, bounds_error: Optional[bool] = None,
+                 fill_value: Optional[float] = np.nan) -> None:
         if z is None:
             if isinstance(x, (tuple, list)) and len(x) == 2 and np.ndim(x[0]) == 1:
                 x, y, z = x[0], x[1], y  # RegularGridInterpolator((x, y), z)
@@ -214,33 +220,37 @@ class Surface:
             raise TrigsplineError(_S.LENGTH, "z has shape %r; a grid of %d x values and %d y "
                                   "values needs shape (%d, %d)%s" % (
                                       za.shape, xa.size, ya.size, xa.size, ya.size, hint))
-        shp = SURFACE_SHAPES[enum_value(SURFACE_SHAPES, shape, "shape")]
-        defaults = _core.surface_options_defaults()
-        opts = {"shape": SURFACE_SHAPES.index(shp), "zero_twist": bool(zero_twist)}
-        kwargs = {"shape": shp, "zero_twist": bool(zero_twist),
-                  "bounds_error": bool(bounds_error)}
-        if form is not None:
-            opts["form"] = enum_value(FORMS, form, "form")
-            kwargs["form"] = FORMS[opts["form"]]
-        form_index = opts.get("form", defaults[0])
-        if slopes is not None:
-            m = enum_value(SLOPES, slopes, "slopes", SLOPE_ALIASES)
-            if SLOPES[m] in ("user", "periodic"):
-                raise ValueError("slopes=%r is not offered for surfaces (the slopes are "
-                                 "estimated along every grid line)" % slopes)
-            opts["slopes"] = m
-            kwargs["slopes"] = SLOPES[m]
+        ext = _options.extrapolate(extrapolate, "surface", ("error", "nan"))
+        if bounds_error is not None:
+            if extrapolate is not None and (ext == "error") != bool(bounds_error):
+                raise ValueError("bounds_error=%r contradicts extrapolate=%r"
+                                 % (bounds_error, extrapolate))
+            ext = "error" if bounds_error else "nan"
+        zero_twist = _options.flag("surface", "zero_twist", zero_twist)
+        form = _options.enum("surface", "form", form, FORMS)
+        lo, up = _plane(lower, "lower"), _plane(upper, "upper")
+        shp = _options.name(SURFACE_SHAPES, _options.infer_shape(shape, lo, up, "surface"),
+                            "shape")
+        if shape is None and shp == "positive":
+            lo = None  # lower=0 alone: the positive scheme's own bound
+        opts = {"shape": SURFACE_SHAPES.index(shp), "zero_twist": zero_twist,
+                "form": FORMS.index(form)}
+        kwargs = {"shape": shp, "zero_twist": zero_twist, "extrapolate": ext, "form": form}
+        form_index = opts["form"]
+        sl = _options.enum("surface", "slopes", slopes, SLOPES)
+        if sl in ("user", "periodic"):
+            raise ValueError("slopes=%r is not offered for surfaces (the slopes are "
+                             "estimated along every grid line)" % slopes)
+        opts["slopes"] = SLOPES.index(sl)
+        kwargs["slopes"] = sl
         for name, value in (("alpha", alpha), ("beta", beta), ("margin", margin)):
-            if value is None:
-                continue
-            v = to_float(value, name)
             if name == "beta" and shp != "none":
-                if v == 0.0:
+                if value is None or to_float(value, name) == 0.0:
                     continue
                 raise ValueError("beta is chosen by the shape scheme (shape=%r); leave it out "
                                  "and set alpha and margin instead" % shp)
+            v = to_float(_options.option("surface", name, value), name)
             opts[name] = kwargs[name] = v
-        lo, up = _plane(lower, "lower"), _plane(upper, "upper")
         if shp in ("bounds", "planes"):
             if lo is None and up is None:
                 raise ValueError("shape=%r needs lower= and/or upper=" % shp)
@@ -269,7 +279,7 @@ class Surface:
                              "number")
         self._fill = to_float(fill_value, "fill_value")
         kwargs["fill_value"] = self._fill
-        self._mode = _core.SURF_ERROR if bounds_error else _core.SURF_FILL
+        self._mode = _core.SURF_ERROR if ext == "error" else _core.SURF_FILL
         self._kwargs = kwargs
         self._shape = shp
         if shp == "positive":
@@ -361,8 +371,8 @@ class Surface:
         return TrigsplineError(st, "%s: %s" % (msg, base) if msg else base)
 
     def _outside(self, what, k, v, lim):
-        return TrigsplineError(_S.DOMAIN, "%s = %s lies outside [%s, %s] (bounds_error=True; "
-                               "bounds_error=False gives fill_value)" % (
+        return TrigsplineError(_S.DOMAIN, "%s = %s lies outside [%s, %s] (extrapolate='error'; "
+                               "extrapolate='nan' gives fill_value)" % (
                                    what, v, num(lim[0]), num(lim[1])), k, "query")
 
     # ---- pickling and copies: rebuilt from the inputs -----------------------
@@ -397,7 +407,7 @@ class Surface:
                 msg = "%s (x = %s, y = %s)" % (labels(k) if labels else "point %d" % k,
                                                num(xs[k]), num(ys[k]))
                 raise TrigsplineError(_S.DOMAIN, "%s lies outside the grid [%s, %s] x [%s, %s] "
-                                      "(bounds_error=True; bounds_error=False gives "
+                                      "(extrapolate='error'; extrapolate='nan' gives "
                                       "fill_value)" % (msg, num(self._x[0]), num(self._x[-1]),
                                                        num(self._y[0]), num(self._y[-1])),
                                       k, "query") from None
@@ -469,12 +479,12 @@ class Surface:
         ndarray
             Shape ``points.shape[:-1]`` (RegularGridInterpolator), ``(len(x),
             len(y))`` on a grid, or the broadcast shape of ``x`` and ``y``.
-            NaN coordinates give NaN; outside the grid see ``bounds_error``.
+            NaN coordinates give NaN; outside the grid see ``extrapolate``.
 
         Raises
         ------
         TrigsplineError
-            ``bounds_error=True`` and a query outside the grid (named).
+            ``extrapolate='error'`` and a query outside the grid (named).
         """
         d = self._nu(nu)
         res, shape = self._evaluate(xi, yi, grid, d)
@@ -627,6 +637,11 @@ class Surface:
         return self._bounds
 
     @property
+    def extrapolate(self) -> str:
+        """'error' or 'nan' (fill_value) outside the grid."""
+        return "error" if self._mode == _core.SURF_ERROR else "nan"
+
+    @property
     def bounds_error(self) -> bool:
         return self._mode == _core.SURF_ERROR
 
@@ -642,3 +657,6 @@ class Surface:
             raise TrigsplineError(_S.INDEX, "patch (%d, %d) does not exist (%d x %d patches)"
                                   % (i, j, self._nx, self._ny), (i, j), "patch", patch=(i, j))
         return self._h.control(i, j)
+
+
+_options.document(Surface, "surface")

@@ -1,4 +1,4 @@
-"""xarray accessor: ``da.trigspline.interp(time=new_times, bounds=(0, None))``.
+"""xarray accessor: ``da.trigspline.interp(time=new_times, lower=0)``.
 
 Importing this module registers the ``trigspline`` accessor on DataArray and
 Dataset.  Interpolation runs one certified spline per series along one
@@ -24,13 +24,14 @@ import warnings
 import numpy as np
 import xarray as xr
 
-from . import _gufunc
-from .interp import DATA_GAPS, STATUS_OK, pack_options, status_message
+from . import _gufunc, _options
+from .errors import _S, TrigsplineError
+from .interp import DATA_GAPS, STATUS_OK, pack, resolve, status_message
 
 __all__ = ["TrigsplineAccessor", "TrigsplineDatasetAccessor", "halo_knots", "summary"]
 
 _LOCAL_FORMS = ("paper", "geometric")
-_THREE_POINT = ("arithmetic", "geometric", "harmonic", "fritsch_carlson", "pchip")
+_THREE_POINT = ("arithmetic", "geometric", "harmonic", "fritsch-carlson")
 _FIVE_POINT = ("akima", "makima")
 
 
@@ -40,6 +41,7 @@ def halo_knots(slopes):
     Akima slope i-2..i+2 (docs/method.md §6).  The queries of a chunk lie in
     its intervals s..e-1 (the last one ends at the next chunk's first knot e),
     so it needs knots s-1..e+1 (three-point) or s-2..e+2 (Akima)."""
+    slopes = _options.name(_options.SLOPES, slopes, "slopes")
     if slopes in _THREE_POINT:
         return 2
     if slopes in _FIVE_POINT:
@@ -99,12 +101,18 @@ def _raise_status(status, index, dims, coords, dim, dim_values, offset=None, val
                      % (dim, _series_label(dims, coords, where), status_message(code), at))
 
 
-def _options(shape, bounds, lower, upper, kw):
-    if bounds is not None:
-        if lower is not None or upper is not None:
-            raise ValueError("give bounds=(lower, upper) or lower=/upper=, not both")
-        lower, upper = bounds
-    return pack_options(shape, lower, upper, **kw)
+def _check_new(dim, newv, qf, old, xf):
+    """extrapolate='error': the first new coordinate value outside the old ones."""
+    if not xf.size:
+        return
+    with np.errstate(invalid="ignore"):
+        out = (qf < xf[0]) | (qf > xf[-1])
+    if out.any():
+        i = int(np.argmax(out))
+        raise TrigsplineError(_S.DOMAIN, "trigspline.interp along %r: new value %s (position "
+                              "%d) lies outside [%s, %s] (extrapolate='error'; 'nan' gives "
+                              "NaN outside, as xarray's interp)" % (
+                                  dim, newv[i], i, old[0], old[-1]), i, "query")
 
 
 def _status_block(f, x, q, opt):
@@ -218,14 +226,12 @@ def summary(certificate):
             "messages": {int(k): status_message(k) for k in codes}}
 
 
-def _interp_dataarray(da, dim, new, shape, bounds, lower, upper, errors, certificate, kw):
+def _interp_dataarray(da, dim, new, o, certificate):
+    """o: the resolved options (interp.resolve)."""
     if dim not in da.dims:
         raise ValueError("%r is not a dimension of this DataArray (dims %s)" % (dim, da.dims))
-    if errors not in ("raise", "nan"):
-        raise ValueError("errors must be 'raise' or 'nan', not %r" % (errors,))
-    kw = dict(kw)
-    kw["want_gap"] = bool(certificate)
-    opt = _options(shape, bounds, lower, upper, kw)
+    errors = o["errors"]
+    opt = pack(o, want_gap=bool(certificate))
     old = da[dim].values
     epoch = old[0] if old.dtype.kind == "M" and old.size else None
     xf = _to_float(old, epoch)
@@ -236,6 +242,8 @@ def _interp_dataarray(da, dim, new, shape, bounds, lower, upper, errors, certifi
     if (newv.dtype.kind == "M") != (old.dtype.kind == "M"):
         raise TypeError("new %r values are %s, the coordinate is %s" % (dim, newv.dtype, old.dtype))
     qf = _to_float(newv.astype(old.dtype) if old.dtype.kind == "M" else newv, epoch)
+    if o["extrapolate"] == "error":
+        _check_new(dim, newv, qf, old, xf)
     f = da.variable.data
     if f.dtype.kind not in "f" or f.dtype.itemsize not in (4, 8):
         f = f.astype(np.float64)
@@ -247,22 +255,20 @@ def _interp_dataarray(da, dim, new, shape, bounds, lower, upper, errors, certifi
     cert = None
     chunked = _is_dask(fm) and len(fm.chunks[-1]) > 1
     if chunked:
-        halo = halo_knots(kw.get("slopes", "arithmetic"))
-        local = (halo is not None and kw.get("form", "paper") in _LOCAL_FORMS
-                 and not kw.get("skipna") and (shape or "") != "monotone")
+        halo = halo_knots(o["slopes"])
+        local = (halo is not None and o["form"] in _LOCAL_FORMS
+                 and not o["skipna"] and o["shape"] != "monotone")
         if not local:
             warnings.warn("trigspline.interp along %r: these options (form=%r, slopes=%r, "
                           "shape=%r, skipna=%r) are not local; the dimension is rechunked "
-                          "into one chunk" % (dim, kw.get("form", "paper"),
-                                              kw.get("slopes", "arithmetic"), shape,
-                                              kw.get("skipna", False)), RuntimeWarning,
-                          stacklevel=4)
+                          "into one chunk" % (dim, o["form"], o["slopes"], o["shape"],
+                                              o["skipna"]), RuntimeWarning, stacklevel=4)
             fm = fm.rechunk({fm.ndim - 1: -1})
             chunked = False
     if chunked:
         y, pieces = _interp_chunked(fm, xf, qf, opt, halo, errors, **common)
         # a series with a non-finite value fails as a whole when unchunked
-        if not kw.get("skipna"):
+        if not o["skipna"]:
             finite = _all_finite(fm)
             y = y.map_blocks(_mask_series, finite[..., None], dtype=y.dtype)
         if errors == "nan" or certificate:
@@ -340,36 +346,58 @@ def _split_kwargs(indexers, kwargs):
 
 _DOC = """Interpolate along one dimension with certified trigonometric splines.
 
+    The option keywords and their defaults are the package's one vocabulary
+    (docs/options.md), shared with :func:`trigspline.interp`,
+    :class:`trigspline.Spline` and :func:`trigspline.pandas.interpolate`.
+
     Parameters
     ----------
     indexers : dict, optional
         {dim: new coordinate values}; or give them as a keyword (time=...).
-    bounds : (lower, upper), optional
-        Either may be None.  (0, None) keeps every output >= 0 (zeros in
-        the data allowed); a non-zero constant or an (m, c) line is kept
-        strictly.
-    lower, upper : float or (m, c), optional
-        The same as bounds, one at a time.
-    shape : {'positive', 'monotone', 'above', 'below', 'between', 'none'}, optional
-        The scheme (inferred from the bounds when None).
-    form : {'paper', 'geometric', 'c1'}
-    alpha, slopes, margin, certify
+    shape : {'none', 'positive', 'above', 'below', 'between', 'monotone'}, default inferred
+        The scheme.  Left out, it follows from the bounds: ``lower=0``
+        alone ``'positive'`` (every output >= 0, zeros in the data allowed),
+        another ``lower`` alone ``'above'``, ``upper`` alone ``'below'``,
+        both ``'between'`` (kept strictly), neither ${shape}.
+    lower, upper : float or (m, c), default none
+        Bounds: a constant or the line y = m x + c.
+    form : {'paper', 'c1', 'geometric'}, default ${form}
+    alpha : float, default ${alpha}
+    slopes : str, default ${slopes}
+    margin : float, default ${margin}
+    certify : bool, default ${certify}
         As for trigspline.Spline.
-    extrapolate : {'nan', 'clamp', 'extend', 'linear'}
-        Outside the data: NaN by default (as xarray).
-    skipna : bool
-        Fit each series through its finite points only (gaps).
-    errors : {'raise', 'nan'}
-        Data the scheme refuses (negative values for bounds=(0, None), points
+    extrapolate : {'error', 'nan', 'clamp', 'extend', 'linear', True, False}, default ${extrapolate}
+        New coordinate values outside the old ones: ``'error'`` raises a
+        ``TrigsplineError`` naming the first (before anything is computed),
+        ``'nan'`` (``False``) gives NaN (as xarray's own interp), or the
+        library's policies.
+    skipna : bool, default ${skipna}
+        Fit each series through its finite points only (gaps); otherwise a
+        series holding NaN is NaN (as xarray's interp, which does not skip
+        missing values; skipped gaps make a dask chunking along the
+        dimension non-local).
+    errors : {'raise', 'nan'}, default ${errors}
+        Data the scheme refuses (negative values for lower=0, points
         outside the lines, ...) raise ValueError naming the series and the
-        position ('raise', default) or give NaN for that series ('nan').  A
-        series holding NaN or fewer than two points is NaN either way.
-    certificate : bool
+        position ('raise') or give NaN for that series ('nan').  A series
+        holding NaN or fewer than two points is NaN either way.
+    certificate : bool, default False
         Also return a Dataset with per-series ``status`` (0 = certified),
         ``index`` and ``gap`` (the least certified gap), and, when computed
         eagerly, attrs ``all_certified`` and ``least_gap``
         (see trigspline.xarray.summary).
+    bounds : (lower, upper)
+        Deprecated: give ``lower=`` and ``upper=``.
     """
+
+
+def _resolve(bounds, lower, upper, shape, form, alpha, slopes, margin, extrapolate, skipna,
+             certify, errors):
+    lower, upper = _options.split_bounds(bounds, lower, upper)
+    return resolve(shape, lower, upper, alpha=alpha, form=form, slopes=slopes,
+                   extrapolate=extrapolate, margin=margin, skipna=skipna, certify=certify,
+                   errors=errors)
 
 
 class TrigsplineAccessor:
@@ -378,16 +406,15 @@ class TrigsplineAccessor:
     def __init__(self, obj):
         self._obj = obj
 
-    def interp(self, indexers=None, *, bounds=None, lower=None, upper=None, shape=None,
-               form="paper", alpha=1.0, slopes="arithmetic", margin=None, extrapolate="nan",
-               skipna=False, certify=True, errors="raise", certificate=False, **kwargs):
+    def interp(self, indexers=None, *, shape=None, lower=None, upper=None, form=None,
+               alpha=None, slopes=None, margin=None, extrapolate=None, skipna=None,
+               certify=None, errors=None, certificate=False, bounds=None, **kwargs):
         dim, new = _split_kwargs(indexers, kwargs)
-        kw = dict(form=form, alpha=alpha, slopes=slopes, margin=margin, extrapolate=extrapolate,
-                  skipna=skipna, certify=certify)
-        return _interp_dataarray(self._obj, dim, new, shape, bounds, lower, upper, errors,
-                                 certificate, kw)
+        o = _resolve(bounds, lower, upper, shape, form, alpha, slopes, margin, extrapolate,
+                     skipna, certify, errors)
+        return _interp_dataarray(self._obj, dim, new, o, certificate)
 
-    interp.__doc__ = _DOC
+    interp.__doc__ = _options.fill(_DOC)
 
 
 class TrigsplineDatasetAccessor:
@@ -397,21 +424,20 @@ class TrigsplineDatasetAccessor:
     def __init__(self, obj):
         self._obj = obj
 
-    def interp(self, indexers=None, *, bounds=None, lower=None, upper=None, shape=None,
-               form="paper", alpha=1.0, slopes="arithmetic", margin=None, extrapolate="nan",
-               skipna=False, certify=True, errors="raise", certificate=False, **kwargs):
+    def interp(self, indexers=None, *, shape=None, lower=None, upper=None, form=None,
+               alpha=None, slopes=None, margin=None, extrapolate=None, skipna=None,
+               certify=None, errors=None, certificate=False, bounds=None, **kwargs):
         dim, new = _split_kwargs(indexers, kwargs)
         ds = self._obj
         if dim not in ds.dims:
             raise ValueError("%r is not a dimension of this Dataset (dims %s)"
                              % (dim, tuple(ds.dims)))
-        kw = dict(form=form, alpha=alpha, slopes=slopes, margin=margin, extrapolate=extrapolate,
-                  skipna=skipna, certify=certify)
+        o = _resolve(bounds, lower, upper, shape, form, alpha, slopes, margin, extrapolate,
+                     skipna, certify, errors)
         out, certs = {}, {}
         for name, var in ds.data_vars.items():
             if dim in var.dims and var.dtype.kind in "fiu":
-                r = _interp_dataarray(var, dim, new, shape, bounds, lower, upper, errors,
-                                      certificate, kw)
+                r = _interp_dataarray(var, dim, new, o, certificate)
                 if certificate:
                     r, certs[name] = r
                 out[name] = r
@@ -425,7 +451,7 @@ class TrigsplineDatasetAccessor:
             return result, certs
         return result
 
-    interp.__doc__ = _DOC
+    interp.__doc__ = TrigsplineAccessor.interp.__doc__
 
 
 def _register():
