@@ -11,7 +11,7 @@ import threading
 import numpy as np
 import pytest
 
-from trigspline import Spline
+from trigspline import Spline, TrigsplineError
 from trigspline import _gufunc
 from trigspline.interp import interp, pack_options, status_message
 
@@ -205,6 +205,13 @@ def test_bad_series_status_and_errors_raise():
     assert np.isnan(r.values[1]).all()
     with pytest.raises(ValueError, match=r"series \(1,\).*point 2"):
         interp(x, f, [0.5], shape="positive")  # errors='raise', the default
+    # one series (a 0-d status): the error names the point, no series
+    with pytest.raises(TrigsplineError, match=r"^(?!series).*\(point 2\)$") as e:
+        interp(x, f[1], [0.5], shape="positive")
+    assert e.value.status == TS_ERR_NEGATIVE and e.value.index == 2 and e.value.series is None
+    with pytest.raises(TrigsplineError) as e:
+        interp(x, f[0], [0.5], shape="monotone")
+    assert e.value.status == 17 and e.value.where == "point"  # TS_ERR_NONMONOTONE
     # point 0 (f = 1) below y = 1.5 (on y = 1 it may touch: docs/method.md §5.8)
     r2 = interp(x, f[:1], [0.5], lower=(0.0, 1.5), shape="above", full=True, errors="nan")
     assert r2.status[0] == TS_ERR_SIDE and r2.index[0] == 0

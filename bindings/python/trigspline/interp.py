@@ -28,6 +28,9 @@ OPTION_LAYOUT = ("shape", "form", "slopes", "extrapolate", "alpha", "lower_m", "
 # (NaN or too few points): its output is NaN, nothing is raised even with
 # errors="raise".
 DATA_GAPS = (4, 5)  # TS_ERR_TOO_FEW, TS_ERR_NONFINITE
+# The codes whose index is an interval (include/trigspline.h); the others name a point.
+_INTERVAL_STATUSES = (_S.ALPHA, _S.BETA, _S.MARGIN, _S.INFEASIBLE, _S.VIOLATED, _S.GEOMETRIC,
+                      _S.CONTROL_OVERFLOW, _S.PRECISION, _S.UNPROVEN)
 
 
 def status_message(code):
@@ -256,12 +259,16 @@ def interp(x, f, xq, *, shape=None, lower=None, upper=None, alpha=None, form=Non
         check_queries(xm, qm)
     y, status, index, g = _gufunc.interp(xm, fm, qm, opt)
     if o["errors"] == "raise":
+        status, index = np.asarray(status), np.asarray(index)
         bad = (status != STATUS_OK) & ~np.isin(status, DATA_GAPS)
         if bad.any():
-            where = tuple(int(i[0]) for i in np.nonzero(bad))
-            code = int(status[where])
-            raise ValueError("series %s: %s (point %d)" % (where, status_message(code),
-                                                          int(index[where])))
+            # the first failing series; () for a single series (0-d status)
+            where = tuple(int(i) for i in np.unravel_index(int(np.argmax(bad)), bad.shape))
+            code, at = int(status[where]), int(index[where])
+            what = "interval" if code in _INTERVAL_STATUSES else "point"
+            raise TrigsplineError(code, "%s%s (%s %d)" % (
+                "series %s: " % (where,) if where else "", status_message(code), what, at),
+                at, what, series=where or None)
     if axis != f.ndim - 1:
         y = np.moveaxis(y, -1, axis - f.ndim + y.ndim)
     if full:
