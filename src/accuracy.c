@@ -149,7 +149,6 @@ ts_status ts_error_bound(const ts_spline *s, double fprime_max, double fsecond_m
     int second = exact_slopes && isfinite(fsecond_max);
     grid_tab t;
     grid_fill(&t);
-    const double K0 = 2.0 / (3.0 * TS_PI);
     size_t n = s->n;
     int geo = s->form == TS_FORM_GEOMETRIC;
     double worst = 0.0, prev_key[3] = {(double)NAN, (double)NAN, (double)NAN}, prev2 = 0.0;
@@ -166,7 +165,7 @@ ts_status ts_error_bound(const ts_spline *s, double fprime_max, double fsecond_m
                 aR = an > a ? an : a;
             }
         }
-        double kl = K0 / aL, kr = K0 / aR;
+        double kl = ts__geo_k(1.0, aL), kr = ts__geo_k(1.0, aR); /* κ: k_i per unit width */
         bound_fn f1 = {geo, 1, kl, kr, fprime_max, fabs(s->d[i]), fabs(s->d[i + 1])};
         double b = h * bound_max(&f1, &t);
         if (second) {

@@ -4,16 +4,13 @@
 
 /* docs/method.md §3 (paper, C¹) and §4 (geometric) control values, one loop per form
  * with the arrays as restrict parameters, so that they vectorise. */
-#define TS_K0 (2.0 / (3.0 * TS_PI))
-
 TS_VECTOR_LOOP static void controls_paper(const double *restrict f, const double *restrict d,
                                           const double *restrict h, const double *restrict al,
                                           const double *restrict be, double *restrict b1,
                                           double *restrict b2, size_t i0, size_t i1)
 {
     for (size_t i = i0; i < i1; i++) {
-        double K = TS_K0 * h[i];
-        double k = K / (al[i] + be[i]);
+        double k = ts__geo_k(h[i], al[i] + be[i]);
         b1[i] = f[i] + k * d[i];
         b2[i] = f[i + 1] - k * d[i + 1];
     }
@@ -41,7 +38,7 @@ TS_VECTOR_LOOP static void controls_c1(const double *restrict f, const double *r
                                        double *restrict b2, size_t i0, size_t i1)
 {
     for (size_t i = i0; i < i1; i++) {
-        double K = TS_K0 * h[i];
+        double K = ts__geo_K(h[i]);
         double a = al[i] + be[i], ap = al[i - 1] + be[i - 1], an = al[i + 1] + be[i + 1];
         double aL = ap > a ? ap : a, aR = an > a ? an : a;
         b1[i] = f[i] + K * (d[i] / aL);
@@ -54,7 +51,7 @@ static void controls_c1_one(ts_spline *sp, size_t i)
 {
     size_t n = sp->n;
     const double *al = sp->alpha, *be = sp->beta;
-    double K = TS_K0 * sp->h[i];
+    double K = ts__geo_K(sp->h[i]);
     double a = al[i] + be[i];
     double aL = a, aR = a;
     if (i > 0) {

@@ -445,12 +445,19 @@ void ts__slopes_range(ts_slopes method, const double *x, const double *f, size_t
  * C¹ form the knots' d̂ depend on both neighbours, so callers pass the
  * widened range. */
 void ts__controls(ts_spline *sp, size_t i0, size_t i1);
-/* docs/method.md §4: the geometric form's k_i = (2/(3π)) h_i / a_i
- * (B1 = f_i + k_i d_i, X1 = x_i + k_i; controls.c and ts_spline_control),
- * and κ = 2/(3π a) (the geometric form's stored κ_i; the error constants). */
+/* docs/method.md §3, §4: K_i = (2/(3π)) h_i, the control offset of θ linear
+ * in x (the paper and C¹ forms' abscissae X1 = x_i + K_i; the schemes' β
+ * rules of §5 and §11.3); k_i = K_i / a_i (B1 = f_i + k_i d_i, and the
+ * geometric form's X1 = x_i + k_i); κ = 2/(3π a) (the geometric form's
+ * stored κ_i; the error constants; surfaces' X̂).  The one spelling of
+ * each: every user reads these. */
+static inline double ts__geo_K(double h)
+{
+    return 2.0 / (3.0 * TS_PI) * h;
+}
 static inline double ts__geo_k(double h, double a)
 {
-    return 2.0 / (3.0 * TS_PI) * h / a;
+    return ts__geo_K(h) / a;
 }
 static inline double ts__kappa(double a)
 {

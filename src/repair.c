@@ -296,7 +296,7 @@ static int c1_uniform(ts_spline *sp, double t, int exact)
  * gap + guard (above the true gap). */
 static double c1_margin(const ts_spline *sp, size_t i, double uL, double uR, double *gap)
 {
-    double K = 2.0 / (3.0 * TS_PI) * sp->h[i], r = (double)INFINITY, g = r, guard, at;
+    double K = ts__geo_K(sp->h[i]), r = (double)INFINITY, g = r, guard, at;
     double B[4] = {sp->f[i], sp->f[i] + K * (sp->d[i] * uL), sp->f[i + 1] - K * (sp->d[i + 1] * uR),
                    sp->f[i + 1]};
     for (int side = 0; side < 2; side++) {

@@ -277,7 +277,6 @@ static ts_status boundaries(ts_spline *sp, const ts_options *opt, ts_error *err)
         unsigned char *restrict term
 #define TS_BETA_PASS(sp) (sp)->x, (sp)->f, (sp)->d, (sp)->h, (sp)->alpha, (sp)->beta, (sp)->term
 
-#define TS_K0 (2.0 / (3.0 * TS_PI))
 /* The divisor where the term is taken, else 1: a term is computed before
  * it is selected (so the loops vectorise), and 0/0 or x/0 there would raise
  * FE_INVALID or FE_DIVBYZERO on valid data (zero gaps, flat intervals). */
@@ -296,7 +295,7 @@ TS_VECTOR_LOOP static void consider_lower(TS_BETA_ARRAYS, size_t i0, size_t i1, 
                                           double ml)
 {
     for (size_t i = i0; i < i1; i++) {
-        double al = alpha[i], K = TS_K0 * h[i];
+        double al = alpha[i], K = ts__geo_K(h[i]);
         double g0 = f[i] - fma(m, x[i], c), g1 = f[i + 1] - fma(m, x[i + 1], c);
         double b = best[i];
         int t = term[i];
@@ -312,7 +311,7 @@ TS_VECTOR_LOOP static void consider_upper(TS_BETA_ARRAYS, size_t i0, size_t i1, 
                                           double mu)
 {
     for (size_t i = i0; i < i1; i++) {
-        double al = alpha[i], K = TS_K0 * h[i];
+        double al = alpha[i], K = ts__geo_K(h[i]);
         double G0 = fma(m, x[i], c) - f[i], G1 = fma(m, x[i + 1], c) - f[i + 1];
         double b = best[i];
         int t = term[i];
@@ -328,7 +327,7 @@ TS_VECTOR_LOOP static void consider_monotone(TS_BETA_ARRAYS, size_t i0, size_t i
 {
     (void)x;
     for (size_t i = i0; i < i1; i++) {
-        double al = alpha[i], K = TS_K0 * h[i], df = f[i + 1] - f[i];
+        double al = alpha[i], K = ts__geo_K(h[i]), df = f[i + 1] - f[i];
         double b = best[i];
         int t = term[i];
         TS_CONSIDER(df != 0.0, K * (d[i] + d[i + 1]) / TS_SAFE(df != 0.0, df) - al, TS_TERM_MONOTONE);

@@ -426,7 +426,7 @@ ts_status ts_spline_control(const ts_spline *s, size_t i, double B[4], double X[
             X[1] = s->x[i] + k;
             X[2] = s->x[i + 1] - k;
         } else { /* docs/method.md §3: X = [x_i, x_i + K_i, x_{i+1} - K_i, x_{i+1}], as ts__controls had */
-            double K = 2.0 / (3.0 * TS_PI) * s->h[i];
+            double K = ts__geo_K(s->h[i]);
             X[1] = s->x[i] + K;
             X[2] = s->x[i + 1] - K;
         }
