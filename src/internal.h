@@ -5,6 +5,7 @@
  * functions of files in lower layers; no file calls a public entry point of
  * the library; tools/check_layers.py checks both):
  *   L0  status.c    status strings, the version, the error setter, allocation
+ *       checks.c    input checks shared by the constructors
  *       basis.c     the basis, its derivatives and integrals, interval search
  *       trigmin.c   exact minimum of a trigonometric polynomial minus a line
  *   L1  slopes.c    slope estimates
@@ -142,6 +143,60 @@ TS_INLINE double ts__width_error(double x0, double x1, double h)
 TS_INLINE int ts__touch_leaves(double d, int inner, int first, double up)
 {
     return inner ? d != 0.0 : (first ? up * d < 0.0 : up * d > 0.0);
+}
+
+/* ---- checks.c -------------------------------------------------------- */
+/* Knots x[0..np) (np >= 1) and values f (x itself where there are none):
+ * in this order every x_i, f_i finite (TS_ERR_NONFINITE), x strictly
+ * increasing (TS_ERR_UNSORTED), every width x_i − x_{i−1} in [wmin, wmax]
+ * (TS_ERR_WIDTH, index i), every |f_i| <= vmax (TS_ERR_TOO_LARGE); the
+ * first offender of the first check that fails (*index, a point; the
+ * caller reports it, TS_WHERE_POINT). */
+ts_status ts__check_knots(const double *x, const double *f, size_t np, double vmax, double wmin,
+                          double wmax, size_t *index);
+/* alpha_i > 0 and finite (TS_ERR_ALPHA); beta_i >= 0 with alpha_i + beta_i
+ * positive and finite (TS_ERR_BETA; alpha_i already valid); a margin t > 0
+ * and finite (TS_ERR_MARGIN).  NaN fails each; & so that loops vectorise. */
+TS_INLINE int ts__alpha_ok(double alpha)
+{
+    return (alpha > 0.0) & (alpha <= DBL_MAX);
+}
+TS_INLINE int ts__beta_ok(double alpha, double beta)
+{
+    double a = alpha + beta;
+    return (beta >= 0.0) & (beta <= DBL_MAX) & (a > 0.0) & (a <= DBL_MAX);
+}
+TS_INLINE int ts__margin_ok(double t)
+{
+    return (t > 0.0) & (t <= DBL_MAX);
+}
+/* The first i in [i0, i1) whose alpha_i (alphas ? alphas[i] : alpha),
+ * resp. beta_i, fails its rule; i1 if none. */
+size_t ts__first_bad_alpha(double alpha, const double *alphas, size_t i0, size_t i1);
+size_t ts__first_bad_beta(double alpha, const double *alphas, double beta, const double *betas,
+                          size_t i0, size_t i1);
+
+/* docs/method.md §5 (upper boundary with §5.3's signs): the β terms of one
+ * boundary line at both ends of an interval, sg = +1 for a lower line (gaps
+ * g = f − L, slopes d relative to the line's), −1 for an upper (g = L − f):
+ * −α ∓ sg K d/g at the left and right ends, taken into *b, *t (terms t0 and
+ * t0 + 1) where the gap is > 0 (a knot on the line drops its term, §5.8) and
+ * the term is strictly larger.  Splines (shape.c, per line) and curves
+ * (curve.c, per coordinate against its box).  The divisor is 1 where the
+ * term is not taken: it is computed before it is selected (vector loops),
+ * and 0/0 or x/0 there would raise FE_INVALID or FE_DIVBYZERO on valid
+ * data. */
+TS_INLINE void ts__beta_line(double al, double K, double g0, double g1, double d0, double d1,
+                             double sg, int t0, double *b, int *t)
+{
+    double v0 = -al - sg * K * d0 / (g0 > 0.0 ? g0 : 1.0);
+    double v1 = -al + sg * K * d1 / (g1 > 0.0 ? g1 : 1.0);
+    int take0 = (g0 > 0.0) & (v0 > *b);
+    *b = take0 ? v0 : *b;
+    *t = take0 ? t0 : *t;
+    int take1 = (g1 > 0.0) & (v1 > *b);
+    *b = take1 ? v1 : *b;
+    *t = take1 ? t0 + 1 : *t;
 }
 
 /* ---- basis.c (docs/method.md §2) ----------------------------------------------- */
