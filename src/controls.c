@@ -46,41 +46,54 @@ TS_VECTOR_LOOP static void controls_c1(const double *restrict f, const double *r
     }
 }
 
+void ts__ends_a(const ts_spline *sp, size_t i, double *aL, double *aR)
+{
+    *aL = *aR = sp->alpha[i] + sp->beta[i];
+}
+
+void ts__ends_a_c1(const ts_spline *sp, size_t i, double *aL, double *aR)
+{
+    const double *al = sp->alpha, *be = sp->beta;
+    double a = al[i] + be[i];
+    *aL = *aR = a;
+    if (i > 0) {
+        double ap = al[i - 1] + be[i - 1];
+        *aL = ap > a ? ap : a;
+    }
+    if (i + 1 < sp->n) {
+        double an = al[i + 1] + be[i + 1];
+        *aR = an > a ? an : a;
+    }
+}
+
 /* The same for one interval, also at an end. */
 static void controls_c1_one(ts_spline *sp, size_t i)
 {
-    size_t n = sp->n;
-    const double *al = sp->alpha, *be = sp->beta;
-    double K = ts__geo_K(sp->h[i]);
-    double a = al[i] + be[i];
-    double aL = a, aR = a;
-    if (i > 0) {
-        double ap = al[i - 1] + be[i - 1];
-        aL = ap > a ? ap : a;
-    }
-    if (i + 1 < n) {
-        double an = al[i + 1] + be[i + 1];
-        aR = an > a ? an : a;
-    }
+    double K = ts__geo_K(sp->h[i]), aL, aR;
+    ts__ends_a_c1(sp, i, &aL, &aR);
     sp->b1[i] = sp->f[i] + K * (sp->d[i] / aL);
     sp->b2[i] = sp->f[i + 1] - K * (sp->d[i + 1] / aR);
 }
 
-void ts__controls(ts_spline *sp, size_t i0, size_t i1)
+void ts__controls_c1(ts_spline *sp, size_t i0, size_t i1)
 {
     size_t n = sp->n;
-    if (sp->form == TS_FORM_C1) {
-        size_t m0 = i0 > 0 ? i0 : 1, m1 = i1 < n ? i1 : n - 1; /* both neighbours */
-        if (i0 == 0)
-            controls_c1_one(sp, 0);
-        if (m0 < m1)
-            controls_c1(sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, m0, m1);
-        if (i1 == n && n - 1 > 0)
-            controls_c1_one(sp, n - 1);
-    } else if (sp->form == TS_FORM_GEOMETRIC) {
-        controls_geo(sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, sp->kappa, i0, i1);
-    } else {
-        controls_paper(sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, i0, i1);
-    }
+    size_t m0 = i0 > 0 ? i0 : 1, m1 = i1 < n ? i1 : n - 1; /* both neighbours */
+    if (i0 == 0)
+        controls_c1_one(sp, 0);
+    if (m0 < m1)
+        controls_c1(sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, m0, m1);
+    if (i1 == n && n - 1 > 0)
+        controls_c1_one(sp, n - 1);
+}
+
+void ts__controls_geo(ts_spline *sp, size_t i0, size_t i1)
+{
+    controls_geo(sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, sp->kappa, i0, i1);
+}
+
+void ts__controls_paper(ts_spline *sp, size_t i0, size_t i1)
+{
+    controls_paper(sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, i0, i1);
 }
 

@@ -11,7 +11,8 @@
  *   L1  slopes.c    slope estimates
  *       controls.c  control values of every form
  *       geometric.c the geometric form: X(θ) = x, value, integral, bound
- *   L2  interval.c  one interval of any form: value, derivatives, integral
+ *   L2  interval.c  one interval of any form: value, derivatives, integral;
+ *                   the per-form table (ts__form)
  *       shape.c     the schemes' β rules and data checks
  *       certificate.c  interval gaps, hull and control-value proofs (read-only)
  *       surface_net.c  surfaces: control nets, patch bases, control gaps
@@ -496,25 +497,32 @@ void ts__slopes_range(ts_slopes method, const double *x, const double *f, size_t
 
 /* ---- controls.c (docs/method.md §3, §4) ---------------------------------------- */
 /* Recompute b1, b2 (and κ in the geometric form) of intervals
- * i0..i1-1 (i0 < i1 <= n) from x, f, d, alpha, beta, per the form.  For the
- * C¹ form the knots' d̂ depend on both neighbours, so callers pass the
- * widened range. */
-void ts__controls(ts_spline *sp, size_t i0, size_t i1);
+ * i0..i1-1 (i0 < i1 <= n) from x, f, d, alpha, beta, one function per form
+ * (called through ts__form).  For the C¹ form the knots' d̂ depend on both
+ * neighbours, so callers pass the widened range. */
+void ts__controls_paper(ts_spline *sp, size_t i0, size_t i1);
+void ts__controls_c1(ts_spline *sp, size_t i0, size_t i1);
+void ts__controls_geo(ts_spline *sp, size_t i0, size_t i1);
+/* The a that divides d_i and d_{i+1} in interval i's controls: a_i at
+ * both ends (paper, geometric); the C¹ form's max(a_{j−1}, a_j) of each
+ * knot (docs/method.md §3), one-sided at the ends. */
+void ts__ends_a(const ts_spline *sp, size_t i, double *aL, double *aR);
+void ts__ends_a_c1(const ts_spline *sp, size_t i, double *aL, double *aR);
 /* docs/method.md §3, §4: K_i = (2/(3π)) h_i, the control offset of θ linear
  * in x (the paper and C¹ forms' abscissae X1 = x_i + K_i; the schemes' β
  * rules of §5 and §11.3); k_i = K_i / a_i (B1 = f_i + k_i d_i, and the
  * geometric form's X1 = x_i + k_i); κ = 2/(3π a) (the geometric form's
  * stored κ_i; the error constants; surfaces' X̂).  The one spelling of
  * each: every user reads these. */
-static inline double ts__geo_K(double h)
+TS_INLINE double ts__geo_K(double h)
 {
     return 2.0 / (3.0 * TS_PI) * h;
 }
-static inline double ts__geo_k(double h, double a)
+TS_INLINE double ts__geo_k(double h, double a)
 {
     return ts__geo_K(h) / a;
 }
-static inline double ts__kappa(double a)
+TS_INLINE double ts__kappa(double a)
 {
     return 2.0 / (3.0 * TS_PI * a);
 }
@@ -558,6 +566,29 @@ TS_INLINE void ts__geo_in(const ts_spline *sp, size_t i, double x, int want, dou
 /* ==== L2 ============================================================ */
 
 /* ---- interval.c (docs/method.md §2–§4) ----------------------------------------- */
+/* What differs between the forms (docs/method.md §3, §4), one entry per
+ * ts_form.  Read once per call: a loop over queries or intervals looks its
+ * form up before it starts (ts_eval's inline path and the batch kernels'
+ * inner loops call nothing through it). */
+typedef struct ts__form_ops {
+    int geometric;  /* κ_i stored; abscissae X̂ = (0, κ, 1 − κ, 1); S solves X(θ) = x (§4) */
+    int neighbours; /* an interval's controls read its neighbours' a_j (C¹, §3) */
+    int kernel;     /* the batch kernels' family (kernels.c): 0 θ linear in x, 1 geometric */
+    /* b1, b2 (κ) of intervals [i0, i1) (controls.c) */
+    void (*controls)(ts_spline *sp, size_t i0, size_t i1);
+    /* cum[i + 1] = ∫ over interval i, i in [i0, i1) */
+    void (*wholes)(const ts_spline *sp, size_t i0, size_t i1, double *cum);
+    /* value and derivatives of interval i at any x (ts__interval_eval) */
+    void (*eval)(const ts_spline *sp, size_t i, double x, int want, double o[3]);
+    /* 2^-k ∫_a^b S on interval i, the closed form (b − a > h/16) */
+    double (*integral)(const ts_spline *sp, size_t i, double a, double b, int k);
+    /* the control abscissae's offset: X1 = x_i + k, X2 = x_{i+1} − k */
+    double (*k)(const ts_spline *sp, size_t i);
+    /* the a dividing the slopes at the two ends of interval i (ts__ends_a) */
+    void (*ends_a)(const ts_spline *sp, size_t i, double *aL, double *aR);
+} ts__form_ops;
+/* The entry of form (a valid ts_form). */
+const ts__form_ops *ts__form(ts_form form);
 /* Value and derivatives (in x; out[1], out[2] only if want > 0, > 1) of
  * interval i at x, any form; x may lie outside the interval (extension). */
 void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double o[3]);

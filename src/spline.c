@@ -124,30 +124,12 @@ static ts_status check_beta(ts_spline *sp, size_t i0, size_t i1, ts_error *err)
                     TS_WHERE_INTERVAL);
 }
 
-/* ∫ of interval i, i in [i0, i1), into cum[i + 1] (paper and C¹ forms). */
-TS_VECTOR_LOOP static void wholes(const double *restrict h, const double *restrict f,
-                                  const double *restrict b1, const double *restrict b2,
-                                  double *restrict cum, size_t i0, size_t i1)
-{
-    /* ∫ A_l over [0, π/2]: 5π/4 - 11/3 (l = 0, 3), 11/3 - π (l = 1, 2) */
-    const double e = 1.25 * TS_PI - 11.0 / 3.0, m = 11.0 / 3.0 - TS_PI;
-    for (size_t i = i0; i < i1; i++) {
-        double w = 2.0 * h[i] / TS_PI; /* dx/dθ, also where 2h overflows */
-        w = w <= DBL_MAX ? w : h[i] * (2.0 / TS_PI);
-        cum[i + 1] = w * (e * (f[i] + f[i + 1]) + m * (b1[i] + b2[i]));
-    }
-}
-
 /* Cumulative integrals cum[i0+1..i1] for ts_integral from the running sum
  * (cum[i0]), which it returns: the same additions in the same order. */
 static double cumulate(ts_spline *sp, size_t i0, size_t i1, double sum)
 {
     double *cum = sp->cum;
-    if (sp->form == TS_FORM_GEOMETRIC) {
-        ts__geo_wholes(sp, i0, i1, cum);
-    } else {
-        wholes(sp->h, sp->f, sp->b1, sp->b2, cum, i0, i1);
-    }
+    ts__form(sp->form)->wholes(sp, i0, i1, cum);
     for (size_t i = i0; i < i1; i++) {
         sum += cum[i + 1];
         cum[i + 1] = sum;
@@ -195,7 +177,8 @@ static ts_status build(ts_spline *sp, const ts_options *o, const double *x, cons
 {
     size_t n = sp->n, np = n + 1, done = 0;
     int user = o->slopes == TS_SLOPES_USER, shaped = o->shape != TS_SHAPE_NONE, dir = 0;
-    int c1 = sp->form == TS_FORM_C1, geo = sp->form == TS_FORM_GEOMETRIC;
+    const ts__form_ops *form = ts__form(sp->form);
+    int c1 = form->neighbours, geo = form->geometric;
     ts_status st = TS_OK;
     if (user && !o->user_slopes)
         return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
@@ -238,13 +221,13 @@ static ts_status build(ts_spline *sp, const ts_options *o, const double *x, cons
             return st;
         if (c1)
             continue;
-        ts__controls(sp, i0, i1);
+        form->controls(sp, i0, i1);
         if (shaped && (st = ts__certify_range(sp, o, i0, i1, err)) != TS_OK)
             return st;
         sum = cumulate(sp, i0, i1, sum);
     }
     if (c1) {
-        ts__controls(sp, 0, n);
+        form->controls(sp, 0, n);
         if (shaped && (st = ts__certify_range(sp, o, 0, n, err)) != TS_OK)
             return st;
         (void)cumulate(sp, 0, n, 0.0);
@@ -290,7 +273,7 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
     /* layout: 4 arrays of n+1 (x, f, d, cum), 5 of n (h, alpha, beta, b1, b2),
      * 1 of n for the geometric form's κ, term bytes.  Only what is used:
      * every byte per knot costs construction time. */
-    int geo = opt->form == TS_FORM_GEOMETRIC;
+    int geo = ts__form(opt->form)->geometric;
     size_t per_interval_arrays = 5 + (size_t)geo;
     size_t n = n_points - 1, a, b, c, total, bytes;
     if (!mul_ok(n_points, 4, &a) || !mul_ok(n, per_interval_arrays, &b))
@@ -380,18 +363,12 @@ ts_status ts_spline_control(const ts_spline *s, size_t i, double B[4], double X[
     if (i >= s->n)
         return TS_ERR_INDEX;
     ts__B(s, i, B);
-    if (X) {
+    if (X) { /* docs/method.md §3, §4: X = [x_i, x_i + k, x_{i+1} - k, x_{i+1}] */
+        double k = ts__form(s->form)->k(s, i);
         X[0] = s->x[i];
+        X[1] = s->x[i] + k;
+        X[2] = s->x[i + 1] - k;
         X[3] = s->x[i + 1];
-        if (s->form == TS_FORM_GEOMETRIC) { /* docs/method.md §4: X = [x_i, x_i + k, x_{i+1} - k, x_{i+1}] */
-            double k = ts__geo_k(s->h[i], s->alpha[i] + s->beta[i]);
-            X[1] = s->x[i] + k;
-            X[2] = s->x[i + 1] - k;
-        } else { /* docs/method.md §3: X = [x_i, x_i + K_i, x_{i+1} - K_i, x_{i+1}], as ts__controls had */
-            double K = ts__geo_K(s->h[i]);
-            X[1] = s->x[i] + K;
-            X[2] = s->x[i + 1] - K;
-        }
     }
     return TS_OK;
 }
