@@ -843,7 +843,8 @@ TS_API void ts_surface_options_init(ts_surface_options *opt);
  *   TS_ERR_OVERFLOW    the grid's size in bytes overflows size_t
  *   TS_ERR_NONFINITE   NaN/Inf in x (index i), y (index j), z (node), a bound,
  *                      or a slope or control value that overflows (node / patch)
- *   TS_ERR_UNSORTED    x or y not strictly increasing (index i resp. j)
+ *   TS_ERR_UNSORTED    x or y not strictly increasing (index i resp. j; every
+ *                      non-finite knot of an axis is named before an unsorted one)
  *   TS_ERR_ALPHA, TS_ERR_BETA, TS_ERR_MARGIN   (no index)
  *   TS_ERR_GEOMETRIC   TS_SURFACE_NONE in the geometric form with
  *                      alpha + beta < TS_GEOMETRIC_A_MIN

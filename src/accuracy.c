@@ -149,24 +149,14 @@ ts_status ts_error_bound(const ts_spline *s, double fprime_max, double fsecond_m
     int second = exact_slopes && isfinite(fsecond_max);
     grid_tab t;
     grid_fill(&t);
-    const double K0 = 2.0 / (3.0 * TS_PI);
     size_t n = s->n;
-    int geo = s->form == TS_FORM_GEOMETRIC;
+    const ts__form_ops *form = ts__form(s->form);
+    int geo = form->geometric;
     double worst = 0.0, prev_key[3] = {(double)NAN, (double)NAN, (double)NAN}, prev2 = 0.0;
     for (size_t i = 0; i < n; i++) {
-        double h = s->h[i], a = s->alpha[i] + s->beta[i], aL = a, aR = a;
-        if (s->form == TS_FORM_C1) {
-            /* docs/method.md §3 C¹ option: d̂ = d / max(a_{j−1}, a_j) */
-            if (i > 0) {
-                double ap = s->alpha[i - 1] + s->beta[i - 1];
-                aL = ap > a ? ap : a;
-            }
-            if (i + 1 < n) {
-                double an = s->alpha[i + 1] + s->beta[i + 1];
-                aR = an > a ? an : a;
-            }
-        }
-        double kl = K0 / aL, kr = K0 / aR;
+        double h = s->h[i], aL, aR;
+        form->ends_a(s, i, &aL, &aR); /* C¹: d̂ = d / max(a_{j−1}, a_j), docs/method.md §3 */
+        double kl = ts__geo_k(1.0, aL), kr = ts__geo_k(1.0, aR); /* κ: k_i per unit width */
         bound_fn f1 = {geo, 1, kl, kr, fprime_max, fabs(s->d[i]), fabs(s->d[i + 1])};
         double b = h * bound_max(&f1, &t);
         if (second) {

@@ -271,21 +271,23 @@ static ts_status coord_slopes(const ts_curve *c, ts_slopes method, size_t k, dou
     return TS_OK;
 }
 
-ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
-                       const ts_curve_options *opt, ts_curve **out, ts_error *err)
+/* Are points i and j (rows of dim) the same? */
+static int same_point(const double *points, size_t dim, size_t i, size_t j)
 {
-    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
-    if (out)
-        *out = NULL;
-    if (!points || !out)
-        return fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    for (size_t k = 0; k < dim; k++)
+        if (points[i * dim + k] != points[j * dim + k])
+            return 0;
+    return 1;
+}
+
+/* Arguments and points before anything else: NULL, dim, options, sizes,
+ * finite coordinates; *m distinct points (closed: an exact repetition of
+ * the first point at the end dropped), *n segments. */
+static ts_status check_args(const double *points, size_t n_points, size_t dim,
+                            const ts_curve_options *opt, size_t *m, size_t *n, ts_error *err)
+{
     if (dim != 2 && dim != 3)
         return fail(err, TS_ERR_DIMENSION, TS_NO_INDEX, TS_WHERE_NONE);
-    ts_curve_options defaults;
-    if (!opt) {
-        curve_options_defaults(&defaults);
-        opt = &defaults;
-    }
     if (!((int)opt->param >= 0 && (int)opt->param <= (int)TS_PARAM_UNIFORM))
         return fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
     if (!((int)opt->slopes >= 0 && (int)opt->slopes < TS_SLOPES_COUNT_) ||
@@ -301,95 +303,64 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
         for (size_t k = 0; k < dim; k++)
             if (!isfin(points[i * dim + k]))
                 return fail(err, TS_ERR_NONFINITE, i, TS_WHERE_POINT);
-
-    /* distinct points m; closed: drop an exact repetition of the first point */
     int closed = opt->closed != 0;
-    size_t m = n_points;
-    if (closed) {
-        int same = 1;
-        for (size_t k = 0; k < dim; k++)
-            if (points[k] != points[(n_points - 1) * dim + k])
-                same = 0;
-        if (same)
-            m = n_points - 1;
-    }
-    if (closed && m < 3)
+    *m = closed && same_point(points, dim, 0, n_points - 1) ? n_points - 1 : n_points;
+    if (closed && *m < 3)
         return fail(err, TS_ERR_TOO_FEW, TS_NO_INDEX, TS_WHERE_NONE);
-    size_t n = closed ? m : m - 1; /* segments */
+    *n = closed ? *m : *m - 1;
+    return TS_OK;
+}
 
-    if (opt->alphas && opt->n_alphas != n)
+/* alphas, betas (the spline's rules, checks.c), the box and its margin;
+ * *has_box. */
+static ts_status check_params(const ts_curve_options *opt, size_t n, size_t dim, int *has_box,
+                              ts_error *err)
+{
+    if ((opt->alphas && opt->n_alphas != n) || (opt->betas && opt->n_betas != n))
         return fail(err, TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
-    if (opt->betas && opt->n_betas != n)
-        return fail(err, TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
-    for (size_t i = 0; i < n; i++) {
-        double a = opt->alphas ? opt->alphas[i] : opt->alpha;
-        if (!(a > 0.0 && isfin(a)))
-            return fail(err, TS_ERR_ALPHA, i, TS_WHERE_INTERVAL);
-    }
-    for (size_t i = 0; i < n; i++) {
-        double a = opt->alphas ? opt->alphas[i] : opt->alpha;
-        double b = opt->betas ? opt->betas[i] : opt->beta;
-        if (!(b >= 0.0 && isfin(b) && isfin(a + b))) /* as TS_ERR_BETA of ts_spline_new */
-            return fail(err, TS_ERR_BETA, i, TS_WHERE_INTERVAL);
-    }
-    int has_box = 0;
+    size_t i = ts__first_bad_alpha(opt->alpha, opt->alphas, 0, n);
+    if (i < n)
+        return fail(err, TS_ERR_ALPHA, i, TS_WHERE_INTERVAL);
+    i = ts__first_bad_beta(opt->alpha, opt->alphas, opt->beta, opt->betas, 0, n);
+    if (i < n)
+        return fail(err, TS_ERR_BETA, i, TS_WHERE_INTERVAL);
+    *has_box = 0;
     for (size_t k = 0; k < dim; k++) {
-        if (opt->has_lo[k]) {
-            has_box = 1;
-            if (!isfin(opt->lo[k]))
-                return fail(err, TS_ERR_NONFINITE, TS_NO_INDEX, TS_WHERE_NONE);
-        }
-        if (opt->has_hi[k]) {
-            has_box = 1;
-            if (!isfin(opt->hi[k]))
-                return fail(err, TS_ERR_NONFINITE, TS_NO_INDEX, TS_WHERE_NONE);
-        }
+        *has_box |= opt->has_lo[k] != 0 || opt->has_hi[k] != 0;
+        if ((opt->has_lo[k] && !isfin(opt->lo[k])) || (opt->has_hi[k] && !isfin(opt->hi[k])))
+            return fail(err, TS_ERR_NONFINITE, TS_NO_INDEX, TS_WHERE_NONE);
     }
-    if (has_box && !(opt->margin > 0.0 && isfin(opt->margin)))
+    if (*has_box && !ts__margin_ok(opt->margin))
         return fail(err, TS_ERR_MARGIN, TS_NO_INDEX, TS_WHERE_NONE);
-    /* consecutive equal points (and, closed, the last kept point equal to the first) */
-    for (size_t i = 0; i + 1 < m; i++) {
-        int same = 1;
-        for (size_t k = 0; k < dim; k++)
-            if (points[i * dim + k] != points[(i + 1) * dim + k])
-                same = 0;
-        if (same)
+    return TS_OK;
+}
+
+/* Consecutive equal points (closed: also the last kept point and the
+ * first), then every point inside the box (on a side allowed,
+ * docs/method.md §5.8, §7). */
+static ts_status check_points(const double *points, size_t m, size_t dim, int closed,
+                              const ts_curve_options *opt, ts_error *err)
+{
+    for (size_t i = 0; i + 1 < m; i++)
+        if (same_point(points, dim, i, i + 1))
             return fail(err, TS_ERR_UNSORTED, i + 1, TS_WHERE_POINT);
-    }
-    if (closed) {
-        int same = 1;
-        for (size_t k = 0; k < dim; k++)
-            if (points[(m - 1) * dim + k] != points[k])
-                same = 0;
-        if (same)
-            return fail(err, TS_ERR_UNSORTED, m - 1, TS_WHERE_POINT);
-    }
-    /* docs/method.md §7: every point inside the box (on a side allowed, §5.8) */
+    if (closed && same_point(points, dim, m - 1, 0))
+        return fail(err, TS_ERR_UNSORTED, m - 1, TS_WHERE_POINT);
     for (size_t i = 0; i < m; i++)
         for (size_t k = 0; k < dim; k++) {
             double v = points[i * dim + k];
             if ((opt->has_lo[k] && !(v >= opt->lo[k])) || (opt->has_hi[k] && !(v <= opt->hi[k])))
                 return fail(err, TS_ERR_SIDE, i, TS_WHERE_POINT);
         }
+    return TS_OK;
+}
 
-    /* allocate */
+/* The curve's arrays and the scratch of the slopes (ws[4]: ft, te, fe,
+ * de); TS_ERR_NOMEM. */
+static ts_status curve_alloc(ts_curve *c, double *ws[4])
+{
+    size_t n = c->n, dim = c->dim, ne = n + 1 + 2 * CURVE_PAD;
     ts_status st = TS_OK;
-    ts_curve *c = ts__calloc(1, sizeof *c);
-    if (!c)
-        return fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
-    c->n = n;
-    c->dim = dim;
-    c->closed = closed;
-    c->param = opt->param;
-    c->has_box = has_box;
-    for (size_t k = 0; k < 3; k++) {
-        c->box.has_lo[k] = k < dim && opt->has_lo[k] != 0;
-        c->box.has_hi[k] = k < dim && opt->has_hi[k] != 0;
-        c->box.lo[k] = c->box.has_lo[k] ? opt->lo[k] : 0.0;
-        c->box.hi[k] = c->box.has_hi[k] ? opt->hi[k] : 0.0;
-    }
-    size_t ne = n + 1 + 2 * CURVE_PAD;
-    double *ft = NULL, *te = NULL, *fe = NULL, *de = NULL;
     c->t = alloc_n(n + 1, sizeof(double), &st);
     c->p = alloc_n((n + 1) * dim, sizeof(double), &st);
     c->d = alloc_n((n + 1) * dim, sizeof(double), &st);
@@ -397,20 +368,17 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
     c->beta = alloc_n(n, sizeof(double), &st);
     c->ctrl = alloc_n(n * 4 * dim, sizeof(double), &st);
     c->term = alloc_n(n, 1, &st);
-    ft = alloc_n(n + 1, sizeof(double), &st);
-    te = alloc_n(ne, sizeof(double), &st);
-    fe = alloc_n(ne, sizeof(double), &st);
-    de = alloc_n(ne, sizeof(double), &st);
-    if (st != TS_OK) { /* an allocation failed */
-        fail(err, st, TS_NO_INDEX, TS_WHERE_NONE);
-        goto out;
-    }
-    for (size_t i = 0; i < m; i++)
-        memcpy(c->p + i * dim, points + i * dim, dim * sizeof(double));
-    if (closed)
-        memcpy(c->p + n * dim, points, dim * sizeof(double));
+    ws[0] = alloc_n(n + 1, sizeof(double), &st);
+    ws[1] = alloc_n(ne, sizeof(double), &st);
+    ws[2] = alloc_n(ne, sizeof(double), &st);
+    ws[3] = alloc_n(ne, sizeof(double), &st);
+    return st;
+}
 
-    /* docs/method.md §7: parameter knots */
+/* docs/method.md §7: parameter knots (m distinct points). */
+static ts_status curve_knots(ts_curve *c, size_t m, ts_error *err)
+{
+    size_t n = c->n, dim = c->dim;
     c->t[0] = 0.0;
     for (size_t i = 0; i < n; i++) {
         double dv[3], h;
@@ -420,101 +388,151 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
         if (c->param == TS_PARAM_CENTRIPETAL)
             h = sqrt(h);
         c->t[i + 1] = c->param == TS_PARAM_UNIFORM ? (double)(i + 1) : c->t[i] + h;
-        if (!isfin(c->t[i + 1])) {
-            st = fail(err, TS_ERR_NONFINITE, i + 1 < m ? i + 1 : 0, TS_WHERE_POINT);
-            goto out;
-        }
-        if (!(c->t[i + 1] > c->t[i])) { /* step lost to rounding */
-            st = fail(err, TS_ERR_UNSORTED, i + 1 < m ? i + 1 : m - 1, TS_WHERE_POINT);
-            goto out;
-        }
+        if (!isfin(c->t[i + 1]))
+            return fail(err, TS_ERR_NONFINITE, i + 1 < m ? i + 1 : 0, TS_WHERE_POINT);
+        if (!(c->t[i + 1] > c->t[i])) /* step lost to rounding */
+            return fail(err, TS_ERR_UNSORTED, i + 1 < m ? i + 1 : m - 1, TS_WHERE_POINT);
     }
+    return TS_OK;
+}
 
-    /* docs/method.md §6: slopes per coordinate */
+/* docs/method.md §5 per coordinate with the box's constant lines (the
+ * spline's rule, ts__beta_line): the largest term over the coordinates of
+ * segment i with a = alpha_i; *bt the term that set it (TS_TERM_MARGIN: none
+ * above 0). */
+static double box_rule(const ts_curve *c, size_t i, double a, ts_term *bt)
+{
+    size_t dim = c->dim;
+    double K = 2.0 * (c->t[i + 1] - c->t[i]) / (3.0 * TS_PI), best = 0.0;
+    int t = TS_TERM_MARGIN;
     for (size_t k = 0; k < dim; k++) {
-        st = coord_slopes(c, opt->slopes, k, ft, te, fe, de, err);
-        if (st != TS_OK)
-            goto out;
+        double f0 = c->p[i * dim + k], f1 = c->p[(i + 1) * dim + k];
+        double d0 = c->d[i * dim + k], d1 = c->d[(i + 1) * dim + k];
+        if (c->box.has_lo[k])
+            ts__beta_line(a, K, f0 - c->box.lo[k], f1 - c->box.lo[k], d0, d1, 1.0,
+                          TS_TERM_LOWER_LEFT, &best, &t);
+        if (c->box.has_hi[k])
+            ts__beta_line(a, K, c->box.hi[k] - f0, c->box.hi[k] - f1, d0, d1, -1.0,
+                          TS_TERM_UPPER_LEFT, &best, &t);
     }
-    /* (ts__slopes refuses non-finite slopes: TS_ERR_SLOPE_OVERFLOW) */
-    if (has_box)
-        touch_slopes(c);
+    *bt = (ts_term)t;
+    return best;
+}
 
-    /* alpha, beta: user values; with a box docs/method.md §5 per coordinate, shared max */
-    for (size_t i = 0; i < n; i++) {
+/* alpha, beta: the caller's; with a box beta_i = max(beta, t + the rule)
+ * (docs/method.md §5), TS_ERR_INFEASIBLE where that overflows. */
+static ts_status curve_betas(ts_curve *c, const ts_curve_options *opt, ts_error *err)
+{
+    for (size_t i = 0; i < c->n; i++) {
         double a = opt->alphas ? opt->alphas[i] : opt->alpha;
         double b = opt->betas ? opt->betas[i] : opt->beta;
         c->alpha[i] = a;
         c->beta[i] = b;
         c->term[i] = TS_TERM_USER;
-        if (!has_box)
+        if (!c->has_box)
             continue;
-        double K = 2.0 * (c->t[i + 1] - c->t[i]) / (3.0 * TS_PI);
-        double best = 0.0;
-        ts_term bt = TS_TERM_MARGIN;
-        for (size_t k = 0; k < dim; k++) {
-            double f0 = c->p[i * dim + k], f1 = c->p[(i + 1) * dim + k];
-            double d0 = c->d[i * dim + k], d1 = c->d[(i + 1) * dim + k];
-            double cand[4] = {-(double)INFINITY, -(double)INFINITY, -(double)INFINITY, -(double)INFINITY};
-            /* a point on the side drops its term (its slope is 0, §5.8) */
-            /* (divisors 1 there: a compiler may form the quotient before the
-             * select, and x/0 would raise FE_DIVBYZERO on valid data) */
-            double gl0 = f0 - c->box.lo[k], gl1 = f1 - c->box.lo[k];
-            double gu0 = c->box.hi[k] - f0, gu1 = c->box.hi[k] - f1;
-            double sl0 = gl0 > 0.0 ? gl0 : 1.0, sl1 = gl1 > 0.0 ? gl1 : 1.0;
-            double su0 = gu0 > 0.0 ? gu0 : 1.0, su1 = gu1 > 0.0 ? gu1 : 1.0;
-            if (c->box.has_lo[k]) { /* docs/method.md §5 lower-boundary rule, l = lo[k] */
-                cand[0] = gl0 > 0.0 ? -a - K * d0 / sl0 : cand[0];
-                cand[1] = gl1 > 0.0 ? -a + K * d1 / sl1 : cand[1];
-            }
-            if (c->box.has_hi[k]) { /* docs/method.md §5 upper-boundary rule, u = hi[k] */
-                cand[2] = gu0 > 0.0 ? -a + K * d0 / su0 : cand[2];
-                cand[3] = gu1 > 0.0 ? -a - K * d1 / su1 : cand[3];
-            }
-            for (int j = 0; j < 4; j++)
-                if (cand[j] > best) {
-                    best = cand[j];
-                    bt = (ts_term)(TS_TERM_LOWER_LEFT + j);
-                }
-        }
-        double rule = opt->margin + best;
-        if (!isfin(rule) || !isfin(a + rule)) {
-            st = fail(err, TS_ERR_INFEASIBLE, i, TS_WHERE_INTERVAL);
-            goto out;
-        }
+        ts_term bt;
+        double rule = opt->margin + box_rule(c, i, a, &bt);
+        if (!isfin(rule) || !isfin(a + rule))
+            return fail(err, TS_ERR_INFEASIBLE, i, TS_WHERE_INTERVAL);
         if (rule >= b) {
             c->beta[i] = rule;
             c->term[i] = (unsigned char)bt;
         }
     }
+    return TS_OK;
+}
 
-    /* docs/method.md §3 control points */
+/* docs/method.md §3 control points (TS_ERR_NONFINITE where they
+ * overflow), then §5: the exact certificate per segment and coordinate,
+ * repaired by the spline's search. */
+static ts_status curve_controls(ts_curve *c, double margin, ts_error *err)
+{
+    size_t n = c->n, dim = c->dim;
     for (size_t i = 0; i < n; i++) {
         seg_controls(c, i);
         for (size_t j = 0; j < 4 * dim; j++)
-            if (!isfin(c->ctrl[i * 4 * dim + j])) {
-                st = fail(err, TS_ERR_NONFINITE, i, TS_WHERE_INTERVAL);
-                goto out;
-            }
+            if (!isfin(c->ctrl[i * 4 * dim + j]))
+                return fail(err, TS_ERR_NONFINITE, i, TS_WHERE_INTERVAL);
     }
+    for (size_t i = 0; c->has_box && i < n; i++) {
+        if (seg_certified(c, i))
+            continue;
+        if (seg_repair(c, i, margin) != 0)
+            return fail(err, TS_ERR_INFEASIBLE, i, TS_WHERE_INTERVAL);
+        c->term[i] = TS_TERM_CERTIFY;
+    }
+    return TS_OK;
+}
 
-    /* docs/method.md §5: exact certificate per segment and coordinate, repair by bisection */
-    if (has_box)
-        for (size_t i = 0; i < n; i++) {
-            if (seg_certified(c, i))
-                continue;
-            if (seg_repair(c, i, opt->margin) != 0) {
-                st = fail(err, TS_ERR_INFEASIBLE, i, TS_WHERE_INTERVAL);
-                goto out;
-            }
-            c->term[i] = TS_TERM_CERTIFY;
-        }
+/* The stages after the checks, on an allocated curve: points, knots,
+ * slopes (docs/method.md §6, per coordinate; §5.8 at the box's sides), β,
+ * controls and certificates. */
+static ts_status curve_build(ts_curve *c, const double *points, size_t m,
+                             const ts_curve_options *opt, double *ws[4], ts_error *err)
+{
+    size_t n = c->n, dim = c->dim;
+    for (size_t i = 0; i < m; i++)
+        memcpy(c->p + i * dim, points + i * dim, dim * sizeof(double));
+    if (c->closed)
+        memcpy(c->p + n * dim, points, dim * sizeof(double));
+    ts_status st = curve_knots(c, m, err);
+    for (size_t k = 0; k < dim && st == TS_OK; k++)
+        st = coord_slopes(c, opt->slopes, k, ws[0], ws[1], ws[2], ws[3], err);
+    if (st != TS_OK)
+        return st;
+    /* (ts__slopes refuses non-finite slopes: TS_ERR_SLOPE_OVERFLOW) */
+    if (c->has_box)
+        touch_slopes(c);
+    if ((st = curve_betas(c, opt, err)) != TS_OK)
+        return st;
+    return curve_controls(c, opt->margin, err);
+}
 
-out:
-    free(ft);
-    free(te);
-    free(fe);
-    free(de);
+ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
+                       const ts_curve_options *opt, ts_curve **out, ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (out)
+        *out = NULL;
+    if (!points || !out)
+        return fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    ts_curve_options defaults;
+    if (!opt) {
+        curve_options_defaults(&defaults);
+        opt = &defaults;
+    }
+    size_t m = 0, n = 0;
+    int has_box = 0;
+    ts_status st = check_args(points, n_points, dim, opt, &m, &n, err);
+    if (st == TS_OK)
+        st = check_params(opt, n, dim, &has_box, err);
+    if (st == TS_OK)
+        st = check_points(points, m, dim, opt->closed != 0, opt, err);
+    if (st != TS_OK)
+        return st;
+    ts_curve *c = ts__calloc(1, sizeof *c);
+    if (!c)
+        return fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
+    c->n = n;
+    c->dim = dim;
+    c->closed = opt->closed != 0;
+    c->param = opt->param;
+    c->has_box = has_box;
+    for (size_t k = 0; k < 3; k++) {
+        c->box.has_lo[k] = k < dim && opt->has_lo[k] != 0;
+        c->box.has_hi[k] = k < dim && opt->has_hi[k] != 0;
+        c->box.lo[k] = c->box.has_lo[k] ? opt->lo[k] : 0.0;
+        c->box.hi[k] = c->box.has_hi[k] ? opt->hi[k] : 0.0;
+    }
+    double *ws[4] = {NULL, NULL, NULL, NULL};
+    st = curve_alloc(c, ws);
+    if (st != TS_OK)
+        fail(err, st, TS_NO_INDEX, TS_WHERE_NONE);
+    else
+        st = curve_build(c, points, m, opt, ws, err);
+    for (int j = 0; j < 4; j++)
+        free(ws[j]);
     if (st != TS_OK) {
         curve_release(c);
         return st;

@@ -5,12 +5,14 @@
  * functions of files in lower layers; no file calls a public entry point of
  * the library; tools/check_layers.py checks both):
  *   L0  status.c    status strings, the version, the error setter, allocation
+ *       checks.c    input checks shared by the constructors
  *       basis.c     the basis, its derivatives and integrals, interval search
  *       trigmin.c   exact minimum of a trigonometric polynomial minus a line
  *   L1  slopes.c    slope estimates
  *       controls.c  control values of every form
  *       geometric.c the geometric form: X(θ) = x, value, integral, bound
- *   L2  interval.c  one interval of any form: value, derivatives, integral
+ *   L2  interval.c  one interval of any form: value, derivatives, integral;
+ *                   the per-form table (ts__form)
  *       shape.c     the schemes' β rules and data checks
  *       certificate.c  interval gaps, hull and control-value proofs (read-only)
  *       surface_net.c  surfaces: control nets, patch bases, control gaps
@@ -142,6 +144,60 @@ TS_INLINE double ts__width_error(double x0, double x1, double h)
 TS_INLINE int ts__touch_leaves(double d, int inner, int first, double up)
 {
     return inner ? d != 0.0 : (first ? up * d < 0.0 : up * d > 0.0);
+}
+
+/* ---- checks.c -------------------------------------------------------- */
+/* Knots x[0..np) (np >= 1) and values f (x itself where there are none):
+ * in this order every x_i, f_i finite (TS_ERR_NONFINITE), x strictly
+ * increasing (TS_ERR_UNSORTED), every width x_i − x_{i−1} in [wmin, wmax]
+ * (TS_ERR_WIDTH, index i), every |f_i| <= vmax (TS_ERR_TOO_LARGE); the
+ * first offender of the first check that fails (*index, a point; the
+ * caller reports it, TS_WHERE_POINT). */
+ts_status ts__check_knots(const double *x, const double *f, size_t np, double vmax, double wmin,
+                          double wmax, size_t *index);
+/* alpha_i > 0 and finite (TS_ERR_ALPHA); beta_i >= 0 with alpha_i + beta_i
+ * positive and finite (TS_ERR_BETA; alpha_i already valid); a margin t > 0
+ * and finite (TS_ERR_MARGIN).  NaN fails each; & so that loops vectorise. */
+TS_INLINE int ts__alpha_ok(double alpha)
+{
+    return (alpha > 0.0) & (alpha <= DBL_MAX);
+}
+TS_INLINE int ts__beta_ok(double alpha, double beta)
+{
+    double a = alpha + beta;
+    return (beta >= 0.0) & (beta <= DBL_MAX) & (a > 0.0) & (a <= DBL_MAX);
+}
+TS_INLINE int ts__margin_ok(double t)
+{
+    return (t > 0.0) & (t <= DBL_MAX);
+}
+/* The first i in [i0, i1) whose alpha_i (alphas ? alphas[i] : alpha),
+ * resp. beta_i, fails its rule; i1 if none. */
+size_t ts__first_bad_alpha(double alpha, const double *alphas, size_t i0, size_t i1);
+size_t ts__first_bad_beta(double alpha, const double *alphas, double beta, const double *betas,
+                          size_t i0, size_t i1);
+
+/* docs/method.md §5 (upper boundary with §5.3's signs): the β terms of one
+ * boundary line at both ends of an interval, sg = +1 for a lower line (gaps
+ * g = f − L, slopes d relative to the line's), −1 for an upper (g = L − f):
+ * −α ∓ sg K d/g at the left and right ends, taken into *b, *t (terms t0 and
+ * t0 + 1) where the gap is > 0 (a knot on the line drops its term, §5.8) and
+ * the term is strictly larger.  Splines (shape.c, per line) and curves
+ * (curve.c, per coordinate against its box).  The divisor is 1 where the
+ * term is not taken: it is computed before it is selected (vector loops),
+ * and 0/0 or x/0 there would raise FE_INVALID or FE_DIVBYZERO on valid
+ * data. */
+TS_INLINE void ts__beta_line(double al, double K, double g0, double g1, double d0, double d1,
+                             double sg, int t0, double *b, int *t)
+{
+    double v0 = -al - sg * K * d0 / (g0 > 0.0 ? g0 : 1.0);
+    double v1 = -al + sg * K * d1 / (g1 > 0.0 ? g1 : 1.0);
+    int take0 = (g0 > 0.0) & (v0 > *b);
+    *b = take0 ? v0 : *b;
+    *t = take0 ? t0 : *t;
+    int take1 = (g1 > 0.0) & (v1 > *b);
+    *b = take1 ? v1 : *b;
+    *t = take1 ? t0 + 1 : *t;
 }
 
 /* ---- basis.c (docs/method.md §2) ----------------------------------------------- */
@@ -441,18 +497,32 @@ void ts__slopes_range(ts_slopes method, const double *x, const double *f, size_t
 
 /* ---- controls.c (docs/method.md §3, §4) ---------------------------------------- */
 /* Recompute b1, b2 (and κ in the geometric form) of intervals
- * i0..i1-1 (i0 < i1 <= n) from x, f, d, alpha, beta, per the form.  For the
- * C¹ form the knots' d̂ depend on both neighbours, so callers pass the
- * widened range. */
-void ts__controls(ts_spline *sp, size_t i0, size_t i1);
-/* docs/method.md §4: the geometric form's k_i = (2/(3π)) h_i / a_i
- * (B1 = f_i + k_i d_i, X1 = x_i + k_i; controls.c and ts_spline_control),
- * and κ = 2/(3π a) (the geometric form's stored κ_i; the error constants). */
-static inline double ts__geo_k(double h, double a)
+ * i0..i1-1 (i0 < i1 <= n) from x, f, d, alpha, beta, one function per form
+ * (called through ts__form).  For the C¹ form the knots' d̂ depend on both
+ * neighbours, so callers pass the widened range. */
+void ts__controls_paper(ts_spline *sp, size_t i0, size_t i1);
+void ts__controls_c1(ts_spline *sp, size_t i0, size_t i1);
+void ts__controls_geo(ts_spline *sp, size_t i0, size_t i1);
+/* The a that divides d_i and d_{i+1} in interval i's controls: a_i at
+ * both ends (paper, geometric); the C¹ form's max(a_{j−1}, a_j) of each
+ * knot (docs/method.md §3), one-sided at the ends. */
+void ts__ends_a(const ts_spline *sp, size_t i, double *aL, double *aR);
+void ts__ends_a_c1(const ts_spline *sp, size_t i, double *aL, double *aR);
+/* docs/method.md §3, §4: K_i = (2/(3π)) h_i, the control offset of θ linear
+ * in x (the paper and C¹ forms' abscissae X1 = x_i + K_i; the schemes' β
+ * rules of §5 and §11.3); k_i = K_i / a_i (B1 = f_i + k_i d_i, and the
+ * geometric form's X1 = x_i + k_i); κ = 2/(3π a) (the geometric form's
+ * stored κ_i; the error constants; surfaces' X̂).  The one spelling of
+ * each: every user reads these. */
+TS_INLINE double ts__geo_K(double h)
 {
-    return 2.0 / (3.0 * TS_PI) * h / a;
+    return 2.0 / (3.0 * TS_PI) * h;
 }
-static inline double ts__kappa(double a)
+TS_INLINE double ts__geo_k(double h, double a)
+{
+    return ts__geo_K(h) / a;
+}
+TS_INLINE double ts__kappa(double a)
 {
     return 2.0 / (3.0 * TS_PI * a);
 }
@@ -496,6 +566,29 @@ TS_INLINE void ts__geo_in(const ts_spline *sp, size_t i, double x, int want, dou
 /* ==== L2 ============================================================ */
 
 /* ---- interval.c (docs/method.md §2–§4) ----------------------------------------- */
+/* What differs between the forms (docs/method.md §3, §4), one entry per
+ * ts_form.  Read once per call: a loop over queries or intervals looks its
+ * form up before it starts (ts_eval's inline path and the batch kernels'
+ * inner loops call nothing through it). */
+typedef struct ts__form_ops {
+    int geometric;  /* κ_i stored; abscissae X̂ = (0, κ, 1 − κ, 1); S solves X(θ) = x (§4) */
+    int neighbours; /* an interval's controls read its neighbours' a_j (C¹, §3) */
+    int kernel;     /* the batch kernels' family (kernels.c): 0 θ linear in x, 1 geometric */
+    /* b1, b2 (κ) of intervals [i0, i1) (controls.c) */
+    void (*controls)(ts_spline *sp, size_t i0, size_t i1);
+    /* cum[i + 1] = ∫ over interval i, i in [i0, i1) */
+    void (*wholes)(const ts_spline *sp, size_t i0, size_t i1, double *cum);
+    /* value and derivatives of interval i at any x (ts__interval_eval) */
+    void (*eval)(const ts_spline *sp, size_t i, double x, int want, double o[3]);
+    /* 2^-k ∫_a^b S on interval i, the closed form (b − a > h/16) */
+    double (*integral)(const ts_spline *sp, size_t i, double a, double b, int k);
+    /* the control abscissae's offset: X1 = x_i + k, X2 = x_{i+1} − k */
+    double (*k)(const ts_spline *sp, size_t i);
+    /* the a dividing the slopes at the two ends of interval i (ts__ends_a) */
+    void (*ends_a)(const ts_spline *sp, size_t i, double *aL, double *aR);
+} ts__form_ops;
+/* The entry of form (a valid ts_form). */
+const ts__form_ops *ts__form(ts_form form);
 /* Value and derivatives (in x; out[1], out[2] only if want > 0, > 1) of
  * interval i at x, any form; x may lie outside the interval (extension). */
 void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double o[3]);

@@ -1,17 +1,14 @@
 /* One interval of a spline, any form: value, derivatives and integral
- * (docs/method.md §2, §3; the geometric form in geometric.c, docs/method.md §4). */
+ * (docs/method.md §2, §3; the geometric form in geometric.c, docs/method.md §4),
+ * and the table of what differs between the forms (ts__form). */
 #include "internal.h"
 
 #include <math.h>
 
-/* Value and derivatives (in x) of interval i at x; x may lie outside the
- * interval (TS_EXTRAP_EXTEND). */
-void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double o[3])
+/* Value and derivatives (in x) of interval i at x, paper and C¹ forms; x
+ * may lie outside the interval (TS_EXTRAP_EXTEND). */
+static void trig_eval(const ts_spline *sp, size_t i, double x, int want, double o[3])
 {
-    if (sp->form == TS_FORM_GEOMETRIC) {
-        ts__geo_eval(sp, i, x, want, o);
-        return;
-    }
     double u = x - sp->x[i], v = sp->x[i + 1] - x;
     if (u >= 0.0 && v >= 0.0) {
         ts__trig_eval_in(sp, i, x, want, o);
@@ -66,24 +63,86 @@ static const double gl_weight[6] = {
  * θ), so 12 points are exact to rounding on a sixteenth of the interval. */
 static double short_piece(const ts_spline *sp, size_t i, double a, double b, int k)
 {
+    void (*eval)(const ts_spline *, size_t, double, int, double[3]) = ts__form(sp->form)->eval;
     double half = 0.5 * (b - a), mid = a + half, sum = 0.0;
     for (int j = 0; j < 12; j++) {
         double xi = j < 6 ? -gl_node[j] : gl_node[11 - j];
         double w = j < 6 ? gl_weight[j] : gl_weight[11 - j];
         double x = mid + half * xi, o[3];
         x = x < a ? a : x > b ? b : x;
-        ts__interval_eval(sp, i, x, 0, o);
+        eval(sp, i, x, 0, o);
         sum += w * o[0];
     }
     return ldexp(half, -k) * sum;
+}
+
+/* The closed forms of 2^-k ∫_a^b S: paper and C¹ forms (the antiderivative
+ * in θ), geometric (geometric.c). */
+static double trig_integral(const ts_spline *sp, size_t i, double a, double b, int k)
+{
+    double w = ldexp(width_factor(sp->h[i]), 2 - k);
+    return w * (theta_antiderivative(sp, i, b) - theta_antiderivative(sp, i, a));
+}
+
+static double geo_integral(const ts_spline *sp, size_t i, double a, double b, int k)
+{
+    return ts__geo_integral_scaled(sp, i, b, k) - ts__geo_integral_scaled(sp, i, a, k);
 }
 
 double ts__interval_integral_scaled(const ts_spline *sp, size_t i, double a, double b, int k)
 {
     if (b - a <= 0.0625 * sp->h[i])
         return short_piece(sp, i, a, b, k);
-    if (sp->form == TS_FORM_GEOMETRIC)
-        return ts__geo_integral_scaled(sp, i, b, k) - ts__geo_integral_scaled(sp, i, a, k);
-    double w = ldexp(width_factor(sp->h[i]), 2 - k);
-    return w * (theta_antiderivative(sp, i, b) - theta_antiderivative(sp, i, a));
+    return ts__form(sp->form)->integral(sp, i, a, b, k);
+}
+
+/* ∫ of interval i, i in [i0, i1) (paper and C¹ forms). */
+TS_VECTOR_LOOP static void trig_wholes_loop(const double *restrict h, const double *restrict f,
+                                            const double *restrict b1, const double *restrict b2,
+                                            double *restrict cum, size_t i0, size_t i1)
+{
+    /* ∫ A_l over [0, π/2]: 5π/4 - 11/3 (l = 0, 3), 11/3 - π (l = 1, 2) */
+    const double e = 1.25 * TS_PI - 11.0 / 3.0, m = 11.0 / 3.0 - TS_PI;
+    for (size_t i = i0; i < i1; i++) {
+        double w = 2.0 * h[i] / TS_PI; /* dx/dθ, also where 2h overflows */
+        w = w <= DBL_MAX ? w : h[i] * (2.0 / TS_PI);
+        cum[i + 1] = w * (e * (f[i] + f[i + 1]) + m * (b1[i] + b2[i]));
+    }
+}
+
+static void trig_wholes(const ts_spline *sp, size_t i0, size_t i1, double *cum)
+{
+    trig_wholes_loop(sp->h, sp->f, sp->b1, sp->b2, cum, i0, i1);
+}
+
+/* docs/method.md §3: θ linear in x, X1 = x_i + K_i; §4: X1 = x_i + k_i. */
+static double trig_k(const ts_spline *sp, size_t i)
+{
+    return ts__geo_K(sp->h[i]);
+}
+
+static double geo_k(const ts_spline *sp, size_t i)
+{
+    return ts__geo_k(sp->h[i], sp->alpha[i] + sp->beta[i]);
+}
+
+_Static_assert(TS_FORM_PAPER == 0 && TS_FORM_C1 == 1 && TS_FORM_GEOMETRIC == 2,
+               "forms[] is indexed by ts_form");
+static const ts__form_ops forms[3] = {
+    /* TS_FORM_PAPER (docs/method.md §3) */
+    {0, 0, 0, ts__controls_paper, trig_wholes, trig_eval, trig_integral, trig_k, ts__ends_a},
+    /* TS_FORM_C1 (docs/method.md §3, the C¹ option) */
+    {0, 1, 0, ts__controls_c1, trig_wholes, trig_eval, trig_integral, trig_k, ts__ends_a_c1},
+    /* TS_FORM_GEOMETRIC (docs/method.md §4) */
+    {1, 0, 1, ts__controls_geo, ts__geo_wholes, ts__geo_eval, geo_integral, geo_k, ts__ends_a},
+};
+
+const ts__form_ops *ts__form(ts_form form)
+{
+    return &forms[form];
+}
+
+void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double o[3])
+{
+    forms[sp->form].eval(sp, i, x, want, o);
 }

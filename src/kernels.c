@@ -536,8 +536,8 @@ TS_NOINLINE int ts__fast_pick(int isa, int has2, int has512)
     return isa <= 0 ? 0 : -1;
 }
 
-/* The kernel ts__fast_pick chooses on this CPU for the form (geo: the
- * geometric form); NULL if none. */
+/* The kernel ts__fast_pick chooses on this CPU for the form's family
+ * (geo: ts__form_ops.kernel); NULL if none. */
 static TS_NOINLINE pipeline_fn pick(int isa, int geo)
 {
 #if TS_FAST_X86
@@ -569,13 +569,13 @@ static size_t batch(const ts_spline *sp, int deriv, const double *xq, size_t m, 
 size_t ts__fast_batch(const ts_spline *sp, int deriv, const double *xq, size_t m,
                       double *yq, ts_cursor *cur)
 {
-    return batch(sp, deriv, xq, m, yq, cur, pick(-1, sp->form == TS_FORM_GEOMETRIC));
+    return batch(sp, deriv, xq, m, yq, cur, pick(-1, ts__form(sp->form)->kernel));
 }
 
 int ts__fast_batch_isa(const ts_spline *sp, int deriv, const double *xq, size_t m,
                        double *yq, ts_cursor *cur, int isa, size_t *done)
 {
-    pipeline_fn fn = pick(isa, sp->form == TS_FORM_GEOMETRIC);
+    pipeline_fn fn = pick(isa, ts__form(sp->form)->kernel);
     if (!fn)
         return 0;
     size_t k = batch(sp, deriv, xq, m, yq, cur, fn);

@@ -122,14 +122,15 @@ typedef struct spline_ctx {
 /* Set a_i (through beta_i) and recompute the controls it touches. */
 static void set_a(ts_spline *sp, size_t i, double a)
 {
+    const ts__form_ops *form = ts__form(sp->form);
     size_t n = sp->n, i0 = i, i1 = i + 1;
     sp->beta[i] = a - sp->alpha[i];
-    if (sp->form == TS_FORM_C1) {
+    if (form->neighbours) {
         /* d̂ of both knots changes (docs/method.md §3) */
         i0 = i > 0 ? i - 1 : 0;
         i1 = i + 2 < n ? i + 2 : n;
     }
-    ts__controls(sp, i0, i1);
+    form->controls(sp, i0, i1);
 }
 
 static void spline_set_a(void *ctx, size_t i, double a)
@@ -154,7 +155,7 @@ static int spline_limit_inside(void *ctx, size_t i)
     B[2] = B[3] = sp->f[i + 1];
     X[0] = X[1] = 0.0; /* local abscissae (ts__controls_of): κ -> 0 */
     X[2] = X[3] = 1.0;
-    return ts__check_ctl(sp, i, B, sp->form == TS_FORM_GEOMETRIC ? X : NULL, z->exact, &cr, 0);
+    return ts__check_ctl(sp, i, B, ts__form(sp->form)->geometric ? X : NULL, z->exact, &cr, 0);
 }
 
 /* Certification margin of interval i (lines only): min over the active
@@ -193,7 +194,7 @@ static ts_status repair(ts_spline *sp, size_t i, double t, int exact, ts_error *
 {
     spline_ctx z = {sp, exact};
     ts__repair_ops o = {&z, spline_set_a, spline_inside, spline_limit_inside,
-                        sp->form == TS_FORM_GEOMETRIC ? NULL : spline_margin, spline_gap};
+                        ts__form(sp->form)->geometric ? NULL : spline_margin, spline_gap};
     ts_status st = ts__repair_search(&o, i, sp->alpha[i], sp->alpha[i] + sp->beta[i], t);
     if (st != TS_OK)
         return ts__fail(err, st, i, TS_WHERE_INTERVAL);
@@ -252,7 +253,7 @@ static int c1_uniform_ok(ts_spline *sp, double A, int exact)
     size_t n = sp->n;
     for (size_t j = 0; j < n; j++) /* A >= every alpha_j (c1_uniform) */
         sp->beta[j] = A - sp->alpha[j];
-    ts__controls(sp, 0, n);
+    ts__controls_c1(sp, 0, n);
     for (size_t j = 0; j < n; j++)
         if (!ts__check_interval(sp, j, exact))
             return 0;
@@ -296,7 +297,7 @@ static int c1_uniform(ts_spline *sp, double t, int exact)
  * gap + guard (above the true gap). */
 static double c1_margin(const ts_spline *sp, size_t i, double uL, double uR, double *gap)
 {
-    double K = 2.0 / (3.0 * TS_PI) * sp->h[i], r = (double)INFINITY, g = r, guard, at;
+    double K = ts__geo_K(sp->h[i]), r = (double)INFINITY, g = r, guard, at;
     double B[4] = {sp->f[i], sp->f[i] + K * (sp->d[i] * uL), sp->f[i + 1] - K * (sp->d[i + 1] * uR),
                    sp->f[i + 1]};
     for (int side = 0; side < 2; side++) {
@@ -387,7 +388,7 @@ static ts_status c1_fallback(ts_spline *sp, size_t i, double t, int exact, ts_er
 static ts_status certify_loop(ts_spline *sp, const ts_options *opt, size_t i0, size_t i1,
                               ts_error *err)
 {
-    int exact = ts__certify_exact(opt);
+    int exact = ts__certify_exact(opt), neighbours = ts__form(sp->form)->neighbours;
     /* every repair moves on (paper, geometric) or may step back once (C¹) */
     size_t budget = 16 * sp->n + 64;
     size_t i = i0;
@@ -417,16 +418,16 @@ static ts_status certify_loop(ts_spline *sp, const ts_options *opt, size_t i0, s
         if (budget-- == 0) /* only the C¹ form steps back */
             return c1_fallback(sp, i, t, exact, err);
         ts_status st = repair(sp, i, t, exact, err);
-        if (st != TS_OK && sp->form == TS_FORM_C1 && relax_neighbours(sp, i, exact)) {
+        if (st != TS_OK && neighbours && relax_neighbours(sp, i, exact)) {
             ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
             st = repair(sp, i, t, exact, err);
         }
-        if (st != TS_OK && sp->form == TS_FORM_C1)
+        if (st != TS_OK && neighbours)
             return c1_fallback(sp, i, t, exact, err);
         if (st != TS_OK)
             return st;
         /* C¹: the repair changed d̂_i, so re-check the left neighbour */
-        if (sp->form == TS_FORM_C1 && i > 0)
+        if (neighbours && i > 0)
             i--;
         else
             i++;

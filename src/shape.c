@@ -224,13 +224,11 @@ static void monotone_slopes(ts_spline *sp, int dir, size_t p0, size_t p1)
 static ts_status check_margins(const ts_options *opt, size_t i0, size_t i1, ts_error *err)
 {
     double t0 = opt->margin;
-    if (!opt->margins && t0 > 0.0 && t0 <= DBL_MAX)
+    if (!opt->margins && ts__margin_ok(t0))
         return TS_OK; /* one margin for all */
-    for (size_t i = i0; i < i1; i++) {
-        double t = opt->margins ? opt->margins[i] : opt->margin;
-        if (!(t > 0.0 && t <= DBL_MAX))
+    for (size_t i = i0; i < i1; i++)
+        if (!ts__margin_ok(opt->margins ? opt->margins[i] : opt->margin))
             return fail(err, TS_ERR_MARGIN, i, TS_WHERE_INTERVAL);
-    }
     return TS_OK;
 }
 
@@ -277,7 +275,6 @@ static ts_status boundaries(ts_spline *sp, const ts_options *opt, ts_error *err)
         unsigned char *restrict term
 #define TS_BETA_PASS(sp) (sp)->x, (sp)->f, (sp)->d, (sp)->h, (sp)->alpha, (sp)->beta, (sp)->term
 
-#define TS_K0 (2.0 / (3.0 * TS_PI))
 /* The divisor where the term is taken, else 1: a term is computed before
  * it is selected (so the loops vectorise), and 0/0 or x/0 there would raise
  * FE_INVALID or FE_DIVBYZERO on valid data (zero gaps, flat intervals). */
@@ -296,12 +293,11 @@ TS_VECTOR_LOOP static void consider_lower(TS_BETA_ARRAYS, size_t i0, size_t i1, 
                                           double ml)
 {
     for (size_t i = i0; i < i1; i++) {
-        double al = alpha[i], K = TS_K0 * h[i];
         double g0 = f[i] - fma(m, x[i], c), g1 = f[i + 1] - fma(m, x[i + 1], c);
         double b = best[i];
         int t = term[i];
-        TS_CONSIDER(g0 > 0.0, -al - K * (d[i] - ml) / TS_SAFE(g0 > 0.0, g0), TS_TERM_LOWER_LEFT);
-        TS_CONSIDER(g1 > 0.0, -al + K * (d[i + 1] - ml) / TS_SAFE(g1 > 0.0, g1), TS_TERM_LOWER_RIGHT);
+        ts__beta_line(alpha[i], ts__geo_K(h[i]), g0, g1, d[i] - ml, d[i + 1] - ml, 1.0,
+                      TS_TERM_LOWER_LEFT, &b, &t);
         best[i] = b;
         term[i] = (unsigned char)t;
     }
@@ -312,12 +308,11 @@ TS_VECTOR_LOOP static void consider_upper(TS_BETA_ARRAYS, size_t i0, size_t i1, 
                                           double mu)
 {
     for (size_t i = i0; i < i1; i++) {
-        double al = alpha[i], K = TS_K0 * h[i];
         double G0 = fma(m, x[i], c) - f[i], G1 = fma(m, x[i + 1], c) - f[i + 1];
         double b = best[i];
         int t = term[i];
-        TS_CONSIDER(G0 > 0.0, -al + K * (d[i] - mu) / TS_SAFE(G0 > 0.0, G0), TS_TERM_UPPER_LEFT);
-        TS_CONSIDER(G1 > 0.0, -al - K * (d[i + 1] - mu) / TS_SAFE(G1 > 0.0, G1), TS_TERM_UPPER_RIGHT);
+        ts__beta_line(alpha[i], ts__geo_K(h[i]), G0, G1, d[i] - mu, d[i + 1] - mu, -1.0,
+                      TS_TERM_UPPER_LEFT, &b, &t);
         best[i] = b;
         term[i] = (unsigned char)t;
     }
@@ -328,7 +323,7 @@ TS_VECTOR_LOOP static void consider_monotone(TS_BETA_ARRAYS, size_t i0, size_t i
 {
     (void)x;
     for (size_t i = i0; i < i1; i++) {
-        double al = alpha[i], K = TS_K0 * h[i], df = f[i + 1] - f[i];
+        double al = alpha[i], K = ts__geo_K(h[i]), df = f[i + 1] - f[i];
         double b = best[i];
         int t = term[i];
         TS_CONSIDER(df != 0.0, K * (d[i] + d[i + 1]) / TS_SAFE(df != 0.0, df) - al, TS_TERM_MONOTONE);

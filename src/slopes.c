@@ -234,27 +234,6 @@ static void periodic(const double *x, const double *f, size_t n, double *d, size
         d[n] = e;
 }
 
-/* x, f finite, x strictly increasing with finite widths (np >= 2): one pass
- * of flags, so that it vectorises; ts_slopes_compute's ordered checks then
- * name the first offender. */
-TS_VECTOR_LOOP static int inputs_block(const double *restrict x, const double *restrict f,
-                                       size_t i0, size_t i1)
-{
-    int ok = 1;
-    for (size_t i = i0; i < i1; i++)
-        ok &= (fabs(x[i]) <= DBL_MAX) & (fabs(f[i]) <= DBL_MAX) & (x[i] > x[i - 1]) &
-              (x[i] - x[i - 1] <= DBL_MAX);
-    return ok;
-}
-
-static int inputs_ok(const double *x, const double *f, size_t np)
-{
-    int ok = fabs(x[0]) <= DBL_MAX && fabs(f[0]) <= DBL_MAX;
-    for (size_t i0 = 1; i0 < np && ok; i0 += 4096)
-        ok = inputs_block(x, f, i0, np - i0 > 4096 ? i0 + 4096 : np);
-    return ok;
-}
-
 /* 1 if every d[0..np) is finite. */
 TS_VECTOR_LOOP static int all_finite(const double *restrict d, size_t np)
 {
@@ -324,35 +303,11 @@ ts_status ts__slopes(ts_slopes method, const double *x, const double *f, size_t 
     return TS_ERR_SLOPE_OVERFLOW;
 }
 
-/* Where inputs_ok failed, its checks in order: the first offender. */
-static ts_status first_offender(const double *x, const double *f, size_t np, size_t *idx)
-{
-    size_t i;
-    for (i = 0; i < np; i++) {
-        if (!isfinite(x[i]) || !isfinite(f[i])) {
-            *idx = i;
-            return TS_ERR_NONFINITE;
-        }
-    }
-    for (i = 1; i < np; i++) {
-        if (!(x[i] > x[i - 1])) {
-            *idx = i;
-            return TS_ERR_UNSORTED;
-        }
-    }
-    /* the one failure of inputs_ok left (as ts_spline_new): a width
-     * overflows, so this loop stops before np */
-    for (i = 1; isfinite(x[i] - x[i - 1]); i++)
-        ;
-    *idx = i;
-    return TS_ERR_WIDTH;
-}
-
 ts_status ts_slopes_compute(ts_slopes method, const double *x, const double *f,
                             size_t n_points, double *d, ts_error *err)
 {
     ts_status st = TS_OK;
-    size_t idx = TS_NO_INDEX;
+    size_t at = TS_NO_INDEX;
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
     if (!x || !f || !d) {
         st = TS_ERR_NULL;
@@ -362,10 +317,9 @@ ts_status ts_slopes_compute(ts_slopes method, const double *x, const double *f,
         st = TS_ERR_TOO_FEW;
         goto fail;
     }
-    if (!inputs_ok(x, f, n_points)) {
-        st = first_offender(x, f, n_points, &idx);
+    /* widths only finite: no dθ/dx here */
+    if ((st = ts__check_knots(x, f, n_points, DBL_MAX, 0.0, DBL_MAX, &at)) != TS_OK)
         goto fail;
-    }
     if (!((int)method >= 0 && (int)method < TS_SLOPES_COUNT_) || method == TS_SLOPES_USER) {
         st = TS_ERR_OPTION;
         goto fail;
@@ -377,7 +331,7 @@ ts_status ts_slopes_compute(ts_slopes method, const double *x, const double *f,
         d[i] = (double)NAN;
     return st;
 fail:
-    ts__error_set(err, st, idx, idx == TS_NO_INDEX ? TS_WHERE_NONE : TS_WHERE_POINT);
+    ts__error_set(err, st, at, at == TS_NO_INDEX ? TS_WHERE_NONE : TS_WHERE_POINT);
     for (size_t i = 0; d && i < n_points; i++)
         d[i] = (double)NAN;
     return st;

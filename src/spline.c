@@ -53,12 +53,12 @@ TS_VECTOR_LOOP static int all_finite(const double *restrict v, size_t i0, size_t
     return ok;
 }
 
-/* 1 if every alpha_i, i in [i0, i1), is finite and > 0. */
+/* 1 if every alpha_i, i in [i0, i1), passes ts__alpha_ok. */
 TS_VECTOR_LOOP static int alpha_ok(const double *restrict al, size_t i0, size_t i1)
 {
     int ok = 1;
     for (size_t i = i0; i < i1; i++)
-        ok &= (al[i] > 0.0) & (al[i] <= DBL_MAX);
+        ok &= ts__alpha_ok(al[i]);
     return ok;
 }
 
@@ -98,50 +98,30 @@ static ts_status check_alpha(const ts_spline *sp, size_t i0, size_t i1, ts_error
 {
     if (alpha_ok(sp->alpha, i0, i1))
         return TS_OK;
-    size_t i = i0; /* the first offender (there is one) */
-    while (i + 1 < i1 && sp->alpha[i] > 0.0 && isfinite(sp->alpha[i]))
-        i++;
-    return ts__fail(err, TS_ERR_ALPHA, i, TS_WHERE_INTERVAL);
+    return ts__fail(err, TS_ERR_ALPHA, ts__first_bad_alpha(0.0, sp->alpha, i0, i1),
+                    TS_WHERE_INTERVAL);
 }
 
-/* 1 if beta_i is valid for every i in [i0, i1) (check_beta's test); term USER. */
+/* 1 if every beta_i, i in [i0, i1), passes ts__beta_ok; term USER. */
 TS_VECTOR_LOOP static int beta_ok(const double *restrict al, const double *restrict be,
                                   unsigned char *restrict term, size_t i0, size_t i1)
 {
     int ok = 1;
     for (size_t i = i0; i < i1; i++) {
-        double b = be[i], a = al[i] + b;
-        ok &= (b >= 0.0) & (b <= DBL_MAX) & (a > 0.0) & (a <= DBL_MAX);
+        ok &= ts__beta_ok(al[i], be[i]);
         term[i] = (unsigned char)TS_TERM_USER;
     }
     return ok;
 }
 
-/* TS_SHAPE_NONE: the caller's beta (filled), checked; term USER.  alpha
- * is checked first (> 0, finite): beta >= 0 with a finite alpha + beta is
- * beta_ok's test. */
+/* TS_SHAPE_NONE: the caller's beta (filled), checked (alpha already is);
+ * term USER. */
 static ts_status check_beta(ts_spline *sp, size_t i0, size_t i1, ts_error *err)
 {
     if (beta_ok(sp->alpha, sp->beta, sp->term, i0, i1))
         return TS_OK;
-    size_t i = i0; /* the first offender (there is one) */
-    while (i + 1 < i1 && sp->beta[i] >= 0.0 && isfinite(sp->alpha[i] + sp->beta[i]))
-        i++;
-    return ts__fail(err, TS_ERR_BETA, i, TS_WHERE_INTERVAL);
-}
-
-/* ∫ of interval i, i in [i0, i1), into cum[i + 1] (paper and C¹ forms). */
-TS_VECTOR_LOOP static void wholes(const double *restrict h, const double *restrict f,
-                                  const double *restrict b1, const double *restrict b2,
-                                  double *restrict cum, size_t i0, size_t i1)
-{
-    /* ∫ A_l over [0, π/2]: 5π/4 - 11/3 (l = 0, 3), 11/3 - π (l = 1, 2) */
-    const double e = 1.25 * TS_PI - 11.0 / 3.0, m = 11.0 / 3.0 - TS_PI;
-    for (size_t i = i0; i < i1; i++) {
-        double w = 2.0 * h[i] / TS_PI; /* dx/dθ, also where 2h overflows */
-        w = w <= DBL_MAX ? w : h[i] * (2.0 / TS_PI);
-        cum[i + 1] = w * (e * (f[i] + f[i + 1]) + m * (b1[i] + b2[i]));
-    }
+    return ts__fail(err, TS_ERR_BETA, ts__first_bad_beta(0.0, sp->alpha, 0.0, sp->beta, i0, i1),
+                    TS_WHERE_INTERVAL);
 }
 
 /* Cumulative integrals cum[i0+1..i1] for ts_integral from the running sum
@@ -149,11 +129,7 @@ TS_VECTOR_LOOP static void wholes(const double *restrict h, const double *restri
 static double cumulate(ts_spline *sp, size_t i0, size_t i1, double sum)
 {
     double *cum = sp->cum;
-    if (sp->form == TS_FORM_GEOMETRIC) {
-        ts__geo_wholes(sp, i0, i1, cum);
-    } else {
-        wholes(sp->h, sp->f, sp->b1, sp->b2, cum, i0, i1);
-    }
+    ts__form(sp->form)->wholes(sp, i0, i1, cum);
     for (size_t i = i0; i < i1; i++) {
         sum += cum[i + 1];
         cum[i + 1] = sum;
@@ -201,7 +177,8 @@ static ts_status build(ts_spline *sp, const ts_options *o, const double *x, cons
 {
     size_t n = sp->n, np = n + 1, done = 0;
     int user = o->slopes == TS_SLOPES_USER, shaped = o->shape != TS_SHAPE_NONE, dir = 0;
-    int c1 = sp->form == TS_FORM_C1, geo = sp->form == TS_FORM_GEOMETRIC;
+    const ts__form_ops *form = ts__form(sp->form);
+    int c1 = form->neighbours, geo = form->geometric;
     ts_status st = TS_OK;
     if (user && !o->user_slopes)
         return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
@@ -244,13 +221,13 @@ static ts_status build(ts_spline *sp, const ts_options *o, const double *x, cons
             return st;
         if (c1)
             continue;
-        ts__controls(sp, i0, i1);
+        form->controls(sp, i0, i1);
         if (shaped && (st = ts__certify_range(sp, o, i0, i1, err)) != TS_OK)
             return st;
         sum = cumulate(sp, i0, i1, sum);
     }
     if (c1) {
-        ts__controls(sp, 0, n);
+        form->controls(sp, 0, n);
         if (shaped && (st = ts__certify_range(sp, o, 0, n, err)) != TS_OK)
             return st;
         (void)cumulate(sp, 0, n, 0.0);
@@ -270,26 +247,6 @@ static ts_status build(ts_spline *sp, const ts_options *o, const double *x, cons
                         i, TS_WHERE_INTERVAL);
     }
     return TS_OK;
-}
-
-/* x, f finite, x strictly increasing with finite widths: one pass for the
- * common case (ts_spline_new's ordered checks name the first offender). */
-TS_VECTOR_LOOP static int points_ok(const double *restrict x, const double *restrict f, size_t i0,
-                                    size_t i1)
-{
-    int ok = 1;
-    for (size_t i = i0; i < i1; i++)
-        ok &= (fabs(x[i]) <= DBL_MAX) & (fabs(f[i]) <= TS_VALUE_MAX) & (x[i] > x[i - 1]) &
-              (x[i] - x[i - 1] <= DBL_MAX) & (x[i] - x[i - 1] >= DBL_MIN);
-    return ok;
-}
-
-static int points_valid(const double *x, const double *f, size_t np)
-{
-    int ok = fabs(x[0]) <= DBL_MAX && fabs(f[0]) <= TS_VALUE_MAX;
-    for (size_t i0 = 1; i0 < np && ok; i0 += 4096)
-        ok = points_ok(x, f, i0, np - i0 > 4096 ? i0 + 4096 : np);
-    return ok;
 }
 
 ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
@@ -316,7 +273,7 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
     /* layout: 4 arrays of n+1 (x, f, d, cum), 5 of n (h, alpha, beta, b1, b2),
      * 1 of n for the geometric form's κ, term bytes.  Only what is used:
      * every byte per knot costs construction time. */
-    int geo = opt->form == TS_FORM_GEOMETRIC;
+    int geo = ts__form(opt->form)->geometric;
     size_t per_interval_arrays = 5 + (size_t)geo;
     size_t n = n_points - 1, a, b, c, total, bytes;
     if (!mul_ok(n_points, 4, &a) || !mul_ok(n, per_interval_arrays, &b))
@@ -326,24 +283,12 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
         return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
     bytes = c + n;
 
-    if (!points_valid(x, f, n_points)) {
-        for (size_t i = 0; i < n_points; i++)
-            if (!isfinite(x[i]) || !isfinite(f[i]))
-                return ts__fail(err, TS_ERR_NONFINITE, i, TS_WHERE_POINT);
-        for (size_t i = 1; i < n_points; i++)
-            if (!(x[i] > x[i - 1]))
-                return ts__fail(err, TS_ERR_UNSORTED, i, TS_WHERE_POINT);
-        /* widths must be finite and normal: dθ/dx = (π/2)/h must not overflow */
-        for (size_t i = 0; i < n; i++)
-            if (!(x[i + 1] - x[i] <= DBL_MAX && x[i + 1] - x[i] >= DBL_MIN))
-                return ts__fail(err, TS_ERR_WIDTH, i + 1, TS_WHERE_POINT);
-        /* docs: |f| <= TS_VALUE_MAX, so that S cannot overflow between knots
-         * (the one check of points_valid left: there is an offender) */
-        size_t i = 0;
-        while (i + 1 < n_points && fabs(f[i]) <= TS_VALUE_MAX)
-            i++;
-        return ts__fail(err, TS_ERR_TOO_LARGE, i, TS_WHERE_POINT);
-    }
+    /* widths finite and normal (dθ/dx = (π/2)/h must not overflow), |f| <=
+     * TS_VALUE_MAX (S cannot overflow between knots) */
+    size_t at;
+    ts_status st = ts__check_knots(x, f, n_points, TS_VALUE_MAX, DBL_MIN, DBL_MAX, &at);
+    if (st != TS_OK)
+        return ts__fail(err, st, at, TS_WHERE_POINT);
 
     ts_spline *sp = ts__calloc(1, sizeof *sp);
     double *blk = sp ? ts__alloc_block(bytes) : NULL;
@@ -368,7 +313,7 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
     if (geo)
         sp->kappa = p, p += n;
     sp->term = (unsigned char *)p;
-    ts_status st = build(sp, opt, x, f, err);
+    st = build(sp, opt, x, f, err);
     if (st != TS_OK) {
         spline_release(sp);
         return st;
@@ -418,18 +363,12 @@ ts_status ts_spline_control(const ts_spline *s, size_t i, double B[4], double X[
     if (i >= s->n)
         return TS_ERR_INDEX;
     ts__B(s, i, B);
-    if (X) {
+    if (X) { /* docs/method.md §3, §4: X = [x_i, x_i + k, x_{i+1} - k, x_{i+1}] */
+        double k = ts__form(s->form)->k(s, i);
         X[0] = s->x[i];
+        X[1] = s->x[i] + k;
+        X[2] = s->x[i + 1] - k;
         X[3] = s->x[i + 1];
-        if (s->form == TS_FORM_GEOMETRIC) { /* docs/method.md §4: X = [x_i, x_i + k, x_{i+1} - k, x_{i+1}] */
-            double k = ts__geo_k(s->h[i], s->alpha[i] + s->beta[i]);
-            X[1] = s->x[i] + k;
-            X[2] = s->x[i + 1] - k;
-        } else { /* docs/method.md §3: X = [x_i, x_i + K_i, x_{i+1} - K_i, x_{i+1}], as ts__controls had */
-            double K = 2.0 / (3.0 * TS_PI) * s->h[i];
-            X[1] = s->x[i] + K;
-            X[2] = s->x[i + 1] - K;
-        }
     }
     return TS_OK;
 }

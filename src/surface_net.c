@@ -13,7 +13,7 @@ static const double gl_w[6] = {0.2491470458134027, 0.23349253653835464, 0.203167
 
 static double kappa_of(const double *a, size_t i, ts_form form)
 {
-    return form == TS_FORM_GEOMETRIC ? 2.0 / (3.0 * TS_PI * a[i]) : 2.0 / (3.0 * TS_PI);
+    return ts__kappa(form == TS_FORM_GEOMETRIC ? a[i] : 1.0);
 }
 
 void ts__surf_xhat(const double *a, size_t i, ts_form form, double X[4])
@@ -39,7 +39,7 @@ void ts__surf_basis(const double *t, const double *a, size_t i, ts_form form, do
     int right = u > 0.5;
     double phi, s, c;
     if (form == TS_FORM_GEOMETRIC)
-        phi = ts__geo_solve(2.0 / (3.0 * TS_PI * a[i]), right ? w : u);
+        phi = ts__geo_solve(ts__kappa(a[i]), right ? w : u);
     else
         phi = TS_HALF_PI * (right ? w : u);
     s = sin(phi);
@@ -54,7 +54,7 @@ void ts__surf_basis(const double *t, const double *a, size_t i, ts_form form, do
         double D[4];
         ts__basis_d1(s, c, D);
         double dtheta = form == TS_FORM_GEOMETRIC
-                            ? 1.0 / (h * xhat_d1(2.0 / (3.0 * TS_PI * a[i]), D))
+                            ? 1.0 / (h * xhat_d1(ts__kappa(a[i]), D))
                             : TS_HALF_PI / h;
         for (int k = 0; k < 4; k++)
             dA[k] = D[k] * dtheta;
@@ -68,7 +68,7 @@ static double theta_at(const double *t, const double *a, size_t i, ts_form form,
     double u = (v - t[i]) / h;
     if (form != TS_FORM_GEOMETRIC)
         return TS_HALF_PI * u;
-    double kap = 2.0 / (3.0 * TS_PI * a[i]);
+    double kap = ts__kappa(a[i]);
     return u <= 0.5 ? ts__geo_solve(kap, u) : TS_HALF_PI - ts__geo_solve(kap, (t[i + 1] - v) / h);
 }
 
@@ -102,7 +102,7 @@ void ts__surf_basis_int(const double *t, const double *a, size_t i, ts_form form
             W[k] = (I1[k] - I0[k]) * h / TS_HALF_PI;
         return;
     }
-    double kap = 2.0 / (3.0 * TS_PI * a[i]), q = 0.25 * TS_PI;
+    double kap = ts__kappa(a[i]), q = 0.25 * TS_PI;
     for (int k = 0; k < 4; k++)
         W[k] = 0.0;
     /* pieces of length <= π/4: split at π/4 */

@@ -667,6 +667,13 @@ static void test_errors(void)
     double xb[3] = {0, TH_NAN, 2}, yb[3] = {0, 1, 1};
     CHECK(ts_surface_new(xb, 3, y, 3, z, NULL, &s, &e) == TS_ERR_NONFINITE && e.index == 1);
     CHECK(ts_surface_new(x, 3, yb, 3, z, NULL, &s, &e) == TS_ERR_UNSORTED && e.index == 2);
+    /* both faults on one axis: every non-finite knot first, then the order
+     * (as ts_spline_new and ts_slopes_compute name them) */
+    double xm[3] = {1, 0, TH_NAN};
+    CHECK(ts_surface_new(xm, 3, y, 3, z, NULL, &s, &e) == TS_ERR_NONFINITE && e.index == 2 &&
+          e.where == TS_WHERE_POINT);
+    ts_spline *sp_m = NULL;
+    CHECK(ts_spline_new(xm, y, 3, NULL, &sp_m, &e) == TS_ERR_NONFINITE && e.index == 2 && !sp_m);
     double zi[9] = {1, 2, 3, 4, 5, TH_INF, 7, 8, 9};
     CHECK(ts_surface_new(x, 3, y, 3, zi, NULL, &s, &e) == TS_ERR_NONFINITE && e.index == 5);
     /* slopes that overflow (huge values over a tiny width): node named */

@@ -33,7 +33,7 @@
 static double kappa_max(void)
 {
     volatile double a = TS_GEOMETRIC_A_MIN;
-    return 2.0 / (3.0 * TS_PI * a);
+    return ts__kappa(a);
 }
 
 /* X̂(φ) = s² + κ(A1 − A2) and X̂'(φ) in long double (docs/method.md §4, §2:
@@ -79,7 +79,7 @@ static void solve_scan(void)
     for (int ik = 0; ik <= 260; ik++) {
         double k = ik <= 200 ? kmax * ik / 200.0 : kmax * (1.0 - ldexp(1.0, -(ik - 200) / 3));
         if (ik == 0)
-            k = 2.0 / (3.0 * TS_PI * DBL_MAX); /* the smallest: a_i = DBL_MAX */
+            k = ts__kappa(DBL_MAX); /* the smallest: a_i = DBL_MAX */
         for (int iu = 0; iu < 900; iu++) {
             double u = iu < 300   ? ldexp(1.0, -1022) * pow(2.0, 1021.0 * iu / 299.0)
                        : iu < 600 ? 0.5 * (iu - 299) / 300.0
@@ -213,7 +213,7 @@ static void subnormal_u(void)
      * the root is u/(3κ) to a relative |1 − 5κ| u/(9κ²) < 1e-290 (κ >=
      * 2/(3π)·1e-3 here); the steps are rounding noise of F (2^-1074
      * granular) over X̂' = 3κ, so the iterate is within 16·2^-1074/κ. */
-    const double ks[4] = {2.0 / (3.0 * TS_PI), 0.5, 0.2, 0.0};
+    const double ks[4] = {ts__kappa(1.0), 0.5, 0.2, 0.0};
     const double us[4] = {4.9406564584124654e-324, 7.1e-322, 2.0e-315, 1.0e-310};
     for (int a = 0; a < 4; a++) {
         double k = a < 3 ? ks[a] : kappa_max();
