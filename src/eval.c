@@ -36,9 +36,11 @@ static ts_status eval_out(const ts_spline *sp, ts_extrap mode, int lim, double x
     case TS_EXTRAP_LINEAR: {
         double e[3] = {0.0, 0.0, 0.0};
         ts__interval_eval(sp, i, xe, 1, e);
-        /* a flat end at ±Inf: the end value (0 · Inf is NaN) */
-        o[0] = isinf(x) && e[1] == 0.0 ? sp->f[left ? 0 : n]
-                                       : sp->f[left ? 0 : n] + e[1] * (x - xe);
+        /* a flat end at ±Inf: the end value (the step, not the product,
+         * chosen: 0 · Inf would raise FE_INVALID where a compiler computes
+         * both sides of a select) */
+        double dx = isinf(x) && e[1] == 0.0 ? 0.0 : x - xe;
+        o[0] = sp->f[left ? 0 : n] + e[1] * dx;
         o[1] = e[1];
         return TS_OK;
     }

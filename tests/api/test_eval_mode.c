@@ -30,7 +30,8 @@ static void ser_mul(const long double *a, const long double *b, long double *out
 static long double deriv_ref(const double B[4], double xi, double h, double x, int nu)
 {
     const long double hp = 1.57079632679489661923132169163975144L;
-    long double th = hp * ((long double)x - xi) / h, S[ORD], C[ORD], one[ORD] = {1};
+    long double th = hp * ((long double)x - (long double)xi) / (long double)h, S[ORD], C[ORD],
+                one[ORD] = {1};
     long double sn = sinl(th), cs = cosl(th), fact = 1;
     for (int k = 0; k < ORD; k++) { /* sin(θ + e), cos(θ + e) */
         long double ds = (k % 4 == 0) ? sn : (k % 4 == 1) ? cs : (k % 4 == 2) ? -sn : -cs;
@@ -58,8 +59,8 @@ static long double deriv_ref(const double B[4], double xi, double h, double x, i
     for (int k = 2; k <= nu; k++)
         nf *= k;
     for (int l = 0; l < 4; l++)
-        v += A[l][nu] * B[l];
-    return v * nf * powl(hp / h, nu);
+        v += A[l][nu] * (long double)B[l];
+    return v * nf * powl(hp / (long double)h, nu);
 }
 
 static ts_spline *fit(const double *x, const double *f, size_t n, ts_form form, ts_extrap ex)
@@ -112,7 +113,7 @@ static void orders(void)
                  * arguments (|θ + νπ/2| < 20) to 20ε absolute times k <= 3:
                  * below 3^ν·23M·(π/2h)^ν·100ε = 5e-13·3^ν·M·(π/2h)^ν */
                 double tol = 5e-13 * pow(3.0, nu) * M * pow(TH_HALF_PI / h, nu);
-                CHECKF(fabsl((long double)yq[j] - ref) <= tol,
+                CHECKF(fabsl((long double)yq[j] - ref) <= (long double)tol,
                        "form %d nu %d x %.17g: %.17g vs %.17Lg", form, nu, xq[j], yq[j], ref);
                 double y1;
                 ts_cursor cur = TS_CURSOR_INIT;
@@ -140,10 +141,10 @@ static void orders(void)
             (void)ts_spline_control(s, i, B, NULL);
             (void)ts_eval_deriv(s, xq[j], NULL, &y, &dy, &d2y);
             double h = X[i + 1] - X[i];
-            CHECK(fabsl(deriv_ref(B, X[i], h, xq[j], 1) - dy) <=
-                  1e-13 * 92 * pow(TH_HALF_PI / h, 1));
-            CHECK(fabsl(deriv_ref(B, X[i], h, xq[j], 2) - d2y) <=
-                  1e-12 * 92 * pow(TH_HALF_PI / h, 2));
+            CHECK(fabsl(deriv_ref(B, X[i], h, xq[j], 1) - (long double)dy) <=
+                  (long double)(1e-13 * 92 * pow(TH_HALF_PI / h, 1)));
+            CHECK(fabsl(deriv_ref(B, X[i], h, xq[j], 2) - (long double)d2y) <=
+                  (long double)(1e-12 * 92 * pow(TH_HALF_PI / h, 2)));
         }
         ts_spline_free(s);
     }

@@ -30,12 +30,13 @@ static long double S_ref(const ts_spline *s, size_t i, double x)
     double B[4];
     (void)ts_spline_control(s, i, B, NULL);
     const double *k = ts_spline_x(s);
-    long double th = 1.57079632679489661923132169163975144L * ((long double)x - k[i]) /
-                     ((long double)k[i + 1] - k[i]);
+    long double th = 1.57079632679489661923132169163975144L * ((long double)x - (long double)k[i]) /
+                     ((long double)k[i + 1] - (long double)k[i]);
     long double sn = sinl(th), c = cosl(th);
     long double A0 = (1 - sn) * (1 - sn) * (1 - sn), A1 = sn * (1 - sn) * (3 - sn);
     long double A2 = c * (1 - c) * (3 - c), A3 = (1 - c) * (1 - c) * (1 - c);
-    return A0 * B[0] + A1 * B[1] + A2 * B[2] + A3 * B[3];
+    return A0 * (long double)B[0] + A1 * (long double)B[1] + A2 * (long double)B[2] +
+           A3 * (long double)B[3];
 }
 
 static void find_interval(void)
@@ -133,8 +134,8 @@ static void symmetric(void)
         CHECK(ts_spline_solve(s, y, r, 2, &cnt) == TS_OK && cnt == 1);
         size_t i;
         if (cnt == 1 && ts_spline_find_interval(s, r[0], NULL, &i) == TS_OK)
-            CHECKF(fabsl(S_ref(s, i, r[0]) - y) <= 1e-14L, "y %g: S(%.17g) = %.17Lg", y, r[0],
-                   S_ref(s, i, r[0]));
+            CHECKF(fabsl(S_ref(s, i, r[0]) - (long double)y) <= 1e-14L, "y %g: S(%.17g) = %.17Lg",
+                   y, r[0], S_ref(s, i, r[0]));
     }
     ts_spline_free(s);
 }
