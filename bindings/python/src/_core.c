@@ -283,10 +283,12 @@ static PyObject *spline_eval(SplineHandle *self, PyObject *args, PyObject *kw)
     else
         st = ts_spline_eval_batch_mode_mt(self->s, nu, ex, xq, (size_t)m, yq, nth, &err);
     if (st == TS_ERR_DOMAIN) {
-        /* invalid queries are NaN; only MODE_ERROR raises, at the first one
-         * that is outside the data (NaN queries give NaN) */
+        /* invalid queries are NaN; MODE_ERROR (or an unknown mode) raises,
+         * at the first one that is outside the data (NaN queries give NaN) */
+        int raises = mode != MODE_EXTEND && mode != MODE_CLAMP && mode != MODE_LINEAR &&
+                     mode != MODE_NAN;
         st = TS_OK;
-        for (size_t j = err.index; mode == MODE_ERROR && j < (size_t)m; j++)
+        for (size_t j = err.index; raises && j < (size_t)m; j++)
             if (xq[j] == xq[j] && !(self->x0 <= xq[j] && xq[j] <= self->xn)) {
                 bad = (npy_intp)j;
                 break;
