@@ -525,12 +525,17 @@ TS_API ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur,
                         double *y, double *dy, double *d2y);
 
 /*
- * Batch: yq[j] = S^(deriv)(xq[j]), deriv in {0, 1, 2}.  Fast for sorted
- * queries, correct for any order; uses the batch kernels of src/kernels.c
- * (every form), which agree with ts_eval_deriv to the bounds derived and
- * tested in tests/unit/test_fast.c (not bitwise).  Every valid query is
+ * Batch: yq[j] = S^(deriv)(xq[j]), deriv >= 0.  Fast for sorted
+ * queries, correct for any order; deriv 0, 1, 2 use the batch kernels of
+ * src/kernels.c (every form), which agree with ts_eval_deriv to the bounds
+ * derived and tested in tests/unit/test_fast.c (not bitwise).  deriv >= 3:
+ * paper and C¹ forms only, the closed form of docs/method.md §2
+ * (derivatives of any order) per query, as ts_spline_eval_mode; outside the
+ * data 0 under TS_EXTRAP_CLAMP and TS_EXTRAP_LINEAR, the end interval's
+ * formula under TS_EXTRAP_EXTEND.  Every valid query is
  * evaluated; invalid ones get NaN and the call returns TS_ERR_DOMAIN with
- * err->index = first invalid query.  Also TS_ERR_NULL, TS_ERR_OPTION (deriv).
+ * err->index = first invalid query.  Also TS_ERR_NULL, TS_ERR_OPTION (deriv
+ * < 0, or deriv > 2 in the geometric form; every yq[j] NaN).
  */
 TS_API ts_status ts_eval_batch(const ts_spline *s, int deriv, const double *xq, size_t m,
                         double *yq, ts_cursor *cur, ts_error *err);
@@ -539,6 +544,69 @@ TS_API ts_status ts_eval_batch(const ts_spline *s, int deriv, const double *xq, 
  * Same statuses. */
 TS_API ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size_t m,
                            double *yq, unsigned nthreads, ts_error *err);
+
+/*
+ * Evaluation with the extrapolation given per call (extrap overrides the
+ * spline's own, which stays as built) and a derivative of any order nu >= 0.
+ * Inside [x0, xn] the values are those of ts_eval_deriv (nu <= 2, scalar),
+ * ts_eval_batch (batch) and, for nu >= 3 (paper and C¹ forms only), the
+ * closed form of docs/method.md §2 (derivatives of any order) on the
+ * interval of the query (the right-hand one at an inner knot).  Outside:
+ *   TS_EXTRAP_ERROR   TS_ERR_DOMAIN (NaN)
+ *   TS_EXTRAP_CLAMP   the end value; every derivative 0 (x = ±Inf too)
+ *   TS_EXTRAP_EXTEND  the end interval's formula continued (the geometric
+ *                     form: the osculating parabola), every order
+ *   TS_EXTRAP_LINEAR  f_end + d (x − x_end), d the one-sided end slope; S' = d,
+ *                     higher derivatives 0.  x = ±Inf gives the limit: the end
+ *                     value where d = 0, else ±Inf (ts_eval instead returns
+ *                     TS_ERR_DOMAIN at ±Inf under a stored TS_EXTRAP_LINEAR)
+ * For finite x every mode gives the bits ts_eval_deriv / ts_eval_batch give
+ * on a spline built with that mode.  NaN is always TS_ERR_DOMAIN, ±Inf under
+ * ERROR and EXTEND too.  No allocation.
+ * ts_spline_eval_mode: *y (NaN on failure).  TS_OK, TS_ERR_NULL (s, y),
+ * TS_ERR_OPTION (nu < 0, nu > 2 in the geometric form, extrap out of range),
+ * TS_ERR_DOMAIN.
+ * ts_spline_eval_batch_mode: as ts_eval_batch (invalid queries NaN,
+ * TS_ERR_DOMAIN with err->index = the first; TS_ERR_NULL; TS_ERR_OPTION for
+ * nu or extrap, every yq[j] NaN).  _mt: split over nthreads threads as
+ * ts_eval_batch_mt, same statuses.
+ */
+TS_API ts_status ts_spline_eval_mode(const ts_spline *s, double x, int nu, ts_extrap extrap,
+                                     ts_cursor *cur, double *y);
+TS_API ts_status ts_spline_eval_batch_mode(const ts_spline *s, int nu, ts_extrap extrap,
+                                           const double *xq, size_t m, double *yq, ts_cursor *cur,
+                                           ts_error *err);
+TS_API ts_status ts_spline_eval_batch_mode_mt(const ts_spline *s, int nu, ts_extrap extrap,
+                                              const double *xq, size_t m, double *yq,
+                                              unsigned nthreads, ts_error *err);
+
+/*
+ * The interval of x: the largest i <= n − 1 with x_i <= x (the right-hand
+ * interval at an inner knot, the last one at xn), the search every
+ * evaluation uses; the cursor (may be NULL) is tried first (and its
+ * successor, for sorted queries) and left on the interval found.
+ * *i = TS_NO_INDEX first.  TS_OK, TS_ERR_NULL (s, i), TS_ERR_DOMAIN (x
+ * outside [x0, xn] or NaN).
+ */
+TS_API ts_status ts_spline_find_interval(const ts_spline *s, double x, ts_cursor *cur, size_t *i);
+
+/*
+ * Every x in [x0, xn] with S(x) = y, increasing (scipy.interpolate.PPoly.solve
+ * without extrapolation): per interval the real roots of q³(S − y), a
+ * polynomial of degree 6 in t = tan(θ/2), q = 1 + t² (docs/method.md §2,
+ * roots), isolated in Bernstein form and bisected to rounding in t; a knot
+ * where f_i = y exactly is returned exactly, once.  An interval on which
+ * S == y identically (all four control values equal y) gives its left end
+ * followed by NaN, as SciPy.  Multiple roots (S touching y) are returned
+ * once, to about the square root of the rounding.  No root when y is not
+ * finite or |y| > TS_VALUE_MAX (|S| <= max |B_l| there).  No allocation.
+ * roots receives at most cap values; *count the number of values there are
+ * (also when they do not fit), so (roots = NULL, cap = 0) asks for the size.
+ * TS_OK; TS_ERR_LENGTH (*count > cap: the first cap are in roots);
+ * TS_ERR_NULL (s or count NULL, or roots NULL with cap > 0; *count 0).
+ */
+TS_API ts_status ts_spline_solve(const ts_spline *s, double y, double *roots, size_t cap,
+                                 size_t *count);
 
 /*
  * Definite integral of S over [a, b] (b < a gives the negative), closed form

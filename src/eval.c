@@ -13,18 +13,20 @@
 #define TS_NOINLINE
 #endif
 
-/* x outside [x0, xn] or NaN: the extrapolation of ts_extrap (header); o[1],
- * o[2] are 0 where it has no derivative. */
-static ts_status eval_out(const ts_spline *sp, double x, int want, double o[3])
+/* x outside [x0, xn] or NaN: extrapolation mode (ts_extrap, header); o[1],
+ * o[2] are 0 where it has no derivative.  lim: ±Inf under TS_EXTRAP_LINEAR
+ * gives the limit (ts_spline_eval_mode) instead of TS_ERR_DOMAIN (ts_eval). */
+static ts_status eval_out(const ts_spline *sp, ts_extrap mode, int lim, double x, int want,
+                          double o[3])
 {
     o[1] = o[2] = 0.0;
-    if (isnan(x) || (isinf(x) && sp->extrap != TS_EXTRAP_CLAMP))
+    if (isnan(x) || (isinf(x) && mode != TS_EXTRAP_CLAMP && !(lim && mode == TS_EXTRAP_LINEAR)))
         return TS_ERR_DOMAIN;
     size_t n = sp->n;
     int left = x < sp->x[0];
     size_t i = left ? 0 : n - 1;
     double xe = left ? sp->x[0] : sp->x[n];
-    switch (sp->extrap) {
+    switch (mode) {
     case TS_EXTRAP_CLAMP:
         o[0] = sp->f[left ? 0 : n];
         return TS_OK;
@@ -34,7 +36,11 @@ static ts_status eval_out(const ts_spline *sp, double x, int want, double o[3])
     case TS_EXTRAP_LINEAR: {
         double e[3] = {0.0, 0.0, 0.0};
         ts__interval_eval(sp, i, xe, 1, e);
-        o[0] = sp->f[left ? 0 : n] + e[1] * (x - xe);
+        /* a flat end at ±Inf: the end value (the step, not the product,
+         * chosen: 0 · Inf would raise FE_INVALID where a compiler computes
+         * both sides of a select) */
+        double dx = isinf(x) && e[1] == 0.0 ? 0.0 : x - xe;
+        o[0] = sp->f[left ? 0 : n] + e[1] * dx;
         o[1] = e[1];
         return TS_OK;
     }
@@ -44,12 +50,36 @@ static ts_status eval_out(const ts_spline *sp, double x, int want, double o[3])
     }
 }
 
+/* d^nu S/dx^nu, nu >= 3, paper and C¹ forms, at any x (docs/method.md §2,
+ * derivatives of any order): 0 outside under CLAMP and LINEAR, the end
+ * interval's own formula under EXTEND. */
+static ts_status eval_high(const ts_spline *sp, ts_extrap mode, int lim, double x, int nu,
+                           ts_cursor *cur, double *y)
+{
+    if (sp->x[0] <= x && x <= sp->x[sp->n]) { /* NaN fails */
+        *y = ts__interval_deriv(sp, ts__locate(sp, x, cur), x, nu);
+        return TS_OK;
+    }
+    double o[3];
+    ts_status st = eval_out(sp, mode, lim, x, 0, o);
+    if (st != TS_OK) {
+        *y = (double)NAN;
+        return st;
+    }
+    if (mode == TS_EXTRAP_EXTEND)
+        *y = ts__interval_deriv(sp, x < sp->x[0] ? 0 : sp->n - 1, x, nu);
+    else
+        *y = 0.0;
+    return TS_OK;
+}
+
 /* S, S', S'' at any x (o[0..want]; o[1], o[2] 0 beyond want inside, as
  * eval_out's outside). */
-static ts_status eval_at(const ts_spline *sp, double x, ts_cursor *cur, int want, double o[3])
+static ts_status eval_at(const ts_spline *sp, ts_extrap mode, int lim, double x, ts_cursor *cur,
+                         int want, double o[3])
 {
     if (!(sp->x[0] <= x && x <= sp->x[sp->n])) /* NaN fails */
-        return eval_out(sp, x, want, o);
+        return eval_out(sp, mode, lim, x, want, o);
     o[1] = o[2] = 0.0;
     size_t i = ts__locate(sp, x, cur);
     if (sp->form != TS_FORM_GEOMETRIC)
@@ -64,7 +94,7 @@ static ts_status eval_at(const ts_spline *sp, double x, ts_cursor *cur, int want
 static TS_NOINLINE ts_status eval_value(const ts_spline *s, double x, ts_cursor *cur, double *y)
 {
     double o[3];
-    ts_status st = s ? eval_at(s, x, cur, 0, o) : TS_ERR_NULL;
+    ts_status st = s ? eval_at(s, s->extrap, 0, x, cur, 0, o) : TS_ERR_NULL;
     if (y)
         *y = st == TS_OK ? o[0] : (double)NAN;
     return st;
@@ -106,7 +136,7 @@ ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur, double *y,
                         double *d2y)
 {
     double o[3];
-    ts_status st = s ? eval_at(s, x, cur, d2y ? 2 : dy ? 1 : 0, o) : TS_ERR_NULL;
+    ts_status st = s ? eval_at(s, s->extrap, 0, x, cur, d2y ? 2 : dy ? 1 : 0, o) : TS_ERR_NULL;
     if (st != TS_OK)
         o[0] = o[1] = o[2] = (double)NAN;
     if (y)
@@ -118,15 +148,32 @@ ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur, double *y,
     return st;
 }
 
-static ts_status batch_eval(const ts_spline *s, int deriv, const double *xq, size_t m,
-                            double *yq, ts_cursor *cur, ts_error *err)
+/* yq[j] = S^(deriv)(xq[j]), deriv >= 3 (paper and C¹ forms): one query at a
+ * time, the cursor walking sorted queries. */
+static ts_status batch_high(const ts_spline *s, ts_extrap mode, int lim, int deriv,
+                            const double *xq, size_t m, double *yq, ts_cursor *cur, ts_error *err)
+{
+    ts_status result = TS_OK;
+    for (size_t j = 0; j < m; j++) {
+        ts_status st = eval_high(s, mode, lim, xq[j], deriv, cur, &yq[j]);
+        if (st != TS_OK && result == TS_OK) {
+            result = st;
+            ts__error_set(err, st, j, TS_WHERE_QUERY);
+        }
+    }
+    return result;
+}
+
+static ts_status batch_eval(const ts_spline *s, ts_extrap mode, int lim, int deriv,
+                            const double *xq, size_t m, double *yq, ts_cursor *cur, ts_error *err)
 {
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
     if (!s || (m && (!xq || !yq))) {
         ts__error_set(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
         return TS_ERR_NULL;
     }
-    if (deriv < 0 || deriv > 2) {
+    if (deriv < 0 || (deriv > 2 && s->form == TS_FORM_GEOMETRIC) ||
+        (unsigned)mode > (unsigned)TS_EXTRAP_LINEAR) {
         for (size_t j = 0; j < m; j++)
             yq[j] = (double)NAN;
         ts__error_set(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
@@ -135,6 +182,8 @@ static ts_status batch_eval(const ts_spline *s, int deriv, const double *xq, siz
     ts_cursor local = TS_CURSOR_INIT;
     if (!cur)
         cur = &local;
+    if (deriv > 2)
+        return batch_high(s, mode, lim, deriv, xq, m, yq, cur, err);
     double x0 = s->x[0], xn = s->x[s->n];
     ts_status result = TS_OK;
     /* The kernels take every block of queries inside [x0, xn]; a block that
@@ -156,7 +205,7 @@ static ts_status batch_eval(const ts_spline *s, int deriv, const double *xq, siz
             if (j == end)
                 break;
             double o[3];
-            ts_status st = eval_out(s, xq[j], deriv, o);
+            ts_status st = eval_out(s, mode, lim, xq[j], deriv, o);
             yq[j] = st == TS_OK ? o[deriv] : (double)NAN;
             if (st != TS_OK && result == TS_OK) {
                 result = st;
@@ -170,11 +219,37 @@ static ts_status batch_eval(const ts_spline *s, int deriv, const double *xq, siz
 ts_status ts_eval_batch(const ts_spline *s, int deriv, const double *xq, size_t m,
                         double *yq, ts_cursor *cur, ts_error *err)
 {
-    return batch_eval(s, deriv, xq, m, yq, cur, err);
+    return batch_eval(s, s ? s->extrap : TS_EXTRAP_ERROR, 0, deriv, xq, m, yq, cur, err);
+}
+
+ts_status ts_spline_eval_batch_mode(const ts_spline *s, int nu, ts_extrap extrap, const double *xq,
+                                    size_t m, double *yq, ts_cursor *cur, ts_error *err)
+{
+    return batch_eval(s, extrap, 1, nu, xq, m, yq, cur, err);
+}
+
+ts_status ts_spline_eval_mode(const ts_spline *s, double x, int nu, ts_extrap extrap,
+                              ts_cursor *cur, double *y)
+{
+    if (y)
+        *y = (double)NAN;
+    if (!s || !y)
+        return TS_ERR_NULL;
+    if (nu < 0 || (nu > 2 && s->form == TS_FORM_GEOMETRIC) ||
+        (unsigned)extrap > (unsigned)TS_EXTRAP_LINEAR)
+        return TS_ERR_OPTION;
+    if (nu > 2)
+        return eval_high(s, extrap, 1, x, nu, cur, y);
+    double o[3];
+    ts_status st = eval_at(s, extrap, 1, x, cur, nu, o);
+    *y = st == TS_OK ? o[nu] : (double)NAN;
+    return st;
 }
 
 typedef struct mt_job {
     const ts_spline *s;
+    ts_extrap mode;
+    int lim;
     int deriv;
     const double *xq;
     size_t m;
@@ -186,7 +261,7 @@ typedef struct mt_job {
 static void *mt_run(void *arg)
 {
     mt_job *j = arg;
-    j->st = batch_eval(j->s, j->deriv, j->xq, j->m, j->yq, NULL, &j->err);
+    j->st = batch_eval(j->s, j->mode, j->lim, j->deriv, j->xq, j->m, j->yq, NULL, &j->err);
     return NULL;
 }
 
@@ -201,14 +276,15 @@ unsigned ts__mt_threads(unsigned asked, long online)
     return t < TS_MT_MAX ? (unsigned)t : TS_MT_MAX;
 }
 
-ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size_t m,
-                           double *yq, unsigned nthreads, ts_error *err)
+static ts_status batch_mt(const ts_spline *s, ts_extrap mode, int lim, int deriv, const double *xq,
+                          size_t m, double *yq, unsigned nthreads, ts_error *err)
 {
     nthreads = ts__mt_threads(nthreads, nthreads ? 0 : sysconf(_SC_NPROCESSORS_ONLN));
     if (!s || nthreads <= 1 || m / TS_MT_MIN_PER_THREAD < (size_t)nthreads)
-        return batch_eval(s, deriv, xq, m, yq, NULL, err);
-    if (!xq || !yq || deriv < 0 || deriv > 2)
-        return batch_eval(s, deriv, xq, m, yq, NULL, err);
+        return batch_eval(s, mode, lim, deriv, xq, m, yq, NULL, err);
+    if (!xq || !yq || deriv < 0 || (deriv > 2 && s->form == TS_FORM_GEOMETRIC) ||
+        (unsigned)mode > (unsigned)TS_EXTRAP_LINEAR)
+        return batch_eval(s, mode, lim, deriv, xq, m, yq, NULL, err);
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
     mt_job jobs[TS_MT_MAX];
     pthread_t th[TS_MT_MAX];
@@ -216,7 +292,8 @@ ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size
     size_t chunk = m / nthreads;
     for (unsigned t = 0; t < nthreads; t++) {
         size_t a = t * chunk, b = t + 1 == nthreads ? m : a + chunk;
-        jobs[t] = (mt_job){s, deriv, xq + a, b - a, yq + a, TS_OK, {TS_OK, TS_NO_INDEX, TS_WHERE_NONE}};
+        jobs[t] = (mt_job){
+            s, mode, lim, deriv, xq + a, b - a, yq + a, TS_OK, {TS_OK, TS_NO_INDEX, TS_WHERE_NONE}};
         /* thread 0 runs on the caller's thread; a failed create runs inline */
         started[t] = t > 0 && pthread_create(&th[t], NULL, mt_run, &jobs[t]) == 0;
     }
@@ -237,6 +314,19 @@ ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size
         }
     }
     return result;
+}
+
+ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size_t m, double *yq,
+                           unsigned nthreads, ts_error *err)
+{
+    return batch_mt(s, s ? s->extrap : TS_EXTRAP_ERROR, 0, deriv, xq, m, yq, nthreads, err);
+}
+
+ts_status ts_spline_eval_batch_mode_mt(const ts_spline *s, int nu, ts_extrap extrap,
+                                       const double *xq, size_t m, double *yq, unsigned nthreads,
+                                       ts_error *err)
+{
+    return batch_mt(s, extrap, 1, nu, xq, m, yq, nthreads, err);
 }
 
 /* Piece i of an integral over [a, b] times 2^-*ki, *ki the first of k,

@@ -3,7 +3,7 @@
  *
  * Layers (a file includes this header and trigspline.h, and calls only
  * functions of files in lower layers; no file calls a public entry point of
- * the library; tools/check_layers.py checks both):
+ * the library; scripts/check_layers.py checks both):
  *   L0  status.c    status strings, the version, the error setter, allocation
  *       checks.c    input checks shared by the constructors
  *       basis.c     the basis, its derivatives and integrals, interval search
@@ -13,6 +13,7 @@
  *       geometric.c the geometric form: X(θ) = x, value, integral, bound
  *   L2  interval.c  one interval of any form: value, derivatives, integral;
  *                   the per-form table (ts__form)
+ *       deriv.c     derivatives of every order of one interval (paper, C¹)
  *       shape.c     the schemes' β rules and data checks
  *       certificate.c  interval gaps, hull and control-value proofs (read-only)
  *       surface_net.c  surfaces: control nets, patch bases, control gaps
@@ -20,6 +21,7 @@
  *       repair.c    certification at build time: raise β until certified
  *       surface_cert.c  surfaces: the certificate of one patch (subdivision)
  *   L4  spline.c, curve.c, eval.c, report.c, accuracy.c: the public API
+ *       find.c, solve.c: interval search, the roots of S − y
  *       surface.c, surface_eval.c: the public surface API */
 #ifndef TS_SRC_INTERNAL_H
 #define TS_SRC_INTERNAL_H
@@ -619,6 +621,12 @@ TS_INLINE void ts__trig_eval_in(const ts_spline *sp, size_t i, double x, int wan
  * than h/16 is integrated directly (12-point Gauss–Legendre in x), so its
  * relative error is a few ε of the piece, not of the interval. */
 double ts__interval_integral_scaled(const ts_spline *sp, size_t i, double a, double b, int k);
+
+/* ---- deriv.c (docs/method.md §2, derivatives of any order) ------------ */
+/* d^ν S/dx^ν (ν >= 1; used for ν >= 3) of interval i of a paper or C¹ spline
+ * at x, from the trigonometric form of S; x may lie outside the interval
+ * (TS_EXTRAP_EXTEND). */
+double ts__interval_deriv(const ts_spline *sp, size_t i, double x, int nu);
 
 /* ---- shape.c (docs/method.md §5) ----------------------------------------------- */
 /* For a scheme (opt->shape one of TS_SHAPE_POSITIVE..TS_SHAPE_MONOTONE, as

@@ -39,6 +39,11 @@ export const NAMES = {
   param: ['centripetal', 'chord', 'uniform'],
 };
 const ROW = 17; // doubles per report row (glue.c)
+function extrapCode(name) {
+  const k = NAMES.extrapolate.indexOf(name);
+  if (k < 0) throw new TypeError(`extrapolate must be one of ${NAMES.extrapolate.join(', ')}`);
+  return k;
+}
 const NO_INDEX = 0xffffffff;
 const dispose = Symbol.dispose ?? Symbol.for('Symbol.dispose');
 
@@ -359,21 +364,70 @@ export class Spline extends Handle {
       return { y, dy, d2y };
     } finally { ts.w.free(p); }
   }
-  // S^(deriv) at every x of xs into out (a new Float64Array by default).
-  // A query outside the data (under extrapolate 'error') or NaN throws
-  // TS_ERR_DOMAIN naming the first one; with options.partial the NaN-filled
-  // result is returned instead.
-  evalBatch(xs, deriv = 0, out = null, partial = false) {
+  // S^(deriv) at every x of xs into out (a new Float64Array by default);
+  // deriv >= 0 (above 2 in the paper and c1 forms only).  A query outside the
+  // data (under extrapolate 'error') or NaN throws TS_ERR_DOMAIN naming the
+  // first one; with partial the NaN-filled result is returned instead.
+  // extrapolate (a name of NAMES.extrapolate) overrides the spline's policy
+  // for this call (ts_spline_eval_batch_mode; ±Inf under 'linear': the limit).
+  evalBatch(xs, deriv = 0, out = null, partial = false, extrapolate = null) {
     const ts = this.ts, m = xs.length;
     const px = ts.put(xs), py = ts.alloc(m * 8);
     try {
       ts.resetError();
-      const st = ts.w.ts_eval_batch(this.live(), deriv, px, m, py, this.cur, ts.errPtr);
+      const st = extrapolate === null
+        ? ts.w.ts_eval_batch(this.live(), deriv, px, m, py, this.cur, ts.errPtr)
+        : ts.w.ts_spline_eval_batch_mode(this.live(), deriv, extrapCode(extrapolate), px, m, py,
+          this.cur, ts.errPtr);
       if (st !== 0 && !(partial && st === 13)) throw ts.error(st);
       out ??= new Float64Array(m);
       out.set(ts.f64(py, m));
       return out;
     } finally { ts.w.free(px); ts.w.free(py); }
+  }
+  // The derivative of order nu (>= 0; above 2 in the paper and c1 forms
+  // only) as a function of x (and an optional extrapolate name overriding the
+  // spline's policy), as scipy's PPoly.derivative: s.derivative(3)(1.5).
+  derivative(nu = 1) {
+    return (x, extrapolate = null) => {
+      const ts = this.ts, p = ts.alloc(8);
+      try {
+        const mode = extrapolate === null ? ts.w.ts_spline_extrapolation(this.live())
+          : extrapCode(extrapolate);
+        const st = ts.w.ts_spline_eval_mode(this.live(), x, nu, mode, this.cur, p);
+        if (st !== 0) { ts.resetError(); throw ts.error(st); }
+        return ts.f64(p, 1)[0];
+      } finally { ts.w.free(p); }
+    };
+  }
+  // Every x in [x0, xn] with S(x) = y, increasing (Float64Array; an interval
+  // on which S == y gives its left end then NaN, as scipy's PPoly.solve).
+  solve(y = 0) {
+    const ts = this.ts, pc = ts.alloc(4);
+    let cap = 4 * this.n + 4, pr = 0;
+    try {
+      for (let pass = 0; pass < 2; pass++) {
+        pr = ts.alloc(cap * 8);
+        const st = ts.w.ts_spline_solve(this.live(), y, pr, cap, pc);
+        const count = ts.u32(pc, 1)[0];
+        if (st === 0) return ts.f64(pr, count).slice();
+        ts.w.free(pr);
+        pr = 0;
+        if (st !== 10 || pass) { ts.resetError(); throw ts.error(st); }
+        cap = count; // TS_ERR_LENGTH: the count needed
+      }
+      return new Float64Array(0);
+    } finally { if (pr) ts.w.free(pr); ts.w.free(pc); }
+  }
+  // The interval i with x_i <= x < x_{i+1} (the last one at xn); throws
+  // TS_ERR_DOMAIN outside [x0, xn].
+  findInterval(x) {
+    const ts = this.ts, p = ts.alloc(4);
+    try {
+      const st = ts.w.ts_spline_find_interval(this.live(), x, this.cur, p);
+      if (st !== 0) { ts.resetError(); throw ts.error(st); }
+      return ts.u32(p, 1)[0];
+    } finally { ts.w.free(p); }
   }
   integral(a, b) {
     const ts = this.ts, p = ts.alloc(8);

@@ -59,6 +59,25 @@ int main(void)
                     for (int der = 0; der <= 2; der++)
                         (void)ts_eval_batch(s, der, xs, 61, ys, NULL, NULL);
                     (void)ts_integral(s, 0.5, 29.5, &I);
+                    /* every order, every mode, ±Inf, beyond the data; solve */
+                    double xo[67];
+                    for (int j = 0; j < 61; j++)
+                        xo[j] = xs[j];
+                    xo[61] = -7, xo[62] = 31, xo[63] = 1e300, xo[64] = -1e300;
+                    xo[65] = TH_INF, xo[66] = -TH_INF;
+                    for (int nu = 0; nu <= 6; nu++)
+                        for (int ex = TS_EXTRAP_ERROR; ex <= TS_EXTRAP_LINEAR; ex++) {
+                            double yo[67];
+                            (void)ts_spline_eval_batch_mode(s, nu, (ts_extrap)ex, xo, 67, yo,
+                                                            NULL, NULL);
+                            for (int j = 60; j < 67; j++)
+                                (void)ts_spline_eval_mode(s, xo[j], nu, (ts_extrap)ex, NULL, &y);
+                        }
+                    for (int ky = -2; ky <= 26; ky++) {
+                        double r[64];
+                        size_t cnt;
+                        (void)ts_spline_solve(s, 0.5 * ky, r, 64, &cnt);
+                    }
                     for (size_t i = 0; i < 8; i++) {
                         ts_interval_report r;
                         (void)ts_spline_report(s, i, &r);

@@ -57,6 +57,25 @@ static void exercise(const ts_spline *s, const ts_line *lo, const ts_line *up)
     }
     (void)ts_integral(s, a, b, &v);
     (void)ts_integral(s, b - 0.3 * (b - a), a + 0.1, &v);
+    /* every order and per-call extrapolation, solve, the interval search */
+    for (int nu = 0; nu <= 5; nu++) {
+        (void)ts_eval_batch(s, nu, xq, NQ, yq, &cur, &err);
+        for (int ex = TS_EXTRAP_ERROR; ex <= TS_EXTRAP_LINEAR; ex++) {
+            (void)ts_spline_eval_batch_mode(s, nu, (ts_extrap)ex, xq, NQ, yq, &cur, &err);
+            for (int j = 0; j < NQ; j += 31)
+                (void)ts_spline_eval_mode(s, xq[j], nu, (ts_extrap)ex, &cur, &v);
+        }
+    }
+    for (int j = 0; j < NQ; j += 13) {
+        size_t iv;
+        (void)ts_spline_find_interval(s, xq[j], &cur, &iv);
+    }
+    for (int k = 0; k <= 20; k++) {
+        size_t cnt;
+        double fa = ts_spline_f(s)[0], fb = ts_spline_f(s)[n];
+        (void)ts_spline_solve(s, fa + (fb - fa) * k / 20.0 + 0.3 * (k % 3), yq, NQ, &cnt);
+        (void)ts_spline_solve(s, fa, NULL, 0, &cnt);
+    }
     for (size_t i = 0; i < n; i++) {
         double B[4], X[4];
         (void)ts_spline_report(s, i, &rep[i]);

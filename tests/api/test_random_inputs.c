@@ -452,7 +452,7 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
     ts_error e;
     ts_status stb = ts_eval_batch(s, deriv, q, NQ, yb, th_chance(0.5) ? &cur : NULL, &e);
     CHECK(in_set(stb, SET_BATCH));
-    if (deriv < 0 || deriv > 2) {
+    if (deriv < 0 || (deriv > 2 && ts_spline_form(s) == TS_FORM_GEOMETRIC)) {
         CHECK(stb == TS_ERR_OPTION);
     } else {
         size_t first = TS_NO_INDEX;

@@ -248,7 +248,7 @@ static void batch_mt(void)
     CHECK(ts_eval_batch_mt(s, 0, q, m, NULL, 2, &e) == TS_ERR_NULL);
     CHECK(ts_eval_batch_mt(s, -1, q, m, y, 2, &e) == TS_ERR_OPTION && isnan(y[0]) &&
           isnan(y[m - 1]));
-    CHECK(ts_eval_batch_mt(s, 3, q, m, y, 2, &e) == TS_ERR_OPTION && e.index == TS_NO_INDEX);
+    CHECK(ts_eval_batch_mt(s, -3, q, m, y, 2, &e) == TS_ERR_OPTION && e.index == TS_NO_INDEX);
 #if defined(__GLIBC__)
     /* a thread that cannot be created runs on the caller's thread: make
      * every pthread_create fail (a stack larger than the address space) */

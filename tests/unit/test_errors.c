@@ -303,10 +303,12 @@ static void test_eval_errors(void)
     CHECK(ts_eval_batch(NULL, 0, xq, 4, yq, NULL, &err) == TS_ERR_NULL && err.status == TS_ERR_NULL);
     CHECK(ts_eval_batch(s, 0, NULL, 4, yq, NULL, &err) == TS_ERR_NULL);
     CHECK(ts_eval_batch(s, 0, xq, 4, NULL, NULL, &err) == TS_ERR_NULL);
-    CHECK(ts_eval_batch(s, 3, xq, 4, yq, NULL, &err) == TS_ERR_OPTION && err.status == TS_ERR_OPTION);
+    /* deriv 3 is a valid order in the paper form: the NaN query fails */
+    CHECK(ts_eval_batch(s, 3, xq, 4, yq, NULL, &err) == TS_ERR_DOMAIN && err.index == 1);
+    CHECK(ts_eval_batch(s, -2, xq, 4, yq, NULL, &err) == TS_ERR_OPTION && err.status == TS_ERR_OPTION);
     CHECK(ts_eval_batch(s, -1, xq, 4, yq, NULL, &err) == TS_ERR_OPTION);
     CHECK(ts_eval_batch_mt(NULL, 0, xq, 4, yq, 2, &err) == TS_ERR_NULL);
-    CHECK(ts_eval_batch_mt(s, 7, xq, 4, yq, 2, &err) == TS_ERR_OPTION);
+    CHECK(ts_eval_batch_mt(s, -7, xq, 4, yq, 2, &err) == TS_ERR_OPTION);
     CHECK(ts_eval_batch_mt(s, 0, NULL, 4, yq, 2, &err) == TS_ERR_NULL);
     CHECK(ts_eval_batch(s, 0, xq, 4, yq, NULL, &err) == TS_ERR_DOMAIN);
     CHECK(err.status == TS_ERR_DOMAIN && err.index == 1 && err.where == TS_WHERE_QUERY);

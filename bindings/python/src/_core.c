@@ -13,12 +13,9 @@
  * ValueError); the package turns it into a TrigsplineError with a message
  * naming the point (trigspline/errors.py).
  *
- * Beyond the library's API (docs/method.md cited per function):
- *  - derivatives of order >= 3 in the paper and C1 forms, from the
- *    trigonometric form of docs/method.md §2;
- *  - roots of S - y per interval: the degree-6 polynomial of t = tan(θ/2)
- *    (as in src/trigmin.c for S'), isolated in Bernstein form;
- *  - the extrapolation policies per call (see spline_eval). */
+ * The mathematics is the library's: derivatives of every order and the
+ * extrapolation per call (ts_spline_eval_batch_mode), roots
+ * (ts_spline_solve). */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
 #define NPY_NO_DEPRECATED_API NPY_1_7_API_VERSION
@@ -31,12 +28,9 @@
 
 #include "trigspline.h"
 
-#define PI_ 3.14159265358979323846
-#define HALF_PI_ 1.57079632679489661923
-
 static PyObject *LibraryError;
 
-/* Per-call extrapolation (the handle is always built with TS_EXTRAP_EXTEND). */
+/* Per-call extrapolation (ts_spline_eval_batch_mode; MODE_NAN: NaN outside). */
 enum { MODE_EXTEND = 0, MODE_CLAMP = 1, MODE_LINEAR = 2, MODE_NAN = 3, MODE_ERROR = 4 };
 
 static PyObject *raise_status(ts_status st, size_t index, ts_where where)
@@ -98,7 +92,6 @@ typedef struct {
     ts_spline *s;
     size_t n;
     double x0, xn;
-    double end[2][3]; /* value, slope, second derivative at x0 (right) and xn (left) */
     ts_form form;
 } SplineHandle;
 
@@ -215,8 +208,6 @@ static PyObject *spline_new(PyObject *mod, PyObject *args, PyObject *kw)
     h->x0 = ts_spline_x(s)[0];
     h->xn = ts_spline_x(s)[h->n];
     h->form = ts_spline_form(s);
-    ts_eval_deriv(s, h->x0, NULL, &h->end[0][0], &h->end[0][1], &h->end[0][2]);
-    ts_eval_deriv(s, h->xn, NULL, &h->end[1][0], &h->end[1][1], &h->end[1][2]);
     result = (PyObject *)h;
 done:
     Py_XDECREF(ax);
@@ -226,87 +217,6 @@ done:
     Py_XDECREF(abe);
     Py_XDECREF(ama);
     return result;
-}
-
-/* Interval of x for the closed forms below: the right-hand one at a knot
- * (as the library), the end intervals outside. */
-static size_t locate(const double *x, size_t n, double v)
-{
-    if (!(v >= x[1]))
-        return 0;
-    if (v >= x[n - 1])
-        return n - 1;
-    size_t lo = 1, hi = n - 1; /* x[lo] <= v < x[hi] */
-    while (hi - lo > 1) {
-        size_t mid = lo + (hi - lo) / 2;
-        if (x[mid] <= v)
-            lo = mid;
-        else
-            hi = mid;
-    }
-    return lo;
-}
-
-/* The nu-th derivative (nu >= 0) in x of the paper/C1 interval with control
- * values B at x (docs/method.md §2): S = a0 + p sinθ + q cosθ + r cos2θ + u
- * sin3θ + w cos3θ with θ = (π/2)(x - x_i)/h, where
- *   A0 = 5/2 − 15/4 s − 3/2 cos2θ + 1/4 sin3θ,  A1 = −2 + 15/4 s + 2 cos2θ − 1/4 sin3θ,
- *   A2 = −2 + 15/4 c − 2 cos2θ + 1/4 cos3θ,     A3 = 5/2 − 15/4 c + 3/2 cos2θ − 1/4 cos3θ
- * (from s² = (1 − cos2θ)/2, s³ = (3s − sin3θ)/4 and the like). */
-static double trig_deriv(const double B[4], double xi, double h, double v, int nu)
-{
-    double p = 3.75 * (B[1] - B[0]), q = 3.75 * (B[2] - B[3]);
-    double r = 1.5 * (B[3] - B[0]) + 2.0 * (B[1] - B[2]);
-    double u = 0.25 * (B[0] - B[1]), w = 0.25 * (B[2] - B[3]);
-    double th = HALF_PI_ * (v - xi) / h, sh = nu * HALF_PI_;
-    double y = p * sin(th + sh) + q * cos(th + sh) + r * pow(2.0, nu) * cos(2.0 * th + sh) +
-               pow(3.0, nu) * (u * sin(3.0 * th + sh) + w * cos(3.0 * th + sh));
-    return y * pow(HALF_PI_ / h, nu);
-}
-
-typedef struct {
-    const ts_spline *s;
-    size_t n;
-    const double *x;
-    double (*B)[4];
-} trig_ctx;
-
-/* Queries outside [x0, xn] after the batch (handle built with EXTEND):
- * the per-call policy.  Returns the index of the first query outside under
- * MODE_ERROR, or -1. */
-static npy_intp fix_outside(const SplineHandle *h, const double *xq, double *yq, npy_intp m,
-                            int nu, int mode)
-{
-    for (npy_intp j = 0; j < m; j++) {
-        double v = xq[j];
-        if (v >= h->x0 && v <= h->xn)
-            continue;
-        if (v != v) {
-            yq[j] = (double)NAN;
-            continue;
-        }
-        int e = v > h->xn;
-        double xe = e ? h->xn : h->x0;
-        switch (mode) {
-        case MODE_EXTEND:
-            break; /* the library's (±Inf: NaN) */
-        case MODE_CLAMP:
-            yq[j] = nu == 0 ? h->end[e][0] : 0.0;
-            break;
-        case MODE_LINEAR:
-            if (nu == 0)
-                yq[j] = h->end[e][1] == 0.0 ? h->end[e][0] : h->end[e][0] + h->end[e][1] * (v - xe);
-            else
-                yq[j] = nu == 1 ? h->end[e][1] : 0.0;
-            break;
-        case MODE_NAN:
-            yq[j] = (double)NAN;
-            break;
-        default:
-            return j;
-        }
-    }
-    return -1;
 }
 
 /* eval(xq, nu=0, mode=0, out=None, threads=1) -> ndarray of xq's shape
@@ -355,35 +265,35 @@ static PyObject *spline_eval(SplineHandle *self, PyObject *args, PyObject *kw)
     const double *xq = (const double *)PyArray_DATA(aq);
     double *yq = (double *)PyArray_DATA(ao);
     npy_intp m = PyArray_SIZE(aq);
-    ts_status st = TS_OK;
+    /* MODE_EXTEND: the handle's own policy (TS_EXTRAP_EXTEND for the
+     * package's handles), through ts_eval_batch */
+    ts_extrap ex = mode == MODE_CLAMP    ? TS_EXTRAP_CLAMP
+                   : mode == MODE_LINEAR ? TS_EXTRAP_LINEAR
+                                         : TS_EXTRAP_ERROR;
+    unsigned nth = threads < 0 ? 0u : (unsigned)threads;
+    ts_status st;
     ts_error err = {TS_OK, TS_NO_INDEX, TS_WHERE_NONE};
     npy_intp bad = -1;
     Py_BEGIN_ALLOW_THREADS
-    if (nu <= 2) {
-        if (threads == 1) {
-            st = ts_eval_batch(self->s, nu, xq, (size_t)m, yq, NULL, &err);
-        } else {
-            st = ts_eval_batch_mt(self->s, nu, xq, (size_t)m, yq,
-                                  threads < 0 ? 0u : (unsigned)threads, &err);
-        }
-        if (st == TS_ERR_DOMAIN) /* NaN or ±Inf queries: fix_outside */
-            st = TS_OK;
-    } else {
-        const double *x = ts_spline_x(self->s);
-        size_t n = self->n;
-        for (npy_intp j = 0; j < m; j++) {
-            double v = xq[j], B[4];
-            if (!(fabs(v) <= DBL_MAX)) {
-                yq[j] = (double)NAN;
-                continue;
+    if (mode == MODE_EXTEND)
+        st = threads == 1 ? ts_eval_batch(self->s, nu, xq, (size_t)m, yq, NULL, &err)
+                          : ts_eval_batch_mt(self->s, nu, xq, (size_t)m, yq, nth, &err);
+    else if (threads == 1)
+        st = ts_spline_eval_batch_mode(self->s, nu, ex, xq, (size_t)m, yq, NULL, &err);
+    else
+        st = ts_spline_eval_batch_mode_mt(self->s, nu, ex, xq, (size_t)m, yq, nth, &err);
+    if (st == TS_ERR_DOMAIN) {
+        /* invalid queries are NaN; MODE_ERROR (or an unknown mode) raises,
+         * at the first one that is outside the data (NaN queries give NaN) */
+        int raises = mode != MODE_EXTEND && mode != MODE_CLAMP && mode != MODE_LINEAR &&
+                     mode != MODE_NAN;
+        st = TS_OK;
+        for (size_t j = err.index; raises && j < (size_t)m; j++)
+            if (xq[j] == xq[j] && !(self->x0 <= xq[j] && xq[j] <= self->xn)) {
+                bad = (npy_intp)j;
+                break;
             }
-            size_t i = locate(x, n, v);
-            ts_spline_control(self->s, i, B, NULL);
-            yq[j] = trig_deriv(B, x[i], x[i + 1] - x[i], v, nu);
-        }
     }
-    if (st == TS_OK)
-        bad = fix_outside(self, xq, yq, m, nu, mode);
     Py_END_ALLOW_THREADS
     if (st != TS_OK || bad >= 0) {
         Py_DECREF(aq);
@@ -436,151 +346,6 @@ static PyObject *spline_antiderivative(SplineHandle *self, PyObject *arg)
 
 /* ---- roots --------------------------------------------------------- */
 
-/* Bernstein coefficients (degree 6 on t in [0, 1]) of q³A_l(θ), t = tan(θ/2),
- * q = 1 + t² (docs/method.md §2 with the substitution of src/trigmin.c):
- *   q³A0 = (1−t)⁶, q³A1 = 2t(1−t)²(3 − 2t + 3t²), q³A2 = 4t²(1−t²)(1 + 2t²), q³A3 = 8t⁶.
- * Filled at import from the power-basis coefficients. */
-static double bern[4][7];
-
-static void poly_mul(const double *a, int na, const double *b, int nb, double *out)
-{
-    for (int i = 0; i < na + nb - 1; i++)
-        out[i] = 0.0;
-    for (int i = 0; i < na; i++)
-        for (int j = 0; j < nb; j++)
-            out[i + j] += a[i] * b[j];
-}
-
-static void init_bernstein(void)
-{
-    double pw[4][7] = {{0}};
-    double omt[2] = {1, -1}, t1[2] = {0, 1}, a[7], b[7], c[7];
-    /* (1-t)^6 */
-    double acc[7] = {1};
-    int len = 1;
-    for (int k = 0; k < 6; k++) {
-        poly_mul(acc, len, omt, 2, a);
-        len++;
-        memcpy(acc, a, sizeof a);
-    }
-    memcpy(pw[0], acc, sizeof acc);
-    /* 2t(1-t)^2(3-2t+3t^2) */
-    double sq[3] = {1, -2, 1}, k1[3] = {3, -2, 3};
-    poly_mul(sq, 3, k1, 3, a);   /* degree 4 */
-    poly_mul(a, 5, t1, 2, b);    /* degree 5 */
-    for (int i = 0; i < 6; i++)
-        pw[1][i] = 2.0 * b[i];
-    /* 4t^2(1-t^2)(1+2t^2) */
-    double u1[3] = {1, 0, -1}, u2[3] = {1, 0, 2}, t2[3] = {0, 0, 1};
-    poly_mul(u1, 3, u2, 3, a);   /* degree 4 */
-    poly_mul(a, 5, t2, 3, c);    /* degree 6 */
-    for (int i = 0; i < 7; i++)
-        pw[2][i] = 4.0 * c[i];
-    pw[3][6] = 8.0;
-    /* b_j = Σ_{i<=j} C(j,i)/C(6,i) a_i */
-    static const double C6[7] = {1, 6, 15, 20, 15, 6, 1};
-    for (int l = 0; l < 4; l++)
-        for (int j = 0; j < 7; j++) {
-            double s = 0.0, cji = 1.0; /* C(j, i) */
-            for (int i = 0; i <= j; i++) {
-                s += cji / C6[i] * pw[l][i];
-                cji = cji * (j - i) / (i + 1);
-            }
-            bern[l][j] = s;
-        }
-}
-
-/* q³ (S − y) at t, from the factored forms (sign of S − y). */
-static double root_poly(const double C[4], double t)
-{
-    double omt = 1.0 - t, t2 = t * t;
-    double o2 = omt * omt;
-    return C[0] * (o2 * o2 * o2) + C[1] * 2.0 * t * o2 * (3.0 - 2.0 * t + 3.0 * t2) +
-           C[2] * 4.0 * t2 * (1.0 - t) * (1.0 + t) * (1.0 + 2.0 * t2) +
-           C[3] * 8.0 * (t2 * t2 * t2);
-}
-
-typedef struct {
-    double *t;
-    size_t n, cap;
-    int oom;
-} tlist;
-
-static void tlist_add(tlist *L, double t)
-{
-    if (L->n == L->cap) {
-        size_t cap = L->cap ? 2 * L->cap : 64;
-        double *p = realloc(L->t, cap * sizeof *p);
-        if (!p) {
-            L->oom = 1;
-            return;
-        }
-        L->t = p, L->cap = cap;
-    }
-    L->t[L->n++] = t;
-}
-
-static int sgn(double v)
-{
-    return (v > 0.0) - (v < 0.0);
-}
-
-/* Roots of q³(S − y) in (lo, hi) from its Bernstein coefficients b there
- * (Descartes: 0 sign changes none, 1 exactly one, refined by bisection). */
-static void isolate_roots(const double C[4], const double b[7], double lo, double hi, int depth,
-                          tlist *L)
-{
-    int var = 0, last = 0;
-    for (int j = 0; j < 7; j++) {
-        int s = sgn(b[j]);
-        if (s != 0 && last != 0 && s != last)
-            var++;
-        if (s != 0)
-            last = s;
-    }
-    if (var == 0)
-        return;
-    double mid = 0.5 * (lo + hi);
-    if (var == 1) {
-        int slo = sgn(root_poly(C, lo));
-        if (slo == 0)
-            slo = sgn(b[0]) ? sgn(b[0]) : -sgn(b[6]);
-        double a = lo, c = hi;
-        for (int it = 0; it < 200 && c - a > 4.0 * DBL_EPSILON * (c > 1.0 ? c : 1.0); it++) {
-            double md = 0.5 * (a + c);
-            int sm = sgn(root_poly(C, md));
-            if (sm == 0) {
-                a = c = md;
-                break;
-            }
-            if (sm == slo)
-                a = md;
-            else
-                c = md;
-        }
-        tlist_add(L, 0.5 * (a + c));
-        return;
-    }
-    if (depth >= 52) { /* a multiple root (tangency): the point itself */
-        tlist_add(L, mid);
-        return;
-    }
-    double w[7][7], l[7], r[7];
-    for (int j = 0; j < 7; j++)
-        w[0][j] = b[j];
-    for (int k = 1; k < 7; k++)
-        for (int j = 0; j + k < 7; j++)
-            w[k][j] = 0.5 * (w[k - 1][j] + w[k - 1][j + 1]);
-    for (int k = 0; k < 7; k++) {
-        l[k] = w[k][0];
-        r[k] = w[6 - k][k];
-    }
-    isolate_roots(C, l, lo, mid, depth + 1, L);
-    if (l[6] == 0.0)
-        tlist_add(L, mid);
-    isolate_roots(C, r, mid, hi, depth + 1, L);
-}
-
 /* solve(y) -> sorted x with S(x) = y in [x0, xn]; an interval where S == y
  * identically gives its left end followed by NaN (as SciPy's PPoly.roots). */
 static PyObject *spline_solve(SplineHandle *self, PyObject *args)
@@ -588,63 +353,30 @@ static PyObject *spline_solve(SplineHandle *self, PyObject *args)
     double y;
     if (!PyArg_ParseTuple(args, "d", &y))
         return NULL;
-    tlist out = {NULL, 0, 0, 0};
-    const double *x = ts_spline_x(self->s);
-    int geo = self->form == TS_FORM_GEOMETRIC;
-    Py_BEGIN_ALLOW_THREADS
-    for (size_t i = 0; i < self->n && !out.oom; i++) {
-        double B[4], X[4], C[4], b[7];
-        ts_spline_control(self->s, i, B, X);
-        for (int l = 0; l < 4; l++)
-            C[l] = B[l] - y;
-        if (C[0] == 0.0 && C[1] == 0.0 && C[2] == 0.0 && C[3] == 0.0) {
-            tlist_add(&out, x[i]);
-            tlist_add(&out, (double)NAN);
-            continue;
-        }
-        if (C[0] == 0.0)
-            tlist_add(&out, x[i]);
-        for (int j = 0; j < 7; j++)
-            b[j] = C[0] * bern[0][j] + C[1] * bern[1][j] + C[2] * bern[2][j] + C[3] * bern[3][j];
-        tlist ts = {NULL, 0, 0, 0};
-        isolate_roots(C, b, 0.0, 1.0, 0, &ts);
-        for (size_t k = 0; k < ts.n; k++) {
-            double t = ts.t[k];
-            if (t <= 0.0 || t >= 1.0)
-                continue; /* the knots: added exactly */
-            double v;
-            if (geo) {
-                double t2 = t * t, q = 1.0 + t2, q3 = q * q * q, omt = 1.0 - t;
-                double A0 = omt * omt * omt * omt * omt * omt / q3;
-                double A1 = 2.0 * t * omt * omt * (3.0 - 2.0 * t + 3.0 * t2) / q3;
-                double A2 = 4.0 * t2 * (1.0 - t) * (1.0 + t) * (1.0 + 2.0 * t2) / q3;
-                double A3 = 8.0 * t2 * t2 * t2 / q3;
-                v = A0 * X[0] + A1 * X[1] + A2 * X[2] + A3 * X[3];
-            } else {
-                v = x[i] + (x[i + 1] - x[i]) * (2.0 * atan(t) / HALF_PI_);
-            }
-            if (v <= x[i])
-                v = nextafter(x[i], x[i + 1]);
-            if (v >= x[i + 1])
-                v = nextafter(x[i + 1], x[i]);
-            tlist_add(&out, v);
-        }
-        if (ts.oom)
-            out.oom = 1;
-        free(ts.t);
-        if (i + 1 == self->n && C[3] == 0.0)
-            tlist_add(&out, x[i + 1]);
+    size_t cap = 4 * self->n + 4, count = 0; /* enough unless S wiggles across y */
+    double *buf = NULL;
+    ts_status st = TS_ERR_LENGTH;
+    for (int pass = 0; pass < 2 && st == TS_ERR_LENGTH; pass++) {
+        if (pass)
+            cap = count;
+        PyMem_Free(buf);
+        buf = cap <= PY_SSIZE_T_MAX / sizeof *buf ? PyMem_Malloc((cap ? cap : 1) * sizeof *buf)
+                                                  : NULL;
+        if (!buf)
+            return PyErr_NoMemory();
+        Py_BEGIN_ALLOW_THREADS
+        st = ts_spline_solve(self->s, y, buf, cap, &count);
+        Py_END_ALLOW_THREADS
     }
-    Py_END_ALLOW_THREADS
-    if (out.oom) {
-        free(out.t);
-        return PyErr_NoMemory();
+    if (st != TS_OK) {
+        PyMem_Free(buf);
+        return raise_status(st, TS_NO_INDEX, TS_WHERE_NONE);
     }
-    npy_intp nr = (npy_intp)out.n;
+    npy_intp nr = (npy_intp)count;
     PyObject *a = PyArray_SimpleNew(1, &nr, NPY_DOUBLE);
     if (a && nr)
-        memcpy(PyArray_DATA((PyArrayObject *)a), out.t, out.n * sizeof(double));
-    free(out.t);
+        memcpy(PyArray_DATA((PyArrayObject *)a), buf, count * sizeof(double));
+    PyMem_Free(buf);
     return a;
 }
 
@@ -1729,6 +1461,62 @@ static PyObject *surface_options_defaults(PyObject *mod, PyObject *unused)
                          o.margin);
 }
 
+/* defaults() -> {"spline": {...}, "curve": {...}, "surface": {...}}: the
+ * value fields of ts_options_init, ts_curve_options_init and
+ * ts_surface_options_init by field name (pointer and count fields, NULL/0
+ * by default, left out), enumerations by their canonical names, flags as
+ * bool, lines as (m, c), planes as (p, q, c), per-coordinate boxes as
+ * 3-tuples. */
+static PyObject *defaults(PyObject *mod, PyObject *unused)
+{
+    (void)mod, (void)unused;
+    static const char *const form[] = {"paper", "c1", "geometric"};
+    static const char *const slopes[] = {"arithmetic", "geometric",  "harmonic", "fritsch-carlson",
+                                         "akima",      "makima",     "user",     "periodic"};
+    static const char *const shape[] = {"none",  "positive", "above",
+                                        "below", "between",  "monotone"};
+    static const char *const extrap[] = {"error", "clamp", "extend", "linear"};
+    static const char *const param[] = {"centripetal", "chord", "uniform"};
+    static const char *const sshape[] = {"none", "positive", "bounds", "planes", "range"};
+#define TS_NAME(table, v)                                                                     \
+    ((unsigned)(v) < sizeof table / sizeof *table ? table[(unsigned)(v)] : "unknown")
+    ts_options o;
+    ts_curve_options c;
+    ts_surface_options u;
+    ts_options_init(&o);
+    ts_curve_options_init(&c);
+    ts_surface_options_init(&u);
+    PyObject *sp = Py_BuildValue(
+        "{s:s,s:s,s:d,s:d,s:s,s:(dd),s:(dd),s:d,s:O,s:s}", "form", TS_NAME(form, o.form),
+        "slopes", TS_NAME(slopes, o.slopes), "alpha", o.alpha, "beta", o.beta, "shape",
+        TS_NAME(shape, o.shape), "lower", o.lower.m, o.lower.c, "upper", o.upper.m, o.upper.c,
+        "margin", o.margin, "certify", o.certify ? Py_True : Py_False, "extrapolate",
+        TS_NAME(extrap, o.extrapolate));
+    PyObject *cu = Py_BuildValue(
+        "{s:s,s:O,s:s,s:d,s:d,s:(OOO),s:(OOO),s:(ddd),s:(ddd),s:d}", "param",
+        TS_NAME(param, c.param), "closed", c.closed ? Py_True : Py_False, "slopes",
+        TS_NAME(slopes, c.slopes), "alpha", c.alpha, "beta", c.beta, "has_lo",
+        c.has_lo[0] ? Py_True : Py_False, c.has_lo[1] ? Py_True : Py_False,
+        c.has_lo[2] ? Py_True : Py_False, "has_hi", c.has_hi[0] ? Py_True : Py_False,
+        c.has_hi[1] ? Py_True : Py_False, c.has_hi[2] ? Py_True : Py_False, "lo", c.lo[0],
+        c.lo[1], c.lo[2], "hi", c.hi[0], c.hi[1], c.hi[2], "margin", c.margin);
+    PyObject *su = Py_BuildValue(
+        "{s:s,s:s,s:O,s:d,s:d,s:d,s:s,s:O,s:O,s:(ddd),s:(ddd)}", "form", TS_NAME(form, u.form),
+        "slopes", TS_NAME(slopes, u.slopes), "zero_twist", u.zero_twist ? Py_True : Py_False,
+        "alpha", u.alpha, "beta", u.beta, "margin", u.margin, "shape", TS_NAME(sshape, u.shape),
+        "has_lower", u.has_lower ? Py_True : Py_False, "has_upper",
+        u.has_upper ? Py_True : Py_False, "lower", u.lower.p, u.lower.q, u.lower.c, "upper",
+        u.upper.p, u.upper.q, u.upper.c);
+#undef TS_NAME
+    if (!sp || !cu || !su) {
+        Py_XDECREF(sp);
+        Py_XDECREF(cu);
+        Py_XDECREF(su);
+        return NULL;
+    }
+    return Py_BuildValue("{s:N,s:N,s:N}", "spline", sp, "curve", cu, "surface", su);
+}
+
 static PyMethodDef module_methods[] = {
     {"spline_new", (PyCFunction)(void (*)(void))spline_new, METH_VARARGS | METH_KEYWORDS,
      "spline_new(x, f, **options) -> SplineHandle"},
@@ -1742,6 +1530,7 @@ static PyMethodDef module_methods[] = {
     {"strerror", strerror_, METH_O, "ts_strerror(status)"},
     {"library_version", library_version, METH_NOARGS, "ts_version() of the compiled library"},
     {"options_defaults", options_defaults, METH_NOARGS, "defaults of ts_options_init"},
+    {"defaults", defaults, METH_NOARGS, "defaults() -> dict of the library's option defaults"},
     {NULL, NULL, 0, NULL}};
 
 static struct PyModuleDef module_def = {PyModuleDef_HEAD_INIT, "trigspline._core",
@@ -1754,7 +1543,6 @@ static struct PyModuleDef module_def = {PyModuleDef_HEAD_INIT, "trigspline._core
 PyMODINIT_FUNC PyInit__core(void)
 {
     import_array();
-    init_bernstein();
     if (PyType_Ready(&SplineHandleType) < 0 || PyType_Ready(&CurveHandleType) < 0 ||
         PyType_Ready(&SurfaceHandleType) < 0)
         return NULL;

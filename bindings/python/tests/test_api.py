@@ -264,3 +264,27 @@ def test_probabilities_touch_constant_bounds(form):
     assert np.array_equal(s(x), p)
     with pytest.raises(TrigsplineError):
         Spline(x, np.where(p == 1, 1 + 2 * EPS, p), shape="between", lower=(0, 0), upper=(0, 1))
+
+
+def test_core_defaults_are_the_library_inits():
+    """_core.defaults(): the ts_*_options_init values by field name, enumerations by
+    their canonical names (the header's defaults, include/trigspline.h)."""
+    from trigspline import _core
+    d = _core.defaults()
+    assert set(d) == {"spline", "curve", "surface"}
+    sp, cu, su = d["spline"], d["curve"], d["surface"]
+    form, slopes, alpha, beta, margin, certify = _core.options_defaults()
+    assert ["paper", "c1", "geometric"][form] == sp["form"] == "paper"
+    assert sp["slopes"] == "arithmetic" and slopes == 0
+    assert (sp["alpha"], sp["beta"], sp["margin"]) == (alpha, beta, margin) == (1.0, 0.0, 0.01)
+    assert sp["certify"] is bool(certify) is True
+    assert (sp["shape"], sp["extrapolate"]) == ("none", "error")
+    assert sp["lower"] == sp["upper"] == (0.0, 0.0)
+    assert (cu["param"], cu["closed"], cu["slopes"]) == ("centripetal", False, "arithmetic")
+    assert (cu["alpha"], cu["beta"], cu["margin"]) == (1.0, 0.0, 0.01)
+    assert cu["has_lo"] == cu["has_hi"] == (False, False, False)
+    sform, sslopes, twist, salpha, sbeta, smargin = _core.surface_options_defaults()
+    assert (su["form"], su["slopes"], su["shape"]) == ("paper", "arithmetic", "none")
+    assert (su["zero_twist"], su["alpha"], su["beta"], su["margin"]) == \
+        (bool(twist), salpha, sbeta, smargin)
+    assert (su["has_lower"], su["has_upper"]) == (False, False)

@@ -278,6 +278,65 @@ test('spline options, accessors and certificate from JavaScript', () => {
   c.free();
 });
 
+test('solve, derivatives of every order, extrapolation per call, interval search', () => {
+  // closed forms (docs/method.md §2): f = x gives symmetric control values on
+  // every interval, so S = i + 1/2 at the midpoint of interval i; the
+  // geometric form reproduces the line 3x - 2, root (y + 2)/3
+  const s = ts.spline([0, 1, 2, 3, 4], [0, 1, 2, 3, 4], { form: 'paper' });
+  for (let i = 0; i < 4; i++) {
+    const r = s.solve(i + 0.5);
+    assert.equal(r.length, 1);
+    assert.ok(Math.abs(r[0] - (i + 0.5)) <= 1e-15, `root ${r[0]}`); // bisection to 4 eps in t
+  }
+  assert.deepEqual(Array.from(s.solve(2)), [2]); // a knot, exactly, once
+  assert.equal(s.solve(9).length, 0);
+  const g = ts.spline([-4, -1, 0, 2, 3, 7, 8], [-14, -5, -2, 4, 7, 19, 22], { form: 'geometric' });
+  for (const y of [-13, -2.5, 0, 1, 6.9, 21.99]) {
+    const r = g.solve(y);
+    assert.equal(r.length, 1);
+    assert.ok(Math.abs(r[0] - (y + 2) / 3) <= 1e-13, `geometric root ${r[0]}`);
+  }
+  // flat pieces as scipy's PPoly.solve: [x_i, NaN] per interval with S == y
+  const fl = ts.spline([0, 1, 2, 3, 4], [1, 1, 1, 1, 2], { form: 'paper' });
+  const rf = Array.from(fl.solve(1));
+  assert.equal(rf.length, 6);
+  assert.ok(rf[0] === 0 && Number.isNaN(rf[1]) && rf[2] === 1 && Number.isNaN(rf[3]) && rf[4] === 2 && rf[5] === 3);
+  // alternating data: inner slopes 0, every interval crosses 0 once
+  const xs = Array.from({ length: 41 }, (_, i) => i), ys = xs.map((v) => (v % 2 ? 1 : -1));
+  assert.equal(ts.spline(xs, ys, { form: 'c1' }).solve(0).length, 40);
+
+  // derivatives of order 3..5: the same bits through evalBatch and
+  // derivative(nu); against central differences of the order below, inside
+  // one interval (step 1e-4: truncation 1e-8/6 S^(nu+2) with |S^(k)| about
+  // 4.7^k max|B| here, i.e. ~4e-8 relative; rounding 1e-12 relative)
+  const q = [0.3, 1.25, 2.7, 3.9];
+  const w = ts.spline([0, 1, 2.5, 3, 4], [1, 0.2, 2, 1.5, 3], { form: 'paper' });
+  for (let nu = 3; nu <= 5; nu++) {
+    const b = w.evalBatch(q, nu), d = w.derivative(nu), lo = w.derivative(nu - 1);
+    for (let j = 0; j < q.length; j++) {
+      assert.equal(d(q[j]), b[j]);
+      const fd = (lo(q[j] + 1e-4) - lo(q[j] - 1e-4)) / 2e-4;
+      assert.ok(Math.abs(fd - b[j]) <= 1e-6 * (1 + Math.abs(b[j])), `nu ${nu}: ${fd} vs ${b[j]}`);
+    }
+  }
+  assert.equal(w.derivative(0)(1.25), w.eval(1.25));
+  throwsStatus(() => g.derivative(3)(0.5), 'TS_ERR_OPTION');
+  throwsStatus(() => g.evalBatch([0.5], 3), 'TS_ERR_OPTION');
+  // extrapolation per call: the spline keeps 'error'
+  assert.equal(w.extrapolate, 'error');
+  throwsStatus(() => w.evalBatch([-1]), 'TS_ERR_DOMAIN', 0, 'query');
+  assert.deepEqual(Array.from(w.evalBatch([-1, 9, -Infinity], 0, null, false, 'clamp')), [1, 3, 1]);
+  assert.deepEqual(Array.from(w.evalBatch([Infinity, 9], 2, null, false, 'linear')), [0, 0]);
+  const lin = w.evalBatch([Infinity, -Infinity], 0, null, false, 'linear');
+  assert.ok(Math.abs(lin[0]) === Infinity && Math.abs(lin[1]) === Infinity);
+  assert.equal(w.derivative(1)(9, 'linear'), w.evalDeriv(4).dy);
+  assert.throws(() => w.evalBatch([1], 0, null, false, 'nearest'), TypeError);
+  // the interval search: right-hand at inner knots, the last one at xn
+  assert.deepEqual([0, 0.99, 1, 2.5, 3.2, 4].map((v) => w.findInterval(v)), [0, 0, 1, 2, 3, 3]);
+  throwsStatus(() => w.findInterval(4.5), 'TS_ERR_DOMAIN');
+  for (const o of [s, g, fl, w]) o.free();
+});
+
 // ---- curve factory -----------------------------------------------------------------
 
 test('curve factory: d3 protocol, bounds kept in data space', () => {
