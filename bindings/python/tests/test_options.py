@@ -124,14 +124,13 @@ def test_defaults_are_the_library_s():
     form, slopes, zt, alpha, beta, margin = _core.surface_options_defaults()
     assert (s["form"], s["slopes"], s["zero_twist"], s["alpha"], s["beta"], s["margin"]) == (
         _options.FORMS[form], _options.SLOPES[slopes], bool(zt), alpha, beta, margin)
-    # _core.defaults() (when the extension has it): the option structs' fields
-    if hasattr(_core, "defaults"):
-        lib = _core.defaults()
-        assert {"form", "slopes", "alpha", "beta", "margin", "certify", "extrapolate", "shape",
-                "curve", "surface"} <= set(lib)
-        assert {"param", "closed", "slopes", "alpha", "beta", "margin"} <= set(lib["curve"])
-        assert {"form", "slopes", "zero_twist", "alpha", "beta", "margin", "shape"} <= set(
-            lib["surface"])
+    # _core.defaults(): the option structs' fields
+    lib = _core.defaults()
+    assert {"form", "slopes", "alpha", "beta", "margin", "certify", "extrapolate",
+            "shape"} <= set(lib["spline"])
+    assert {"param", "closed", "slopes", "alpha", "beta", "margin"} <= set(lib["curve"])
+    assert {"form", "slopes", "zero_twist", "alpha", "beta", "margin", "shape"} <= set(
+        lib["surface"])
     # and the shared library's own ts_options_init, through ctypes
     import ctypes
     import test_clib

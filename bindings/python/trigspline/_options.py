@@ -54,31 +54,13 @@ def _enum_name(table, value):
     return table[value] if 0 <= int(value) < len(table) else value
 
 
-def _library_defaults():
-    """The dict of _core.defaults() (the library's option structs after their
-    *_init, enums as canonical names)."""
-    if hasattr(_core, "defaults"):
-        return _core.defaults()
-    # ---- TEMPORARY FALLBACK: until _core.defaults() is in the extension
-    # module.  Delete this block (down to the end marker) once it is. --------
-    form, slopes, alpha, beta, margin, certify = _core.options_defaults()
-    sform, sslopes, zero_twist, salpha, sbeta, smargin = _core.surface_options_defaults()
-    return {"form": FORMS[form], "slopes": SLOPES[slopes], "alpha": alpha, "beta": beta,
-            "margin": margin, "certify": certify, "extrapolate": "error", "shape": "none",
-            "curve": {"param": "centripetal", "closed": 0, "slopes": "arithmetic",
-                      "alpha": 1.0, "beta": 0.0, "margin": margin},
-            "surface": {"form": FORMS[sform], "slopes": SLOPES[sslopes],
-                        "zero_twist": zero_twist, "alpha": salpha, "beta": sbeta,
-                        "margin": smargin, "shape": "none"}}
-    # ---- end of the TEMPORARY FALLBACK ---------------------------------------
-
-
-LIBRARY = _library_defaults()
+# The library's option structs after their *_init ("spline", "curve",
+# "surface"), enums as canonical names.
+LIBRARY = _core.defaults()
 
 
 def _resolved_defaults():
-    lib = LIBRARY
-    cur, srf = lib["curve"], lib["surface"]
+    lib, cur, srf = LIBRARY["spline"], LIBRARY["curve"], LIBRARY["surface"]
     spline = {"form": _enum_name(FORMS, lib["form"]),
               "slopes": _enum_name(SLOPES, lib["slopes"]),
               "alpha": float(lib["alpha"]), "beta": float(lib["beta"]),
