@@ -184,7 +184,7 @@ WEB_WARN := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion \
   -Wstrict-prototypes -Wmissing-prototypes -Wformat=2 -Werror
 WEB_LIB_SRC := $(wildcard src/*.c)
 WEB_CLI_SRC := tools/support/tsu_io.c tools/support/tsu_plot.c $(wildcard tools/cli/*.c)
-WEB_FUNCS := ts_version ts_strerror ts_spline_free ts_spline_intervals ts_spline_x \
+WEB_FUNCS := ts_version ts_strerror ts_status_name ts_vocab_name ts_vocab_count ts_spline_free ts_spline_intervals ts_spline_x \
   ts_spline_f ts_spline_slopes ts_spline_alpha ts_spline_beta ts_spline_form ts_spline_shape \
   ts_spline_extrapolation ts_spline_a ts_spline_control ts_spline_certified ts_eval_deriv \
   ts_eval_batch ts_integral ts_slopes_compute ts_error_bound ts_curve_free ts_curve_segments \

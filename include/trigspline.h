@@ -124,6 +124,56 @@ typedef struct ts_error {
 } ts_error;
 
 /* ------------------------------------------------------------------ */
+/* Vocabulary: the one spelling of every enum value                    */
+/* ------------------------------------------------------------------ */
+
+/*
+ * The canonical name of each value of the library's enums, the names every
+ * front-end (command line, JSON, Python, JavaScript) uses.  One spelling per
+ * value, lower case, words joined by hyphens:
+ *   TS_VOCAB_STATUS         the enumerator names: "TS_OK", "TS_ERR_NULL", ...
+ *   TS_VOCAB_FORM           ts_form: paper, c1, geometric
+ *   TS_VOCAB_SLOPES         ts_slopes: arithmetic, geometric, harmonic,
+ *                           fritsch-carlson, akima, makima, user, periodic
+ *   TS_VOCAB_SHAPE          ts_shape: none, positive, above, below, between, monotone
+ *   TS_VOCAB_EXTRAP         ts_extrap: error, clamp, extend, linear
+ *   TS_VOCAB_PARAM          ts_param: centripetal, chord, uniform
+ *   TS_VOCAB_SURFACE_SHAPE  ts_surface_shape: none, positive, bounds, planes, range
+ *   TS_VOCAB_TERM           ts_term: user, margin, lower-left, lower-right,
+ *                           upper-left, upper-right, monotone, certify, geometric
+ *   TS_VOCAB_WHERE          ts_where: none, point, interval, query
+ * Values are the enum values, 0 .. ts_vocab_count(vocab) - 1.  The strings
+ * are static; every function here is thread-safe.
+ */
+typedef enum ts_vocab {
+    TS_VOCAB_STATUS = 0,
+    TS_VOCAB_FORM = 1,
+    TS_VOCAB_SLOPES = 2,
+    TS_VOCAB_SHAPE = 3,
+    TS_VOCAB_EXTRAP = 4,
+    TS_VOCAB_PARAM = 5,
+    TS_VOCAB_SURFACE_SHAPE = 6,
+    TS_VOCAB_TERM = 7,
+    TS_VOCAB_WHERE = 8,
+    TS_VOCAB_COUNT_ = 9 /* not a vocabulary: their number */
+} ts_vocab;
+
+/* The canonical name of value in vocab; NULL when vocab or value is out of
+ * range. */
+TS_API const char *ts_vocab_name(ts_vocab vocab, int value);
+/* The value whose canonical name is name (exact, case-sensitive match).
+ * *value is -1 first (value not NULL).  TS_OK; TS_ERR_NULL (name or value
+ * NULL); TS_ERR_OPTION (no value of vocab has that name, or vocab out of
+ * range). */
+TS_API ts_status ts_vocab_value(ts_vocab vocab, const char *name, int *value);
+/* Number of values in vocab (for listing them in help texts and docs); 0
+ * when vocab is out of range. */
+TS_API int ts_vocab_count(ts_vocab vocab);
+/* The enumerator name of status ("TS_ERR_SIDE"); "TS_STATUS_UNKNOWN" for a
+ * value that is not a status.  Never NULL. */
+TS_API const char *ts_status_name(ts_status status);
+
+/* ------------------------------------------------------------------ */
 /* Options                                                              */
 /* ------------------------------------------------------------------ */
 

@@ -5,6 +5,7 @@
  * functions of files in lower layers; no file calls a public entry point of
  * the library; tools/check_layers.py checks both):
  *   L0  status.c    status strings, the version, the error setter, allocation
+ *       vocab.c     canonical names of the enum values and statuses
  *       basis.c     the basis, its derivatives and integrals, interval search
  *       trigmin.c   exact minimum of a trigonometric polynomial minus a line
  *   L1  slopes.c    slope estimates
@@ -110,6 +111,11 @@ struct ts_surface {
 };
 
 /* ==== L0 ============================================================ */
+
+/* ---- vocab.c --------------------------------------------------------- */
+/* ts_vocab_name, ts_status_name for the library's own files. */
+const char *ts__vocab_name(ts_vocab vocab, int value);
+const char *ts__status_name(ts_status status);
 
 /* ---- status.c -------------------------------------------------------- */
 void ts__error_set(ts_error *err, ts_status st, size_t index, ts_where where);
