@@ -40,11 +40,14 @@ extern "C" {
 #endif
 #endif
 
-#define TS_VERSION_MAJOR 0
-#define TS_VERSION_MINOR 1
-#define TS_VERSION_PATCH 0
+/* TS_VERSION_MAJOR, _MINOR, _PATCH, TS_VERSION_STRING ("0.2.0"),
+ * TS_VERSION_NUM (MAJOR << 16 | MINOR << 8 | PATCH) and
+ * TS_VERSION_AT_LEAST(maj, min, pat): the version of this header, generated
+ * from CMakeLists.txt; docs/versions.md has the compatibility policy. */
+#include "trigspline_version.h"
 
-/* "0.1.0" */
+/* The version of the library linked in, "MAJOR.MINOR.PATCH": equal to
+ * TS_VERSION_STRING of the header it was built with. */
 TS_API const char *ts_version(void);
 
 /* ------------------------------------------------------------------ */

@@ -3,10 +3,6 @@
 #define _DEFAULT_SOURCE /* MADV_HUGEPAGE */
 #include "internal.h"
 
-#define TS_STR_(x) #x
-#define TS_STR(x) TS_STR_(x)
-#define TS_VERSION_STRING TS_STR(TS_VERSION_MAJOR) "." TS_STR(TS_VERSION_MINOR) "." TS_STR(TS_VERSION_PATCH)
-
 #include <stdint.h>
 #include <stdlib.h>
 #if defined(__linux__)
