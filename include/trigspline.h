@@ -97,7 +97,10 @@ typedef enum ts_status {
                                      be certified in double precision; index = interval */
     TS_ERR_UNPROVEN = 29,         /* C¹ form: no beta was found that certifies the interval, and
                                      the search did not prove that none exists; index = interval */
-    TS_STATUS_COUNT_ = 30    /* not a status: number of codes */
+    TS_ERR_VERSION = 30,          /* a struct's struct_size is not the sizeof of this library's
+                                     struct: built against another version's header, or not
+                                     initialised by its *_init function (see "Struct guards") */
+    TS_STATUS_COUNT_ = 31    /* not a status: number of codes */
 } ts_status;
 
 /* The largest |f_i| and |B_l| a spline accepts (TS_ERR_TOO_LARGE beyond):
@@ -175,6 +178,28 @@ TS_API int ts_vocab_count(ts_vocab vocab);
 /* The enumerator name of status ("TS_ERR_SIDE"); "TS_STATUS_UNKNOWN" for a
  * value that is not a status.  Never NULL. */
 TS_API const char *ts_status_name(ts_status status);
+
+/* ------------------------------------------------------------------ */
+/* Struct guards                                                        */
+/* ------------------------------------------------------------------ */
+
+/*
+ * Every options, report and context struct the caller allocates
+ * (ts_options, ts_curve_options, ts_surface_options, ts_interval_report,
+ * ts_patch_report) starts with
+ *     size_t struct_size;
+ * which its initialiser sets to sizeof the struct as this header declares it:
+ * ts_options_init, ts_curve_options_init, ts_surface_options_init,
+ * TS_INTERVAL_REPORT_INIT / ts_interval_report_init,
+ * TS_PATCH_REPORT_INIT / ts_patch_report_init.  A function that reads or
+ * fills such a struct first compares struct_size with its own sizeof and
+ * returns TS_ERR_VERSION on a mismatch, before reading or writing anything
+ * else in it: a program compiled against another version's header (where
+ * the struct may have other fields) or one that skipped the initialiser
+ * fails cleanly instead of reading garbage or writing past the struct.  For
+ * an array of reports the first entry's struct_size is checked; the
+ * function sets struct_size in every entry it writes.
+ */
 
 /* ------------------------------------------------------------------ */
 /* Options                                                              */
@@ -365,6 +390,7 @@ typedef struct ts_line {
  * have exactly n = n_points - 1 entries (else TS_ERR_LENGTH).
  */
 typedef struct ts_options {
+    size_t struct_size;        /* sizeof(ts_options), set by ts_options_init (struct guards) */
     ts_form form;              /* default TS_FORM_PAPER */
     ts_slopes slopes;          /* default TS_SLOPES_ARITHMETIC */
     const double *user_slopes; /* TS_SLOPES_USER: n_points values */
@@ -430,7 +456,8 @@ typedef struct ts_spline ts_spline;
  * TS_ERR_NEGATIVE, TS_ERR_SIDE, TS_ERR_LINES, TS_ERR_NONMONOTONE,
  * TS_ERR_INFEASIBLE, TS_ERR_GEOMETRIC, TS_ERR_ZERO_SLOPE, TS_ERR_SLOPE_OVERFLOW,
  * TS_ERR_TOO_LARGE, TS_ERR_CONTROL_OVERFLOW, TS_ERR_WIDTH, TS_ERR_PRECISION,
- * TS_ERR_UNPROVEN.
+ * TS_ERR_UNPROVEN, TS_ERR_VERSION (opt->struct_size, checked right after the
+ * NULL arguments).
  *
  * Which fault is reported when the input has several: first the arguments
  * (NULL, too few points, an enum out of range, sizes), then every point
@@ -488,6 +515,8 @@ typedef enum ts_term {
 
 /* Per-interval report: what was built and its certificate. */
 typedef struct ts_interval_report {
+    size_t struct_size;     /* sizeof(ts_interval_report): TS_INTERVAL_REPORT_INIT or
+                               ts_interval_report_init before the first call (struct guards) */
     double x0, x1;          /* interval ends */
     double alpha, beta, a;  /* a = alpha + beta */
     double B[4];            /* control values */
@@ -509,6 +538,11 @@ typedef struct ts_interval_report {
                              * the larger of the interval's two data values (0: it does not) */
     double excursion_below; /* min(S(x0), S(x1)) - y_min >= 0: how far it dips below the smaller */
 } ts_interval_report;
+/* ts_interval_report rep = TS_INTERVAL_REPORT_INIT;  (C99 designated initialiser) */
+#define TS_INTERVAL_REPORT_INIT {.struct_size = sizeof(ts_interval_report)}
+/* Initialise n reports (an array for ts_certify, ts_curve_certify*): struct_size
+ * set, values NaN, flags 0.  reports may be NULL (then nothing happens). */
+TS_API void ts_interval_report_init(ts_interval_report *reports, size_t n);
 /*
  * The gaps are exact: the minimum of a degree-3 trigonometric polynomial
  * (minus a linear function) from all its critical points (docs/method.md §2, §5),
@@ -539,7 +573,8 @@ typedef struct ts_interval_report {
 
 /* Report of interval i.  For shape schemes the boundaries are the scheme's
  * (positive: lower = 0); for TS_SHAPE_NONE no boundary (has_* = 0).
- * TS_OK, TS_ERR_NULL, TS_ERR_INDEX. */
+ * TS_OK, TS_ERR_NULL, TS_ERR_INDEX, TS_ERR_VERSION (rep->struct_size; rep is
+ * then left untouched; checked first). */
 TS_API ts_status ts_spline_report(const ts_spline *s, size_t i, ts_interval_report *rep);
 
 /* 1 when every interval of a shape-constrained spline is certified, 0 otherwise
@@ -552,7 +587,8 @@ TS_API int ts_spline_certified(const ts_spline *s);
  * TS_ERR_NULL).  reports, if not NULL, receives n entries.  Returns TS_OK
  * when every interval keeps lower < S < upper, TS_ERR_VIOLATED otherwise
  * (err->index = first violating interval), TS_ERR_NONFINITE for a non-finite
- * line, TS_ERR_NULL.  reports are reset (NaN) before any check.
+ * line, TS_ERR_NULL, TS_ERR_VERSION (reports[0].struct_size; checked first,
+ * reports then untouched).  reports are reset (NaN) before any other check.
  */
 TS_API ts_status ts_certify(const ts_spline *s, const ts_line *lower, const ts_line *upper,
                      ts_interval_report *reports, ts_error *err);
@@ -644,6 +680,7 @@ typedef enum ts_param {
  * n_points - 1 for an open curve and the number of distinct points for a
  * closed one. */
 typedef struct ts_curve_options {
+    size_t struct_size;      /* sizeof(ts_curve_options), set by ts_curve_options_init */
     ts_param param;          /* default TS_PARAM_CENTRIPETAL; knots start at t_0 = 0 */
     int closed;              /* default 0; nonzero: closed.  The first point may be
                                 repeated at the end (detected by exact equality of all
@@ -703,7 +740,8 @@ TS_API void ts_curve_options_init(ts_curve_options *opt);
  *   TS_ERR_INFEASIBLE  the docs/method.md §5 value of beta_i overflows, or no finite
  *                      beta_i certifies (slope/gap ratios beyond ~1e300 only;
  *                      index = segment)
- *   TS_ERR_NOMEM.
+ *   TS_ERR_NOMEM
+ *   TS_ERR_VERSION     opt->struct_size (checked right after TS_ERR_NULL).
  */
 TS_API ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
                        const ts_curve_options *opt, ts_curve **out, ts_error *err);
@@ -759,14 +797,16 @@ TS_API ts_status ts_curve_length(const ts_curve *c, double tol, double *len);
  * values are strictly inside (a proof: convex hull) or its exact gap exceeds
  * a rounding guard of ~64 ε max|B - bound|.
  * TS_OK if every active side is certified or there is no box;
- * TS_ERR_VIOLATED (index = first segment); TS_ERR_NULL. */
+ * TS_ERR_VIOLATED (index = first segment); TS_ERR_NULL; TS_ERR_VERSION
+ * (reports[0].struct_size, checked first). */
 TS_API ts_status ts_curve_certify(const ts_curve *c, ts_interval_report *reports, ts_error *err);
 /* Same against any box (e.g. to test a curve built without one): coordinate k
  * > lo[k] where has_lo[k], < hi[k] where has_hi[k] (k < dim; has_lo/lo and
  * has_hi/hi may both be NULL pairs: that side is absent).  TS_OK,
  * TS_ERR_VIOLATED (index = first segment), TS_ERR_NONFINITE (an active bound),
- * TS_ERR_NULL (c NULL, or has_* given without its bounds).  reports are reset
- * before any check. */
+ * TS_ERR_NULL (c NULL, or has_* given without its bounds), TS_ERR_VERSION
+ * (reports[0].struct_size, checked first).  reports are reset before any
+ * other check. */
 TS_API ts_status ts_curve_certify_box(const ts_curve *c, const int has_lo[3], const double lo[3],
                                const int has_hi[3], const double hi[3],
                                ts_interval_report *reports, ts_error *err);
@@ -869,6 +909,7 @@ typedef enum ts_surface_shape {
 
 /* Start from ts_surface_options_init(), then set fields. */
 typedef struct ts_surface_options {
+    size_t struct_size;      /* sizeof(ts_surface_options), set by ts_surface_options_init */
     ts_form form;            /* default TS_FORM_PAPER (stated explicitly by careful callers) */
     ts_slopes slopes;        /* default TS_SLOPES_ARITHMETIC, applied along every grid line;
                                 TS_SLOPES_USER and TS_SLOPES_PERIODIC: TS_ERR_OPTION */
@@ -911,6 +952,7 @@ TS_API void ts_surface_options_init(ts_surface_options *opt);
  *                      or whose a would exceed 1e300 (a node gap near the
  *                      underflow threshold next to a slope); index = the patch
  *   TS_ERR_NOMEM
+ *   TS_ERR_VERSION     opt->struct_size (checked right after TS_ERR_NULL)
  */
 TS_API ts_status ts_surface_new(const double *x, size_t nx_points, const double *y,
                                 size_t ny_points, const double *z,
@@ -987,6 +1029,8 @@ TS_API ts_status ts_surface_control(const ts_surface *s, size_t i, size_t j, dou
  * then the proven bound is at least 0).
  */
 typedef struct ts_patch_report {
+    size_t struct_size;     /* sizeof(ts_patch_report): TS_PATCH_REPORT_INIT or
+                               ts_patch_report_init before the first call (struct guards) */
     size_t i, j;
     double x0, x1, y0, y1;
     double ax, ay;
@@ -996,9 +1040,15 @@ typedef struct ts_patch_report {
     double proven_upper, sampled_upper, at_upper[2];
     int certified;
 } ts_patch_report;
+/* ts_patch_report rep = TS_PATCH_REPORT_INIT; */
+#define TS_PATCH_REPORT_INIT {.struct_size = sizeof(ts_patch_report)}
+/* Initialise n patch reports (for ts_surface_certify): struct_size set,
+ * values NaN, flags 0.  reports may be NULL. */
+TS_API void ts_patch_report_init(ts_patch_report *reports, size_t n);
 
 /* Report of patch (i, j) against the scheme's bounds (NONE: no bound,
- * certified 0).  TS_OK, TS_ERR_NULL, TS_ERR_INDEX. */
+ * certified 0).  TS_OK, TS_ERR_NULL (rep NULL checked first, then s),
+ * TS_ERR_INDEX, TS_ERR_VERSION (rep->struct_size; rep then untouched). */
 TS_API ts_status ts_surface_report(const ts_surface *s, size_t i, size_t j,
                                    ts_patch_report *rep);
 /* Certify against any planes (lower, upper may be NULL; not both): reports
@@ -1006,7 +1056,8 @@ TS_API ts_status ts_surface_report(const ts_surface *s, size_t i, size_t j,
  * C¹ forms with a sloped plane: the plane's variation over a sub-patch is
  * subtracted; that bound converges only linearly, so there the tolerance
  * adds 1e-4 of the plane's variation over the patch.  TS_OK when every patch is certified; TS_ERR_VIOLATED (index
- * = first patch that is not); TS_ERR_NONFINITE (a plane); TS_ERR_NULL. */
+ * = first patch that is not); TS_ERR_NONFINITE (a plane); TS_ERR_NULL;
+ * TS_ERR_VERSION (reports[0].struct_size, checked first). */
 TS_API ts_status ts_surface_certify(const ts_surface *s, const ts_plane *lower,
                                     const ts_plane *upper, ts_patch_report *reports,
                                     ts_error *err);

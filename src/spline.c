@@ -13,6 +13,7 @@ static void options_defaults(ts_options *opt)
     if (!opt)
         return;
     memset(opt, 0, sizeof *opt);
+    opt->struct_size = sizeof *opt;
     opt->form = TS_FORM_PAPER;
     opt->slopes = TS_SLOPES_ARITHMETIC;
     opt->alpha = 1.0;
@@ -300,6 +301,8 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
         *out = NULL;
     if (!x || !f || !out)
         return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    if (opt && opt->struct_size != sizeof *opt)
+        return ts__fail(err, TS_ERR_VERSION, TS_NO_INDEX, TS_WHERE_NONE);
     ts_options defaults;
     if (!opt) {
         options_defaults(&defaults);

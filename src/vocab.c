@@ -37,6 +37,7 @@ static const char *const status_names[] = {
     [TS_ERR_WIDTH] = "TS_ERR_WIDTH",
     [TS_ERR_PRECISION] = "TS_ERR_PRECISION",
     [TS_ERR_UNPROVEN] = "TS_ERR_UNPROVEN",
+    [TS_ERR_VERSION] = "TS_ERR_VERSION",
 };
 static const char *const form_names[] = {
     [TS_FORM_PAPER] = "paper", [TS_FORM_C1] = "c1", [TS_FORM_GEOMETRIC] = "geometric"};

@@ -47,7 +47,8 @@ int main(void)
         "TS_ERR_SIDE", "TS_ERR_LINES", "TS_ERR_NONMONOTONE", "TS_ERR_INFEASIBLE",
         "TS_ERR_VIOLATED", "TS_ERR_GEOMETRIC", "TS_ERR_DIMENSION", "TS_ERR_INDEX",
         "TS_ERR_ZERO_SLOPE", "TS_ERR_SLOPE_OVERFLOW", "TS_ERR_TOO_LARGE",
-        "TS_ERR_CONTROL_OVERFLOW", "TS_ERR_WIDTH", "TS_ERR_PRECISION", "TS_ERR_UNPROVEN"};
+        "TS_ERR_CONTROL_OVERFLOW", "TS_ERR_WIDTH", "TS_ERR_PRECISION", "TS_ERR_UNPROVEN",
+        "TS_ERR_VERSION"};
     static const char *const form[] = {"paper", "c1", "geometric"};
     static const char *const slopes[] = {"arithmetic", "geometric", "harmonic", "fritsch-carlson",
                                          "akima", "makima", "user", "periodic"};

@@ -146,6 +146,7 @@ int cli_curve(cli_opts *o)
             rc = cli_nomem();
             goto done;
         }
+        ts_interval_report_init(reps, seg * dim);
         st = ts_curve_certify(c, reps, &e);
         certified = st == TS_OK;
         for (size_t i = 0; i < seg * dim; i++) {

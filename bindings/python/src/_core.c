@@ -758,7 +758,7 @@ static PyObject *spline_report(SplineHandle *self, PyObject *args)
     Py_ssize_t i;
     if (!PyArg_ParseTuple(args, "n", &i))
         return NULL;
-    ts_interval_report r;
+    ts_interval_report r = TS_INTERVAL_REPORT_INIT;
     ts_status st = i < 0 ? TS_ERR_INDEX : ts_spline_report(self->s, (size_t)i, &r);
     if (st != TS_OK)
         return raise_status(st, (size_t)i, TS_WHERE_INTERVAL);
@@ -779,6 +779,7 @@ static PyObject *spline_certify(SplineHandle *self, PyObject *args)
     ts_interval_report *reps = PyMem_Calloc(n ? n : 1, sizeof *reps);
     if (!reps)
         return PyErr_NoMemory();
+    ts_interval_report_init(reps, 1);
     ts_error err;
     ts_status st;
     Py_BEGIN_ALLOW_THREADS
@@ -1133,6 +1134,7 @@ static PyObject *curve_certify(CurveHandle *self, PyObject *args)
     ts_interval_report *reps = PyMem_Calloc(nr ? nr : 1, sizeof *reps);
     if (!reps)
         return PyErr_NoMemory();
+    ts_interval_report_init(reps, 1);
     ts_error err;
     ts_status st;
     Py_BEGIN_ALLOW_THREADS
@@ -1478,7 +1480,7 @@ static PyObject *surface_report(SurfaceHandle *self, PyObject *unused)
     Py_BEGIN_ALLOW_THREADS
     for (size_t j = 0; j < self->ny && st == TS_OK; j++)
         for (size_t i = 0; i < self->nx && st == TS_OK; i++) {
-            ts_patch_report r;
+            ts_patch_report r = TS_PATCH_REPORT_INIT;
             st = ts_surface_report(self->s, i, j, &r);
             report_row(&r, o + (j * self->nx + i) * SURF_REPORT_FIELDS);
         }
@@ -1505,6 +1507,7 @@ static PyObject *surface_certify(SurfaceHandle *self, PyObject *args)
     ts_patch_report *reps = PyMem_Calloc(np_ ? np_ : 1, sizeof *reps);
     if (!reps)
         return PyErr_NoMemory();
+    ts_patch_report_init(reps, 1);
     npy_intp dims[2] = {(npy_intp)np_, SURF_REPORT_FIELDS};
     PyObject *a = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
     if (!a) {
