@@ -186,11 +186,11 @@ TS_API const char *ts_status_name(ts_status status);
 /*
  * Every options, report and context struct the caller allocates
  * (ts_options, ts_curve_options, ts_surface_options, ts_interval_report,
- * ts_patch_report) starts with
+ * ts_patch_report, ts_error_context) starts with
  *     size_t struct_size;
  * which its initialiser sets to sizeof the struct as this header declares it:
  * ts_options_init, ts_curve_options_init, ts_surface_options_init,
- * TS_INTERVAL_REPORT_INIT / ts_interval_report_init,
+ * ts_error_context_init, TS_INTERVAL_REPORT_INIT / ts_interval_report_init,
  * TS_PATCH_REPORT_INIT / ts_patch_report_init.  A function that reads or
  * fills such a struct first compares struct_size with its own sizeof and
  * returns TS_ERR_VERSION on a mismatch, before reading or writing anything
@@ -1061,6 +1061,114 @@ TS_API ts_status ts_surface_report(const ts_surface *s, size_t i, size_t j,
 TS_API ts_status ts_surface_certify(const ts_surface *s, const ts_plane *lower,
                                     const ts_plane *upper, ts_patch_report *reports,
                                     ts_error *err);
+
+/* ================================================================== */
+/* Error messages                                                       */
+/* ================================================================== */
+
+/*
+ * Formats an abscissa for ts_error_message (e.g. as a date): writes at most
+ * len bytes including the terminating NUL and returns the length of the
+ * whole text (as snprintf; a negative value or one >= len means "use the
+ * number instead").  user is ts_error_context.format_x_user.
+ */
+typedef int (*ts_format_x_fn)(double x, char *buf, size_t len, void *user);
+
+/*
+ * What ts_error_message needs besides the ts_error: the data and options of
+ * the call that failed.  Start from ts_error_context_init(), then set the
+ * fields that apply; every pointer may stay NULL (the sentence then names
+ * the index without values).  The library only reads through them, during
+ * ts_error_message.
+ */
+typedef struct ts_error_context {
+    size_t struct_size;          /* sizeof(ts_error_context), set by ts_error_context_init */
+    /* ---- the data */
+    const double *x;             /* spline: the abscissae x[0..n_points);
+                                    surface: the grid's x[0..n_points) */
+    const double *f;             /* spline: the values f[0..n_points); surface: z in the
+                                    layout of ts_surface_new (ny_points rows of n_points) */
+    size_t n_points;             /* spline: points; surface: nx_points; curve: points */
+    const double *y;             /* surface only: the grid's y[0..ny_points) */
+    size_t ny_points;            /* surface only */
+    const double *points;        /* curve only: n_points rows of dim coordinates */
+    size_t dim;                  /* curve only: 2 or 3 */
+    const double *queries;       /* evaluation: the query abscissae (index = query) */
+    size_t n_queries;
+    /* ---- the options of the call (at most one; NULL: defaults) */
+    const ts_options *spline_options;
+    const ts_curve_options *curve_options;
+    const ts_surface_options *surface_options;
+    /* ---- presentation */
+    size_t first_index;          /* added to every point, interval and query index
+                                    printed (the data are a block of a longer series) */
+    ts_format_x_fn format_x;     /* NULL: x printed as a number */
+    void *format_x_user;
+} ts_error_context;
+
+/* Defaults: struct_size set, everything else NULL / 0. */
+TS_API void ts_error_context_init(ts_error_context *ctx);
+
+/*
+ * The full English sentence of a failure, without a prefix and without a
+ * final period or newline; front-ends put their own prefix (e.g.
+ * "data.csv:12: ") in front.  snprintf-like: writes at most len bytes
+ * including the NUL (buf may be NULL when len is 0), always NUL-terminates
+ * when len > 0, and returns the length of the whole sentence, so a return
+ * >= len means it was truncated.  err NULL: the sentence of TS_ERR_NULL
+ * ("a required pointer argument is NULL").  ctx may be NULL (no data);
+ * a ctx whose struct_size is not sizeof(ts_error_context) is ignored and the
+ * sentence says so ("(error context of another version ignored)").
+ *
+ * Numbers are in the shortest form that reads back to the same double
+ * (%.17g trimmed: 0.1, 2.5e-07, nan, inf); x values through ctx->format_x
+ * when given.  Indices are ctx->first_index + the index of err.  Where the
+ * index is outside the data given, the sentence names the index only.
+ *
+ * The form of the sentence ("P" = "point I (x = X, f = F)"):
+ *   TS_ERR_TOO_FEW      "N data points; at least 2 are needed"
+ *   TS_ERR_UNSORTED     "point I (x = X) is not greater than the previous x = X'; x must
+ *                        be strictly increasing"
+ *   TS_ERR_NONFINITE    "P: x or f is NaN or infinite" / "P: the user slope D is not
+ *                        finite" / "P: the step from the previous point, or a slope
+ *                        there, overflows a double"
+ *   TS_ERR_WIDTH        "point I (x = X): the step H from the previous x = X' overflows
+ *                        a double" (or "underflows: ...")
+ *   TS_ERR_PERIODIC     "periodic slopes need the last value equal to the first: f = A at
+ *                        point N-1, f = B at point 0"
+ *   TS_ERR_NEGATIVE     "P is negative; the positive shape needs f >= 0 (negative at
+ *                        x = X1, X2, ...)"
+ *   TS_ERR_SIDE         "P is not above the lower line y = 2x + 1; the data are on or
+ *                        below it at x = X1, ..." (or below / upper / above)
+ *   TS_ERR_LINES        "at point I (x = X) the lower line L (value A) is not below the
+ *                        upper line U (value B)"
+ *   TS_ERR_NONMONOTONE  "P: the data change direction here; the monotone shape needs
+ *                        monotone data"
+ *   TS_ERR_ZERO_SLOPE   "P touches the boundary and the user slope D there points out of
+ *                        the region"
+ *   TS_ERR_ALPHA, _BETA, _MARGIN  "interval I [X0, X1]: alpha = A must be finite and > 0"
+ *                        (beta: ">= 0, and alpha + beta > 0"; the margin likewise)
+ *   TS_ERR_LENGTH       "alphas has K values, but the data have N intervals (one value
+ *                        per interval is needed)" (betas, margins; user slopes: points)
+ *   TS_ERR_GEOMETRIC    "interval I [X0, X1]: alpha + beta = A is below the geometric-form
+ *                        bound 0.3472; raise alpha or beta"
+ *   TS_ERR_INFEASIBLE   "interval I [X0, X1]: no beta >= 0 keeps the spline inside the
+ *                        region on this interval"
+ *   TS_ERR_CONTROL_OVERFLOW "interval I [X0, X1]: alpha + beta = A is too small for the
+ *                        slopes: the control values overflow"
+ *   TS_ERR_DOMAIN       "query I (x = X) lies outside [X0, XN]" / "query I is NaN" /
+ *                        "query I (x = inf) is infinite"
+ *   other statuses      "P: TEXT", "interval I [X0, X1]: TEXT", "query I: TEXT" or
+ *                        "TEXT", TEXT = ts_strerror(status)
+ * The lists of other failing points name at most 12 x values, then ", ...".
+ * Surfaces (ctx->surface_options or ctx->y given): a node is "node (I, J) (x = X,
+ * y = Y, z = Z)", a patch "patch (I, J) [X0, X1] x [Y0, Y1]"; curves
+ * (ctx->curve_options or ctx->points given): "point I (C1, C2[, C3])",
+ * "segment I".  The wording names the library's options (alpha, beta, the
+ * positive shape, ...), never a front-end's flags.
+ */
+TS_API size_t ts_error_message(const ts_error *err, const ts_error_context *ctx, char *buf,
+                               size_t len);
 
 #ifdef __cplusplus
 }

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void options_defaults(ts_options *opt)
+void ts__options_defaults(ts_options *opt)
 {
     if (!opt)
         return;
@@ -305,7 +305,7 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
         return ts__fail(err, TS_ERR_VERSION, TS_NO_INDEX, TS_WHERE_NONE);
     ts_options defaults;
     if (!opt) {
-        options_defaults(&defaults);
+        ts__options_defaults(&defaults);
         opt = &defaults;
     }
     if (n_points < 2)
@@ -439,7 +439,7 @@ ts_status ts_spline_control(const ts_spline *s, size_t i, double B[4], double X[
 
 void ts_options_init(ts_options *opt)
 {
-    options_defaults(opt);
+    ts__options_defaults(opt);
 }
 
 void ts_spline_free(ts_spline *s)

@@ -50,6 +50,11 @@ static const char *const ts_messages[TS_STATUS_COUNT_] = {
 
 const char *ts_strerror(ts_status status)
 {
+    return ts__strerror(status);
+}
+
+const char *ts__strerror(ts_status status)
+{
     /* every status has its message (tests/unit/test_cover_api.c checks) */
     if ((unsigned)status < (unsigned)TS_STATUS_COUNT_)
         return ts_messages[status];
