@@ -437,7 +437,8 @@ static void surface_sentence(out *o, const ts_error_context *c, const ts_error *
         put(o, " is negative; the positive shape needs z >= 0");
         return;
     }
-    if (e->status == TS_ERR_GEOMETRIC && c->surface_options) {
+    if (e->status == TS_ERR_GEOMETRIC && c->surface_options &&
+        c->surface_options->struct_size == sizeof *c->surface_options) {
         put(o, "alpha + beta = ");
         num(o, c->surface_options->alpha + c->surface_options->beta);
         put(o, " is below the geometric-form bound ");

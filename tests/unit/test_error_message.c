@@ -288,6 +288,14 @@ static void test_surface_and_curve(void)
     c.surface_options = &so;
     EXPECT(&e, &c, "node (2, 1) (x = 2, y = 1, z = -1) is negative; the positive shape needs "
                    "z >= 0");
+    ts_error ge = {TS_ERR_GEOMETRIC, TS_NO_INDEX, TS_WHERE_NONE};
+    so.alpha = 0.25;
+    so.beta = 0.0625;
+    EXPECT(&ge, &c, "alpha + beta = 0.3125 is below the geometric-form bound 0.3472; raise alpha "
+                    "or beta");
+    so.struct_size = 0; /* options of another version: not read */
+    EXPECT(&ge, &c, "alpha + beta below the geometric-form bound");
+    so.struct_size = sizeof so;
     ts_error pe = {TS_ERR_INFEASIBLE, 1, TS_WHERE_INTERVAL};
     EXPECT(&pe, &c, "patch (1, 0) [1, 2] x [0, 1]: no beta keeps this interval inside the region");
 
