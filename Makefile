@@ -104,7 +104,7 @@ bench:
 # results section of docs/accuracy.md and docs/accuracy.svg.  Compares with GSL.
 accuracy: build
 	$(call need_file,/usr/include/gsl/gsl_interp.h,libgsl-dev)
-	$(CC) -std=c11 -O2 -Wall -Wextra -Iinclude accuracy/accuracy.c build/libtrigspline.a \
+	$(CC) -std=c11 -O2 -Wall -Wextra -Iinclude -Ibuild/include accuracy/accuracy.c build/libtrigspline.a \
 	  -lgsl -lgslcblas -lm -lpthread -o build/accuracy
 	./build/accuracy --doc docs/accuracy.md --svg docs/accuracy.svg
 
@@ -185,12 +185,14 @@ WEB_BUILD := build-web
 WEB_OUT := out/web
 # -O2, not -Oz: -Oz is 10 KB (gzipped) smaller but its results differ from the
 # native build's in the last bits (the geometric-mean slopes), docs/design.md.
-WEB_EMCC := NODE_PATH=/usr/share/nodejs emcc -std=c11 -O2 -Iinclude
+WEB_EMCC := NODE_PATH=/usr/share/nodejs emcc -std=c11 -O2 -Iinclude -I$(WEB_BUILD)/include
+# trigspline_version.h, generated from CMakeLists.txt's project() as CMake does
+WEB_VERSION_H := $(WEB_BUILD)/include/trigspline_version.h
 WEB_WARN := -Wall -Wextra -Wpedantic -Wshadow -Wconversion -Wdouble-promotion \
   -Wstrict-prototypes -Wmissing-prototypes -Wformat=2 -Werror
 WEB_LIB_SRC := $(wildcard src/*.c)
 WEB_CLI_SRC := $(wildcard tools/support/tsu_*.c) $(wildcard tools/cli/*.c)
-WEB_FUNCS := ts_version ts_strerror ts_spline_free ts_spline_intervals ts_spline_x \
+WEB_FUNCS := ts_version ts_strerror ts_status_name ts_vocab_name ts_vocab_count ts_spline_free ts_spline_intervals ts_spline_x \
   ts_spline_f ts_spline_slopes ts_spline_alpha ts_spline_beta ts_spline_form ts_spline_shape \
   ts_spline_extrapolation ts_spline_a ts_spline_control ts_spline_certified ts_eval_deriv \
   ts_eval_batch ts_spline_eval_mode ts_spline_eval_batch_mode ts_spline_solve \
@@ -204,9 +206,13 @@ WEB_EXPORTS := $(subst $(web_space),$(web_comma),$(patsubst %,'_%',$(WEB_FUNCS))
 
 web: $(WEB_OUT)/index.html
 
+$(WEB_VERSION_H): CMakeLists.txt cmake/trigspline_version.h.in scripts/version.py
+	python3 scripts/version.py --header $@
+
 # the library: a standalone wasm (imports only its memory), 2 MB initial
 # (trigspline.js creates the memory: keep the two in step)
-$(WEB_BUILD)/trigspline.wasm: $(WEB_LIB_SRC) src/internal.h include/trigspline.h bindings/web/glue.c
+$(WEB_BUILD)/trigspline.wasm: $(WEB_LIB_SRC) src/internal.h include/trigspline.h bindings/web/glue.c \
+  $(WEB_VERSION_H)
 	$(call need,emcc:emscripten node:nodejs)
 	@mkdir -p $(WEB_BUILD)
 	$(WEB_EMCC) $(WEB_WARN) -Isrc $(WEB_LIB_SRC) bindings/web/glue.c -sSTANDALONE_WASM --no-entry \
@@ -215,7 +221,7 @@ $(WEB_BUILD)/trigspline.wasm: $(WEB_LIB_SRC) src/internal.h include/trigspline.h
 
 # the command-line tool with an in-memory file system, called by the explorer's exports
 $(WEB_BUILD)/trigspline-cli.js: $(WEB_LIB_SRC) $(WEB_CLI_SRC) tools/cli/cli.h tools/support/tsu_io.h \
-  tools/support/tsu_plot.h include/trigspline.h
+  tools/support/tsu_plot.h include/trigspline.h $(WEB_VERSION_H)
 	$(call need,emcc:emscripten node:nodejs)
 	@mkdir -p $(WEB_BUILD)
 	$(WEB_EMCC) $(WEB_WARN) -Itools/support -Itools/cli $(WEB_LIB_SRC) $(WEB_CLI_SRC) \
@@ -230,15 +236,16 @@ $(WEB_OUT)/index.html: $(WEB_BUILD)/trigspline.wasm $(WEB_BUILD)/trigspline-cli.
 # Native references for the Node test: the same sources with musl's libm (the
 # libm emscripten ships) and the portable batch kernel (no AVX2/FMA clone), so
 # wasm and native must agree bit for bit.
-$(WEB_BUILD)/reference-musl: $(WEB_LIB_SRC) bindings/web/test/reference.c include/trigspline.h
+$(WEB_BUILD)/reference-musl: $(WEB_LIB_SRC) bindings/web/test/reference.c include/trigspline.h \
+  $(WEB_VERSION_H)
 	$(call need,musl-gcc:musl-tools)
 	@mkdir -p $(WEB_BUILD)
-	musl-gcc -std=c11 -O2 -DTS_FAST_PORTABLE $(WEB_WARN) -Iinclude -Isrc $(WEB_LIB_SRC) \
+	musl-gcc -std=c11 -O2 -DTS_FAST_PORTABLE $(WEB_WARN) -Iinclude -I$(WEB_BUILD)/include -Isrc $(WEB_LIB_SRC) \
 	  bindings/web/test/reference.c -lm -o $@
-$(WEB_BUILD)/trigspline-musl: $(WEB_LIB_SRC) $(WEB_CLI_SRC) include/trigspline.h
+$(WEB_BUILD)/trigspline-musl: $(WEB_LIB_SRC) $(WEB_CLI_SRC) include/trigspline.h $(WEB_VERSION_H)
 	$(call need,musl-gcc:musl-tools)
 	@mkdir -p $(WEB_BUILD)
-	musl-gcc -std=c11 -O2 -DTS_FAST_PORTABLE $(WEB_WARN) -Iinclude -Isrc -Itools/support \
+	musl-gcc -std=c11 -O2 -DTS_FAST_PORTABLE $(WEB_WARN) -Iinclude -I$(WEB_BUILD)/include -Isrc -Itools/support \
 	  -Itools/cli $(WEB_LIB_SRC) $(WEB_CLI_SRC) -lm -o $@
 
 test-web: web build $(WEB_BUILD)/reference-musl $(WEB_BUILD)/trigspline-musl test-why-page

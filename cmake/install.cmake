@@ -11,6 +11,7 @@ install(TARGETS trigspline trigspline_shared EXPORT trigsplineTargets
   RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR}
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(FILES ${PROJECT_SOURCE_DIR}/include/trigspline.h
+              ${TS_GENERATED_INCLUDE_DIR}/trigspline_version.h
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(FILES ${PROJECT_SOURCE_DIR}/docs/trigspline.1
   DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
@@ -35,8 +36,15 @@ string(STRIP "${TS_PC_LIBS_PRIVATE}" TS_PC_LIBS_PRIVATE)
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/trigsplineConfig.cmake.in
   ${PROJECT_BINARY_DIR}/cmake/trigsplineConfig.cmake
   INSTALL_DESTINATION ${TS_CMAKE_DIR})
+# Compatible versions (docs/versions.md): the same major from 1.0 on; before
+# 1.0 the same minor (0.x minor releases may break API and ABI).
+if(PROJECT_VERSION_MAJOR EQUAL 0)
+  set(TS_COMPATIBILITY SameMinorVersion)
+else()
+  set(TS_COMPATIBILITY SameMajorVersion)
+endif()
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/cmake/trigsplineConfigVersion.cmake
-  VERSION ${PROJECT_VERSION} COMPATIBILITY SameMajorVersion)
+  VERSION ${PROJECT_VERSION} COMPATIBILITY ${TS_COMPATIBILITY})
 install(FILES ${PROJECT_BINARY_DIR}/cmake/trigsplineConfig.cmake
               ${PROJECT_BINARY_DIR}/cmake/trigsplineConfigVersion.cmake
   DESTINATION ${TS_CMAKE_DIR})

@@ -40,11 +40,14 @@ extern "C" {
 #endif
 #endif
 
-#define TS_VERSION_MAJOR 0
-#define TS_VERSION_MINOR 1
-#define TS_VERSION_PATCH 0
+/* TS_VERSION_MAJOR, _MINOR, _PATCH, TS_VERSION_STRING ("0.2.0"),
+ * TS_VERSION_NUM (MAJOR << 16 | MINOR << 8 | PATCH) and
+ * TS_VERSION_AT_LEAST(maj, min, pat): the version of this header, generated
+ * from CMakeLists.txt; docs/versions.md has the compatibility policy. */
+#include "trigspline_version.h"
 
-/* "0.1.0" */
+/* The version of the library linked in, "MAJOR.MINOR.PATCH": equal to
+ * TS_VERSION_STRING of the header it was built with. */
 TS_API const char *ts_version(void);
 
 /* ------------------------------------------------------------------ */
@@ -94,7 +97,10 @@ typedef enum ts_status {
                                      be certified in double precision; index = interval */
     TS_ERR_UNPROVEN = 29,         /* C¹ form: no beta was found that certifies the interval, and
                                      the search did not prove that none exists; index = interval */
-    TS_STATUS_COUNT_ = 30    /* not a status: number of codes */
+    TS_ERR_VERSION = 30,          /* a struct's struct_size is not the sizeof of this library's
+                                     struct: built against another version's header, or not
+                                     initialised by its *_init function (see "Struct guards") */
+    TS_STATUS_COUNT_ = 31    /* not a status: number of codes */
 } ts_status;
 
 /* The largest |f_i| and |B_l| a spline accepts (TS_ERR_TOO_LARGE beyond):
@@ -122,6 +128,78 @@ typedef struct ts_error {
     size_t index;
     ts_where where;
 } ts_error;
+
+/* ------------------------------------------------------------------ */
+/* Vocabulary: the one spelling of every enum value                    */
+/* ------------------------------------------------------------------ */
+
+/*
+ * The canonical name of each value of the library's enums, the names every
+ * front-end (command line, JSON, Python, JavaScript) uses.  One spelling per
+ * value, lower case, words joined by hyphens:
+ *   TS_VOCAB_STATUS         the enumerator names: "TS_OK", "TS_ERR_NULL", ...
+ *   TS_VOCAB_FORM           ts_form: paper, c1, geometric
+ *   TS_VOCAB_SLOPES         ts_slopes: arithmetic, geometric, harmonic,
+ *                           fritsch-carlson, akima, makima, user, periodic
+ *   TS_VOCAB_SHAPE          ts_shape: none, positive, above, below, between, monotone
+ *   TS_VOCAB_EXTRAP         ts_extrap: error, clamp, extend, linear
+ *   TS_VOCAB_PARAM          ts_param: centripetal, chord, uniform
+ *   TS_VOCAB_SURFACE_SHAPE  ts_surface_shape: none, positive, bounds, planes, range
+ *   TS_VOCAB_TERM           ts_term: user, margin, lower-left, lower-right,
+ *                           upper-left, upper-right, monotone, certify, geometric
+ *   TS_VOCAB_WHERE          ts_where: none, point, interval, query
+ * Values are the enum values, 0 .. ts_vocab_count(vocab) - 1.  The strings
+ * are static; every function here is thread-safe.
+ */
+typedef enum ts_vocab {
+    TS_VOCAB_STATUS = 0,
+    TS_VOCAB_FORM = 1,
+    TS_VOCAB_SLOPES = 2,
+    TS_VOCAB_SHAPE = 3,
+    TS_VOCAB_EXTRAP = 4,
+    TS_VOCAB_PARAM = 5,
+    TS_VOCAB_SURFACE_SHAPE = 6,
+    TS_VOCAB_TERM = 7,
+    TS_VOCAB_WHERE = 8,
+    TS_VOCAB_COUNT_ = 9 /* not a vocabulary: their number */
+} ts_vocab;
+
+/* The canonical name of value in vocab; NULL when vocab or value is out of
+ * range. */
+TS_API const char *ts_vocab_name(ts_vocab vocab, int value);
+/* The value whose canonical name is name (exact, case-sensitive match).
+ * *value is -1 first (value not NULL).  TS_OK; TS_ERR_NULL (name or value
+ * NULL); TS_ERR_OPTION (no value of vocab has that name, or vocab out of
+ * range). */
+TS_API ts_status ts_vocab_value(ts_vocab vocab, const char *name, int *value);
+/* Number of values in vocab (for listing them in help texts and docs); 0
+ * when vocab is out of range. */
+TS_API int ts_vocab_count(ts_vocab vocab);
+/* The enumerator name of status ("TS_ERR_SIDE"); "TS_STATUS_UNKNOWN" for a
+ * value that is not a status.  Never NULL. */
+TS_API const char *ts_status_name(ts_status status);
+
+/* ------------------------------------------------------------------ */
+/* Struct guards                                                        */
+/* ------------------------------------------------------------------ */
+
+/*
+ * Every options, report and context struct the caller allocates
+ * (ts_options, ts_curve_options, ts_surface_options, ts_interval_report,
+ * ts_patch_report, ts_error_context) starts with
+ *     size_t struct_size;
+ * which its initialiser sets to sizeof the struct as this header declares it:
+ * ts_options_init, ts_curve_options_init, ts_surface_options_init,
+ * ts_error_context_init, TS_INTERVAL_REPORT_INIT / ts_interval_report_init,
+ * TS_PATCH_REPORT_INIT / ts_patch_report_init.  A function that reads or
+ * fills such a struct first compares struct_size with its own sizeof and
+ * returns TS_ERR_VERSION on a mismatch, before reading or writing anything
+ * else in it: a program compiled against another version's header (where
+ * the struct may have other fields) or one that skipped the initialiser
+ * fails cleanly instead of reading garbage or writing past the struct.  For
+ * an array of reports the first entry's struct_size is checked; the
+ * function sets struct_size in every entry it writes.
+ */
 
 /* ------------------------------------------------------------------ */
 /* Options                                                              */
@@ -312,6 +390,7 @@ typedef struct ts_line {
  * have exactly n = n_points - 1 entries (else TS_ERR_LENGTH).
  */
 typedef struct ts_options {
+    size_t struct_size;        /* sizeof(ts_options), set by ts_options_init (struct guards) */
     ts_form form;              /* default TS_FORM_PAPER */
     ts_slopes slopes;          /* default TS_SLOPES_ARITHMETIC */
     const double *user_slopes; /* TS_SLOPES_USER: n_points values */
@@ -377,7 +456,8 @@ typedef struct ts_spline ts_spline;
  * TS_ERR_NEGATIVE, TS_ERR_SIDE, TS_ERR_LINES, TS_ERR_NONMONOTONE,
  * TS_ERR_INFEASIBLE, TS_ERR_GEOMETRIC, TS_ERR_ZERO_SLOPE, TS_ERR_SLOPE_OVERFLOW,
  * TS_ERR_TOO_LARGE, TS_ERR_CONTROL_OVERFLOW, TS_ERR_WIDTH, TS_ERR_PRECISION,
- * TS_ERR_UNPROVEN.
+ * TS_ERR_UNPROVEN, TS_ERR_VERSION (opt->struct_size, checked right after the
+ * NULL arguments).
  *
  * Which fault is reported when the input has several: first the arguments
  * (NULL, too few points, an enum out of range, sizes), then every point
@@ -435,6 +515,8 @@ typedef enum ts_term {
 
 /* Per-interval report: what was built and its certificate. */
 typedef struct ts_interval_report {
+    size_t struct_size;     /* sizeof(ts_interval_report): TS_INTERVAL_REPORT_INIT or
+                               ts_interval_report_init before the first call (struct guards) */
     double x0, x1;          /* interval ends */
     double alpha, beta, a;  /* a = alpha + beta */
     double B[4];            /* control values */
@@ -456,6 +538,11 @@ typedef struct ts_interval_report {
                              * the larger of the interval's two data values (0: it does not) */
     double excursion_below; /* min(S(x0), S(x1)) - y_min >= 0: how far it dips below the smaller */
 } ts_interval_report;
+/* ts_interval_report rep = TS_INTERVAL_REPORT_INIT;  (C99 designated initialiser) */
+#define TS_INTERVAL_REPORT_INIT {.struct_size = sizeof(ts_interval_report)}
+/* Initialise n reports (an array for ts_certify, ts_curve_certify*): struct_size
+ * set, values NaN, flags 0.  reports may be NULL (then nothing happens). */
+TS_API void ts_interval_report_init(ts_interval_report *reports, size_t n);
 /*
  * The gaps are exact: the minimum of a degree-3 trigonometric polynomial
  * (minus a linear function) from all its critical points (docs/method.md §2, §5),
@@ -486,7 +573,8 @@ typedef struct ts_interval_report {
 
 /* Report of interval i.  For shape schemes the boundaries are the scheme's
  * (positive: lower = 0); for TS_SHAPE_NONE no boundary (has_* = 0).
- * TS_OK, TS_ERR_NULL, TS_ERR_INDEX. */
+ * TS_OK, TS_ERR_NULL, TS_ERR_INDEX, TS_ERR_VERSION (rep->struct_size; rep is
+ * then left untouched; checked first). */
 TS_API ts_status ts_spline_report(const ts_spline *s, size_t i, ts_interval_report *rep);
 
 /* 1 when every interval of a shape-constrained spline is certified, 0 otherwise
@@ -499,7 +587,8 @@ TS_API int ts_spline_certified(const ts_spline *s);
  * TS_ERR_NULL).  reports, if not NULL, receives n entries.  Returns TS_OK
  * when every interval keeps lower < S < upper, TS_ERR_VIOLATED otherwise
  * (err->index = first violating interval), TS_ERR_NONFINITE for a non-finite
- * line, TS_ERR_NULL.  reports are reset (NaN) before any check.
+ * line, TS_ERR_NULL, TS_ERR_VERSION (reports[0].struct_size; checked first,
+ * reports then untouched).  reports are reset (NaN) before any other check.
  */
 TS_API ts_status ts_certify(const ts_spline *s, const ts_line *lower, const ts_line *upper,
                      ts_interval_report *reports, ts_error *err);
@@ -659,6 +748,7 @@ typedef enum ts_param {
  * n_points - 1 for an open curve and the number of distinct points for a
  * closed one. */
 typedef struct ts_curve_options {
+    size_t struct_size;      /* sizeof(ts_curve_options), set by ts_curve_options_init */
     ts_param param;          /* default TS_PARAM_CENTRIPETAL; knots start at t_0 = 0 */
     int closed;              /* default 0; nonzero: closed.  The first point may be
                                 repeated at the end (detected by exact equality of all
@@ -718,7 +808,8 @@ TS_API void ts_curve_options_init(ts_curve_options *opt);
  *   TS_ERR_INFEASIBLE  the docs/method.md §5 value of beta_i overflows, or no finite
  *                      beta_i certifies (slope/gap ratios beyond ~1e300 only;
  *                      index = segment)
- *   TS_ERR_NOMEM.
+ *   TS_ERR_NOMEM
+ *   TS_ERR_VERSION     opt->struct_size (checked right after TS_ERR_NULL).
  */
 TS_API ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
                        const ts_curve_options *opt, ts_curve **out, ts_error *err);
@@ -774,14 +865,16 @@ TS_API ts_status ts_curve_length(const ts_curve *c, double tol, double *len);
  * values are strictly inside (a proof: convex hull) or its exact gap exceeds
  * a rounding guard of ~64 ε max|B - bound|.
  * TS_OK if every active side is certified or there is no box;
- * TS_ERR_VIOLATED (index = first segment); TS_ERR_NULL. */
+ * TS_ERR_VIOLATED (index = first segment); TS_ERR_NULL; TS_ERR_VERSION
+ * (reports[0].struct_size, checked first). */
 TS_API ts_status ts_curve_certify(const ts_curve *c, ts_interval_report *reports, ts_error *err);
 /* Same against any box (e.g. to test a curve built without one): coordinate k
  * > lo[k] where has_lo[k], < hi[k] where has_hi[k] (k < dim; has_lo/lo and
  * has_hi/hi may both be NULL pairs: that side is absent).  TS_OK,
  * TS_ERR_VIOLATED (index = first segment), TS_ERR_NONFINITE (an active bound),
- * TS_ERR_NULL (c NULL, or has_* given without its bounds).  reports are reset
- * before any check. */
+ * TS_ERR_NULL (c NULL, or has_* given without its bounds), TS_ERR_VERSION
+ * (reports[0].struct_size, checked first).  reports are reset before any
+ * other check. */
 TS_API ts_status ts_curve_certify_box(const ts_curve *c, const int has_lo[3], const double lo[3],
                                const int has_hi[3], const double hi[3],
                                ts_interval_report *reports, ts_error *err);
@@ -884,6 +977,7 @@ typedef enum ts_surface_shape {
 
 /* Start from ts_surface_options_init(), then set fields. */
 typedef struct ts_surface_options {
+    size_t struct_size;      /* sizeof(ts_surface_options), set by ts_surface_options_init */
     ts_form form;            /* default TS_FORM_PAPER (stated explicitly by careful callers) */
     ts_slopes slopes;        /* default TS_SLOPES_ARITHMETIC, applied along every grid line;
                                 TS_SLOPES_USER and TS_SLOPES_PERIODIC: TS_ERR_OPTION */
@@ -927,6 +1021,7 @@ TS_API void ts_surface_options_init(ts_surface_options *opt);
  *                      or whose a would exceed 1e300 (a node gap near the
  *                      underflow threshold next to a slope); index = the patch
  *   TS_ERR_NOMEM
+ *   TS_ERR_VERSION     opt->struct_size (checked right after TS_ERR_NULL)
  */
 TS_API ts_status ts_surface_new(const double *x, size_t nx_points, const double *y,
                                 size_t ny_points, const double *z,
@@ -1003,6 +1098,8 @@ TS_API ts_status ts_surface_control(const ts_surface *s, size_t i, size_t j, dou
  * then the proven bound is at least 0).
  */
 typedef struct ts_patch_report {
+    size_t struct_size;     /* sizeof(ts_patch_report): TS_PATCH_REPORT_INIT or
+                               ts_patch_report_init before the first call (struct guards) */
     size_t i, j;
     double x0, x1, y0, y1;
     double ax, ay;
@@ -1012,9 +1109,15 @@ typedef struct ts_patch_report {
     double proven_upper, sampled_upper, at_upper[2];
     int certified;
 } ts_patch_report;
+/* ts_patch_report rep = TS_PATCH_REPORT_INIT; */
+#define TS_PATCH_REPORT_INIT {.struct_size = sizeof(ts_patch_report)}
+/* Initialise n patch reports (for ts_surface_certify): struct_size set,
+ * values NaN, flags 0.  reports may be NULL. */
+TS_API void ts_patch_report_init(ts_patch_report *reports, size_t n);
 
 /* Report of patch (i, j) against the scheme's bounds (NONE: no bound,
- * certified 0).  TS_OK, TS_ERR_NULL, TS_ERR_INDEX. */
+ * certified 0).  TS_OK, TS_ERR_NULL (rep NULL checked first, then s),
+ * TS_ERR_INDEX, TS_ERR_VERSION (rep->struct_size; rep then untouched). */
 TS_API ts_status ts_surface_report(const ts_surface *s, size_t i, size_t j,
                                    ts_patch_report *rep);
 /* Certify against any planes (lower, upper may be NULL; not both): reports
@@ -1022,10 +1125,119 @@ TS_API ts_status ts_surface_report(const ts_surface *s, size_t i, size_t j,
  * C¹ forms with a sloped plane: the plane's variation over a sub-patch is
  * subtracted; that bound converges only linearly, so there the tolerance
  * adds 1e-4 of the plane's variation over the patch.  TS_OK when every patch is certified; TS_ERR_VIOLATED (index
- * = first patch that is not); TS_ERR_NONFINITE (a plane); TS_ERR_NULL. */
+ * = first patch that is not); TS_ERR_NONFINITE (a plane); TS_ERR_NULL;
+ * TS_ERR_VERSION (reports[0].struct_size, checked first). */
 TS_API ts_status ts_surface_certify(const ts_surface *s, const ts_plane *lower,
                                     const ts_plane *upper, ts_patch_report *reports,
                                     ts_error *err);
+
+/* ================================================================== */
+/* Error messages                                                       */
+/* ================================================================== */
+
+/*
+ * Formats an abscissa for ts_error_message (e.g. as a date): writes at most
+ * len bytes including the terminating NUL and returns the length of the
+ * whole text (as snprintf; a negative value or one >= len means "use the
+ * number instead").  user is ts_error_context.format_x_user.
+ */
+typedef int (*ts_format_x_fn)(double x, char *buf, size_t len, void *user);
+
+/*
+ * What ts_error_message needs besides the ts_error: the data and options of
+ * the call that failed.  Start from ts_error_context_init(), then set the
+ * fields that apply; every pointer may stay NULL (the sentence then names
+ * the index without values).  The library only reads through them, during
+ * ts_error_message.
+ */
+typedef struct ts_error_context {
+    size_t struct_size;          /* sizeof(ts_error_context), set by ts_error_context_init */
+    /* ---- the data */
+    const double *x;             /* spline: the abscissae x[0..n_points);
+                                    surface: the grid's x[0..n_points) */
+    const double *f;             /* spline: the values f[0..n_points); surface: z in the
+                                    layout of ts_surface_new (ny_points rows of n_points) */
+    size_t n_points;             /* spline: points; surface: nx_points; curve: points */
+    const double *y;             /* surface only: the grid's y[0..ny_points) */
+    size_t ny_points;            /* surface only */
+    const double *points;        /* curve only: n_points rows of dim coordinates */
+    size_t dim;                  /* curve only: 2 or 3 */
+    const double *queries;       /* evaluation: the query abscissae (index = query) */
+    size_t n_queries;
+    /* ---- the options of the call (at most one; NULL: defaults) */
+    const ts_options *spline_options;
+    const ts_curve_options *curve_options;
+    const ts_surface_options *surface_options;
+    /* ---- presentation */
+    size_t first_index;          /* added to every point, interval and query index
+                                    printed (the data are a block of a longer series) */
+    ts_format_x_fn format_x;     /* NULL: x printed as a number */
+    void *format_x_user;
+} ts_error_context;
+
+/* Defaults: struct_size set, everything else NULL / 0. */
+TS_API void ts_error_context_init(ts_error_context *ctx);
+
+/*
+ * The full English sentence of a failure, without a prefix and without a
+ * final period or newline; front-ends put their own prefix (e.g.
+ * "data.csv:12: ") in front.  snprintf-like: writes at most len bytes
+ * including the NUL (buf may be NULL when len is 0), always NUL-terminates
+ * when len > 0, and returns the length of the whole sentence, so a return
+ * >= len means it was truncated.  err NULL: the sentence of TS_ERR_NULL
+ * ("a required pointer argument is NULL").  ctx may be NULL (no data);
+ * a ctx whose struct_size is not sizeof(ts_error_context) is ignored and the
+ * sentence says so ("(error context of another version ignored)").
+ *
+ * Numbers are in the shortest form that reads back to the same double
+ * (%.17g trimmed: 0.1, 2.5e-07, nan, inf); x values through ctx->format_x
+ * when given.  Indices are ctx->first_index + the index of err.  Where the
+ * index is outside the data given, the sentence names the index only.
+ *
+ * The form of the sentence ("P" = "point I (x = X, f = F)"):
+ *   TS_ERR_TOO_FEW      "N data points; at least 2 are needed"
+ *   TS_ERR_UNSORTED     "point I (x = X) is not greater than the previous x = X'; x must
+ *                        be strictly increasing"
+ *   TS_ERR_NONFINITE    "P: x or f is NaN or infinite" / "P: the user slope D is not
+ *                        finite" / "P: the step from the previous point, or a slope
+ *                        there, overflows a double"
+ *   TS_ERR_WIDTH        "point I (x = X): the step H from the previous x = X' overflows
+ *                        a double" (or "underflows: ...")
+ *   TS_ERR_PERIODIC     "periodic slopes need the last value equal to the first: f = A at
+ *                        point N-1, f = B at point 0"
+ *   TS_ERR_NEGATIVE     "P is negative; the positive shape needs f >= 0 (negative at
+ *                        x = X1, X2, ...)"
+ *   TS_ERR_SIDE         "P is not above the lower line y = 2x + 1; the data are on or
+ *                        below it at x = X1, ..." (or below / upper / above)
+ *   TS_ERR_LINES        "at point I (x = X) the lower line L (value A) is not below the
+ *                        upper line U (value B)"
+ *   TS_ERR_NONMONOTONE  "P: the data change direction here; the monotone shape needs
+ *                        monotone data"
+ *   TS_ERR_ZERO_SLOPE   "P touches the boundary and the user slope D there points out of
+ *                        the region"
+ *   TS_ERR_ALPHA, _BETA, _MARGIN  "interval I [X0, X1]: alpha = A must be finite and > 0"
+ *                        (beta: ">= 0, and alpha + beta > 0"; the margin likewise)
+ *   TS_ERR_LENGTH       "alphas has K values, but the data have N intervals (one value
+ *                        per interval is needed)" (betas, margins; user slopes: points)
+ *   TS_ERR_GEOMETRIC    "interval I [X0, X1]: alpha + beta = A is below the geometric-form
+ *                        bound 0.3472; raise alpha or beta"
+ *   TS_ERR_INFEASIBLE   "interval I [X0, X1]: no beta >= 0 keeps the spline inside the
+ *                        region on this interval"
+ *   TS_ERR_CONTROL_OVERFLOW "interval I [X0, X1]: alpha + beta = A is too small for the
+ *                        slopes: the control values overflow"
+ *   TS_ERR_DOMAIN       "query I (x = X) lies outside [X0, XN]" / "query I is NaN" /
+ *                        "query I (x = inf) is infinite"
+ *   other statuses      "P: TEXT", "interval I [X0, X1]: TEXT", "query I: TEXT" or
+ *                        "TEXT", TEXT = ts_strerror(status)
+ * The lists of other failing points name at most 12 x values, then ", ...".
+ * Surfaces (ctx->surface_options or ctx->y given): a node is "node (I, J) (x = X,
+ * y = Y, z = Z)", a patch "patch (I, J) [X0, X1] x [Y0, Y1]"; curves
+ * (ctx->curve_options or ctx->points given): "point I (C1, C2[, C3])",
+ * "segment I".  The wording names the library's options (alpha, beta, the
+ * positive shape, ...), never a front-end's flags.
+ */
+TS_API size_t ts_error_message(const ts_error *err, const ts_error_context *ctx, char *buf,
+                               size_t len);
 
 #ifdef __cplusplus
 }

@@ -38,6 +38,7 @@ static void curve_options_defaults(ts_curve_options *opt)
     if (!opt)
         return;
     memset(opt, 0, sizeof *opt);
+    opt->struct_size = sizeof *opt;
     opt->param = TS_PARAM_CENTRIPETAL;
     opt->closed = 0;
     opt->slopes = TS_SLOPES_ARITHMETIC;
@@ -497,6 +498,8 @@ ts_status ts_curve_new(const double *points, size_t n_points, size_t dim,
         *out = NULL;
     if (!points || !out)
         return fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    if (opt && opt->struct_size != sizeof *opt)
+        return fail(err, TS_ERR_VERSION, TS_NO_INDEX, TS_WHERE_NONE);
     ts_curve_options defaults;
     if (!opt) {
         curve_options_defaults(&defaults);
@@ -765,6 +768,7 @@ static void reports_clear(const ts_curve *c, ts_interval_report *reports)
 {
     for (size_t j = 0; c && reports && j < c->n * c->dim; j++) {
         ts_interval_report *r = &reports[j];
+        r->struct_size = sizeof *r;
         r->x0 = r->x1 = r->alpha = r->beta = r->a = (double)NAN;
         r->B[0] = r->B[1] = r->B[2] = r->B[3] = (double)NAN;
         r->term = TS_TERM_USER;
@@ -790,6 +794,7 @@ static ts_status certify_with(const ts_curve *c, const struct curve_box *bx,
             if (!reports)
                 continue;
             ts_interval_report *r = &reports[i * c->dim + k];
+            r->struct_size = sizeof *r;
             r->x0 = c->t[i];
             r->x1 = c->t[i + 1];
             r->alpha = c->alpha[i];
@@ -815,6 +820,8 @@ static ts_status certify_with(const ts_curve *c, const struct curve_box *bx,
 ts_status ts_curve_certify(const ts_curve *c, ts_interval_report *reports, ts_error *err)
 {
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (reports && reports[0].struct_size != sizeof *reports)
+        return fail(err, TS_ERR_VERSION, TS_NO_INDEX, TS_WHERE_NONE);
     if (!c)
         return fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
     return certify_with(c, &c->box, reports, err);
@@ -825,6 +832,8 @@ ts_status ts_curve_certify_box(const ts_curve *c, const int has_lo[3], const dou
                                ts_interval_report *reports, ts_error *err)
 {
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (reports && reports[0].struct_size != sizeof *reports)
+        return fail(err, TS_ERR_VERSION, TS_NO_INDEX, TS_WHERE_NONE);
     reports_clear(c, reports); /* out-params reset first */
     if (!c || (has_lo && !lo) || (has_hi && !hi))
         return fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);

@@ -6,6 +6,8 @@
  * the library; scripts/check_layers.py checks both):
  *   L0  status.c    status strings, the version, the error setter, allocation
  *       checks.c    input checks shared by the constructors
+ *       vocab.c     canonical names of the enum values and statuses
+ *       numfmt.c    shortest round-trip decimal form of a double
  *       basis.c     the basis, its derivatives and integrals, interval search
  *       trigmin.c   exact minimum of a trigonometric polynomial minus a line
  *   L1  slopes.c    slope estimates
@@ -22,7 +24,8 @@
  *       surface_cert.c  surfaces: the certificate of one patch (subdivision)
  *   L4  spline.c, curve.c, eval.c, report.c, accuracy.c: the public API
  *       find.c, solve.c: interval search, the roots of S − y
- *       surface.c, surface_eval.c: the public surface API */
+ *       surface.c, surface_eval.c: the public surface API
+ *   L5  errmsg.c    the full sentence of an error (ts_error_message) */
 #ifndef TS_SRC_INTERNAL_H
 #define TS_SRC_INTERNAL_H
 
@@ -115,8 +118,21 @@ struct ts_surface {
 
 /* ==== L0 ============================================================ */
 
+/* ---- vocab.c --------------------------------------------------------- */
+/* ts_vocab_name, ts_status_name for the library's own files. */
+const char *ts__vocab_name(ts_vocab vocab, int value);
+const char *ts__status_name(ts_status status);
+
+/* ---- numfmt.c -------------------------------------------------------- */
+/* Room for any double in ts__format_double's form ("-1.2345678901234567e-308"). */
+#define TS__NUM_SIZE 32
+/* v in the shortest %g form that strtod reads back to v; "nan", "inf", "-inf". */
+void ts__format_double(double v, char buf[TS__NUM_SIZE]);
+
 /* ---- status.c -------------------------------------------------------- */
 void ts__error_set(ts_error *err, ts_status st, size_t index, ts_where where);
+/* ts_strerror for the library's own files. */
+const char *ts__strerror(ts_status status);
 /* ts__error_set, then return st. */
 ts_status ts__fail(ts_error *err, ts_status st, size_t index, ts_where where);
 /* Every allocation of the library goes through these.  With TS_TEST_HOOKS
@@ -817,6 +833,10 @@ ts_status ts__certify_range(ts_spline *sp, const ts_options *opt, size_t i0, siz
 void ts__certify_done(ts_spline *sp, const ts_options *opt);
 
 /* ==== L4 ============================================================ */
+
+/* ---- spline.c --------------------------------------------------------- */
+/* The defaults of ts_options (ts_options_init), for the library's own files. */
+void ts__options_defaults(ts_options *opt);
 
 /* ---- eval.c ----------------------------------------------------------- */
 /* Threads of ts_eval_batch_mt: asked, or if 0 the online processors (1 if

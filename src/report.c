@@ -24,6 +24,7 @@ static void report_base(const ts_spline *s, size_t i, ts_interval_report *rep)
 
 static void report_clear(ts_interval_report *rep)
 {
+    rep->struct_size = sizeof *rep;
     rep->x0 = rep->x1 = rep->alpha = rep->beta = rep->a = (double)NAN;
     rep->B[0] = rep->B[1] = rep->B[2] = rep->B[3] = (double)NAN;
     rep->term = TS_TERM_USER;
@@ -34,8 +35,16 @@ static void report_clear(ts_interval_report *rep)
     rep->excursion_above = rep->excursion_below = (double)NAN;
 }
 
+void ts_interval_report_init(ts_interval_report *reports, size_t n)
+{
+    for (size_t i = 0; reports && i < n; i++)
+        report_clear(&reports[i]);
+}
+
 ts_status ts_spline_report(const ts_spline *s, size_t i, ts_interval_report *rep)
 {
+    if (rep && rep->struct_size != sizeof *rep)
+        return TS_ERR_VERSION; /* a struct of another layout: not written */
     if (rep)
         report_clear(rep);
     if (!s || !rep)
@@ -80,6 +89,8 @@ ts_status ts_certify(const ts_spline *s, const ts_line *lower, const ts_line *up
                      ts_interval_report *reports, ts_error *err)
 {
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (reports && reports[0].struct_size != sizeof *reports)
+        return ts__fail(err, TS_ERR_VERSION, TS_NO_INDEX, TS_WHERE_NONE);
     for (size_t i = 0; s && reports && i < s->n; i++) /* out-params reset first */
         report_clear(&reports[i]);
     if (!s || (!lower && !upper)) {
@@ -96,6 +107,7 @@ ts_status ts_certify(const ts_spline *s, const ts_line *lower, const ts_line *up
         double B[4], X[4], guard;
         int geo, ok = 1; /* no line given: certified */
         ts_interval_report r;
+        r.struct_size = sizeof r;
         report_base(s, i, &r);
         ts__controls_of(s, i, B, X, &geo);
         /* the control gaps' proof (hull_inside) also counts */

@@ -8,11 +8,12 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void options_defaults(ts_options *opt)
+void ts__options_defaults(ts_options *opt)
 {
     if (!opt)
         return;
     memset(opt, 0, sizeof *opt);
+    opt->struct_size = sizeof *opt;
     opt->form = TS_FORM_PAPER;
     opt->slopes = TS_SLOPES_ARITHMETIC;
     opt->alpha = 1.0;
@@ -257,9 +258,11 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
         *out = NULL;
     if (!x || !f || !out)
         return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    if (opt && opt->struct_size != sizeof *opt)
+        return ts__fail(err, TS_ERR_VERSION, TS_NO_INDEX, TS_WHERE_NONE);
     ts_options defaults;
     if (!opt) {
-        options_defaults(&defaults);
+        ts__options_defaults(&defaults);
         opt = &defaults;
     }
     if (n_points < 2)
@@ -375,7 +378,7 @@ ts_status ts_spline_control(const ts_spline *s, size_t i, double B[4], double X[
 
 void ts_options_init(ts_options *opt)
 {
-    options_defaults(opt);
+    ts__options_defaults(opt);
 }
 
 void ts_spline_free(ts_spline *s)

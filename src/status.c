@@ -3,10 +3,6 @@
 #define _DEFAULT_SOURCE /* MADV_HUGEPAGE */
 #include "internal.h"
 
-#define TS_STR_(x) #x
-#define TS_STR(x) TS_STR_(x)
-#define TS_VERSION_STRING TS_STR(TS_VERSION_MAJOR) "." TS_STR(TS_VERSION_MINOR) "." TS_STR(TS_VERSION_PATCH)
-
 #include <stdint.h>
 #include <stdlib.h>
 #if defined(__linux__)
@@ -49,9 +45,15 @@ static const char *const ts_messages[TS_STATUS_COUNT_] = {
     [TS_ERR_PRECISION] = "cannot be certified in double precision: gap below the rounding bound",
     [TS_ERR_UNPROVEN] = "no certified beta found, and no proof that none exists (C1 search gave up)",
     [TS_ERR_WIDTH] = "an interval width overflows, or underflows below the smallest normal double",
+    [TS_ERR_VERSION] = "a struct's struct_size does not match this library (use its *_init)",
 };
 
 const char *ts_strerror(ts_status status)
+{
+    return ts__strerror(status);
+}
+
+const char *ts__strerror(ts_status status)
 {
     /* every status has its message (tests/unit/test_cover_api.c checks) */
     if ((unsigned)status < (unsigned)TS_STATUS_COUNT_)

@@ -11,6 +11,7 @@
 static void defaults(ts_surface_options *opt)
 {
     memset(opt, 0, sizeof *opt);
+    opt->struct_size = sizeof *opt;
     opt->form = TS_FORM_PAPER;
     opt->slopes = TS_SLOPES_ARITHMETIC;
     opt->alpha = 1.0;
@@ -349,6 +350,8 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
         *out = NULL;
     if (!x || !y || !z || !out)
         return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    if (opt && opt->struct_size != sizeof *opt)
+        return ts__fail(err, TS_ERR_VERSION, TS_NO_INDEX, TS_WHERE_NONE);
     if (nx_points < 2 || ny_points < 2)
         return ts__fail(err, TS_ERR_TOO_FEW, TS_NO_INDEX, TS_WHERE_NONE);
     ts_surface_options def;
@@ -494,6 +497,7 @@ static void report_patch(const ts_surface *s, size_t i, size_t j, const ts_plane
 static void report_reset(ts_patch_report *rep)
 {
     memset(rep, 0, sizeof *rep);
+    rep->struct_size = sizeof *rep;
     rep->x0 = rep->x1 = rep->y0 = rep->y1 = rep->ax = rep->ay = (double)NAN;
     for (int k = 0; k < 16; k++)
         rep->B[k] = (double)NAN;
@@ -501,10 +505,18 @@ static void report_reset(ts_patch_report *rep)
     rep->proven_upper = rep->sampled_upper = rep->at_upper[0] = rep->at_upper[1] = (double)NAN;
 }
 
+void ts_patch_report_init(ts_patch_report *reports, size_t n)
+{
+    for (size_t c = 0; reports && c < n; c++)
+        report_reset(&reports[c]);
+}
+
 ts_status ts_surface_report(const ts_surface *s, size_t i, size_t j, ts_patch_report *rep)
 {
     if (!rep)
         return TS_ERR_NULL;
+    if (rep->struct_size != sizeof *rep)
+        return TS_ERR_VERSION; /* a struct of another layout: not written */
     report_reset(rep);
     if (!s)
         return TS_ERR_NULL;
@@ -519,6 +531,8 @@ ts_status ts_surface_certify(const ts_surface *s, const ts_plane *lower, const t
                              ts_patch_report *reports, ts_error *err)
 {
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (reports && reports[0].struct_size != sizeof *reports)
+        return ts__fail(err, TS_ERR_VERSION, TS_NO_INDEX, TS_WHERE_NONE);
     if (!s)
         return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
     size_t np = s->nx * s->ny;
@@ -532,6 +546,7 @@ ts_status ts_surface_certify(const ts_surface *s, const ts_plane *lower, const t
     ts_status st = TS_OK;
     for (size_t c = 0; c < np; c++) {
         ts_patch_report r;
+        r.struct_size = sizeof r;
         report_patch(s, c % s->nx, c / s->nx, lower, upper, &r);
         if (reports)
             reports[c] = r;

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Runs every test program of each build directory given (BUILD/tests/test_*:
 # the programs of tests/api/, tests/unit/, tests/tools/ all land there), the
-# valgrind leak checks, the script tests (tests/test_*.py and
-# tests/tools/test_*.py) and the Python package's pytest run
-# (bindings/python/tests/run.sh) against the first; prints each program's line and,
+# valgrind leak checks, the script tests (scripts/check_layers.py,
+# scripts/check_abi.py, tests/test_*.py and tests/tools/test_*.py) and the Python package's pytest run
+# (bindings/python/tests/run.sh) and the version check (tests/check_version.py)
+# against the first; prints each program's line and,
 # last, the sum as "total: N passed, M failed".  Exit status 0 only if nothing
 # failed.
 set -u
@@ -48,6 +49,8 @@ if [ -n "$first" ] && command -v valgrind >/dev/null 2>&1; then
 fi
 if [ -n "$first" ]; then
     run_one "script/check_layers.py" python3 "$here/../scripts/check_layers.py" "$here/.."
+    # exported symbols, struct layouts and enum values against abi/trigspline.abi
+    run_one "script/check_abi.py" python3 "$here/../scripts/check_abi.py" "$first"
     for py in "$here"/test_*.py "$here"/tools/test_*.py; do
         [ -f "$py" ] || continue
         run_one "script/$(basename "$py")" python3 "$py" "$first"
@@ -56,6 +59,8 @@ if [ -n "$first" ]; then
     if [ -x "$here/../bindings/python/tests/run.sh" ]; then
         run_one "pytest/bindings/python" "$here/../bindings/python/tests/run.sh" "$first"
     fi
+    # Every stated version against CMakeLists.txt (after pytest: its venv has the package)
+    run_one "script/check_version.py" python3 "$here/check_version.py" "$first"
 fi
 echo "total: $pass passed, $fail failed"
 exit $status

@@ -30,6 +30,20 @@ def read(path):
 VERSION = re.search(r"project\(trigspline\s+VERSION\s+([0-9.]+)",
                     read(os.path.join(ROOT, "CMakeLists.txt"))).group(1)
 
+# trigspline_version.h (included by trigspline.h), written from the template
+# CMake's configure_file fills (cmake/trigspline_version.h.in) with VERSION:
+# the same header as a CMake build's.  BuildExt puts it in build_temp/include.
+VERSION_TEMPLATE = os.path.join(ROOT, "cmake", "trigspline_version.h.in")
+
+
+def version_header():
+    text = read(VERSION_TEMPLATE)
+    for part, value in zip(("MAJOR", "MINOR", "PATCH"), VERSION.split(".")):
+        text = text.replace("@PROJECT_VERSION_%s@" % part, value)
+    assert "@" not in text, "cmake/trigspline_version.h.in: a variable setup.py does not fill"
+    return text
+
+
 # The library's sources as listed in src/CMakeLists.txt (TS_LIBRARY_SOURCES).
 _block = re.search(r"set\(TS_LIBRARY_SOURCES(.*?)\)", read(os.path.join(SRC, "CMakeLists.txt")),
                    re.S).group(1)
@@ -62,6 +76,8 @@ def extension(name, source):
                      depends=LIB_SOURCES + [os.path.join(ROOT, "include", "trigspline.h"),
                                             os.path.join(SRC, "internal.h"),
                                             os.path.join(SRC, "CMakeLists.txt"),
+                                            os.path.join(ROOT, "CMakeLists.txt"),
+                                            VERSION_TEMPLATE,
                                             os.path.join(HERE, "setup.py")])
 
 
@@ -76,6 +92,17 @@ class BuildExt(build_ext):
     links them into every extension."""
 
     _lib_objects = None
+
+    def run(self):
+        gen = os.path.join(self.build_temp, "include")
+        path = os.path.join(gen, "trigspline_version.h")
+        text = version_header()
+        if not os.path.exists(path) or read(path) != text:
+            os.makedirs(gen, exist_ok=True)
+            with open(path, "w", encoding="utf-8") as fh:
+                fh.write(text)
+        self.include_dirs = [gen] + list(self.include_dirs or [])
+        super().run()
 
     def library_objects(self):
         if self._lib_objects is None:

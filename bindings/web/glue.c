@@ -149,7 +149,7 @@ void tsw_curve_defaults(double *out)
 
 ts_status tsw_report(const ts_spline *s, size_t i, double *row)
 {
-    ts_interval_report r;
+    ts_interval_report r = TS_INTERVAL_REPORT_INIT;
     ts_status st = ts_spline_report(s, i, &r);
     if (st == TS_OK)
         put_row(&r, row);
@@ -167,6 +167,7 @@ ts_status tsw_certify(const ts_spline *s, int has_lower, double lm, double lc, i
         r = malloc(n * sizeof *r); /* n * sizeof: bounded by the spline's own arrays */
         if (!r)
             return TS_ERR_NOMEM;
+        ts_interval_report_init(r, n);
     }
     ts_status st = ts_certify(s, has_lower ? &lo : NULL, has_upper ? &hi : NULL, r, err);
     for (size_t i = 0; r && i < n; i++)
@@ -185,6 +186,7 @@ ts_status tsw_curve_certify(const ts_curve *c, const double *box, double *rows, 
         r = malloc(n * sizeof *r);
         if (!r)
             return TS_ERR_NOMEM;
+        ts_interval_report_init(r, n);
     }
     ts_status st;
     if (box) {

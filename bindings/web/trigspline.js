@@ -18,26 +18,26 @@
 // with the index.
 
 /* global WASM_BASE64 */
-const STATUS_NAMES = [
-  'TS_OK', 'TS_ERR_NULL', 'TS_ERR_NOMEM', 'TS_ERR_OVERFLOW', 'TS_ERR_TOO_FEW',
-  'TS_ERR_NONFINITE', 'TS_ERR_UNSORTED', 'TS_ERR_ALPHA', 'TS_ERR_BETA', 'TS_ERR_MARGIN',
-  'TS_ERR_LENGTH', 'TS_ERR_OPTION', 'TS_ERR_PERIODIC', 'TS_ERR_DOMAIN', 'TS_ERR_NEGATIVE',
-  'TS_ERR_SIDE', 'TS_ERR_LINES', 'TS_ERR_NONMONOTONE', 'TS_ERR_INFEASIBLE', 'TS_ERR_VIOLATED',
-  'TS_ERR_GEOMETRIC', 'TS_ERR_DIMENSION', 'TS_ERR_INDEX', 'TS_ERR_ZERO_SLOPE',
-  'TS_ERR_SLOPE_OVERFLOW', 'TS_ERR_TOO_LARGE', 'TS_ERR_CONTROL_OVERFLOW', 'TS_ERR_WIDTH',
-  'TS_ERR_PRECISION', 'TS_ERR_UNPROVEN'];
-const WHERE = [null, 'point', 'interval', 'query'];
-// Option names, index = the C enum value (the command line's names).
-export const NAMES = {
-  form: ['paper', 'c1', 'geometric'],
-  slopes: ['arithmetic', 'geometric', 'harmonic', 'fritsch-carlson', 'akima', 'makima',
-    'user', 'periodic'],
-  shape: ['none', 'positive', 'above', 'below', 'between', 'monotone'],
-  extrapolate: ['error', 'clamp', 'extend', 'linear'],
-  term: ['user', 'margin', 'lower-left', 'lower-right', 'upper-left', 'upper-right', 'monotone',
-    'certify', 'geometric'],
-  param: ['centripetal', 'chord', 'uniform'],
-};
+// Names, index = the C enum value: the library's vocabulary (ts_vocab_name,
+// ts_status_name; the command line's names too), read when the first module
+// loads (readNames); the tables are not restated here.
+const STATUS_NAMES = [];
+const WHERE = []; // null, 'point', 'interval', 'query'
+export const NAMES = {}; // form, slopes, shape, extrapolate, term, param
+// ts_vocab (include/trigspline.h)
+const VOCAB = { status: 0, form: 1, slopes: 2, shape: 3, extrapolate: 4, param: 5, term: 7, where: 8 };
+function readNames(w, cstring) {
+  if (STATUS_NAMES.length) return;
+  const list = (v) => Array.from({ length: w.ts_vocab_count(v) }, (_, i) => cstring(w.ts_vocab_name(v, i)));
+  STATUS_NAMES.push(...list(VOCAB.status));
+  WHERE.push(null, ...list(VOCAB.where).slice(1));
+  for (const kind of ['form', 'slopes', 'shape', 'extrapolate', 'term', 'param']) {
+    NAMES[kind] = Object.freeze(list(VOCAB[kind]));
+  }
+  Object.freeze(STATUS_NAMES);
+  Object.freeze(WHERE);
+  Object.freeze(NAMES);
+}
 const ROW = 17; // doubles per report row (glue.c)
 function extrapCode(name) {
   const k = NAMES.extrapolate.indexOf(name);
@@ -112,6 +112,7 @@ class TrigSpline {
   constructor(w, memory) {
     this.w = w;
     this.memory = memory;
+    readNames(w, (p) => this.cstring(p));
     this.NAMES = NAMES;
     this.STATUS_NAMES = STATUS_NAMES;
     this.TrigSplineError = TrigSplineError;

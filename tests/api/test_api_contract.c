@@ -213,12 +213,15 @@ static void certify_out_params(void)
     ts_spline *s = NULL;
     CHECK(ts_spline_new(x, f, 3, NULL, &s, NULL) == TS_OK);
     ts_interval_report r[2];
-    memset(r, 0, sizeof r);
+    ts_interval_report_init(r, sizeof r / sizeof r[0]);
+    memset(r, 0, sizeof r); /* then reset by the call: only the guard set */
+    r[0].struct_size = sizeof r[0];
     ts_line bad = {TH_NAN, 0}, lo = {0, 0};
     ts_error e;
     CHECK(ts_certify(s, &bad, NULL, r, &e) == TS_ERR_NONFINITE && e.status == TS_ERR_NONFINITE);
     CHECK(isnan(r[0].a) && isnan(r[1].gap_lower) && r[1].certified == 0);
-    memset(r, 0, sizeof r);
+    memset(r, 0, sizeof r); /* then reset by the call: only the guard set */
+    r[0].struct_size = sizeof r[0];
     CHECK(ts_certify(s, NULL, NULL, r, &e) == TS_ERR_NULL && isnan(r[0].x0) && isnan(r[1].B[2]));
     CHECK(ts_certify(s, &lo, NULL, r, &e) == TS_OK && r[0].certified && r[1].x1 == 2);
     ts_spline_free(s);
@@ -243,7 +246,7 @@ static void certify_agrees_with_build(void)
     o.lower = (ts_line){-0x1.e27ed2dae18f6p-1, -0x1.1f4d007a1dc98p+0};
     ts_spline *s = NULL;
     CHECK(ts_spline_new(x, f, 2, &o, &s, NULL) == TS_OK && ts_spline_certified(s));
-    ts_interval_report r;
+    ts_interval_report r = TS_INTERVAL_REPORT_INIT;
     ts_status st = ts_certify(s, &o.lower, NULL, &r, NULL);
     CHECKF(st == TS_OK && r.certified, "%s", ts_strerror(st));
     /* the same spline against a line above its right end is still refused */
@@ -394,12 +397,15 @@ static void curve_params_and_reports(void)
     ts_curve_options_init(&o);
     CHECK(ts_curve_new(p, 3, 2, &o, &c, &e) == TS_OK);
     ts_interval_report r[4];
-    memset(r, 0, sizeof r);
+    ts_interval_report_init(r, sizeof r / sizeof r[0]);
+    memset(r, 0, sizeof r); /* then reset by the call: only the guard set */
+    r[0].struct_size = sizeof r[0];
     int has[3] = {1, 0, 0};
     double lo[3] = {TH_NAN, 0, 0};
     CHECK(ts_curve_certify_box(c, has, lo, NULL, NULL, r, &e) == TS_ERR_NONFINITE);
     CHECK(isnan(r[0].x0) && isnan(r[3].gap_lower) && r[2].certified == 0);
-    memset(r, 0, sizeof r);
+    memset(r, 0, sizeof r); /* then reset by the call: only the guard set */
+    r[0].struct_size = sizeof r[0];
     CHECK(ts_curve_certify_box(c, has, NULL, NULL, NULL, r, &e) == TS_ERR_NULL && isnan(r[1].a));
     lo[0] = -1;
     CHECK(ts_curve_certify_box(c, has, lo, NULL, NULL, r, &e) == TS_OK && r[0].certified &&

@@ -518,7 +518,21 @@ static void test_defaults(void)
     }
     ts_spline_free(a);
     ts_spline_free(b);
-    CHECK(strcmp(ts_version(), "0.1.0") == 0);
+    /* the library linked in is the header's version (generated from
+     * CMakeLists.txt; tests/check_version.py compares that with the rest) */
+    CHECK(strcmp(ts_version(), TS_VERSION_STRING) == 0);
+    char v[64];
+    snprintf(v, sizeof v, "%d.%d.%d", TS_VERSION_MAJOR, TS_VERSION_MINOR, TS_VERSION_PATCH);
+    CHECK(strcmp(ts_version(), v) == 0);
+    CHECK(TS_VERSION_NUM == TS_VERSION_MAJOR * 65536 + TS_VERSION_MINOR * 256 + TS_VERSION_PATCH);
+    CHECK(TS_VERSION_AT_LEAST(TS_VERSION_MAJOR, TS_VERSION_MINOR, TS_VERSION_PATCH));
+    CHECK(TS_VERSION_AT_LEAST(0, 0, 0) && TS_VERSION_AT_LEAST(0, 1, 255));
+    CHECK(!TS_VERSION_AT_LEAST(TS_VERSION_MAJOR, TS_VERSION_MINOR, TS_VERSION_PATCH + 1));
+    CHECK(!TS_VERSION_AT_LEAST(TS_VERSION_MAJOR, TS_VERSION_MINOR + 1, 0));
+    CHECK(!TS_VERSION_AT_LEAST(TS_VERSION_MAJOR + 1, 0, 0));
+#if !TS_VERSION_AT_LEAST(0, 2, 0) || TS_VERSION_NUM < 0x000200
+    CHECK(!"TS_VERSION_AT_LEAST and TS_VERSION_NUM work in #if");
+#endif
 }
 
 /* A constant is reproduced exactly (ΣA = 1, all B equal), whatever a_i. */

@@ -763,6 +763,7 @@ static void test_box(void)
                         ctrl_out++;
         }
         ts_interval_report rep_[MAXP * 3];
+        ts_interval_report_init(rep_, MAXP * 3);
         if (ts_curve_certify(c, rep_, NULL) != TS_OK)
             cert_bad++;
         for (size_t r = 0; r < n * dim; r++)
@@ -816,6 +817,7 @@ static void test_box(void)
         ts_curve_free(c1);
         int hl[3] = {1, 1, 1};
         ts_interval_report nr[MAXP * 3];
+        ts_interval_report_init(nr, MAXP * 3);
         int flagged = ts_curve_certify_box(c, hl, lo, hl, hi, nr, NULL) == TS_ERR_VIOLATED;
         /* the exact gaps against the 65 samples of each segment: sampled min >=
          * gap (the gap is the minimum), and sampled min - gap <= max|S''| dθ²/8
@@ -975,6 +977,7 @@ static void test_box_repair(void)
     if (!c)
         return;
     ts_interval_report r[6];
+    ts_interval_report_init(r, sizeof r / sizeof r[0]);
     CHECK(ts_curve_certify(c, r, NULL) == TS_OK);
     /* test-side rule: uniform knots, periodic mean d_y(P0) = (-2 + 1)/2 */
     double K = 2 / (3 * PI), rule = o.margin - 1 + K * 0.5 / 0x1p-52;

@@ -79,11 +79,12 @@ int main(void)
                         (void)ts_spline_solve(s, 0.5 * ky, r, 64, &cnt);
                     }
                     for (size_t i = 0; i < 8; i++) {
-                        ts_interval_report r;
+                        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
                         (void)ts_spline_report(s, i, &r);
                     }
                     if (shape != TS_SHAPE_NONE && shape != TS_SHAPE_MONOTONE) {
                         ts_interval_report rs[8];
+                        ts_interval_report_init(rs, sizeof rs / sizeof rs[0]);
                         (void)ts_certify(s, &o.lower, NULL, rs, NULL);
                     }
                     CHECKF(flags() == 0, "evaluation: data %d form %d shape %d slopes %d", k, form,

@@ -442,7 +442,7 @@ static void test_shapes(void)
             double a;
             ts_spline_a(s, i, &a);
             CHECK(a >= TS_GEOMETRIC_A_RAISE);
-            ts_interval_report r;
+            ts_interval_report r = TS_INTERVAL_REPORT_INIT;
             ts_spline_report(s, i, &r);
             raised += r.term == TS_TERM_GEOMETRIC;
             if (!(sample_min_gap(s, i, &zero, 1, 400) > 0))
@@ -501,6 +501,7 @@ static void test_certify(void)
         return;
     ts_line lo = {0.2, -0.5}, up = {-0.3, 4.5};
     ts_interval_report rep[5];
+    ts_interval_report_init(rep, sizeof rep / sizeof rep[0]);
     ts_error e;
     ts_status st = ts_certify(s, &lo, &up, rep, &e);
     CHECKF(st == TS_OK || st == TS_ERR_VIOLATED, "certify: %s", ts_strerror(st));

@@ -78,7 +78,7 @@ static void proved(void)
         double f[2] = {th_rng_range(&r, -3.0, 3.0), th_rng_range(&r, -3.0, 3.0)};
         double d[2] = {th_rng_range(&r, -2.0, 2.0), th_rng_range(&r, -2.0, 2.0)};
         ts_spline *s = plain(x, f, d, 2);
-        ts_interval_report rep;
+        ts_interval_report rep = TS_INTERVAL_REPORT_INIT;
         CHECK(ts_spline_report(s, 0, &rep) == TS_OK);
         int sign = it % 2 ? 1 : -1;
         double bmin = rep.B[0], bmax = rep.B[0], size = 0.0;
@@ -101,7 +101,7 @@ static void proved(void)
                         ((long double)size + fabsl(L0) + fabsl(L1 - L0) + 1.0L),
                "it %d: setup d %Lg", it, dd);
         ts_line ln = {m, c};
-        ts_interval_report cr;
+        ts_interval_report cr = TS_INTERVAL_REPORT_INIT;
         ts_status st = ts_certify(s, sign > 0 ? &ln : NULL, sign > 0 ? NULL : &ln, &cr, NULL);
         CHECKF(st == TS_OK && cr.certified, "it %d: not certified (d %Lg)", it, dd);
         long double g = exact_min(rep.B, x[0], x[1], m, c, sign);
@@ -126,7 +126,7 @@ static void bound_fails(void)
     TH_CASE("bound_fails_minimum_certifies");
     const double x[2] = {0.0, 1.0}, f[2] = {0.0, 1.0}, d[2] = {0.0, 0.0};
     ts_spline *s = plain(x, f, d, 2);
-    ts_interval_report rep;
+    ts_interval_report rep = TS_INTERVAL_REPORT_INIT;
     CHECK(ts_spline_report(s, 0, &rep) == TS_OK);
     CHECK(rep.B[0] == 0.0 && rep.B[1] == 0.0 && rep.B[2] == 1.0 && rep.B[3] == 1.0);
     ts_line ln = {1.0, -0.15};
@@ -134,7 +134,7 @@ static void bound_fails(void)
     /* by hand: s² + 0.15 − (2/π)θ, least at sin 2θ = 2/π: 0.0447 */
     CHECKF(g > 0.0447L && g < 0.0448L, "exact min %Lg", g);
     CHECK(1.0 * 1.0 - 0.15 > 0.0); /* L(1) = 0.85 > min B = 0: the bound fails */
-    ts_interval_report cr;
+    ts_interval_report cr = TS_INTERVAL_REPORT_INIT;
     CHECK(ts_certify(s, &ln, NULL, &cr, NULL) == TS_OK && cr.certified == 1);
     CHECKF(fabsl((long double)cr.gap_lower - g) < 1e-12L, "gap %g", cr.gap_lower);
     CHECK(samples_outside(s, 0.0, 1.0, 1.0, -0.15, 1) == 0);
@@ -153,7 +153,7 @@ static void near_tie(void)
     long double g = exact_min((const double[4]){1.0, 1.0, 1.0, 1.0}, 0.0, 1.0, m, c, 1);
     CHECKF(g > 0.0L && g <= tie, "exact min %Lg", g);
     ts_line ln = {m, c};
-    ts_interval_report cr;
+    ts_interval_report cr = TS_INTERVAL_REPORT_INIT;
     CHECK(ts_certify(s, &ln, NULL, &cr, NULL) == TS_ERR_VIOLATED && cr.certified == 0);
     /* the upper side, mirrored */
     ts_line up = {-m, -c + 2.0};
@@ -178,6 +178,7 @@ static void built(const double *x, const double *f, size_t np, ts_shape shape, t
         return;
     int hl = shape != TS_SHAPE_BELOW, hu = shape != TS_SHAPE_ABOVE;
     ts_interval_report *rep = malloc((np - 1) * sizeof *rep);
+    ts_interval_report_init(rep, np - 1);
     CHECK(rep && ts_certify(s, hl ? &lo : NULL, hu ? &up : NULL, rep, NULL) == TS_OK);
     long out = 0;
     for (size_t i = 0; i + 1 < np; i += (np > 40 ? 37 : 1)) {

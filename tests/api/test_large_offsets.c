@@ -33,7 +33,7 @@ static long violations(const ts_spline *s, const ts_options *o, long *samples)
     const double *x = ts_spline_x(s);
     long bad = 0;
     for (size_t i = 0; i < n; i++) {
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         ts_spline_report(s, i, &r);
         if (!r.certified)
             continue;

@@ -129,7 +129,7 @@ static void compare(const double *s, const double *f, size_t np, double x0, cons
     t->certified++;
     CHECK(ts_spline_certified(A) && ts_spline_certified(B));
     for (size_t i = 0; i + 1 < np; i++) {
-        ts_interval_report ra, rb;
+        ts_interval_report ra = TS_INTERVAL_REPORT_INIT, rb = TS_INTERVAL_REPORT_INIT;
         ts_spline_report(A, i, &ra);
         ts_spline_report(B, i, &rb);
         /* the same numbers on both sides (see the head comment): bit for bit */
@@ -292,7 +292,7 @@ static void constant_line(void)
             CHECKF(st == TS_OK && ts_spline_certified(s), "1e-14, y = 1, form %d: %s at %zu", form,
                    ts_strerror(st), e.index);
             for (size_t i = 0; s && i < 6; i++) {
-                ts_interval_report r;
+                ts_interval_report r = TS_INTERVAL_REPORT_INIT;
                 ts_spline_report(s, i, &r);
                 /* the minimum is at the near knot, g(0) = f − 1 exactly */
                 CHECKF(r.certified && r.gap_lower > 0 && fabs(r.gap_lower - delta) <= 1e-3 * delta,

@@ -43,6 +43,7 @@ static void exercise(const ts_spline *s, const ts_line *lo, const ts_line *up)
     ts_cursor cur = TS_CURSOR_INIT;
     ts_error err;
     ts_interval_report rep[NP];
+    ts_interval_report_init(rep, sizeof rep / sizeof rep[0]);
     for (int j = 0; j < NQ; j++) /* sorted, then a scrambled tail, some outside */
         xq[j] = j < NQ / 2 ? a + (b - a) * j / (NQ / 2 - 1) : a - 1 + (b - a + 2) * ((j * 7919) % NQ) / NQ;
     xq[NQ - 1] = TH_NAN;
@@ -145,6 +146,7 @@ int main(void)
         double p[3], dp[3], d2p[3], len;
         size_t rows;
         ts_interval_report rep[2 * 13];
+        ts_interval_report_init(rep, 2 * 13);
         ts_error err;
         allocations = 0;
         counting = 1;

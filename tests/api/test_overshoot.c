@@ -147,16 +147,17 @@ static void spline_cases(void)
                 if (!s)
                     continue;
                 for (size_t i = 0; i < ts_spline_intervals(s); i++) {
-                    ts_interval_report r;
+                    ts_interval_report r = TS_INTERVAL_REPORT_INIT;
                     CHECK(ts_spline_report(s, i, &r) == TS_OK);
                     check_report(&r, s, what, i);
                 }
                 /* ts_certify fills the same fields */
                 ts_interval_report reps[16];
+                ts_interval_report_init(reps, sizeof reps / sizeof reps[0]);
                 ts_line zero = {0.0, -1000.0};
                 (void)ts_certify(s, &zero, NULL, reps, NULL);
                 for (size_t i = 0; i < ts_spline_intervals(s); i++) {
-                    ts_interval_report r;
+                    ts_interval_report r = TS_INTERVAL_REPORT_INIT;
                     (void)ts_spline_report(s, i, &r);
                     CHECK(reps[i].y_min == r.y_min && reps[i].y_max == r.y_max &&
                           reps[i].excursion_above == r.excursion_above &&
@@ -179,7 +180,7 @@ static void known_overshoot(void)
         return;
     double worst = 0.0;
     for (size_t i = 0; i < ts_spline_intervals(s); i++) {
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         (void)ts_spline_report(s, i, &r);
         worst = r.excursion_above > worst ? r.excursion_above : worst;
         /* an interval whose range is its ends has excursions exactly 0 */
@@ -206,6 +207,7 @@ static void curve_cases(void)
         return;
     size_t n = ts_curve_segments(c);
     ts_interval_report reps[32];
+    ts_interval_report_init(reps, sizeof reps / sizeof reps[0]);
     int lo_on[3] = {1, 1, 0}, hi_on[3] = {1, 1, 0};
     double lo[3] = {0, 0, 0}, hi[3] = {10, 6, 0};
     (void)ts_curve_certify_box(c, lo_on, lo, hi_on, hi, reps, &e);
@@ -217,7 +219,7 @@ static void curve_cases(void)
 static void resets(void)
 {
     TH_CASE("resets");
-    ts_interval_report r;
+    ts_interval_report r = TS_INTERVAL_REPORT_INIT;
     r.y_min = r.y_max = r.at_y_min = r.at_y_max = r.excursion_above = r.excursion_below = 1.0;
     CHECK(ts_spline_report(NULL, 0, &r) == TS_ERR_NULL);
     CHECK(isnan(r.y_min) && isnan(r.y_max) && isnan(r.at_y_min) && isnan(r.at_y_max) &&
@@ -227,6 +229,7 @@ static void resets(void)
     CHECK(ts_spline_report(s, 99, &r) == TS_ERR_INDEX);
     CHECK(isnan(r.y_min) && isnan(r.excursion_above));
     ts_interval_report reps[16];
+    ts_interval_report_init(reps, sizeof reps / sizeof reps[0]);
     for (int j = 0; j < 16; j++)
         reps[j].y_max = 1.0;
     CHECK(ts_certify(s, NULL, NULL, reps, NULL) == TS_ERR_NULL);

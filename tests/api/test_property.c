@@ -448,7 +448,7 @@ static long check_spline(const ts_spline *s, const dataset *D, int scheme, int f
     ts_cursor cur = TS_CURSOR_INIT;
     CHECK(ts_eval_batch(s, 0, xq, (size_t)m, yq, &cur, NULL) == TS_OK);
     for (size_t i = 0; i < n; i++) {
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         CHECK(ts_spline_report(s, i, &r) == TS_OK);
         CHECK(r.certified == 1);
         if (r.term == TS_TERM_CERTIFY) {
@@ -822,7 +822,7 @@ static void regressions(void)
         CHECK(ts_spline_certified(s) == 1);
         CHECK(ts_certify(s, c % 2 ? NULL : &L, c % 2 ? &L : NULL, NULL, NULL) == TS_OK);
         for (size_t i = 0; i < 3; i++) {
-            ts_interval_report r;
+            ts_interval_report r = TS_INTERVAL_REPORT_INIT;
             CHECK(ts_spline_report(s, i, &r) == TS_OK);
             double gap = c % 2 ? r.gap_upper : r.gap_lower;
             /* the knot gaps (3 or 8 ulps) are exact, so the certificate
@@ -850,7 +850,7 @@ static void regressions(void)
     ts_spline *s = NULL;
     CHECK(ts_spline_new(xm, fm, 6, &o, &s, NULL) == TS_OK);
     for (size_t i = 0; s && i < 5; i++) {
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         CHECK(ts_spline_report(s, i, &r) == TS_OK);
         CHECKF(r.certified == 1 && r.term != TS_TERM_CERTIFY, "monotone interval %zu: term %d", i,
                (int)r.term);

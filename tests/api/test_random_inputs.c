@@ -416,14 +416,14 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
     }
     /* reports */
     for (size_t i = 0; i <= n; i += 1 + th_below(4)) {
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         ts_status st = ts_spline_report(s, i, &r);
         CHECK(in_set(st, SET_INDEXED) && (i < n ? st == TS_OK : st == TS_ERR_INDEX));
         if (st == TS_OK && shape != TS_SHAPE_NONE && shape != TS_SHAPE_MONOTONE)
             CHECK(r.certified == 1);
     }
     {
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         CHECK(ts_spline_report(s, n, &r) == TS_ERR_INDEX && isnan(r.a));
     }
     /* random queries: eval, batch, integral */
@@ -481,6 +481,7 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
         ts_line a = {th_chance(0.9) ? th_unit() - 0.5 : th_hostile(), th_chance(0.9) ? th_unit() * 4 - 2 : th_hostile()};
         ts_line b = {a.m, a.c + 1};
         ts_interval_report *rep = th_chance(0.5) ? malloc(n * sizeof *rep) : NULL;
+        ts_interval_report_init(rep, n);
         int which = (int)th_below(4);
         ts_status st = ts_certify(s, which & 1 ? &a : NULL, which & 2 ? &b : NULL, rep, &e);
         CHECK(in_set(st, SET_CERTIFY) && real_message(st) && err_ok(&e, st, np, n));
@@ -816,6 +817,7 @@ static void fuzz_curves(void)
             int hl[3] = {(int)th_below(2), (int)th_below(2), (int)th_below(2)}, hh[3] = {(int)th_below(2), (int)th_below(2), 1};
             double lo[3] = {th_hostile(), -1e300, -1}, hi[3] = {1e300, th_hostile(), 1};
             ts_interval_report *rep = th_chance(0.5) ? malloc(n * dim * sizeof *rep) : NULL;
+            ts_interval_report_init(rep, n * dim);
             int which = (int)th_below(4);
             ts_status sb = ts_curve_certify_box(c, which & 1 ? hl : NULL, which & 1 ? lo : NULL,
                                                 which & 2 ? hh : NULL, which & 2 ? hi : NULL,

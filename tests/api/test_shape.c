@@ -51,7 +51,7 @@ static void dense_check(const ts_spline *s, int M, const char *what)
     const double *x = ts_spline_x(s), *f = ts_spline_f(s);
     CHECKF(ts_spline_certified(s) == 1, "%s: not certified", what);
     for (size_t i = 0; i < n; i++) {
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         CHECK(ts_spline_report(s, i, &r) == TS_OK);
         CHECKF(r.certified == 1, "%s: interval %zu not certified", what, i);
         double y;
@@ -88,7 +88,7 @@ static void dense_lines_r(const ts_spline *s, const ts_line *lo, const ts_line *
     size_t n = ts_spline_intervals(s);
     const double *x = ts_spline_x(s);
     for (size_t i = 0; i < n; i++) {
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         if (reps)
             r = reps[i];
         else
@@ -171,7 +171,7 @@ static void check_rule(const ts_spline *s, const ts_line *lo, const ts_line *up,
     const double *x = ts_spline_x(s), *f = ts_spline_f(s), *d = ts_spline_slopes(s);
     const double *al = ts_spline_alpha(s), *be = ts_spline_beta(s);
     for (size_t i = 0; i < n; i++) {
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         ts_spline_report(s, i, &r);
         if (r.term == TS_TERM_CERTIFY)
             continue;
@@ -325,6 +325,7 @@ static void test_unconstrained_figures(void)
         if (!s)
             continue;
         ts_interval_report r[8];
+        ts_interval_report_init(r, sizeof r / sizeof r[0]);
         st = ts_certify(s, &zero, NULL, r, &e);
         CHECKF(st == c[k].want, "a=%g: status %d", c[k].a, st);
         double mn = TH_INF;
@@ -365,6 +366,7 @@ static void test_theorem4_signs(void)
     CHECK(st == TS_OK);
     if (s) {
         ts_interval_report r[4];
+        ts_interval_report_init(r, sizeof r / sizeof r[0]);
         st = ts_certify(s, NULL, &up, r, &e);
         CHECK(st == TS_ERR_VIOLATED && e.index == 3 && e.where == TS_WHERE_INTERVAL);
         CHECKF(r[3].gap_upper < -145.0 && r[3].gap_upper > -146.0, "printed: %.6g", r[3].gap_upper);
@@ -383,6 +385,7 @@ static void test_theorem4_signs(void)
         if (!s)
             continue;
         ts_interval_report r[4];
+        ts_interval_report_init(r, sizeof r / sizeof r[0]);
         CHECK(ts_certify(s, NULL, &up, r, &e) == TS_OK);
         double mn = TH_INF;
         for (int i = 0; i < 4; i++)
@@ -531,7 +534,7 @@ static void test_bad_data(void)
         CHECK(st == TS_OK);
         if (s) {
             const double *b = ts_spline_beta(s);
-            ts_interval_report r;
+            ts_interval_report r = TS_INTERVAL_REPORT_INIT;
             ts_spline_report(s, 3, &r);
             /* increasing positive data, slopes 1: both terms <= 0, beta = t */
             CHECK(b[0] == 0.01 && b[3] == 0.5 && r.term == TS_TERM_MARGIN);
@@ -588,6 +591,7 @@ static void test_bad_data(void)
                     ts_spline_new(x4, f, 4, &p, &s, NULL);
                     ts_error e;
                     ts_interval_report r[3];
+                    ts_interval_report_init(r, sizeof r / sizeof r[0]);
                     if (s && ts_certify(s, &o.lower, NULL, r, &e) == TS_OK)
                         any = 1;
                     if (s && r[0].certified)
@@ -645,7 +649,7 @@ static void test_repair(void)
                     continue;
                 int repaired = 0;
                 for (size_t i = 0; i < 3; i++) {
-                    ts_interval_report r;
+                    ts_interval_report r = TS_INTERVAL_REPORT_INIT;
                     ts_spline_report(s, i, &r);
                     repaired += r.term == TS_TERM_CERTIFY;
                     CHECK(r.beta >= 0 && r.a == r.alpha + r.beta);
@@ -706,7 +710,7 @@ static void test_zeros(void)
             dense_lines(s, &zero, NULL, 2000, what);
             /* intervals with a zero end: certificate exactly 0 at that end
              * (S = 0 there, S >= 0 proven by the control values) */
-            ts_interval_report r;
+            ts_interval_report r = TS_INTERVAL_REPORT_INIT;
             ts_spline_report(s, 0, &r);
             CHECK(r.gap_lower == 0 && r.certified);
             ts_spline_report(s, 2, &r);
@@ -786,7 +790,7 @@ static void monotone_dense(const ts_spline *s, int dir, int M, const char *what)
             prev = y;
         }
         CHECKF(bad == 0, "%s: interval %zu: %d samples out of order", what, i, bad);
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         ts_spline_report(s, i, &r);
         CHECK(r.certified && !r.has_lower && !r.has_upper && isnan(r.gap_lower));
     }
@@ -815,7 +819,7 @@ static void test_monotone(void)
                 allpos = allpos && d[i] >= 0;
             CHECK(allpos && d[0] == 0 && d[1] == 0 && d[4] == 0 && d[5] == 0);
             for (size_t i = 0; i < 8; i++) {
-                ts_interval_report r;
+                ts_interval_report r = TS_INTERVAL_REPORT_INIT;
                 ts_spline_report(s, i, &r);
                 term_mono += r.term == TS_TERM_MONOTONE;
                 /* rule: a >= 2(d_i + d_{i+1}) / (3π Δ_i) + t where Δ_i != 0 */
@@ -891,7 +895,7 @@ static void test_certify_off(void)
         if (s0 && s1) {
             CHECK(ts_spline_certified(s0) == 1);
             for (size_t i = 0; i + 1 < np; i++) {
-                ts_interval_report r0, r1;
+                ts_interval_report r0 = TS_INTERVAL_REPORT_INIT, r1 = TS_INTERVAL_REPORT_INIT;
                 ts_spline_report(s0, i, &r0);
                 ts_spline_report(s1, i, &r1);
                 CHECK(r0.beta == r1.beta && r0.certified == 1);
@@ -979,7 +983,7 @@ static void touch_one(const double *x, const double *f, size_t np, const ts_opti
         double sc = 0;
         for (int l = 0; l < 4; l++)
             sc = fabs(B[l]) > sc ? fabs(B[l]) : sc;
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         CHECK(ts_spline_report(s, i, &r) == TS_OK);
         CHECKF(r.certified == 1, "%s: interval %zu not certified", what, i);
         for (int side = 0; side < 2; side++) {
@@ -1010,6 +1014,7 @@ static void touch_one(const double *x, const double *f, size_t np, const ts_opti
         }
     }
     ts_interval_report reps[16];
+    ts_interval_report_init(reps, sizeof reps / sizeof reps[0]);
     CHECKF(ts_certify(s, lower ? &o->lower : NULL, upper ? &o->upper : NULL, reps, NULL) == TS_OK,
            "%s: ts_certify", what);
     ts_spline_free(s);

@@ -252,7 +252,7 @@ static void check_surface(const ts_surface *s, const grid *g, const bounds *bd, 
     /* certificates of a few patches against the independent minimum */
     for (int t = 0; t < want_certs && (bd->lo || bd->hi); t++) {
         size_t i = (size_t)(urand() * (double)nx), j = (size_t)(urand() * (double)ny);
-        ts_patch_report r;
+        ts_patch_report r = TS_PATCH_REPORT_INIT;
         CHECK(ts_surface_report(s, i, j, &r) == TS_OK);
         CHECK(r.certified == 1);
         for (int side = 0; side < 2; side++) {
@@ -385,7 +385,7 @@ static void test_property(void)
                                 mn = fmin(mn, v);
                             }
                         none_neg += mn < 0;
-                        ts_patch_report r;
+                        ts_patch_report r = TS_PATCH_REPORT_INIT;
                         ts_surface_report(s, 0, 0, &r);
                         CHECK(r.certified == 0 && r.has_lower == 0 && isnan(r.proven_lower));
                         ts_surface_free(s);
@@ -751,7 +751,8 @@ static void test_errors(void)
     CHECK(ts_surface_control(s, 2, 0, B, X, Y) == TS_ERR_INDEX);
     CHECK(ts_surface_control(s, 0, 2, B, X, Y) == TS_ERR_INDEX);
     CHECK(ts_surface_control(s, 1, 1, B, NULL, NULL) == TS_OK && B[0] == 0.0 && B[15] == 9);
-    ts_patch_report r, rs[4];
+    ts_patch_report r = TS_PATCH_REPORT_INIT, rs[4];
+    ts_patch_report_init(rs, sizeof rs / sizeof rs[0]);
     CHECK(ts_surface_report(s, 0, 0, NULL) == TS_ERR_NULL);
     CHECK(ts_surface_report(NULL, 0, 0, &r) == TS_ERR_NULL && isnan(r.proven_lower));
     CHECK(ts_surface_report(s, 2, 0, &r) == TS_ERR_INDEX);
@@ -793,6 +794,7 @@ static void test_errors(void)
         CHECK(ts_surface_new(x, 3, y, 3, zs, &oo, &t, &e) == TS_OK);
         ts_plane below = {0, 0, -1e-323};
         ts_patch_report rr[4];
+        ts_patch_report_init(rr, sizeof rr / sizeof rr[0]);
         ts_surface_certify(t, &below, NULL, rr, &e);
         CHECK(rr[0].proven_lower <= rr[0].sampled_lower && isfinite(rr[0].proven_lower));
         ts_surface_free(t);
@@ -866,6 +868,7 @@ static void test_sloped_certify(void)
          * against dense samples whether certify's verdict is consistent */
         ts_plane pl = {0.3, -0.2, -3.0};
         ts_patch_report rs[20];
+        ts_patch_report_init(rs, sizeof rs / sizeof rs[0]);
         ts_status st = ts_surface_certify(s, &pl, NULL, rs, NULL);
         int ok_all = 1;
         for (int c = 0; c < 20; c++) {
@@ -998,6 +1001,7 @@ static void test_fenv(void)
             ts_surface_eval_batch(s, xq, yq, 50, out, out + 50, out + 100, NULL);
             ts_surface_integral(s, g.x[0], g.x[6], g.y[1], g.y[4], &I);
             ts_patch_report r[30];
+            ts_patch_report_init(r, sizeof r / sizeof r[0]);
             ts_plane pl = {0.1, -0.1, -20.0};
             ts_surface_certify(s, &pl, NULL, r, NULL);
             ts_surface_free(s);

@@ -161,6 +161,7 @@ static ts_status run(const scase *sc, const double *dx, const double *dy, double
         return st;
     if (sc->certify_only) {
         ts_patch_report rep[NPATCH];
+        ts_patch_report_init(rep, sizeof rep / sizeof rep[0]);
         st = ts_surface_certify(s, lo ? &gl : NULL, up ? &gu : NULL, rep, &e);
         for (int c = 0; c < NPATCH; c++)
             cert[c] = rep[c].certified;

@@ -166,6 +166,8 @@ static void make_splines(void)
         }
         for (int j = 0; j < NQ / 2; j++)
             R->sti[j] = ts_integral(R->s, R->q[2 * j], R->q[2 * j + 1], &R->ia[j]);
+        ts_interval_report_init(R->rep, NP);
+        ts_interval_report_init(R->cert, NP);
         for (size_t i = 0; i + 1 < NP; i++)
             CHECK(ts_spline_report(R->s, i, &R->rep[i]) == TS_OK);
         R->stc = ts_certify(R->s, &R->lo, &R->up, R->cert, NULL);
@@ -249,7 +251,8 @@ static void *worker(void *arg)
     static int orders[NTH][NQ]; /* each thread writes only its own row */
     int *order = orders[id];
     double yb[NQ];
-    ts_interval_report rep, cert[NP];
+    ts_interval_report rep = TS_INTERVAL_REPORT_INIT, cert[NP];
+    ts_interval_report_init(cert, sizeof cert / sizeof cert[0]);
     pthread_barrier_wait(&barrier);
     for (int round = 0; round < ROUNDS; round++) {
         for (int k = 0; k < NSPL; k++) {

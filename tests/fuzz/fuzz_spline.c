@@ -80,7 +80,7 @@ static void check_spline(const ts_spline *s, const ts_options *o)
                    "batch %.17g vs scalar %.17g at x = %.17g", yb[j], y, q[j]);
         if (!certified)
             continue;
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         ts_spline_report(s, i, &r);
         if (!r.certified)
             continue;
@@ -108,6 +108,7 @@ static void check_spline(const ts_spline *s, const ts_options *o)
     FUZZ_CHECK(ts_integral(s, q[m / 3], q[m / 2], &I) == TS_OK && !isnan(I), "integral %g", I);
     if (shape == TS_SHAPE_ABOVE || shape == TS_SHAPE_BELOW || shape == TS_SHAPE_BETWEEN) {
         ts_interval_report reps[NMAX];
+        ts_interval_report_init(reps, sizeof reps / sizeof reps[0]);
         const ts_line *lo = shape != TS_SHAPE_BELOW ? &o->lower : NULL;
         const ts_line *hi = shape != TS_SHAPE_ABOVE ? &o->upper : NULL;
         st = ts_certify(s, lo, hi, reps, &e);

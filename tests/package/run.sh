@@ -5,7 +5,9 @@
 #  (b) the external program tests/package/app.c is built and run
 #        1. with find_package(trigspline) (CMAKE_PREFIX_PATH = TMP), linking
 #           trigspline::trigspline (shared) and trigspline::trigspline_static;
-#           a request for major version 1 must fail (SameMajorVersion);
+#           a request for major version 1 must fail (SameMajorVersion), and
+#           before 1.0 one for the previous minor (SameMinorVersion); the
+#           soname is libtrigspline.so.0.MINOR before 1.0, .so.MAJOR after;
 #        2. with `pkg-config --cflags --libs trigspline` (shared; run with
 #           LD_LIBRARY_PATH);
 #        3. with `pkg-config --static --cflags --libs trigspline` and -static
@@ -132,7 +134,7 @@ if "$cmake" --install "$build" --prefix "$prefix" >"$log" 2>&1; then
 else
     cat "$log"; bad "cmake --install --prefix"; finish
 fi
-for f in "$includedir/trigspline.h" "$libdir/libtrigspline.a" "$libdir/libtrigspline.so" \
+for f in "$includedir/trigspline.h" "$includedir/trigspline_version.h" "$libdir/libtrigspline.a" "$libdir/libtrigspline.so" \
          "$libdir/cmake/trigspline/trigsplineConfig.cmake" \
          "$libdir/cmake/trigspline/trigsplineConfigVersion.cmake" \
          "$libdir/cmake/trigspline/trigsplineTargets.cmake" \
@@ -148,16 +150,17 @@ fi
 
 # ---- (b1) find_package ----------------------------------------------------
 gen=(-G "$generator" -DCMAKE_C_COMPILER="$cc" -DCMAKE_BUILD_TYPE=Release)
+want_minor=${version%.*}   # X.Y of X.Y.Z
 if "$cmake" -S "$here/consumer" -B "$tmp/fp" "${gen[@]}" -DTS_MODE=package \
-        -DCMAKE_PREFIX_PATH="$prefix" >"$log" 2>&1 &&
+        -DTS_WANT_VERSION="$want_minor" -DCMAKE_PREFIX_PATH="$prefix" >"$log" 2>&1 &&
    "$cmake" --build "$tmp/fp" >>"$log" 2>&1; then
-    ok "find_package(trigspline 0.1): configure and build"
+    ok "find_package(trigspline $want_minor): configure and build"
     run_app "find_package, trigspline::trigspline" "$tmp/fp/app_shared"
     run_app "find_package, trigspline::trigspline_static" "$tmp/fp/app_static"
     check "find_package: app_shared needs libtrigspline.so" needs_so "$tmp/fp/app_shared"
     check "find_package: app_static does not need libtrigspline.so" not_needs_so "$tmp/fp/app_static"
 else
-    cat "$log"; bad "find_package(trigspline 0.1): configure and build"
+    cat "$log"; bad "find_package(trigspline $want_minor): configure and build"
 fi
 if "$cmake" -S "$here/consumer" -B "$tmp/fp1" "${gen[@]}" -DTS_MODE=package \
         -DTS_WANT_VERSION=1 -DCMAKE_PREFIX_PATH="$prefix" >"$log" 2>&1; then
@@ -165,6 +168,20 @@ if "$cmake" -S "$here/consumer" -B "$tmp/fp1" "${gen[@]}" -DTS_MODE=package \
 else
     ok "find_package(trigspline 1) refuses version $version (SameMajorVersion)"
 fi
+# before 1.0 a minor release may break the API (docs/versions.md): 0.Y asks
+# for exactly that minor (SameMinorVersion), so 0.(Y-1) is refused too
+major=${version%%.*}; minor=${want_minor#*.}
+if [ "$major" = 0 ] && [ "$minor" -gt 0 ]; then
+    older="0.$((minor - 1))"
+    if "$cmake" -S "$here/consumer" -B "$tmp/fp0" "${gen[@]}" -DTS_MODE=package \
+            -DTS_WANT_VERSION="$older" -DCMAKE_PREFIX_PATH="$prefix" >"$log" 2>&1; then
+        bad "find_package(trigspline $older) accepted version $version (SameMinorVersion before 1.0)"
+    else
+        ok "find_package(trigspline $older) refuses version $version (SameMinorVersion before 1.0)"
+    fi
+fi
+if [ "$major" = 0 ]; then want_so="libtrigspline.so.$want_minor"; else want_so="libtrigspline.so.$major"; fi
+check "soname $want_so" sh -c "readelf -d '$prefix/$libdir/libtrigspline.so' | grep -q 'SONAME.*\[$want_so\]'"
 
 # ---- (b2, b3) pkg-config --------------------------------------------------
 if command -v pkg-config >/dev/null 2>&1; then

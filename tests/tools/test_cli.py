@@ -20,6 +20,7 @@ import json
 import math
 import os
 import random
+import re
 import shutil
 import stat
 import subprocess
@@ -106,7 +107,9 @@ def svg_ok(path):
 # ---------------------------------------------------------------------------
 def test_help_version():
     rc, out, err = run(["--version"])
-    check("version", rc == 0 and out.startswith("trigspline 0.1.0"), out)
+    with open(os.path.join(REPO, "CMakeLists.txt"), encoding="utf-8") as fh:
+        want = re.search(r"project\(trigspline\s+VERSION\s+([0-9.]+)", fh.read()).group(1)
+    check("version", rc == 0 and out == "trigspline %s\n" % want, out)
     rc, out, err = run(["--help"])
     check("main help", rc == 0 and "fit" in out and "certify" in out and "curve" in out
           and "Exit status" in out, out[:200])

@@ -277,6 +277,7 @@ static void test_certify_api(void)
         return;
     ts_line up = {1.0, 2.5}, lo = {0.0, -1000.0}, bad = {TH_NAN, 0.0}, bad2 = {0.0, TH_INF};
     ts_interval_report rep[4];
+    ts_interval_report_init(rep, sizeof rep / sizeof rep[0]);
     ts_status st = ts_certify(s, NULL, &up, rep, &e);
     CHECK(st == TS_ERR_VIOLATED);
     CHECK(e.status == TS_ERR_VIOLATED && e.where == TS_WHERE_INTERVAL);
@@ -308,7 +309,7 @@ static void test_certify_api(void)
     CHECK(ts_certify(s, &lo, &bad2, rep, &e) == TS_ERR_NONFINITE);
 
     /* report / certified of a TS_SHAPE_NONE spline: nothing promised */
-    ts_interval_report r;
+    ts_interval_report r = TS_INTERVAL_REPORT_INIT;
     CHECK(ts_spline_report(s, 0, &r) == TS_OK);
     CHECK(r.has_lower == 0 && r.has_upper == 0 && isnan(r.gap_lower) && isnan(r.gap_upper) &&
           r.certified == 0 && r.term == TS_TERM_USER);
@@ -378,7 +379,7 @@ static void test_geometric_gap(void)
     CHECK(ts_spline_new(X3g, F3g, 5, &o, &s, NULL) == TS_OK);
     CHECK(ts_spline_certified(s) == 1);
     for (size_t i = 0; s && i < 4; i++) {
-        ts_interval_report rep;
+        ts_interval_report rep = TS_INTERVAL_REPORT_INIT;
         ts_spline_report(s, i, &rep);
         CHECK(rep.certified && rep.gap_upper > 0);
     }

@@ -297,6 +297,7 @@ static void test_certify_both_lines(void)
         return;
     ts_line lo = {0.0, 0.5}, hi = {0.0, 10.0};
     ts_interval_report r[2];
+    ts_interval_report_init(r, sizeof r / sizeof r[0]);
     ts_error e;
     CHECK(ts_certify(s, &lo, &hi, r, &e) == TS_ERR_VIOLATED && e.index == 0);
     for (int i = 0; i < 2; i++) {
@@ -329,7 +330,7 @@ static void test_report_upper_uncertified_build(void)
         return;
     CHECK(ts_spline_certified(s) == 1);
     for (size_t i = 0; i < 3; i++) {
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         CHECK(ts_spline_report(s, i, &r) == TS_OK);
         CHECK(r.certified == 1 && r.has_upper && !r.has_lower);
         CHECK_CLOSE(r.gap_upper, 2.0, 4 * DBL_EPSILON); /* 3 - 1: a few roundings of 3 */

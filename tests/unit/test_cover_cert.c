@@ -107,7 +107,7 @@ static void huge_margin(void)
     ts_status st = ts_spline_new(x, f, 3, &o, &s, &e);
     CHECKF(st == TS_OK, "%s at %zu", ts_strerror(st), e.index);
     for (size_t i = 0; s && i < 2; i++) {
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         ts_spline_report(s, i, &r);
         CHECKF(r.certified && r.a <= 1e307, "interval %zu: a %.17g term %d", i, r.a, (int)r.term);
         if (i == 1)
@@ -216,7 +216,7 @@ static void margins_at_the_top(void)
     ts_status st = ts_spline_new(x, f, 3, &o, &s, &e);
     CHECKF(st == TS_OK, "%s at %zu", ts_strerror(st), e.index);
     for (size_t i = 0; s && i < 2; i++) {
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         ts_spline_report(s, i, &r);
         CHECKF(r.beta == 0.0 && r.a == DBL_MAX, "interval %zu: beta %g", i, r.beta);
     }

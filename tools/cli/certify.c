@@ -63,6 +63,7 @@ int cli_certify(cli_opts *o)
         return CLI_USAGE;
     }
     ts_interval_report *reps = calloc(n, sizeof *reps);
+    ts_interval_report_init(reps, n);
     cli_json j;
     cli_json_init(&j);
     tsu_plot_buf svg = TSU_PLOT_BUF_INIT, text = TSU_PLOT_BUF_INIT;

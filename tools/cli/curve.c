@@ -134,6 +134,7 @@ static int curve_certify(const ts_curve *c, cli_curve_run *cr, ts_interval_repor
     *reps = calloc(n, sizeof **reps);
     if (!*reps)
         return cli_nomem();
+    ts_interval_report_init(*reps, n);
     cr->certified = ts_curve_certify(c, *reps, &e) == TS_OK;
     for (size_t i = 0; i < n; i++) {
         const ts_interval_report *r = &(*reps)[i];

@@ -18,7 +18,7 @@ void cli_overshoot_add(cli_overshoot *w, const ts_spline *s, size_t i0, size_t i
 {
     const double *f = ts_spline_f(s);
     for (size_t i = i0; i < i1; i++) {
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         if (ts_spline_report(s, i, &r) != TS_OK)
             continue;
         for (int e = 0; e < 2; e++) {

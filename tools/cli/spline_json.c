@@ -10,7 +10,7 @@ void cli_spline_json(cli_json *j, const cli_opts *o, const ts_spline *s, ts_shap
 {
     size_t n = ts_spline_intervals(s);
     const double *x = ts_spline_x(s), *f = ts_spline_f(s), *d = ts_spline_slopes(s);
-    ts_interval_report r;
+    ts_interval_report r = TS_INTERVAL_REPORT_INIT;
     double gl = (double)INFINITY, gu = (double)INFINITY;
 
     for (size_t i = 0; i < n; i++) {

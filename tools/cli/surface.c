@@ -379,6 +379,7 @@ int cli_surface(int argc, char **argv)
             rc = cli_nomem();
             goto out;
         }
+        ts_patch_report_init(rep, np);
         double zl = (double)INFINITY, zh = -(double)INFINITY;
         for (size_t k = 0; k < g.nx * g.ny; k++)
             zl = fmin(zl, g.z[k]), zh = fmax(zh, g.z[k]);

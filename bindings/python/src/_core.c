@@ -490,7 +490,7 @@ static PyObject *spline_report(SplineHandle *self, PyObject *args)
     Py_ssize_t i;
     if (!PyArg_ParseTuple(args, "n", &i))
         return NULL;
-    ts_interval_report r;
+    ts_interval_report r = TS_INTERVAL_REPORT_INIT;
     ts_status st = i < 0 ? TS_ERR_INDEX : ts_spline_report(self->s, (size_t)i, &r);
     if (st != TS_OK)
         return raise_status(st, (size_t)i, TS_WHERE_INTERVAL);
@@ -511,6 +511,7 @@ static PyObject *spline_certify(SplineHandle *self, PyObject *args)
     ts_interval_report *reps = PyMem_Calloc(n ? n : 1, sizeof *reps);
     if (!reps)
         return PyErr_NoMemory();
+    ts_interval_report_init(reps, 1);
     ts_error err;
     ts_status st;
     Py_BEGIN_ALLOW_THREADS
@@ -865,6 +866,7 @@ static PyObject *curve_certify(CurveHandle *self, PyObject *args)
     ts_interval_report *reps = PyMem_Calloc(nr ? nr : 1, sizeof *reps);
     if (!reps)
         return PyErr_NoMemory();
+    ts_interval_report_init(reps, 1);
     ts_error err;
     ts_status st;
     Py_BEGIN_ALLOW_THREADS
@@ -1210,7 +1212,7 @@ static PyObject *surface_report(SurfaceHandle *self, PyObject *unused)
     Py_BEGIN_ALLOW_THREADS
     for (size_t j = 0; j < self->ny && st == TS_OK; j++)
         for (size_t i = 0; i < self->nx && st == TS_OK; i++) {
-            ts_patch_report r;
+            ts_patch_report r = TS_PATCH_REPORT_INIT;
             st = ts_surface_report(self->s, i, j, &r);
             report_row(&r, o + (j * self->nx + i) * SURF_REPORT_FIELDS);
         }
@@ -1237,6 +1239,7 @@ static PyObject *surface_certify(SurfaceHandle *self, PyObject *args)
     ts_patch_report *reps = PyMem_Calloc(np_ ? np_ : 1, sizeof *reps);
     if (!reps)
         return PyErr_NoMemory();
+    ts_patch_report_init(reps, 1);
     npy_intp dims[2] = {(npy_intp)np_, SURF_REPORT_FIELDS};
     PyObject *a = PyArray_SimpleNew(2, dims, NPY_DOUBLE);
     if (!a) {
@@ -1461,6 +1464,29 @@ static PyObject *surface_options_defaults(PyObject *mod, PyObject *unused)
                          o.margin);
 }
 
+/* vocab(kind) -> tuple of the canonical names of ts_vocab kind, by value
+ * (ts_vocab_count, ts_vocab_name): the package's name tables. */
+static PyObject *vocab(PyObject *mod, PyObject *arg)
+{
+    (void)mod;
+    long kind = PyLong_AsLong(arg);
+    if (kind == -1 && PyErr_Occurred())
+        return NULL;
+    if (!(kind >= 0 && kind < TS_VOCAB_COUNT_))
+        return PyErr_Format(PyExc_ValueError, "no vocabulary %ld", kind);
+    int n = ts_vocab_count((ts_vocab)kind);
+    PyObject *t = PyTuple_New(n);
+    for (int i = 0; t && i < n; i++) {
+        PyObject *name = PyUnicode_FromString(ts_vocab_name((ts_vocab)kind, i));
+        if (!name) {
+            Py_DECREF(t);
+            return NULL;
+        }
+        PyTuple_SET_ITEM(t, i, name);
+    }
+    return t;
+}
+
 /* defaults() -> {"spline": {...}, "curve": {...}, "surface": {...}}: the
  * value fields of ts_options_init, ts_curve_options_init and
  * ts_surface_options_init by field name (pointer and count fields, NULL/0
@@ -1470,16 +1496,7 @@ static PyObject *surface_options_defaults(PyObject *mod, PyObject *unused)
 static PyObject *defaults(PyObject *mod, PyObject *unused)
 {
     (void)mod, (void)unused;
-    static const char *const form[] = {"paper", "c1", "geometric"};
-    static const char *const slopes[] = {"arithmetic", "geometric",  "harmonic", "fritsch-carlson",
-                                         "akima",      "makima",     "user",     "periodic"};
-    static const char *const shape[] = {"none",  "positive", "above",
-                                        "below", "between",  "monotone"};
-    static const char *const extrap[] = {"error", "clamp", "extend", "linear"};
-    static const char *const param[] = {"centripetal", "chord", "uniform"};
-    static const char *const sshape[] = {"none", "positive", "bounds", "planes", "range"};
-#define TS_NAME(table, v)                                                                     \
-    ((unsigned)(v) < sizeof table / sizeof *table ? table[(unsigned)(v)] : "unknown")
+#define TS_NAME(vocab, v) ts_vocab_name(TS_VOCAB_##vocab, (int)(v))
     ts_options o;
     ts_curve_options c;
     ts_surface_options u;
@@ -1487,23 +1504,24 @@ static PyObject *defaults(PyObject *mod, PyObject *unused)
     ts_curve_options_init(&c);
     ts_surface_options_init(&u);
     PyObject *sp = Py_BuildValue(
-        "{s:s,s:s,s:d,s:d,s:s,s:(dd),s:(dd),s:d,s:O,s:s}", "form", TS_NAME(form, o.form),
-        "slopes", TS_NAME(slopes, o.slopes), "alpha", o.alpha, "beta", o.beta, "shape",
-        TS_NAME(shape, o.shape), "lower", o.lower.m, o.lower.c, "upper", o.upper.m, o.upper.c,
+        "{s:s,s:s,s:d,s:d,s:s,s:(dd),s:(dd),s:d,s:O,s:s}", "form", TS_NAME(FORM, o.form),
+        "slopes", TS_NAME(SLOPES, o.slopes), "alpha", o.alpha, "beta", o.beta, "shape",
+        TS_NAME(SHAPE, o.shape), "lower", o.lower.m, o.lower.c, "upper", o.upper.m, o.upper.c,
         "margin", o.margin, "certify", o.certify ? Py_True : Py_False, "extrapolate",
-        TS_NAME(extrap, o.extrapolate));
+        TS_NAME(EXTRAP, o.extrapolate));
     PyObject *cu = Py_BuildValue(
         "{s:s,s:O,s:s,s:d,s:d,s:(OOO),s:(OOO),s:(ddd),s:(ddd),s:d}", "param",
-        TS_NAME(param, c.param), "closed", c.closed ? Py_True : Py_False, "slopes",
-        TS_NAME(slopes, c.slopes), "alpha", c.alpha, "beta", c.beta, "has_lo",
+        TS_NAME(PARAM, c.param), "closed", c.closed ? Py_True : Py_False, "slopes",
+        TS_NAME(SLOPES, c.slopes), "alpha", c.alpha, "beta", c.beta, "has_lo",
         c.has_lo[0] ? Py_True : Py_False, c.has_lo[1] ? Py_True : Py_False,
         c.has_lo[2] ? Py_True : Py_False, "has_hi", c.has_hi[0] ? Py_True : Py_False,
         c.has_hi[1] ? Py_True : Py_False, c.has_hi[2] ? Py_True : Py_False, "lo", c.lo[0],
         c.lo[1], c.lo[2], "hi", c.hi[0], c.hi[1], c.hi[2], "margin", c.margin);
     PyObject *su = Py_BuildValue(
-        "{s:s,s:s,s:O,s:d,s:d,s:d,s:s,s:O,s:O,s:(ddd),s:(ddd)}", "form", TS_NAME(form, u.form),
-        "slopes", TS_NAME(slopes, u.slopes), "zero_twist", u.zero_twist ? Py_True : Py_False,
-        "alpha", u.alpha, "beta", u.beta, "margin", u.margin, "shape", TS_NAME(sshape, u.shape),
+        "{s:s,s:s,s:O,s:d,s:d,s:d,s:s,s:O,s:O,s:(ddd),s:(ddd)}", "form", TS_NAME(FORM, u.form),
+        "slopes", TS_NAME(SLOPES, u.slopes), "zero_twist", u.zero_twist ? Py_True : Py_False,
+        "alpha", u.alpha, "beta", u.beta, "margin", u.margin, "shape",
+        TS_NAME(SURFACE_SHAPE, u.shape),
         "has_lower", u.has_lower ? Py_True : Py_False, "has_upper",
         u.has_upper ? Py_True : Py_False, "lower", u.lower.p, u.lower.q, u.lower.c, "upper",
         u.upper.p, u.upper.q, u.upper.c);
@@ -1514,6 +1532,7 @@ static PyObject *defaults(PyObject *mod, PyObject *unused)
         Py_XDECREF(su);
         return NULL;
     }
+#undef TS_NAME
     return Py_BuildValue("{s:N,s:N,s:N}", "spline", sp, "curve", cu, "surface", su);
 }
 
@@ -1528,6 +1547,7 @@ static PyMethodDef module_methods[] = {
      "defaults of ts_surface_options_init"},
     {"slopes_compute", slopes_compute, METH_VARARGS, "slopes_compute(method, x, f)"},
     {"strerror", strerror_, METH_O, "ts_strerror(status)"},
+    {"vocab", vocab, METH_O, "vocab(kind) -> the canonical names of ts_vocab kind"},
     {"library_version", library_version, METH_NOARGS, "ts_version() of the compiled library"},
     {"options_defaults", options_defaults, METH_NOARGS, "defaults of ts_options_init"},
     {"defaults", defaults, METH_NOARGS, "defaults() -> dict of the library's option defaults"},
@@ -1557,6 +1577,15 @@ PyMODINIT_FUNC PyInit__core(void)
     if (PyModule_AddStringConstant(m, "HEADER_VERSION",
                                    TS_STR(TS_VERSION_MAJOR) "." TS_STR(TS_VERSION_MINOR) "." TS_STR(
                                        TS_VERSION_PATCH)) < 0 ||
+        PyModule_AddIntConstant(m, "VOCAB_STATUS", TS_VOCAB_STATUS) < 0 ||
+        PyModule_AddIntConstant(m, "VOCAB_FORM", TS_VOCAB_FORM) < 0 ||
+        PyModule_AddIntConstant(m, "VOCAB_SLOPES", TS_VOCAB_SLOPES) < 0 ||
+        PyModule_AddIntConstant(m, "VOCAB_SHAPE", TS_VOCAB_SHAPE) < 0 ||
+        PyModule_AddIntConstant(m, "VOCAB_EXTRAP", TS_VOCAB_EXTRAP) < 0 ||
+        PyModule_AddIntConstant(m, "VOCAB_PARAM", TS_VOCAB_PARAM) < 0 ||
+        PyModule_AddIntConstant(m, "VOCAB_SURFACE_SHAPE", TS_VOCAB_SURFACE_SHAPE) < 0 ||
+        PyModule_AddIntConstant(m, "VOCAB_TERM", TS_VOCAB_TERM) < 0 ||
+        PyModule_AddIntConstant(m, "VOCAB_WHERE", TS_VOCAB_WHERE) < 0 ||
         PyModule_AddIntConstant(m, "MODE_EXTEND", MODE_EXTEND) < 0 ||
         PyModule_AddIntConstant(m, "MODE_CLAMP", MODE_CLAMP) < 0 ||
         PyModule_AddIntConstant(m, "MODE_LINEAR", MODE_LINEAR) < 0 ||

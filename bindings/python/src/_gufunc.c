@@ -113,7 +113,7 @@ static double least_gap(const ts_spline *s, double first, double end)
     size_t i0 = first < (double)n ? (size_t)first : n;
     size_t i1 = end < 0 || end > (double)n ? n : (size_t)end;
     for (size_t i = i0; i < i1; i++) {
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         if (ts_spline_report(s, i, &r) != TS_OK)
             return (double)NAN;
         if (r.has_lower && !(g <= r.gap_lower))

@@ -22,7 +22,8 @@ class Line(ctypes.Structure):
 
 
 class Options(ctypes.Structure):  # ts_options, field by field (include/trigspline.h)
-    _fields_ = [("form", ctypes.c_int), ("slopes", ctypes.c_int), ("user_slopes", dp),
+    _fields_ = [("struct_size", ctypes.c_size_t),
+                ("form", ctypes.c_int), ("slopes", ctypes.c_int), ("user_slopes", dp),
                 ("n_user_slopes", ctypes.c_size_t), ("alpha", ctypes.c_double),
                 ("alphas", dp), ("n_alphas", ctypes.c_size_t), ("beta", ctypes.c_double),
                 ("betas", dp), ("n_betas", ctypes.c_size_t), ("shape", ctypes.c_int),

@@ -262,7 +262,8 @@ class Plane(ctypes.Structure):
 
 
 class SurfaceOptions(ctypes.Structure):  # ts_surface_options (include/trigspline.h)
-    _fields_ = [("form", ctypes.c_int), ("slopes", ctypes.c_int), ("zero_twist", ctypes.c_int),
+    _fields_ = [("struct_size", ctypes.c_size_t),
+                ("form", ctypes.c_int), ("slopes", ctypes.c_int), ("zero_twist", ctypes.c_int),
                 ("alpha", ctypes.c_double), ("beta", ctypes.c_double),
                 ("margin", ctypes.c_double), ("shape", ctypes.c_int),
                 ("has_lower", ctypes.c_int), ("has_upper", ctypes.c_int),

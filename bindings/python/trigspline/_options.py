@@ -21,16 +21,14 @@ import warnings
 
 from . import _core
 
-# ---- values: index = the C enum value ----------------------------------------
-FORMS = ("paper", "c1", "geometric")
-SLOPES = ("arithmetic", "geometric", "harmonic", "fritsch-carlson", "akima", "makima", "user",
-          "periodic")
-SHAPES = ("none", "positive", "above", "below", "between", "monotone")
-SURFACE_SHAPES = ("none", "positive", "bounds", "planes", "range")
-EXTRAPS = ("error", "clamp", "extend", "linear")
-PARAMS = ("centripetal", "chord", "uniform")
-TERMS = ("user", "margin", "lower-left", "lower-right", "upper-left", "upper-right",
-         "monotone", "certify", "geometric")
+# ---- values: index = the C enum value (the library's names, ts_vocab_name) ---
+FORMS = _core.vocab(_core.VOCAB_FORM)
+SLOPES = _core.vocab(_core.VOCAB_SLOPES)
+SHAPES = _core.vocab(_core.VOCAB_SHAPE)
+SURFACE_SHAPES = _core.vocab(_core.VOCAB_SURFACE_SHAPE)
+EXTRAPS = _core.vocab(_core.VOCAB_EXTRAP)
+PARAMS = _core.vocab(_core.VOCAB_PARAM)
+TERMS = _core.vocab(_core.VOCAB_TERM)
 
 #: Extrapolation policies of the package: the library's, and 'nan' (NaN
 #: outside the data; Python only).

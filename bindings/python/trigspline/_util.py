@@ -1,19 +1,16 @@
-"""Status and where tables (the order of the C enums in include/trigspline.h) and number
+"""Status and where tables (the library's names, ts_vocab_name) and number
 text.  The option vocabulary is in _options.py."""
 import math
 import numbers
 
 import numpy as np
 
-STATUS_NAMES = ("TS_OK", "TS_ERR_NULL", "TS_ERR_NOMEM", "TS_ERR_OVERFLOW", "TS_ERR_TOO_FEW",
-                "TS_ERR_NONFINITE", "TS_ERR_UNSORTED", "TS_ERR_ALPHA", "TS_ERR_BETA",
-                "TS_ERR_MARGIN", "TS_ERR_LENGTH", "TS_ERR_OPTION", "TS_ERR_PERIODIC",
-                "TS_ERR_DOMAIN", "TS_ERR_NEGATIVE", "TS_ERR_SIDE", "TS_ERR_LINES",
-                "TS_ERR_NONMONOTONE", "TS_ERR_INFEASIBLE", "TS_ERR_VIOLATED",
-                "TS_ERR_GEOMETRIC", "TS_ERR_DIMENSION", "TS_ERR_INDEX", "TS_ERR_ZERO_SLOPE",
-                "TS_ERR_SLOPE_OVERFLOW", "TS_ERR_TOO_LARGE", "TS_ERR_CONTROL_OVERFLOW",
-                "TS_ERR_WIDTH", "TS_ERR_PRECISION", "TS_ERR_UNPROVEN")
-WHERE_NAMES = (None, "point", "interval", "query")
+from . import _core
+
+# The library's names (ts_vocab_name): statuses "TS_OK", ...; where an index
+# points (None for "none").
+STATUS_NAMES = _core.vocab(_core.VOCAB_STATUS)
+WHERE_NAMES = (None,) + _core.vocab(_core.VOCAB_WHERE)[1:]
 
 
 def num(v):

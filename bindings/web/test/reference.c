@@ -95,7 +95,7 @@ static void spline_case(int form, int slopes, int shape, int extrap, size_t n, d
     f64s(val, 3 * NQ);
     f64s(bat, 3 * NQ);
     for (size_t i = 0; i + 1 < n; i++) {
-        ts_interval_report r;
+        ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         (void)ts_spline_report(s, i, &r);
         report_row(&r);
     }

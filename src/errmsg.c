@@ -1,0 +1,545 @@
+/* ts_error_message: the full sentence of a failure from the ts_error and
+ * the caller's data and options (include/trigspline.h, "Error messages").
+ * Bookkeeping only; the numbers are printed by numfmt.c. */
+#include "internal.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#define MAX_LISTED 12 /* other failing points named, then ", ..." */
+
+/* An snprintf-like writer: `need` counts the whole sentence, buf holds what fits. */
+typedef struct out {
+    char *buf;
+    size_t len, need;
+} out;
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+static void put(out *o, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    size_t room = o->need < o->len ? o->len - o->need : 0;
+    int w = vsnprintf(room ? o->buf + o->need : NULL, room, fmt, ap);
+    va_end(ap);
+    if (w > 0)
+        o->need += (size_t)w;
+}
+
+static void num(out *o, double v)
+{
+    char b[TS__NUM_SIZE];
+    ts__format_double(v, b);
+    put(o, "%s", b);
+}
+
+static void xval(out *o, const ts_error_context *c, double v)
+{
+    if (c && c->format_x) {
+        char b[128];
+        int w = c->format_x(v, b, sizeof b, c->format_x_user);
+        if (w >= 0 && (size_t)w < sizeof b) {
+            put(o, "%s", b);
+            return;
+        }
+    }
+    num(o, v);
+}
+
+/* "y = 2x + 1", "y = -x", "y = 3" */
+static void line_text(out *o, const ts_line *l)
+{
+    put(o, "y = ");
+    if (l->m != 0.0) {
+        if (l->m == -1.0)
+            put(o, "-");
+        else if (l->m != 1.0)
+            num(o, l->m);
+        put(o, "x");
+        if (l->c > 0.0) {
+            put(o, " + ");
+            num(o, l->c);
+        } else if (l->c < 0.0) {
+            put(o, " - ");
+            num(o, -l->c);
+        } else if (l->c != 0.0) { /* NaN */
+            put(o, " + ");
+            num(o, l->c);
+        }
+    } else {
+        num(o, l->c);
+    }
+}
+
+static double line_at(const ts_line *l, double x)
+{
+    return l->m * x + l->c;
+}
+
+static const char *where_name(ts_where w)
+{
+    const char *s = ts__vocab_name(TS_VOCAB_WHERE, (int)w);
+    return s ? s : "index";
+}
+
+/* ---- splines ------------------------------------------------------ */
+
+typedef struct data {
+    const ts_error_context *c;
+    const ts_options *opt; /* the options used, or the defaults */
+    size_t n;              /* points with x and f (0: none given) */
+    size_t base;
+} data;
+
+static void point_x(out *o, const data *d, size_t i)
+{
+    put(o, "point %zu (x = ", d->base + i);
+    xval(o, d->c, d->c->x[i]);
+    put(o, ")");
+}
+
+static void point_xf(out *o, const data *d, size_t i)
+{
+    put(o, "point %zu (x = ", d->base + i);
+    xval(o, d->c, d->c->x[i]);
+    put(o, ", f = ");
+    num(o, d->c->f[i]);
+    put(o, ")");
+}
+
+static void interval_text(out *o, const data *d, size_t i)
+{
+    put(o, "interval %zu [", d->base + i);
+    xval(o, d->c, d->c->x[i]);
+    put(o, ", ");
+    xval(o, d->c, d->c->x[i + 1]);
+    put(o, "]");
+}
+
+/* Does point (x, f) fail the scheme's condition? (kind: 0 negative, 1 not
+ * above the lower line, 2 not below the upper; a constant line may be touched) */
+static int fails(const ts_options *opt, int kind, double x, double f)
+{
+    if (kind == 0)
+        return !(f >= 0.0);
+    const ts_line *l = kind == 1 ? &opt->lower : &opt->upper;
+    double g = kind == 1 ? f - line_at(l, x) : line_at(l, x) - f;
+    return l->m == 0.0 ? !(g >= 0.0) : !(g > 0.0);
+}
+
+/* " (... at x = X1, X2, ..., ...)" tail: every failing point's x, 12 at most */
+static void list_failing(out *o, const data *d, int kind)
+{
+    size_t cnt = 0;
+    for (size_t i = 0; i < d->n; i++) {
+        if (!fails(d->opt, kind, d->c->x[i], d->c->f[i]))
+            continue;
+        if (cnt == MAX_LISTED) {
+            put(o, ", ...");
+            return;
+        }
+        if (cnt)
+            put(o, ", ");
+        xval(o, d->c, d->c->x[i]);
+        cnt++;
+    }
+}
+
+static double per_interval(const double *arr, size_t n_arr, double scalar, size_t i)
+{
+    return arr && i < n_arr ? arr[i] : scalar;
+}
+
+/* The sentence of a spline failure; 0 when the generic form applies. */
+static int spline_sentence(out *o, const data *d, const ts_error *e)
+{
+    const ts_options *opt = d->opt;
+    size_t i = e->index, n = d->n;
+    int point = e->where == TS_WHERE_POINT && i < n;
+    int interval = e->where == TS_WHERE_INTERVAL && n > 0 && i < n - 1;
+    const double *x = d->c->x, *f = d->c->f;
+    switch (e->status) {
+    case TS_ERR_TOO_FEW:
+        if (!d->c->x && !d->c->n_points)
+            return 0;
+        put(o, "%zu data point%s; at least 2 are needed", d->c->n_points,
+            d->c->n_points == 1 ? "" : "s");
+        return 1;
+    case TS_ERR_UNSORTED:
+        if (!(point && i > 0))
+            return 0;
+        point_x(o, d, i);
+        put(o, " is not greater than the previous x = ");
+        xval(o, d->c, x[i - 1]);
+        put(o, "; x must be strictly increasing");
+        return 1;
+    case TS_ERR_NONFINITE:
+        if (!point)
+            return 0;
+        point_xf(o, d, i);
+        if (!isfinite(x[i]) || !isfinite(f[i])) {
+            put(o, ": x or f is NaN or infinite");
+        } else if (opt->slopes == TS_SLOPES_USER && opt->user_slopes && i < opt->n_user_slopes &&
+                   !isfinite(opt->user_slopes[i])) {
+            put(o, ": the user slope ");
+            num(o, opt->user_slopes[i]);
+            put(o, " is not finite");
+        } else {
+            put(o, ": the step from the previous point, or a slope there, overflows a double");
+        }
+        return 1;
+    case TS_ERR_WIDTH:
+        if (!(point && i > 0))
+            return 0;
+        {
+            double h = x[i] - x[i - 1];
+            point_x(o, d, i);
+            put(o, ": the step ");
+            num(o, h);
+            put(o, " from the previous x = ");
+            xval(o, d->c, x[i - 1]);
+            if (h <= DBL_MAX) {
+                put(o, " underflows: steps below ");
+                num(o, DBL_MIN);
+                put(o, " (the smallest normal double) are refused");
+            } else {
+                put(o, " overflows a double");
+            }
+        }
+        return 1;
+    case TS_ERR_PERIODIC:
+        if (n < 2)
+            return 0;
+        put(o, "periodic slopes need the last value equal to the first: f = ");
+        num(o, f[n - 1]);
+        put(o, " at point %zu, f = ", d->base + n - 1);
+        num(o, f[0]);
+        put(o, " at point %zu", d->base);
+        return 1;
+    case TS_ERR_NEGATIVE:
+        if (!point)
+            return 0;
+        point_xf(o, d, i);
+        put(o, " is negative; the positive shape needs f >= 0 (negative at x = ");
+        list_failing(o, d, 0);
+        put(o, ")");
+        return 1;
+    case TS_ERR_SIDE: {
+        if (!point)
+            return 0;
+        int low = opt->shape == TS_SHAPE_ABOVE ||
+                  (opt->shape == TS_SHAPE_BETWEEN && fails(opt, 1, x[i], f[i]));
+        if (!low && opt->shape != TS_SHAPE_BELOW && opt->shape != TS_SHAPE_BETWEEN)
+            return 0;
+        point_xf(o, d, i);
+        put(o, " is not %s the %s line ", low ? "above" : "below", low ? "lower" : "upper");
+        line_text(o, low ? &opt->lower : &opt->upper);
+        put(o, "; the data are on or %s it at x = ", low ? "below" : "above");
+        list_failing(o, d, low ? 1 : 2);
+        return 1;
+    }
+    case TS_ERR_LINES:
+        if (!point)
+            return 0;
+        put(o, "at ");
+        point_x(o, d, i);
+        put(o, " the lower line ");
+        line_text(o, &opt->lower);
+        put(o, " (value ");
+        num(o, line_at(&opt->lower, x[i]));
+        put(o, ") is not below the upper line ");
+        line_text(o, &opt->upper);
+        put(o, " (value ");
+        num(o, line_at(&opt->upper, x[i]));
+        put(o, ")");
+        return 1;
+    case TS_ERR_NONMONOTONE:
+        if (!point)
+            return 0;
+        point_xf(o, d, i);
+        put(o, ": the data change direction here; the monotone shape needs monotone data");
+        return 1;
+    case TS_ERR_ZERO_SLOPE:
+        if (!point)
+            return 0;
+        point_xf(o, d, i);
+        put(o, " touches the boundary and the user slope ");
+        if (opt->user_slopes && i < opt->n_user_slopes) {
+            num(o, opt->user_slopes[i]);
+            put(o, " ");
+        }
+        put(o, "there points out of the region");
+        return 1;
+    case TS_ERR_ALPHA:
+    case TS_ERR_BETA:
+    case TS_ERR_MARGIN: {
+        double al = per_interval(opt->alphas, opt->n_alphas, opt->alpha, i);
+        double be = per_interval(opt->betas, opt->n_betas, opt->beta, i);
+        double t = per_interval(opt->margins, opt->n_margins, opt->margin, i);
+        if (interval) {
+            interval_text(o, d, i);
+            put(o, ": ");
+        } else if (e->index != TS_NO_INDEX) {
+            put(o, "interval %zu: ", d->base + i);
+        }
+        if (e->status == TS_ERR_ALPHA) {
+            put(o, "alpha = ");
+            num(o, al);
+            put(o, " must be finite and > 0");
+        } else if (e->status == TS_ERR_BETA) {
+            put(o, "beta = ");
+            num(o, be);
+            put(o, " must be finite and >= 0, and alpha + beta = ");
+            num(o, al + be);
+            put(o, " finite and > 0");
+        } else {
+            put(o, "the margin t = ");
+            num(o, t);
+            put(o, " must be finite and > 0");
+        }
+        return 1;
+    }
+    case TS_ERR_LENGTH: {
+        if (n < 2)
+            return 0;
+        const char *what = NULL;
+        size_t have = 0, want = n - 1;
+        if (opt->slopes == TS_SLOPES_USER && opt->n_user_slopes != n) {
+            what = "the user slopes";
+            have = opt->n_user_slopes;
+            want = n;
+        } else if (opt->alphas && opt->n_alphas != n - 1) {
+            what = "alphas";
+            have = opt->n_alphas;
+        } else if (opt->betas && opt->n_betas != n - 1) {
+            what = "betas";
+            have = opt->n_betas;
+        } else if (opt->margins && opt->n_margins != n - 1) {
+            what = "margins";
+            have = opt->n_margins;
+        }
+        if (!what)
+            return 0;
+        if (want == n)
+            put(o, "%s have %zu values, but the data have %zu points (one slope per point is "
+                   "needed)", what, have, n);
+        else
+            put(o, "%s has %zu value%s, but the data have %zu interval%s (one value per "
+                   "interval is needed)", what, have, have == 1 ? "" : "s", want,
+                want == 1 ? "" : "s");
+        return 1;
+    }
+    case TS_ERR_GEOMETRIC:
+    case TS_ERR_CONTROL_OVERFLOW: {
+        double a = per_interval(opt->alphas, opt->n_alphas, opt->alpha, i) +
+                   per_interval(opt->betas, opt->n_betas, opt->beta, i);
+        if (interval) {
+            interval_text(o, d, i);
+            put(o, ": ");
+        }
+        put(o, "alpha + beta = ");
+        num(o, a);
+        if (e->status == TS_ERR_GEOMETRIC) {
+            put(o, " is below the geometric-form bound ");
+            num(o, TS_GEOMETRIC_A_MIN);
+            put(o, "; raise alpha or beta");
+        } else {
+            put(o, " is too small for the slopes: the control values overflow");
+        }
+        return 1;
+    }
+    case TS_ERR_INFEASIBLE:
+        if (!interval)
+            return 0;
+        interval_text(o, d, i);
+        put(o, ": no beta >= 0 keeps the spline inside the region on this interval");
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+/* TS_ERR_DOMAIN for query i (the range from the data when given) */
+static int query_sentence(out *o, const ts_error_context *c, const ts_error *e, size_t base)
+{
+    size_t i = e->index;
+    if (e->status != TS_ERR_DOMAIN || !c || !c->queries || !(i < c->n_queries))
+        return 0;
+    double q = c->queries[i];
+    put(o, "query %zu", base + i);
+    if (isnan(q)) {
+        put(o, " is NaN");
+        return 1;
+    }
+    put(o, " (x = ");
+    xval(o, c, q);
+    put(o, ")");
+    if (isinf(q)) {
+        put(o, " is infinite");
+    } else if (c->x && c->n_points >= 2 && !c->y) {
+        put(o, " lies outside [");
+        xval(o, c, c->x[0]);
+        put(o, ", ");
+        xval(o, c, c->x[c->n_points - 1]);
+        put(o, "]");
+    } else {
+        put(o, " lies outside the data");
+    }
+    return 1;
+}
+
+/* ---- surfaces and curves --------------------------------------------- */
+
+static void surface_where(out *o, const ts_error_context *c, const ts_error *e)
+{
+    size_t nx = c->n_points, ny = c->ny_points;
+    if (e->where == TS_WHERE_POINT && nx && e->index / nx < ny) {
+        size_t i = e->index % nx, j = e->index / nx;
+        put(o, "node (%zu, %zu)", i, j);
+        if (c->x && c->y) {
+            put(o, " (x = ");
+            xval(o, c, c->x[i]);
+            put(o, ", y = ");
+            num(o, c->y[j]);
+            if (c->f) {
+                put(o, ", z = ");
+                num(o, c->f[e->index]);
+            }
+            put(o, ")");
+        }
+    } else if (e->where == TS_WHERE_INTERVAL && nx > 1 && ny > 1 &&
+               e->index / (nx - 1) < ny - 1) {
+        size_t i = e->index % (nx - 1), j = e->index / (nx - 1);
+        put(o, "patch (%zu, %zu)", i, j);
+        if (c->x && c->y) {
+            put(o, " [");
+            xval(o, c, c->x[i]);
+            put(o, ", ");
+            xval(o, c, c->x[i + 1]);
+            put(o, "] x [");
+            num(o, c->y[j]);
+            put(o, ", ");
+            num(o, c->y[j + 1]);
+            put(o, "]");
+        }
+    } else {
+        put(o, "%s %zu", where_name(e->where), e->index);
+    }
+}
+
+static void surface_sentence(out *o, const ts_error_context *c, const ts_error *e)
+{
+    if (e->status == TS_ERR_NEGATIVE && e->where == TS_WHERE_POINT && c->f) {
+        surface_where(o, c, e);
+        put(o, " is negative; the positive shape needs z >= 0");
+        return;
+    }
+    if (e->status == TS_ERR_GEOMETRIC && c->surface_options &&
+        c->surface_options->struct_size == sizeof *c->surface_options) {
+        put(o, "alpha + beta = ");
+        num(o, c->surface_options->alpha + c->surface_options->beta);
+        put(o, " is below the geometric-form bound ");
+        num(o, TS_GEOMETRIC_A_MIN);
+        put(o, "; raise alpha or beta");
+        return;
+    }
+    if (e->where != TS_WHERE_NONE && e->index != TS_NO_INDEX) {
+        surface_where(o, c, e);
+        put(o, ": ");
+    }
+    put(o, "%s", ts__strerror(e->status));
+}
+
+static void curve_sentence(out *o, const ts_error_context *c, const ts_error *e)
+{
+    size_t i = e->index;
+    if (e->where == TS_WHERE_POINT && c->points && i < c->n_points &&
+        (c->dim == 2 || c->dim == 3)) {
+        put(o, "point %zu (", c->first_index + i);
+        for (size_t k = 0; k < c->dim; k++) {
+            if (k)
+                put(o, ", ");
+            num(o, c->points[i * c->dim + k]);
+        }
+        put(o, ")");
+        if (e->status == TS_ERR_SIDE) {
+            put(o, " is outside the box");
+            return;
+        }
+        if (e->status == TS_ERR_UNSORTED) {
+            put(o, " repeats the previous point (or its parameter step is lost to rounding)");
+            return;
+        }
+        put(o, ": ");
+    } else if (e->where == TS_WHERE_INTERVAL && i != TS_NO_INDEX) {
+        put(o, "segment %zu: ", c->first_index + i);
+    } else if (e->where != TS_WHERE_NONE && i != TS_NO_INDEX) {
+        put(o, "%s %zu: ", where_name(e->where), c->first_index + i);
+    }
+    put(o, "%s", ts__strerror(e->status));
+}
+
+/* ---- the entry point ------------------------------------------------- */
+
+static void context_init(ts_error_context *ctx)
+{
+    memset(ctx, 0, sizeof *ctx);
+    ctx->struct_size = sizeof *ctx;
+}
+
+void ts_error_context_init(ts_error_context *ctx)
+{
+    if (ctx)
+        context_init(ctx);
+}
+
+static void generic(out *o, const data *d, const ts_error *e)
+{
+    size_t i = e->index, n = d->n;
+    if (e->where == TS_WHERE_POINT && i < n) {
+        point_xf(o, d, i);
+        put(o, ": ");
+    } else if (e->where == TS_WHERE_INTERVAL && n > 0 && i < n - 1) {
+        interval_text(o, d, i);
+        put(o, ": ");
+    } else if (e->where != TS_WHERE_NONE && i != TS_NO_INDEX) {
+        put(o, "%s %zu: ", where_name(e->where), d->base + i);
+    }
+    put(o, "%s", ts__strerror(e->status));
+}
+
+size_t ts_error_message(const ts_error *err, const ts_error_context *ctx, char *buf, size_t len)
+{
+    out o = {buf, buf ? len : 0, 0};
+    if (o.len)
+        buf[0] = '\0';
+    ts_error null_err = {TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE};
+    const ts_error *e = err ? err : &null_err;
+    ts_error_context none;
+    context_init(&none);
+    int foreign = ctx && ctx->struct_size != sizeof *ctx;
+    const ts_error_context *c = ctx && !foreign ? ctx : &none;
+
+    ts_options defaults;
+    ts__options_defaults(&defaults);
+    data d = {c, c->spline_options ? c->spline_options : &defaults,
+              c->x && c->f ? c->n_points : 0, c->first_index};
+    if (d.opt->struct_size != sizeof *d.opt) /* options of another version: not read */
+        d.opt = &defaults;
+
+    if (e->where == TS_WHERE_QUERY && query_sentence(&o, c, e, c->first_index)) {
+        /* done */
+    } else if (c->surface_options || c->y) {
+        surface_sentence(&o, c, e);
+    } else if (c->curve_options || c->points) {
+        curve_sentence(&o, c, e);
+    } else if (!spline_sentence(&o, &d, e)) {
+        generic(&o, &d, e);
+    }
+    if (foreign)
+        put(&o, " (error context of another version ignored)");
+    return o.need;
+}

@@ -1,0 +1,381 @@
+/* ts_error_message (src/errmsg.c) and the shortest-double formatter
+ * (src/numfmt.c).  Each status is provoked through the library where the
+ * data make it easy, and the expected sentence is written out by hand from
+ * those data (the wording of include/trigspline.h, "Error messages").
+ * Truncation and len = 0 behave as snprintf; the buffers are exactly the
+ * size given (malloc), so ASan reports any write past them. */
+#include "internal.h"
+#include "th.h"
+
+#include <float.h>
+#include <stdlib.h>
+#include <string.h>
+
+static char text[1024];
+
+static const char *message(const ts_error *e, const ts_error_context *c)
+{
+    size_t n = ts_error_message(e, c, text, sizeof text);
+    if (n >= sizeof text)
+        return "(too long)";
+    return text;
+}
+
+#define EXPECT(e, c, want)                                                                 \
+    do {                                                                                   \
+        const char *got_ = message(e, c);                                                  \
+        CHECKF(strcmp(got_, want) == 0, "\n   got  \"%s\"\n   want \"%s\"", got_, want); \
+    } while (0)
+
+static ts_error build(const double *x, const double *f, size_t n, const ts_options *o)
+{
+    ts_error e;
+    ts_spline *s = NULL;
+    ts_status st = ts_spline_new(x, f, n, o, &s, &e);
+    ts_spline_free(s);
+    CHECK(st == e.status);
+    return e;
+}
+
+static ts_error_context spline_ctx(const double *x, const double *f, size_t n, const ts_options *o)
+{
+    ts_error_context c;
+    ts_error_context_init(&c);
+    c.x = x;
+    c.f = f;
+    c.n_points = n;
+    c.spline_options = o;
+    return c;
+}
+
+static int day_text(double x, char *buf, size_t len, void *user)
+{
+    return snprintf(buf, len, "%s %g", (const char *)user, x);
+}
+
+static void test_numbers(void)
+{
+    TH_CASE("shortest doubles");
+    struct {
+        double v;
+        const char *s;
+    } t[] = {{0.1, "0.1"},
+             {1.0 / 3.0, "0.3333333333333333"},
+             {2.5e-7, "2.5e-07"},
+             {-0.0, "-0"},
+             {0.0, "0"},
+             {100, "100"},
+             {123456789012345680.0, "1.2345678901234568e+17"},
+             {DBL_MAX, "1.7976931348623157e+308"},
+             {4.9406564584124654e-324, "5e-324"},
+             {DBL_MIN, "2.2250738585072014e-308"},
+             {0.30000000000000004, "0.30000000000000004"},
+             {TH_NAN, "nan"},
+             {TH_INF, "inf"},
+             {-TH_INF, "-inf"}};
+    for (size_t k = 0; k < sizeof t / sizeof t[0]; k++) {
+        char b[TS__NUM_SIZE];
+        ts__format_double(t[k].v, b);
+        CHECKF(strcmp(b, t[k].s) == 0, "%s, expected %s", b, t[k].s);
+    }
+}
+
+static void test_spline_points(void)
+{
+    double x[] = {0, 1, 2, 3};
+    ts_options o;
+
+    TH_CASE("negative");
+    double fneg[] = {1, -0.5, 2, -3};
+    ts_options_init(&o);
+    o.shape = TS_SHAPE_POSITIVE;
+    ts_error e = build(x, fneg, 4, &o);
+    ts_error_context c = spline_ctx(x, fneg, 4, &o);
+    CHECK(e.status == TS_ERR_NEGATIVE && e.index == 1);
+    EXPECT(&e, &c, "point 1 (x = 1, f = -0.5) is negative; the positive shape needs f >= 0 "
+                   "(negative at x = 1, 3)");
+    /* dates through the callback, indices of a block of a longer series */
+    c.format_x = day_text;
+    c.format_x_user = "day";
+    c.first_index = 100;
+    EXPECT(&e, &c, "point 101 (x = day 1, f = -0.5) is negative; the positive shape needs "
+                   "f >= 0 (negative at x = day 1, day 3)");
+
+    TH_CASE("side, lower line");
+    double fs[] = {2, 2, 6, 8};
+    ts_options_init(&o);
+    o.shape = TS_SHAPE_ABOVE;
+    o.lower.m = 2;
+    o.lower.c = 1; /* y = 2x + 1: 1, 3, 5, 7 */
+    e = build(x, fs, 4, &o);
+    c = spline_ctx(x, fs, 4, &o);
+    CHECK(e.status == TS_ERR_SIDE && e.index == 1);
+    EXPECT(&e, &c, "point 1 (x = 1, f = 2) is not above the lower line y = 2x + 1; the data "
+                   "are on or below it at x = 1");
+
+    TH_CASE("side, upper line, many points");
+    double xs[20], fb[20];
+    for (int i = 0; i < 20; i++) {
+        xs[i] = i;
+        fb[i] = i < 5 ? 0 : 10; /* upper y = -x + 0.5 (0.5 at x = 0): above it from x = 1 on */
+    }
+    ts_options_init(&o);
+    o.shape = TS_SHAPE_BELOW;
+    o.upper.m = -1;
+    o.upper.c = 0.5;
+    e = build(xs, fb, 20, &o);
+    c = spline_ctx(xs, fb, 20, &o);
+    CHECK(e.status == TS_ERR_SIDE && e.index == 1);
+    EXPECT(&e, &c, "point 1 (x = 1, f = 0) is not below the upper line y = -x + 0.5; the data "
+                   "are on or above it at x = 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, ...");
+
+    TH_CASE("lines");
+    double fl[] = {1, 1, 1, 1};
+    ts_options_init(&o);
+    o.shape = TS_SHAPE_BETWEEN;
+    o.lower.m = 1;
+    o.lower.c = 0; /* y = x */
+    o.upper.m = -1;
+    o.upper.c = 2; /* y = -x + 2: equal at x = 1 */
+    e = build(x, fl, 4, &o);
+    c = spline_ctx(x, fl, 4, &o);
+    CHECK(e.status == TS_ERR_LINES && e.index == 1);
+    EXPECT(&e, &c, "at point 1 (x = 1) the lower line y = x (value 1) is not below the upper "
+                   "line y = -x + 2 (value 1)");
+
+    TH_CASE("unsorted");
+    double xu[] = {0, 1, 1, 2}, fu[] = {1, 2, 3, 4};
+    e = build(xu, fu, 4, NULL);
+    c = spline_ctx(xu, fu, 4, NULL);
+    CHECK(e.status == TS_ERR_UNSORTED && e.index == 2);
+    EXPECT(&e, &c, "point 2 (x = 1) is not greater than the previous x = 1; x must be strictly "
+                   "increasing");
+
+    TH_CASE("nonmonotone");
+    double fm[] = {0, 1, 0.5, 2};
+    ts_options_init(&o);
+    o.shape = TS_SHAPE_MONOTONE;
+    e = build(x, fm, 4, &o);
+    c = spline_ctx(x, fm, 4, &o);
+    CHECK(e.status == TS_ERR_NONMONOTONE && e.index == 2);
+    EXPECT(&e, &c, "point 2 (x = 2, f = 0.5): the data change direction here; the monotone "
+                   "shape needs monotone data");
+
+    TH_CASE("zero slope");
+    double fz[] = {1, 0, 1, 2}, d[] = {0, 0.5, 0, 0};
+    ts_options_init(&o);
+    o.shape = TS_SHAPE_POSITIVE;
+    o.slopes = TS_SLOPES_USER;
+    o.user_slopes = d;
+    o.n_user_slopes = 4;
+    e = build(x, fz, 4, &o);
+    c = spline_ctx(x, fz, 4, &o);
+    CHECK(e.status == TS_ERR_ZERO_SLOPE && e.index == 1);
+    EXPECT(&e, &c, "point 1 (x = 1, f = 0) touches the boundary and the user slope 0.5 there "
+                   "points out of the region");
+
+    TH_CASE("nonfinite user slope");
+    double dn[] = {0, 0, TH_INF, 0};
+    ts_options_init(&o);
+    o.slopes = TS_SLOPES_USER;
+    o.user_slopes = dn;
+    o.n_user_slopes = 4;
+    e = build(x, fm, 4, &o);
+    c = spline_ctx(x, fm, 4, &o);
+    CHECK(e.status == TS_ERR_NONFINITE && e.index == 2);
+    EXPECT(&e, &c, "point 2 (x = 2, f = 0.5): the user slope inf is not finite");
+    double fnan[] = {0, TH_NAN, 1, 2};
+    e = build(x, fnan, 4, NULL);
+    c = spline_ctx(x, fnan, 4, NULL);
+    CHECK(e.status == TS_ERR_NONFINITE && e.index == 1);
+    EXPECT(&e, &c, "point 1 (x = 1, f = nan): x or f is NaN or infinite");
+
+    TH_CASE("periodic");
+    double fp[] = {1, 2, 3};
+    ts_options_init(&o);
+    o.slopes = TS_SLOPES_PERIODIC;
+    e = build(x, fp, 3, &o);
+    c = spline_ctx(x, fp, 3, &o);
+    CHECK(e.status == TS_ERR_PERIODIC);
+    EXPECT(&e, &c, "periodic slopes need the last value equal to the first: f = 3 at point 2, "
+                   "f = 1 at point 0");
+
+    TH_CASE("too few");
+    e = build(x, fp, 1, NULL);
+    c = spline_ctx(x, fp, 1, NULL);
+    CHECK(e.status == TS_ERR_TOO_FEW);
+    EXPECT(&e, &c, "1 data point; at least 2 are needed");
+}
+
+static void test_spline_intervals(void)
+{
+    double x[] = {0, 1, 2, 3}, f[] = {1, 2, 1.5, 3};
+    ts_options o;
+
+    TH_CASE("geometric bound");
+    ts_options_init(&o);
+    o.form = TS_FORM_GEOMETRIC;
+    o.alpha = 0.3;
+    ts_error e = build(x, f, 4, &o);
+    ts_error_context c = spline_ctx(x, f, 4, &o);
+    CHECK(e.status == TS_ERR_GEOMETRIC && e.index == 0);
+    EXPECT(&e, &c, "interval 0 [0, 1]: alpha + beta = 0.3 is below the geometric-form bound "
+                   "0.3472; raise alpha or beta");
+
+    TH_CASE("alpha");
+    double al[] = {1, -2, 1};
+    ts_options_init(&o);
+    o.alphas = al;
+    o.n_alphas = 3;
+    e = build(x, f, 4, &o);
+    c = spline_ctx(x, f, 4, &o);
+    CHECK(e.status == TS_ERR_ALPHA && e.index == 1);
+    EXPECT(&e, &c, "interval 1 [1, 2]: alpha = -2 must be finite and > 0");
+
+    TH_CASE("length");
+    o.n_alphas = 2;
+    e = build(x, f, 4, &o);
+    c = spline_ctx(x, f, 4, &o);
+    CHECK(e.status == TS_ERR_LENGTH);
+    EXPECT(&e, &c, "alphas has 2 values, but the data have 3 intervals (one value per interval "
+                   "is needed)");
+
+    TH_CASE("infeasible, precision (error given)");
+    c = spline_ctx(x, f, 4, NULL);
+    ts_error inf = {TS_ERR_INFEASIBLE, 1, TS_WHERE_INTERVAL};
+    EXPECT(&inf, &c, "interval 1 [1, 2]: no beta >= 0 keeps the spline inside the region on "
+                     "this interval");
+    ts_error prec = {TS_ERR_PRECISION, 2, TS_WHERE_INTERVAL};
+    EXPECT(&prec, &c, "interval 2 [2, 3]: cannot be certified in double precision: gap below the "
+                      "rounding bound");
+    ts_error far = {TS_ERR_PRECISION, 3, TS_WHERE_INTERVAL}; /* beyond the data */
+    EXPECT(&far, &c, "interval 3: cannot be certified in double precision: gap below the "
+                     "rounding bound");
+
+    TH_CASE("domain");
+    ts_spline *s = NULL;
+    CHECK(ts_spline_new(x, f, 4, NULL, &s, NULL) == TS_OK);
+    double xq[] = {0.5, 7, TH_NAN}, yq[3];
+    ts_error e2;
+    CHECK(ts_eval_batch(s, 0, xq, 3, yq, NULL, &e2) == TS_ERR_DOMAIN && e2.index == 1);
+    ts_spline_free(s);
+    c.queries = xq;
+    c.n_queries = 3;
+    EXPECT(&e2, &c, "query 1 (x = 7) lies outside [0, 3]");
+    e2.index = 2;
+    EXPECT(&e2, &c, "query 2 is NaN");
+    c.queries = NULL;
+    EXPECT(&e2, &c, "query 2: query is NaN or outside the data range");
+}
+
+static void test_surface_and_curve(void)
+{
+    TH_CASE("surface node");
+    double gx[] = {0, 1, 2}, gy[] = {0, 1}, gz[] = {1, 2, 3, 2, 1, -1};
+    ts_surface_options so;
+    ts_surface_options_init(&so);
+    so.shape = TS_SURFACE_POSITIVE;
+    ts_surface *sf = NULL;
+    ts_error e;
+    CHECK(ts_surface_new(gx, 3, gy, 2, gz, &so, &sf, &e) == TS_ERR_NEGATIVE && e.index == 5);
+    ts_error_context c;
+    ts_error_context_init(&c);
+    c.x = gx;
+    c.y = gy;
+    c.f = gz;
+    c.n_points = 3;
+    c.ny_points = 2;
+    c.surface_options = &so;
+    EXPECT(&e, &c, "node (2, 1) (x = 2, y = 1, z = -1) is negative; the positive shape needs "
+                   "z >= 0");
+    ts_error ge = {TS_ERR_GEOMETRIC, TS_NO_INDEX, TS_WHERE_NONE};
+    so.alpha = 0.25;
+    so.beta = 0.0625;
+    EXPECT(&ge, &c, "alpha + beta = 0.3125 is below the geometric-form bound 0.3472; raise alpha "
+                    "or beta");
+    so.struct_size = 0; /* options of another version: not read */
+    EXPECT(&ge, &c, "alpha + beta below the geometric-form bound");
+    so.struct_size = sizeof so;
+    ts_error pe = {TS_ERR_INFEASIBLE, 1, TS_WHERE_INTERVAL};
+    EXPECT(&pe, &c, "patch (1, 0) [1, 2] x [0, 1]: no beta keeps this interval inside the region");
+
+    TH_CASE("curve point");
+    double pts[] = {0, 0, 2, 0.5, 1, 1};
+    ts_curve_options co;
+    ts_curve_options_init(&co);
+    co.has_hi[0] = 1;
+    co.hi[0] = 1.5;
+    ts_curve *cv = NULL;
+    CHECK(ts_curve_new(pts, 3, 2, &co, &cv, &e) == TS_ERR_SIDE && e.index == 1);
+    ts_error_context_init(&c);
+    c.points = pts;
+    c.n_points = 3;
+    c.dim = 2;
+    c.curve_options = &co;
+    EXPECT(&e, &c, "point 1 (2, 0.5) is outside the box");
+}
+
+static void test_buffers(void)
+{
+    TH_CASE("snprintf behaviour");
+    ts_error e = {TS_ERR_SIDE, TS_NO_INDEX, TS_WHERE_NONE};
+    const char *want = "a data point lies on or across a constraint line";
+    size_t n = strlen(want);
+    CHECK(ts_error_message(&e, NULL, NULL, 0) == n);
+    char *b = malloc(n + 1);
+    CHECK(b != NULL);
+    if (b) {
+        CHECK(ts_error_message(&e, NULL, b, n + 1) == n && strcmp(b, want) == 0);
+        free(b);
+    }
+    for (size_t len = 1; len <= n; len++) {
+        char *t = malloc(len); /* exactly len bytes: ASan sees any overrun */
+        CHECK(t != NULL);
+        if (!t)
+            break;
+        memset(t, 'Z', len);
+        CHECKF(ts_error_message(&e, NULL, t, len) == n && strlen(t) == len - 1 &&
+                   strncmp(t, want, len - 1) == 0,
+               "len %zu", len);
+        free(t);
+    }
+    char one = 'Z';
+    CHECK(ts_error_message(&e, NULL, &one, 0) == n && one == 'Z'); /* len 0: nothing written */
+    /* a long sentence truncated in the middle of a number */
+    double x[] = {0, 1}, f[] = {-0.30000000000000004, 1};
+    ts_options o;
+    ts_options_init(&o);
+    o.shape = TS_SHAPE_POSITIVE;
+    ts_error_context c = spline_ctx(x, f, 2, &o);
+    ts_error ne = {TS_ERR_NEGATIVE, 0, TS_WHERE_POINT};
+    size_t full = ts_error_message(&ne, &c, NULL, 0);
+    char small[24];
+    CHECK(ts_error_message(&ne, &c, small, sizeof small) == full && full > sizeof small &&
+          strcmp(small, "point 0 (x = 0, f = -0.") == 0);
+
+    TH_CASE("NULL error, no context, foreign context");
+    EXPECT(NULL, NULL, "a required pointer argument is NULL");
+    ts_error pt = {TS_ERR_TOO_LARGE, 4, TS_WHERE_POINT};
+    EXPECT(&pt, NULL, "point 4: a data or control value exceeds DBL_MAX/4: the spline could "
+                      "overflow");
+    ts_error ok = {TS_OK, TS_NO_INDEX, TS_WHERE_NONE};
+    EXPECT(&ok, NULL, "success");
+    ts_error_context_init(&c);
+    c.struct_size = 8;
+    c.x = x; /* not read */
+    EXPECT(&pt, &c, "point 4: a data or control value exceeds DBL_MAX/4: the spline could "
+                    "overflow (error context of another version ignored)");
+    ts_error odd = {TS_ERR_INDEX, 7, (ts_where)9}; /* a where out of range */
+    EXPECT(&odd, NULL, "index 7: index out of range");
+    ts_error_context_init(NULL); /* no-op */
+}
+
+int main(void)
+{
+    test_numbers();
+    test_spline_points();
+    test_spline_intervals();
+    test_surface_and_curve();
+    test_buffers();
+    return th_report("error_message");
+}
