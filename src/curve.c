@@ -123,7 +123,7 @@ static void seg_controls(ts_curve *c, size_t i)
 {
     size_t dim = c->dim;
     double h = c->t[i + 1] - c->t[i];
-    double k = 2.0 * h / (3.0 * TS_PI * (c->alpha[i] + c->beta[i]));
+    double k = ts__geo_k(h, c->alpha[i] + c->beta[i]);
     const double *p0 = c->p + i * dim, *p1 = p0 + dim;
     const double *d0 = c->d + i * dim, *d1 = d0 + dim;
     double *q = c->ctrl + i * 4 * dim;
@@ -404,7 +404,7 @@ static ts_status curve_knots(ts_curve *c, size_t m, ts_error *err)
 static double box_rule(const ts_curve *c, size_t i, double a, ts_term *bt)
 {
     size_t dim = c->dim;
-    double K = 2.0 * (c->t[i + 1] - c->t[i]) / (3.0 * TS_PI), best = 0.0;
+    double K = ts__geo_K(c->t[i + 1] - c->t[i]), best = 0.0;
     int t = TS_TERM_MARGIN;
     for (size_t k = 0; k < dim; k++) {
         double f0 = c->p[i * dim + k], f1 = c->p[(i + 1) * dim + k];

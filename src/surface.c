@@ -261,7 +261,7 @@ static ts_status scheme_a(ts_surface *s, const ts_surface_options *o, int dir, t
     const double *t = dir ? s->y : s->x;
     double *a = dir ? s->ay : s->ax;
     for (size_t i = 0; i < n; i++) {
-        double K = 2.0 * (t[i + 1] - t[i]) / (3.0 * TS_PI), T = 0.0;
+        double K = ts__geo_K(t[i + 1] - t[i]), T = 0.0;
         for (size_t L = 0; L < lines; L++) {
             for (int end = 0; end < 2; end++) {
                 size_t node = dir ? (i + (size_t)end) * np + L : L * np + i + (size_t)end;
@@ -312,8 +312,8 @@ static void clamp_twists(ts_surface *s)
                     (!cy && j == s->ny))
                     continue;
                 size_t pi = i - (size_t)cx, pj = j - (size_t)cy;
-                double ux = 2.0 * (s->x[pi + 1] - s->x[pi]) / (3.0 * TS_PI * s->ax[pi]);
-                double uy = 2.0 * (s->y[pj + 1] - s->y[pj]) / (3.0 * TS_PI * s->ay[pj]);
+                double ux = ts__geo_k(s->x[pi + 1] - s->x[pi], s->ax[pi]);
+                double uy = ts__geo_k(s->y[pj + 1] - s->y[pj], s->ay[pj]);
                 double sx = cx ? -1.0 : 1.0, sy = cy ? -1.0 : 1.0;
                 for (int side = 0; side < 2; side++) {
                     if (!(side ? s->has_upper : s->has_lower))

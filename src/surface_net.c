@@ -119,14 +119,14 @@ void ts__surf_basis_int(const double *t, const double *a, size_t i, ts_form form
 double ts__surf_k(const double *t, const double *a, size_t n, size_t i, size_t node,
                   ts_form form)
 {
-    double K = 2.0 * (t[i + 1] - t[i]) / (3.0 * TS_PI), am = a[i];
+    double am = a[i];
     if (form == TS_FORM_C1) {
         if (node > 0 && a[node - 1] > am)
             am = a[node - 1];
         if (node < n && a[node] > am)
             am = a[node];
     }
-    return K / am;
+    return ts__geo_k(t[i + 1] - t[i], am);
 }
 
 void ts__surf_net(ts_surface *s)
