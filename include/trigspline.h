@@ -859,8 +859,10 @@ TS_API void ts_surface_options_init(ts_surface_options *opt);
  *   TS_ERR_SIDE        BOUNDS: a node outside [lower.c, upper.c]; PLANES: a node on
  *                      or across a plane
  *   TS_ERR_INFEASIBLE  a patch whose control values, as rounded, leave the region
- *                      (the rule of §11.3 is a proof in exact arithmetic; this
- *                      is rounding, e.g. a node 1e-16 relative from a plane),
+ *                      even after a^x, a^y of its column and row were raised
+ *                      tenfold up to 12 times (docs/method.md §11.6; the rule
+ *                      of §11.3 is a proof in exact arithmetic; this is
+ *                      rounding, e.g. a node 1e-16 relative from a plane),
  *                      or whose a would exceed 1e300 (a node gap near the
  *                      underflow threshold next to a slope); index = the patch
  *   TS_ERR_NOMEM

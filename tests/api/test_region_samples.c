@@ -15,7 +15,9 @@
  *    planes in the geometric form), grids at offsets up to 1e9 and scales
  *    1e-3..1e6: scalar, batch and grid values on a lattice inside the region
  *    (constant bounds compared exactly; planes strictly, the side decided
- *    exactly, tests/common/th_exact.h).
+ *    exactly, tests/common/th_exact.h);
+ *  - surfaces whose control values the scheme's a leaves on a sloped plane
+ *    by rounding, certified by raising a (docs/method.md §11.6).
  * Each property prints objects, samples and samples outside (which must be
  * 0).  Fixed seeds. */
 #include "th.h"
@@ -304,6 +306,63 @@ static void surfaces_touching(const scase *sc, th_rng *r)
     CHECK(t.outside == 0);
 }
 
+/* docs/method.md §11.6: a surface refused by its control values at the
+ * scheme's a, certified by raising a.  Geometric form, upper plane
+ * z = −2^30 x − 18.88 y + 1.001 over x in [−6, −5] (the plane near 6e9),
+ * nodes 1e-3..1 below it (log-uniform): the plane's rounding at the control
+ * abscissae leaves control values on the plane at a ≈ 1 (210 of 400 such
+ * grids were refused, TS_ERR_INFEASIBLE); a ~1000 certifies.  Every grid
+ * must be built, pass ts_surface_certify, and sample strictly below. */
+static void surfaces_raised_a(void)
+{
+    th_rng r = TH_RNG_INIT(1000);
+    tally t;
+    memset(&t, 0, sizeof t);
+    long raised = 0;
+    const ts_plane up = {-1073741824.0, -18.88, 1.001};
+    for (int rep = 0; rep < 100; rep++) {
+        double x[5], y[5], z[25];
+        for (int k = 0; k < 5; k++) {
+            x[k] = -6.0 + 0.25 * k + (rep % 7) * 0.01;
+            y[k] = 0.5 * k;
+        }
+        for (int n = 0; n < 25; n++)
+            z[n] = up.p * x[n % 5] + up.q * y[n / 5] + up.c - th_rng_logu(&r, 1e-3, 1.0);
+        ts_surface_options o;
+        ts_surface_options_init(&o);
+        o.form = TS_FORM_GEOMETRIC;
+        o.shape = TS_SURFACE_PLANES;
+        o.has_upper = 1;
+        o.upper = up;
+        ts_surface *s = NULL;
+        ts_error e;
+        t.tried++;
+        ts_status st = ts_surface_new(x, 5, y, 5, z, &o, &s, &e);
+        CHECKF(st == TS_OK, "grid %d: %s at patch %zu", rep, ts_strerror(st), e.index);
+        if (!s)
+            continue;
+        t.built++;
+        CHECK(ts_surface_certify(s, NULL, &up, NULL, &e) == TS_OK);
+        double amax = 0.0;
+        for (int k = 0; k < 4; k++)
+            amax = fmax(amax, fmax(ts_surface_ax(s)[k], ts_surface_ay(s)[k]));
+        raised += amax >= 10.0;
+        for (int b = 0; b <= 16; b++)
+            for (int a = 0; a <= 16; a++) {
+                double xv = fmin(x[0] + (x[4] - x[0]) * a / 16.0, x[4]);
+                double yv = fmin(y[0] + (y[4] - y[0]) * b / 16.0, y[4]), v;
+                CHECK(ts_surface_eval(s, xv, yv, NULL, &v, NULL, NULL) == TS_OK);
+                t.samples++;
+                if (th_plane_side(v, up.p, up.q, up.c, xv, yv) != -1)
+                    t.outside++;
+            }
+        ts_surface_free(s);
+    }
+    print_tally("geometric sloped planes, raised a", &t);
+    printf("  (%ld of %ld with an a raised tenfold or more)\n", raised, t.built);
+    CHECK(raised > 10 && t.outside == 0);
+}
+
 int main(void)
 {
     TH_CASE("end knot of a boxed curve, scale 1e17");
@@ -333,6 +392,8 @@ int main(void)
         {"geometric sloped planes upper", TS_FORM_GEOMETRIC, TS_SURFACE_PLANES, 0, 1, 1},
         {"geometric sloped planes between", TS_FORM_GEOMETRIC, TS_SURFACE_PLANES, 1, 1, 1},
     };
+    TH_CASE("surfaces certified by raising a");
+    surfaces_raised_a();
     th_rng r = TH_RNG_INIT(33);
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
         TH_CASE(cases[c].name);
