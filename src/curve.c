@@ -603,7 +603,16 @@ static void seg_eval(const ts_curve *c, size_t i, double delta, double *p, doubl
             B[3] = b0;
         }
         ts__seg_sc(B, s, co, want, o); /* docs/method.md §2, (2.1) */
-        if (r)
+        if (!isfin(o[0])) {
+            /* differences B_l − B0 beyond DBL_MAX (control values near it of
+             * both signs): the same sums on B/4 (exact), then times 4; the
+             * value, a convex combination, is finite */
+            double Bq[4] = {0.25 * B[0], 0.25 * B[1], 0.25 * B[2], 0.25 * B[3]};
+            ts__seg_sc(Bq, s, co, want, o);
+            for (int l = 0; l <= want; l++)
+                o[l] *= 4.0;
+        }
+        if (r && want > 0)
             o[1] = -o[1];
         if (p) {
             double v = o[0];
