@@ -108,8 +108,8 @@ int main(void)
             long double h = ldexpl((long double)x[1] - (long double)x[0], -763);
             long double kk = 2.0L / (3.0L * 3.14159265358979323846264L) * h;
             long double Q = 56.0L / 5.0L - 111.0L * 3.14159265358979323846264L / 32.0L;
-            long double I = h * (ldexpl(f[0], -896) + ldexpl(f[1], -896)) / 2.0L +
-                            kk * (ldexpl(d[0], -133) - ldexpl(d[1], -133)) * (0.4L * h - Q * kk);
+            long double I = h * (ldexpl((long double)f[0], -896) + ldexpl((long double)f[1], -896)) / 2.0L +
+                            kk * (ldexpl((long double)d[0], -133) - ldexpl((long double)d[1], -133)) * (0.4L * h - Q * kk);
             /* I 2^1659 < -DBL_MAX with a margin far above any rounding */
             CHECKF(I < -2.0L * ldexpl((long double)DBL_MAX, -1659), "reference %Lg 2^1659", I);
             CHECK(ts_integral(s, x[0], x[1], &r) == TS_OK && r == -(double)INFINITY);

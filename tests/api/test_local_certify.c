@@ -341,7 +341,7 @@ static void sloped_line(void)
         /* 1e-3 of the gap: the long double reference's rounding (2^-63 of
          * the terms, ~1e-19) and grid; where long double is double (valgrind)
          * the reference's own rounding, 16ε (max|C_l| + |κ| π/2) <= 16ε·2 */
-        long double tol = th_long_double_wide() ? 1e-3L * knot : 32.0L * DBL_EPSILON;
+        long double tol = th_long_double_wide() ? 1e-3L * knot : 32.0L * (long double)DBL_EPSILON;
         CHECKF(g > 0 && g >= knot - tol, "a = 1, interval %d: exact min %.6Lg, knot gap %.6Lg",
                i, g, knot);
     }

@@ -43,7 +43,7 @@ static void slopes_no_intermediate_overflow(void)
     long double D[3], H[3];
     for (int j = 0; j < 3; j++) {
         H[j] = (long double)x[j + 1] - (long double)x[j];
-        D[j] = (ldexpl(f[j + 1], -4) - ldexpl(f[j], -4)) / H[j];
+        D[j] = (ldexpl((long double)f[j + 1], -4) - ldexpl((long double)f[j], -4)) / H[j];
     }
     long double want[4];
     want[0] = D[0] + (D[0] - D[1]) * H[0] / (H[0] + H[1]);
