@@ -16,6 +16,8 @@
  *    1e-3..1e6: scalar, batch and grid values on a lattice inside the region
  *    (constant bounds compared exactly; planes strictly, the side decided
  *    exactly, tests/common/th_exact.h);
+ *  - surfaces whose nodes lie one to nine ulps beyond a plane (constant in
+ *    every form, sloped in the geometric form), where the sums round onto it;
  *  - surfaces whose control values the scheme's a leaves on a sloped plane
  *    by rounding, certified by raising a (docs/method.md §11.6).
  * Each property prints objects, samples and samples outside (which must be
@@ -363,6 +365,81 @@ static void surfaces_raised_a(void)
     CHECK(raised > 10 && t.outside == 0);
 }
 
+/* Nodes one or a few ulps beyond a plane (constant in every form, sloped in
+ * the geometric form; lower and upper): the sums Σ A_k Σ A_l B_kl round
+ * onto the plane (before: 5–19 of 3721 values per constant case on it),
+ * and the returned value must be strictly beyond, decided exactly. */
+static void surfaces_ulps_from_plane(void)
+{
+    tally t;
+    memset(&t, 0, sizeof t);
+    const double x[4] = {0, 1, 2.5, 3}, y[4] = {0, 0.7, 2, 3};
+    static double xq[61], yq[61], bx[61 * 61], by[61 * 61], bz[61 * 61], grid[61 * 61];
+    for (int k = 0; k <= 60; k++)
+        xq[k] = yq[k] = 3.0 * k / 60.0;
+    for (int b = 0; b <= 60; b++)
+        for (int a = 0; a <= 60; a++) {
+            bx[b * 61 + a] = xq[a];
+            by[b * 61 + a] = yq[b];
+        }
+    for (int form = 0; form < 3; form++)
+        for (int sloped = 0; sloped < (form == TS_FORM_GEOMETRIC ? 2 : 1); sloped++)
+            for (int side = 0; side < 2; side++) {
+                ts_plane pl = {sloped ? 0.5 : 0.0, sloped ? 0.25 : 0.0, 1.0};
+                double sg = side ? -1.0 : 1.0, z[16];
+                for (int n = 0; n < 16; n++) {
+                    /* the first double strictly beyond the plane, then 0 or 8 ulps more */
+                    double v = pl.p * x[n % 4] + pl.q * y[n / 4] + pl.c;
+                    while (th_plane_side(v, pl.p, pl.q, pl.c, x[n % 4], y[n / 4]) != (int)sg)
+                        v = nextafter(v, sg * TH_INF);
+                    /* sloped: 256 ulps more (within the plane's rounding
+                     * guard at the control abscissae, §11.3, a node one ulp
+                     * beyond, or 64, is not provable) */
+                    for (int k = 0; k < (n % 3 ? 8 : 0) + (sloped ? 256 : 0); k++)
+                        v = nextafter(v, sg * TH_INF);
+                    z[n] = v;
+                }
+                ts_surface_options o;
+                ts_surface_options_init(&o);
+                o.form = (ts_form)form;
+                o.shape = TS_SURFACE_PLANES;
+                if (side) {
+                    o.has_upper = 1;
+                    o.upper = pl;
+                } else {
+                    o.has_lower = 1;
+                    o.lower = pl;
+                }
+                ts_surface *s = NULL;
+                ts_error e;
+                t.tried++;
+                ts_status st = ts_surface_new(x, 4, y, 4, z, &o, &s, &e);
+                CHECKF(st == TS_OK, "form %d sloped %d side %d: %s", form, sloped, side,
+                       ts_strerror(st));
+                if (!s)
+                    continue;
+                t.built++;
+                CHECK(ts_surface_eval_grid(s, xq, 61, yq, 61, grid, &e) == TS_OK);
+                CHECK(ts_surface_eval_batch(s, bx, by, 61 * 61, bz, NULL, NULL, &e) == TS_OK);
+                for (int n = 0; n < 61 * 61; n++) {
+                    double v;
+                    CHECK(ts_surface_eval(s, bx[n], by[n], NULL, &v, NULL, NULL) == TS_OK);
+                    const double vals[3] = {v, bz[n], grid[n]};
+                    for (int w = 0; w < 3; w++) {
+                        t.samples++;
+                        if (th_plane_side(vals[w], pl.p, pl.q, pl.c, bx[n], by[n]) != (int)sg) {
+                            t.outside++;
+                            CHECKF(t.outside > 5, "form %d sloped %d side %d: %.17g at (%g, %g)",
+                                   form, sloped, side, vals[w], bx[n], by[n]);
+                        }
+                    }
+                }
+                ts_surface_free(s);
+            }
+    print_tally("planes, nodes ulps beyond them", &t);
+    CHECK(t.built == t.tried && t.outside == 0);
+}
+
 int main(void)
 {
     TH_CASE("end knot of a boxed curve, scale 1e17");
@@ -392,6 +469,8 @@ int main(void)
         {"geometric sloped planes upper", TS_FORM_GEOMETRIC, TS_SURFACE_PLANES, 0, 1, 1},
         {"geometric sloped planes between", TS_FORM_GEOMETRIC, TS_SURFACE_PLANES, 1, 1, 1},
     };
+    TH_CASE("nodes ulps beyond a plane");
+    surfaces_ulps_from_plane();
     TH_CASE("surfaces certified by raising a");
     surfaces_raised_a();
     th_rng r = TH_RNG_INIT(33);
