@@ -774,7 +774,11 @@ typedef struct ts_curve_options {
      * the coordinates of the lower/upper-boundary rule with a constant line
      * (and margin t), then every segment and coordinate is certified exactly;
      * where a certificate fails (rounding only: the rule is rigorous for a
-     * constant bound), beta_i is raised by bisection. */
+     * constant bound), beta_i is raised by bisection.  Evaluation returns
+     * points in the box, sides included (ts_curve_eval, ts_curve_sample):
+     * a coordinate that rounding puts beyond a side is set to that side,
+     * a move no larger than its rounding error, as the exact point is
+     * inside (docs/method.md §7 "Evaluation inside the box"). */
     int has_lo[3], has_hi[3];
     double lo[3], hi[3];
     double margin;           /* default TS_DEFAULT_MARGIN; checked only with a box */
@@ -833,7 +837,9 @@ TS_API ts_status ts_curve_params(const ts_curve *c, size_t i, double *alpha, dou
 
 /* Point, first and second derivative in t (each may be NULL; dim doubles; set
  * to NaN first when c is not NULL).  At an inner knot the right-hand segment
- * is used.  Open curves: t outside [t0, tn] or NaN/Inf is TS_ERR_DOMAIN.
+ * is used.  Each segment is evaluated from its nearer end: knots return the
+ * data points exactly; with a box the point is in the box (see the box
+ * options).  Open curves: t outside [t0, tn] or NaN/Inf is TS_ERR_DOMAIN.
  * Closed curves wrap any finite t periodically (t = tn gives segment 0 at
  * t0); NaN/Inf is TS_ERR_DOMAIN.  cur may be NULL.  No allocation.
  * TS_OK, TS_ERR_NULL, TS_ERR_DOMAIN. */
@@ -1016,8 +1022,10 @@ TS_API void ts_surface_options_init(ts_surface_options *opt);
  *   TS_ERR_SIDE        BOUNDS: a node outside [lower.c, upper.c]; PLANES: a node on
  *                      or across a plane
  *   TS_ERR_INFEASIBLE  a patch whose control values, as rounded, leave the region
- *                      (the rule of §11.3 is a proof in exact arithmetic; this
- *                      is rounding, e.g. a node 1e-16 relative from a plane),
+ *                      even after a^x, a^y of its column and row were raised
+ *                      tenfold up to 12 times (docs/method.md §11.6; the rule
+ *                      of §11.3 is a proof in exact arithmetic; this is
+ *                      rounding, e.g. a node 1e-16 relative from a plane),
  *                      or whose a would exceed 1e300 (a node gap near the
  *                      underflow threshold next to a slope); index = the patch
  *   TS_ERR_NOMEM
@@ -1043,7 +1051,15 @@ TS_API const double *ts_surface_ay(const ts_surface *s);  /* ny: a^y_j */
 TS_API ts_form ts_surface_form(const ts_surface *s);
 TS_API ts_surface_shape ts_surface_shape_of(const ts_surface *s);
 /* 1 when a scheme was applied and every patch is proven inside its region
- * (always, when ts_surface_new succeeded with a scheme); 0 for NONE. */
+ * (always, when ts_surface_new succeeded with a scheme); 0 for NONE.
+ * Values returned by ts_surface_eval, _eval_batch and _eval_grid of a
+ * certified surface are in the region in floating point: a value that
+ * rounding puts beyond a constant bound (positive, bounds, range) is set to
+ * the bound, one on or across a plane (planes) to the nearest doubles
+ * strictly beyond it (decided exactly); the move is at most the value's
+ * rounding error (plus one ulp of the plane's value for planes), as the
+ * exact surface is inside (docs/method.md §11.5 "Values inside the
+ * region").  Partial derivatives are not moved. */
 TS_API int ts_surface_certified(const ts_surface *s);
 
 /* Caller-owned lookup hint: zero-initialise (TS_SURFACE_CURSOR_INIT) or NULL. */

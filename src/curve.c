@@ -592,22 +592,60 @@ ts_status ts_curve_params(const ts_curve *c, size_t i, double *alpha, double *be
     return TS_OK;
 }
 
-/* Point and derivatives of segment i at delta in [0, 1]. */
+/* Point and derivatives of segment i at delta in [0, 1], formed from the
+ * nearer end as the 1-D spline (docs/method.md §3 "Evaluation", §7): past
+ * the midpoint the control values are reversed and sin, cos exchanged
+ * (ϑ = π/2 − θ, dϑ/dθ = −1), so both knots are exact and the error near
+ * either end is an ulp of that end's value.  With a box the point is then
+ * clamped into it (docs/method.md §7 "Evaluation inside the box"). */
 static void seg_eval(const ts_curve *c, size_t i, double delta, double *p, double *dp,
                      double *d2p)
 {
     double s, co, B[4], o[3];
     double h = c->t[i + 1] - c->t[i], w = TS_HALF_PI / h;
     int want = d2p ? 2 : dp ? 1 : 0;
+    int r = 1.0 - delta < delta; /* 1 − delta is exact for delta >= 1/2 */
     sincos_delta(delta, &s, &co);
+    if (r) {
+        double tmp = s;
+        s = co;
+        co = tmp;
+    }
     /* a subnormal step (chord length of points ~1e-310 apart) makes w = inf:
      * divide by h instead, so dP/dt stays finite (d²P/dt² ~ 1/h may not) */
     int wf = isfin(w);
     for (size_t k = 0; k < c->dim; k++) {
         ctrl_coord(c, i, k, B);
+        if (r) {
+            double b0 = B[0], b1 = B[1];
+            B[0] = B[3];
+            B[1] = B[2];
+            B[2] = b1;
+            B[3] = b0;
+        }
         ts__seg_sc(B, s, co, want, o); /* docs/method.md §2, (2.1) */
-        if (p)
-            p[k] = o[0];
+        if (!isfin(o[0])) {
+            /* differences B_l − B0 beyond DBL_MAX (control values near it of
+             * both signs): the same sums on B/4 (exact), then times 4; the
+             * value, a convex combination, is finite */
+            double Bq[4] = {0.25 * B[0], 0.25 * B[1], 0.25 * B[2], 0.25 * B[3]};
+            ts__seg_sc(Bq, s, co, want, o);
+            for (int l = 0; l <= want; l++)
+                o[l] *= 4.0;
+        }
+        if (r && want > 0)
+            o[1] = -o[1];
+        if (p) {
+            double v = o[0];
+            /* the exact point is inside the certified box: a value outside
+             * it is rounding, moved onto the side (the closed box, sides
+             * included, as the data may lie on them) */
+            if (c->box.has_lo[k] && v < c->box.lo[k])
+                v = c->box.lo[k];
+            if (c->box.has_hi[k] && v > c->box.hi[k])
+                v = c->box.hi[k];
+            p[k] = v;
+        }
         if (dp)
             dp[k] = wf ? o[1] * w : o[1] * TS_HALF_PI / h;
         if (d2p)

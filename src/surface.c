@@ -333,6 +333,60 @@ static void clamp_twists(ts_surface *s)
     }
 }
 
+/* Are the control gaps of patch c inside every side (docs/method.md §11.3)? */
+static int patch_inside(const ts_surface *s, size_t c)
+{
+    for (int side = 0; side < 2; side++) {
+        if (!(side ? s->has_upper : s->has_lower))
+            continue;
+        double G[16], guard;
+        ts__surf_gaps(s, c % s->nx, c / s->nx, side ? &s->upper : &s->lower, 1 - 2 * side, G,
+                      &guard);
+        if (!ts__surf_gaps_inside(G, guard))
+            return 0;
+    }
+    return 1;
+}
+
+/* docs/method.md §11.6: where rounding leaves a patch's control values on or
+ * across a side, raise a^x and a^y of its column and row tenfold (at most
+ * REPAIR_ROUNDS times, a <= 1e300), clamp the twists again and rebuild the
+ * net, until every patch is proven; else TS_ERR_INFEASIBLE at the first
+ * patch that is not.  flag: nx + ny scratch doubles. */
+#define REPAIR_ROUNDS 12
+static ts_status repair(ts_surface *s, double *flag, ts_error *err)
+{
+    size_t nx = s->nx, ny = s->ny;
+    for (int round = 0;; round++) {
+        size_t bad = SIZE_MAX;
+        for (size_t k = 0; k < nx + ny; k++)
+            flag[k] = 0.0;
+        for (size_t c = 0; c < nx * ny; c++)
+            if (!patch_inside(s, c)) {
+                bad = bad == SIZE_MAX ? c : bad;
+                flag[c % nx] = flag[nx + c / nx] = 1.0;
+            }
+        if (bad == SIZE_MAX)
+            return TS_OK;
+        if (round == REPAIR_ROUNDS)
+            return ts__fail(err, TS_ERR_INFEASIBLE, bad, TS_WHERE_INTERVAL);
+        for (size_t k = 0; k < nx + ny; k++) {
+            double *a = k < nx ? s->ax + k : s->ay + (k - nx);
+            if (flag[k] != 0.0) {
+                if (!(*a * 10.0 <= 1e300))
+                    return ts__fail(err, TS_ERR_INFEASIBLE, bad, TS_WHERE_INTERVAL);
+                *a *= 10.0;
+            }
+        }
+        clamp_twists(s);
+        ts__surf_net(s);
+        for (size_t c = 0; c < nx * ny; c++)
+            for (size_t k = 0; k < 16; k++)
+                if (!isfinite(s->B[16 * c + k]))
+                    return ts__fail(err, TS_ERR_NONFINITE, c, TS_WHERE_INTERVAL);
+    }
+}
+
 static void release(ts_surface *s)
 {
     if (!s)
@@ -430,19 +484,8 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
                 st = ts__fail(err, TS_ERR_NONFINITE, c, TS_WHERE_INTERVAL);
                 goto fail;
             }
-    for (size_t c = 0; c < nx * ny; c++) {
-        for (int side = 0; side < 2; side++) {
-            if (!(side ? s->has_upper : s->has_lower))
-                continue;
-            double G[16], guard;
-            ts__surf_gaps(s, c % nx, c / nx, side ? &s->upper : &s->lower, 1 - 2 * side, G,
-                          &guard);
-            if (!ts__surf_gaps_inside(G, guard)) {
-                st = ts__fail(err, TS_ERR_INFEASIBLE, c, TS_WHERE_INTERVAL);
-                goto fail;
-            }
-        }
-    }
+    if ((st = repair(s, tmp, err)) != TS_OK)
+        goto fail;
     s->certified = o->shape != TS_SURFACE_NONE;
     *out = s;
     return TS_OK;

@@ -17,6 +17,63 @@ static void set_nan(double *v)
         *v = (double)NAN;
 }
 
+/* Is sg (v − plane(x, y)) > 0, exactly?  By the accurate plane value where
+ * v is farther from it than twice its error bound, else by the exact sum
+ * (p x = P + e, q y = Q + f by fma); -1 where undecidable (a term beyond
+ * ts__exact_sign's range). */
+static int strictly_beyond(const ts_plane *pl, double x, double y, double v, double sg)
+{
+    double err, L = ts__surf_plane_at(pl, x, y, &err), g = sg * (v - L), t[6];
+    if (fabs(g) > 2.0 * err)
+        return g > 0.0;
+    if (!ts__exact_product(pl->p, x, -sg, t) || !ts__exact_product(pl->q, y, -sg, t + 2) ||
+        !(fabs(pl->c) <= 0x1p1020) || !(fabs(v) <= 0x1p1020))
+        return -1;
+    t[4] = -sg * pl->c;
+    t[5] = sg * v;
+    return ts__exact_sign(t, 6) > 0;
+}
+
+/* v moved strictly beyond a plane (sg = +1: above the lower, −1: below the
+ * upper) where rounding put it on or across it: the nearest doubles beyond
+ * the plane's rounded value, then that value moved by 4 of its error
+ * bounds (docs/method.md §11.5, "Values inside the region"). */
+static double beyond_plane(const ts_plane *pl, double x, double y, double v, double sg)
+{
+    if (strictly_beyond(pl, x, y, v, sg) != 0)
+        return v;
+    double err, r = ts__surf_plane_at(pl, x, y, &err);
+    for (int k = 0; k < 4; k++) {
+        if (strictly_beyond(pl, x, y, r, sg) == 1)
+            return r;
+        r = nextafter(r, sg * (double)INFINITY);
+    }
+    r = ts__surf_plane_at(pl, x, y, NULL) + sg * 4.0 * err;
+    return strictly_beyond(pl, x, y, r, sg) == 1 ? r : v;
+}
+
+/* A value of a certified surface in its region (docs/method.md §11.5):
+ * the exact surface at the point evaluated is inside, so a value outside
+ * is rounding and the side (constant bounds, closed) or the nearest double
+ * beyond the plane (planes, open) is nearer the exact value than it. */
+static double into_region(const ts_surface *s, double x, double y, double v)
+{
+    if (s->shape == TS_SURFACE_NONE)
+        return v;
+    if (s->shape != TS_SURFACE_PLANES) {
+        if (s->has_lower && v < s->lower.c)
+            v = s->lower.c;
+        if (s->has_upper && v > s->upper.c)
+            v = s->upper.c;
+        return v;
+    }
+    if (s->has_lower)
+        v = beyond_plane(&s->lower, x, y, v, 1.0);
+    if (s->has_upper)
+        v = beyond_plane(&s->upper, x, y, v, -1.0);
+    return v;
+}
+
 /* Value (and partials when zx/zy) at a point known to be on the grid. */
 static void eval_at(const ts_surface *s, double x, double y, ts_surface_cursor *cur, double *z,
                     double *zx, double *zy)
@@ -42,7 +99,7 @@ static void eval_at(const ts_surface *s, double x, double y, ts_surface_cursor *
             vy += Ax[k] * cy;
         }
     }
-    *z = v;
+    *z = into_region(s, x, y, v);
     if (zx)
         *zx = vx;
     if (zy)
@@ -139,7 +196,9 @@ ts_status ts_surface_eval_grid(const ts_surface *s, const double *xq, size_t mx,
                         C[k] = Ay[0] * B[4 * k] + Ay[1] * B[4 * k + 1] + Ay[2] * B[4 * k + 2] +
                                Ay[3] * B[4 * k + 3];
                 }
-                row[a] = Ax[a][0] * C[0] + Ax[a][1] * C[1] + Ax[a][2] * C[2] + Ax[a][3] * C[3];
+                row[a] = into_region(s, xq[a0 + a], v,
+                                     Ax[a][0] * C[0] + Ax[a][1] * C[1] + Ax[a][2] * C[2] +
+                                         Ax[a][3] * C[3]);
             }
         }
     }

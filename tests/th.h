@@ -18,6 +18,7 @@
  */
 #ifndef TS_TH_H
 #define TS_TH_H
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -34,6 +35,17 @@
 #define TH_INF ((double)INFINITY)
 
 static long th_pass_, th_fail_;
+
+/* 1 when long double arithmetic is wider than double at run time (x87:
+ * 64-bit significand, 15-bit exponent); 0 where it is double, e.g. under
+ * valgrind, which emulates x87 in 64-bit doubles.  Tests whose reference
+ * needs the wider type take a reference that does not, or widen their
+ * tolerance to the double reference's own rounding, when this is 0. */
+static inline int th_long_double_wide(void)
+{
+    volatile long double one = 1.0L, tiny = 0x1p-60L, big = 0x1p1000L;
+    return one + tiny != one && big * big > (long double)DBL_MAX;
+}
 
 /* ---- named cases --------------------------------------------------------- */
 #define TH_MAX_CASES 64

@@ -96,18 +96,22 @@ int main(void)
         /* The whole-interval closed form of docs/method.md §4,
          * h (f0 + f1)/2 + k (d0 - d1)(2h/5 - Q k), k = 2h/(3πa): here both
          * terms overflow with opposite signs (inf - inf was NaN).  The true
-         * value, in long double (range 1e4932), is about -1e1127: -Inf. */
+         * value is about -1e1127: -Inf.  Reference: the formula on the
+         * data scaled by powers of 2 (exact), h 2^-763, f 2^-896, d 2^-133,
+         * so I 2^-1659 is formed without overflow in double as in long
+         * double (valgrind computes long double in double precision). */
         const double x[2] = {0x1.dcd6529p+29, 0x1.f350d836faf35p+763};
         const double f[2] = {0x1.dfdcp+14, -0x1.7f7f7f7f7f7f7p+896};
         double d[2] = {0.0, -0x1.893d775c89f62p+133};
         ts_spline *s = flat_slopes(x, f, 2, d, TS_FORM_GEOMETRIC);
         if (s) {
-            long double h = (long double)x[1] - (long double)x[0];
+            long double h = ldexpl((long double)x[1] - (long double)x[0], -763);
             long double kk = 2.0L / (3.0L * 3.14159265358979323846264L) * h;
             long double Q = 56.0L / 5.0L - 111.0L * 3.14159265358979323846264L / 32.0L;
-            long double I = h * ((long double)f[0] + (long double)f[1]) / 2.0L +
-                            kk * ((long double)d[0] - (long double)d[1]) * (0.4L * h - Q * kk);
-            CHECKF(I < -(long double)DBL_MAX, "reference %Lg", I);
+            long double I = h * (ldexpl((long double)f[0], -896) + ldexpl((long double)f[1], -896)) / 2.0L +
+                            kk * (ldexpl((long double)d[0], -133) - ldexpl((long double)d[1], -133)) * (0.4L * h - Q * kk);
+            /* I 2^1659 < -DBL_MAX with a margin far above any rounding */
+            CHECKF(I < -2.0L * ldexpl((long double)DBL_MAX, -1659), "reference %Lg 2^1659", I);
             CHECK(ts_integral(s, x[0], x[1], &r) == TS_OK && r == -(double)INFINITY);
             CHECK(ts_integral(s, x[1], x[0], &r) == TS_OK && r == (double)INFINITY);
             ts_spline_free(s);

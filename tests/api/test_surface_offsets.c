@@ -9,9 +9,13 @@
  *    representable positions (multiples of the grid's ulp from the patch's
  *    corner) and S − L is formed in long double in local coordinates,
  *    L = p (x − x0) + q (y − y0) + c0 with x − x0 exact: the plane's own
- *    rounding does not blur the check.  Tolerance: 4 ulps of |S| (the
- *    rounding of evaluation itself, which the certificate does not cover,
- *    docs/method.md §5.6: "a knot gap of a few ulps is certified"); the
+ *    rounding does not blur the check.  Tolerance: none for a surface
+ *    built with a scheme (every value it returns is in its region,
+ *    docs/method.md §11.5: on or inside a constant bound, strictly beyond a
+ *    plane; the long double difference of a double and the exact local
+ *    plane has the exact sign); 4 ulps of |S| for a surface without one
+ *    certified afterwards by ts_surface_certify (its values are not moved
+ *    into a region it does not have: the rounding of evaluation); the
  *    defect of finding 1 is |p| times an ulp of x, 0.125·|p| at 1e15;
  *  - translation invariance: the same z on the grid shifted to 0 with the
  *    planes translated exactly (c0 = c + p x0 + q y0, checked exact): the
@@ -78,9 +82,11 @@ typedef struct scase {
 
 /* Sample the certified patches of s against the planes; dx, dy: offsets of
  * the grid from x0, y0 (exact). */
-static void sample(const ts_surface *s, const double *dx, const double *dy, double x0, double y0,
-                   const lplane *lo, const lplane *up, const int *cert, tally *t, const char *what)
+static void sample(const ts_surface *s, const scase *sc, const double *dx, const double *dy,
+                   double x0, double y0, const lplane *lo, const lplane *up, const int *cert,
+                   tally *t, const char *what)
 {
+    int strict = sc->shape == TS_SURFACE_PLANES && !sc->certify_only;
     double ux = ulp_of(x0 + dx[NPT - 1]), uy = ulp_of(y0 + dy[NPT - 1]);
     for (int j = 0; j < NPT - 1; j++)
         for (int i = 0; i < NPT - 1; i++) {
@@ -100,7 +106,7 @@ static void sample(const ts_surface *s, const double *dx, const double *dy, doub
                         continue;
                     }
                     t->samples++;
-                    double tol = 4.0 * ulp_of(z);
+                    double tol = sc->certify_only ? 4.0 * ulp_of(z) : 0.0;
                     long double g = HUGE_VALL;
                     if (lo) {
                         long double v = (long double)z - plane_local(lo, ddx, ddy);
@@ -110,7 +116,7 @@ static void sample(const ts_surface *s, const double *dx, const double *dy, doub
                         long double v = plane_local(up, ddx, ddy) - (long double)z;
                         g = v < g ? v : g;
                     }
-                    if (g < -(long double)tol) {
+                    if (g < -(long double)tol || (strict && g <= 0.0L)) {
                         t->outside++;
                         if ((double)-g > t->worst)
                             t->worst = (double)-g;
@@ -170,7 +176,7 @@ static ts_status run(const scase *sc, const double *dx, const double *dy, double
         for (int c = 0; c < NPATCH; c++)
             cert[c] = 1;
     }
-    sample(s, dx, dy, x0, y0, lo, up, cert, t, what);
+    sample(s, sc, dx, dy, x0, y0, lo, up, cert, t, what);
     ts_surface_free(s);
     return st;
 }

@@ -23,6 +23,34 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
         }                                                                                \
     } while (0)
 
+/* Counts for the report of a run: executions, certified objects, samples
+ * checked against their region (a sample outside stops the run, so none
+ * is ever counted outside).  Printed at exit (stderr) when TS_FUZZ_STATS
+ * is set in the environment. */
+enum { FUZZ_EXECS, FUZZ_CERTIFIED, FUZZ_SAMPLES };
+static inline long *fuzz_counts(void)
+{
+    static long c[3];
+    return c;
+}
+static inline void fuzz_stats_print(void)
+{
+    long *c = fuzz_counts();
+    fprintf(stderr, "stats: %ld executions, %ld certified objects, %ld samples checked, 0 outside\n",
+            c[FUZZ_EXECS], c[FUZZ_CERTIFIED], c[FUZZ_SAMPLES]);
+}
+/* call first in every execution */
+static inline void fuzz_stats_exec(void)
+{
+    static int registered;
+    if (!registered) {
+        registered = 1;
+        if (getenv("TS_FUZZ_STATS"))
+            atexit(fuzz_stats_print);
+    }
+    fuzz_counts()[FUZZ_EXECS]++;
+}
+
 /* Input bytes taken in order; past the end every read gives 0. */
 typedef struct fuzz_in {
     const uint8_t *p;

@@ -6,13 +6,14 @@
  *  - batch = scalar to 8ε max|B| (kernels.c's measured 3.9ε) plus 64
  *    units of the subnormal spacing: where values are subnormal each of
  *    the expression's ~20 roundings errs by up to 2^-1075 absolutely;
- *  - every certified interval's dense samples inside its region, the line
- *    taken in long double (m x + c of a large x is not blurred by the
- *    double rounding of the line itself); tolerance the same for the
- *    evaluator's own rounding;
+ *  - every certified interval's dense samples (scalar and batch) inside
+ *    its region with ZERO tolerance: S >= 0, and the side of a line
+ *    decided exactly (tests/common/th_exact.h: m x split by fma, the sum's
+ *    sign exact; the data may touch a line, so S on it is inside);
  *  - the monotone scheme's samples monotone in floating point;
  *  - integrals never NaN. */
 #include "fuzz.h"
+#include "../common/th_exact.h"
 #include "trigspline.h"
 
 #include <float.h>
@@ -72,6 +73,7 @@ static void check_spline(const ts_spline *s, const ts_options *o)
     }
     ts_shape shape = ts_spline_shape(s);
     int certified = ts_spline_certified(s);
+    fuzz_counts()[FUZZ_CERTIFIED] += certified && shape != TS_SHAPE_NONE;
     for (size_t j = 0; j < m; j++) {
         size_t i = j / PER < n ? j / PER : n - 1;
         double y, tol = 8 * DBL_EPSILON * Bmax[i] + 64 * DBL_TRUE_MIN;
@@ -84,17 +86,21 @@ static void check_spline(const ts_spline *s, const ts_options *o)
         ts_spline_report(s, i, &r);
         if (!r.certified)
             continue;
-        if (shape == TS_SHAPE_POSITIVE)
-            FUZZ_CHECK(y >= -tol, "positive: S(%.17g) = %.17g", q[j], y);
-        if (shape == TS_SHAPE_ABOVE || shape == TS_SHAPE_BETWEEN) {
-            long double L = (long double)o->lower.m * (long double)q[j] + (long double)o->lower.c;
-            FUZZ_CHECK((long double)y - L > -(long double)tol,
-                       "above: S(%.17g) = %.17g, line %.17Lg", q[j], y, L);
-        }
-        if (shape == TS_SHAPE_BELOW || shape == TS_SHAPE_BETWEEN) {
-            long double U = (long double)o->upper.m * (long double)q[j] + (long double)o->upper.c;
-            FUZZ_CHECK(U - (long double)y > -(long double)tol,
-                       "below: S(%.17g) = %.17g, line %.17Lg", q[j], y, U);
+        fuzz_counts()[FUZZ_SAMPLES] += 2;
+        for (int w = 0; w < 2; w++) {
+            double v = w ? yb[j] : y;
+            const char *how = w ? "batch" : "scalar";
+            if (shape == TS_SHAPE_POSITIVE)
+                FUZZ_CHECK(v >= 0.0, "positive (%s): S(%.17g) = %.17g", how, q[j], v);
+            if (shape == TS_SHAPE_ABOVE || shape == TS_SHAPE_BETWEEN) {
+                int sd = th_plane_side(v, o->lower.m, 0.0, o->lower.c, q[j], 0.0);
+                FUZZ_CHECK(sd >= 0, "above (%s): S(%.17g) = %.17g below the line", how, q[j], v);
+            }
+            if (shape == TS_SHAPE_BELOW || shape == TS_SHAPE_BETWEEN) {
+                int sd = th_plane_side(v, o->upper.m, 0.0, o->upper.c, q[j], 0.0);
+                FUZZ_CHECK(sd <= 0 || sd == 2, "below (%s): S(%.17g) = %.17g above the line", how,
+                           q[j], v);
+            }
         }
     }
     if (shape == TS_SHAPE_MONOTONE) {
@@ -120,6 +126,7 @@ static void check_spline(const ts_spline *s, const ts_options *o)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fuzz_in in = {data, size};
+    fuzz_stats_exec();
     ts_options o;
     ts_options_init(&o);
     unsigned b0 = fuzz_byte(&in), b1 = fuzz_byte(&in);
