@@ -132,8 +132,8 @@ ts_status ts_error_constants_get(ts_form form, double a, ts_error_constants *c)
     return TS_OK;
 }
 
-ts_status ts_error_bound(const ts_spline *s, double fprime_max, double fsecond_max,
-                         int exact_slopes, double *bound, double *per_interval)
+ts_status ts_spline_error_bound(const ts_spline *s, double fprime_max, double fsecond_max,
+                                int exact_slopes, double *bound, double *per_interval)
 {
     if (bound)
         *bound = (double)NAN;
