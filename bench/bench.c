@@ -50,7 +50,7 @@
 #include <time.h>
 #include <unistd.h>
 
-/* ts__fast_batch_isa (src/fast.c): the batch with a chosen kernel (0 portable
+/* ts__fast_batch_isa (src/kernels.c): the batch with a chosen kernel (0 portable
  * C, 1 AVX2+FMA, 2 AVX-512F); returns 0 if that kernel is not available here */
 #include "internal.h"
 
@@ -1266,7 +1266,7 @@ static int child_mt(int random_q, int rounds, double *out_v)
     return 0;
 }
 
-/* The speed goals of issue 15 (1e6 knots, 1e7 queries; ratios of medians of
+/* The speed goals (1e6 knots, 1e7 queries; ratios of medians of
  * one run), every batch row for each kernel: the one ts_spline_eval_batch picks on
  * this CPU (AVX-512F where present), AVX2+FMA, portable C; the paper and C¹
  * forms' sorted batch against GSL steffen, the geometric form against the
@@ -1713,7 +1713,7 @@ int main(int argc, char **argv)
 
     out("\n## Performance goals\n\n");
     out("Ratios of the medians above, at 1e6 knots (%zu queries; the 2-thread rows 1e7). The first seven rows are earlier goals; from "
-        "\"sorted batch\" on, the goals of issue 15, every batch row for the kernel ts_spline_eval_batch picks on this "
+        "\"sorted batch\" on, the speed goals, every batch row for the kernel ts_spline_eval_batch picks on this "
         "CPU (%s), the AVX2+FMA and the portable C kernel; one call per point has no batch kernel; "
         "construction: the shipped library (its target_clones loops run this CPU's version) and, where the "
         "construction-variants table ran it, the variant base (baseline-ISA loops). The 2-thread rows give the "

@@ -9,7 +9,7 @@ through ctypes: one call, so the call overhead is negligible against 1e6 knots).
     python3 bench/bench_python.py [--quick]
 
 Times: the minimum over repetitions (wall clock; the machine may be shared),
-printed with the ratio and the goal of issue 11:
+printed with the ratio and its goal:
   construction at 1e6 knots <= 0.5x SciPy Pchip and <= 1.5x the C library;
   evaluation at 1e7 points <= 0.4x SciPy.
 """

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Coefficients of the sin/cos polynomials of src/fast.c (make bench).
+"""Coefficients of the sin/cos polynomials of src/kernels.c (make bench).
 
 fast.c evaluates, for u = theta/2 in [0, pi/4] (z = u*u),
     sin u ~ u + u*z*(S1 + z*S2 + ... + z^5*S6)

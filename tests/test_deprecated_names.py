@@ -4,7 +4,7 @@ name, and give the new names' results (tests/deprecated_use.c); with
 TS_NO_DEPRECATED they are gone (the program no longer compiles).
 
 Usage: python3 tests/test_deprecated_names.py BUILD_DIR   (standard library only)
-BUILD_DIR holds libtrigspline.a and include/trigspline_version.h.
+BUILD_DIR holds libtrigspline.a and the generated header trigspline_version.h.
 Last line: "test_deprecated_names: N passed, M failed".
 """
 import os

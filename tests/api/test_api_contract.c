@@ -1,4 +1,4 @@
-/* Review regressions: deterministic cases for the defects the review found
+/* Regressions: deterministic cases for defects found
  * and fixed in slopes.c, shape.c, certify.c and curve.c (each case failed
  * before its fix), and the out-parameter conventions of the header
  * ("out-parameters are reset before any check").

@@ -1,4 +1,4 @@
-/* The property test at large offsets (finding 1 and its extension): knots
+/* The property test at large offsets: knots
  * at x0 = 1e9, 1e12, 1e15, 1.7e18 with spacings of a few to a few hundred
  * ulps of x0 (at 1e15: 1 to 100; at 1.7e18: 1e3 to 1e5), every form and
  * every shape scheme, and data near the top of the double range (values

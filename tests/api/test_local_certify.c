@@ -1,4 +1,4 @@
-/* Certificates in local coordinates (issue 18, finding 9; docs/method.md
+/* Certificates in local coordinates (docs/method.md
  * §5.6, §5.8), paper and C¹ forms, line schemes:
  *  - translation invariance: data at x0 = 1e6, 1e9, 1e12 with slope 1e9
  *    and with realistic slopes, and the same data shifted to x0 = 0 with the

@@ -1,7 +1,7 @@
 /* Seeded robustness test: random and hostile input through every public
  * entry point of the library (public header only; the tools' table reader,
  * number conversion and plots are fuzzed by
- * tests/unit/test_random_tool_inputs.c).
+ * tests/tools/test_random_tool_inputs.c).
  *
  * What must hold, whatever the input (header conventions):
  *  - no crash, no leak, no out-of-bounds access (run under ASan by make test);
@@ -290,8 +290,7 @@ static int inside_tol(double v, double tol)
     return v >= -(tol + 64 * 0x1p-1074);
 }
 
-/* Known problems outside the files this test's author may change (see the
- * review report): (1) spline.c accepts a spline whose control values
+/* Known problems this test counts instead of failing on: (1) spline.c accepts a spline whose control values
  * overflow (a tiny positive alpha_i, e.g. 1e-310, gives k_i = K_i/a_i = inf,
  * so S is NaN); (2) eval.c/fast.c/geometric.c compute dθ/dx = (π/2)/h_i,
  * which overflows for h_i < ~1e-308, so S is NaN inside such an interval;

@@ -1,4 +1,4 @@
-/* The edges of the double range (findings of the robustness review):
+/* The edges of the double range:
  *  - slopes of finite data whose secant f_{i+1} − f_i or end-formula term
  *    Δ0 − Δ1 overflows although the slope does not: expected values from
  *    the same docs/method.md §6 formulas evaluated in long double on the
@@ -13,7 +13,7 @@
  *    below 1e-18 of the piece); tolerance 16ε of |S| (b − a), for S bounded
  *    away from 0 on the test data;
  *  - the monotone scheme's samples are monotone in floating point, also
- *    across flat runs (finding 11). */
+ *    across flat runs. */
 #include "th.h"
 #include "common/th_rng.h"
 #include "trigspline.h"

@@ -1,4 +1,4 @@
-/* Refusals say what was proved (findings 8 and 9 of the robustness review):
+/* Refusals say what was proved:
  *  - the C¹ form's search no longer claims infeasibility it has not
  *    proved: x = 0..9, f = 10k + 1 + 0.5 sin k above y = 10x was refused
  *    ("infeasible", interval 4) for every alpha although every uniform a in

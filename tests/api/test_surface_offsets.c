@@ -1,10 +1,9 @@
-/* Surfaces at large offsets (issue 18, findings 1 and 9 for the surfaces of
- * docs/method.md §11): grids x = x0 + Σ hx, y = y0 + Σ hy with x0, y0 in
- * {0, 1e6, 1e9, 1e12, 1e15} and integer spacings 1–100, every form (paper,
- * C¹, geometric) and every scheme (positive, bounds, range, constant planes,
- * and sloped planes in the geometric form; in the paper and C¹ forms sloped
- * planes through ts_surface_certify), random data near the bounds (fixed
- * seed).
+/* Surfaces at large offsets (docs/method.md §11): grids x = x0 + Σ hx,
+ * y = y0 + Σ hy with x0, y0 in {0, 1e6, 1e9, 1e12, 1e15} and integer
+ * spacings 1–100, every form (paper, C¹, geometric) and every scheme
+ * (positive, bounds, range, constant planes, and sloped planes in the
+ * geometric form; in the paper and C¹ forms sloped planes through
+ * ts_surface_certify), random data near the bounds (fixed seed).
  *  - soundness: every certified patch is sampled on a grid of exactly
  *    representable positions (multiples of the grid's ulp from the patch's
  *    corner) and S − L is formed in long double in local coordinates,
@@ -16,7 +15,8 @@
  *    plane has the exact sign); 4 ulps of |S| for a surface without one
  *    certified afterwards by ts_surface_certify (its values are not moved
  *    into a region it does not have: the rounding of evaluation); the
- *    defect of finding 1 is |p| times an ulp of x, 0.125·|p| at 1e15;
+ *    defect measured before plane sides were decided exactly is |p|
+ *    times an ulp of x, 0.125·|p| at 1e15;
  *  - translation invariance: the same z on the grid shifted to 0 with the
  *    planes translated exactly (c0 = c + p x0 + q y0, checked exact): the
  *    surface is built (resp. a patch certified) iff the original is.

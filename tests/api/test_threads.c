@@ -15,7 +15,7 @@
  * difference can only come from shared mutable state.
  *
  * Run under the ASan build by make test; a ThreadSanitizer build is a manual
- * check (see the review report), not part of make test.
+ * check (make tsan), not part of make test.
  */
 #define _POSIX_C_SOURCE 200809L
 #include "th.h"

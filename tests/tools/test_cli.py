@@ -987,7 +987,7 @@ def test_signals():
 
 
 def test_edges_cli():
-    """Findings 4 and 7 of the edge review (issue 18), each failing before its fix."""
+    """Two edge cases of the command line, each failing before its fix."""
     # 4: a first row of quoted numbers is data (was taken as a header: one point lost)
     p = tmp("quoted_first.csv")
     open(p, "w").write('"0","1"\n1,2\n2,1.5\n')

@@ -1,4 +1,4 @@
-/* Tests of src/io.c (tsu_io.h): number conversion, table reader, safe output,
+/* Tests of tools/support (tsu_io.h): number conversion, table reader, safe output,
  * row writer.
  *
  * References, none of them the code under test:

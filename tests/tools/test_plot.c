@@ -1,4 +1,4 @@
-/* Tests of the SVG plot module (src/plot.c, src/tsu_plot.h).
+/* Tests of the SVG plot module (tools/support/tsu_plot.c, tsu_plot.h).
  *
  * Usage: test_plot [OUTDIR]   (default: <dir of this program>/plot_out)
  * Writes the SVG files that tests/tools/test_plot_xml.py parses and checks again

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks the SVG output of the plot module (src/plot.c) with the Python
+"""Checks the SVG output of the plot module (tools/support/tsu_plot.c) with the Python
 standard library only.
 
     python3 tests/tools/test_plot_xml.py BUILD_DIR

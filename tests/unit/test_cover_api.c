@@ -1,5 +1,5 @@
 /* Edge paths of the public API's construction and accessors that the other
- * programs do not reach (issue 18, coverage): the large-block allocator and
+ * programs do not reach (coverage): the large-block allocator and
  * its failure paths, size overflow of every product of ts_spline_new and
  * ts_curve_new, the first offender of alpha/beta checks at the ends of a
  * block, knots and box rules that overflow in ts_curve_new, a box repair

@@ -1,4 +1,4 @@
-/* Edge paths of the evaluation core (issue 18, coverage): slopes computed in
+/* Edge paths of the evaluation core (coverage): slopes computed in
  * construction blocks, the short-piece integral at a power of two, the
  * threaded batch, every run-time kernel (ts__fast_batch_isa 0, 1, 2) on
  * the query patterns of its stage (galloping, cursor behind, unsorted,

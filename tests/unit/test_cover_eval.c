@@ -1,5 +1,5 @@
 /* Evaluation paths that no other test reaches, and the facts that make the
- * geometric solve one code path (issue 18, coverage; docs/method.md §4):
+ * geometric solve one code path (coverage; docs/method.md §4):
  *  - solve_scan: over a dense (κ, u) grid every query stops within 9 Halley
  *    steps (the cap TS_GEO_PASSES is 16), the root's residual is rounding,
  *    and the start's model derivative is positive where it divides;

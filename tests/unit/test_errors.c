@@ -399,7 +399,7 @@ static void test_nomem(void)
 
 /* Overflowing control values (tiny alpha, no scheme) and subnormal widths
  * ((π/2)/h overflows) are refused: TS_ERR_NONFINITE with the interval /
- * the right point of the width (review findings A and B). */
+ * the right point of the width. */
 static void test_overflowing_controls(void)
 {
     static const double x[4] = {0, 1, 2, 3}, f[4] = {1, 2, 0, 3};

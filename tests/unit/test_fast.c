@@ -1,4 +1,4 @@
-/* The batch kernels of src/fast.c against plain ts_spline_eval_deriv.
+/* The batch kernels of src/kernels.c against plain ts_spline_eval_deriv.
  *
  * Expected values: ts_spline_eval_deriv (the plain path, itself checked against the
  * mpmath reference in test_core.c); the knot values f_i exactly; a

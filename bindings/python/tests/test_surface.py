@@ -350,7 +350,7 @@ def test_positive_never_below_zero(form, seed):
 
 
 def test_positive_data_where_scipy_cubic_goes_negative():
-    # the motivation of issue 13: the same grid with SciPy's cubic method
+    # why surfaces exist: the same grid with SciPy's cubic method
     # (a tensor spline) undershoots; the certified surface does not
     from scipy.interpolate import RegularGridInterpolator
     x, y, z = grid_data(9, 8, seed=2)
