@@ -89,7 +89,7 @@ static const char *where_name(ts_where w)
 
 typedef struct data {
     const ts_error_context *c;
-    const ts_options *opt; /* the options used, or the defaults */
+    const ts_spline_options *opt; /* the options used, or the defaults */
     size_t n;              /* points with x and f (0: none given) */
     size_t base;
 } data;
@@ -121,7 +121,7 @@ static void interval_text(out *o, const data *d, size_t i)
 
 /* Does point (x, f) fail the scheme's condition? (kind: 0 negative, 1 not
  * above the lower line, 2 not below the upper; a constant line may be touched) */
-static int fails(const ts_options *opt, int kind, double x, double f)
+static int fails(const ts_spline_options *opt, int kind, double x, double f)
 {
     if (kind == 0)
         return !(f >= 0.0);
@@ -156,7 +156,7 @@ static double per_interval(const double *arr, size_t n_arr, double scalar, size_
 /* The sentence of a spline failure; 0 when the generic form applies. */
 static int spline_sentence(out *o, const data *d, const ts_error *e)
 {
-    const ts_options *opt = d->opt;
+    const ts_spline_options *opt = d->opt;
     size_t i = e->index, n = d->n;
     int point = e->where == TS_WHERE_POINT && i < n;
     int interval = e->where == TS_WHERE_INTERVAL && n > 0 && i < n - 1;
@@ -523,7 +523,7 @@ size_t ts_error_message(const ts_error *err, const ts_error_context *ctx, char *
     int foreign = ctx && ctx->struct_size != sizeof *ctx;
     const ts_error_context *c = ctx && !foreign ? ctx : &none;
 
-    ts_options defaults;
+    ts_spline_options defaults;
     ts__options_defaults(&defaults);
     data d = {c, c->spline_options ? c->spline_options : &defaults,
               c->x && c->f ? c->n_points : 0, c->first_index};

@@ -31,23 +31,23 @@ static void test_options(void)
     double gx[] = {0, 1, 2}, gy[] = {0, 1}, gz[] = {1, 2, 3, 2, 1, 2};
     ts_error e;
 
-    ts_options o;
-    ts_options_init(&o);
-    CHECK(o.struct_size == sizeof(ts_options));
+    ts_spline_options o;
+    ts_spline_options_init(&o);
+    CHECK(o.struct_size == sizeof(ts_spline_options));
     ts_spline *s = (ts_spline *)&e; /* not NULL: must be reset */
     CHECK(ts_spline_new(x, f, 4, &o, &s, &e) == TS_OK && s);
     ts_spline_free(s);
     CHECK(ts_spline_new(x, f, 4, NULL, &s, &e) == TS_OK && s); /* NULL: defaults */
     ts_spline_free(s);
     for (size_t k = 0; k < sizeof deltas / sizeof deltas[0]; k++) {
-        size_t sizes[2] = {sizeof(ts_options) - 8 - deltas[k], sizeof(ts_options) + 8 + deltas[k]};
+        size_t sizes[2] = {sizeof(ts_spline_options) - 8 - deltas[k], sizeof(ts_spline_options) + 8 + deltas[k]};
         for (int w = 0; w < 2; w++) {
             o.struct_size = sizes[w];
             s = (ts_spline *)&e;
             CHECKF(ts_spline_new(x, f, 4, &o, &s, &e) == TS_ERR_VERSION && !s &&
                        e.status == TS_ERR_VERSION && e.index == TS_NO_INDEX &&
                        e.where == TS_WHERE_NONE,
-                   "ts_options.struct_size %zu", sizes[w]);
+                   "ts_spline_options.struct_size %zu", sizes[w]);
         }
     }
     o.struct_size = 0; /* not initialised (e.g. = {0}) */
@@ -56,13 +56,13 @@ static void test_options(void)
     CHECK(ts_spline_new(NULL, f, 4, &o, &s, &e) == TS_ERR_NULL);
     CHECK(ts_spline_new(x, f, 1, &o, &s, &e) == TS_ERR_VERSION);
     /* an older, smaller struct: only struct_size is read */
-    size_t small = offsetof(ts_options, alpha);
+    size_t small = offsetof(ts_spline_options, alpha);
     unsigned char *old = malloc(small);
     CHECK(old != NULL);
     if (old) {
         memset(old, 0, small);
         memcpy(old, &small, sizeof small); /* its struct_size */
-        CHECK(ts_spline_new(x, f, 4, (const ts_options *)(void *)old, &s, &e) == TS_ERR_VERSION &&
+        CHECK(ts_spline_new(x, f, 4, (const ts_spline_options *)(void *)old, &s, &e) == TS_ERR_VERSION &&
               !s);
         free(old);
     }
@@ -96,8 +96,8 @@ static void test_reports(void)
 {
     TH_CASE("interval reports");
     double x[] = {0, 1, 2, 3}, f[] = {1, 2, 0.5, 3};
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.shape = TS_SHAPE_POSITIVE;
     ts_spline *s = NULL;
     CHECK(ts_spline_new(x, f, 4, &o, &s, NULL) == TS_OK);
@@ -121,16 +121,16 @@ static void test_reports(void)
     ts_interval_report reps[3];
     memset(reps, 0, sizeof reps);
     reps[0].struct_size = sizeof reps[0];
-    CHECK(ts_certify(s, &lo, NULL, reps, &e) == TS_OK);
+    CHECK(ts_spline_certify(s, &lo, NULL, reps, &e) == TS_OK);
     for (int i = 0; i < 3; i++)
         CHECKF(reps[i].struct_size == sizeof reps[i] && reps[i].x0 == i && reps[i].certified,
                "certify entry %d", i);
     memset(reps, 0xA5, sizeof reps);
     reps[0].struct_size = 0;
-    CHECK(ts_certify(s, &lo, NULL, reps, &e) == TS_ERR_VERSION && e.status == TS_ERR_VERSION &&
+    CHECK(ts_spline_certify(s, &lo, NULL, reps, &e) == TS_ERR_VERSION && e.status == TS_ERR_VERSION &&
           e.index == TS_NO_INDEX);
     CHECK(untouched(reps, sizeof reps, 0xA5, sizeof reps[0].struct_size));
-    CHECK(ts_certify(s, &lo, NULL, NULL, &e) == TS_OK); /* no reports: no guard */
+    CHECK(ts_spline_certify(s, &lo, NULL, NULL, &e) == TS_OK); /* no reports: no guard */
 
     /* ts_interval_report_init */
     memset(reps, 0, sizeof reps);

@@ -27,7 +27,7 @@ static const char *message(const ts_error *e, const ts_error_context *c)
         CHECKF(strcmp(got_, want) == 0, "\n   got  \"%s\"\n   want \"%s\"", got_, want); \
     } while (0)
 
-static ts_error build(const double *x, const double *f, size_t n, const ts_options *o)
+static ts_error build(const double *x, const double *f, size_t n, const ts_spline_options *o)
 {
     ts_error e;
     ts_spline *s = NULL;
@@ -37,7 +37,7 @@ static ts_error build(const double *x, const double *f, size_t n, const ts_optio
     return e;
 }
 
-static ts_error_context spline_ctx(const double *x, const double *f, size_t n, const ts_options *o)
+static ts_error_context spline_ctx(const double *x, const double *f, size_t n, const ts_spline_options *o)
 {
     ts_error_context c;
     ts_error_context_init(&c);
@@ -83,11 +83,11 @@ static void test_numbers(void)
 static void test_spline_points(void)
 {
     double x[] = {0, 1, 2, 3};
-    ts_options o;
+    ts_spline_options o;
 
     TH_CASE("negative");
     double fneg[] = {1, -0.5, 2, -3};
-    ts_options_init(&o);
+    ts_spline_options_init(&o);
     o.shape = TS_SHAPE_POSITIVE;
     ts_error e = build(x, fneg, 4, &o);
     ts_error_context c = spline_ctx(x, fneg, 4, &o);
@@ -103,7 +103,7 @@ static void test_spline_points(void)
 
     TH_CASE("side, lower line");
     double fs[] = {2, 2, 6, 8};
-    ts_options_init(&o);
+    ts_spline_options_init(&o);
     o.shape = TS_SHAPE_ABOVE;
     o.lower.m = 2;
     o.lower.c = 1; /* y = 2x + 1: 1, 3, 5, 7 */
@@ -119,7 +119,7 @@ static void test_spline_points(void)
         xs[i] = i;
         fb[i] = i < 5 ? 0 : 10; /* upper y = -x + 0.5 (0.5 at x = 0): above it from x = 1 on */
     }
-    ts_options_init(&o);
+    ts_spline_options_init(&o);
     o.shape = TS_SHAPE_BELOW;
     o.upper.m = -1;
     o.upper.c = 0.5;
@@ -131,7 +131,7 @@ static void test_spline_points(void)
 
     TH_CASE("lines");
     double fl[] = {1, 1, 1, 1};
-    ts_options_init(&o);
+    ts_spline_options_init(&o);
     o.shape = TS_SHAPE_BETWEEN;
     o.lower.m = 1;
     o.lower.c = 0; /* y = x */
@@ -153,7 +153,7 @@ static void test_spline_points(void)
 
     TH_CASE("nonmonotone");
     double fm[] = {0, 1, 0.5, 2};
-    ts_options_init(&o);
+    ts_spline_options_init(&o);
     o.shape = TS_SHAPE_MONOTONE;
     e = build(x, fm, 4, &o);
     c = spline_ctx(x, fm, 4, &o);
@@ -163,7 +163,7 @@ static void test_spline_points(void)
 
     TH_CASE("zero slope");
     double fz[] = {1, 0, 1, 2}, d[] = {0, 0.5, 0, 0};
-    ts_options_init(&o);
+    ts_spline_options_init(&o);
     o.shape = TS_SHAPE_POSITIVE;
     o.slopes = TS_SLOPES_USER;
     o.user_slopes = d;
@@ -176,7 +176,7 @@ static void test_spline_points(void)
 
     TH_CASE("nonfinite user slope");
     double dn[] = {0, 0, TH_INF, 0};
-    ts_options_init(&o);
+    ts_spline_options_init(&o);
     o.slopes = TS_SLOPES_USER;
     o.user_slopes = dn;
     o.n_user_slopes = 4;
@@ -192,7 +192,7 @@ static void test_spline_points(void)
 
     TH_CASE("periodic");
     double fp[] = {1, 2, 3};
-    ts_options_init(&o);
+    ts_spline_options_init(&o);
     o.slopes = TS_SLOPES_PERIODIC;
     e = build(x, fp, 3, &o);
     c = spline_ctx(x, fp, 3, &o);
@@ -210,10 +210,10 @@ static void test_spline_points(void)
 static void test_spline_intervals(void)
 {
     double x[] = {0, 1, 2, 3}, f[] = {1, 2, 1.5, 3};
-    ts_options o;
+    ts_spline_options o;
 
     TH_CASE("geometric bound");
-    ts_options_init(&o);
+    ts_spline_options_init(&o);
     o.form = TS_FORM_GEOMETRIC;
     o.alpha = 0.3;
     ts_error e = build(x, f, 4, &o);
@@ -224,7 +224,7 @@ static void test_spline_intervals(void)
 
     TH_CASE("alpha");
     double al[] = {1, -2, 1};
-    ts_options_init(&o);
+    ts_spline_options_init(&o);
     o.alphas = al;
     o.n_alphas = 3;
     e = build(x, f, 4, &o);
@@ -257,7 +257,7 @@ static void test_spline_intervals(void)
     CHECK(ts_spline_new(x, f, 4, NULL, &s, NULL) == TS_OK);
     double xq[] = {0.5, 7, TH_NAN}, yq[3];
     ts_error e2;
-    CHECK(ts_eval_batch(s, 0, xq, 3, yq, NULL, &e2) == TS_ERR_DOMAIN && e2.index == 1);
+    CHECK(ts_spline_eval_batch(s, 0, xq, 3, yq, NULL, &e2) == TS_ERR_DOMAIN && e2.index == 1);
     ts_spline_free(s);
     c.queries = xq;
     c.n_queries = 3;
@@ -343,8 +343,8 @@ static void test_buffers(void)
     CHECK(ts_error_message(&e, NULL, &one, 0) == n && one == 'Z'); /* len 0: nothing written */
     /* a long sentence truncated in the middle of a number */
     double x[] = {0, 1}, f[] = {-0.30000000000000004, 1};
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.shape = TS_SHAPE_POSITIVE;
     ts_error_context c = spline_ctx(x, f, 2, &o);
     ts_error ne = {TS_ERR_NEGATIVE, 0, TS_WHERE_POINT};

@@ -148,7 +148,7 @@ static int x_text(double x, char *buf, size_t len, void *user)
     return snprintf(buf, len, "%s", cli_x_text(((const x_form *)user)->cols, x, b));
 }
 
-int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char *name,
+int cli_report_build_error(const cli_opts *o, const ts_spline_options *opt, const char *name,
                            const cli_cols *cols, const double *x, const double *f,
                            const unsigned long long *lines, size_t n, const ts_error *e,
                            ts_status st, size_t off)
@@ -212,7 +212,7 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
     return rc;
 }
 
-int cli_read_and_fit(const cli_opts *o, const ts_options *opt, cli_data *d, ts_spline **s)
+int cli_read_and_fit(const cli_opts *o, const ts_spline_options *opt, cli_data *d, ts_spline **s)
 {
     int rc;
     *s = NULL;
