@@ -37,6 +37,24 @@ ts_status tsw_certify(const ts_spline *s, int has_lower, double lm, double lc, i
 ts_status tsw_curve_certify(const ts_curve *c, const double *box, double *rows, ts_error *err);
 ts_status tsw_error_constants(int form, double a, double *out);
 size_t tsw_heap_top(void);
+const char *tsw_message(void);
+void tsw_message_clear(void);
+
+/* The sentence (ts_error_message) of the last failed tsw_spline_new or
+ * tsw_curve_new, written there with the call's data and options; "" after
+ * tsw_message_clear.  Other failures have no context: the wrapper calls
+ * ts_error_message itself. */
+static char message[1024];
+
+const char *tsw_message(void)
+{
+    return message;
+}
+
+void tsw_message_clear(void)
+{
+    message[0] = '\0';
+}
 
 /* ts_interval_report -> TSW_ROW doubles: x0 x1 alpha beta a B0..B3 term
  * has_lower has_upper gap_lower at_lower gap_upper at_upper certified. */
@@ -88,7 +106,17 @@ ts_status tsw_spline_new(const double *x, const double *f, size_t n, int form, i
     o.n_margins = n_margins;
     o.certify = certify;
     o.extrapolate = (ts_extrap)extrap;
-    return ts_spline_new(x, f, n, &o, out, err);
+    ts_status st = ts_spline_new(x, f, n, &o, out, err);
+    if (st != TS_OK && err) {
+        ts_error_context ctx;
+        ts_error_context_init(&ctx);
+        ctx.x = x;
+        ctx.f = f;
+        ctx.n_points = n;
+        ctx.spline_options = &o;
+        ts_error_message(err, &ctx, message, sizeof message);
+    }
+    return st;
 }
 
 /* box: 12 doubles, has_lo[3] lo[3] has_hi[3] hi[3] (has_*: nonzero = active);
@@ -116,7 +144,17 @@ ts_status tsw_curve_new(const double *pts, size_t n, size_t dim, int param, int 
         o.has_hi[k] = box[6 + k] != 0.0;
         o.hi[k] = box[9 + k];
     }
-    return ts_curve_new(pts, n, dim, &o, out, err);
+    ts_status st = ts_curve_new(pts, n, dim, &o, out, err);
+    if (st != TS_OK && err) {
+        ts_error_context ctx;
+        ts_error_context_init(&ctx);
+        ctx.points = pts;
+        ctx.n_points = n;
+        ctx.dim = dim;
+        ctx.curve_options = &o;
+        ts_error_message(err, &ctx, message, sizeof message);
+    }
+    return st;
 }
 
 /* The library's defaults: form slopes alpha beta shape margin certify extrapolate. */

@@ -14,8 +14,9 @@
 //
 // Errors: a TrigSplineError with .status ("TS_ERR_NEGATIVE"), .code (14),
 // .index (the point, interval or query; null when none), .where ("point",
-// "interval", "query" or null) and .message: the library's ts_strerror text
-// with the index.
+// "interval", "query" or null) and .message: the status name and the
+// library's sentence (ts_error_message; for spline() and curve() with the
+// data and options of the call, naming the point, its x and f).
 
 /* global WASM_BASE64 */
 // Names, index = the C enum value: the library's vocabulary (ts_vocab_name,
@@ -50,7 +51,7 @@ const dispose = Symbol.dispose ?? Symbol.for('Symbol.dispose');
 export class TrigSplineError extends Error {
   constructor(code, text, index, where) {
     const name = STATUS_NAMES[code] ?? `status ${code}`;
-    super(`${name}: ${text}${index === null ? '' : ` (${where ?? 'index'} ${index})`}`);
+    super(`${name}: ${text}`);
     this.name = 'TrigSplineError';
     this.status = name;
     this.code = code;
@@ -165,10 +166,24 @@ class TrigSpline {
       return fn(...ps);
     } finally { for (const p of ps) if (p) this.w.free(p); }
   }
-  resetError() { this.u32(this.errPtr, 3).set([0, NO_INDEX, 0]); }
+  resetError() {
+    this.u32(this.errPtr, 3).set([0, NO_INDEX, 0]);
+    this.w.tsw_message_clear();
+  }
+  // The error of the last failed call: the sentence glue.c wrote with the
+  // call's data, or ts_error_message without context.
   error(code) {
-    const [, index, where] = this.u32(this.errPtr, 3);
-    return new TrigSplineError(code, this.strerror(code), index === NO_INDEX ? null : index,
+    const e = this.u32(this.errPtr, 3);
+    e[0] = code;
+    const [, index, where] = e;
+    let text = this.cstring(this.w.tsw_message());
+    if (!text) {
+      text = this.withScratch(64, (p) => {
+        this.w.ts_error_message(this.errPtr, 0, p, 512);
+        return this.cstring(p);
+      });
+    }
+    return new TrigSplineError(code, text, index === NO_INDEX ? null : index,
       index === NO_INDEX ? null : WHERE[where] ?? null);
   }
   check(code) {

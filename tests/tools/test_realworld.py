@@ -437,8 +437,8 @@ def test_time_in_messages():
     f = os.path.join(TMP, "not_increasing.csv")
     with open(f, "w") as fh:
         fh.write("time,v\n" + "".join("%s,%d\n" % (x, k + 1) for k, x in enumerate(xs)))
-    want = ("not_increasing.csv:4: point 2 (x = %s) is not greater than the previous x = %s "
-            "(line 3)" % (iso(xs[2]), iso(xs[1])))
+    want = ("not_increasing.csv:4: point 2 (x = %s) is not greater than the previous x = %s; "
+            "x must be strictly increasing (previous point: line 3)" % (iso(xs[2]), iso(xs[1])))
     for extra in ([], ["--no-stream"], ["--json"]):
         rc, out, err = run(["fit", f] + extra)
         check("time in 'not increasing' %s" % extra, rc == 2 and want in err and

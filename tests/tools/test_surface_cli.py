@@ -146,9 +146,9 @@ def err_case(name, path, args, status, needles):
 neg = list(long_rows)
 neg[8] = (neg[8][0], neg[8][1], -0.5)  # node (2, 1), line 10
 NEG = write("neg.csv", "x,y,z\n" + "".join("%r,%r,%r\n" % r for r in neg))
-err_case("negative", NEG, ["--shape", "positive"], 2, ["neg.csv", "line 10", "node (2, 1)", "z=-0.5"])
+err_case("negative", NEG, ["--shape", "positive"], 2, ["neg.csv", "line 10", "node (2, 1)", "z = -0.5"])
 INF = write("infeasible.csv", "x,y,z\n0,0,4\n1,0,1e-310\n2,0,1\n0,1,4\n1,1,1\n2,1,1\n")
-err_case("infeasible", INF, ["--shape", "positive"], 3, ["patch (1, 0) = [1, 2] x [0, 1]"])
+err_case("infeasible", INF, ["--shape", "positive"], 3, ["patch (1, 0) [1, 2] x [0, 1]"])
 MISS = write("miss.csv", "x,y,z\n" + "".join("%r,%r,%r\n" % r for r in long_rows[:-1]))
 err_case("missing", MISS, [], 2, ["missing node (x=4.2, y=2.5)"])
 DUP = write("dup.csv", "x,y,z\n" + "".join("%r,%r,%r\n" % r for r in long_rows + [long_rows[3]]))

@@ -128,23 +128,11 @@ typedef struct cli_opts {
 } cli_opts;
 
 /* ---- names.c --------------------------------------------------------- */
-/* The library's vocabulary (ts_vocab, ts_vocab_name, ts_vocab_value,
- * ts_vocab_count: one canonical name per enum value), through a local
- * stand-in until the library has it: cli_vocab has the order of ts_vocab,
- * and names.c's three functions become calls of the library's. */
-typedef enum cli_vocab {
-    CLI_VOCAB_STATUS, CLI_VOCAB_FORM, CLI_VOCAB_SLOPES, CLI_VOCAB_SHAPE, CLI_VOCAB_EXTRAP,
-    CLI_VOCAB_PARAM, CLI_VOCAB_SURFACE_SHAPE, CLI_VOCAB_TERM, CLI_VOCAB_WHERE, CLI_VOCAB_COUNT_
-} cli_vocab;
-/* The canonical name of value in kind, NULL when out of range. */
-const char *cli_vocab_name(cli_vocab kind, int value);
-/* The value of a canonical name: TS_OK, TS_ERR_NULL, TS_ERR_OPTION (unknown name). */
-ts_status cli_vocab_value(cli_vocab kind, const char *name, int *value);
-/* Number of values of kind. */
-int cli_vocab_count(cli_vocab kind);
+/* Enum values are written with the library's vocabulary (ts_vocab_name,
+ * ts_vocab_value, ts_vocab_count): one canonical name per value. */
 /* "fit", "certify", "curve", "surface". */
 const char *cli_cmd_name(cli_cmd c);
-/* cli_vocab_name, "?" if unknown. */
+/* ts_vocab_name, "?" if unknown. */
 const char *cli_shape_name(ts_shape s);
 const char *cli_slopes_name(ts_slopes s);
 const char *cli_form_name(ts_form f);
@@ -329,8 +317,10 @@ typedef struct cli_data cli_data;
 int cli_read_data(const cli_opts *o, cli_data *d);
 void cli_data_free(cli_data *d);
 /* Report a ts_spline_new failure on points x[0..n) (lines[i] their lines,
- * NULL if unknown) read from name; x is written as cli_x_text(cols) (cols
- * NULL: numbers).  Returns the exit status. */
+ * NULL if unknown; index_offset the index of x[0] in the whole data) read
+ * from name: "NAME:LINE: " (an interval: "NAME:LINE-LINE: ") and the
+ * library's sentence (ts_error_message), x written as cli_x_text(cols)
+ * (cols NULL: numbers).  Returns the exit status. */
 int cli_report_build_error(const cli_opts *o, const ts_spline_options *opt, const char *name,
                            const cli_cols *cols, const double *x, const double *f,
                            const unsigned long long *lines, size_t n, const ts_error *e,
@@ -474,7 +464,7 @@ struct cli_optdef {
     cli_kind kind;
     size_t off;        /* the field */
     size_t set;        /* an int field set to 1 when given, or CLI_NO_FIELD */
-    cli_vocab vocab;   /* CLI_K_ENUM */
+    ts_vocab vocab;    /* CLI_K_ENUM */
     unsigned skip;     /* CLI_K_ENUM: bit k = value k is not offered */
     double lo, hi;     /* CLI_K_COUNT: the range */
     double def;        /* a default of the command's own for a size_t field (not

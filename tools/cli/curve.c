@@ -7,12 +7,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-static int curve_error(const cli_opts *o, const cli_data *d, ts_status st, const ts_error *e)
+/* The library's sentence (ts_error_message), but for the failures where the
+ * command's own words say more (too few points, --alphas, --closed). */
+static int curve_error(const cli_opts *o, const cli_data *d, const ts_curve_options *co,
+                       const double *pts, ts_status st, const ts_error *e)
 {
-    char w[TSU_IO_MSG_SIZE], b[3][TSU_FMT_SIZE];
+    char w[TSU_IO_MSG_SIZE], msg[1024];
     size_t i = e->index;
-    int point = e->where == TS_WHERE_POINT && i < d->n;
-    if (point && d->line)
+    if (e->where == TS_WHERE_POINT && i < d->n && d->line)
         snprintf(w, sizeof w, "%s:%llu", d->name, d->line[i]);
     else
         snprintf(w, sizeof w, "%s", d->name);
@@ -21,51 +23,43 @@ static int curve_error(const cli_opts *o, const cli_data *d, ts_status st, const
         cli_error("%s: %zu point%s; a curve needs at least 2 (a closed curve 3 distinct points)",
                   d->name, d->n, d->n == 1 ? "" : "s");
         return CLI_DATA;
-    case TS_ERR_UNSORTED:
-        if (point) {
-            cli_error("%s: point %zu (%s, %s) repeats the point before it (consecutive points "
-                      "must differ)",
-                      w, i, cli_num(d->col[0][i], b[0]), cli_num(d->col[1][i], b[1]));
-            return CLI_DATA;
-        }
-        cli_error("%s: two consecutive points are equal or too close", d->name);
-        return CLI_DATA;
-    case TS_ERR_SIDE:
-        if (point) {
-            cli_error("%s: point %zu (%s, %s) is on or outside the --box", w, i,
-                      cli_num(d->col[0][i], b[0]), cli_num(d->col[1][i], b[1]));
-            return CLI_DATA;
-        }
-        break;
-    case TS_ERR_INFEASIBLE:
-        cli_error("%s: segment %zu: infeasible constraint: no beta keeps it inside the box",
-                  d->name, i);
-        return CLI_INFEASIBLE;
     case TS_ERR_LENGTH:
         cli_error("--alphas/--betas need exactly one value per segment");
         return CLI_USAGE;
     case TS_ERR_OPTION:
         if (o->slopes == TS_SLOPES_PERIODIC && !o->closed)
             return cli_usage(o->cmd, "--slopes periodic needs --closed");
-        cli_error("%s", ts_strerror(st));
-        return CLI_USAGE;
-    case TS_ERR_ALPHA:
-    case TS_ERR_BETA:
-    case TS_ERR_MARGIN:
-        cli_error("segment %zu: %s", i, ts_strerror(st));
-        return CLI_USAGE;
-    case TS_ERR_NOMEM:
-    case TS_ERR_OVERFLOW:
-        cli_error("%s", ts_strerror(st));
-        return CLI_IO;
+        break;
     default:
         break;
     }
-    if (point)
-        cli_error("%s: point %zu: %s", w, i, ts_strerror(st));
-    else
-        cli_error("%s: %s", d->name, ts_strerror(st));
-    return CLI_DATA;
+    ts_error_context ctx;
+    ts_error_context_init(&ctx);
+    ctx.points = pts;
+    ctx.n_points = d->n;
+    ctx.dim = d->dim;
+    ctx.curve_options = co;
+    ts_error err = *e;
+    err.status = st;
+    ts_error_message(&err, &ctx, msg, sizeof msg);
+    switch (st) {
+    case TS_ERR_INFEASIBLE:
+        cli_error("%s: %s", d->name, msg);
+        return CLI_INFEASIBLE;
+    case TS_ERR_OPTION:
+    case TS_ERR_ALPHA:
+    case TS_ERR_BETA:
+    case TS_ERR_MARGIN:
+        cli_error("%s", msg);
+        return CLI_USAGE;
+    case TS_ERR_NOMEM:
+    case TS_ERR_OVERFLOW:
+        cli_error("%s", msg);
+        return CLI_IO;
+    default:
+        cli_error("%s: %s", w, msg);
+        return CLI_DATA;
+    }
 }
 
 /* Read DATA and build the curve: CLI_OK, or the exit status (message
@@ -91,9 +85,10 @@ static int curve_build(const cli_opts *o, const ts_curve_options *co, cli_data *
             pts[i * dim + k] = d->col[k][i];
     ts_error e;
     ts_status st = ts_curve_new(pts, n, dim, co, c, &e);
+    if (st != TS_OK)
+        rc = curve_error(o, d, co, pts, st, &e);
     free(pts);
     if (st != TS_OK) {
-        rc = curve_error(o, d, st, &e);
         cli_data_free(d);
         return rc;
     }

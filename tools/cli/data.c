@@ -2,7 +2,6 @@
 #include "cli.h"
 
 #include <errno.h>
-#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -138,56 +137,15 @@ done:
     return rc;
 }
 
-/* "NAME:LINE" of point i, or "NAME" without line numbers. */
-static void where(char *buf, size_t len, const char *name, const unsigned long long *lines,
-                  size_t i)
-{
-    if (lines)
-        snprintf(buf, len, "%s:%llu", name, lines[i]);
-    else
-        snprintf(buf, len, "%s", name);
-}
+/* ts_format_x_fn: x as the command writes it (cli_x_text: a date or a number). */
+typedef struct x_form {
+    const cli_cols *cols;
+} x_form;
 
-/* Append the x of every point failing pred (at most 12, then "..."). */
-typedef int (*point_pred)(const ts_spline_options *opt, double x, double f);
-
-static int pred_negative(const ts_spline_options *opt, double x, double f)
+static int x_text(double x, char *buf, size_t len, void *user)
 {
-    (void)opt;
-    (void)x;
-    return !(f >= 0.0);
-}
-static int pred_not_above(const ts_spline_options *opt, double x, double f)
-{
-    return !(f - (opt->lower.m * x + opt->lower.c) > 0.0);
-}
-static int pred_not_below(const ts_spline_options *opt, double x, double f)
-{
-    return !((opt->upper.m * x + opt->upper.c) - f > 0.0);
-}
-
-static void list_points(char *buf, size_t len, const ts_spline_options *opt, point_pred pred,
-                        const cli_cols *cols, const double *x, const double *f, size_t n)
-{
-    size_t cnt = 0, used = 0;
     char b[TSU_TIME_SIZE];
-    buf[0] = '\0';
-    for (size_t i = 0; i < n; i++) {
-        if (!pred(opt, x[i], f[i]))
-            continue;
-        int w;
-        if (cnt == 12)
-            w = snprintf(buf + used, len - used, ", ...");
-        else if (cnt < 12)
-            w = snprintf(buf + used, len - used, "%s%s", cnt ? ", " : "",
-                         cli_x_text(cols, x[i], b));
-        else
-            w = 0;
-        cnt++;
-        if (w < 0 || (size_t)w >= len - used)
-            return;
-        used += (size_t)w;
-    }
+    return snprintf(buf, len, "%s", cli_x_text(((const x_form *)user)->cols, x, b));
 }
 
 int cli_report_build_error(const cli_opts *o, const ts_spline_options *opt, const char *name,
@@ -195,171 +153,63 @@ int cli_report_build_error(const cli_opts *o, const ts_spline_options *opt, cons
                            const unsigned long long *lines, size_t n, const ts_error *e,
                            ts_status st, size_t off)
 {
-    char w[TSU_IO_MSG_SIZE], bx[TSU_TIME_SIZE], bf[TSU_FMT_SIZE], b2[TSU_TIME_SIZE];
-    char ln[160], list[400];
+    (void)o;
+    char w[TSU_IO_MSG_SIZE], msg[2048];
     size_t i = e->index;
     int point = e->where == TS_WHERE_POINT && i < n;
     int interval = e->where == TS_WHERE_INTERVAL && i + 1 < n;
-    if (point || interval)
-        where(w, sizeof w, name, lines, i);
+    if (lines && point)
+        snprintf(w, sizeof w, "%s:%llu", name, lines[i]);
+    else if (lines && interval)
+        snprintf(w, sizeof w, "%s:%llu-%llu", name, lines[i], lines[i + 1]);
     else
         snprintf(w, sizeof w, "%s", name);
 
+    x_form xf = {cols};
+    ts_error_context ctx;
+    ts_error_context_init(&ctx);
+    ctx.x = x;
+    ctx.f = f;
+    ctx.n_points = n;
+    ctx.spline_options = opt;
+    ctx.first_index = off;
+    ctx.format_x = x_text;
+    ctx.format_x_user = &xf;
+    ts_error err = *e;
+    err.status = st;
+    ts_error_message(&err, &ctx, msg, sizeof msg);
+
+    int rc;
     switch (st) {
-    case TS_ERR_TOO_FEW:
-        cli_error("%s: %zu data point%s; at least 2 are needed", name, n, n == 1 ? "" : "s");
-        return CLI_DATA;
-    case TS_ERR_UNSORTED:
-        if (point && i > 0) {
-            cli_error("%s: point %zu (x = %s) is not greater than the previous x = %s%s%s; x must "
-                      "be strictly increasing",
-                      w, off + i, cli_x_text(cols, x[i], bx), cli_x_text(cols, x[i - 1], b2),
-                      lines ? " (line " : "",
-                      lines ? (snprintf(ln, sizeof ln, "%llu)", lines[i - 1]), ln) : "");
-            return CLI_DATA;
-        }
-        break;
-    case TS_ERR_NONFINITE:
-        if (point) {
-            cli_error("%s: point %zu (x = %s, f = %s): the step from the previous point, or a "
-                      "slope there, overflows a double",
-                      w, off + i, cli_x_text(cols, x[i], bx), cli_num(f[i], bf));
-            return CLI_DATA;
-        }
-        break;
-    case TS_ERR_WIDTH:
-        if (point && i > 0) {
-            double h = x[i] - x[i - 1];
-            cli_error("%s: point %zu (x = %s): the step %s from the previous x = %s %s", w,
-                      off + i, cli_num(x[i], bx), cli_num(h, bf), cli_num(x[i - 1], b2),
-                      h <= DBL_MAX ? "underflows: steps below 2.2250738585072014e-308 (the "
-                                     "smallest normal double) are refused"
-                                   : "overflows a double");
-            return CLI_DATA;
-        }
-        break;
-    case TS_ERR_PERIODIC:
-        cli_error("%s: --slopes periodic needs the last value equal to the first: f = %s here, "
-                  "f = %s%s%s",
-                  w, cli_num(f[n - 1], bf), cli_num(f[0], b2), lines ? " at line " : " first",
-                  lines ? (snprintf(ln, sizeof ln, "%llu", lines[0]), ln) : "");
-        return CLI_DATA;
-    case TS_ERR_NEGATIVE:
-        if (point) {
-            list_points(list, sizeof list, opt, pred_negative, cols, x, f, n);
-            cli_error("%s: point %zu (x = %s, f = %s) is negative; --shape positive needs f >= 0 "
-                      "(negative at x = %s)",
-                      w, off + i, cli_x_text(cols, x[i], bx), cli_num(f[i], bf), list);
-            return CLI_DATA;
-        }
-        break;
-    case TS_ERR_SIDE:
-        if (point) {
-            int low = (opt->shape == TS_SHAPE_ABOVE || opt->shape == TS_SHAPE_BETWEEN) &&
-                      pred_not_above(opt, x[i], f[i]);
-            const ts_line *l = low ? &opt->lower : &opt->upper;
-            cli_line_text(l, ln, sizeof ln);
-            list_points(list, sizeof list, opt, low ? pred_not_above : pred_not_below, cols, x,
-                        f, n);
-            cli_error("%s: point %zu (x = %s, f = %s) is not %s the %s line %s; the data are on "
-                      "or %s it at x = %s",
-                      w, off + i, cli_x_text(cols, x[i], bx), cli_num(f[i], bf),
-                      low ? "above" : "below", low ? "lower" : "upper", ln, low ? "below" : "above",
-                      list);
-            return CLI_DATA;
-        }
-        break;
-    case TS_ERR_LINES:
-        if (point) {
-            char lo[160];
-            cli_line_text(&opt->lower, lo, sizeof lo);
-            cli_line_text(&opt->upper, ln, sizeof ln);
-            cli_error("%s: at point %zu (x = %s) the lower line %s is not below the upper line %s",
-                      w, off + i, cli_x_text(cols, x[i], bx), lo, ln);
-            return CLI_DATA;
-        }
-        break;
-    case TS_ERR_NONMONOTONE:
-        if (point) {
-            cli_error("%s: point %zu (x = %s, f = %s): the data change direction here; --shape "
-                      "monotone needs monotone data",
-                      w, off + i, cli_x_text(cols, x[i], bx), cli_num(f[i], bf));
-            return CLI_DATA;
-        }
-        break;
-    case TS_ERR_ZERO_SLOPE:
-        break;
     case TS_ERR_INFEASIBLE:
-        if (interval) {
-            if (lines)
-                snprintf(ln, sizeof ln, "%s:%llu-%llu", name, lines[i], lines[i + 1]);
-            else
-                snprintf(ln, sizeof ln, "%s", name);
-            cli_error("%s: interval %zu [%s, %s]: infeasible constraint: no beta >= 0 keeps the "
-                      "spline inside the region on this interval",
-                      ln, off + i, cli_x_text(cols, x[i], bx), cli_x_text(cols, x[i + 1], b2));
-            return CLI_INFEASIBLE;
-        }
-        cli_error("%s: infeasible constraint: %s", name, ts_strerror(st));
-        return CLI_INFEASIBLE;
     case TS_ERR_PRECISION:
     case TS_ERR_UNPROVEN:
-        if (lines && interval)
-            snprintf(ln, sizeof ln, "%s:%llu-%llu", name, lines[i], lines[i + 1]);
-        else
-            snprintf(ln, sizeof ln, "%s", name);
-        if (interval)
-            cli_error("%s: interval %zu [%s, %s]: %s", ln, off + i, cli_num(x[i], bx),
-                      cli_num(x[i + 1], b2), ts_strerror(st));
-        else
-            cli_error("%s: %s", ln, ts_strerror(st));
-        return CLI_INFEASIBLE;
-    case TS_ERR_GEOMETRIC:
-        if (interval) {
-            double a = (opt->alphas ? opt->alphas[off + i] : opt->alpha) +
-                       (opt->betas ? opt->betas[off + i] : opt->beta);
-            char lr[200];
-            if (lines)
-                snprintf(lr, sizeof lr, "%s:%llu-%llu", name, lines[i], lines[i + 1]);
-            else
-                snprintf(lr, sizeof lr, "%s", name);
-            cli_error("%s: interval %zu [%s, %s]: alpha + beta = %s is below the geometric-form "
-                      "bound %s; raise --alpha or --beta",
-                      lr, off + i, cli_x_text(cols, x[i], bx), cli_x_text(cols, x[i + 1], b2),
-                      cli_num(a, bf), cli_num(TS_GEOMETRIC_A_MIN, ln));
-            return CLI_USAGE;
-        }
+        rc = CLI_INFEASIBLE;
         break;
+    case TS_ERR_GEOMETRIC:
     case TS_ERR_LENGTH:
-        cli_error("%s has %zu values, but the data have %zu interval%s (exactly one value per "
-                  "interval is needed)",
-                  opt->alphas && opt->n_alphas != n - 1 ? "--alphas" : "--betas",
-                  opt->alphas && opt->n_alphas != n - 1 ? opt->n_alphas : opt->n_betas, n - 1,
-                  n == 2 ? "" : "s");
-        return CLI_USAGE;
     case TS_ERR_ALPHA:
     case TS_ERR_BETA:
     case TS_ERR_MARGIN:
     case TS_ERR_OPTION:
-        cli_error("%s", ts_strerror(st));
-        return CLI_USAGE;
+        rc = CLI_USAGE;
+        break;
     case TS_ERR_NOMEM:
     case TS_ERR_OVERFLOW:
-        cli_error("%s: %s", name, ts_strerror(st));
-        return CLI_IO;
+        rc = CLI_IO;
+        break;
     default:
+        rc = CLI_DATA;
         break;
     }
-    (void)o;
-    if (point)
-        cli_error("%s: point %zu (x = %s): %s", w, off + i, cli_x_text(cols, x[i], bx),
-                  ts_strerror(st));
-    else if (interval)
-        cli_error("%s: interval %zu [%s, %s]: %s", w, off + i, cli_x_text(cols, x[i], bx),
-                  cli_x_text(cols, x[i + 1], b2), ts_strerror(st));
+    char prev[64] = "";
+    if (st == TS_ERR_UNSORTED && point && i > 0 && lines)
+        snprintf(prev, sizeof prev, " (previous point: line %llu)", lines[i - 1]);
+    if (rc == CLI_USAGE && !point && !interval) /* about the options, not the file */
+        cli_error("%s", msg);
     else
-        cli_error("%s: %s", name, ts_strerror(st));
-    return CLI_DATA;
+        cli_error("%s: %s%s", w, msg, prev);
+    return rc;
 }
 
 int cli_read_and_fit(const cli_opts *o, const ts_spline_options *opt, cli_data *d, ts_spline **s)

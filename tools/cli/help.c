@@ -62,7 +62,7 @@ static const char *default_text(const cli_optdef *d, const void *o, char *buf, s
     case CLI_K_ENUM: {
         int k;
         memcpy(&k, p, sizeof k);
-        const char *s = cli_vocab_name(d->vocab, k);
+        const char *s = ts_vocab_name(d->vocab, k);
         return s ? s : "?";
     }
     case CLI_K_TEXT: {
@@ -110,10 +110,10 @@ static void print_option(const cli_optdef *d, const void *o)
     if (d->meta)
         n += (size_t)snprintf(syn + n, sizeof syn - n, " %s", d->meta);
     else if (d->kind == CLI_K_ENUM)
-        for (int k = 0, first = 1; k < cli_vocab_count(d->vocab) && n < sizeof syn; k++)
+        for (int k = 0, first = 1; k < ts_vocab_count(d->vocab) && n < sizeof syn; k++)
             if (!((d->skip >> k) & 1u)) {
                 n += (size_t)snprintf(syn + n, sizeof syn - n, "%s%s", first ? " " : "|",
-                                      cli_vocab_name(d->vocab, k));
+                                      ts_vocab_name(d->vocab, k));
                 first = 0;
             }
     /* the text with %D replaced */

@@ -160,17 +160,17 @@ static int read_scalar(cli_cmd cmd, const char *name, const char *s, int allow_z
 static int read_enum(const cli_optdef *d, cli_cmd cmd, const char *name, const char *s, int *v)
 {
     int k;
-    if (cli_vocab_value(d->vocab, s, &k) == TS_OK && !((d->skip >> k) & 1u)) {
+    if (ts_vocab_value(d->vocab, s, &k) == TS_OK && !((d->skip >> k) & 1u)) {
         *v = k;
         return CLI_OK;
     }
     char list[256] = "";
     size_t len = 0;
-    for (int i = 0; i < cli_vocab_count(d->vocab); i++) {
+    for (int i = 0; i < ts_vocab_count(d->vocab); i++) {
         if ((d->skip >> i) & 1u)
             continue;
         int w = snprintf(list + len, sizeof list - len, "%s%s", len ? "|" : "",
-                         cli_vocab_name(d->vocab, i));
+                         ts_vocab_name(d->vocab, i));
         if (w < 0 || (size_t)w >= sizeof list - len)
             break;
         len += (size_t)w;
@@ -600,16 +600,16 @@ static int opt_surface_pdf(const cli_optdef *d, cli_cmd cmd, const char *name, c
 #define ROW(n, sn, meta, cmds, kind, off, set) n, sn, meta, cmds, kind, off, set
 /* the rest: vocabulary, skip, range, defaults, reader, group, help */
 #define REST(voc, skip, lo, hi, def, tdef, fn, g, h) voc, skip, lo, hi, def, tdef, fn, g, h
-#define PLAIN(fn, g, h) REST(CLI_VOCAB_STATUS, 0, 0, 0, (double)NAN, NULL, fn, g, h)
+#define PLAIN(fn, g, h) REST(TS_VOCAB_STATUS, 0, 0, 0, (double)NAN, NULL, fn, g, h)
 #define ENUM(voc, skip, g, h) REST(voc, skip, 0, 0, (double)NAN, NULL, NULL, g, h)
-#define COUNT(lo, hi, def, g, h) REST(CLI_VOCAB_STATUS, 0, lo, hi, def, NULL, NULL, g, h)
+#define COUNT(lo, hi, def, g, h) REST(TS_VOCAB_STATUS, 0, lo, hi, def, NULL, NULL, g, h)
 
 const cli_optdef cli_optdefs[] = {
     /* fit, certify, curve: shape */
     {ROW("--shape", NULL, NULL, CLI_F, CLI_K_ENUM, OFF(shape), OFF(shape_set)),
-     ENUM(CLI_VOCAB_SHAPE, 0, CLI_G_SHAPE, "(default %D)")},
+     ENUM(TS_VOCAB_SHAPE, 0, CLI_G_SHAPE, "(default %D)")},
     {ROW("--shape", NULL, NULL, CLI_C, CLI_K_ENUM, OFF(shape), OFF(shape_set)),
-     ENUM(CLI_VOCAB_SHAPE, 0, CLI_G_SHAPE,
+     ENUM(TS_VOCAB_SHAPE, 0, CLI_G_SHAPE,
           "positive: the lower line y = 0; above / below with --line; between with --lower "
           "and --upper")},
     {ROW("--line", NULL, "M,C", CLI_F | CLI_C, CLI_K_CUSTOM, OFF(line), OFF(has_line)),
@@ -624,7 +624,7 @@ const cli_optdef cli_optdefs[] = {
     {ROW("--closed", NULL, NULL, CLI_V, CLI_K_FLAG, OFF(closed), NOF),
      PLAIN(NULL, CLI_G_PARAM, "closed curve (the first point may be repeated at the end)")},
     {ROW("--param", NULL, NULL, CLI_V, CLI_K_ENUM, OFF(param), OFF(param_set)),
-     ENUM(CLI_VOCAB_PARAM, 0, CLI_G_PARAM, "parameter knots (default %D)")},
+     ENUM(TS_VOCAB_PARAM, 0, CLI_G_PARAM, "parameter knots (default %D)")},
     {ROW("--alpha", NULL, "A", CLI_F | CLI_V, CLI_K_POS, OFF(alpha), OFF(alpha_set)),
      PLAIN(NULL, CLI_G_PARAM, "alpha on every interval (default %D, > 0)")},
     {ROW("--alpha", NULL, "A", CLI_C, CLI_K_POS, OFF(alpha), OFF(alpha_set)),
@@ -642,13 +642,13 @@ const cli_optdef cli_optdefs[] = {
     {ROW("--betas", NULL, "B0,B1,...", CLI_C | CLI_V, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_betas, CLI_G_PARAM, "beta per interval")},
     {ROW("--slopes", NULL, NULL, CLI_F | CLI_C, CLI_K_ENUM, OFF(slopes), OFF(slopes_set)),
-     ENUM(CLI_VOCAB_SLOPES, 1u << TS_SLOPES_USER, CLI_G_PARAM,
+     ENUM(TS_VOCAB_SLOPES, 1u << TS_SLOPES_USER, CLI_G_PARAM,
           "slope estimate at the knots (default %D)")},
     {ROW("--slopes", NULL, NULL, CLI_V, CLI_K_ENUM, OFF(slopes), OFF(slopes_set)),
-     ENUM(CLI_VOCAB_SLOPES, 1u << TS_SLOPES_USER, CLI_G_PARAM,
+     ENUM(TS_VOCAB_SLOPES, 1u << TS_SLOPES_USER, CLI_G_PARAM,
           "slope estimate at the knots (default %D; periodic: closed curves only)")},
     {ROW("--form", NULL, NULL, CLI_F | CLI_C, CLI_K_ENUM, OFF(form), OFF(form_set)),
-     ENUM(CLI_VOCAB_FORM, 0, CLI_G_PARAM, "spline form (default %D)")},
+     ENUM(TS_VOCAB_FORM, 0, CLI_G_PARAM, "spline form (default %D)")},
     {ROW("--c1", NULL, NULL, CLI_F | CLI_C, CLI_K_FLAG, OFF(c1), NOF),
      PLAIN(NULL, CLI_G_PARAM, "the same as --form c1")},
     {ROW("--box", NULL, "XMIN,XMAX,YMIN,YMAX[,ZMIN,ZMAX]", CLI_V, CLI_K_CUSTOM, NOF, NOF),
@@ -675,7 +675,7 @@ const cli_optdef cli_optdefs[] = {
     {ROW("--derivative", NULL, "0|1|2", CLI_F, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_derivative, CLI_G_OUTPUT, "print S, S' or S'' (default 0)")},
     {ROW("--extrapolate", NULL, NULL, CLI_F, CLI_K_ENUM, OFF(extrap), OFF(extrap_set)),
-     ENUM(CLI_VOCAB_EXTRAP, 0, CLI_G_OUTPUT, "queries of --at outside the data (default %D)")},
+     ENUM(TS_VOCAB_EXTRAP, 0, CLI_G_OUTPUT, "queries of --at outside the data (default %D)")},
     {ROW("--output", "-o", "FILE", FCV, CLI_K_FILE, OFF(out), NOF),
      PLAIN(NULL, CLI_G_OUTPUT, "write there instead of standard output")},
     {ROW("--json", NULL, NULL, CLI_F | CLI_C, CLI_K_FLAG, OFF(json), NOF),
@@ -733,7 +733,7 @@ const cli_optdef cli_optdefs[] = {
     {ROW("--decimal-comma", NULL, NULL, FCV, CLI_K_FLAG, OFF(decimal_comma), NOF),
      PLAIN(NULL, CLI_G_INPUT, "',' is the decimal mark (then '.' is refused)")},
     {ROW("--na", NULL, "WORDS", FCV, CLI_K_TEXT, OFF(na), NOF),
-     REST(CLI_VOCAB_STATUS, 0, 0, 0, (double)NAN, "NA,NaN,null", NULL, CLI_G_INPUT,
+     REST(TS_VOCAB_STATUS, 0, 0, 0, (double)NAN, "NA,NaN,null", NULL, CLI_G_INPUT,
           "comma-separated words meaning \"missing\" (default %D; any case); an empty field "
           "is always missing")},
     {ROW("--missing", NULL, "error|skip", FCV, CLI_K_CUSTOM, NOF, NOF),
@@ -750,15 +750,15 @@ const cli_optdef cli_optdefs[] = {
     {ROW("--matrix", NULL, NULL, CLI_S, CLI_K_FLAG, SOFF(matrix_in), NOF),
      PLAIN(NULL, CLI_G_INPUT, "read the matrix layout")},
     {ROW("--shape", NULL, NULL, CLI_S, CLI_K_ENUM, SOFF(so.shape), NOF),
-     ENUM(CLI_VOCAB_SURFACE_SHAPE, 0, CLI_G_SHAPE, "(default %D)")},
+     ENUM(TS_VOCAB_SURFACE_SHAPE, 0, CLI_G_SHAPE, "(default %D)")},
     {ROW("--lower", NULL, "C|P,Q,C", CLI_S, CLI_K_CUSTOM, SOFF(so.lower), SOFF(so.has_lower)),
      PLAIN(opt_plane, CLI_G_SHAPE, "lower bound: constant C or plane z = P x + Q y + C")},
     {ROW("--upper", NULL, "C|P,Q,C", CLI_S, CLI_K_CUSTOM, SOFF(so.upper), SOFF(so.has_upper)),
      PLAIN(opt_plane, CLI_G_SHAPE, "upper bound (bounds: constants; planes: planes)")},
     {ROW("--form", NULL, NULL, CLI_S, CLI_K_ENUM, SOFF(so.form), NOF),
-     ENUM(CLI_VOCAB_FORM, 0, CLI_G_PARAM, "spline form (default %D)")},
+     ENUM(TS_VOCAB_FORM, 0, CLI_G_PARAM, "spline form (default %D)")},
     {ROW("--slopes", NULL, NULL, CLI_S, CLI_K_ENUM, SOFF(so.slopes), NOF),
-     ENUM(CLI_VOCAB_SLOPES, 1u << TS_SLOPES_USER | 1u << TS_SLOPES_PERIODIC, CLI_G_PARAM,
+     ENUM(TS_VOCAB_SLOPES, 1u << TS_SLOPES_USER | 1u << TS_SLOPES_PERIODIC, CLI_G_PARAM,
           "slope estimate along every grid line (default %D)")},
     {ROW("--alpha", NULL, "A", CLI_S, CLI_K_POS, SOFF(so.alpha), NOF),
      PLAIN(NULL, CLI_G_PARAM, "alpha (default %D, > 0; docs/method.md 11.3)")},
@@ -769,7 +769,7 @@ const cli_optdef cli_optdefs[] = {
     {ROW("--zero-twist", NULL, NULL, CLI_S, CLI_K_FLAG, SOFF(so.zero_twist), NOF),
      PLAIN(NULL, CLI_G_PARAM, "twist 0 instead of the estimate")},
     {ROW("--samples", NULL, "N", CLI_S, CLI_K_CUSTOM, SOFF(samples), NOF),
-     REST(CLI_VOCAB_STATUS, 0, 0, 0, 4, NULL, opt_surface_samples, CLI_G_OUTPUT,
+     REST(TS_VOCAB_STATUS, 0, 0, 0, 4, NULL, opt_surface_samples, CLI_G_OUTPUT,
           "output N samples per patch side (default %D)")},
     {ROW("--grid", NULL, "NX,NY", CLI_S, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_surface_grid, CLI_G_OUTPUT,

@@ -117,12 +117,23 @@ static void compact(stream *s, size_t keep)
     s->base += drop;
 }
 
+/* The stream's own checks that span chunks: point (x, f) on line ln, the
+ * next after the last one read, fails with st (the library's sentence). */
+static int point_error(const stream *s, ts_status st, double x, double f,
+                       unsigned long long ln)
+{
+    double x2[2] = {s->x[s->len - 1], x}, f2[2] = {s->f[s->len - 1], f};
+    unsigned long long l2[2] = {s->line[s->len - 1], ln};
+    ts_error e = {st, 1, TS_WHERE_POINT};
+    return cli_report_build_error(s->o, s->opt, s->name, &s->cols, x2, f2, l2, 2, &e, st,
+                                  npts(s) - 1);
+}
+
 /* Read until there are want points or the input ends. */
 static int fill(stream *s, size_t want)
 {
     tsu_io_error ie;
     const double *row;
-    char bx[TSU_TIME_SIZE], b2[TSU_TIME_SIZE], bf[TSU_FMT_SIZE];
     while (!s->eof && npts(s) < want) {
         tsu_io_status st = tsu_reader_next(s->r, &row, &ie);
         if (st == TSU_IO_END) {
@@ -145,25 +156,15 @@ static int fill(stream *s, size_t want)
             continue;
         if (s->len) {
             double px = s->x[s->len - 1], pf = s->f[s->len - 1];
-            if (!(x > px)) {
-                cli_error("%s:%llu: point %zu (x = %s) is not greater than the previous x = %s "
-                          "(line %llu); x must be strictly increasing",
-                          s->name, ln, npts(s), cli_x_text(&s->cols, x, bx),
-                          cli_x_text(&s->cols, px, b2),
-                          s->line[s->len - 1]);
-                return CLI_DATA;
-            }
+            if (!(x > px))
+                return point_error(s, TS_ERR_UNSORTED, x, f, ln);
             if (s->opt->shape == TS_SHAPE_MONOTONE) {
                 /* docs/method.md §5.5 needs one direction over the whole data, not per chunk */
                 int sg = (f > pf) - (f < pf);
                 if (sg && !s->dir)
                     s->dir = sg;
-                else if (sg && sg != s->dir) {
-                    cli_error("%s:%llu: point %zu (x = %s, f = %s): the data change direction "
-                              "here; --shape monotone needs monotone data",
-                              s->name, ln, npts(s), cli_x_text(&s->cols, x, bx), cli_num(f, bf));
-                    return CLI_DATA;
-                }
+                else if (sg && sg != s->dir)
+                    return point_error(s, TS_ERR_NONMONOTONE, x, f, ln);
             }
         }
         if (s->len == s->cap) {

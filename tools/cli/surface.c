@@ -176,25 +176,28 @@ done:
 }
 
 /* ---- building ---------------------------------------------------------------- */
-static int report_error(const surf_grid *g, ts_status st, const ts_error *e)
+static int report_error(const surf_grid *g, const ts_surface_options *so, ts_status st,
+                        const ts_error *e)
 {
-    char nb[TSU_FMT_SIZE], nb2[TSU_FMT_SIZE], nb3[TSU_FMT_SIZE], nb4[TSU_FMT_SIZE];
-    const char *why = ts_strerror(st);
+    char msg[1024];
+    ts_error_context ctx;
+    ts_error_context_init(&ctx);
+    ctx.x = g->x;
+    ctx.n_points = g->nx;
+    ctx.y = g->y;
+    ctx.ny_points = g->ny;
+    ctx.f = g->z;
+    ctx.surface_options = so;
+    ts_error err = *e;
+    err.status = st;
+    ts_error_message(&err, &ctx, msg, sizeof msg);
     if (e->where == TS_WHERE_POINT && e->index < g->nx * g->ny) {
-        size_t i = e->index % g->nx, j = e->index / g->nx;
-        cli_error("%s: line %llu: node (%zu, %zu) at x=%s, y=%s, z=%s: %s", g->name,
-                  g->line[e->index], i, j, cli_num(g->x[i], nb), cli_num(g->y[j], nb2),
-                  cli_num(g->z[e->index], nb3), why);
+        cli_error("%s: line %llu: %s", g->name, g->line[e->index], msg);
         return CLI_DATA;
     }
-    if (e->where == TS_WHERE_INTERVAL) {
-        size_t i = e->index % (g->nx - 1), j = e->index / (g->nx - 1);
-        cli_error("%s: patch (%zu, %zu) = [%s, %s] x [%s, %s]: %s", g->name, i, j,
-                  cli_num(g->x[i], nb), cli_num(g->x[i + 1], nb2), cli_num(g->y[j], nb3),
-                  cli_num(g->y[j + 1], nb4), why);
+    cli_error("%s: %s", g->name, msg);
+    if (e->where == TS_WHERE_INTERVAL)
         return st == TS_ERR_INFEASIBLE ? CLI_INFEASIBLE : CLI_DATA;
-    }
-    cli_error("%s: %s", g->name, why);
     return st == TS_ERR_NOMEM ? CLI_IO : (st == TS_ERR_OPTION || st == TS_ERR_ALPHA ||
                                           st == TS_ERR_BETA || st == TS_ERR_MARGIN ||
                                           st == TS_ERR_GEOMETRIC)
@@ -359,7 +362,7 @@ int cli_surface(int argc, char **argv)
     ts_error e;
     ts_status st = ts_surface_new(g.x, g.nx, g.y, g.ny, g.z, &o.so, &s, &e);
     if (st != TS_OK) {
-        rc = report_error(&g, st, &e);
+        rc = report_error(&g, &o.so, st, &e);
         grid_free(&g);
         return rc;
     }
@@ -411,7 +414,7 @@ int cli_surface(int argc, char **argv)
         cli_json_kuint(&j, "nx_points", g.nx);
         cli_json_kuint(&j, "ny_points", g.ny);
         cli_json_kstr(&j, "form", cli_form_name(o.so.form));
-        cli_json_kstr(&j, "shape", cli_vocab_name(CLI_VOCAB_SURFACE_SHAPE, (int)o.so.shape));
+        cli_json_kstr(&j, "shape", ts_vocab_name(TS_VOCAB_SURFACE_SHAPE, (int)o.so.shape));
         cli_json_kstr(&j, "slopes", cli_slopes_name(o.so.slopes));
         cli_json_kbool(&j, "certified", ts_surface_certified(s));
         cli_json_knum(&j, "sample_min", smin);

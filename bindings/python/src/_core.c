@@ -10,8 +10,9 @@
  * batch evaluation and every loop over queries or intervals.
  *
  * Failures of the library raise LibraryError(status, index, where) (a
- * ValueError); the package turns it into a TrigsplineError with a message
- * naming the point (trigspline/errors.py).
+ * ValueError) whose .message is the library's sentence (ts_error_message,
+ * with the data and options of the call where it has them); the package
+ * turns it into a TrigsplineError (trigspline/errors.py).
  *
  * The mathematics is the library's: derivatives of every order and the
  * extrapolation per call (ts_spline_eval_batch_mode), roots
@@ -33,7 +34,11 @@ static PyObject *LibraryError;
 /* Per-call extrapolation (ts_spline_eval_batch_mode; MODE_NAN: NaN outside). */
 enum { MODE_EXTEND = 0, MODE_CLAMP = 1, MODE_LINEAR = 2, MODE_NAN = 3, MODE_ERROR = 4 };
 
-static PyObject *raise_status(ts_status st, size_t index, ts_where where)
+/* Raise LibraryError(status, index, where) with .message = the library's
+ * sentence (ts_error_message) for ctx, the data and options of the call
+ * (NULL: the sentence without values). */
+static PyObject *raise_ctx(ts_status st, size_t index, ts_where where,
+                           const ts_error_context *ctx)
 {
     PyObject *idx;
     if (index == TS_NO_INDEX) {
@@ -42,17 +47,41 @@ static PyObject *raise_status(ts_status st, size_t index, ts_where where)
     } else {
         idx = PyLong_FromSize_t(index);
     }
+    ts_error e = {st, index, where};
+    char buf[1024];
+    ts_error_message(&e, ctx, buf, sizeof buf);
     PyObject *args = Py_BuildValue("(iNi)", (int)st, idx, (int)where);
-    if (args) {
-        PyErr_SetObject(LibraryError, args);
-        Py_DECREF(args);
-    }
+    PyObject *exc = args ? PyObject_Call(LibraryError, args, NULL) : NULL;
+    Py_XDECREF(args);
+    PyObject *msg = exc ? PyUnicode_DecodeUTF8(buf, (Py_ssize_t)strlen(buf), "replace") : NULL;
+    if (msg && PyObject_SetAttrString(exc, "message", msg) == 0)
+        PyErr_SetObject(LibraryError, exc);
+    Py_XDECREF(msg);
+    Py_XDECREF(exc);
     return NULL;
+}
+
+static PyObject *raise_status(ts_status st, size_t index, ts_where where)
+{
+    return raise_ctx(st, index, where, NULL);
 }
 
 static PyObject *raise_err(ts_status st, const ts_error *e)
 {
     return raise_status(st, e ? e->index : TS_NO_INDEX, e ? e->where : TS_WHERE_NONE);
+}
+
+/* raise_err for a failure on the spline data x, f (n points) with options opt. */
+static PyObject *raise_spline_err(ts_status st, const ts_error *e, const double *x,
+                                  const double *f, size_t n, const ts_spline_options *opt)
+{
+    ts_error_context ctx;
+    ts_error_context_init(&ctx);
+    ctx.x = x;
+    ctx.f = f;
+    ctx.n_points = n;
+    ctx.spline_options = opt;
+    return raise_ctx(st, e->index, e->where, &ctx);
 }
 
 /* A 1-D float64 C-contiguous array of obj (no copy when it already is one);
@@ -195,7 +224,7 @@ static PyObject *spline_new(PyObject *mod, PyObject *args, PyObject *kw)
     st = ts_spline_new(px, pf, np_, &opt, &s, &err);
     Py_END_ALLOW_THREADS
     if (st != TS_OK) {
-        raise_err(st, &err);
+        raise_spline_err(st, &err, px, pf, np_, &opt);
         goto done;
     }
     SplineHandle *h = PyObject_New(SplineHandle, &SplineHandleType);
@@ -659,7 +688,13 @@ static PyObject *curve_new(PyObject *mod, PyObject *args, PyObject *kw)
     st = ts_curve_new(pts, m, dim, &opt, &c, &err);
     Py_END_ALLOW_THREADS
     if (st != TS_OK) {
-        raise_err(st, &err);
+        ts_error_context ctx;
+        ts_error_context_init(&ctx);
+        ctx.points = pts;
+        ctx.n_points = m;
+        ctx.dim = dim;
+        ctx.curve_options = &opt;
+        raise_ctx(st, err.index, err.where, &ctx);
         goto done;
     }
     CurveHandle *h = PyObject_New(CurveHandle, &CurveHandleType);
@@ -1417,7 +1452,10 @@ static PyObject *slopes_compute(PyObject *mod, PyObject *args)
             Py_END_ALLOW_THREADS
             if (st != TS_OK) {
                 Py_DECREF(d);
-                raise_err(st, &err);
+                ts_spline_options o;
+                ts_spline_options_init(&o);
+                o.slopes = (ts_slopes)method;
+                raise_spline_err(st, &err, px, pf, (size_t)n, &o);
             } else {
                 result = d;
             }

@@ -342,8 +342,54 @@ static PyObject *py_strerror(PyObject *self, PyObject *arg)
     return PyUnicode_FromString(ts_strerror((ts_status)code));
 }
 
+/* message(code, index, where, x, f, opt): the library's sentence
+ * (ts_error_message) of a series' failure, with its data and the options of
+ * the option vector (index -1: none). */
+static PyObject *py_message(PyObject *self, PyObject *args)
+{
+    (void)self;
+    int code, where;
+    long long index;
+    PyObject *ox, *of, *oopt;
+    if (!PyArg_ParseTuple(args, "iLiOOO", &code, &index, &where, &ox, &of, &oopt))
+        return NULL;
+    PyArrayObject *ax = (PyArrayObject *)PyArray_FROMANY(ox, NPY_DOUBLE, 1, 1, NPY_ARRAY_IN_ARRAY);
+    PyArrayObject *af = ax ? (PyArrayObject *)PyArray_FROMANY(of, NPY_DOUBLE, 1, 1,
+                                                              NPY_ARRAY_IN_ARRAY)
+                           : NULL;
+    PyArrayObject *ao = af ? (PyArrayObject *)PyArray_FROMANY(oopt, NPY_DOUBLE, 1, 1,
+                                                              NPY_ARRAY_IN_ARRAY)
+                           : NULL;
+    PyObject *result = NULL;
+    series_options so;
+    if (!ao) {
+        /* exception set */
+    } else if (PyArray_SIZE(ax) != PyArray_SIZE(af) ||
+               !read_options(PyArray_DATA(ao), (npy_intp)sizeof(double), PyArray_SIZE(ao), &so)) {
+        PyErr_SetString(PyExc_ValueError, "message: x and f differ in length, or a bad option vector");
+    } else {
+        ts_error e = {(ts_status)code, index < 0 ? TS_NO_INDEX : (size_t)index,
+                      (ts_where)where};
+        ts_error_context ctx;
+        ts_error_context_init(&ctx);
+        ctx.x = PyArray_DATA(ax);
+        ctx.f = PyArray_DATA(af);
+        ctx.n_points = (size_t)PyArray_SIZE(ax);
+        ctx.spline_options = &so.opt;
+        char buf[1024];
+        ts_error_message(&e, &ctx, buf, sizeof buf);
+        result = PyUnicode_DecodeUTF8(buf, (Py_ssize_t)strlen(buf), "replace");
+    }
+    Py_XDECREF(ax);
+    Py_XDECREF(af);
+    Py_XDECREF(ao);
+    return result;
+}
+
 static PyMethodDef methods[] = {
     {"strerror", py_strerror, METH_O, "strerror(code) -> the library's fixed message for a status code."},
+    {"message", py_message, METH_VARARGS,
+     "message(code, index, where, x, f, opt) -> the library's sentence of a series' failure."},
     {NULL, NULL, 0, NULL},
 };
 

@@ -29,18 +29,18 @@ X = [0.0, 1.0, 2.0, 3.0, 4.0]
 
 
 def test_construction_errors():
-    raises("TS_ERR_TOO_FEW", lambda: Spline([1.0], [2.0]), text="too few points: 1")
+    raises("TS_ERR_TOO_FEW", lambda: Spline([1.0], [2.0]), text="1 data point; at least 2 are needed")
     raises("TS_ERR_LENGTH", lambda: Spline(X, [1.0, 2.0]))
     raises("TS_ERR_UNSORTED", lambda: Spline([0, 1, 1, 2], [1, 2, 3, 4]), 2, "point",
-           "point 2 (x = 1) is not greater than point 1")
+           "point 2 (x = 1) is not greater than the previous x = 1")
     raises("TS_ERR_NONFINITE", lambda: Spline(X, [1, np.nan, 1, 1, 1]), 1, "point")
     raises("TS_ERR_NEGATIVE", lambda: Spline(X, [1, 2, -0.5, 1, 1], shape="positive"), 2,
-           "point", "f = -0.5 < 0")
+           "point", "point 2 (x = 2, f = -0.5) is negative")
     raises("TS_ERR_NONMONOTONE", lambda: Spline(X, [1, 2, 3, 2, 4], shape="monotone"), 3,
            "point")
     raises("TS_ERR_SIDE", lambda: Spline([1, 2, 3, 9, 12, 14, 15], [0.5, 3, 5, 25, 8, 2, 1],
                                          shape="above", lower=(0.31, 1.0)), 0, "point",
-           "point 0 (x = 1) lies on or across the line y = 0.31*x + 1 (f = 0.5, line value 1.31)")
+           "point 0 (x = 1, f = 0.5) is not above the lower line y = 0.31x + 1")
     raises("TS_ERR_LINES", lambda: Spline(X, [1, 2, 3, 2, 1], shape="between",
                                           lower=(1.0, 0.0), upper=(-1.0, 4.0)), 2, "point")
     raises("TS_ERR_PERIODIC", lambda: Spline(X, [1, 2, 3, 2, 2], slopes="periodic"), 4,
@@ -88,9 +88,9 @@ def test_curve_errors():
     raises("TS_ERR_DIMENSION", lambda: Curve([[0, 1, 2, 3]] * 3))
     raises("TS_ERR_TOO_FEW", lambda: Curve([[0, 0]]))
     raises("TS_ERR_UNSORTED", lambda: Curve([[0, 0], [1, 1], [1, 1], [2, 0]]), 2, "point",
-           "point 2 (1, 1) repeats its neighbour")
+           "point 2 (1, 1) repeats the previous point")
     raises("TS_ERR_SIDE", lambda: Curve([[0, 0], [1, 1], [2, 0]], box=[None, (0.5, None)]),
-           0, "point")
+           0, "point", "point 0 (0, 0) is outside the box")
     c = Curve([[0, 0], [1, 1], [2, 0]])
     e = raises("TS_ERR_DOMAIN", lambda: c([0.5, 100.0]), 1, "query")
     assert "outside" in str(e)

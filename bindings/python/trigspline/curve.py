@@ -127,24 +127,11 @@ class Curve:
     def _error(e, rows):
         st, idx, w = e.args
         where = WHERE_NAMES[w] if 0 <= w < len(WHERE_NAMES) else None
-        base = strerror(st)
-        msg = base
-        pt = lambda r: "(" + ", ".join(num(v) for v in r) + ")"  # noqa: E731
         if st == _S.TOO_FEW:
             msg = "too few points: %d given; an open curve needs 2, a closed one 3 distinct" \
                   % len(rows)
-        elif idx is not None and where == "point" and idx < len(rows):
-            loc = "point %d %s" % (idx, pt(rows[idx]))
-            if st == _S.SIDE:
-                msg = "%s lies on or outside the box" % loc
-            elif st == _S.UNSORTED:
-                msg = "%s repeats its neighbour: consecutive points must differ" % loc
-            else:
-                msg = "%s: %s" % (loc, base)
-        elif idx is not None and where == "interval":
-            msg = "segment %d: %s" % (idx, base)
-        elif idx is not None and where is not None:
-            msg = "%s %d: %s" % (where, idx, base)
+        else:  # the library's sentence, written in C with the points and options
+            msg = getattr(e, "message", None) or strerror(st)
         return TrigsplineError(st, msg, idx, where)
 
     def __reduce__(self):

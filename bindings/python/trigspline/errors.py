@@ -65,97 +65,23 @@ class TrigsplineError(ValueError):
                                   self.series, self.node, self.patch))
 
 
-def _line_text(line):
-    m, c = line
-    if m == 0:
-        return "y = %s" % num(c)
-    if c == 0:
-        return "y = %s*x" % num(m)
-    sign = "+" if c > 0 else "-"
-    return "y = %s*x %s %s" % (num(m), sign, num(abs(c)))
-
-
-def _line_at(line, x):
-    return line[0] * x + line[1]
-
-
-def spline_error(err, ctx):
-    """TrigsplineError from a _core.LibraryError of spline construction.
-
-    ctx: dict with x, f (arrays), shape (name), lower, upper ((m, c) or None),
-    slopes_values (array or None)."""
+def spline_error(err):
+    """TrigsplineError from a _core.LibraryError of spline construction: the
+    library's sentence (``ts_error_message``, computed in C with the data and
+    options of the call)."""
     st, index, w = err.args
     where = WHERE_NAMES[w] if 0 <= w < len(WHERE_NAMES) else None
-    x = ctx.get("x")
-    f = ctx.get("f")
-    x = [] if x is None else x
-    f = [] if f is None else f
-    base = strerror(st)
-    msg = base
-    if where == "point" and index is not None and index < len(x):
-        xi, fi = x[index], f[index]
-        loc = "point %d (x = %s)" % (index, num(xi))
-        lower, upper = ctx.get("lower"), ctx.get("upper")
-        if st == _S.SIDE:
-            # which line (the scheme's own: above -> lower, below -> upper)
-            if lower is not None and not (fi > _line_at(lower, xi)):
-                line = lower
-            elif upper is not None:
-                line = upper
-            else:
-                line = lower
-            if line is not None:
-                msg = "%s lies on or across the line %s (f = %s, line value %s)" % (
-                    loc, _line_text(line), num(fi), num(_line_at(line, xi)))
-            else:
-                msg = "%s lies on or across the line" % loc
-        elif st == _S.NEGATIVE:
-            msg = "%s has f = %s < 0: the positive scheme needs f >= 0" % (loc, num(fi))
-        elif st == _S.UNSORTED and index > 0:
-            msg = "%s is not greater than point %d (x = %s): x must be strictly increasing" % (
-                loc, index - 1, num(x[index - 1]))
-        elif st == _S.NONMONOTONE:
-            msg = "%s (f = %s) changes the direction of the data: the monotone scheme needs " \
-                  "monotone data" % (loc, num(fi))
-        elif st == _S.LINES and lower is not None and upper is not None:
-            msg = "%s: the lower line %s (%s) is not strictly below the upper line %s (%s)" % (
-                loc, _line_text(lower), num(_line_at(lower, xi)), _line_text(upper),
-                num(_line_at(upper, xi)))
-        elif st == _S.PERIODIC:
-            msg = "%s: periodic slopes need f[0] == f[%d], got %s and %s" % (
-                loc, index, num(f[0]), num(fi))
-        elif st == _S.ZERO_SLOPE:
-            sv = ctx.get("slopes_values")
-            d = " %s" % num(sv[index]) if sv is not None and index < len(sv) else ""
-            msg = "%s touches the boundary (f = %s) and the user slope%s has the wrong sign" % (
-                loc, num(fi), d)
-        elif st == _S.NONFINITE:
-            sv = ctx.get("slopes_values")
-            if sv is not None and index < len(sv) and all(map(_finite, (xi, fi))) \
-                    and not _finite(sv[index]):
-                msg = "%s: user slope %s is not finite" % (loc, num(sv[index]))
-            else:
-                msg = "point %d (x = %s, f = %s): %s" % (index, num(xi), num(fi), base)
-        else:
-            msg = "%s: %s" % (loc, base)
-    elif where == "interval" and index is not None and index + 1 < len(x):
-        msg = "interval %d [%s, %s]: %s" % (index, num(x[index]), num(x[index + 1]), base)
-    elif where is not None and index is not None:
-        msg = "%s %d: %s" % (where, index, base)
-    return TrigsplineError(st, msg, index, where)
-
-
-def _finite(v):
-    return v == v and v not in (float("inf"), float("-inf"))
+    return TrigsplineError(st, getattr(err, "message", None) or strerror(st), index, where)
 
 
 class _S(object):
-    """Status codes used by name."""
-    NULL, NOMEM, OVERFLOW, TOO_FEW, NONFINITE, UNSORTED = 1, 2, 3, 4, 5, 6
-    ALPHA, BETA, MARGIN, LENGTH, OPTION, PERIODIC, DOMAIN = 7, 8, 9, 10, 11, 12, 13
-    NEGATIVE, SIDE, LINES, NONMONOTONE, INFEASIBLE, VIOLATED = 14, 15, 16, 17, 18, 19
-    GEOMETRIC, DIMENSION, INDEX, ZERO_SLOPE = 20, 21, 22, 23
-    SLOPE_OVERFLOW, TOO_LARGE, CONTROL_OVERFLOW, WIDTH, PRECISION, UNPROVEN = 24, 25, 26, 27, 28, 29
+    """Status codes used by name: _S.SIDE is TS_ERR_SIDE's value (from the
+    library's names, ts_status_name)."""
+
+
+for _code, _name in enumerate(STATUS_NAMES):
+    if _name.startswith("TS_ERR_"):
+        setattr(_S, _name[len("TS_ERR_"):], _code)
 
 
 def domain_error(value, index, lo, hi, extrapolate="error"):

@@ -266,9 +266,12 @@ def interp(x, f, xq, *, shape=None, lower=None, upper=None, alpha=None, form=Non
             where = tuple(int(i) for i in np.unravel_index(int(np.argmax(bad)), bad.shape))
             code, at = int(status[where]), int(index[where])
             what = "interval" if code in _INTERVAL_STATUSES else "point"
-            raise TrigsplineError(code, "%s%s (%s %d)" % (
-                "series %s: " % (where,) if where else "", status_message(code), what, at),
-                at, what, series=where or None)
+            lead = bad.shape + xm.shape[-1:]
+            msg = _gufunc.message(code, at, 2 if what == "interval" else 1,
+                                  np.broadcast_to(xm, lead)[where],
+                                  np.broadcast_to(fm, lead)[where], opt)
+            raise TrigsplineError(code, "%s%s" % ("series %s: " % (where,) if where else "", msg),
+                                  at, what, series=where or None)
     if axis != f.ndim - 1:
         y = np.moveaxis(y, -1, axis - f.ndim + y.ndim)
     if full:

@@ -98,7 +98,7 @@ def estimate_slopes(x: ArrayLike, f: ArrayLike, slopes: Optional[str] = None, *,
         if e.args[0] == _S.LENGTH:
             raise TrigsplineError(_S.LENGTH, "x has %d values but f has %d"
                                   % (len(xa), len(fa))) from None
-        raise spline_error(e, {"x": xa, "f": fa}) from None
+        raise spline_error(e) from None
 
 
 _options.document(estimate_slopes)
@@ -301,23 +301,14 @@ class Spline:
             try:
                 handles.append(_core.spline_new(xa, fk, **o))
             except _core.LibraryError as e:
-                raise self._build_error(e, xa, fk, sk, k, len(series)) from None
+                raise self._build_error(e, k, len(series)) from None
         self._h = handles
         h0 = handles[0]
         self._x = h0.x
         self._n = h0.intervals
 
-    def _build_error(self, e, x, f, sv, k, count):
-        st = e.args[0]
-        if st == _S.TOO_FEW:
-            err = TrigsplineError(st, "too few points: %d given, at least 2 are needed"
-                                  % len(x))
-        elif st == _S.LENGTH:
-            err = TrigsplineError(st, strerror(st))
-        else:
-            err = spline_error(e, {"x": x, "f": f, "shape": self._shape,
-                                   "lower": self._lines[0], "upper": self._lines[1],
-                                   "slopes_values": sv})
+    def _build_error(self, e, k, count):
+        err = spline_error(e)
         if count > 1:
             idx = tuple(int(i) for i in np.unravel_index(k, self._pre + self._trail))
             err = TrigsplineError(err.status, "series %r: %s" % (idx, err.message), err.index,

@@ -2,11 +2,15 @@
 // controls.  Every change goes through update(): fit and certify with the
 // wasm module, draw, fill the certificate table, write the state into the URL.
 /* global createTrigsplineCli */
-import { load } from '../trigspline.js';
+import { load, NAMES } from '../trigspline.js';
 import { exportState, cliArgs } from '../export.js';
 
 const ts = await load();
 const $ = (id) => document.getElementById(id);
+// the choices of the enum selects: the library's names (NAMES), not restated in index.html
+for (const [id, skip] of [['form', []], ['param', []], ['slopes', ['user', 'periodic']]]) {
+  $(id).replaceChildren(...NAMES[id].filter((n) => !skip.includes(n)).map((n) => new Option(n)));
+}
 const svg = $('plot');
 const W = 760, H = 480, M = { l: 48, r: 14, t: 14, b: 30 };
 const NS = 'http://www.w3.org/2000/svg';
