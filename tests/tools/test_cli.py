@@ -930,13 +930,17 @@ def test_surface_usage():
 
 
 def test_signals():
-    """SIGINT, SIGTERM, SIGHUP while a streamed fit writes -o FILE: the
+    """SIGINT, SIGTERM, SIGHUP, SIGQUIT while a streamed fit writes -o FILE: the
     temporary file is removed, FILE is not created, and the process still
     dies of the signal (exit status -SIG).  (--svg and the other outputs use
     the same temporary files, tsu_out.)"""
+    import resource
     import signal
     import time
-    for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+
+    def no_core():  # SIGQUIT's default action may dump core: not here
+        resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
+    for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT):
         for extra in ([],):
             d = tempfile.mkdtemp(dir=TMP)
             out = os.path.join(d, "out.csv")
@@ -944,7 +948,7 @@ def test_signals():
             if extra:
                 args += ["--svg", os.path.join(d, "out.svg")]
             p = subprocess.Popen(args, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                 stderr=subprocess.PIPE)
+                                 stderr=subprocess.PIPE, preexec_fn=no_core)
             data = b"x,y\n" + b"".join(b"%d,%d\n" % (i, i % 7 + 1) for i in range(400000))
 
             def feed_rows():
@@ -981,6 +985,46 @@ def test_signals():
             check(name + ": a temporary file existed", bool(had), str(os.listdir(d)))
             check(name + ": killed by the signal", p.returncode == -sig, str(p.returncode))
             check(name + ": nothing left", os.listdir(d) == [], str(os.listdir(d)))
+
+
+def run_limited(limit, args, timeout):
+    """The tool under a shell's ulimit (LIMIT: e.g. "-v 200000"), as a user runs it."""
+    p = subprocess.run(["sh", "-c", 'ulimit %s && exec "$0" "$@"' % limit, CLI] + args,
+                       capture_output=True, timeout=timeout)
+    return p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
+
+
+def test_limits():
+    """Resource limits end in exit 5 with nothing written: a failed allocation
+    while building --json (was: every later token retried the allocation of the
+    whole document, minutes under ulimit -v) and a file size limit (was: killed
+    by SIGXFSZ, exit 153, the temporary file left)."""
+    d = tempfile.mkdtemp(dir=TMP)
+    big = os.path.join(d, "big.csv")
+    with open(big, "w") as fh:
+        fh.write("x,y\n")
+        fh.write("".join("%d,%d\n" % (i, i % 7 + 1) for i in range(1000000)))
+    out = os.path.join(d, "out.json")
+    if not sanitized():  # ASan reserves terabytes of address space: no ulimit -v
+        # the JSON of 1e6 intervals is ~450 MB; under 200 MB of address space
+        # it fails after ~2 s of fitting (timeout: 10x that on a loaded machine)
+        try:
+            rc, so, err = run_limited("-v 200000", ["fit", big, "--json", "-o", out], 30)
+        except subprocess.TimeoutExpired:
+            rc, so, err = None, "", "timed out after 30 s"
+        check("--json under ulimit -v: exit 5", rc == 5 and "out of memory" in err,
+              "%r %r" % (rc, err[:300]))
+        check("--json under ulimit -v: nothing written", os.listdir(d) == ["big.csv"],
+              str(os.listdir(d)))
+    for name, args in (("csv", ["-o", os.path.join(d, "out.csv")]),
+                       ("no-stream", ["--no-stream", "-o", os.path.join(d, "out.csv")]),
+                       ("json", ["--json", "-o", out])):
+        rc, so, err = run_limited("-f 1", ["fit", big] + args, 120)
+        check("ulimit -f 1 %s: exit 5" % name, rc == 5 and "cannot write" in err,
+              "%r %r" % (rc, err[:300]))
+        check("ulimit -f 1 %s: nothing left" % name, os.listdir(d) == ["big.csv"],
+              str(os.listdir(d)))
+    shutil.rmtree(d, ignore_errors=True)
 
 
 def test_edges_cli():
@@ -1047,8 +1091,8 @@ def main():
                   test_inputs, test_malformed, test_exit_statuses, test_range_messages,
                   test_options, test_svg,
                   test_curve, test_streaming_identical, test_streaming_errors,
-                  test_streaming_memory, test_signals, test_same_output, test_surface_usage,
-                  test_edges_cli):
+                  test_streaming_memory, test_signals, test_limits, test_same_output,
+                  test_surface_usage, test_edges_cli):
             try:
                 t()
             except Exception as e:  # a crash in one group is one failure, keep going

@@ -445,9 +445,11 @@ void tsu_table_free(tsu_table *t);  /* NULL ok; leaves *t zeroed */
  * For "-" it only flushes (what was written cannot be taken back).
  *
  * The temporary files open at a time (up to 16) are removed if the process
- * gets SIGINT, SIGTERM or SIGHUP (the first tsu_out_open installs handlers
- * for those not ignored; a handler removes the files and re-raises the
- * signal with its default action).  SIGKILL or a crash leave them.
+ * gets SIGINT, SIGTERM, SIGHUP or SIGQUIT (the first tsu_out_open installs
+ * handlers for those not ignored; a handler removes the files and re-raises
+ * the signal with its default action).  It also ignores SIGXFSZ unless the
+ * caller handles it, so that exceeding the file size limit is a write error
+ * (EFBIG) like any other.  SIGKILL or a crash leave them.
  */
 typedef struct tsu_out tsu_out;
 
