@@ -987,6 +987,55 @@ def test_signals():
             check(name + ": nothing left", os.listdir(d) == [], str(os.listdir(d)))
 
 
+def test_inputs_mislead():
+    """Inputs that lost data or gave the wrong reason: the input named as -o
+    (or --svg) is refused before anything is written (was: replaced by the
+    samples); CR-only line ends read (was: "no data rows"); UTF-16 named as
+    such (was: "a second header line (units?)")."""
+    d = tempfile.mkdtemp(dir=TMP)
+    data = os.path.join(d, "in.csv")
+    text = open(T1).read()
+    open(data, "w").write(text)
+    os.symlink(data, os.path.join(d, "sym.csv"))
+    os.link(data, os.path.join(d, "hard.csv"))
+    cwd = os.getcwd()
+    os.chdir(d)
+    try:
+        for cmd in (["fit", "in.csv", "-o", "in.csv"], ["fit", "in.csv", "-o", "./in.csv"],
+                    ["fit", "sym.csv", "-o", "in.csv"], ["fit", "in.csv", "-o", "hard.csv"],
+                    ["fit", "in.csv", "--svg", "./in.csv", "--format", "svg"],
+                    ["certify", "in.csv", "--shape", "positive", "-o", data],
+                    ["fit", "in.csv", "--json", "-o", "sym.csv"]):
+            rc, so, err = run(cmd)
+            check("input as output refused: %s" % " ".join(cmd), rc == 1 and
+                  "names the input file" in err and so == "", "%d %r" % (rc, err))
+            check("input as output kept: %s" % " ".join(cmd), open(data).read() == text and
+                  sorted(os.listdir(d)) == ["hard.csv", "in.csv", "sym.csv"], str(os.listdir(d)))
+    finally:
+        os.chdir(cwd)
+    rc, ref, err = run(["fit", T1, "--json"])
+    lf = text.replace("\r\n", "\n")
+    for name, body in (("cr", lf.replace("\n", "\r")), ("crlf", lf.replace("\n", "\r\n"))):
+        p = os.path.join(d, name + ".csv")
+        open(p, "w", newline="").write(body)
+        for extra in ([], ["--no-stream"]):
+            rc, so, err = run(["fit", p, "--json"] + extra)
+            check("%s line ends %s" % (name, extra), rc == 0 and
+                  json.loads(so)["knots"] == json.loads(ref)["knots"], err)
+    p = os.path.join(d, "cr_bad.csv")
+    open(p, "w", newline="").write("x,y\r0,1\r\r1,2\rz,3\r")
+    rc, so, err = run(["fit", p])
+    check("CR line numbers", rc == 2 and "cr_bad.csv:5:1:" in err, err)
+    for enc in ("utf-16", "utf-16-be", "utf-16-le"):
+        p = os.path.join(d, enc + ".csv")
+        open(p, "wb").write(lf.encode(enc))
+        for cmd in (["fit", p], ["surface", p]):
+            rc, so, err = run(cmd)
+            check("%s %s named" % (cmd[0], enc), rc == 2 and p in err and "UTF-16" in err and
+                  "convert it to UTF-8" in err and "header" not in err, err)
+    shutil.rmtree(d, ignore_errors=True)
+
+
 def run_limited(limit, args, timeout):
     """The tool under a shell's ulimit (LIMIT: e.g. "-v 200000"), as a user runs it."""
     p = subprocess.run(["sh", "-c", 'ulimit %s && exec "$0" "$@"' % limit, CLI] + args,
@@ -1091,7 +1140,7 @@ def main():
                   test_inputs, test_malformed, test_exit_statuses, test_range_messages,
                   test_options, test_svg,
                   test_curve, test_streaming_identical, test_streaming_errors,
-                  test_streaming_memory, test_signals, test_limits, test_same_output,
+                  test_streaming_memory, test_signals, test_limits, test_inputs_mislead, test_same_output,
                   test_surface_usage, test_edges_cli):
             try:
                 t()

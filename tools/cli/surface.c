@@ -212,6 +212,15 @@ static int report_error(const surf_grid *g, ts_status st, const ts_error *e)
 {
     char nb[TSU_FMT_SIZE], nb2[TSU_FMT_SIZE], nb3[TSU_FMT_SIZE], nb4[TSU_FMT_SIZE];
     const char *why = ts_strerror(st);
+    /* TS_ERR_NONFINITE also stands for a slope or control value computed from
+     * finite data that overflows (include/trigspline.h, ts_surface_new); the
+     * grid read is finite, so that is what happened */
+    if (st == TS_ERR_NONFINITE && e->where == TS_WHERE_POINT)
+        why = "the slopes computed at this node overflow a double (finite values this close to "
+              "the largest double; rescale z)";
+    if (st == TS_ERR_NONFINITE && e->where == TS_WHERE_INTERVAL)
+        why = "the control values of this patch overflow a double (finite values this close to "
+              "the largest double; rescale z)";
     if (e->where == TS_WHERE_POINT && e->index < g->nx * g->ny) {
         size_t i = e->index % g->nx, j = e->index / g->nx;
         cli_error("%s: line %llu: node (%zu, %zu) at x=%s, y=%s, z=%s: %s", g->name,

@@ -156,7 +156,8 @@ typedef enum tsu_io_status {
     TSU_IO_ERR_QUOTE = 14,   /* a quote never closed, or text after a closing quote */
     TSU_IO_ERR_TIME = 15,    /* a field of a time column is not a valid date / date-time */
     TSU_IO_ERR_LAYOUT = 16,  /* the file's layout is ambiguous (second header line, ...) */
-    TSU_IO_STATUS_COUNT_ = 17
+    TSU_IO_ERR_ENCODING = 17, /* UTF-16 text (a UTF-16 byte-order mark or NUL bytes) */
+    TSU_IO_STATUS_COUNT_ = 18
 } tsu_io_status;
 
 /* A fixed, never-NULL English string for any value. */
