@@ -15,8 +15,8 @@
 
 static ts_spline *fit(const double *x, const double *f, size_t n, ts_form form)
 {
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = form;
     ts_spline *s = NULL;
     ts_status st = ts_spline_new(x, f, n, &o, &s, NULL);
