@@ -446,6 +446,21 @@ static void surface_sentence(out *o, const ts_error_context *c, const ts_error *
         put(o, "; raise alpha or beta");
         return;
     }
+    /* TS_ERR_NONFINITE at a node whose z is finite, or at a patch of finite
+     * data: a slope or control value computed from finite data overflowed
+     * (ts_surface_new), not the input */
+    if (e->status == TS_ERR_NONFINITE && c->f && c->x && c->y &&
+        ((e->where == TS_WHERE_POINT && e->index < c->n_points * c->ny_points &&
+          isfinite(c->f[e->index])) ||
+         e->where == TS_WHERE_INTERVAL)) {
+        surface_where(o, c, e);
+        put(o, e->where == TS_WHERE_POINT
+                   ? ": the slopes computed at this node overflow a double (finite values "
+                     "this close to the largest double; rescale z)"
+                   : ": the control values of this patch overflow a double (finite values "
+                     "this close to the largest double; rescale z)");
+        return;
+    }
     if (e->where != TS_WHERE_NONE && e->index != TS_NO_INDEX) {
         surface_where(o, c, e);
         put(o, ": ");

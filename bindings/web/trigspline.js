@@ -16,7 +16,10 @@
 // .index (the point, interval or query; null when none), .where ("point",
 // "interval", "query" or null) and .message: the status name and the
 // library's sentence (ts_error_message; for spline() and curve() with the
-// data and options of the call, naming the point, its x and f).
+// data and options of the call, naming the point, its x and f).  Data that
+// are not arrays of numbers are refused before the library sees them, with a
+// message naming the argument (TS_ERR_NULL) or the entry that is not a number
+// (TS_ERR_NONFINITE, .index = that point).
 
 /* global WASM_BASE64 */
 // Names, index = the C enum value: the library's vocabulary (ts_vocab_name,
@@ -46,9 +49,33 @@ function extrapCode(name) {
   return k;
 }
 const NO_INDEX = 0xffffffff;
+// The data argument a (named what) unchanged, or a TrigSplineError naming what
+// is wrong with it: not an array of numbers at all (TS_ERR_NULL: null, a
+// string, ...), or an entry that is not a number (TS_ERR_NONFINITE with its
+// index; the heap copy would make it NaN).  Numeric strings stay accepted.
+function numbersOf(a, what, dim = 1) {
+  if (ArrayBuffer.isView(a)) return a;
+  if (a === null || typeof a !== 'object' || typeof a.length !== 'number') {
+    const got = a === null ? 'null' : typeof a === 'string' ? 'a string' : typeof a;
+    throw new TrigSplineError(1, `${what} must be an array of numbers, got ${got}`, null, null);
+  }
+  for (let i = 0; i < a.length; i++) {
+    const v = a[i];
+    if (typeof v !== 'number' && Number.isNaN(Number(v))) {
+      const k = Math.floor(i / dim);
+      const at = dim > 1 ? `${what}[${k}][${i % dim}]` : `${what}[${i}]`;
+      const got = typeof v === 'string' ? `the string ${JSON.stringify(v)}`
+        : v === null || v === undefined ? String(v) : `a value of type ${typeof v}`;
+      throw new TrigSplineError(5, `${at} is not a number (${got})`, k, 'point');
+    }
+  }
+  return a;
+}
 const dispose = Symbol.dispose ?? Symbol.for('Symbol.dispose');
 
 export class TrigSplineError extends Error {
+  // text: the whole sentence (the library's, or an argument check of this
+  // wrapper)
   constructor(code, text, index, where) {
     const name = STATUS_NAMES[code] ?? `status ${code}`;
     super(`${name}: ${text}`);
@@ -212,6 +239,8 @@ class TrigSpline {
   // for a constant line), .line (for above/below), .certify, .extrapolate.
   spline(x, f, options = {}) {
     const o = { ...this.defaults, ...options };
+    numbersOf(x, 'x');
+    numbersOf(f, 'f');
     const n = x.length;
     if (f.length !== n) {
       throw new TrigSplineError(10, `${this.strerror(10)}: ${f.length} values for ${n} x`, null, null);
@@ -259,6 +288,7 @@ class TrigSpline {
       }
     }
     dim ??= 2;
+    numbersOf(flat, 'points', dim);
     const n = Math.floor(flat.length / dim);
     const box = this.boxArray(o.box);
     const arr = (v) => (typeof v === 'number' ? null : v);

@@ -293,9 +293,16 @@ static void free_fields(fld *f, long k)
 }
 
 /* ---- the reference reader -------------------------------------------- */
-static void ref_read(const char *d, size_t n, const ropts *o, ref *r)
+static void ref_read(const char *d0, size_t n, const ropts *o, ref *r)
 {
     size_t pos = 0, line = 0;
+    int seen = 0; /* a content record was read (UTF-16 is looked for before it) */
+    /* a lone CR ends a line like LF: the whole input translated first */
+    char *d = malloc(n + 1);
+    memcpy(d, d0, n);
+    for (size_t i = 0; i < n; i++)
+        if (d[i] == '\r' && (i + 1 == n || d[i + 1] != '\n'))
+            d[i] = '\n';
     char dc = o->delim; /* 0: auto until known (then ' ' stands for white space) */
     int known = o->delim != 0, first = 1;
     unsigned char is_time[4096];
@@ -355,6 +362,13 @@ static void ref_read(const char *d, size_t n, const ropts *o, ref *r)
             }
             rec[rl++] = '\n';
         }
+        /* UTF-16: its byte-order mark on line 1, or a NUL before the first content */
+        if ((rec_line == 1 && rl >= 2 && ((unsigned char)rec[0] == 0xff || (unsigned char)rec[0] == 0xfe) &&
+             (unsigned char)rec[1] == ((unsigned char)rec[0] ^ 1u)) ||
+            (!seen && memchr(rec, '\0', rl))) {
+            r->ok = 0;
+            goto out;
+        }
         if (cend != (size_t)-1)
             rl = cend;
         while (rl > 0 && (rec[rl - 1] == ' ' || rec[rl - 1] == '\t' || rec[rl - 1] == '\r'))
@@ -364,6 +378,7 @@ static void ref_read(const char *d, size_t n, const ropts *o, ref *r)
             b++;
         if (b == rl)
             continue;
+        seen = 1;
         (void)rec_line;
         if (!known) {
             int q = 0, semi = 0, comma = 0, tab = 0;
@@ -446,6 +461,7 @@ static void ref_read(const char *d, size_t n, const ropts *o, ref *r)
     r->ok = r->nrows > 0;
 out:
     free(rec);
+    free(d);
 }
 
 static int same(double a, double b)

@@ -933,13 +933,17 @@ def test_surface_usage():
 
 
 def test_signals():
-    """SIGINT, SIGTERM, SIGHUP while a streamed fit writes -o FILE: the
+    """SIGINT, SIGTERM, SIGHUP, SIGQUIT while a streamed fit writes -o FILE: the
     temporary file is removed, FILE is not created, and the process still
     dies of the signal (exit status -SIG).  (--svg and the other outputs use
     the same temporary files, tsu_out.)"""
+    import resource
     import signal
     import time
-    for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP):
+
+    def no_core():  # SIGQUIT's default action may dump core: not here
+        resource.setrlimit(resource.RLIMIT_CORE, (0, 0))
+    for sig in (signal.SIGINT, signal.SIGTERM, signal.SIGHUP, signal.SIGQUIT):
         for extra in ([],):
             d = tempfile.mkdtemp(dir=TMP)
             out = os.path.join(d, "out.csv")
@@ -947,7 +951,7 @@ def test_signals():
             if extra:
                 args += ["--svg", os.path.join(d, "out.svg")]
             p = subprocess.Popen(args, stdin=subprocess.PIPE, stdout=subprocess.PIPE,
-                                 stderr=subprocess.PIPE)
+                                 stderr=subprocess.PIPE, preexec_fn=no_core)
             data = b"x,y\n" + b"".join(b"%d,%d\n" % (i, i % 7 + 1) for i in range(400000))
 
             def feed_rows():
@@ -984,6 +988,95 @@ def test_signals():
             check(name + ": a temporary file existed", bool(had), str(os.listdir(d)))
             check(name + ": killed by the signal", p.returncode == -sig, str(p.returncode))
             check(name + ": nothing left", os.listdir(d) == [], str(os.listdir(d)))
+
+
+def test_inputs_mislead():
+    """Inputs that lost data or gave the wrong reason: the input named as -o
+    (or --svg) is refused before anything is written (was: replaced by the
+    samples); CR-only line ends read (was: "no data rows"); UTF-16 named as
+    such (was: "a second header line (units?)")."""
+    d = tempfile.mkdtemp(dir=TMP)
+    data = os.path.join(d, "in.csv")
+    text = open(T1).read()
+    open(data, "w").write(text)
+    os.symlink(data, os.path.join(d, "sym.csv"))
+    os.link(data, os.path.join(d, "hard.csv"))
+    cwd = os.getcwd()
+    os.chdir(d)
+    try:
+        for cmd in (["fit", "in.csv", "-o", "in.csv"], ["fit", "in.csv", "-o", "./in.csv"],
+                    ["fit", "sym.csv", "-o", "in.csv"], ["fit", "in.csv", "-o", "hard.csv"],
+                    ["fit", "in.csv", "--svg", "./in.csv", "--format", "svg"],
+                    ["certify", "in.csv", "--shape", "positive", "-o", data],
+                    ["fit", "in.csv", "--json", "-o", "sym.csv"]):
+            rc, so, err = run(cmd)
+            check("input as output refused: %s" % " ".join(cmd), rc == 1 and
+                  "names the input file" in err and so == "", "%d %r" % (rc, err))
+            check("input as output kept: %s" % " ".join(cmd), open(data).read() == text and
+                  sorted(os.listdir(d)) == ["hard.csv", "in.csv", "sym.csv"], str(os.listdir(d)))
+    finally:
+        os.chdir(cwd)
+    rc, ref, err = run(["fit", T1, "--json"])
+    lf = text.replace("\r\n", "\n")
+    for name, body in (("cr", lf.replace("\n", "\r")), ("crlf", lf.replace("\n", "\r\n"))):
+        p = os.path.join(d, name + ".csv")
+        open(p, "w", newline="").write(body)
+        for extra in ([], ["--no-stream"]):
+            rc, so, err = run(["fit", p, "--json"] + extra)
+            check("%s line ends %s" % (name, extra), rc == 0 and
+                  json.loads(so)["knots"] == json.loads(ref)["knots"], err)
+    p = os.path.join(d, "cr_bad.csv")
+    open(p, "w", newline="").write("x,y\r0,1\r\r1,2\rz,3\r")
+    rc, so, err = run(["fit", p])
+    check("CR line numbers", rc == 2 and "cr_bad.csv:5:1:" in err, err)
+    for enc in ("utf-16", "utf-16-be", "utf-16-le"):
+        p = os.path.join(d, enc + ".csv")
+        open(p, "wb").write(lf.encode(enc))
+        for cmd in (["fit", p], ["surface", p]):
+            rc, so, err = run(cmd)
+            check("%s %s named" % (cmd[0], enc), rc == 2 and p in err and "UTF-16" in err and
+                  "convert it to UTF-8" in err and "header" not in err, err)
+    shutil.rmtree(d, ignore_errors=True)
+
+
+def run_limited(limit, args, timeout):
+    """The tool under a shell's ulimit (LIMIT: e.g. "-v 200000"), as a user runs it."""
+    p = subprocess.run(["sh", "-c", 'ulimit %s && exec "$0" "$@"' % limit, CLI] + args,
+                       capture_output=True, timeout=timeout)
+    return p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
+
+
+def test_limits():
+    """Resource limits end in exit 5 with nothing written: a failed allocation
+    while building --json (was: every later token retried the allocation of the
+    whole document, minutes under ulimit -v) and a file size limit (was: killed
+    by SIGXFSZ, exit 153, the temporary file left)."""
+    d = tempfile.mkdtemp(dir=TMP)
+    big = os.path.join(d, "big.csv")
+    with open(big, "w") as fh:
+        fh.write("x,y\n")
+        fh.write("".join("%d,%d\n" % (i, i % 7 + 1) for i in range(1000000)))
+    out = os.path.join(d, "out.json")
+    if not sanitized():  # ASan reserves terabytes of address space: no ulimit -v
+        # the JSON of 1e6 intervals is ~450 MB; under 200 MB of address space
+        # it fails after ~2 s of fitting (timeout: 10x that on a loaded machine)
+        try:
+            rc, so, err = run_limited("-v 200000", ["fit", big, "--json", "-o", out], 30)
+        except subprocess.TimeoutExpired:
+            rc, so, err = None, "", "timed out after 30 s"
+        check("--json under ulimit -v: exit 5", rc == 5 and "out of memory" in err,
+              "%r %r" % (rc, err[:300]))
+        check("--json under ulimit -v: nothing written", os.listdir(d) == ["big.csv"],
+              str(os.listdir(d)))
+    for name, args in (("csv", ["-o", os.path.join(d, "out.csv")]),
+                       ("no-stream", ["--no-stream", "-o", os.path.join(d, "out.csv")]),
+                       ("json", ["--json", "-o", out])):
+        rc, so, err = run_limited("-f 1", ["fit", big] + args, 120)
+        check("ulimit -f 1 %s: exit 5" % name, rc == 5 and "cannot write" in err,
+              "%r %r" % (rc, err[:300]))
+        check("ulimit -f 1 %s: nothing left" % name, os.listdir(d) == ["big.csv"],
+              str(os.listdir(d)))
+    shutil.rmtree(d, ignore_errors=True)
 
 
 def test_edges_cli():
@@ -1050,8 +1143,8 @@ def main():
                   test_inputs, test_malformed, test_exit_statuses, test_range_messages,
                   test_options, test_svg,
                   test_curve, test_streaming_identical, test_streaming_errors,
-                  test_streaming_memory, test_signals, test_same_output, test_surface_usage,
-                  test_edges_cli):
+                  test_streaming_memory, test_signals, test_limits, test_inputs_mislead, test_same_output,
+                  test_surface_usage, test_edges_cli):
             try:
                 t()
             except Exception as e:  # a crash in one group is one failure, keep going

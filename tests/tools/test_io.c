@@ -1260,6 +1260,52 @@ static void test_reader_columns(void)
         fclose(f);
 }
 
+/* Line ends CR LF, LF and a lone CR (old Mac OS) read alike, with the same
+ * line numbers, for every buffer size (a CR last in the buffer); UTF-16 text
+ * is named as such. */
+static void test_reader_line_ends(void)
+{
+    static const char *const texts[] = {
+        "x,y\n# c\n0,1\n\n1,2\n2,1.5\n3,4\n",           /* the reference: LF */
+        "x,y\r# c\r0,1\r\r1,2\r2,1.5\r3,4\r",           /* CR */
+        "x,y\r# c\r0,1\r\r1,2\r2,1.5\r3,4",             /* CR, none at the end */
+        "x,y\r\n# c\r\n0,1\r\n\r\n1,2\r\n2,1.5\r\n3,4\r\n", /* CR LF */
+        "x,y\r# c\n0,1\r\n\r1,2\n2,1.5\r3,4\r\n",       /* mixed */
+    };
+    static const double want[4][2] = {{0, 1}, {1, 2}, {2, 1.5}, {3, 4}};
+    static const unsigned long long want_line[4] = {3, 5, 6, 7};
+    static const size_t bufs[] = {16, 17, 18, 19, 4096};
+    for (size_t k = 0; k < sizeof texts / sizeof *texts; k++)
+        for (size_t b = 0; b < sizeof bufs / sizeof *bufs; b++) {
+            tsu_read_options o;
+            tsu_table t;
+            tsu_io_error e;
+            tsu_read_options_init(&o);
+            o.buffer_size = bufs[b];
+            int ok = read_text(texts[k], strlen(texts[k]), &o, &t, &e) == TSU_IO_OK &&
+                     t.nrows == 4 && t.ncols == 2 && strcmp(t.names[1], "y") == 0;
+            for (size_t i = 0; ok && i < 4; i++)
+                ok = t.cols[0][i] == want[i][0] && t.cols[1][i] == want[i][1] &&
+                     t.lines[i] == want_line[i];
+            CHECKF(ok, "line ends %zu, buffer %zu: %s", k, bufs[b], e.msg);
+            tsu_table_free(&t);
+        }
+    /* line numbers in a message after lone CRs */
+    EXPECT_ERR("x,y\r0,1\r\rz,2\r", NULL, TSU_IO_ERR_NUMBER,
+               "t.csv:4:1: expected a number, found \"z\"", 4, 1);
+    /* UTF-16: with a byte-order mark (LE, BE), or without one (NUL bytes) */
+    EXPECT_ERR("\xff\xfex\0,\0y\0\n\0" "0\0,\0" "1\0\n\0", NULL, TSU_IO_ERR_ENCODING,
+               "t.csv:1: the file is UTF-16 text (a UTF-16 byte-order mark): convert it to UTF-8 "
+               "(for example iconv -f UTF-16 -t UTF-8)", 1, 0);
+    EXPECT_ERR("\xfe\xff\0x\0,\0y\0\n\0" "0\0,\0" "1\0\n", NULL, TSU_IO_ERR_ENCODING,
+               "t.csv:1: the file is UTF-16 text (a UTF-16 byte-order mark): convert it to UTF-8 "
+               "(for example iconv -f UTF-16 -t UTF-8)", 1, 0);
+    EXPECT_ERR("\0x\0,\0y\0\r\0\n\0" "0\0,\0" "1\0\r\0\n", NULL, TSU_IO_ERR_ENCODING,
+               "t.csv:1: the file is UTF-16 text (NUL bytes in its first line): convert it to "
+               "UTF-8 (for example iconv -f UTF-16 -t UTF-8)", 1, 0);
+    CHECK(strcmp(tsu_io_strerror(TSU_IO_ERR_ENCODING), "not UTF-8 text") == 0);
+}
+
 static void test_reader_stream(void)
 {
     long nrows = SCALE(200000), i;
@@ -1699,6 +1745,7 @@ int main(void)
     test_reader_realworld();
     test_reader_columns();
     test_reader_stream();
+    test_reader_line_ends();
     test_out();
     test_writer();
     test_nomem();

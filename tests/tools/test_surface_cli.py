@@ -171,6 +171,28 @@ err_case("matrix header", MBAD, ["--matrix"], 2, ["column 3", "\"b\""])
 err_case("three columns", MAT, [], 2, ["3 columns"])
 err_case("tiny matrix", write("tiny.csv", "y\\x,0\n0,1\n"), ["--matrix"], 2, ["at least 2"])
 err_case("no file", os.path.join(TMP, "absent.csv"), [], 5, ["absent.csv"])
+# finite z alternating +-1.5e308: the slopes overflow (was reported as "NaN or
+# infinite value in the input", which the data are not)
+BIG = write("huge.csv", "x,y,z\n" + "".join("%d,%d,%s\n" % (i, j, "1.5e308" if (i + j) % 2 else
+                                                            "-1.5e308")
+                                           for j in range(60) for i in range(60)))
+err_case("huge finite", BIG, ["--shape", "range"], 2, ["huge.csv", "line 2", "node (0, 0)",
+                                                       "overflow a double"])
+rc, _, e = run(BIG, "--shape", "range", "-o", os.path.join(TMP, "huge.out"))
+check("huge finite: not called NaN or infinite", "NaN" not in e and "infinite" not in e, e)
+# the input named as -o (its own name, ./name, a symbolic or hard link): refused, kept
+for name, target in (("same", LONG), ("dot", "./" + os.path.relpath(LONG)),
+                     ("symlink", os.path.join(TMP, "long_link.csv")),
+                     ("hard link", os.path.join(TMP, "long_hard.csv"))):
+    if name == "symlink" and not os.path.lexists(target):
+        os.symlink(LONG, target)
+    if name == "hard link" and not os.path.exists(target):
+        os.link(LONG, target)
+    before = open(LONG).read()
+    rc, out, e = run(LONG, "-o", target)
+    check("-o the input (%s) refused" % name, rc == 1 and "names the input file" in e and
+          out == "", "%d %s" % (rc, e))
+    check("-o the input (%s) kept the data" % name, open(LONG).read() == before)
 for args, needle in ((["--shape", "wobbly"], "--shape"), (["--alpha", "-1"], "--alpha"),
                      (["--grid", "3"], "--grid"), (["--samples", "0"], "--samples"),
                      (["--bogus", "1"], "unknown option"), (["--form"], "needs a value"),

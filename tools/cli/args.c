@@ -79,7 +79,7 @@ int cli_surface_parse(int argc, char **argv, cli_surface_opts *o)
     if (o->out && o->svg && strcmp(o->out, "-") != 0 && cli_same_file(o->out, o->svg))
         return cli_usage(CLI_SURFACE, "-o and the plot name the same file (\"%s\"): the plot "
                                       "would replace the samples", o->svg);
-    return CLI_OK;
+    return cli_check_not_data(CLI_SURFACE, o->data, o->out, o->svg);
 }
 
 int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o)
@@ -98,6 +98,8 @@ int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o)
     if (o->out && o->svg && strcmp(o->out, "-") != 0 && cli_same_file(o->out, o->svg))
         return cli_usage(cmd, "-o and the plot name the same file (\"%s\"): the plot would replace "
                               "the samples", o->svg);
+    if ((rc = cli_check_not_data(cmd, o->data, o->out, o->svg)) != CLI_OK)
+        return rc;
     if (o->svg) {
         /* the format: --format, else the extension, which must agree with it */
         const char *dot = strrchr(o->svg, '.'), *slash = strrchr(o->svg, '/');

@@ -210,6 +210,9 @@ typedef struct cli_out {
 /* 1: the same path, or two names of one existing file (stat(2) only):
  * -o and the plot must differ. */
 int cli_same_file(const char *a, const char *b);
+/* CLI_OK, or CLI_USAGE (message printed) when DATA is a regular file that -o
+ * or the plot would replace (same st_dev and st_ino: ./name, links). */
+int cli_check_not_data(cli_cmd cmd, const char *data, const char *out, const char *svg);
 /* 0 or an errno (message in msg). */
 int cli_out_open(cli_out *c, const char *path, char *msg, size_t len);
 FILE *cli_out_file(const cli_out *c);

@@ -22,9 +22,12 @@ void cli_json_free(cli_json *j)
     tsu_plot_buf_free(&j->b);
 }
 
+/* After a failed allocation nothing more is appended: the document is
+ * already lost, and each retry would ask the allocator for the whole buffer
+ * again. */
 void cli_json_raw(cli_json *j, const char *s)
 {
-    if (tsu_plot_buf_puts(&j->b, s) != TSU_PLOT_OK)
+    if (!j->failed && tsu_plot_buf_puts(&j->b, s) != TSU_PLOT_OK)
         j->failed = 1;
 }
 
@@ -101,7 +104,8 @@ void cli_json_str(cli_json *j, const char *s)
         unsigned char ch = (unsigned char)*p;
         if (ch != '\0' && ch >= 0x20 && ch != '"' && ch != '\\')
             continue;
-        if (p > run && tsu_plot_buf_append(&j->b, run, (size_t)(p - run)) != TSU_PLOT_OK)
+        if (p > run && !j->failed &&
+            tsu_plot_buf_append(&j->b, run, (size_t)(p - run)) != TSU_PLOT_OK)
             j->failed = 1;
         if (ch == '\0')
             break;

@@ -23,6 +23,21 @@ int cli_same_file(const char *a, const char *b)
            sa.st_ino == sb.st_ino;
 }
 
+int cli_check_not_data(cli_cmd cmd, const char *data, const char *out, const char *svg)
+{
+    struct stat sd, so;
+    if (!data || strcmp(data, "-") == 0 || stat(data, &sd) != 0 || !S_ISREG(sd.st_mode))
+        return CLI_OK;
+    const char *outs[2] = {out, svg}, *what[2] = {"-o", "the plot"};
+    for (int k = 0; k < 2; k++)
+        if (outs[k] && strcmp(outs[k], "-") != 0 && stat(outs[k], &so) == 0 &&
+            so.st_dev == sd.st_dev && so.st_ino == sd.st_ino)
+            return cli_usage(cmd, "%s names the input file \"%s\" (as \"%s\"): writing it would "
+                                  "replace the data",
+                             what[k], data, outs[k]);
+    return CLI_OK;
+}
+
 int cli_out_open(cli_out *c, const char *path, char *msg, size_t len)
 {
     struct stat st;

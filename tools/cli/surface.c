@@ -6,6 +6,8 @@
 #include "cli.h"
 
 #include <errno.h>
+#include <stdarg.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -14,6 +16,36 @@ static int parse_num(const char *s, double *v)
     const char *stop;
     return tsu_parse_double(s, s + strlen(s), v, &stop) == TSU_NUM_OK && *stop == '\0' &&
            isfinite(*v);
+}
+
+/* ---- text built in memory ---------------------------------------------------- */
+/* Appends stop at the first failed allocation: the text is then incomplete,
+ * is never written, and the run exits "out of memory". */
+typedef struct sbuf {
+    tsu_plot_buf *b;
+    int bad;
+} sbuf;
+
+static void sputs(sbuf *w, const char *s)
+{
+    if (!w->bad && tsu_plot_buf_puts(w->b, s) != TSU_PLOT_OK)
+        w->bad = 1;
+}
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+static void sprint(sbuf *w, const char *fmt, ...)
+{
+    char line[512]; /* the longest line here: 4 numbers of TSU_FMT_SIZE and markup */
+    va_list ap;
+    if (w->bad)
+        return;
+    va_start(ap, fmt);
+    int n = vsnprintf(line, sizeof line, fmt, ap);
+    va_end(ap);
+    if (n < 0 || (size_t)n >= sizeof line || tsu_plot_buf_append(w->b, line, (size_t)n) != TSU_PLOT_OK)
+        w->bad = 1;
 }
 
 /* ---- reading the grid ------------------------------------------------------ */
@@ -249,6 +281,7 @@ static int render_svg(const surf_grid *g, const ts_surface *s, const ts_patch_re
     double xs[120], ys[120], *v = malloc(N * N * sizeof *v);
     if (!v)
         return ENOMEM;
+    sbuf w = {svg, 0};
     for (size_t a = 0; a < N; a++) {
         xs[a] = g->x[0] + (g->x[g->nx - 1] - g->x[0]) * ((double)a + 0.5) / (double)N;
         ys[a] = g->y[0] + (g->y[g->ny - 1] - g->y[0]) * ((double)a + 0.5) / (double)N;
@@ -262,20 +295,20 @@ static int render_svg(const surf_grid *g, const ts_surface *s, const ts_patch_re
     double x0 = g->x[0], x1 = g->x[g->nx - 1], y0 = g->y[0], y1 = g->y[g->ny - 1];
 #define PX(x) (L + W * ((x) - x0) / (x1 - x0))
 #define PY(y) (T + H * (1.0 - ((y) - y0) / (y1 - y0)))
-    tsu_plot_buf_printf(svg,
+    sprint(&w,
                         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%g\" height=\"%g\" "
                         "viewBox=\"0 0 %g %g\" font-family=\"sans-serif\" font-size=\"12\">\n",
                         W + L + 120, H + T + 50, W + L + 120, H + T + 50);
-    tsu_plot_buf_puts(svg, "<g shape-rendering=\"crispEdges\">\n");
+    sputs(&w, "<g shape-rendering=\"crispEdges\">\n");
     double cw = W / (double)N, ch = H / (double)N;
     for (size_t b = 0; b < N; b++)
         for (size_t a = 0; a < N; a++) {
             char col[8];
             ramp((v[b * N + a] - lo) / (hi - lo), col);
-            tsu_plot_buf_printf(svg, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"%s\"/>\n",
+            sprint(&w, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"%s\"/>\n",
                                 L + cw * (double)a, T + H - ch * (double)(b + 1), cw + 0.3, ch + 0.3, col);
         }
-    tsu_plot_buf_puts(svg, "</g>\n<g stroke=\"#222\" stroke-width=\"0.8\" fill=\"none\">\n");
+    sputs(&w, "</g>\n<g stroke=\"#222\" stroke-width=\"0.8\" fill=\"none\">\n");
     /* contours: marching squares on the cell centres, 8 levels */
     for (int c = 1; c <= 8; c++) {
         double level = lo + (hi - lo) * c / 9.0;
@@ -296,42 +329,42 @@ static int render_svg(const surf_grid *g, const ts_surface *s, const ts_patch_re
                     }
                 }
                 for (int m = 0; m + 1 < k; m += 2)
-                    tsu_plot_buf_printf(svg, "<path d=\"M%.2f %.2fL%.2f %.2f\"/>\n", PX(ex[m]),
+                    sprint(&w, "<path d=\"M%.2f %.2fL%.2f %.2f\"/>\n", PX(ex[m]),
                                         PY(ey[m]), PX(ex[m + 1]), PY(ey[m + 1]));
             }
     }
-    tsu_plot_buf_puts(svg, "</g>\n<g fill=\"none\" stroke=\"#d55e00\" stroke-width=\"2\">\n");
+    sputs(&w, "</g>\n<g fill=\"none\" stroke=\"#d55e00\" stroke-width=\"2\">\n");
     size_t np = (g->nx - 1) * (g->ny - 1);
     for (size_t c = 0; rep && c < np; c++)
         if (active[c])
-            tsu_plot_buf_printf(svg, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\"><title>patch (%zu, %zu): bound active</title></rect>\n",
+            sprint(&w, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\"><title>patch (%zu, %zu): bound active</title></rect>\n",
                                 PX(rep[c].x0), PY(rep[c].y1), PX(rep[c].x1) - PX(rep[c].x0),
                                 PY(rep[c].y0) - PY(rep[c].y1), rep[c].i, rep[c].j);
-    tsu_plot_buf_puts(svg, "</g>\n<g fill=\"#000\">\n");
+    sputs(&w, "</g>\n<g fill=\"#000\">\n");
     for (size_t k = 0; k < g->nx * g->ny; k++)
-        tsu_plot_buf_printf(svg, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"2\"/>\n", PX(g->x[k % g->nx]),
+        sprint(&w, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"2\"/>\n", PX(g->x[k % g->nx]),
                             PY(g->y[k / g->nx]));
-    tsu_plot_buf_puts(svg, "</g>\n");
+    sputs(&w, "</g>\n");
     char b1[TSU_FMT_SIZE], b2[TSU_FMT_SIZE];
-    tsu_plot_buf_printf(svg, "<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"none\" stroke=\"#000\"/>\n",
+    sprint(&w, "<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"none\" stroke=\"#000\"/>\n",
                         L, T, W, H);
-    tsu_plot_buf_printf(svg, "<text x=\"%g\" y=\"%g\" text-anchor=\"middle\">x: %s .. %s</text>\n",
+    sprint(&w, "<text x=\"%g\" y=\"%g\" text-anchor=\"middle\">x: %s .. %s</text>\n",
                         L + W / 2, T + H + 30, cli_num(x0, b1), cli_num(x1, b2));
-    tsu_plot_buf_printf(svg, "<text x=\"%g\" y=\"%g\" transform=\"rotate(-90 %g %g)\" text-anchor=\"middle\">y: %s .. %s</text>\n",
+    sprint(&w, "<text x=\"%g\" y=\"%g\" transform=\"rotate(-90 %g %g)\" text-anchor=\"middle\">y: %s .. %s</text>\n",
                         L - 20, T + H / 2, L - 20, T + H / 2, cli_num(y0, b1), cli_num(y1, b2));
     for (int c = 0; c <= 10; c++) {
         char col[8];
         ramp(c / 10.0, col);
-        tsu_plot_buf_printf(svg, "<rect x=\"%g\" y=\"%g\" width=\"20\" height=\"%g\" fill=\"%s\"/>\n",
+        sprint(&w, "<rect x=\"%g\" y=\"%g\" width=\"20\" height=\"%g\" fill=\"%s\"/>\n",
                             L + W + 20, T + H - H * (c + 1) / 11.0, H / 11.0 + 0.3, col);
     }
-    tsu_plot_buf_printf(svg, "<text x=\"%g\" y=\"%g\">%s</text>\n", L + W + 45, T + H, cli_num(lo, b1));
-    tsu_plot_buf_printf(svg, "<text x=\"%g\" y=\"%g\">%s</text>\n", L + W + 45, T + 10, cli_num(hi, b1));
-    tsu_plot_buf_puts(svg, "</svg>\n");
+    sprint(&w, "<text x=\"%g\" y=\"%g\">%s</text>\n", L + W + 45, T + H, cli_num(lo, b1));
+    sprint(&w, "<text x=\"%g\" y=\"%g\">%s</text>\n", L + W + 45, T + 10, cli_num(hi, b1));
+    sputs(&w, "</svg>\n");
 #undef PX
 #undef PY
     free(v);
-    return 0;
+    return w.bad ? ENOMEM : 0;
 }
 
 /* ---- the command ------------------------------------------------------------ */
@@ -405,6 +438,7 @@ int cli_surface(int argc, char **argv)
     for (size_t k = 0; k < mx * my; k++)
         smin = fmin(smin, zq[k]), smax = fmax(smax, zq[k]);
     char nb[TSU_FMT_SIZE];
+    sbuf tw = {&text, 0};
     if (o.json) {
         cli_json j;
         cli_json_init(&j);
@@ -461,24 +495,28 @@ int cli_surface(int argc, char **argv)
         }
         text = j.b;
     } else if (o.matrix_out) {
-        tsu_plot_buf_puts(&text, "y\\x");
+        sputs(&tw, "y\\x");
         for (size_t a = 0; a < mx; a++)
-            tsu_plot_buf_printf(&text, ",%s", cli_num(xq[a], nb));
-        tsu_plot_buf_puts(&text, "\n");
+            sprint(&tw, ",%s", cli_num(xq[a], nb));
+        sputs(&tw, "\n");
         for (size_t b = 0; b < my; b++) {
-            tsu_plot_buf_puts(&text, cli_num(yq[b], nb));
+            sputs(&tw, cli_num(yq[b], nb));
             for (size_t a = 0; a < mx; a++)
-                tsu_plot_buf_printf(&text, ",%s", cli_num(zq[b * mx + a], nb));
-            tsu_plot_buf_puts(&text, "\n");
+                sprint(&tw, ",%s", cli_num(zq[b * mx + a], nb));
+            sputs(&tw, "\n");
         }
     } else {
-        tsu_plot_buf_puts(&text, "x,y,z\n");
+        sputs(&tw, "x,y,z\n");
         for (size_t b = 0; b < my; b++)
             for (size_t a = 0; a < mx; a++) {
                 char n1[TSU_FMT_SIZE], n2[TSU_FMT_SIZE];
-                tsu_plot_buf_printf(&text, "%s,%s,%s\n", cli_num(xq[a], n1), cli_num(yq[b], n2),
-                                    cli_num(zq[b * mx + a], nb));
+                sprint(&tw, "%s,%s,%s\n", cli_num(xq[a], n1), cli_num(yq[b], n2),
+                       cli_num(zq[b * mx + a], nb));
             }
+    }
+    if (tw.bad) {
+        rc = cli_nomem();
+        goto out;
     }
     if (o.svg && render_svg(&g, s, rep, active, &svg) != 0) {
         rc = cli_nomem();

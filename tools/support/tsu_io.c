@@ -52,6 +52,7 @@ const char *tsu_io_strerror(tsu_io_status st)
     case TSU_IO_ERR_QUOTE: return "bad quoting";
     case TSU_IO_ERR_TIME: return "not a valid date or time";
     case TSU_IO_ERR_LAYOUT: return "ambiguous table layout";
+    case TSU_IO_ERR_ENCODING: return "not UTF-8 text";
     case TSU_IO_STATUS_COUNT_: break;
     }
     return "unknown status";

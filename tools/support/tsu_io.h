@@ -156,7 +156,8 @@ typedef enum tsu_io_status {
     TSU_IO_ERR_QUOTE = 14,   /* a quote never closed, or text after a closing quote */
     TSU_IO_ERR_TIME = 15,    /* a field of a time column is not a valid date / date-time */
     TSU_IO_ERR_LAYOUT = 16,  /* the file's layout is ambiguous (second header line, ...) */
-    TSU_IO_STATUS_COUNT_ = 17
+    TSU_IO_ERR_ENCODING = 17, /* UTF-16 text (a UTF-16 byte-order mark or NUL bytes) */
+    TSU_IO_STATUS_COUNT_ = 18
 } tsu_io_status;
 
 /* A fixed, never-NULL English string for any value. */
@@ -445,9 +446,11 @@ void tsu_table_free(tsu_table *t);  /* NULL ok; leaves *t zeroed */
  * For "-" it only flushes (what was written cannot be taken back).
  *
  * The temporary files open at a time (up to 16) are removed if the process
- * gets SIGINT, SIGTERM or SIGHUP (the first tsu_out_open installs handlers
- * for those not ignored; a handler removes the files and re-raises the
- * signal with its default action).  SIGKILL or a crash leave them.
+ * gets SIGINT, SIGTERM, SIGHUP or SIGQUIT (the first tsu_out_open installs
+ * handlers for those not ignored; a handler removes the files and re-raises
+ * the signal with its default action).  It also ignores SIGXFSZ unless the
+ * caller handles it, so that exceeding the file size limit is a write error
+ * (EFBIG) like any other.  SIGKILL or a crash leave them.
  */
 typedef struct tsu_out tsu_out;
 

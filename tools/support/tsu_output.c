@@ -39,13 +39,16 @@ static void msg_set(char *buf, size_t len, const char *fmt, ...)
     va_end(ap);
 }
 
-/* Temporary files open now, removed by the handler of SIGINT, SIGTERM and
- * SIGHUP (unlink is async-signal-safe), which then re-raises the signal with
- * its default action, so the exit status is still the signal's. */
+/* Temporary files open now, removed by the handler of SIGINT, SIGTERM,
+ * SIGHUP and SIGQUIT (unlink is async-signal-safe), which then re-raises the
+ * signal with its default action, so the exit status is still the signal's.
+ * SIGXFSZ (a file size limit) is ignored instead, so that the write fails
+ * with EFBIG and is reported like any other write error. */
 #define OUT_SLOTS 16
+#define OUT_NSIG 4
 static char *volatile out_temps[OUT_SLOTS];
 static volatile sig_atomic_t out_handlers_set;
-static const int out_signals[3] = {SIGINT, SIGTERM, SIGHUP};
+static const int out_signals[OUT_NSIG] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
 
 static void out_on_signal(int sig)
 {
@@ -58,11 +61,21 @@ static void out_on_signal(int sig)
     (void)raise(sig);
 }
 
+/* Standard output too: a redirected stdout has the same limit. */
+static void out_ignore_xfsz(void)
+{
+    struct sigaction fsz;
+    if (sigaction(SIGXFSZ, NULL, &fsz) == 0 && fsz.sa_handler == SIG_DFL) {
+        fsz.sa_handler = SIG_IGN;
+        (void)sigaction(SIGXFSZ, &fsz, NULL);
+    }
+}
+
 static void out_register(char *tmp)
 {
     if (!out_handlers_set) {
         out_handlers_set = 1;
-        for (int k = 0; k < 3; k++) {
+        for (int k = 0; k < OUT_NSIG; k++) {
             struct sigaction old, sa;
             /* a signal the caller ignores stays ignored */
             if (sigaction(out_signals[k], NULL, &old) == 0 && old.sa_handler == SIG_IGN)
@@ -70,7 +83,7 @@ static void out_register(char *tmp)
             memset(&sa, 0, sizeof sa);
             sa.sa_handler = out_on_signal;
             sigemptyset(&sa.sa_mask);
-            for (int j = 0; j < 3; j++)
+            for (int j = 0; j < OUT_NSIG; j++)
                 sigaddset(&sa.sa_mask, out_signals[j]);
             (void)sigaction(out_signals[k], &sa, NULL);
         }
@@ -123,6 +136,7 @@ int tsu_out_open(tsu_out **out, const char *path, unsigned flags, char *errbuf, 
         return ENOMEM;
     }
     o->flags = flags;
+    out_ignore_xfsz();
     if (strcmp(path, "-") == 0) {
         o->fp = stdout;
         o->is_std = 1;
@@ -137,11 +151,11 @@ int tsu_out_open(tsu_out **out, const char *path, unsigned flags, char *errbuf, 
     memcpy(o->tmp, path, n);
     memcpy(o->tmp + n, ".tmp.XXXXXX", 12);
     {
-        /* no SIGINT/SIGTERM/SIGHUP between creating the file and registering
-         * it for the handler (a signal there left the temporary file behind) */
+        /* none of out_signals between creating the file and registering it
+         * for the handler (a signal there left the temporary file behind) */
         sigset_t block, prev;
         sigemptyset(&block);
-        for (int k = 0; k < 3; k++)
+        for (int k = 0; k < OUT_NSIG; k++)
             sigaddset(&block, out_signals[k]);
         int masked = sigprocmask(SIG_BLOCK, &block, &prev) == 0;
         fd = mkstemp(o->tmp);

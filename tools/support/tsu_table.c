@@ -20,6 +20,7 @@ struct tsu_reader {
     char *buf;
     size_t cap, pos, len, cap_max;
     int eof;
+    int cr_pending; /* the last byte read is a CR whose next byte is not read yet */
     unsigned long long line;     /* physical lines consumed */
     unsigned long long rec_line; /* first line of the current record */
     unsigned long long row_line; /* line of the last row returned */
@@ -299,6 +300,27 @@ static void quote_scan(const tsu_reader *r, const char *p, const char *e, int *i
     }
 }
 
+/* A lone CR (old Mac OS line ends) is a line end: each one in the bytes read
+ * from buf + from on becomes '\n' (CR LF stays as it is).  A CR last in the
+ * buffer waits for the next read, or for the end of the input. */
+static void lone_cr(tsu_reader *r, size_t from)
+{
+    char *p = r->buf + from, *e = r->buf + r->len;
+    r->cr_pending = 0;
+    while (p < e && (p = memchr(p, '\r', (size_t)(e - p))) != NULL) {
+        if (p + 1 == e) {
+            if (r->eof)
+                *p = '\n';
+            else
+                r->cr_pending = 1;
+            break;
+        }
+        if (p[1] != '\n')
+            *p = '\n';
+        p++;
+    }
+}
+
 /* Next record (without its final '\n') into [*ls, *ls + *ll): 1, 0 at the
  * end, or the negative of an error status. */
 static int get_record(tsu_reader *r, char **ls, size_t *ll)
@@ -371,7 +393,7 @@ static int get_record(tsu_reader *r, char **ls, size_t *ll)
             r->cap = nc;
         }
         {
-            size_t want = r->cap - r->len, got;
+            size_t want = r->cap - r->len, got, from = r->len - (r->cr_pending ? 1 : 0);
             errno = 0;
             got = fread(r->buf + r->len, 1, want, r->fp);
             r->len += got;
@@ -383,6 +405,7 @@ static int get_record(tsu_reader *r, char **ls, size_t *ll)
                 }
                 r->eof = 1;
             }
+            lone_cr(r, from);
         }
     }
 }
@@ -1093,6 +1116,15 @@ static int next_record(tsu_reader *r, const char **lep)
         }
         if (g < 0)
             break;
+        int bom16 = r->rec_line == 1 && ll >= 2 &&
+                    (memcmp(ls, "\xff\xfe", 2) == 0 || memcmp(ls, "\xfe\xff", 2) == 0);
+        if (bom16 || (!r->seen_content && memchr(ls, '\0', ll))) {
+            (void)RFAIL(r, TSU_IO_ERR_ENCODING, 0, r->rec_line, 0, 0,
+                        "the file is UTF-16 text (%s): convert it to UTF-8 (for example "
+                        "iconv -f UTF-16 -t UTF-8)",
+                        bom16 ? "a UTF-16 byte-order mark" : "NUL bytes in its first line");
+            break;
+        }
         if (r->rec_line == 1 && ll >= 3 && memcmp(ls, "\xef\xbb\xbf", 3) == 0) {
             ls += 3; /* UTF-8 byte-order mark */
             ll -= 3;

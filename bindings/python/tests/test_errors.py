@@ -74,6 +74,31 @@ def test_python_argument_errors():
         Spline(X, "abcde")
 
 
+def test_messages_name_the_cause():
+    """The message says what is wrong, not a consequence of it: a string for a
+    per-interval parameter (was: "alpha has 1 values; a per-interval alpha
+    needs exactly n = 2"), and one point queried outside a surface (was:
+    "point () (x = 0.5, ...)")."""
+    for kw in ("alpha", "beta"):
+        with pytest.raises(TypeError) as ei:
+            Spline([0, 1, 2], [1, 2, 1], **{kw: "1"})
+        assert "%s must be a number or an array of numbers" % kw in str(ei.value)
+        assert "got a string '1'" in str(ei.value) and "values" not in str(ei.value)
+    with pytest.raises(TypeError) as ei:
+        Spline([0, 1, 2], [1, 2, 1], alpha=[1.0, "x"])
+    assert "alpha must be a number or an array of numbers" in str(ei.value)
+    with pytest.raises(TypeError) as ei:
+        Curve([[0, 0], [1, 1], [2, 0]], alpha="1")
+    assert "alpha must be a number or an array of numbers" in str(ei.value)
+    s = trigspline.Surface([0, 1, 2], [0, 1, 2], np.ones((3, 3)), extrapolate="error")
+    for q in ((0.5, 5.0), np.array([0.5, 5.0])):
+        e = raises("TS_ERR_DOMAIN", lambda: s(q))
+        assert "()" not in str(e), str(e)
+        assert "(x = 0.5, y = 5) lies outside" in str(e), str(e)
+    e = raises("TS_ERR_DOMAIN", lambda: s([[0.5, 1.0], [0.5, 5.0]]))
+    assert "point (1,) (x = 0.5, y = 5)" in str(e), str(e)
+
+
 def test_query_errors():
     s = Spline(X, [1, 2, 3, 2, 1], extrapolate="error")
     e = raises("TS_ERR_DOMAIN", lambda: s([0.5, 7.0]), 1, "query")

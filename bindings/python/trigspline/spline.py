@@ -50,7 +50,13 @@ def _per_interval(value, name, n):
         return None, None
     if is_scalar(value):
         return to_float(value, name), None
-    vals = np.array(value, dtype=np.float64).ravel()  # a copy: kept for pickling
+    what = "%s must be a number or an array of numbers (one per interval)" % name
+    if isinstance(value, (str, bytes)):
+        raise TypeError("%s, got a string %r" % (what, value))
+    try:
+        vals = np.array(value, dtype=np.float64).ravel()  # a copy: kept for pickling
+    except (TypeError, ValueError):
+        raise TypeError("%s, got %r" % (what, value)) from None
     if len(vals) != n:
         raise TrigsplineError(_S.LENGTH, "%s has %d values; a per-interval %s needs exactly "
                               "n = %d (one per interval)" % (name, len(vals), name, n))

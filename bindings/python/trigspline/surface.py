@@ -420,7 +420,9 @@ class Surface:
             flat = pts.reshape(-1, 2)
             shape = pts.shape[:-1]
 
-            def label(k):
+            def label(k):  # one point (shape ()) has no index
+                if not shape:
+                    return "point"
                 return "point %r" % (tuple(int(v) for v in np.unravel_index(k, shape)),)
             return self._batch(flat[:, 0], flat[:, 1], d > 0, label), shape
         xq, yq = float_array(xi, "x"), float_array(yi, "y")

@@ -437,3 +437,36 @@ test('CSV, JSON and SVG exports are the CLI\'s bytes', async () => {
   }
   console.log(`# exports vs the shipped CLI: ${shippedNumbersDiffer} of ${shippedNumbers} numbers differ in the last bits (its FMA kernel and glibc libm)`);
 });
+
+test('arguments that are not numbers are named as such, with the index', () => {
+  // strings as data: not "NaN or infinite value" (the heap copy made them NaN)
+  let e = throwsOwn(() => ts.spline([0, 1, 2], [1, 'a', 2]), 'TS_ERR_NONFINITE', 1, 'point');
+  assert.equal(e.message, 'TS_ERR_NONFINITE: f[1] is not a number (the string "a")');
+  assert.doesNotMatch(e.message, /NaN or infinite/);
+  e = throwsOwn(() => ts.spline(['0', 'one', '2'], [1, 2, 3]), 'TS_ERR_NONFINITE', 1, 'point');
+  assert.match(e.message, /x\[1\] is not a number \(the string "one"\)/);
+  e = throwsOwn(() => ts.curve([[0, 0], [1, 'b'], [2, 0]]), 'TS_ERR_NONFINITE', 1, 'point');
+  assert.match(e.message, /points\[1\]\[1\] is not a number/);
+  // null: a TrigSplineError naming the argument, not a raw TypeError
+  e = throwsOwn(() => ts.spline(null, null), 'TS_ERR_NULL', null, null);
+  assert.equal(e.message, 'TS_ERR_NULL: x must be an array of numbers, got null');
+  e = throwsOwn(() => ts.spline([0, 1, 2], undefined), 'TS_ERR_NULL', null, null);
+  assert.match(e.message, /f must be an array of numbers, got undefined/);
+  throwsOwn(() => ts.spline('012', [1, 2, 3]), 'TS_ERR_NULL', null, null);
+  throwsOwn(() => ts.curve(null), 'TS_ERR_NULL', null, null);
+  // still accepted: numeric strings and typed arrays, as before
+  const s = ts.spline(['0', '1', '2'], new Float64Array([1, 2, 1]));
+  assert.equal(s.eval(1), 2);
+  s.free();
+});
+
+function throwsOwn(fn, status, index, where) {
+  let err;
+  try { fn(); } catch (e) { err = e; }
+  assert.ok(err, `expected ${status}`);
+  assert.ok(err instanceof lib.TrigSplineError, String(err));
+  assert.equal(err.status, status, err.message);
+  assert.equal(err.index, index, err.message);
+  assert.equal(err.where, where, err.message);
+  return err;
+}
