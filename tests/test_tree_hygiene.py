@@ -95,7 +95,7 @@ for f in files:
         m = m.rstrip("/.")
         if file_like(m):
             check(exists(m, f), "%s cites %s, which does not exist" % (f, m))
-    if not is_doc:
+    if not is_doc and f != "tests/test_tree_hygiene.py":  # it names the words it bans
         for m in PROCESS.finditer(body):
             line = body[: m.start()].count("\n")
             check(False, "%s: process word %r in a comment (comment line %d)"
