@@ -296,6 +296,18 @@ static void test_surface_and_curve(void)
     so.struct_size = 0; /* options of another version: not read */
     EXPECT(&ge, &c, "alpha + beta below the geometric-form bound");
     so.struct_size = sizeof so;
+    /* finite data, a non-finite slope or control value: the overflow is named,
+     * not the input (a z that is itself not finite keeps the library text) */
+    ts_error ne = {TS_ERR_NONFINITE, 1, TS_WHERE_POINT};
+    EXPECT(&ne, &c, "node (1, 0) (x = 1, y = 0, z = 2): the slopes computed at this node "
+                    "overflow a double (finite values this close to the largest double; "
+                    "rescale z)");
+    ts_error np = {TS_ERR_NONFINITE, 0, TS_WHERE_INTERVAL};
+    EXPECT(&np, &c, "patch (0, 0) [0, 1] x [0, 1]: the control values of this patch overflow "
+                    "a double (finite values this close to the largest double; rescale z)");
+    gz[1] = HUGE_VAL;
+    EXPECT(&ne, &c, "node (1, 0) (x = 1, y = 0, z = inf): NaN or infinite value in the input");
+    gz[1] = 2;
     ts_error pe = {TS_ERR_INFEASIBLE, 1, TS_WHERE_INTERVAL};
     EXPECT(&pe, &c, "patch (1, 0) [1, 2] x [0, 1]: no beta keeps this interval inside the region");
 
