@@ -211,11 +211,11 @@ TS_INLINE void ts__beta_line(double al, double K, double g0, double g1, double d
                              double sg, int t0, double *b, int *t)
 {
     double v0 = -al - sg * K * d0 / (g0 > 0.0 ? g0 : 1.0);
-    double v1 = -al + sg * K * d1 / (g1 > 0.0 ? g1 : 1.0);
-    int take0 = (g0 > 0.0) & (v0 > *b);
+    int take0 = g0 > 0.0 && v0 > *b;
     *b = take0 ? v0 : *b;
     *t = take0 ? t0 : *t;
-    int take1 = (g1 > 0.0) & (v1 > *b);
+    double v1 = -al + sg * K * d1 / (g1 > 0.0 ? g1 : 1.0);
+    int take1 = g1 > 0.0 && v1 > *b;
     *b = take1 ? v1 : *b;
     *t = take1 ? t0 + 1 : *t;
 }
