@@ -227,6 +227,24 @@ def spline_excursion(s):
     return max(max(r["excursion_above"], r["excursion_below"]) for r in rep)
 
 
+_TH = np.linspace(0, math.pi / 2, 4001)
+_S, _C = np.sin(_TH), np.cos(_TH)
+_A = np.stack([(1 - _S) ** 3, _S * (1 - _S) * (3 - _S), _C * (1 - _C) * (3 - _C), (1 - _C) ** 3])
+
+
+def spline_nonmonotone(s, y):
+    """Intervals whose curve is not monotone in the direction of its data, by
+    4001 samples of Y(θ) = Σ A_l(θ) B_l (X is increasing for every a used here,
+    docs/method.md §4); a flat interval must be constant.  Tolerance 8 ulps of max|f|."""
+    B = np.array([r["B"] for r in s.report()])            # (n, 4)
+    Y = (B[:, 1:] - B[:, :1]) @ _A[1:]                      # Y − B0, as evaluation forms it
+    dY = np.diff(Y, axis=1)
+    sg = np.sign(np.diff(y))[:, None]
+    tol = tol_of(y)
+    bad = np.where(sg[:, 0] != 0, (dY * sg < -tol).any(axis=1), (np.abs(dY) > tol).any(axis=1))
+    return int(bad.sum())
+
+
 def tol_of(y):
     """'0 to rounding': a few ulps of the data's magnitude."""
     return 8 * EPS * max(1.0, float(np.max(np.abs(y))))
@@ -241,13 +259,20 @@ def random_sets(count, seed=2026):
     for k in range(count):
         n = int(rng.integers(3, 25))
         x = np.concatenate([[0.0], np.cumsum(np.exp(rng.normal(0, 1.5, n - 1)))])
-        kind = k % 3
+        kind = k % 4
         if kind == 0:
             y = rng.random(n)
         elif kind == 1:
             y = np.cumsum(rng.normal(0, 1, n))
-        else:
+        elif kind == 2:
             y = np.round(rng.random(n) * 3)     # flat runs and plateaus
+        else:
+            # a staircase: short steep steps between long gentle ones, which puts
+            # both end slopes of a gentle interval at the slope bound (d/Δ -> 3 or 2)
+            w = np.where(np.arange(n - 1) % 2 == 0, 10 ** rng.uniform(-3, -1, n - 1), 1.0)
+            x = np.concatenate([[0.0], np.cumsum(w)])
+            rise = np.where(np.arange(n - 1) % 2 == 0, 1.0, 10 ** rng.uniform(-3, -1, n - 1))
+            y = np.concatenate([[0.0], np.cumsum(rise)]) * rng.choice([-1.0, 1.0])
         yield x, y
 
 
@@ -424,7 +449,7 @@ def main():
       "excursion exceeds PCHIP's by more than 8 ulps of max|f|. %d data sets "
       "(data/examples, data/paper tables, data/realworld)." % len(data), "")
     exc = {}   # (label, name) -> relative excursion (%)
-    worse = {}
+    worse, nonmono = {}, {}
     for name, (x, y) in data.items():
         rng_ = float(np.max(y) - np.min(y)) or 1.0
         ref_abs = {}
@@ -434,11 +459,14 @@ def main():
             exc[(lab, name)] = 100 * e / rng_
         for c in cands + (POSITIVE if np.all(y >= 0) else []):
             try:
-                e = spline_excursion(c.build(x, y))
+                sp = c.build(x, y)
+                e = spline_excursion(sp)
             except trigspline.TrigsplineError as err:
                 exc[(c.label, name)] = "refused (%s)" % err.name
                 continue
             exc[(c.label, name)] = 100 * e / rng_
+            if spline_nonmonotone(sp, y):
+                nonmono.setdefault(c.label, []).append(name)
             if e > ref_abs["SciPy PCHIP"] + tol_of(y):
                 worse.setdefault(c.label, []).append(name)
     labels = [lab for lab, _ in REFS] + [c.label for c in cands] + [c.label for c in POSITIVE]
@@ -448,9 +476,11 @@ def main():
         nz = sum(1 for v in vals if v > 1e-10)
         w = worse.get(lab, [])
         rows.append([lab, fmt(max(vals), True), "%d / %d" % (nz, len(vals)),
-                     "–" if lab in dict(REFS) else "%d%s" % (len(w), (": " + ", ".join(w[:4]) + (" …" if len(w) > 4 else "")) if w else "")])
+                     "–" if lab in dict(REFS) else "%d%s" % (len(w), (": " + ", ".join(w[:3]) + (" …" if len(w) > 3 else "")) if w else ""),
+                     "0 (proof)" if lab == "SciPy PCHIP" else ("–" if lab in dict(REFS) else str(len(nonmono.get(lab, []))))])
     o("### Summary over all data sets", "")
-    o.table(["candidate", "largest excursion", "sets with excursion > 1e-10 %", "sets worse than PCHIP"], rows)
+    o.table(["candidate", "largest excursion", "sets with excursion > 1e-10 %",
+             "sets worse than PCHIP", "sets with a non-monotone interval"], rows)
     main_labels = ["SciPy PCHIP", "SciPy CubicSpline", "SciPy Akima", "makima (cubic)",
                    "geo Steffen a=0.85", "geo Steffen a=0.85 +positive", "geo FC a=4/π",
                    "geo makima a=1", "old default (paper arith a=1)", "old default +positive"]
@@ -466,8 +496,12 @@ def main():
     o("### Random data at the slope bounds (%d sets)" % R, "",
       "Random sets of 3–24 points, spacings exp(N(0, 1.5)) (neighbouring widths differ by "
       "factors up to ~100, which drives Fritsch–Carlson's d/Δ towards 3 and Steffen's to 2), "
-      "values uniform, random walk, or rounded to {0, 1, 2, 3} (flat runs). Sets with an "
-      "excursion above 8 ulps of max|f|, and the largest in % of the set's range.", "")
+      "values uniform, random walk, rounded to {0, 1, 2, 3} (flat runs), or a staircase of "
+      "short steep and long gentle steps (both slopes of a gentle interval at the bound). "
+      "Sets with an "
+      "excursion above 8 ulps of max|f|, the largest in % of the set's range, and sets "
+      "where some interval's curve is not monotone in its data's direction (4001 samples "
+      "of Y(θ) per interval; PCHIP is monotone on every interval by Fritsch–Carlson).", "")
     sets = list(random_sets(R))
     rows = []
     for lab, mk in REFS[:1]:
@@ -477,14 +511,18 @@ def main():
             bad += e > tol_of(y)
             big = max(big, 100 * e / (float(np.ptp(y)) or 1.0))
         rows.append([lab, "%d" % bad, fmt(big, True)])
+    rows[0] += ["0 (proof)"]
     for c in cands:
-        bad, big = 0, 0.0
+        bad, big, nm = 0, 0.0, 0
         for x, y in sets:
-            e = spline_excursion(c.build(x, y))
+            sp = c.build(x, y)
+            e = spline_excursion(sp)
             bad += e > tol_of(y)
             big = max(big, 100 * e / (float(np.ptp(y)) or 1.0))
-        rows.append([c.label, "%d" % bad, fmt(big, True)])
-    o.table(["candidate", "sets with excursion", "largest excursion"], rows)
+            nm += spline_nonmonotone(sp, y) > 0
+        rows.append([c.label, "%d" % bad, fmt(big, True), "%d" % nm])
+    o.table(["candidate", "sets with excursion", "largest excursion",
+             "sets with a non-monotone interval (sampled)"], rows)
     rows = []
     for meth in ("fritsch-carlson", "steffen", "makima", "akima", "arithmetic"):
         hi, lo = -np.inf, np.inf
