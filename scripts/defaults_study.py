@@ -75,7 +75,7 @@ def datasets():
 
 
 # ---------------------------------------------------------------- slopes
-def steffen_slopes(x, y):
+def steffen_slopes(x, y, ends="steffen"):
     """Steffen (1990) slopes: |d| <= 2 min(|Δ_left|, |Δ_right|), 0 at extrema;
     ends by his eq. (26): the three-point value, 0 if its sign differs from
     Δ_0's, 2Δ_0 if it exceeds that (mirrored at the right end)."""
@@ -98,14 +98,19 @@ def steffen_slopes(x, y):
         if abs(p0) > 2 * abs(D0):
             return 2 * D0
         return p0
-    d[0] = end(D[0], D[1], h[0], h[1])
-    d[-1] = end(D[-1], D[-2], h[-1], h[-2])
+    if ends == "gsl":   # GSL's gsl_interp_steffen: the end secants themselves
+        d[0], d[-1] = D[0], D[-1]
+    else:
+        d[0] = end(D[0], D[1], h[0], h[1])
+        d[-1] = end(D[-1], D[-2], h[-1], h[-2])
     return d
 
 
 def slopes_of(method, x, y):
     if method == "steffen":
         return steffen_slopes(x, y)
+    if method == "steffen-gsl":
+        return steffen_slopes(x, y, "gsl")
     return estimate_slopes(x, y, method)
 
 
@@ -134,8 +139,8 @@ class Cand:
 
     def build(self, x, y):
         kw = {"form": self.form, "shape": self.shape}
-        if self.slopes == "steffen":
-            d = steffen_slopes(x, y)
+        if self.slopes in ("steffen", "steffen-gsl"):
+            d = steffen_slopes(x, y, "gsl" if self.slopes == "steffen-gsl" else "steffen")
             kw["slopes_values"] = d
         else:
             kw["slopes"] = self.slopes
@@ -157,12 +162,16 @@ A_REC = 0.85                     # recommended: 8/(3π) = 0.84883 rounded up
 A_Q = 0.815                      # the quadratic sweet spot (section (d))
 CANDS = [
     G("geo Steffen a=0.85", "steffen", "fixed", A_REC),
+    G("geo Steffen (GSL ends) a=0.85", "steffen-gsl", "fixed", A_REC),
     G("geo Steffen a=0.8", "steffen", "fixed", 0.8),
+    G("geo Steffen a=0.7", "steffen", "fixed", 0.7),
+    G("geo Steffen a=0.65", "steffen", "fixed", 0.65),
     G("geo Steffen mono≥0.815", "steffen", "mono", A_Q),
     G("geo Steffen a=1", "steffen", "fixed", 1.0),
     G("geo FC a=4/π", "fritsch-carlson", "fixed", A_FC),
     G("geo FC mono≥0.815", "fritsch-carlson", "mono", A_Q),
     G("geo FC mono≥4/(3π)", "fritsch-carlson", "mono", A_X),
+    G("geo FC a=1.05", "fritsch-carlson", "fixed", 1.05),
     G("geo FC a=1", "fritsch-carlson", "fixed", 1.0),
     G("geo FC a=0.85", "fritsch-carlson", "fixed", A_REC),
     G("geo makima a=1", "makima", "fixed", 1.0),
@@ -558,7 +567,7 @@ def main():
     o.table(["candidate", "line: max rel. error", "knots not exact"], rows)
 
     # ---- alpha scan
-    o("## (d) Choosing α: the accuracy cost of a larger α", "",
+    o("## (d′) Choosing α: the accuracy cost of a larger α", "",
       "Geometric form with exact slopes: the h²·f'' term of the error is max|X̂² − Ŷ| for "
       "f = x² on [0, 1] (slopes 0 and 2); it nearly vanishes at a ≈ %.3f:" % A_Q, "")
     avals = [0.6, 0.6944, 0.75, 0.8, A_Q, A_ST, A_REC, 0.9, 1.0, 1.0415, A_FC, 1.5, 2.0]
@@ -595,7 +604,8 @@ def main():
       "Max |S − f| at 16 fixed and 16 random points per interval (fewer for large n, "
       "at least 4); order = least-squares slope over n = %s." % ", ".join(map(str, NS[-3:])), "")
     acc_cands = [c for c in cands if c.label in (
-        "geo Steffen a=0.85", "geo Steffen a=0.8", "geo Steffen mono≥0.815", "geo Steffen a=1",
+        "geo Steffen a=0.85", "geo Steffen (GSL ends) a=0.85", "geo Steffen a=0.8",
+        "geo Steffen mono≥0.815", "geo Steffen a=1",
         "geo FC a=4/π", "geo FC mono≥0.815", "geo FC a=1", "geo makima a=1",
         "geo Akima a=1", "geo arithmetic a=1", "old default (paper arith a=1)")]
     makers = [(c.label, c.build) for c in acc_cands] + list(REFS)
