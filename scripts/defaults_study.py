@@ -578,8 +578,6 @@ def main():
     rows = []
     for meth in ("steffen", "fritsch-carlson"):
         for a in avals:
-            if a < 0.6944 - 1e-9 and meth == "fritsch-carlson":
-                pass
             c = G("", meth, "fixed", a)
             row = ["%s a=%.4g" % (meth, a)]
             for fname, fn, lo, hi in SMOOTH:
