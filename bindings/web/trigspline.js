@@ -31,7 +31,7 @@ const WHERE = [null, 'point', 'interval', 'query'];
 export const NAMES = {
   form: ['paper', 'c1', 'geometric'],
   slopes: ['arithmetic', 'geometric', 'harmonic', 'fritsch-carlson', 'akima', 'makima',
-    'user', 'periodic'],
+    'user', 'periodic', 'steffen'],
   shape: ['none', 'positive', 'above', 'below', 'between', 'monotone'],
   extrapolate: ['error', 'clamp', 'extend', 'linear'],
   term: ['user', 'margin', 'lower-left', 'lower-right', 'upper-left', 'upper-right', 'monotone',

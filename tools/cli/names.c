@@ -13,7 +13,7 @@ static const char *const shape_names[] = {"none", "positive", "above", "below", 
                                           "monotone"};
 static const char *const slopes_names[] = {"arithmetic", "geometric", "harmonic",
                                            "fritsch-carlson", "akima", "makima",
-                                           "user", "periodic"};
+                                           "user", "periodic", "steffen"};
 static const char *const form_names[] = {"paper", "c1", "geometric"};
 static const char *const term_names[] = {"user", "margin", "lower-left", "lower-right",
                                          "upper-left", "upper-right", "monotone", "certify",

@@ -24,7 +24,7 @@ from . import _core
 # ---- values: index = the C enum value ----------------------------------------
 FORMS = ("paper", "c1", "geometric")
 SLOPES = ("arithmetic", "geometric", "harmonic", "fritsch-carlson", "akima", "makima", "user",
-          "periodic")
+          "periodic", "steffen")
 SHAPES = ("none", "positive", "above", "below", "between", "monotone")
 SURFACE_SHAPES = ("none", "positive", "bounds", "planes", "range")
 EXTRAPS = ("error", "clamp", "extend", "linear")
