@@ -78,7 +78,7 @@ def estimate_slopes(x: ArrayLike, f: ArrayLike, slopes: Optional[str] = None, *,
         Points, x strictly increasing.
     slopes : str, default ${slopes}
         ``'arithmetic'``, ``'geometric'``, ``'harmonic'``, ``'fritsch-carlson'``,
-        ``'akima'``, ``'makima'`` or ``'periodic'`` (the ``slopes`` of
+        ``'akima'``, ``'makima'``, ``'periodic'`` or ``'steffen'`` (the ``slopes`` of
         :class:`Spline`).
     method : str
         Deprecated name of ``slopes``.
@@ -159,7 +159,9 @@ class Spline:
     slopes : str or array_like, default ${slopes}
         Slope estimate (docs/method.md §6): ``'arithmetic'``,
         ``'geometric'``, ``'harmonic'``, ``'fritsch-carlson'``, ``'akima'``,
-        ``'makima'``, ``'periodic'``; or your own slopes d_i, an array the
+        ``'makima'``, ``'periodic'``, ``'steffen'`` (Steffen 1990, the default:
+        with the default alpha it keeps PCHIP's promise, docs/method.md §5.10);
+        or your own slopes d_i, an array the
         shape of ``f`` (as ``dydx`` of SciPy's ``CubicHermiteSpline``).
     form : {'paper', 'c1', 'geometric'}, default ${form}
         docs/method.md §3/§4.
