@@ -165,7 +165,7 @@ function throwsStatus(fn, status, index = null, where = null) {
 
 test('every status the library can return reaches JavaScript as a TrigSplineError', async () => {
   const x = [0, 1, 2, 3], f = [1, 2, 0.5, 3];
-  const P = { form: 'paper' };
+  const P = { form: 'paper', slopes: 'arithmetic', alpha: 1 }; // the paper's options
   const seen = new Set(['TS_OK']);
   const t = (fn, st, i, w) => { throwsStatus(fn, st, i, w); seen.add(st); };
   t(() => ts.spline([0], [1], P), 'TS_ERR_TOO_FEW');
