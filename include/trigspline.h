@@ -370,6 +370,11 @@ typedef struct ts_options {
     ts_extrap extrapolate;     /* default TS_EXTRAP_ERROR */
 } ts_options;
 
+/* The defaults: geometric form, Steffen's slopes, alpha = TS_DEFAULT_ALPHA,
+ * beta 0, no shape scheme, margin TS_DEFAULT_MARGIN, certify on, extrapolation
+ * error.  Every interval of the default curve is monotone and between its two
+ * data values (docs/method.md §5.10).  The paper's own spline: form
+ * TS_FORM_PAPER, slopes TS_SLOPES_ARITHMETIC, alpha 1. */
 TS_API void ts_options_init(ts_options *opt);
 
 /* ------------------------------------------------------------------ */
