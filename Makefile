@@ -179,7 +179,7 @@ test-why-page: why-demo
 #                  and the why page's browser test (test-why-page).
 # Debian's emscripten (3.1.6); the same src/*.c.  emcc's JS optimizer needs Debian's
 # acorn module, which a node not from Debian does not find by itself: NODE_PATH.
-# ts_eval_batch_mt is not exported (no threads in the module), so pthreads are not linked.
+# ts_spline_eval_batch_mt is not exported (no threads in the module), so pthreads are not linked.
 .PHONY: web test-web
 WEB_BUILD := build-web
 WEB_OUT := out/web
@@ -192,9 +192,9 @@ WEB_LIB_SRC := $(wildcard src/*.c)
 WEB_CLI_SRC := $(wildcard tools/support/tsu_*.c) $(wildcard tools/cli/*.c)
 WEB_FUNCS := ts_version ts_strerror ts_spline_free ts_spline_intervals ts_spline_x \
   ts_spline_f ts_spline_slopes ts_spline_alpha ts_spline_beta ts_spline_form ts_spline_shape \
-  ts_spline_extrapolation ts_spline_a ts_spline_control ts_spline_certified ts_eval_deriv \
-  ts_eval_batch ts_spline_eval_mode ts_spline_eval_batch_mode ts_spline_solve \
-  ts_spline_find_interval ts_integral ts_slopes_compute ts_error_bound ts_curve_free ts_curve_segments \
+  ts_spline_extrapolation ts_spline_a ts_spline_control ts_spline_certified ts_spline_eval_deriv \
+  ts_spline_eval_batch ts_spline_eval_mode ts_spline_eval_batch_mode ts_spline_solve \
+  ts_spline_find_interval ts_spline_integral ts_slopes_compute ts_spline_error_bound ts_curve_free ts_curve_segments \
   ts_curve_dim ts_curve_closed ts_curve_knots ts_curve_control ts_curve_params ts_curve_eval \
   ts_curve_sample ts_curve_length tsw_spline_new tsw_curve_new tsw_defaults tsw_curve_defaults \
   tsw_report tsw_certify tsw_curve_certify tsw_error_constants tsw_heap_top malloc free

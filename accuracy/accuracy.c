@@ -206,8 +206,8 @@ static void run(void)
                     }
                     for (int fo = 0; fo < NFORM; fo++)
                         for (int ai = 0; ai < NA; ai++) {
-                            ts_options o;
-                            ts_options_init(&o);
+                            ts_spline_options o;
+                            ts_spline_options_init(&o);
                             o.form = (ts_form)fo;
                             o.slopes = TS_SLOPES_USER;
                             o.user_slopes = d;
@@ -221,10 +221,10 @@ static void run(void)
                             ts_spline *s = NULL;
                             double e = NAN, b = NAN;
                             if (ts_spline_new(x, f, n + 1, &o, &s, NULL) == TS_OK &&
-                                ts_eval_batch(s, 0, xq, m, yq, NULL, NULL) == TS_OK) {
+                                ts_spline_eval_batch(s, 0, xq, m, yq, NULL, NULL) == TS_OK) {
                                 e = max_err(F, xq, yq, m);
                                 /* the proven bound (exact slopes: the sharper two-term one too) */
-                                if (ts_error_bound(s, F->m1, F->m2, sl == 0, &b, NULL) == TS_OK) {
+                                if (ts_spline_error_bound(s, F->m1, F->m2, sl == 0, &b, NULL) == TS_OK) {
                                     bound_checks++;
                                     if (!(e <= b))
                                         violations++;
@@ -371,7 +371,7 @@ static void tables(out *o)
                             if (sl == 0 && r > wexact)
                                 wexact = r;
                         }
-    put(o, "\n#### The proven bound (ts_error_bound)\n\n%ld spline fits checked, %ld violations; "
+    put(o, "\n#### The proven bound (ts_spline_error_bound)\n\n%ld spline fits checked, %ld violations; "
            "largest error/bound ratio %.3f (exact slopes, two-term bound: %.3f).\n\n",
         bound_checks, violations, worst, wexact);
     put(o, "| a | first (docs/method.md §8) | line | second | geometric first | geometric second | "

@@ -22,7 +22,7 @@
  * Build decisions (docs/design.md, "Build and packaging"): construction with
  * each library variant given by --variant NAME=PATH (a bench program linked
  * against that variant; CMake's run_bench target passes them), interleaved
- * fresh processes; and ts_eval_batch_mt on 2 threads against ts_eval_batch.
+ * fresh processes; and ts_spline_eval_batch_mt on 2 threads against ts_spline_eval_batch.
  *
  * usage: bench [--out FILE] [--cli PATH] [--variant NAME=PATH]... [--quick]
  *              [--no-eval] [--no-build] [--no-small] [--no-decisions]
@@ -173,45 +173,45 @@ static void make_data(data *D, size_t np, size_t m, int random_q)
 /* ---- evaluation implementations ------------------------------------- */
 
 enum impl {
-    I_TS_BATCH, /* ts_eval_batch, kernel picked at run time */
+    I_TS_BATCH, /* ts_spline_eval_batch, kernel picked at run time */
     I_TS_AVX2,  /* the same batch with the AVX2+FMA kernel */
     I_TS_PORT,  /* ... with the portable C kernel */
-    I_TS_D1,    /* ts_eval_batch, first derivative */
+    I_TS_D1,    /* ts_spline_eval_batch, first derivative */
     I_TS_D2,    /* second derivative */
-    I_TS_EVAL,  /* ts_eval point by point with a cursor */
+    I_TS_EVAL,  /* ts_spline_eval point by point with a cursor */
     I_GSL_STEFFEN,
     I_GSL_CSPLINE,
     I_HERMITE,  /* plain C cubic Hermite loop */
-    I_C1_BATCH, /* the C¹ form: ts_eval_batch, AVX2, portable */
+    I_C1_BATCH, /* the C¹ form: ts_spline_eval_batch, AVX2, portable */
     I_C1_AVX2,
     I_C1_PORT,
-    I_GEO_BATCH, /* the geometric form: ts_eval_batch, AVX2, portable, ts_eval */
+    I_GEO_BATCH, /* the geometric form: ts_spline_eval_batch, AVX2, portable, ts_spline_eval */
     I_GEO_AVX2,
     I_GEO_PORT,
     I_GEO_EVAL,
-    I_C1_EVAL, /* the C¹ form: ts_eval, one call per point */
+    I_C1_EVAL, /* the C¹ form: ts_spline_eval, one call per point */
     I_COUNT
 };
 #define I_RSS_COUNT (I_HERMITE + 1) /* peak RSS measured for the paper form's rows */
 
 static const char *impl_name[I_COUNT] = {
-    "**trigspline ts_eval_batch**",
+    "**trigspline ts_spline_eval_batch**",
     "  same, AVX2+FMA kernel",
     "  same, portable C kernel",
-    "trigspline ts_eval_batch, S'",
-    "trigspline ts_eval_batch, S''",
-    "trigspline ts_eval, one call per point",
+    "trigspline ts_spline_eval_batch, S'",
+    "trigspline ts_spline_eval_batch, S''",
+    "trigspline ts_spline_eval, one call per point",
     "GSL steffen (gsl_interp_eval + accel)",
     "GSL cspline (gsl_interp_eval + accel)",
     "plain C cubic Hermite loop",
-    "**C¹ form: ts_eval_batch**",
+    "**C¹ form: ts_spline_eval_batch**",
     "  C¹ form, AVX2+FMA kernel",
     "  C¹ form, portable C kernel",
-    "**geometric form: ts_eval_batch**",
+    "**geometric form: ts_spline_eval_batch**",
     "  geometric form, AVX2+FMA kernel",
     "  geometric form, portable C kernel",
-    "geometric form: ts_eval, one call per point",
-    "C¹ form: ts_eval, one call per point",
+    "geometric form: ts_spline_eval, one call per point",
+    "C¹ form: ts_spline_eval, one call per point",
 };
 
 /* The straightforward code a user would write: cursor walk, else bisection. */
@@ -250,8 +250,8 @@ typedef struct impls {
 
 static ts_spline *build_form(const data *D, ts_form form, int shape, int certify)
 {
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = form;
     if (shape) {
         o.shape = TS_SHAPE_POSITIVE;
@@ -342,13 +342,13 @@ static double run_impl(int impl, const data *D, const impls *I, size_t m)
     case I_TS_D1:
     case I_TS_D2: {
         int deriv = impl == I_TS_D1 ? 1 : impl == I_TS_D2 ? 2 : 0;
-        if (ts_eval_batch(I->s, deriv, D->q, m, D->y, NULL, NULL) != TS_OK)
+        if (ts_spline_eval_batch(I->s, deriv, D->q, m, D->y, NULL, NULL) != TS_OK)
             return (double)NAN;
         break;
     }
     case I_C1_BATCH:
     case I_GEO_BATCH:
-        if (ts_eval_batch(impl == I_C1_BATCH ? I->c1 : I->geo, 0, D->q, m, D->y, NULL, NULL) != TS_OK)
+        if (ts_spline_eval_batch(impl == I_C1_BATCH ? I->c1 : I->geo, 0, D->q, m, D->y, NULL, NULL) != TS_OK)
             return (double)NAN;
         break;
     case I_TS_AVX2:
@@ -370,7 +370,7 @@ static double run_impl(int impl, const data *D, const impls *I, size_t m)
         ts_cursor c = TS_CURSOR_INIT;
         const ts_spline *s = impl == I_TS_EVAL ? I->s : impl == I_C1_EVAL ? I->c1 : I->geo;
         for (size_t j = 0; j < m; j++)
-            ts_eval(s, D->q[j], &c, &D->y[j]);
+            ts_spline_eval(s, D->q[j], &c, &D->y[j]);
         break;
     }
     case I_GSL_STEFFEN:
@@ -401,12 +401,12 @@ static int round_order(int r, int k, int count)
     return r % 2 ? count - 1 - j : j;
 }
 
-/* Wall ns per point of ts_eval_batch (threads 1) or ts_eval_batch_mt. */
+/* Wall ns per point of ts_spline_eval_batch (threads 1) or ts_spline_eval_batch_mt. */
 static double run_mt(const ts_spline *s, const double *q, size_t m, double *y, int threads)
 {
     double w0 = wall_now();
-    ts_status st = threads > 1 ? ts_eval_batch_mt(s, 0, q, m, y, (unsigned)threads, NULL)
-                               : ts_eval_batch(s, 0, q, m, y, NULL, NULL);
+    ts_status st = threads > 1 ? ts_spline_eval_batch_mt(s, 0, q, m, y, (unsigned)threads, NULL)
+                               : ts_spline_eval_batch(s, 0, q, m, y, NULL, NULL);
     return st == TS_OK ? (wall_now() - w0) * 1e9 / (double)m : (double)NAN;
 }
 
@@ -430,7 +430,7 @@ static int child_eval(size_t np, size_t m, int random_q, int rounds, double *out
             int im = round_order(r, k, I_COUNT);
             out[im * MAXR + r] = run_impl(im, &D, &I, queries_for(im, &D, random_q));
         }
-        double one = 0, two = 0; /* speed-up of ts_eval_batch_mt on 2 threads, wall time */
+        double one = 0, two = 0; /* speed-up of ts_spline_eval_batch_mt on 2 threads, wall time */
         for (int k = 0; k < 2; k++) {
             if ((k + r) % 2)
                 two = run_mt(I.s, D.q, m, D.y, 2);
@@ -515,8 +515,8 @@ static const char *cimpl_name[C_COUNT] = {
 /* The schemes' rows: paper form unless geometric. */
 static ts_spline *build_scheme(const data *D, int impl)
 {
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     int k = impl - C_GEO_POS;
     o.certify = k % 2;
     o.form = impl <= C_GEO_POS_CERT ? TS_FORM_GEOMETRIC : TS_FORM_PAPER;
@@ -883,7 +883,7 @@ static void add_goal_dir(const char *what, double value, double limit, int at_le
     }
 }
 
-/* ts_eval_batch_mt at 1e6 knots, 1e7 queries: the speed-up (median of the
+/* ts_spline_eval_batch_mt at 1e6 knots, 1e7 queries: the speed-up (median of the
  * rounds' ratios), the machine's probes in the same rounds (NaN when not
  * run), other processes' CPU in cores, the load average after. */
 typedef struct mt_info {
@@ -934,8 +934,8 @@ static const char *probe_key[P_COUNT] = {"paper", "paper_nocert", "geometric", "
 
 static ts_spline *build_probe(const data *D, int which)
 {
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = which == P_GEO || which == P_GEO_NC ? TS_FORM_GEOMETRIC : TS_FORM_PAPER;
     o.shape = TS_SHAPE_POSITIVE;
     o.certify = which == P_PAPER || which == P_GEO;
@@ -1059,7 +1059,7 @@ static void decisions_construction(const char *self, int rounds)
     out("\n");
 }
 
-/* ---- ts_eval_batch_mt against the machine's own 2-thread scaling ------- */
+/* ---- ts_spline_eval_batch_mt against the machine's own 2-thread scaling ------- */
 
 /* Wall and process CPU seconds of one timing, and its involuntary context
  * switches (all threads); cpu / wall is how many threads ran on average
@@ -1100,7 +1100,7 @@ static int machine_cpu(double *busy, double *steal, double *all)
     return 0;
 }
 
-/* The probes, run the way ts_eval_batch_mt runs (the caller's thread does
+/* The probes, run the way ts_spline_eval_batch_mt runs (the caller's thread does
  * one half, one pthread created for the call the other, joined; wall time):
  * compute, 16 independent multiply-add chains per thread, no memory; memory,
  * the batch's own stream, y[i] = 0.5 q[i] + 1 over the query and output
@@ -1164,13 +1164,13 @@ static timing probe_run(int memory, int threads, const double *x, double *y, siz
     return T;
 }
 
-/* ts_eval_batch (threads 1) or ts_eval_batch_mt on 2 threads, reps calls;
+/* ts_spline_eval_batch (threads 1) or ts_spline_eval_batch_mt on 2 threads, reps calls;
  * wall < 0 if a call failed. */
 static timing lib_run(const ts_spline *s, const double *q, size_t m, double *y, int threads, size_t reps)
 {
     double s0 = preempted_now(), w0 = wall_now(), c0 = proc_cpu_now();
     for (size_t k = 0; k < reps; k++) {
-        ts_status st = threads > 1 ? ts_eval_batch_mt(s, 0, q, m, y, 2, NULL) : ts_eval_batch(s, 0, q, m, y, NULL, NULL);
+        ts_status st = threads > 1 ? ts_spline_eval_batch_mt(s, 0, q, m, y, 2, NULL) : ts_spline_eval_batch(s, 0, q, m, y, NULL, NULL);
         if (st != TS_OK)
             return (timing){-1.0, 0.0, 0.0};
     }
@@ -1179,7 +1179,7 @@ static timing lib_run(const ts_spline *s, const double *q, size_t m, double *y, 
     return T;
 }
 
-/* Child: ts_eval_batch against ts_eval_batch_mt on 2 threads, wall time,
+/* Child: ts_spline_eval_batch against ts_spline_eval_batch_mt on 2 threads, wall time,
  * 1e6 knots, paper form, for query counts 1e3..1e7 (a timing repeats the
  * call up to 1e6 points below 1e6 queries, 1e7 from there).  At 1e7 queries
  * (the goal's workload) every round also times the probes, 1 and 2 threads,
@@ -1267,7 +1267,7 @@ static int child_mt(int random_q, int rounds, double *out_v)
 }
 
 /* The speed goals of issue 15 (1e6 knots, 1e7 queries; ratios of medians of
- * one run), every batch row for each kernel: the one ts_eval_batch picks on
+ * one run), every batch row for each kernel: the one ts_spline_eval_batch picks on
  * this CPU (AVX-512F where present), AVX2+FMA, portable C; the paper and C¹
  * forms' sorted batch against GSL steffen, the geometric form against the
  * paper form on the same kernel and against GSL, random batches, one call
@@ -1296,7 +1296,7 @@ static void issue_goals(const double *evS, const double *evR, const double *bd, 
     const char *best = kernel_name();
     char w[256], k0[64];
     double st = evS[I_GSL_STEFFEN], str = evR[I_GSL_STEFFEN];
-    snprintf(k0, sizeof k0, "ts_eval_batch (%s kernel)", best);
+    snprintf(k0, sizeof k0, "ts_spline_eval_batch (%s kernel)", best);
     const struct {
         const char *form;
         int b, a2, po;
@@ -1332,7 +1332,7 @@ static void issue_goals(const double *evS, const double *evR, const double *bd, 
     } E[3] = {{"paper", I_TS_EVAL}, {"C¹", I_C1_EVAL}, {"geometric", I_GEO_EVAL}};
     for (int k = 0; k < 3; k++) {
         snprintf(w, sizeof w,
-                 "scalar ts_eval, sorted, with a cursor, %s form (no batch kernel): / GSL gsl_interp_eval <= 1.5",
+                 "scalar ts_spline_eval, sorted, with a cursor, %s form (no batch kernel): / GSL gsl_interp_eval <= 1.5",
                  E[k].form);
         add_goal(w, evS[E[k].im] / st, 1.5);
     }
@@ -1374,12 +1374,12 @@ static void issue_goals(const double *evS, const double *evR, const double *bd, 
         const mt_info *M = &mt[rq];
         if (isnan(M->compute))
             snprintf(w, sizeof w,
-                     "ts_eval_batch_mt, 2 threads, %s: speed-up over 1 thread >= 1.7 (evaluation table; machine "
+                     "ts_spline_eval_batch_mt, 2 threads, %s: speed-up over 1 thread >= 1.7 (evaluation table; machine "
                      "probes not run; load average %.2f)",
                      rq ? "random" : "sorted", M->load);
         else
             snprintf(w, sizeof w,
-                     "ts_eval_batch_mt, 2 threads, %s: speed-up over 1 thread >= 1.7 (machine at the time: "
+                     "ts_spline_eval_batch_mt, 2 threads, %s: speed-up over 1 thread >= 1.7 (machine at the time: "
                      "compute %.2f, memory %.2f; CPU/wall 1 thread %.2f, 2 threads %.2f; other processes %.2f "
                      "cores; load average %.2f)",
                      rq ? "random" : "sorted", M->compute, M->memory, M->util1, M->util2, M->other, M->load);
@@ -1507,7 +1507,7 @@ int main(int argc, char **argv)
                 out("| %zu | %s | (inputs only: x, f, slopes, queries, output) | | | | | %.0f |\n", np - 1,
                     rq ? "random" : "sorted", B.status ? (double)NAN : B.rss_mib);
                 double mtx = median(C.v + I_COUNT * MAXR, rounds);
-                out("| %zu | %s | ts_eval_batch_mt, 2 threads: speed-up over 1 thread (wall time; load average "
+                out("| %zu | %s | ts_spline_eval_batch_mt, 2 threads: speed-up over 1 thread (wall time; load average "
                     "%.2f) | %.2f× (%.2f–%.2f) | | | | |\n",
                     np - 1, rq ? "random" : "sorted", ld, mtx, minimum(C.v + I_COUNT * MAXR, rounds),
                     maximum(C.v + I_COUNT * MAXR, rounds));
@@ -1525,9 +1525,9 @@ int main(int argc, char **argv)
             "the first %zu queries; the geometric form's one call per point times them everywhere.\n\n",
             M / 10);
     }
-    add_goal("sorted queries, n = 1e6: ts_eval_batch / GSL steffen <= 0.5", sorted_ratio, 0.5);
-    add_goal("sorted queries, n = 1e6: ts_eval_batch / Hermite loop <= 1.5", herm_ratio, 1.5);
-    add_goal("random queries, n = 1e6: ts_eval_batch / GSL steffen <= 0.5", random_ratio, 0.5);
+    add_goal("sorted queries, n = 1e6: ts_spline_eval_batch / GSL steffen <= 0.5", sorted_ratio, 0.5);
+    add_goal("sorted queries, n = 1e6: ts_spline_eval_batch / Hermite loop <= 1.5", herm_ratio, 1.5);
+    add_goal("random queries, n = 1e6: ts_spline_eval_batch / GSL steffen <= 0.5", random_ratio, 0.5);
 
     double c_pos = (double)NAN, c_cert = (double)NAN, c_st = (double)NAN, c_sti = (double)NAN;
     if (!skip_build) {
@@ -1589,13 +1589,13 @@ int main(int argc, char **argv)
             decisions_construction(self, quick ? 3 : 7);
         }
         int rounds = quick ? 3 : 11;
-        out("### ts_eval_batch_mt (2 threads) against ts_eval_batch, 1e6 knots, paper form: wall ns/point\n\n");
+        out("### ts_spline_eval_batch_mt (2 threads) against ts_spline_eval_batch, 1e6 knots, paper form: wall ns/point\n\n");
         out("Median of %d interleaved rounds (both warmed up; which runs first alternates); speed-up: the median "
             "of the rounds' own ratios (min–max). A timing repeats the call up to 1e6 points below 1e6 queries, "
             "1e7 from there, and is the best of %d such timings (a single 1e7-query call took 1× to 4× its "
             "median when the host interfered).\n\n",
             rounds, MT_BEST);
-        out("| queries | order | ts_eval_batch | ts_eval_batch_mt, 2 threads | speed-up: median (min–max) |\n"
+        out("| queries | order | ts_spline_eval_batch | ts_spline_eval_batch_mt, 2 threads | speed-up: median (min–max) |\n"
             "|---:|---|---:|---:|---:|\n");
         static child C[2];
         double ld[2], steal[2];
@@ -1617,7 +1617,7 @@ int main(int argc, char **argv)
         }
         out("\n#### The machine's own 2-thread scaling, in the same rounds (1e6 knots, 1e7 queries)\n\n");
         out("Every round times, at 1e7 queries and in an order that turns from round to round, the library on 1 and "
-            "2 threads and two probes on 1 and 2 threads, run as ts_eval_batch_mt runs (the caller's thread does "
+            "2 threads and two probes on 1 and 2 threads, run as ts_spline_eval_batch_mt runs (the caller's thread does "
             "one half, a thread created for the call the other; wall time): *compute*, 16 independent "
             "multiply-add chains per thread, no memory; *memory*, y[i] = 0.5 q[i] + 1 over the same query and "
             "output arrays (read + write); each the best of %d timings, as the library's. A probe's 1-thread time "
@@ -1629,13 +1629,13 @@ int main(int argc, char **argv)
             "of these timings, in cores of %ld; steal: the share of vCPU time the host kept.\n\n",
             MT_BEST, MT_PROBE_MAX, sysconf(_SC_NPROCESSORS_ONLN));
         static const char *row[] = {
-            "ts_eval_batch_mt speed-up over ts_eval_batch",
+            "ts_spline_eval_batch_mt speed-up over ts_spline_eval_batch",
             "compute probe speed-up",
             "memory probe speed-up",
-            "CPU/wall: ts_eval_batch, ts_eval_batch_mt",
+            "CPU/wall: ts_spline_eval_batch, ts_spline_eval_batch_mt",
             "CPU/wall: compute probe, 1 and 2 threads",
             "CPU/wall: memory probe, 1 and 2 threads",
-            "involuntary context switches per timing: ts_eval_batch, ts_eval_batch_mt",
+            "involuntary context switches per timing: ts_spline_eval_batch, ts_spline_eval_batch_mt",
             "involuntary context switches per timing: compute probe, 1 and 2 threads",
             "involuntary context switches per timing: memory probe, 1 and 2 threads",
             "other processes' CPU, cores",
@@ -1713,7 +1713,7 @@ int main(int argc, char **argv)
 
     out("\n## Performance goals\n\n");
     out("Ratios of the medians above, at 1e6 knots (%zu queries; the 2-thread rows 1e7). The first seven rows are earlier goals; from "
-        "\"sorted batch\" on, the goals of issue 15, every batch row for the kernel ts_eval_batch picks on this "
+        "\"sorted batch\" on, the goals of issue 15, every batch row for the kernel ts_spline_eval_batch picks on this "
         "CPU (%s), the AVX2+FMA and the portable C kernel; one call per point has no batch kernel; "
         "construction: the shipped library (its target_clones loops run this CPU's version) and, where the "
         "construction-variants table ran it, the variant base (baseline-ISA loops). The 2-thread rows give the "

@@ -7,8 +7,8 @@ int main(void)
 {
     static const double x[] = {0, 2, 3, 5, 15, 25, 27, 28, 30};
     static const double f[] = {2, 1.58, 1.55, 1.54, 1.8, 1.54, 1.55, 1.58, 2};
-    ts_options opt;
-    ts_options_init(&opt);
+    ts_spline_options opt;
+    ts_spline_options_init(&opt);
     opt.alpha = 1.4;
     opt.beta = 1.9;
     ts_spline *s = NULL;
@@ -22,7 +22,7 @@ int main(void)
     ts_cursor cur = TS_CURSOR_INIT;
     for (int k = 0; k <= 60; k++) {
         double xx = 0.5 * k, y, dy;
-        ts_eval_deriv(s, xx, &cur, &y, &dy, NULL);
+        ts_spline_eval_deriv(s, xx, &cur, &y, &dy, NULL);
         printf("%-22.17g %-22.17g %-22.17g\n", xx, y, dy);
     }
     ts_spline_free(s);

@@ -74,7 +74,7 @@ typedef enum ts_status {
     TS_ERR_LINES = 16,       /* lower line not strictly below the upper line at a data point; index = point */
     TS_ERR_NONMONOTONE = 17, /* monotone scheme: data change direction; index = point */
     TS_ERR_INFEASIBLE = 18,  /* no beta >= 0 keeps interval inside the region; index = interval */
-    TS_ERR_VIOLATED = 19,    /* ts_certify: the spline leaves the region; index = first interval */
+    TS_ERR_VIOLATED = 19,    /* ts_spline_certify: the spline leaves the region; index = first interval */
     TS_ERR_GEOMETRIC = 20,   /* geometric form: alpha+beta below the bound of docs/method.md §4; index = interval */
     TS_ERR_DIMENSION = 21,   /* curve dimension not 2 or 3 */
     TS_ERR_INDEX = 22,       /* accessor index out of range */
@@ -128,7 +128,7 @@ typedef struct ts_error {
 /* ------------------------------------------------------------------ */
 
 /* docs/method.md §3 paper form, §3 C¹ option, §4 geometric form (default of
- * ts_options_init, docs/method.md §5.10). */
+ * ts_spline_options_init, docs/method.md §5.10). */
 typedef enum ts_form {
     TS_FORM_PAPER = 0,
     TS_FORM_C1 = 1,
@@ -236,7 +236,7 @@ typedef enum ts_slopes {
     TS_SLOPES_FRITSCH_CARLSON = 3,/* PCHIP (Fritsch–Carlson 1980 with Brodlie weights; ends as in Fritsch–Carlson/Moler) */
     TS_SLOPES_AKIMA = 4,          /* Akima 1970 */
     TS_SLOPES_MAKIMA = 5,         /* modified Akima (Moler 2019) */
-    TS_SLOPES_USER = 6,           /* ts_options.user_slopes, n+1 values */
+    TS_SLOPES_USER = 6,           /* ts_spline_options.user_slopes, n+1 values */
     TS_SLOPES_PERIODIC = 7,       /* periodic three-point mean; needs f[0] == f[n] */
     TS_SLOPES_STEFFEN = 8         /* Steffen 1990 (default): 0 <= d/Δ <= 2 on every interval */
 } ts_slopes;
@@ -246,7 +246,7 @@ typedef enum ts_slopes {
  * docs/method.md §5.  Which region the curve must stay in.  The caller gives alpha and
  * the margin t; beta_i = t_i + max{0, terms of the §5 rule} (the upper-line
  * terms with the corrected signs of §5.3), recorded in ts_interval_report.term.
- * Then every interval is certified (ts_options.certify) and beta_i changed
+ * Then every interval is certified (ts_spline_options.certify) and beta_i changed
  * where the certificate fails (term TS_TERM_CERTIFY).
  *  - Data checks, first offending point named: TS_ERR_NEGATIVE (f < 0),
  *    TS_ERR_LINES (lower line not strictly below the upper at a data point;
@@ -332,11 +332,11 @@ typedef struct ts_line {
 #define TS_DEFAULT_MARGIN 0.01
 
 /*
- * Construction options.  Always start from ts_options_init(), then set
+ * Construction options.  Always start from ts_spline_options_init(), then set
  * fields.  Per-interval arrays override the scalar when non-NULL and must
  * have exactly n = n_points - 1 entries (else TS_ERR_LENGTH).
  */
-typedef struct ts_options {
+typedef struct ts_spline_options {
     ts_form form;              /* default TS_FORM_GEOMETRIC (the paper's: TS_FORM_PAPER) */
     ts_slopes slopes;          /* default TS_SLOPES_STEFFEN (the paper's: TS_SLOPES_ARITHMETIC) */
     const double *user_slopes; /* TS_SLOPES_USER: n_points values */
@@ -368,14 +368,14 @@ typedef struct ts_options {
                                   computes the exact gaps on demand. */
 
     ts_extrap extrapolate;     /* default TS_EXTRAP_ERROR */
-} ts_options;
+} ts_spline_options;
 
 /* The defaults: geometric form, Steffen's slopes, alpha = TS_DEFAULT_ALPHA,
  * beta 0, no shape scheme, margin TS_DEFAULT_MARGIN, certify on, extrapolation
  * error.  Every interval of the default curve is monotone and between its two
  * data values (docs/method.md §5.10).  The paper's own spline: form
  * TS_FORM_PAPER, slopes TS_SLOPES_ARITHMETIC, alpha 1. */
-TS_API void ts_options_init(ts_options *opt);
+TS_API void ts_spline_options_init(ts_spline_options *opt);
 
 /* ------------------------------------------------------------------ */
 /* Slopes on their own                                                  */
@@ -423,7 +423,7 @@ typedef struct ts_spline ts_spline;
  * (TS_ERR_TOO_LARGE), an interval, are reported last.
  */
 TS_API ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
-                        const ts_options *opt, ts_spline **out, ts_error *err);
+                        const ts_spline_options *opt, ts_spline **out, ts_error *err);
 
 TS_API void ts_spline_free(ts_spline *s);
 
@@ -476,7 +476,7 @@ typedef struct ts_interval_report {
     double at_upper;
     int certified;          /* every active gap > 0 (with the rounding guard of docs/method.md §5.6) */
     /* Range and overshoot of the interval (docs/method.md §5.9), for every
-     * spline (shape scheme or not; also from ts_certify, and per coordinate
+     * spline (shape scheme or not; also from ts_spline_certify, and per coordinate
      * from ts_curve_certify*, there in the parameter t).  Exact extrema of the
      * interval's trigonometric polynomial, computed as the gaps are (the gap to
      * the line y = 0), without a rounding guard.  NaN when not computed. */
@@ -508,7 +508,7 @@ typedef struct ts_interval_report {
  * the upper min(U(x0), U(x1)) - max_l B_l) exceeds its own rounding guard
  * (S >= min B_l, and a line is largest at an end: docs/method.md §5.6 item 8);
  * the reported gap is still the exact minimum.
- * In the geometric form a line interval (and ts_certify there) is also certified
+ * In the geometric form a line interval (and ts_spline_certify there) is also certified
  * when every control gap Y_l - m X_l - c is positive (convex hull, docs/method.md §4),
  * each evaluated to the rounding of the gap itself (fma and error-free sums),
  * so a knot 1e-14 of |c| from the line is no obstacle; its guard likewise.
@@ -531,7 +531,7 @@ TS_API int ts_spline_certified(const ts_spline *s);
  * (err->index = first violating interval), TS_ERR_NONFINITE for a non-finite
  * line, TS_ERR_NULL.  reports are reset (NaN) before any check.
  */
-TS_API ts_status ts_certify(const ts_spline *s, const ts_line *lower, const ts_line *upper,
+TS_API ts_status ts_spline_certify(const ts_spline *s, const ts_line *lower, const ts_line *upper,
                      ts_interval_report *reports, ts_error *err);
 
 /* ---- evaluation ---------------------------------------------------- */
@@ -550,14 +550,14 @@ typedef struct ts_cursor {
  * At an inner knot the right-hand interval is used (derivatives of the paper
  * form jump there, docs/method.md §3).
  */
-TS_API ts_status ts_eval(const ts_spline *s, double x, ts_cursor *cur, double *y);
-TS_API ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur,
+TS_API ts_status ts_spline_eval(const ts_spline *s, double x, ts_cursor *cur, double *y);
+TS_API ts_status ts_spline_eval_deriv(const ts_spline *s, double x, ts_cursor *cur,
                         double *y, double *dy, double *d2y);
 
 /*
  * Batch: yq[j] = S^(deriv)(xq[j]), deriv >= 0.  Fast for sorted
  * queries, correct for any order; deriv 0, 1, 2 use the batch kernels of
- * src/kernels.c (every form), which agree with ts_eval_deriv to the bounds
+ * src/kernels.c (every form), which agree with ts_spline_eval_deriv to the bounds
  * derived and tested in tests/unit/test_fast.c (not bitwise).  deriv >= 3:
  * paper and C¹ forms only, the closed form of docs/method.md §2
  * (derivatives of any order) per query, as ts_spline_eval_mode; outside the
@@ -567,19 +567,19 @@ TS_API ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur,
  * err->index = first invalid query.  Also TS_ERR_NULL, TS_ERR_OPTION (deriv
  * < 0, or deriv > 2 in the geometric form; every yq[j] NaN).
  */
-TS_API ts_status ts_eval_batch(const ts_spline *s, int deriv, const double *xq, size_t m,
+TS_API ts_status ts_spline_eval_batch(const ts_spline *s, int deriv, const double *xq, size_t m,
                         double *yq, ts_cursor *cur, ts_error *err);
 
 /* Same, split over nthreads threads (0 = number of cores).  Off unless called.
  * Same statuses. */
-TS_API ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size_t m,
+TS_API ts_status ts_spline_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size_t m,
                            double *yq, unsigned nthreads, ts_error *err);
 
 /*
  * Evaluation with the extrapolation given per call (extrap overrides the
  * spline's own, which stays as built) and a derivative of any order nu >= 0.
- * Inside [x0, xn] the values are those of ts_eval_deriv (nu <= 2, scalar),
- * ts_eval_batch (batch) and, for nu >= 3 (paper and C¹ forms only), the
+ * Inside [x0, xn] the values are those of ts_spline_eval_deriv (nu <= 2, scalar),
+ * ts_spline_eval_batch (batch) and, for nu >= 3 (paper and C¹ forms only), the
  * closed form of docs/method.md §2 (derivatives of any order) on the
  * interval of the query (the right-hand one at an inner knot).  Outside:
  *   TS_EXTRAP_ERROR   TS_ERR_DOMAIN (NaN)
@@ -588,18 +588,18 @@ TS_API ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *x
  *                     form: the osculating parabola), every order
  *   TS_EXTRAP_LINEAR  f_end + d (x − x_end), d the one-sided end slope; S' = d,
  *                     higher derivatives 0.  x = ±Inf gives the limit: the end
- *                     value where d = 0, else ±Inf (ts_eval instead returns
+ *                     value where d = 0, else ±Inf (ts_spline_eval instead returns
  *                     TS_ERR_DOMAIN at ±Inf under a stored TS_EXTRAP_LINEAR)
- * For finite x every mode gives the bits ts_eval_deriv / ts_eval_batch give
+ * For finite x every mode gives the bits ts_spline_eval_deriv / ts_spline_eval_batch give
  * on a spline built with that mode.  NaN is always TS_ERR_DOMAIN, ±Inf under
  * ERROR and EXTEND too.  No allocation.
  * ts_spline_eval_mode: *y (NaN on failure).  TS_OK, TS_ERR_NULL (s, y),
  * TS_ERR_OPTION (nu < 0, nu > 2 in the geometric form, extrap out of range),
  * TS_ERR_DOMAIN.
- * ts_spline_eval_batch_mode: as ts_eval_batch (invalid queries NaN,
+ * ts_spline_eval_batch_mode: as ts_spline_eval_batch (invalid queries NaN,
  * TS_ERR_DOMAIN with err->index = the first; TS_ERR_NULL; TS_ERR_OPTION for
  * nu or extrap, every yq[j] NaN).  _mt: split over nthreads threads as
- * ts_eval_batch_mt, same statuses.
+ * ts_spline_eval_batch_mt, same statuses.
  */
 TS_API ts_status ts_spline_eval_mode(const ts_spline *s, double x, int nu, ts_extrap extrap,
                                      ts_cursor *cur, double *y);
@@ -647,7 +647,7 @@ TS_API ts_status ts_spline_solve(const ts_spline *s, double y, double *roots, si
  * overflow: the pieces are then summed again scaled by a power of 2) and
  * ±Inf where it overflows; never NaN for a and b in range.
  */
-TS_API ts_status ts_integral(const ts_spline *s, double a, double b, double *out);
+TS_API ts_status ts_spline_integral(const ts_spline *s, double a, double b, double *out);
 
 /* ------------------------------------------------------------------ */
 /* Parametric curves (docs/method.md §7)                                          */
@@ -867,7 +867,7 @@ TS_API ts_status ts_error_constants_get(ts_form form, double a, ts_error_constan
  * Returns TS_OK, TS_ERR_NULL (s or bound), TS_ERR_NONFINITE (fprime_max not
  * finite, fsecond_max NaN), TS_ERR_OPTION (a negative bound).
  */
-TS_API ts_status ts_error_bound(const ts_spline *s, double fprime_max, double fsecond_max,
+TS_API ts_status ts_spline_error_bound(const ts_spline *s, double fprime_max, double fsecond_max,
                          int exact_slopes, double *bound, double *per_interval);
 
 /* ================================================================== */

@@ -132,7 +132,7 @@ ts_status ts_error_constants_get(ts_form form, double a, ts_error_constants *c)
     return TS_OK;
 }
 
-ts_status ts_error_bound(const ts_spline *s, double fprime_max, double fsecond_max,
+ts_status ts_spline_error_bound(const ts_spline *s, double fprime_max, double fsecond_max,
                          int exact_slopes, double *bound, double *per_interval)
 {
     if (bound)

@@ -354,7 +354,7 @@ int ts__check_interval(const ts_spline *sp, size_t i, int exact)
 
 /* opt->certify == 0 skips the trig-min certificates only where the
  * control-value test is a proof (positive, monotone, geometric form) */
-int ts__certify_exact(const ts_options *opt)
+int ts__certify_exact(const ts_spline_options *opt)
 {
     int lines = opt->shape == TS_SHAPE_ABOVE || opt->shape == TS_SHAPE_BELOW ||
                 opt->shape == TS_SHAPE_BETWEEN;

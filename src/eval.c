@@ -15,7 +15,7 @@
 
 /* x outside [x0, xn] or NaN: extrapolation mode (ts_extrap, header); o[1],
  * o[2] are 0 where it has no derivative.  lim: ±Inf under TS_EXTRAP_LINEAR
- * gives the limit (ts_spline_eval_mode) instead of TS_ERR_DOMAIN (ts_eval). */
+ * gives the limit (ts_spline_eval_mode) instead of TS_ERR_DOMAIN (ts_spline_eval). */
 static ts_status eval_out(const ts_spline *sp, ts_extrap mode, int lim, double x, int want,
                           double o[3])
 {
@@ -89,7 +89,7 @@ static ts_status eval_at(const ts_spline *sp, ts_extrap mode, int lim, double x,
     return TS_OK;
 }
 
-/* ts_eval's every other case, out of line so that its usual one needs no
+/* ts_spline_eval's every other case, out of line so that its usual one needs no
  * stack frame. */
 static TS_NOINLINE ts_status eval_value(const ts_spline *s, double x, ts_cursor *cur, double *y)
 {
@@ -100,7 +100,7 @@ static TS_NOINLINE ts_status eval_value(const ts_spline *s, double x, ts_cursor 
     return st;
 }
 
-/* ts_eval's usual case in the geometric form (x in the cursor's interval),
+/* ts_spline_eval's usual case in the geometric form (x in the cursor's interval),
  * out of line so that the other forms' needs no stack frame. */
 static TS_NOINLINE ts_status eval_geo(const ts_spline *s, double x, ts_cursor *cur, double *y)
 {
@@ -114,7 +114,7 @@ static TS_NOINLINE ts_status eval_geo(const ts_spline *s, double x, ts_cursor *c
     return eval_value(s, x, cur, y);
 }
 
-ts_status ts_eval(const ts_spline *s, double x, ts_cursor *cur, double *y)
+ts_status ts_spline_eval(const ts_spline *s, double x, ts_cursor *cur, double *y)
 {
     /* the usual case: x inside the data (NaN fails) and in the cursor's
      * interval; the same value as eval_at's */
@@ -132,7 +132,7 @@ ts_status ts_eval(const ts_spline *s, double x, ts_cursor *cur, double *y)
     return eval_value(s, x, cur, y);
 }
 
-ts_status ts_eval_deriv(const ts_spline *s, double x, ts_cursor *cur, double *y, double *dy,
+ts_status ts_spline_eval_deriv(const ts_spline *s, double x, ts_cursor *cur, double *y, double *dy,
                         double *d2y)
 {
     double o[3];
@@ -216,7 +216,7 @@ static ts_status batch_eval(const ts_spline *s, ts_extrap mode, int lim, int der
     return result;
 }
 
-ts_status ts_eval_batch(const ts_spline *s, int deriv, const double *xq, size_t m,
+ts_status ts_spline_eval_batch(const ts_spline *s, int deriv, const double *xq, size_t m,
                         double *yq, ts_cursor *cur, ts_error *err)
 {
     return batch_eval(s, s ? s->extrap : TS_EXTRAP_ERROR, 0, deriv, xq, m, yq, cur, err);
@@ -316,7 +316,7 @@ static ts_status batch_mt(const ts_spline *s, ts_extrap mode, int lim, int deriv
     return result;
 }
 
-ts_status ts_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size_t m, double *yq,
+ts_status ts_spline_eval_batch_mt(const ts_spline *s, int deriv, const double *xq, size_t m, double *yq,
                            unsigned nthreads, ts_error *err)
 {
     return batch_mt(s, s ? s->extrap : TS_EXTRAP_ERROR, 0, deriv, xq, m, yq, nthreads, err);
@@ -342,7 +342,7 @@ static double scaled_piece(const ts_spline *s, size_t i, double a, double b, int
     return p;
 }
 
-ts_status ts_integral(const ts_spline *s, double a, double b, double *out)
+ts_status ts_spline_integral(const ts_spline *s, double a, double b, double *out)
 {
     if (out)
         *out = (double)NAN;

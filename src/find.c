@@ -1,4 +1,4 @@
-/* The interval of a query: the one search of ts_eval, curves and surfaces
+/* The interval of a query: the one search of ts_spline_eval, curves and surfaces
  * (ts__search, basis.c), for callers outside the library. */
 #include "internal.h"
 

@@ -552,7 +552,7 @@ void ts__geo_wholes(const ts_spline *sp, size_t i0, size_t i1, double *cum);
 double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k);
 /* S, S', S'' (out[0..want]) of interval i of a geometric-form spline at x
  * inside it (x_i <= x <= x_{i+1}), as the batch kernel computes them:
- * ts__geo_root, then ts__geo_y.  Inline: ts_eval's path. */
+ * ts__geo_root, then ts__geo_y.  Inline: ts_spline_eval's path. */
 TS_INLINE void ts__geo_in(const ts_spline *sp, size_t i, double x, int want, double o[3])
 {
     double h = sp->h[i], kappa = sp->kappa[i], dl = x - sp->x[i], dr = sp->x[i + 1] - x, sc[4];
@@ -570,7 +570,7 @@ TS_INLINE void ts__geo_in(const ts_spline *sp, size_t i, double x, int want, dou
 /* ---- interval.c (docs/method.md §2–§4) ----------------------------------------- */
 /* What differs between the forms (docs/method.md §3, §4), one entry per
  * ts_form.  Read once per call: a loop over queries or intervals looks its
- * form up before it starts (ts_eval's inline path and the batch kernels'
+ * form up before it starts (ts_spline_eval's inline path and the batch kernels'
  * inner loops call nothing through it). */
 typedef struct ts__form_ops {
     int geometric;  /* κ_i stored; abscissae X̂ = (0, κ, 1 − κ, 1); S solves X(θ) = x (§4) */
@@ -597,7 +597,7 @@ void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double
 /* The same, paper and C¹ forms, x inside the interval (x_i <= x <= x_{i+1}):
  * ϑ from the nearer end (<= π/4), so the kernels' polynomial sine and cosine
  * (sin and cos of π/2 − θ are exact at the right knot: both knots are
- * interpolated exactly).  Inline: ts_eval's path. */
+ * interpolated exactly).  Inline: ts_spline_eval's path. */
 TS_INLINE void ts__trig_eval_in(const ts_spline *sp, size_t i, double x, int want, double o[3])
 {
     double w = TS_HALF_PI / sp->h[i]; /* dθ/dx */
@@ -636,9 +636,9 @@ double ts__interval_deriv(const ts_spline *sp, size_t i, double x, int nu);
  * not be filled yet); ts__shape_range then checks margins of intervals
  * [i0, i1), data of points [p0, p1), adjusts their slopes (d there already
  * computed: zeros, monotone sign fix) and sets beta[], term[] of [i0, i1). */
-ts_status ts__shape_begin(ts_spline *sp, const ts_options *opt, const double *f, int *dir,
+ts_status ts__shape_begin(ts_spline *sp, const ts_spline_options *opt, const double *f, int *dir,
                           ts_error *err);
-ts_status ts__shape_range(ts_spline *sp, const ts_options *opt, int dir, size_t p0, size_t p1,
+ts_status ts__shape_range(ts_spline *sp, const ts_spline_options *opt, int dir, size_t p0, size_t p1,
                           size_t i0, size_t i1, ts_error *err);
 /* The sign (−1, 0, 1) of the exact sum of v[0..n), n <= TS_EXACT_TERMS,
  * each |v_j| <= 2^1020 (so that no partial sum overflows): Shewchuk's
@@ -711,7 +711,7 @@ int ts__check_ctl(const ts_spline *sp, size_t i, const double B[4], const double
 int ts__check_interval(const ts_spline *sp, size_t i, int exact);
 /* Does certification of a spline built with opt compute the exact trig-min
  * certificates?  (Only meaningful for opt->shape != TS_SHAPE_NONE.) */
-int ts__certify_exact(const ts_options *opt);
+int ts__certify_exact(const ts_spline_options *opt);
 /* First interval in [i, i1) that ts__check_ctl (not exact) would not pass;
  * line schemes, paper and C¹ forms: that it would not pass by the line
  * bound (docs/method.md §5.6 item 8), exact or not. */
@@ -812,14 +812,14 @@ ts_status ts__repair_search(const ts__repair_ops *o, size_t i, double al, double
  * beta_i where a gap is not positive; in order.  The C¹ form steps back after
  * a repair: call it once on [0, n).  After the last range ts__certify_done
  * sets certified and have_certs. */
-ts_status ts__certify_range(ts_spline *sp, const ts_options *opt, size_t i0, size_t i1,
+ts_status ts__certify_range(ts_spline *sp, const ts_spline_options *opt, size_t i0, size_t i1,
                             ts_error *err);
-void ts__certify_done(ts_spline *sp, const ts_options *opt);
+void ts__certify_done(ts_spline *sp, const ts_spline_options *opt);
 
 /* ==== L4 ============================================================ */
 
 /* ---- eval.c ----------------------------------------------------------- */
-/* Threads of ts_eval_batch_mt: asked, or if 0 the online processors (1 if
+/* Threads of ts_spline_eval_batch_mt: asked, or if 0 the online processors (1 if
  * that count is not positive), at most 64. */
 unsigned ts__mt_threads(unsigned asked, long online);
 

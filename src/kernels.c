@@ -18,7 +18,7 @@
  *     end as eval.c (ϑ = tu or tv <= π/4, no range reduction: docs/method.md §1), sin
  *     and 1 − cos by polynomials, then docs/method.md §2 (value) or (2.1) and its
  *     θ-derivative, times w or w·w.
- * Agreement with ts_eval_deriv, derived and checked on 1e7 random points in
+ * Agreement with ts_spline_eval_deriv, derived and checked on 1e7 random points in
  * tests/test_fast.c: measured |fast − plain| <= 3.9ε·M for the value
  * (M = max|B_l| of the interval), 12ε·M·w for S', 35ε·M·w² for S''; a
  * long-double reference finds both paths equally accurate.

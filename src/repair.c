@@ -385,7 +385,7 @@ static ts_status c1_fallback(ts_spline *sp, size_t i, double t, int exact, ts_er
 /* The certification loop over [i0, i1).  In the paper and geometric forms
  * every interval is checked (and repaired) on its own; the C¹ form steps back
  * after a repair, so it runs once over [0, n). */
-static ts_status certify_loop(ts_spline *sp, const ts_options *opt, size_t i0, size_t i1,
+static ts_status certify_loop(ts_spline *sp, const ts_spline_options *opt, size_t i0, size_t i1,
                               ts_error *err)
 {
     int exact = ts__certify_exact(opt), neighbours = ts__form(sp->form)->neighbours;
@@ -435,7 +435,7 @@ static ts_status certify_loop(ts_spline *sp, const ts_options *opt, size_t i0, s
     return TS_OK;
 }
 
-ts_status ts__certify_range(ts_spline *sp, const ts_options *opt, size_t i0, size_t i1,
+ts_status ts__certify_range(ts_spline *sp, const ts_spline_options *opt, size_t i0, size_t i1,
                             ts_error *err)
 {
     sp->certified = 0;
@@ -443,7 +443,7 @@ ts_status ts__certify_range(ts_spline *sp, const ts_options *opt, size_t i0, siz
     return certify_loop(sp, opt, i0, i1 < sp->n ? i1 : sp->n, err);
 }
 
-void ts__certify_done(ts_spline *sp, const ts_options *opt)
+void ts__certify_done(ts_spline *sp, const ts_spline_options *opt)
 {
     sp->have_certs = ts__certify_exact(opt);
     sp->certified = 1;

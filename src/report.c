@@ -76,7 +76,7 @@ int ts_spline_certified(const ts_spline *s)
     return s && s->shape != TS_SHAPE_NONE ? 1 : 0;
 }
 
-ts_status ts_certify(const ts_spline *s, const ts_line *lower, const ts_line *upper,
+ts_status ts_spline_certify(const ts_spline *s, const ts_line *lower, const ts_line *upper,
                      ts_interval_report *reports, ts_error *err)
 {
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);

@@ -161,7 +161,7 @@ static ts_status check_data(const ts_spline *sp, ts_shape shape, int dir, size_t
  * upwards; −1 for an upper): an inner knot needs d = 0, the first up·d >= 0,
  * the last up·d <= 0 (periodic: both ends one inner knot).  Estimated
  * slopes are set so, user slopes that break it refused. */
-static ts_status touch_slopes(ts_spline *sp, const ts_options *opt, size_t p0, size_t p1, double v,
+static ts_status touch_slopes(ts_spline *sp, const ts_spline_options *opt, size_t p0, size_t p1, double v,
                               double up, ts_error *err)
 {
     size_t n = sp->n;
@@ -183,7 +183,7 @@ static ts_status touch_slopes(ts_spline *sp, const ts_options *opt, size_t p0, s
 }
 
 /* docs/method.md §5.1: zero knots of non-negative data (all checked >= 0). */
-static ts_status zero_slopes(ts_spline *sp, const ts_options *opt, size_t p0, size_t p1,
+static ts_status zero_slopes(ts_spline *sp, const ts_spline_options *opt, size_t p0, size_t p1,
                              ts_error *err)
 {
     int zero;
@@ -194,7 +194,7 @@ static ts_status zero_slopes(ts_spline *sp, const ts_options *opt, size_t p0, si
 }
 
 /* docs/method.md §5.8: knots on a constant line of a line scheme. */
-static ts_status line_touch_slopes(ts_spline *sp, const ts_options *opt, size_t p0, size_t p1,
+static ts_status line_touch_slopes(ts_spline *sp, const ts_spline_options *opt, size_t p0, size_t p1,
                                    ts_error *err)
 {
     ts_status st = TS_OK;
@@ -221,7 +221,7 @@ static void monotone_slopes(ts_spline *sp, int dir, size_t p0, size_t p1)
 }
 
 /* margins t_i of docs/method.md §5, intervals [i0, i1) */
-static ts_status check_margins(const ts_options *opt, size_t i0, size_t i1, ts_error *err)
+static ts_status check_margins(const ts_spline_options *opt, size_t i0, size_t i1, ts_error *err)
 {
     double t0 = opt->margin;
     if (!opt->margins && ts__margin_ok(t0))
@@ -233,7 +233,7 @@ static ts_status check_margins(const ts_options *opt, size_t i0, size_t i1, ts_e
 }
 
 /* The margin array's length. */
-static ts_status check_options(const ts_spline *sp, const ts_options *opt, ts_error *err)
+static ts_status check_options(const ts_spline *sp, const ts_spline_options *opt, ts_error *err)
 {
     if (opt->margins && opt->n_margins != sp->n)
         return fail(err, TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
@@ -241,7 +241,7 @@ static ts_status check_options(const ts_spline *sp, const ts_options *opt, ts_er
 }
 
 /* Boundaries of the scheme into sp. */
-static ts_status boundaries(ts_spline *sp, const ts_options *opt, ts_error *err)
+static ts_status boundaries(ts_spline *sp, const ts_spline_options *opt, ts_error *err)
 {
     ts_shape shape = opt->shape;
     sp->has_lower = shape == TS_SHAPE_POSITIVE || shape == TS_SHAPE_ABOVE ||
@@ -356,7 +356,7 @@ TS_VECTOR_LOOP static void add_margins(const double *restrict alpha, double *res
 }
 
 /* Intervals [i0, i1) (margins already checked). */
-static void betas(ts_spline *sp, const ts_options *opt, size_t i0, size_t i1)
+static void betas(ts_spline *sp, const ts_spline_options *opt, size_t i0, size_t i1)
 {
     int geo = sp->form == TS_FORM_GEOMETRIC;
     double *restrict best = sp->beta;
@@ -375,7 +375,7 @@ static void betas(ts_spline *sp, const ts_options *opt, size_t i0, size_t i1)
 }
 
 /* Slope adjustments of points [p0, p1) (their data already checked). */
-static ts_status adjust(ts_spline *sp, const ts_options *opt, int dir, size_t p0, size_t p1,
+static ts_status adjust(ts_spline *sp, const ts_spline_options *opt, int dir, size_t p0, size_t p1,
                         ts_error *err)
 {
     if (opt->shape == TS_SHAPE_POSITIVE)
@@ -387,7 +387,7 @@ static ts_status adjust(ts_spline *sp, const ts_options *opt, int dir, size_t p0
     return line_touch_slopes(sp, opt, p0, p1, err);
 }
 
-ts_status ts__shape_begin(ts_spline *sp, const ts_options *opt, const double *f, int *dir,
+ts_status ts__shape_begin(ts_spline *sp, const ts_spline_options *opt, const double *f, int *dir,
                           ts_error *err)
 {
     *dir = 0;
@@ -399,7 +399,7 @@ ts_status ts__shape_begin(ts_spline *sp, const ts_options *opt, const double *f,
     return st;
 }
 
-ts_status ts__shape_range(ts_spline *sp, const ts_options *opt, int dir, size_t p0, size_t p1,
+ts_status ts__shape_range(ts_spline *sp, const ts_spline_options *opt, int dir, size_t p0, size_t p1,
                           size_t i0, size_t i1, ts_error *err)
 {
     ts_status st = check_margins(opt, i0, i1, err);

@@ -8,7 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void options_defaults(ts_options *opt)
+static void options_defaults(ts_spline_options *opt)
 {
     if (!opt)
         return;
@@ -83,7 +83,7 @@ static void copy_points(ts_spline *sp, const double *x, const double *f, size_t 
 }
 
 /* docs/method.md §6 user slopes, points [p0, p1) (array checked non-NULL, length np). */
-static ts_status user_slopes(ts_spline *sp, const ts_options *o, size_t p0, size_t p1,
+static ts_status user_slopes(ts_spline *sp, const ts_spline_options *o, size_t p0, size_t p1,
                              ts_error *err)
 {
     for (size_t i = p0; i < p1; i++) {
@@ -124,7 +124,7 @@ static ts_status check_beta(ts_spline *sp, size_t i0, size_t i1, ts_error *err)
                     TS_WHERE_INTERVAL);
 }
 
-/* Cumulative integrals cum[i0+1..i1] for ts_integral from the running sum
+/* Cumulative integrals cum[i0+1..i1] for ts_spline_integral from the running sum
  * (cum[i0]), which it returns: the same additions in the same order. */
 static double cumulate(ts_spline *sp, size_t i0, size_t i1, double sum)
 {
@@ -172,7 +172,7 @@ static ts_status nonfinite_slope(const ts_spline *sp, size_t p0, size_t p1, ts_e
  * repair may step back, so controls, certificates and integrals run once
  * after the blocks.  The first fault found is the one reported: the order is
  * documented at ts_spline_new. */
-static ts_status build(ts_spline *sp, const ts_options *o, const double *x, const double *f,
+static ts_status build(ts_spline *sp, const ts_spline_options *o, const double *x, const double *f,
                        ts_error *err)
 {
     size_t n = sp->n, np = n + 1, done = 0;
@@ -237,7 +237,7 @@ static ts_status build(ts_spline *sp, const ts_options *o, const double *x, cons
     /* control values must be finite (a tiny a_i with a large slope can
      * overflow B1, B2 with no scheme to catch it) and at most TS_VALUE_MAX
      * (so S between the knots cannot overflow); an integral that overflows
-     * is not an error: ts_integral then returns ±Inf */
+     * is not an error: ts_spline_integral then returns ±Inf */
     if (!values_ok(sp->b1, sp->b2, n)) {
         size_t i = 0; /* the first offender (there is one) */
         while (i + 1 < n && fabs(sp->b1[i]) <= TS_VALUE_MAX && fabs(sp->b2[i]) <= TS_VALUE_MAX)
@@ -250,14 +250,14 @@ static ts_status build(ts_spline *sp, const ts_options *o, const double *x, cons
 }
 
 ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
-                        const ts_options *opt, ts_spline **out, ts_error *err)
+                        const ts_spline_options *opt, ts_spline **out, ts_error *err)
 {
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
     if (out)
         *out = NULL;
     if (!x || !f || !out)
         return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
-    ts_options defaults;
+    ts_spline_options defaults;
     if (!opt) {
         options_defaults(&defaults);
         opt = &defaults;
@@ -373,7 +373,7 @@ ts_status ts_spline_control(const ts_spline *s, size_t i, double B[4], double X[
     return TS_OK;
 }
 
-void ts_options_init(ts_options *opt)
+void ts_spline_options_init(ts_spline_options *opt)
 {
     options_defaults(opt);
 }

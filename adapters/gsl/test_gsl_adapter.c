@@ -1,5 +1,5 @@
 /* The GSL adapter (adapters/gsl/trigspline_gsl.h): gsl_spline / gsl_interp
- * through the adapter against ts_eval / ts_eval_deriv / ts_integral on the
+ * through the adapter against ts_spline_eval / ts_spline_eval_deriv / ts_spline_integral on the
  * same data and options, error statuses, the accelerator, configuration.
  *
  * Expected values: the adapter must call the same library functions with the
@@ -46,7 +46,7 @@ static double urand(void) /* deterministic LCG in [0, 1) */
 }
 
 /* Compare a gsl_spline of type T with ts_spline_new(opt) on the data. */
-static void compare(const gsl_interp_type *T, const ts_options *opt, const double *x,
+static void compare(const gsl_interp_type *T, const ts_spline_options *opt, const double *x,
                     const double *f, size_t n, const char *what)
 {
     gsl_spline *sp = gsl_spline_alloc(T, n);
@@ -81,7 +81,7 @@ static void compare(const gsl_interp_type *T, const ts_options *opt, const doubl
             int r0 = gsl_spline_eval_e(sp, q, a, &g0);
             int r1 = gsl_spline_eval_deriv_e(sp, q, a, &g1);
             int r2 = gsl_spline_eval_deriv2_e(sp, q, a, &g2);
-            ts_status st = ts_eval_deriv(s, q, NULL, &t0, &t1, &t2);
+            ts_status st = ts_spline_eval_deriv(s, q, NULL, &t0, &t1, &t2);
             if (r0 || r1 || r2 || st != TS_OK)
                 bad[3]++;
             if (!(g0 == t0)) bad[0]++;
@@ -112,7 +112,7 @@ static void compare(const gsl_interp_type *T, const ts_options *opt, const doubl
             a = x0, b = xn;
         double g, t;
         int r = gsl_spline_eval_integ_e(sp, a, b, acc, &g);
-        ts_status st = ts_integral(s, a, b, &t);
+        ts_status st = ts_spline_integral(s, a, b, &t);
         if (r != GSL_SUCCESS || st != TS_OK || !(g == t) || !(gsl_spline_eval_integ(sp, a, b, acc) == t))
             ibad++;
     }
@@ -127,8 +127,8 @@ static void compare(const gsl_interp_type *T, const ts_options *opt, const doubl
 
 static void test_compare(void)
 {
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     compare(ts_gsl_interp_trig, &o, T1x, T1f, N_OF(T1x), "trig/T1");
     compare(ts_gsl_interp_trig, &o, D2x, D2f, N_OF(D2x), "trig/D2");
     compare(ts_gsl_interp_trig, &o, D2x, D2f, 2, "trig/n=2");
@@ -139,7 +139,7 @@ static void test_compare(void)
     compare(ts_gsl_interp_positive_c1, &o, D4x, D4f, N_OF(D4x), "positive_c1/D4");
     o.shape = TS_SHAPE_MONOTONE;
     compare(ts_gsl_interp_monotone_c1, &o, D3x, D3f, N_OF(D3x), "monotone_c1/D3");
-    o.form = TS_FORM_GEOMETRIC; /* ts_options_init's form: the types without "_c1" */
+    o.form = TS_FORM_GEOMETRIC; /* ts_spline_options_init's form: the types without "_c1" */
     compare(ts_gsl_interp_monotone, &o, D3x, D3f, N_OF(D3x), "monotone/D3");
     compare(ts_gsl_interp_monotone, &o, T1x, T1f, 4, "monotone/T1 decreasing part");
 
@@ -326,16 +326,16 @@ static void test_interp_and_configure(void)
     if (!it || !acc)
         return;
     CHECK(gsl_interp_init(it, T1x, T1f, n) == GSL_SUCCESS);
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.shape = TS_SHAPE_POSITIVE;
     ts_spline *s = NULL;
     CHECK(ts_spline_new(T1x, T1f, n, &o, &s, NULL) == TS_OK);
     double v = 0, t = 1;
     CHECK(gsl_interp_eval_e(it, T1x, T1f, 4.2, acc, &v) == GSL_SUCCESS);
-    ts_eval(s, 4.2, NULL, &t);
+    ts_spline_eval(s, 4.2, NULL, &t);
     CHECK(v == t);
-    CHECK(ts_integral(s, 1.0, 29.0, &t) == TS_OK);
+    CHECK(ts_spline_integral(s, 1.0, 29.0, &t) == TS_OK);
     CHECK(gsl_interp_eval_integ(it, T1x, T1f, 1.0, 29.0, acc) == t);
     ts_spline_free(s);
     s = NULL;
@@ -351,7 +351,7 @@ static void test_interp_and_configure(void)
     for (int j = 0; j <= 300; j++) {
         double q = 30.0 * j / 300.0;
         gsl_interp_eval_e(it, T1x, T1f, q, acc, &v);
-        ts_eval(s, q, NULL, &t);
+        ts_spline_eval(s, q, NULL, &t);
         bad += !(v == t);
     }
     CHECK(bad == 0);
@@ -362,15 +362,15 @@ static void test_interp_and_configure(void)
     for (int j = 0; j <= 300; j++) {
         double q = 30.0 * j / 300.0;
         gsl_interp_eval_e(it, T1x, T1f, q, acc, &v);
-        ts_eval(s, q, NULL, &t);
+        ts_spline_eval(s, q, NULL, &t);
         differ += fabs(v - t) > 1e-3; /* alpha 1 vs 0.15: visibly different curves */
     }
     CHECK(differ > 100);
     ts_spline_free(s);
 
     /* configure rejects foreign objects and bad enums */
-    ts_options bad_o;
-    ts_options_init(&bad_o);
+    ts_spline_options bad_o;
+    ts_spline_options_init(&bad_o);
     bad_o.shape = (ts_shape)42;
     CHECK(ts_gsl_configure(it, &bad_o) == GSL_EINVAL);
     CHECK(ts_gsl_configure(NULL, &o) == GSL_EINVAL);
@@ -385,7 +385,7 @@ static void test_interp_and_configure(void)
     gsl_interp_free(lin);
 
     /* a configured option the scheme refuses: a line the data cross */
-    ts_options_init(&o);
+    ts_spline_options_init(&o);
     o.shape = TS_SHAPE_ABOVE;
     o.lower.m = 0.0;
     o.lower.c = 1.6;

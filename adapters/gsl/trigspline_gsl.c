@@ -10,10 +10,10 @@ typedef struct ts_gsl_state {
     ts_error err;       /* of the last init */
     int inited;         /* an init was attempted */
     int configured;     /* opt replaces the type's defaults */
-    ts_options opt;
+    ts_spline_options opt;
 } ts_gsl_state;
 
-/* The defaults of one type: the library's (ts_options_init) with this shape,
+/* The defaults of one type: the library's (ts_spline_options_init) with this shape,
  * and form C¹ for the "_c1" types. */
 typedef struct ts_gsl_kind {
     ts_shape shape;
@@ -55,7 +55,7 @@ static void *ts_gsl_alloc(size_t size)
         st->err.status = TS_ERR_NULL;
         st->err.index = TS_NO_INDEX;
         st->err.where = TS_WHERE_NONE;
-        ts_options_init(&st->opt);
+        ts_spline_options_init(&st->opt);
     }
     return st;
 }
@@ -77,11 +77,11 @@ static int init_kind(void *vstate, const double xa[], const double ya[], size_t 
     ts_spline_free(st->s);
     st->s = NULL;
     st->inited = 1;
-    ts_options o;
+    ts_spline_options o;
     if (st->configured) {
         o = st->opt;
     } else {
-        ts_options_init(&o);
+        ts_spline_options_init(&o);
         o.shape = k->shape;
         if (k->c1)
             o.form = TS_FORM_C1;
@@ -132,7 +132,7 @@ static int eval_which(const void *vstate, double x, gsl_interp_accel *acc, doubl
     if (acc) {
         ts_cursor cur;
         cur.interval = acc->cache;
-        r = ts_eval_deriv(st->s, x, &cur, y, dy, d2y);
+        r = ts_spline_eval_deriv(st->s, x, &cur, y, dy, d2y);
         if (cur.interval == acc->cache) {
             acc->hit_count++;
         } else {
@@ -140,7 +140,7 @@ static int eval_which(const void *vstate, double x, gsl_interp_accel *acc, doubl
             acc->cache = cur.interval;
         }
     } else {
-        r = ts_eval_deriv(st->s, x, NULL, y, dy, d2y);
+        r = ts_spline_eval_deriv(st->s, x, NULL, y, dy, d2y);
     }
     *out = v[which];
     return ts_gsl_status(r);
@@ -177,7 +177,7 @@ static int eval_integ(const void *vstate, const double xa[], const double ya[], 
     *result = (double)NAN;
     if (!st || !st->s)
         return GSL_EINVAL;
-    return ts_gsl_status(ts_integral(st->s, a, b, result));
+    return ts_gsl_status(ts_spline_integral(st->s, a, b, result));
 }
 
 #define TS_GSL_TYPE(var, name, init)                                                         \
@@ -209,14 +209,14 @@ static ts_gsl_state *state_of(const gsl_interp *interp)
     return interp->state;
 }
 
-int ts_gsl_configure(gsl_interp *interp, const ts_options *opt)
+int ts_gsl_configure(gsl_interp *interp, const ts_spline_options *opt)
 {
     ts_gsl_state *st = state_of(interp);
     if (!st)
         return GSL_EINVAL;
     if (!opt) {
         st->configured = 0;
-        ts_options_init(&st->opt);
+        ts_spline_options_init(&st->opt);
         return GSL_SUCCESS;
     }
     if ((unsigned)opt->form > (unsigned)TS_FORM_GEOMETRIC ||

@@ -14,7 +14,7 @@
  *
  * Link with libtrigspline_gsl.a, libtrigspline and -lgsl -lgslcblas -lm.
  *
- * The types (all min_size 2, the library's defaults of ts_options_init —
+ * The types (all min_size 2, the library's defaults of ts_spline_options_init —
  * Steffen's slopes of docs/method.md §6, alpha = TS_DEFAULT_ALPHA, the
  * geometric form of docs/method.md §4 — unless "_c1"):
  *
@@ -95,7 +95,7 @@ int ts_gsl_is_trigspline(const gsl_interp_type *T);
 
 /*
  * Options for the next inits of this object, replacing the type's defaults
- * entirely (start from ts_options_init(), set fields).  The struct is copied;
+ * entirely (start from ts_spline_options_init(), set fields).  The struct is copied;
  * arrays it points to (user_slopes, alphas, betas, margins) are read at each
  * init and must stay valid until the last gsl_*_init of this object.  opt ==
  * NULL restores the type's defaults.  Takes effect at the next init (call
@@ -103,10 +103,10 @@ int ts_gsl_is_trigspline(const gsl_interp_type *T);
  * interp is NULL or not of a trigspline type, or an enum field of opt is out
  * of range.  For a gsl_spline pass spline->interp.
  */
-int ts_gsl_configure(gsl_interp *interp, const ts_options *opt);
+int ts_gsl_configure(gsl_interp *interp, const ts_spline_options *opt);
 
 /* The spline built by the last successful init: use it with the whole
- * library API (ts_spline_report, ts_spline_certified, ts_eval_batch, ...).
+ * library API (ts_spline_report, ts_spline_certified, ts_spline_eval_batch, ...).
  * NULL when interp is NULL, not of a trigspline type, not initialised yet, or
  * its last init failed.  Lives until the next init or gsl_*_free. */
 const ts_spline *ts_gsl_spline(const gsl_interp *interp);

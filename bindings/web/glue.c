@@ -66,8 +66,8 @@ ts_status tsw_spline_new(const double *x, const double *f, size_t n, int form, i
                          double margin, const double *margins, size_t n_margins, int certify,
                          int extrap, ts_spline **out, ts_error *err)
 {
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = (ts_form)form;
     o.slopes = (ts_slopes)slopes;
     o.user_slopes = user_slopes;
@@ -122,8 +122,8 @@ ts_status tsw_curve_new(const double *pts, size_t n, size_t dim, int param, int 
 /* The library's defaults: form slopes alpha beta shape margin certify extrapolate. */
 void tsw_defaults(double *out)
 {
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     out[0] = (double)o.form;
     out[1] = (double)o.slopes;
     out[2] = o.alpha;
@@ -168,7 +168,7 @@ ts_status tsw_certify(const ts_spline *s, int has_lower, double lm, double lc, i
         if (!r)
             return TS_ERR_NOMEM;
     }
-    ts_status st = ts_certify(s, has_lower ? &lo : NULL, has_upper ? &hi : NULL, r, err);
+    ts_status st = ts_spline_certify(s, has_lower ? &lo : NULL, has_upper ? &hi : NULL, r, err);
     for (size_t i = 0; r && i < n; i++)
         put_row(&r[i], rows + i * TSW_ROW);
     free(r);

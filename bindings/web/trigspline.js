@@ -355,7 +355,7 @@ export class Spline extends Handle {
   evalDeriv(x) {
     const ts = this.ts, p = ts.alloc(24);
     try {
-      const st = ts.w.ts_eval_deriv(this.live(), x, this.cur, p, p + 8, p + 16);
+      const st = ts.w.ts_spline_eval_deriv(this.live(), x, this.cur, p, p + 8, p + 16);
       if (st !== 0) {
         ts.u32(ts.errPtr, 3).set([0, NO_INDEX, 0]);
         throw ts.error(st);
@@ -376,7 +376,7 @@ export class Spline extends Handle {
     try {
       ts.resetError();
       const st = extrapolate === null
-        ? ts.w.ts_eval_batch(this.live(), deriv, px, m, py, this.cur, ts.errPtr)
+        ? ts.w.ts_spline_eval_batch(this.live(), deriv, px, m, py, this.cur, ts.errPtr)
         : ts.w.ts_spline_eval_batch_mode(this.live(), deriv, extrapCode(extrapolate), px, m, py,
           this.cur, ts.errPtr);
       if (st !== 0 && !(partial && st === 13)) throw ts.error(st);
@@ -432,7 +432,7 @@ export class Spline extends Handle {
   integral(a, b) {
     const ts = this.ts, p = ts.alloc(8);
     try {
-      const st = ts.w.ts_integral(this.live(), a, b, p);
+      const st = ts.w.ts_spline_integral(this.live(), a, b, p);
       if (st !== 0) { ts.resetError(); throw ts.error(st); }
       return ts.f64(p, 1)[0];
     } finally { ts.w.free(p); }
@@ -488,7 +488,7 @@ export class Spline extends Handle {
   errorBound(fprimeMax, fsecondMax = Infinity, exactSlopes = false) {
     const ts = this.ts, p = ts.alloc((this.n + 1) * 8);
     try {
-      const st = ts.w.ts_error_bound(this.live(), fprimeMax, fsecondMax, exactSlopes ? 1 : 0, p, p + 8);
+      const st = ts.w.ts_spline_error_bound(this.live(), fprimeMax, fsecondMax, exactSlopes ? 1 : 0, p, p + 8);
       if (st !== 0) { ts.resetError(); throw ts.error(st); }
       return { bound: ts.f64(p, 1)[0], perInterval: ts.f64(p + 8, this.n).slice() };
     } finally { ts.w.free(p); }

@@ -42,7 +42,7 @@ static const fun funs[4] = {
 /* Build on n intervals (grid uniform or perturbed ±35% h), slopes exact or
  * a method, a > 0 scalar or a < 0: per-interval log-uniform in [0.5, 2].
  * Returns the max error over 15 points inside each interval; *bound gets
- * ts_error_bound (exact slopes: the two-term bound too). */
+ * ts_spline_error_bound (exact slopes: the two-term bound too). */
 static double study(const fun *F, size_t n, int pert, ts_form form, ts_slopes sl, double a,
                     double *bound)
 {
@@ -63,7 +63,7 @@ static double study(const fun *F, size_t n, int pert, ts_form form, ts_slopes sl
         al[i] = 0.5 * pow(4.0, th_unit());
     if (sl != TS_SLOPES_USER)
         CHECK(ts_slopes_compute(sl, x, f, n + 1, d, NULL) == TS_OK);
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.form = form;
     o.slopes = TS_SLOPES_USER;
@@ -80,10 +80,10 @@ static double study(const fun *F, size_t n, int pert, ts_form form, ts_slopes sl
         for (size_t i = 0; i < n; i++)
             for (int j = 1; j < 16; j++) {
                 double xx = x[i] + (x[i + 1] - x[i]) * j / 16.0, y;
-                ts_eval(s, xx, &cur, &y);
+                ts_spline_eval(s, xx, &cur, &y);
                 e = fmax(e, fabs(y - F->f(xx)));
             }
-        CHECK(ts_error_bound(s, F->m1, F->m2, sl == TS_SLOPES_USER, bound, NULL) == TS_OK);
+        CHECK(ts_spline_error_bound(s, F->m1, F->m2, sl == TS_SLOPES_USER, bound, NULL) == TS_OK);
     }
     CHECK(s != NULL);
     ts_spline_free(s);
@@ -120,7 +120,7 @@ static void test_theorem1(void)
     for (int k = 0; k < 3; k++) {
         double x[2] = {2.0, 2.0 + hs[k]}, f[2] = {2.0, 2.0 + hs[k]}, d[2] = {1, 1};
         double h = x[1] - x[0]; /* the h the spline sees */
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.slopes = TS_SLOPES_USER;
         o.user_slopes = d;
@@ -130,7 +130,7 @@ static void test_theorem1(void)
         double worst = 0;
         for (int j = 0; j <= 4000; j++) {
             double xx = x[0] + h * j / 4000.0, y;
-            ts_eval(s, xx, NULL, &y);
+            ts_spline_eval(s, xx, NULL, &y);
             worst = fmax(worst, fabs(y - xx));
         }
         /* dense sampling (step h/4000 near a smooth maximum) gets within
@@ -140,8 +140,8 @@ static void test_theorem1(void)
         CHECK(worst > 0.003 * h); /* > 0 = the Theorem 1 bound */
         /* the proven bounds hold and, for a line, are attained */
         double b1, b2;
-        CHECK(ts_error_bound(s, 1.0, 0.0, 1, &b2, NULL) == TS_OK); /* M2 = 0 */
-        CHECK(ts_error_bound(s, 1.0, TH_INF, 0, &b1, NULL) == TS_OK);
+        CHECK(ts_spline_error_bound(s, 1.0, 0.0, 1, &b2, NULL) == TS_OK); /* M2 = 0 */
+        CHECK(ts_spline_error_bound(s, 1.0, TH_INF, 0, &b1, NULL) == TS_OK);
         CHECK(worst <= b2 && b2 <= worst * (1 + 1e-5) + 8 * EPS * 3);
         ts_error_constants c;
         CHECK(ts_error_constants_get(TS_FORM_PAPER, 1.0, &c) == TS_OK);
@@ -192,15 +192,15 @@ static void test_bound_errors(void)
     double x[3] = {0, 1, 2}, f[3] = {0, 1, 0}, b = 0, per[2];
     ts_spline *s = NULL;
     CHECK(ts_spline_new(x, f, 3, NULL, &s, NULL) == TS_OK);
-    CHECK(ts_error_bound(NULL, 1, 1, 1, &b, NULL) == TS_ERR_NULL && isnan(b));
-    CHECK(ts_error_bound(s, 1, 1, 1, NULL, NULL) == TS_ERR_NULL);
-    CHECK(ts_error_bound(s, TH_NAN, 1, 0, &b, NULL) == TS_ERR_NONFINITE && isnan(b));
-    CHECK(ts_error_bound(s, TH_INF, 1, 0, &b, NULL) == TS_ERR_NONFINITE);
-    CHECK(ts_error_bound(s, -1, 1, 0, &b, NULL) == TS_ERR_OPTION);
-    CHECK(ts_error_bound(s, 1, TH_NAN, 1, &b, NULL) == TS_ERR_NONFINITE);
-    CHECK(ts_error_bound(s, 1, -1, 1, &b, NULL) == TS_ERR_OPTION);
-    CHECK(ts_error_bound(s, 1, TH_NAN, 0, &b, NULL) == TS_OK); /* ignored without exact slopes */
-    CHECK(ts_error_bound(s, 1, TH_INF, 1, &b, per) == TS_OK);
+    CHECK(ts_spline_error_bound(NULL, 1, 1, 1, &b, NULL) == TS_ERR_NULL && isnan(b));
+    CHECK(ts_spline_error_bound(s, 1, 1, 1, NULL, NULL) == TS_ERR_NULL);
+    CHECK(ts_spline_error_bound(s, TH_NAN, 1, 0, &b, NULL) == TS_ERR_NONFINITE && isnan(b));
+    CHECK(ts_spline_error_bound(s, TH_INF, 1, 0, &b, NULL) == TS_ERR_NONFINITE);
+    CHECK(ts_spline_error_bound(s, -1, 1, 0, &b, NULL) == TS_ERR_OPTION);
+    CHECK(ts_spline_error_bound(s, 1, TH_NAN, 1, &b, NULL) == TS_ERR_NONFINITE);
+    CHECK(ts_spline_error_bound(s, 1, -1, 1, &b, NULL) == TS_ERR_OPTION);
+    CHECK(ts_spline_error_bound(s, 1, TH_NAN, 0, &b, NULL) == TS_OK); /* ignored without exact slopes */
+    CHECK(ts_spline_error_bound(s, 1, TH_INF, 1, &b, per) == TS_OK);
     CHECK(b == fmax(per[0], per[1]) && per[0] > 0);
     ts_spline_free(s);
 }
@@ -307,7 +307,7 @@ static void test_lines_forms(void)
     for (int fo = 0; fo < 3; fo++)
         for (int ai = 0; ai < 3; ai++) {
             double a = ai == 0 ? 0.5 : ai == 1 ? 1.0 : 3.0;
-            ts_options o;
+            ts_spline_options o;
             th_options_paper(&o);
             o.form = (ts_form)fo;
             o.slopes = TS_SLOPES_USER;
@@ -323,7 +323,7 @@ static void test_lines_forms(void)
                 double h = x[i + 1] - x[i], e = 0;
                 for (int j = 0; j <= 800; j++) {
                     double xx = x[i] + h * j / 800.0, y, dy;
-                    ts_eval_deriv(s, xx, NULL, &y, &dy, NULL);
+                    ts_spline_eval_deriv(s, xx, NULL, &y, &dy, NULL);
                     e = fmax(e, fabs(y - (m * xx + c)));
                     if (j == 0)
                         worst_slope = fmax(worst_slope, fabs(dy - m));

@@ -109,8 +109,8 @@ static void tiny_alpha_positive(void)
     double x[] = {0, 1, 2, 3}, f[] = {1, 2, 0, 3};
     for (int form = 0; form < 3; form++)
         for (int cert = 0; cert < 2; cert++) {
-            ts_options o;
-            ts_options_init(&o);
+            ts_spline_options o;
+            ts_spline_options_init(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_POSITIVE;
             o.alpha = 1e-310;
@@ -131,7 +131,7 @@ static void tiny_alpha_positive(void)
                 for (int k = 0; k <= 16; k++) {
                     double y;
                     /* S >= 0 up to evaluation rounding, 64 ε max|B| */
-                    if (ts_eval(s, x[i] + k / 16.0, NULL, &y) != TS_OK ||
+                    if (ts_spline_eval(s, x[i] + k / 16.0, NULL, &y) != TS_OK ||
                         !(y >= -64 * EPS * fmax(fabs(B[1]), fabs(B[2]))))
                         inside = 0;
                 }
@@ -150,8 +150,8 @@ static void huge_alpha(void)
     for (int form = 0; form < 3; form++)
         for (int shape = 1; shape <= 4; shape++)
             for (int k = 0; k < 3; k++) {
-                ts_options o;
-                ts_options_init(&o);
+                ts_spline_options o;
+                ts_spline_options_init(&o);
                 o.form = (ts_form)form;
                 o.shape = (ts_shape)shape;
                 o.lower = (ts_line){0, -1};
@@ -185,8 +185,8 @@ static void huge_alpha(void)
                    0x1.81f08e12a8291p+1, 0x1.db55abb43d223p-4, 0x1.ddd85dad06393p-1, 0,
                    0x1.1b6a6f6e42337p+2, 0x1.88f030d7ca60bp+1, 0x1.6b84baf122b91p-2, 0,
                    0x1.dd2d64cec7b4bp-2};
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = TS_FORM_C1;
     o.slopes = TS_SLOPES_MAKIMA;
     o.shape = TS_SHAPE_POSITIVE;
@@ -206,7 +206,7 @@ static void huge_alpha(void)
     ts_spline_free(s);
 }
 
-/* ts_certify: the n reports are reset before the checks */
+/* ts_spline_certify: the n reports are reset before the checks */
 static void certify_out_params(void)
 {
     double x[] = {0, 1, 2}, f[] = {1, 2, 1};
@@ -216,25 +216,25 @@ static void certify_out_params(void)
     memset(r, 0, sizeof r);
     ts_line bad = {TH_NAN, 0}, lo = {0, 0};
     ts_error e;
-    CHECK(ts_certify(s, &bad, NULL, r, &e) == TS_ERR_NONFINITE && e.status == TS_ERR_NONFINITE);
+    CHECK(ts_spline_certify(s, &bad, NULL, r, &e) == TS_ERR_NONFINITE && e.status == TS_ERR_NONFINITE);
     CHECK(isnan(r[0].a) && isnan(r[1].gap_lower) && r[1].certified == 0);
     memset(r, 0, sizeof r);
-    CHECK(ts_certify(s, NULL, NULL, r, &e) == TS_ERR_NULL && isnan(r[0].x0) && isnan(r[1].B[2]));
-    CHECK(ts_certify(s, &lo, NULL, r, &e) == TS_OK && r[0].certified && r[1].x1 == 2);
+    CHECK(ts_spline_certify(s, NULL, NULL, r, &e) == TS_ERR_NULL && isnan(r[0].x0) && isnan(r[1].B[2]));
+    CHECK(ts_spline_certify(s, &lo, NULL, r, &e) == TS_OK && r[0].certified && r[1].x1 == 2);
     ts_spline_free(s);
 }
 
-/* ts_certify must accept what the build certified: in the geometric form
+/* ts_spline_certify must accept what the build certified: in the geometric form
  * with certify = 0 the build's proof is the control-value test (S − L =
  * Σ A_l (Y_l − m X_l − c), all terms above their rounding), which holds
- * here while the exact gap is below ts_certify's guard (values ~1e260):
- * ts_certify said TS_ERR_VIOLATED for a spline that is provably above. */
+ * here while the exact gap is below ts_spline_certify's guard (values ~1e260):
+ * ts_spline_certify said TS_ERR_VIOLATED for a spline that is provably above. */
 static void certify_agrees_with_build(void)
 {
     double x[] = {-0x1.fb083b9fee18fp+1, -0x1.d714e223bb238p-1};
     double f[] = {0x1.e79da258dfa3fp+864, -0x1.3267668252006p-3};
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = TS_FORM_GEOMETRIC;
     o.shape = TS_SHAPE_ABOVE;
     o.alpha = 0x1.a7922c217b2eap-1;
@@ -244,11 +244,11 @@ static void certify_agrees_with_build(void)
     ts_spline *s = NULL;
     CHECK(ts_spline_new(x, f, 2, &o, &s, NULL) == TS_OK && ts_spline_certified(s));
     ts_interval_report r;
-    ts_status st = ts_certify(s, &o.lower, NULL, &r, NULL);
+    ts_status st = ts_spline_certify(s, &o.lower, NULL, &r, NULL);
     CHECKF(st == TS_OK && r.certified, "%s", ts_strerror(st));
     /* the same spline against a line above its right end is still refused */
     ts_line high = {0, 0};
-    CHECK(ts_certify(s, &high, NULL, &r, NULL) == TS_ERR_VIOLATED && !r.certified);
+    CHECK(ts_spline_certify(s, &high, NULL, &r, NULL) == TS_ERR_VIOLATED && !r.certified);
     ts_spline_free(s);
 }
 

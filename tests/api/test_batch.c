@@ -1,6 +1,6 @@
-/* ts_eval_batch / ts_eval_batch_mt against one-by-one ts_eval_deriv.
+/* ts_spline_eval_batch / ts_spline_eval_batch_mt against one-by-one ts_spline_eval_deriv.
  *
- * Expected values: ts_eval_deriv (whose values test_core.c checks against the
+ * Expected values: ts_spline_eval_deriv (whose values test_core.c checks against the
  * mpmath reference).  The batch may use the faster kernels of fast.c, bounded
  * there by ~4 ulp relative to max|B| of the interval; we compare with
  * tolerance 1e-13·max(1, max|f|, max|B|)·w^k for derivative k, w = π/(2 h_min)
@@ -69,17 +69,17 @@ static void compare(const fix *F, int deriv, const double *xq, size_t m, ts_curs
     int status_mismatch = 0;
     for (size_t j = 0; j < m; j++) {
         double o[3];
-        ts_status st = ts_eval_deriv(F->s, xq[j], NULL, &o[0], &o[1], &o[2]);
+        ts_status st = ts_spline_eval_deriv(F->s, xq[j], NULL, &o[0], &o[1], &o[2]);
         ref[j] = o[deriv];
         status_mismatch += (st == TS_OK) != (valid_query(F, xq[j]) != 0);
         if (st != TS_OK && first_bad == TS_NO_INDEX)
             first_bad = j;
         yq[j] = 12345.0; /* must be overwritten */
     }
-    CHECKF(status_mismatch == 0, "%s/%s: ts_eval_deriv status disagrees with the policy at %d queries", F->name,
+    CHECKF(status_mismatch == 0, "%s/%s: ts_spline_eval_deriv status disagrees with the policy at %d queries", F->name,
            what, status_mismatch);
     ts_error err;
-    ts_status st = ts_eval_batch(F->s, deriv, xq, m, yq, cur, &err);
+    ts_status st = ts_spline_eval_batch(F->s, deriv, xq, m, yq, cur, &err);
     int bad = 0;
     size_t where = 0;
     for (size_t j = 0; j < m; j++) {
@@ -111,7 +111,7 @@ static void compare(const fix *F, int deriv, const double *xq, size_t m, ts_curs
         for (size_t j = 0; j < m; j++)
             ym[j] = 12345.0;
         ts_error em;
-        ts_status sm = ts_eval_batch_mt(F->s, deriv, xq, m, ym, threads[t], &em);
+        ts_status sm = ts_spline_eval_batch_mt(F->s, deriv, xq, m, ym, threads[t], &em);
         int diff = 0;
         for (size_t j = 0; j < m; j++) {
             int ok = isnan(ref[j]) ? isnan(ym[j]) : fabs(ym[j] - ref[j]) <= tol_for(F, deriv, xq[j]);
@@ -217,8 +217,8 @@ static void position_independence(const double *x, const double *f, size_t np)
     const char *names[3] = {"position/paper", "position/c1", "position/geometric"};
     for (int k = 0; k < 3; k++) {
         TH_CASE(names[k]);
-        ts_options o;
-        ts_options_init(&o);
+        ts_spline_options o;
+        ts_spline_options_init(&o);
         o.form = forms[k];
         ts_spline *s = NULL;
         CHECK(ts_spline_new(x, f, np, &o, &s, NULL) == TS_OK);
@@ -227,12 +227,12 @@ static void position_independence(const double *x, const double *f, size_t np)
         for (int j = 0; j < M; j++)
             xq[j] = x[0] + (x[np - 1] - x[0]) * j / (M - 1.0);
         for (int deriv = 0; deriv < 3; deriv++) {
-            CHECK(ts_eval_batch(s, deriv, xq, M, y1, NULL, NULL) == TS_OK);
+            CHECK(ts_spline_eval_batch(s, deriv, xq, M, y1, NULL, NULL) == TS_OK);
             size_t bad = 0;
             for (size_t len = 1; len <= 7; len++) {
                 for (size_t j0 = 0; j0 < M; j0 += len) {
                     size_t nb = M - j0 < len ? M - j0 : len;
-                    CHECK(ts_eval_batch(s, deriv, xq + j0, nb, yc + j0, NULL, NULL) == TS_OK);
+                    CHECK(ts_spline_eval_batch(s, deriv, xq + j0, nb, yc + j0, NULL, NULL) == TS_OK);
                 }
                 for (int j = 0; j < M; j++)
                     bad += memcmp(&yc[j], &y1[j], sizeof(double)) != 0;
@@ -263,8 +263,8 @@ int main(void)
                                {"c1/error", "c1/clamp", "c1/extend", "c1/linear"}};
     for (int form = 0; form < 2; form++) {
         for (int e = 0; e < 4; e++) {
-            ts_options o;
-            ts_options_init(&o);
+            ts_spline_options o;
+            ts_spline_options_init(&o);
             o.form = form ? TS_FORM_C1 : TS_FORM_PAPER;
             o.alphas = al, o.n_alphas = NP - 1;
             o.betas = be, o.n_betas = NP - 1;
@@ -293,8 +293,8 @@ int main(void)
             run_sets(&F);
             /* m = 1 and a two-point spline */
             double one = 0.5 * (x[0] + x[1]), y1, yr;
-            CHECK(ts_eval_batch(F.s, 0, &one, 1, &y1, NULL, NULL) == TS_OK);
-            CHECK(ts_eval(F.s, one, NULL, &yr) == TS_OK && fabs(y1 - yr) <= tol_for(&F, 0, one));
+            CHECK(ts_spline_eval_batch(F.s, 0, &one, 1, &y1, NULL, NULL) == TS_OK);
+            CHECK(ts_spline_eval(F.s, one, NULL, &yr) == TS_OK && fabs(y1 - yr) <= tol_for(&F, 0, one));
             ts_spline_free(F.s);
         }
     }
@@ -302,8 +302,8 @@ int main(void)
     TH_CASE("two points");
     {
         double x2[2] = {1.0, 2.5}, f2[2] = {-1.0, 3.0};
-        ts_options o;
-        ts_options_init(&o);
+        ts_spline_options o;
+        ts_spline_options_init(&o);
         o.extrapolate = TS_EXTRAP_EXTEND;
         fix F;
         memset(&F, 0, sizeof F);

@@ -76,7 +76,7 @@ static double h_of(const tcase *tc, size_t i) { return tc->x[i + 1] - tc->x[i]; 
 
 static ts_spline *build(const tcase *tc, ts_extrap ex)
 {
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.form = tc->form ? TS_FORM_C1 : TS_FORM_PAPER;
     if (tc->slopes == 6) {
@@ -130,7 +130,7 @@ static double slope_end(const tcase *tc, const double *d, size_t i)
 static double deriv_at(const ts_spline *sp, double x)
 {
     double y, dy, d2;
-    ts_status st = ts_eval_deriv(sp, x, NULL, &y, &dy, &d2);
+    ts_status st = ts_spline_eval_deriv(sp, x, NULL, &y, &dy, &d2);
     CHECK(st == TS_OK);
     return dy;
 }
@@ -216,7 +216,7 @@ static void case_begin(tcase *tc)
      * up to rounding: 4ε·M) */
     for (size_t j = 0; j <= n; j++) {
         double y = TH_NAN;
-        CHECK(ts_eval(sp, tc->x[j], NULL, &y) == TS_OK);
+        CHECK(ts_spline_eval(sp, tc->x[j], NULL, &y) == TS_OK);
         CHECKF(fabs(y - tc->f[j]) <= 4 * EPS * tc->scale, "%s: S(x_%zu) = %.17g, f = %.17g", tc->name, j, y,
                tc->f[j]);
     }
@@ -226,7 +226,7 @@ static void case_begin(tcase *tc)
      * makes the right end slope -d_{i+1}/a_i. */
     for (size_t i = 0; i < n; i++) {
         double h = h_of(tc, i), w = PI / (2 * h);
-        /* right-hand derivative at x_i: ts_eval_deriv uses interval i there.
+        /* right-hand derivative at x_i: ts_spline_eval_deriv uses interval i there.
          * S'(x_i+) = w·3(B1 - B0): rounding 6ε·M·w, expected value 4ε. */
         double want = slope_start(tc, D, i);
         double got = deriv_at(sp, tc->x[i]);
@@ -302,15 +302,15 @@ static void check_pt(tcase *tc, const double *v)
     double x = v[0], y, dy, d2y;
     size_t i = interval_of(tc, x);
     double w = PI / (2 * h_of(tc, i)), M = tc->scale;
-    ts_status st = ts_eval_deriv(tc->sp, x, NULL, &y, &dy, &d2y);
+    ts_status st = ts_spline_eval_deriv(tc->sp, x, NULL, &y, &dy, &d2y);
     CHECK(st == TS_OK);
     CHECKF(fabs(y - v[1]) <= 1e-13 * M, "%s: S(%.17g) = %.17g, ref %.17g", tc->name, x, y, v[1]);
     CHECKF(fabs(dy - v[2]) <= 2e-13 * w * M, "%s: S'(%.17g) = %.17g, ref %.17g", tc->name, x, dy, v[2]);
     CHECKF(fabs(d2y - v[3]) <= 1e-12 * w * w * M, "%s: S''(%.17g) = %.17g, ref %.17g", tc->name, x, d2y, v[3]);
-    /* ts_eval gives the same value; a cursor gives the same values */
+    /* ts_spline_eval gives the same value; a cursor gives the same values */
     double y0 = TH_NAN;
     ts_cursor cur = {(size_t)tc->n_pt * 7919u % (tc->n + 3)}; /* arbitrary, possibly stale hint */
-    CHECK(ts_eval(tc->sp, x, &cur, &y0) == TS_OK && y0 == y);
+    CHECK(ts_spline_eval(tc->sp, x, &cur, &y0) == TS_OK && y0 == y);
     tc->n_pt++;
 }
 
@@ -322,7 +322,7 @@ static void check_ext(tcase *tc, const double *v)
     size_t i = x < tc->x[0] ? 0 : tc->n - 1;
     double h = h_of(tc, i), w = PI / (2 * h), M = tc->scale;
     double theta = (x - tc->x[i]) * w, g = 1 + fabs(theta);
-    ts_status st = ts_eval_deriv(tc->ext, x, NULL, &y, &dy, &d2y);
+    ts_status st = ts_spline_eval_deriv(tc->ext, x, NULL, &y, &dy, &d2y);
     CHECK(st == TS_OK);
     CHECKF(fabs(y - v[1]) <= 1e-12 * M * g, "%s: extended S(%.17g) = %.17g, ref %.17g", tc->name, x, y, v[1]);
     CHECKF(fabs(dy - v[2]) <= 1e-12 * w * M * g, "%s: extended S'(%.17g) = %.17g, ref %.17g", tc->name, x, dy,
@@ -331,7 +331,7 @@ static void check_ext(tcase *tc, const double *v)
            d2y, v[3]);
     /* the default policy refuses the same query with NaN outputs */
     y = dy = d2y = 0;
-    CHECK(ts_eval_deriv(tc->sp, x, NULL, &y, &dy, &d2y) == TS_ERR_DOMAIN && isnan(y) && isnan(dy) && isnan(d2y));
+    CHECK(ts_spline_eval_deriv(tc->sp, x, NULL, &y, &dy, &d2y) == TS_ERR_DOMAIN && isnan(y) && isnan(dy) && isnan(d2y));
     tc->n_ext++;
 }
 
@@ -341,12 +341,12 @@ static void check_int(tcase *tc, const double *v)
         return;
     double r = TH_NAN, r2 = TH_NAN;
     double tol = 1e-13 * tc->scale * (tc->x[tc->n] - tc->x[0]);
-    CHECK(ts_integral(tc->sp, v[0], v[1], &r) == TS_OK);
+    CHECK(ts_spline_integral(tc->sp, v[0], v[1], &r) == TS_OK);
     CHECKF(fabs(r - v[2]) <= tol, "%s: integral %.17g..%.17g = %.17g, ref %.17g", tc->name, v[0], v[1], r, v[2]);
-    CHECK(ts_integral(tc->sp, v[1], v[0], &r2) == TS_OK);
+    CHECK(ts_spline_integral(tc->sp, v[1], v[0], &r2) == TS_OK);
     CHECK_CLOSE(r2, -r, 1e-15 * tc->scale * (tc->x[tc->n] - tc->x[0]));
     /* every extrapolation policy integrates the same inside the data */
-    CHECK(ts_integral(tc->ext, v[0], v[1], &r2) == TS_OK && r2 == r);
+    CHECK(ts_spline_integral(tc->ext, v[0], v[1], &r2) == TS_OK && r2 == r);
     tc->n_int++;
 }
 
@@ -370,16 +370,16 @@ static void case_end(tcase *tc)
             if (k % 5 == 0)
                 u[1] = tc->x[(size_t)k % (n + 1)]; /* a knot in the middle */
             double ab = TH_NAN, bc = TH_NAN, ac = TH_NAN; /* NaN if a call fails */
-            CHECK(ts_integral(sp, u[0], u[1], &ab) == TS_OK && ts_integral(sp, u[1], u[2], &bc) == TS_OK &&
-                  ts_integral(sp, u[0], u[2], &ac) == TS_OK);
+            CHECK(ts_spline_integral(sp, u[0], u[1], &ab) == TS_OK && ts_spline_integral(sp, u[1], u[2], &bc) == TS_OK &&
+                  ts_spline_integral(sp, u[0], u[2], &ac) == TS_OK);
             CHECK_CLOSE(ab + bc, ac, 3e-13 * M * L);
         }
         /* the whole range equals the sum over intervals */
         double whole, sum = 0;
-        CHECK(ts_integral(sp, x0, xn, &whole) == TS_OK);
+        CHECK(ts_spline_integral(sp, x0, xn, &whole) == TS_OK);
         for (size_t i = 0; i < n; i++) {
             double p;
-            CHECK(ts_integral(sp, tc->x[i], tc->x[i + 1], &p) == TS_OK);
+            CHECK(ts_spline_integral(sp, tc->x[i], tc->x[i + 1], &p) == TS_OK);
             sum += p;
         }
         CHECK_CLOSE(whole, sum, 1e-13 * M * L);
@@ -393,9 +393,9 @@ static void case_end(tcase *tc)
             for (int k = 1; k <= 9; k++) {
                 double x = tc->x[i] + h * (0.001 + 0.998 * k / 10.0);
                 double y, dy, d2y, yp, yq, dp, dq, dd;
-                CHECK(ts_eval_deriv(sp, x, NULL, &y, &dy, &d2y) == TS_OK);
-                CHECK(ts_eval_deriv(sp, x + del, NULL, &yp, &dp, &dd) == TS_OK);
-                CHECK(ts_eval_deriv(sp, x - del, NULL, &yq, &dq, &dd) == TS_OK);
+                CHECK(ts_spline_eval_deriv(sp, x, NULL, &y, &dy, &d2y) == TS_OK);
+                CHECK(ts_spline_eval_deriv(sp, x + del, NULL, &yp, &dp, &dd) == TS_OK);
+                CHECK(ts_spline_eval_deriv(sp, x - del, NULL, &yq, &dq, &dd) == TS_OK);
                 double e1 = x + del - x, e2 = x - (x - del); /* actual offsets */
                 double fd2 = (dp - dq) / (e1 + e2), fd1 = (yp - yq) / (e1 + e2);
                 double t2 = del * del / 6 * pow(w, 4) * 224 * M + 2e-13 * w * M / del;
@@ -419,10 +419,10 @@ static void case_end(tcase *tc)
                 int left = k < 3;
                 double fe = left ? tc->f[0] : tc->f[n], xe = left ? x0 : xn, se = left ? s0 : sn;
                 double w = PI / (2 * (left ? h0 : hn));
-                CHECK(ts_eval_deriv(cl, x, NULL, &y, &dy, &d2y) == TS_OK);
+                CHECK(ts_spline_eval_deriv(cl, x, NULL, &y, &dy, &d2y) == TS_OK);
                 CHECKF(y == fe && dy == 0 && d2y == 0, "%s: clamp at %.17g: %.17g %.17g %.17g", tc->name, x, y, dy,
                        d2y);
-                CHECK(ts_eval_deriv(li, x, NULL, &y, &dy, &d2y) == TS_OK);
+                CHECK(ts_spline_eval_deriv(li, x, NULL, &y, &dy, &d2y) == TS_OK);
                 /* tangent line: end value + one-sided end slope (docs/method.md §3 slope, to
                  * the rounding of S' at the end, 16ε·w·M) */
                 double ts = 16 * EPS * w * M + 4 * EPS * fabs(se);
@@ -434,7 +434,7 @@ static void case_end(tcase *tc)
                  * differs from f_end by <= 1e-9·h·|S'| + rounding */
                 if (k == 0 || k == 3) {
                     double ye;
-                    CHECK(ts_eval(tc->ext, x, NULL, &ye) == TS_OK);
+                    CHECK(ts_spline_eval(tc->ext, x, NULL, &ye) == TS_OK);
                     CHECKF(fabs(ye - fe) <= 1e-9 * (left ? h0 : hn) * (fabs(se) + 1e-9 * w * w * 67 * M) +
                                               1e-13 * M,
                            "%s: extension not continuous at the end", tc->name);
@@ -446,32 +446,32 @@ static void case_end(tcase *tc)
             /* inside the data every policy agrees exactly */
             for (int k = 0; k <= 20; k++) {
                 double x = x0 + L * k / 20.0, a = TH_NAN, b = TH_NAN, c = TH_NAN, d = TH_NAN;
-                CHECK(ts_eval(sp, x, NULL, &a) == TS_OK && ts_eval(cl, x, NULL, &b) == TS_OK &&
-                      ts_eval(li, x, NULL, &c) == TS_OK && ts_eval(tc->ext, x, NULL, &d) == TS_OK);
+                CHECK(ts_spline_eval(sp, x, NULL, &a) == TS_OK && ts_spline_eval(cl, x, NULL, &b) == TS_OK &&
+                      ts_spline_eval(li, x, NULL, &c) == TS_OK && ts_spline_eval(tc->ext, x, NULL, &d) == TS_OK);
                 CHECK(a == b && a == c && a == d);
             }
             /* integrals outside the data are refused under every policy */
             double r = 0;
-            CHECK(ts_integral(cl, x0 - h0, xn, &r) == TS_ERR_DOMAIN);
-            CHECK(ts_integral(li, x0, xn + hn, &r) == TS_ERR_DOMAIN);
+            CHECK(ts_spline_integral(cl, x0 - h0, xn, &r) == TS_ERR_DOMAIN);
+            CHECK(ts_spline_integral(li, x0, xn + hn, &r) == TS_ERR_DOMAIN);
             /* ±Inf (header): clamped under TS_EXTRAP_CLAMP, TS_ERR_DOMAIN under
              * every other policy, NaN outputs */
             double y, dy, d2y;
-            CHECKF(ts_eval_deriv(cl, TH_INF, NULL, &y, &dy, &d2y) == TS_OK && y == tc->f[n] && dy == 0 &&
+            CHECKF(ts_spline_eval_deriv(cl, TH_INF, NULL, &y, &dy, &d2y) == TS_OK && y == tc->f[n] && dy == 0 &&
                        d2y == 0,
                    "%s: clamp at +Inf", tc->name);
-            CHECKF(ts_eval(cl, -TH_INF, NULL, &y) == TS_OK && y == tc->f[0], "%s: clamp at -Inf", tc->name);
+            CHECKF(ts_spline_eval(cl, -TH_INF, NULL, &y) == TS_OK && y == tc->f[0], "%s: clamp at -Inf", tc->name);
             const ts_spline *others[3] = {sp, li, tc->ext};
             for (int k = 0; k < 3; k++)
                 for (int sg = -1; sg <= 1; sg += 2) {
                     y = dy = d2y = 0;
-                    CHECKF(ts_eval_deriv(others[k], sg < 0 ? -HUGE_VAL : HUGE_VAL, NULL, &y, &dy, &d2y) == TS_ERR_DOMAIN &&
+                    CHECKF(ts_spline_eval_deriv(others[k], sg < 0 ? -HUGE_VAL : HUGE_VAL, NULL, &y, &dy, &d2y) == TS_ERR_DOMAIN &&
                                isnan(y) && isnan(dy) && isnan(d2y),
                            "%s: policy %d at %g*Inf", tc->name, k, (double)sg);
                 }
-            CHECK(ts_eval(cl, TH_NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
-            CHECK(ts_eval(li, TH_NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
-            CHECK(ts_eval(tc->ext, TH_NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
+            CHECK(ts_spline_eval(cl, TH_NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
+            CHECK(ts_spline_eval(li, TH_NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
+            CHECK(ts_spline_eval(tc->ext, TH_NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
         }
         ts_spline_free(cl);
         ts_spline_free(li);
@@ -481,15 +481,15 @@ static void case_end(tcase *tc)
     tc->sp = tc->ext = NULL;
 }
 
-/* opt == NULL means all defaults: same spline as ts_options_init's, which are
+/* opt == NULL means all defaults: same spline as ts_spline_options_init's, which are
  * the geometric form, Steffen's slopes, alpha = TS_DEFAULT_ALPHA >= 8/(3π)
  * (docs/method.md §5.10), beta 0, extrapolation error. */
 static void test_defaults(void)
 {
     const double x[5] = {0, 1, 2.5, 3, 4.75}, f[5] = {1, -2, 0.5, 3, 2};
     ts_spline *a = NULL, *b = NULL;
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     CHECK(o.form == TS_FORM_GEOMETRIC && o.slopes == TS_SLOPES_STEFFEN &&
           o.alpha == TS_DEFAULT_ALPHA && o.beta == 0.0 &&
           o.shape == TS_SHAPE_NONE && o.extrapolate == TS_EXTRAP_ERROR && o.margin == TS_DEFAULT_MARGIN &&
@@ -501,8 +501,8 @@ static void test_defaults(void)
     if (a && b) {
         for (int k = 0; k <= 50; k++) {
             double t = 4.75 * k / 50.0, ya, yb, da, db, sa, sb;
-            CHECK(ts_eval_deriv(a, t, NULL, &ya, &da, &sa) == TS_OK);
-            CHECK(ts_eval_deriv(b, t, NULL, &yb, &db, &sb) == TS_OK);
+            CHECK(ts_spline_eval_deriv(a, t, NULL, &ya, &da, &sa) == TS_OK);
+            CHECK(ts_spline_eval_deriv(b, t, NULL, &yb, &db, &sb) == TS_OK);
             CHECK(ya == yb && da == db && sa == sb);
         }
         CHECK(ts_spline_alpha(a)[2] == TS_DEFAULT_ALPHA && ts_spline_beta(a)[2] == 0.0);
@@ -513,7 +513,7 @@ static void test_defaults(void)
         double q[5];
         for (int i = 0; i < 5; i++)
             q[i] = 2 * x[i] * x[i] - x[i];
-        ts_options ar = o;
+        ts_spline_options ar = o;
         ar.slopes = TS_SLOPES_ARITHMETIC;
         CHECK(ts_spline_new(x, q, 5, &ar, &a, NULL) == TS_OK);
         if (a)
@@ -521,7 +521,7 @@ static void test_defaults(void)
                 CHECK_CLOSE(ts_spline_slopes(a)[i], 4 * x[i] - 1, 1e-13 * 50);
         /* evaluation does not change the spline */
         double y;
-        CHECK(ts_eval(b, 1.7, NULL, &y) == TS_OK);
+        CHECK(ts_spline_eval(b, 1.7, NULL, &y) == TS_OK);
         CHECK(ts_spline_x(b)[1] == 1.0 && ts_spline_f(b)[1] == -2.0);
     }
     ts_spline_free(a);
@@ -533,7 +533,7 @@ static void test_defaults(void)
 static void test_constant(void)
 {
     double x[4] = {-1, 0.5, 0.75, 4}, f[4] = {2.5, 2.5, 2.5, 2.5}, al[3] = {0.1, 3, 1}, be[3] = {0, 0.5, 7};
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.alphas = al, o.n_alphas = 3, o.betas = be, o.n_betas = 3;
     for (int form = 0; form < 2; form++) {
@@ -544,13 +544,13 @@ static void test_constant(void)
             continue;
         for (int k = 0; k <= 100; k++) {
             double t = -1 + 5 * k / 100.0, y, dy, d2y;
-            CHECK(ts_eval_deriv(s, t, NULL, &y, &dy, &d2y) == TS_OK);
+            CHECK(ts_spline_eval_deriv(s, t, NULL, &y, &dy, &d2y) == TS_OK);
             CHECK_CLOSE(y, 2.5, 4 * EPS * 2.5);
             CHECK_CLOSE(dy, 0, 64 * EPS * 2.5 * PI / 2 / 0.25);
             CHECK_CLOSE(d2y, 0, 256 * EPS * 2.5 * pow(PI / 2 / 0.25, 2));
         }
         double r;
-        CHECK(ts_integral(s, -1, 4, &r) == TS_OK);
+        CHECK(ts_spline_integral(s, -1, 4, &r) == TS_OK);
         CHECK_CLOSE(r, 12.5, 1e-14 * 12.5);
         ts_spline_free(s);
     }

@@ -1,5 +1,5 @@
 /* Steffen's slopes (docs/method.md §6) against hand-computed values, and the
- * promise of the defaults (docs/method.md §5.10): with ts_options_init's
+ * promise of the defaults (docs/method.md §5.10): with ts_spline_options_init's
  * options every interval's control values are monotone and between its two
  * data values, and the curve stays inside each interval's data range.
  * Expected values: hand arithmetic below (exact in binary) and the theorem's
@@ -104,8 +104,8 @@ static void test_promise(void)
             else /* anything */
                 f[i] = th_chance(0.1) ? f[i - 1] : f[i - 1] + (th_chance(0.5) ? step : -step);
         }
-        ts_options o;
-        ts_options_init(&o);
+        ts_spline_options o;
+        ts_spline_options_init(&o);
         ts_spline *s = NULL;
         ts_status st = ts_spline_new(x, f, np, &o, &s, NULL);
         CHECK(st == TS_OK);
@@ -138,7 +138,7 @@ static void test_promise(void)
                 double t = x[i] + (x[i + 1] - x[i]) * k / PER, y;
                 if (!(t > x[i] && t < x[i + 1]))
                     continue;
-                CHECK(ts_eval(s, t, NULL, &y) == TS_OK);
+                CHECK(ts_spline_eval(s, t, NULL, &y) == TS_OK);
                 samples++;
                 if (!(lo - tol <= y && y <= hi + tol))
                     out++;
@@ -172,8 +172,8 @@ static void test_promise_positive(void)
             x[i] = x[i - 1] + th_range(0.05, 2.0);
             f[i] = th_chance(0.3) ? th_logu(1e-6, 1e-2) : th_logu(1e-3, 10);
         }
-        ts_options o;
-        ts_options_init(&o);
+        ts_spline_options o;
+        ts_spline_options_init(&o);
         o.shape = TS_SHAPE_POSITIVE;
         ts_spline *s = NULL;
         CHECK(ts_spline_new(x, f, np, &o, &s, NULL) == TS_OK);

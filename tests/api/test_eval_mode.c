@@ -1,5 +1,5 @@
 /* Derivatives of every order and the extrapolation per call
- * (ts_spline_eval_mode, ts_spline_eval_batch_mode(_mt), ts_eval_batch with
+ * (ts_spline_eval_mode, ts_spline_eval_batch_mode(_mt), ts_spline_eval_batch with
  * deriv > 2).  The reference derivatives are re-derived here, not from the
  * library's phase-shift formula: the factored basis of docs/method.md §2,
  * A0 = (1 − s)³, A1 = s(1 − s)(3 − s), A2 = c(1 − c)(3 − c), A3 = (1 − c)³,
@@ -65,8 +65,8 @@ static long double deriv_ref(const double B[4], double xi, double h, double x, i
 
 static ts_spline *fit(const double *x, const double *f, size_t n, ts_form form, ts_extrap ex)
 {
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = form;
     o.extrapolate = ex;
     ts_spline *s = NULL;
@@ -120,9 +120,9 @@ static void orders(void)
                 CHECK(ts_spline_eval_mode(s, xq[j], nu, TS_EXTRAP_EXTEND, &cur, &y1) == TS_OK &&
                       same(y1, yq[j]));
             }
-            /* ts_eval_batch with the stored mode: the same values */
+            /* ts_spline_eval_batch with the stored mode: the same values */
             double yb[400];
-            CHECK(ts_eval_batch(s, nu, xq, 400, yb, NULL, NULL) == TS_OK);
+            CHECK(ts_spline_eval_batch(s, nu, xq, 400, yb, NULL, NULL) == TS_OK);
             int eq = 1;
             for (int j = 0; j < 400; j++)
                 eq &= same(yb[j], yq[j]);
@@ -139,7 +139,7 @@ static void orders(void)
             double B[4], y, dy, d2y;
             (void)ts_spline_find_interval(s, xq[j], NULL, &i);
             (void)ts_spline_control(s, i, B, NULL);
-            (void)ts_eval_deriv(s, xq[j], NULL, &y, &dy, &d2y);
+            (void)ts_spline_eval_deriv(s, xq[j], NULL, &y, &dy, &d2y);
             double h = X[i + 1] - X[i];
             CHECK(fabsl(deriv_ref(B, X[i], h, xq[j], 1) - (long double)dy) <=
                   (long double)(1e-13 * 92 * pow(TH_HALF_PI / h, 1)));
@@ -160,8 +160,8 @@ static void modes(void)
         if (!base)
             continue;
         double e0[3], e1[3];
-        (void)ts_eval_deriv(base, X[0], NULL, &e0[0], &e0[1], &e0[2]);
-        (void)ts_eval_deriv(base, X[7], NULL, &e1[0], &e1[1], &e1[2]);
+        (void)ts_spline_eval_deriv(base, X[0], NULL, &e0[0], &e0[1], &e0[2]);
+        (void)ts_spline_eval_deriv(base, X[7], NULL, &e1[0], &e1[1], &e1[2]);
         for (int k = 0; k < 4; k++) {
             /* finite queries: the bits of a spline built with that mode */
             ts_spline *s = fit(X, F, 8, (ts_form)form, all[k]);
@@ -172,7 +172,7 @@ static void modes(void)
                 double a[9], b[9];
                 ts_error ea, eb;
                 ts_status sa = ts_spline_eval_batch_mode(base, nu, all[k], xq, 7, a, NULL, &ea);
-                ts_status sb = ts_eval_batch(s, nu, xq, 7, b, NULL, &eb);
+                ts_status sb = ts_spline_eval_batch(s, nu, xq, 7, b, NULL, &eb);
                 int eq = sa == sb && ea.index == eb.index;
                 for (int j = 0; j < 7; j++) {
                     double y = 0;
@@ -181,9 +181,9 @@ static void modes(void)
                      * kernels agree with the scalar path only to rounding) */
                     eq &= same(a[j], b[j]) && (nu <= 2 || same(y, a[j]));
                     eq &= (st == TS_OK) == !isnan(a[j]);
-                    if (nu <= 2) { /* and the scalar path of ts_eval_deriv */
+                    if (nu <= 2) { /* and the scalar path of ts_spline_eval_deriv */
                         double o[3];
-                        (void)ts_eval_deriv(s, xq[j], NULL, &o[0], &o[1], &o[2]);
+                        (void)ts_spline_eval_deriv(s, xq[j], NULL, &o[0], &o[1], &o[2]);
                         eq &= same(y, o[nu]);
                     }
                 }
@@ -272,8 +272,8 @@ static void errors(void)
     CHECK(ts_spline_eval_batch_mode(p, -1, TS_EXTRAP_ERROR, xq, 3, yq, NULL, &err) ==
           TS_ERR_OPTION);
     CHECK(ts_spline_eval_batch_mode(p, 0, (ts_extrap)7, xq, 3, yq, NULL, &err) == TS_ERR_OPTION);
-    CHECK(ts_eval_batch(g, 3, xq, 3, yq, NULL, &err) == TS_ERR_OPTION && isnan(yq[1]));
-    CHECK(ts_eval_batch_mt(g, 4, xq, 3, yq, 2, &err) == TS_ERR_OPTION);
+    CHECK(ts_spline_eval_batch(g, 3, xq, 3, yq, NULL, &err) == TS_ERR_OPTION && isnan(yq[1]));
+    CHECK(ts_spline_eval_batch_mt(g, 4, xq, 3, yq, 2, &err) == TS_ERR_OPTION);
     CHECK(ts_spline_eval_batch_mode_mt(NULL, 0, TS_EXTRAP_ERROR, xq, 3, yq, 2, &err) ==
           TS_ERR_NULL);
     CHECK(ts_spline_eval_batch_mode_mt(p, 0, (ts_extrap)7, xq, 3, yq, 2, &err) == TS_ERR_OPTION);

@@ -33,8 +33,8 @@ int main(void)
                     if (sl == TS_SLOPES_USER || (sl == TS_SLOPES_PERIODIC && k != 0) ||
                         (shape == TS_SHAPE_MONOTONE && k != 2))
                         continue;
-                    ts_options o;
-                    ts_options_init(&o);
+                    ts_spline_options o;
+                    ts_spline_options_init(&o);
                     o.form = (ts_form)form;
                     o.shape = (ts_shape)shape;
                     o.slopes = (ts_slopes)sl;
@@ -55,10 +55,10 @@ int main(void)
                     for (int j = 0; j <= 60; j++)
                         xs[j] = 0.5 * j;
                     for (int j = 0; j <= 60; j++)
-                        (void)ts_eval_deriv(s, xs[j], NULL, &y, &dy, &d2y);
+                        (void)ts_spline_eval_deriv(s, xs[j], NULL, &y, &dy, &d2y);
                     for (int der = 0; der <= 2; der++)
-                        (void)ts_eval_batch(s, der, xs, 61, ys, NULL, NULL);
-                    (void)ts_integral(s, 0.5, 29.5, &I);
+                        (void)ts_spline_eval_batch(s, der, xs, 61, ys, NULL, NULL);
+                    (void)ts_spline_integral(s, 0.5, 29.5, &I);
                     /* every order, every mode, ±Inf, beyond the data; solve */
                     double xo[67];
                     for (int j = 0; j < 61; j++)
@@ -84,7 +84,7 @@ int main(void)
                     }
                     if (shape != TS_SHAPE_NONE && shape != TS_SHAPE_MONOTONE) {
                         ts_interval_report rs[8];
-                        (void)ts_certify(s, &o.lower, NULL, rs, NULL);
+                        (void)ts_spline_certify(s, &o.lower, NULL, rs, NULL);
                     }
                     CHECKF(flags() == 0, "evaluation: data %d form %d shape %d slopes %d", k, form,
                            shape, sl);
@@ -104,8 +104,8 @@ int main(void)
         static const double xg[3] = {0, 1, 3}, fg[3] = {1, 2, 2.5};
         static const double avals[8] = {1e50, 1e100, 1e103, 1e105, 1e110, 1e150, 1e153, 1e300};
         for (int ka = 0; ka < 8; ka++) {
-            ts_options o;
-            ts_options_init(&o);
+            ts_spline_options o;
+            ts_spline_options_init(&o);
             o.form = TS_FORM_GEOMETRIC;
             o.alpha = avals[ka];
             feclearexcept(FE_ALL_EXCEPT);
@@ -116,11 +116,11 @@ int main(void)
             const double *d = ts_spline_slopes(s);
             double y[3], dy[3], d2[3], yb[3];
             for (int j = 0; j < 3; j++)
-                (void)ts_eval_deriv(s, xg[j], NULL, &y[j], &dy[j], &d2[j]);
+                (void)ts_spline_eval_deriv(s, xg[j], NULL, &y[j], &dy[j], &d2[j]);
             for (int der = 0; der <= 2; der++)
-                (void)ts_eval_batch(s, der, xg, 3, yb, NULL, NULL);
+                (void)ts_spline_eval_batch(s, der, xg, 3, yb, NULL, NULL);
             for (int j = 0; j < 3; j++)
-                (void)ts_eval(s, xg[j], NULL, &y[j]);
+                (void)ts_spline_eval(s, xg[j], NULL, &y[j]);
             CHECKF(flags() == 0, "a = %g: evaluation at the knots raised a flag", avals[ka]);
             /* x = 0 is interval 0 seen from its left end */
             double kappa = 2.0 / (3.0 * 3.14159265358979323846 * avals[ka]);
@@ -144,7 +144,7 @@ int main(void)
             d = ts_spline_slopes(s);
             feclearexcept(FE_ALL_EXCEPT);
             double ye;
-            (void)ts_eval(s, 3.5, NULL, &ye);
+            (void)ts_spline_eval(s, 3.5, NULL, &ye);
             CHECKF(flags() == 0, "a = %g: extension raised a flag", avals[ka]);
             double s2 = ((2.0 / 9.0) * ((fg[1] - fg[2]) + 2.0 * d[2]) / kappa / kappa +
                          (2.0 / 9.0) * 2.0 * (d[1] - d[2]) / kappa) / 4.0;

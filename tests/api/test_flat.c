@@ -1,6 +1,6 @@
 /* Flat runs are constant in floating point (docs/method.md §5.5): where
  * f_i = f_{i+1} and all four control values are equal, every evaluation
- * (ts_eval, ts_eval_batch at sorted and unsorted queries, every form)
+ * (ts_spline_eval, ts_spline_eval_batch at sorted and unsorted queries, every form)
  * returns f_i exactly, and its derivatives are exactly 0.  Before, Σ A_l f
  * wobbled by ±2 ulp and sampled monotone data with flat runs were not
  * monotone.  Also: the monotone scheme's samples of such data are monotone
@@ -21,8 +21,8 @@ int main(void)
     static const double f[NP] = {0.1, 0.1, 0.3, 0.3, 0.3, 1.7, 2.9, 2.9, 3.3, 3.3, 3.3, 7.1};
     for (int form = TS_FORM_PAPER; form <= TS_FORM_GEOMETRIC; form++) {
         TH_CASE(form == 0 ? "paper" : form == 1 ? "c1" : "geometric");
-        ts_options o;
-        ts_options_init(&o);
+        ts_spline_options o;
+        ts_spline_options_init(&o);
         o.form = (ts_form)form;
         o.shape = TS_SHAPE_MONOTONE;
         o.alpha = 0.3;
@@ -35,12 +35,12 @@ int main(void)
         for (size_t i = 0; i + 1 < NP; i++)
             for (int j = 0; j < M; j++)
                 xs[m++] = x[i] + (x[i + 1] - x[i]) * j / M;
-        CHECK(ts_eval_batch(s, 0, xs, m, ys, NULL, NULL) == TS_OK);
+        CHECK(ts_spline_eval_batch(s, 0, xs, m, ys, NULL, NULL) == TS_OK);
         long wrong = 0, nonmono = 0;
         for (size_t q = 0; q < m; q++) {
             size_t i = q / M;
             double y, dy, d2y;
-            CHECK(ts_eval_deriv(s, xs[q], NULL, &y, &dy, &d2y) == TS_OK);
+            CHECK(ts_spline_eval_deriv(s, xs[q], NULL, &y, &dy, &d2y) == TS_OK);
             y0[q] = y;
             if (f[i] == f[i + 1])
                 wrong += !(y == f[i] && ys[q] == f[i] && dy == 0.0 && d2y == 0.0);
@@ -58,11 +58,11 @@ int main(void)
             xs[q] = xs[r];
             xs[r] = t;
         }
-        CHECK(ts_eval_batch(s, 0, xs, m, ys, NULL, NULL) == TS_OK);
+        CHECK(ts_spline_eval_batch(s, 0, xs, m, ys, NULL, NULL) == TS_OK);
         long diff = 0;
         for (size_t q = 0; q < m; q++) {
             double y;
-            (void)ts_eval(s, xs[q], NULL, &y);
+            (void)ts_spline_eval(s, xs[q], NULL, &y);
             size_t i = 0;
             while (i + 2 < NP && xs[q] >= x[i + 1])
                 i++;

@@ -21,8 +21,8 @@
 static ts_spline *geo_new(const double *x, const double *f, const double *d, size_t np,
                           const double *al, const double *be, ts_extrap ex)
 {
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = TS_FORM_GEOMETRIC;
     o.slopes = TS_SLOPES_USER;
     o.user_slopes = d;
@@ -102,7 +102,7 @@ static void test_reference(void)
             double h = x[i + 1] - x[i];
             if (ke == 6)
                 h = X < x[0] ? x[1] - x[0] : x[np - 1] - x[np - 2];
-            ts_status st = ts_eval_deriv(s, X, NULL, &y, &dy, &d2y);
+            ts_status st = ts_spline_eval_deriv(s, X, NULL, &y, &dy, &d2y);
             CHECK(st == TS_OK);
             /* Tolerances (C = 64 ulps): the rounding of Y is ε S.  θ(x) is found
              * to a relative 2ε, i.e. x is matched to ~ε h (the rounding of X̂
@@ -130,7 +130,7 @@ static void test_reference(void)
         }
         if (parse_row(line, "int", v, 8) == 3) {
             double r;
-            CHECK(ts_integral(s, v[0], v[1], &r) == TS_OK);
+            CHECK(ts_spline_integral(s, v[0], v[1], &r) == TS_OK);
             /* rounding of sums of h-weighted values: 64 ε S (|b − a| + h) */
             CHECK_CLOSE(r, v[2], 64 * EPS * S * (fabs(v[1] - v[0]) + hmax));
             nint++;
@@ -173,7 +173,7 @@ static void test_lines(void)
         for (size_t i = 0; i + 1 < np; i++)
             for (int j = 0; j <= 50; j++) {
                 double xx = x[i] + (x[i + 1] - x[i]) * j / 50.0, y, dy;
-                ts_eval_deriv(s, xx, NULL, &y, &dy, NULL);
+                ts_spline_eval_deriv(s, xx, NULL, &y, &dy, NULL);
                 worst = fmax(worst, fabs(y - (m * xx + c)));
                 if (al[i] > 0.4)
                     worst_d = fmax(worst_d, fabs(dy - m));
@@ -205,7 +205,7 @@ static void test_knot_slopes(void)
             continue;
         for (size_t i = 0; i < np; i++) {
             double y, dy, yl, dyl, d2l, h = i ? x[i] - x[i - 1] : x[1] - x[0];
-            ts_eval_deriv(s, x[i], NULL, &y, &dy, NULL);
+            ts_spline_eval_deriv(s, x[i], NULL, &y, &dy, NULL);
             CHECK(y == f[i]); /* θ = 0 or π/2 exactly: Y = B0 or B3 */
             /* right-hand interval at x_i (the last knot: the left one): y' = Y'/X'
              * with Y'(0) = 3 k d_i, X'(0) = 3 k: two roundings of k */
@@ -213,7 +213,7 @@ static void test_knot_slopes(void)
             if (i > 0 && i + 1 < np) {
                 /* from the left, one ulp before the knot: y' moves by y''·ulp */
                 double xl = nextafter(x[i], -TH_INF);
-                ts_eval_deriv(s, xl, NULL, &yl, &dyl, &d2l);
+                ts_spline_eval_deriv(s, xl, NULL, &yl, &dyl, &d2l);
                 CHECK_CLOSE(dyl, d[i], 8 * EPS * (fabs(d[i]) + 10 / h) + 2 * fabs(d2l) * (x[i] - xl));
             }
         }
@@ -254,7 +254,7 @@ static void test_roundtrip(void)
                         xx = X[3];
                     if (xx < x[i] || xx > x[i + 1])
                         continue;
-                    ts_eval_deriv(s, xx, NULL, &y, &dy, NULL);
+                    ts_spline_eval_deriv(s, xx, NULL, &y, &dy, NULL);
                     /* xx itself carries ~8 ulps of |x| (the sum above), and y
                      * follows x with slope dy: 64 ε S + 16 ε |x| |dy| */
                     double tol = 64 * EPS * S + 16 * EPS * (fabs(xx) + hi) * fabs(dy);
@@ -273,8 +273,8 @@ static void test_bound(void)
 {
     double x[4] = {0, 1, 2, 3}, f[4] = {1, 2, 0, 1}, d[4] = {0, 1, 0, 1};
     double al[3] = {1, 1, 1}, be[3] = {0, 0, 0};
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = TS_FORM_GEOMETRIC;
     o.slopes = TS_SLOPES_USER;
     o.user_slopes = d;
@@ -328,7 +328,7 @@ static void test_steep(void)
     int mono = 1;
     for (int j = 0; j <= 20000; j++) {
         double xx = j / 20000.0;
-        ts_eval_deriv(s, xx, NULL, &y, &dy, NULL);
+        ts_spline_eval_deriv(s, xx, NULL, &y, &dy, NULL);
         if (y < prev)
             mono = 0;
         prev = y;
@@ -340,7 +340,7 @@ static void test_steep(void)
      * X̂' = 1 + κ g = 1 − astar/a, so S' = (1 − 0.5 astar/a)/(1 − astar/a) ≈ 8e3 */
     double astar = (16 - 9 * sqrt(2.0)) / (3 * TS_PI_T), r = astar / TS_GEOMETRIC_A_MIN;
     double expect = (1.0 - 0.5 * r) / (1.0 - r);
-    ts_eval_deriv(s, 0.5, NULL, &y, &dy, NULL);
+    ts_spline_eval_deriv(s, 0.5, NULL, &y, &dy, NULL);
     CHECK(mono);
     CHECK_CLOSE(y, 0.5, 4 * EPS);
     CHECK_CLOSE(dy, expect, 1e-9 * expect); /* a* in double: relative 1e-16/6e-5 */
@@ -362,11 +362,11 @@ static void test_batch_integral(void)
     xq[401] = -0.5, xq[402] = 4.5; /* outside: linear extrapolation */
     for (int der = 0; der <= 2; der++) {
         ts_error e;
-        CHECK(ts_eval_batch(s, der, xq, 403, yq, NULL, &e) == TS_OK);
+        CHECK(ts_spline_eval_batch(s, der, xq, 403, yq, NULL, &e) == TS_OK);
         int bad = 0;
         for (int j = 0; j < 403; j++) {
             double o[3];
-            ts_eval_deriv(s, xq[j], NULL, &o[0], &o[1], &o[2]);
+            ts_spline_eval_deriv(s, xq[j], NULL, &o[0], &o[1], &o[2]);
             /* kernels.c and geometric.c solve X̂(φ) = u each to rounding:
              * 1e-9 relative to the derivative scale, divided by the
              * condition of S^(k) in φ, 1/X̂'^k with X̂' >= 1 − (8 − 9/√2)κ
@@ -383,21 +383,21 @@ static void test_batch_integral(void)
     }
     /* LINEAR extrapolation uses the exact end slope d */
     double y;
-    ts_eval(s, -0.5, NULL, &y);
+    ts_spline_eval(s, -0.5, NULL, &y);
     CHECK_CLOSE(y, 1 - 0.5 * 1, 8 * EPS);
-    ts_eval(s, 4.5, NULL, &y);
+    ts_spline_eval(s, 4.5, NULL, &y);
     CHECK_CLOSE(y, 1 + 0.5 * 1, 8 * EPS);
     /* additivity and the fundamental theorem: (I(x+η) − I(x−η))/2η ≈ S(x) */
     double I1, I2, I3;
-    CHECK(ts_integral(s, 0.2, 3.9, &I1) == TS_OK);
-    CHECK(ts_integral(s, 0.2, 1.0, &I2) == TS_OK);
-    CHECK(ts_integral(s, 1.0, 3.9, &I3) == TS_OK);
+    CHECK(ts_spline_integral(s, 0.2, 3.9, &I1) == TS_OK);
+    CHECK(ts_spline_integral(s, 0.2, 1.0, &I2) == TS_OK);
+    CHECK(ts_spline_integral(s, 1.0, 3.9, &I3) == TS_OK);
     CHECK_CLOSE(I1, I2 + I3, 64 * EPS * 4 * 3);
     for (int j = 1; j < 40; j++) {
         double xx = 4.0 * j / 40.0, eta = 1e-4, Ia, Ib, y0, dy, d2y;
-        ts_integral(s, 0, xx - eta, &Ia);
-        ts_integral(s, 0, xx + eta, &Ib);
-        ts_eval_deriv(s, xx, NULL, &y0, &dy, &d2y);
+        ts_spline_integral(s, 0, xx - eta, &Ia);
+        ts_spline_integral(s, 0, xx + eta, &Ib);
+        ts_spline_eval_deriv(s, xx, NULL, &y0, &dy, &d2y);
         /* central difference: error eta² |S''|/6 (+ the kink-free form is C¹) */
         double tol = eta * eta * fabs(d2y) + 1e-9;
         if (xx == 0.5 || xx == 1.7 || xx == 2.0 || xx == 3.5)
@@ -414,7 +414,7 @@ static double sample_min_gap(const ts_spline *s, size_t i, const ts_line *L, int
     double best = TH_INF;
     for (int j = 0; j <= m; j++) {
         double xx = x[i] + (x[i + 1] - x[i]) * j / (double)m, y;
-        ts_eval(s, xx, NULL, &y);
+        ts_spline_eval(s, xx, NULL, &y);
         double g = sign > 0 ? y - (L->m * xx + L->c) : (L->m * xx + L->c) - y;
         best = fmin(best, g);
     }
@@ -427,8 +427,8 @@ static void test_shapes(void)
     double x1[] = {0, 2, 3, 5, 6, 8, 9, 11, 12, 14, 15};
     double f1[] = {20, 1.58, 1.5, 1.2, 0.5, 0.05, 0.2, 1.3, 1.6, 2, 25};
     size_t n1 = sizeof x1 / sizeof *x1;
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = TS_FORM_GEOMETRIC;
     o.shape = TS_SHAPE_POSITIVE;
     o.alpha = 0.01;
@@ -463,7 +463,7 @@ static void test_shapes(void)
         double prev = -TH_INF, y;
         int mono = 1;
         for (int j = 0; j <= 7000; j++) {
-            ts_eval(s, 7.0 * j / 7000, NULL, &y);
+            ts_spline_eval(s, 7.0 * j / 7000, NULL, &y);
             if (y < prev - 1e-14)
                 mono = 0;
             prev = y;
@@ -490,7 +490,7 @@ static void test_shapes(void)
     }
 }
 
-/* ts_certify on user betas: the reported minima agree with dense sampling
+/* ts_spline_certify on user betas: the reported minima agree with dense sampling
  * (the exact minimum is <= every sample and within the sampling error). */
 static void test_certify(void)
 {
@@ -502,7 +502,7 @@ static void test_certify(void)
     ts_line lo = {0.2, -0.5}, up = {-0.3, 4.5};
     ts_interval_report rep[5];
     ts_error e;
-    ts_status st = ts_certify(s, &lo, &up, rep, &e);
+    ts_status st = ts_spline_certify(s, &lo, &up, rep, &e);
     CHECKF(st == TS_OK || st == TS_ERR_VIOLATED, "certify: %s", ts_strerror(st));
     for (size_t i = 0; i < 5; i++) {
         double gl = sample_min_gap(s, i, &lo, 1, 20000), gu = sample_min_gap(s, i, &up, -1, 20000);

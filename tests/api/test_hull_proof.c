@@ -2,10 +2,10 @@
  * interval is proved when min_l B_l − max(L(x_i), L(x_{i+1})) (lower line;
  * min(U) − max B upper) exceeds its rounding guard, before any minimum.
  *  - proved: random intervals with that difference 1e-3 .. 1e-12 of the
- *    values' size (above the guard, 16ε·3 = 1.1e-14 of it): ts_certify
+ *    values' size (above the guard, 16ε·3 = 1.1e-14 of it): ts_spline_certify
  *    certifies, the exact minimum re-derived here in long double (grid and
  *    golden section, docs/method.md §2, §5.6) is positive and equals the
- *    reported gap, and dense samples of ts_eval stay on the line's side;
+ *    reported gap, and dense samples of ts_spline_eval stay on the line's side;
  *  - the bound fails, the minimum certifies: B = [0, 0, 1, 1] on [0, 1] and
  *    L = x − 0.15 (L(1) = 0.85 > min B = 0; the true minimum is 0.045 by
  *    hand and here): certified (the bound must not refuse);
@@ -15,7 +15,7 @@
  *    the bound would certify it);
  *  - construction: line schemes in both forms, intervals all proved, the
  *    last one not proved, one not proved in a later block of 256; every
- *    result checked by ts_certify and dense samples in long double. */
+ *    result checked by ts_spline_certify and dense samples in long double. */
 #include "th.h"
 #include "th_options.h"
 #include "common/th_gapmin.h"
@@ -41,7 +41,7 @@ static long double exact_min(const double B[4], double x0, double x1, double m, 
 /* A spline without shape through (x, f) with slopes d. */
 static ts_spline *plain(const double *x, const double *f, const double *d, size_t np)
 {
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.slopes = TS_SLOPES_USER;
     o.user_slopes = d;
@@ -60,7 +60,7 @@ static long samples_outside(const ts_spline *s, double x0, double x1, double m, 
         double x = k == 1000 ? x1 : x0 + (x1 - x0) * (k / 1000.0), y;
         if (!(x <= x1))
             x = x1;
-        CHECK(ts_eval(s, x, NULL, &y) == TS_OK);
+        CHECK(ts_spline_eval(s, x, NULL, &y) == TS_OK);
         long double gap = sign *
                           ((long double)y - ((long double)m * (long double)x + (long double)c));
         bad += !(gap > 0.0L);
@@ -103,7 +103,7 @@ static void proved(void)
                "it %d: setup d %Lg", it, dd);
         ts_line ln = {m, c};
         ts_interval_report cr;
-        ts_status st = ts_certify(s, sign > 0 ? &ln : NULL, sign > 0 ? NULL : &ln, &cr, NULL);
+        ts_status st = ts_spline_certify(s, sign > 0 ? &ln : NULL, sign > 0 ? NULL : &ln, &cr, NULL);
         CHECKF(st == TS_OK && cr.certified, "it %d: not certified (d %Lg)", it, dd);
         long double g = exact_min(rep.B, x[0], x[1], m, c, sign);
         CHECKF(g > 0.0L, "it %d: exact min %Lg", it, g);
@@ -136,7 +136,7 @@ static void bound_fails(void)
     CHECKF(g > 0.0447L && g < 0.0448L, "exact min %Lg", g);
     CHECK(1.0 * 1.0 - 0.15 > 0.0); /* L(1) = 0.85 > min B = 0: the bound fails */
     ts_interval_report cr;
-    CHECK(ts_certify(s, &ln, NULL, &cr, NULL) == TS_OK && cr.certified == 1);
+    CHECK(ts_spline_certify(s, &ln, NULL, &cr, NULL) == TS_OK && cr.certified == 1);
     CHECKF(fabsl((long double)cr.gap_lower - g) < 1e-12L, "gap %g", cr.gap_lower);
     CHECK(samples_outside(s, 0.0, 1.0, 1.0, -0.15, 1) == 0);
     ts_spline_free(s);
@@ -155,18 +155,18 @@ static void near_tie(void)
     CHECKF(g > 0.0L && g <= tie, "exact min %Lg", g);
     ts_line ln = {m, c};
     ts_interval_report cr;
-    CHECK(ts_certify(s, &ln, NULL, &cr, NULL) == TS_ERR_VIOLATED && cr.certified == 0);
+    CHECK(ts_spline_certify(s, &ln, NULL, &cr, NULL) == TS_ERR_VIOLATED && cr.certified == 0);
     /* the upper side, mirrored */
     ts_line up = {-m, -c + 2.0};
-    CHECK(ts_certify(s, NULL, &up, &cr, NULL) == TS_ERR_VIOLATED && cr.certified == 0);
+    CHECK(ts_spline_certify(s, NULL, &up, &cr, NULL) == TS_ERR_VIOLATED && cr.certified == 0);
     ts_spline_free(s);
 }
 
-/* Line schemes built: every interval checked by ts_certify and samples. */
+/* Line schemes built: every interval checked by ts_spline_certify and samples. */
 static void built(const double *x, const double *f, size_t np, ts_shape shape, ts_form form,
                   ts_line lo, ts_line up, const char *what)
 {
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.shape = shape;
     o.form = form;
@@ -179,7 +179,7 @@ static void built(const double *x, const double *f, size_t np, ts_shape shape, t
         return;
     int hl = shape != TS_SHAPE_BELOW, hu = shape != TS_SHAPE_ABOVE;
     ts_interval_report *rep = malloc((np - 1) * sizeof *rep);
-    CHECK(rep && ts_certify(s, hl ? &lo : NULL, hu ? &up : NULL, rep, NULL) == TS_OK);
+    CHECK(rep && ts_spline_certify(s, hl ? &lo : NULL, hu ? &up : NULL, rep, NULL) == TS_OK);
     long out = 0;
     for (size_t i = 0; i + 1 < np; i += (np > 40 ? 37 : 1)) {
         if (hl)

@@ -1,4 +1,4 @@
-/* ts_integral near the top of the double range: finite where the integral
+/* ts_spline_integral near the top of the double range: finite where the integral
  * is, ±Inf where it overflows, never NaN.  Expected values in closed form:
  * S ≡ c on an interval with equal control values, so ∫ = c (b − a); the
  * tolerance 8ε of the result's scale covers the few roundings of the
@@ -12,8 +12,8 @@
 static ts_spline *flat_slopes(const double *x, const double *f, size_t np, double *zeros,
                               ts_form form)
 {
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = form;
     o.slopes = TS_SLOPES_USER;
     o.user_slopes = zeros;
@@ -39,16 +39,16 @@ int main(void)
             const double x[2] = {-1e308, 1e307}, f[2] = {1, 1};
             ts_spline *s = flat_slopes(x, f, 2, zeros, form);
             if (s) {
-                CHECK(ts_integral(s, x[0], x[1], &r) == TS_OK);
+                CHECK(ts_spline_integral(s, x[0], x[1], &r) == TS_OK);
                 CHECK_CLOSE(r, 1.1e308, 8 * DBL_EPSILON * 1.1e308);
-                CHECK(ts_integral(s, -5e307, 0, &r) == TS_OK);
+                CHECK(ts_spline_integral(s, -5e307, 0, &r) == TS_OK);
                 CHECK_CLOSE(r, 5e307, 8 * DBL_EPSILON * 5e307);
                 ts_spline_free(s);
             }
             const double x2[2] = {-0.6e308, 0.6e308}, f2[2] = {0, 0};
             s = flat_slopes(x2, f2, 2, zeros, form);
             if (s) {
-                CHECK(ts_integral(s, x2[0], x2[1], &r) == TS_OK && r == 0.0);
+                CHECK(ts_spline_integral(s, x2[0], x2[1], &r) == TS_OK && r == 0.0);
                 ts_spline_free(s);
             }
         }
@@ -60,18 +60,18 @@ int main(void)
             const double F = TS_VALUE_MAX, f[6] = {F, F, F, -F, -F, -F};
             ts_spline *s = flat_slopes(x, f, 6, zeros, form);
             if (s) {
-                CHECK(ts_integral(s, 0, 20, &r) == TS_OK);
+                CHECK(ts_spline_integral(s, 0, 20, &r) == TS_OK);
                 CHECKF(fabs(r) <= 64 * DBL_EPSILON * F, "r = %g", r);
-                CHECK(ts_integral(s, 2, 18, &r) == TS_OK);
+                CHECK(ts_spline_integral(s, 2, 18, &r) == TS_OK);
                 CHECKF(fabs(r) <= 64 * DBL_EPSILON * F, "r = %g", r);
                 /* 8F overflows: +Inf, and the reverse -Inf */
-                CHECK(ts_integral(s, 0, 8, &r) == TS_OK && r == (double)INFINITY);
-                CHECK(ts_integral(s, 8, 0, &r) == TS_OK && r == -(double)INFINITY);
-                CHECK(ts_integral(s, 12, 20, &r) == TS_OK && r == -(double)INFINITY);
+                CHECK(ts_spline_integral(s, 0, 8, &r) == TS_OK && r == (double)INFINITY);
+                CHECK(ts_spline_integral(s, 8, 0, &r) == TS_OK && r == -(double)INFINITY);
+                CHECK(ts_spline_integral(s, 12, 20, &r) == TS_OK && r == -(double)INFINITY);
                 /* finite pieces stay as they were: 3F/4 and 1/16 F (a short piece) */
-                CHECK(ts_integral(s, 0, 0.75, &r) == TS_OK);
+                CHECK(ts_spline_integral(s, 0, 0.75, &r) == TS_OK);
                 CHECK_CLOSE(r, 0.75 * F, 8 * DBL_EPSILON * F);
-                CHECK(ts_integral(s, 0, 0.0625, &r) == TS_OK);
+                CHECK(ts_spline_integral(s, 0, 0.0625, &r) == TS_OK);
                 CHECK_CLOSE(r, 0.0625 * F, 8 * DBL_EPSILON * F);
                 ts_spline_free(s);
             }
@@ -84,9 +84,9 @@ int main(void)
             const double f[4] = {1.5, 1.5, -1.5, -1.5};
             ts_spline *s = flat_slopes(x, f, 4, zeros, form);
             if (s) {
-                CHECK(ts_integral(s, x[0], x[3], &r) == TS_OK);
+                CHECK(ts_spline_integral(s, x[0], x[3], &r) == TS_OK);
                 CHECKF(fabs(r - 1.275e308) <= 16 * DBL_EPSILON * DBL_MAX, "form %d: r = %g", fm, r);
-                CHECK(ts_integral(s, x[0], x[1], &r) == TS_OK && r == (double)INFINITY);
+                CHECK(ts_spline_integral(s, x[0], x[1], &r) == TS_OK && r == (double)INFINITY);
                 ts_spline_free(s);
             }
         }
@@ -108,8 +108,8 @@ int main(void)
             long double I = h * ((long double)f[0] + (long double)f[1]) / 2.0L +
                             kk * ((long double)d[0] - (long double)d[1]) * (0.4L * h - Q * kk);
             CHECKF(I < -(long double)DBL_MAX, "reference %Lg", I);
-            CHECK(ts_integral(s, x[0], x[1], &r) == TS_OK && r == -(double)INFINITY);
-            CHECK(ts_integral(s, x[1], x[0], &r) == TS_OK && r == (double)INFINITY);
+            CHECK(ts_spline_integral(s, x[0], x[1], &r) == TS_OK && r == -(double)INFINITY);
+            CHECK(ts_spline_integral(s, x[1], x[0], &r) == TS_OK && r == (double)INFINITY);
             ts_spline_free(s);
         }
     }

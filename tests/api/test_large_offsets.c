@@ -27,7 +27,7 @@ static double bits11(double m)
     return ldexp(nearbyint(ldexp(fr, 11)), e - 11);
 }
 
-static long violations(const ts_spline *s, const ts_options *o, long *samples)
+static long violations(const ts_spline *s, const ts_spline_options *o, long *samples)
 {
     size_t n = ts_spline_intervals(s);
     const double *x = ts_spline_x(s);
@@ -46,7 +46,7 @@ static long violations(const ts_spline *s, const ts_options *o, long *samples)
         for (int k = 0; k <= PER; k++) {
             double q = x[i] + (x[i + 1] - x[i]) * (k / (double)PER), y;
             q = q > x[i + 1] ? x[i + 1] : q;
-            ts_eval(s, q, NULL, &y);
+            ts_spline_eval(s, q, NULL, &y);
             long double Y = (long double)y, Q = (long double)q;
             (*samples)++;
             switch (o->shape) {
@@ -94,8 +94,8 @@ static void large_offsets(void)
                     for (int i = 1; i < NP; i++)
                         x[i] = x[i - 1] + th_rng_logu(&r, spacing[oi][0], spacing[oi][1]);
                     double span = x[NP - 1] - x[0];
-                    ts_options o;
-                    ts_options_init(&o);
+                    ts_spline_options o;
+                    ts_spline_options_init(&o);
                     o.form = (ts_form)form;
                     o.shape = (ts_shape)shape;
                     o.slopes = (ts_slopes)th_rng_below(&r, 6);

@@ -10,7 +10,7 @@
  *    8ε(|m x_i| + |c|), 3.5 at x = 1e6 with slope 1e9: the offset copy was
  *    refused (TS_ERR_PRECISION) where the shifted one certified;
  *  - every certified interval is checked independently: dense samples of
- *    ts_eval against the line in long double, and the exact minimum of
+ *    ts_spline_eval against the line in long double, and the exact minimum of
  *    g(θ) = Σ A_l(θ)(B_l − L(x_i)) − m (2h/π) θ (docs/method.md §2, §5.6)
  *    re-derived here in long double (grid and golden section), which must be
  *    positive and agree with the reported gap;
@@ -92,8 +92,8 @@ static void compare(const double *s, const double *f, size_t np, double x0, cons
         xb[k] = s[k];
         CHECKF(xa[k] - x0 == s[k], "%s: shift of point %zu not exact", what, k);
     }
-    ts_options oa, ob;
-    ts_options_init(&oa);
+    ts_spline_options oa, ob;
+    ts_spline_options_init(&oa);
     oa.form = form;
     oa.shape = shape;
     oa.slopes = slopes;
@@ -163,8 +163,8 @@ static void compare(const double *s, const double *f, size_t np, double x0, cons
             double q = xa[i] + h * (k / (double)PER), ya, yb;
             q = q > xa[i + 1] ? xa[i + 1] : q;
             double dq = q - x0; /* exact: x0 <= q <= 2 x0, or x0 = 0 */
-            ts_eval(A, q, NULL, &ya);
-            ts_eval(B, dq, NULL, &yb);
+            ts_spline_eval(A, q, NULL, &ya);
+            ts_spline_eval(B, dq, NULL, &yb);
             differ += ya != yb;
             t->samples++;
             long double e, v;
@@ -279,8 +279,8 @@ static void constant_line(void)
                 f[k] = k % 2 ? 1 + 1e-14 : 2;
             }
             double delta = (1 + 1e-14) - 1.0;
-            ts_options o;
-            ts_options_init(&o);
+            ts_spline_options o;
+            ts_spline_options_init(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_ABOVE;
             o.slopes = TS_SLOPES_HARMONIC;
@@ -301,7 +301,7 @@ static void constant_line(void)
                 long bad = 0;
                 for (int k = 0; k <= 4096; k++) {
                     double q = x[i] + k / 4096.0, y;
-                    ts_eval(s, q, NULL, &y);
+                    ts_spline_eval(s, q, NULL, &y);
                     bad += !(y > 1.0);
                 }
                 CHECKF(bad == 0, "interval %zu: %ld samples not above y = 1", i, bad);
@@ -342,8 +342,8 @@ static void sloped_line(void)
                i, g, knot);
     }
     for (int form = TS_FORM_PAPER; form <= TS_FORM_C1; form++) {
-        ts_options o;
-        ts_options_init(&o);
+        ts_spline_options o;
+        ts_spline_options_init(&o);
         o.form = (ts_form)form;
         o.shape = TS_SHAPE_ABOVE;
         o.slopes = TS_SLOPES_USER;
@@ -390,8 +390,8 @@ static void negative(void)
                 double x[6];
                 for (int k = 0; k < 6; k++)
                     x[k] = (shift ? 0.0 : x0) + s[k];
-                ts_options o;
-                ts_options_init(&o);
+                ts_spline_options o;
+                ts_spline_options_init(&o);
                 o.form = (ts_form)form;
                 o.shape = TS_SHAPE_ABOVE;
                 o.slopes = TS_SLOPES_USER;
@@ -416,8 +416,8 @@ static void negative(void)
         x[k] = x0 + k * h0;
         f[k] = m * (k * h0) + (k == 2 ? 0.0 : k == 3 ? -1e-3 * m * h0 : m * h0);
     }
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.shape = TS_SHAPE_ABOVE;
     o.lower.m = m;
     o.lower.c = global_c(&L, x0);
@@ -455,8 +455,8 @@ static void exact_side(void)
     double f3 = 0.1 * 3, f5 = 0.1 * 5;
     CHECK((long double)f3 > (long double)0.1 * 3 && (long double)f5 < (long double)0.1 * 5);
     for (int form = TS_FORM_PAPER; form <= TS_FORM_C1; form++) {
-        ts_options o;
-        ts_options_init(&o);
+        ts_spline_options o;
+        ts_spline_options_init(&o);
         o.form = (ts_form)form;
         o.shape = TS_SHAPE_ABOVE;
         o.lower.m = 0.1;
@@ -481,8 +481,8 @@ static void exact_side(void)
     for (int k = 0; k < 7; k++)
         f[k] = 0.1 * k - 1.0;
     f[3] = f3;
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.shape = TS_SHAPE_BELOW;
     o.upper.m = 0.1;
     o.upper.c = 0.0;

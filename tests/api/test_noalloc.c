@@ -3,7 +3,7 @@
  * realloc, aligned_alloc and posix_memalign (see CMakeLists.txt), which count
  * while `counting` is set.  Splines and curves of every form and scheme are
  * built first, then every evaluation, report and certificate function is
- * called; the count must stay 0.  ts_eval_batch_mt is the documented
+ * called; the count must stay 0.  ts_spline_eval_batch_mt is the documented
  * exception (it creates threads) and is not called here. */
 #include "th.h"
 #include "trigspline.h"
@@ -48,18 +48,18 @@ static void exercise(const ts_spline *s, const ts_line *lo, const ts_line *up)
     xq[NQ - 1] = TH_NAN;
     counting = 1;
     for (int j = 0; j < NQ; j += 7) {
-        (void)ts_eval(s, xq[j], &cur, &v);
-        (void)ts_eval_deriv(s, xq[j], NULL, &v, &dv, &d2v);
+        (void)ts_spline_eval(s, xq[j], &cur, &v);
+        (void)ts_spline_eval_deriv(s, xq[j], NULL, &v, &dv, &d2v);
     }
     for (int dd = 0; dd < 3; dd++) {
-        (void)ts_eval_batch(s, dd, xq, NQ, yq, &cur, &err);
-        (void)ts_eval_batch(s, dd, xq, NQ / 2, yq, NULL, NULL);
+        (void)ts_spline_eval_batch(s, dd, xq, NQ, yq, &cur, &err);
+        (void)ts_spline_eval_batch(s, dd, xq, NQ / 2, yq, NULL, NULL);
     }
-    (void)ts_integral(s, a, b, &v);
-    (void)ts_integral(s, b - 0.3 * (b - a), a + 0.1, &v);
+    (void)ts_spline_integral(s, a, b, &v);
+    (void)ts_spline_integral(s, b - 0.3 * (b - a), a + 0.1, &v);
     /* every order and per-call extrapolation, solve, the interval search */
     for (int nu = 0; nu <= 5; nu++) {
-        (void)ts_eval_batch(s, nu, xq, NQ, yq, &cur, &err);
+        (void)ts_spline_eval_batch(s, nu, xq, NQ, yq, &cur, &err);
         for (int ex = TS_EXTRAP_ERROR; ex <= TS_EXTRAP_LINEAR; ex++) {
             (void)ts_spline_eval_batch_mode(s, nu, (ts_extrap)ex, xq, NQ, yq, &cur, &err);
             for (int j = 0; j < NQ; j += 31)
@@ -84,8 +84,8 @@ static void exercise(const ts_spline *s, const ts_line *lo, const ts_line *up)
     }
     (void)ts_spline_certified(s);
     if (lo || up)
-        (void)ts_certify(s, lo, up, rep, &err);
-    (void)ts_error_bound(s, 1.0, 1.0, 0, &v, NULL);
+        (void)ts_spline_certify(s, lo, up, rep, &err);
+    (void)ts_spline_error_bound(s, 1.0, 1.0, 0, &v, NULL);
     counting = 0;
 }
 
@@ -101,8 +101,8 @@ int main(void)
     for (int form = TS_FORM_PAPER; form <= TS_FORM_GEOMETRIC; form++) {
         for (int shape = TS_SHAPE_NONE; shape <= TS_SHAPE_BETWEEN; shape++) {
             for (int ex = TS_EXTRAP_ERROR; ex <= TS_EXTRAP_LINEAR; ex++) {
-                ts_options o;
-                ts_options_init(&o);
+                ts_spline_options o;
+                ts_spline_options_init(&o);
                 o.form = (ts_form)form;
                 o.shape = (ts_shape)shape;
                 o.extrapolate = (ts_extrap)ex;

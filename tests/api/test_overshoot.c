@@ -1,5 +1,5 @@
 /* The range and overshoot fields of the report (docs/method.md §5.9) against
- * independent dense sampling: every form, shape schemes and none, ts_certify,
+ * independent dense sampling: every form, shape schemes and none, ts_spline_certify,
  * curve coordinates; the reset of the fields on failure.
  *
  * Oracle: the segment S(θ) = Σ A_l(θ) B_l sampled at N+1 equally spaced θ in
@@ -16,7 +16,7 @@
  *        8|B2−B0| + 6|B3−B0| bounds |S''| (max|A_l''| = 6, 8, 8, 6 on
  *        [0, π/2] and Σ A_l'' = 0).
  * Checks: exact min in [sampled min − ts − te, sampled min + te] (likewise
- * max); S(at_y_min) from ts_eval within te + the evaluator's rounding of
+ * max); S(at_y_min) from ts_spline_eval within te + the evaluator's rounding of
  * y_min; the excursions from the sampled range and the end values. */
 #include "common/th_basis.h"
 #include "th.h"
@@ -82,8 +82,8 @@ static void check_report(const ts_interval_report *r, const ts_spline *spl, cons
         /* the evaluator at the reported place: its rounding (a few ulp of
          * max|B|) plus the slope times the rounding of the place itself */
         double y0, y1, tol = 64.0 * te + 1e-9 * sc;
-        CHECK(ts_eval(spl, r->at_y_min, NULL, &y0) == TS_OK);
-        CHECK(ts_eval(spl, r->at_y_max, NULL, &y1) == TS_OK);
+        CHECK(ts_spline_eval(spl, r->at_y_min, NULL, &y0) == TS_OK);
+        CHECK(ts_spline_eval(spl, r->at_y_max, NULL, &y1) == TS_OK);
         CHECKF(fabs(y0 - r->y_min) <= tol, "%s interval %zu: S(at_y_min) %.17g vs %.17g", what, i,
                y0, r->y_min);
         CHECKF(fabs(y1 - r->y_max) <= tol, "%s interval %zu: S(at_y_max) %.17g vs %.17g", what, i,
@@ -94,8 +94,8 @@ static void check_report(const ts_interval_report *r, const ts_spline *spl, cons
 static ts_spline *build(const double *x, const double *f, size_t np, ts_form form, ts_shape shape,
                         double alpha)
 {
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = form;
     o.shape = shape;
     o.alpha = alpha;
@@ -151,10 +151,10 @@ static void spline_cases(void)
                     CHECK(ts_spline_report(s, i, &r) == TS_OK);
                     check_report(&r, s, what, i);
                 }
-                /* ts_certify fills the same fields */
+                /* ts_spline_certify fills the same fields */
                 ts_interval_report reps[16];
                 ts_line zero = {0.0, -1000.0};
-                (void)ts_certify(s, &zero, NULL, reps, NULL);
+                (void)ts_spline_certify(s, &zero, NULL, reps, NULL);
                 for (size_t i = 0; i < ts_spline_intervals(s); i++) {
                     ts_interval_report r;
                     (void)ts_spline_report(s, i, &r);
@@ -229,7 +229,7 @@ static void resets(void)
     ts_interval_report reps[16];
     for (int j = 0; j < 16; j++)
         reps[j].y_max = 1.0;
-    CHECK(ts_certify(s, NULL, NULL, reps, NULL) == TS_ERR_NULL);
+    CHECK(ts_spline_certify(s, NULL, NULL, reps, NULL) == TS_ERR_NULL);
     CHECK(isnan(reps[0].y_max) && isnan(reps[10].excursion_below));
     ts_spline_free(s);
 }

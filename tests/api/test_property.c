@@ -15,9 +15,9 @@
  *    the line in exact arithmetic although f - (m x + c) > 0 in floating
  *    point passed the data check);
  *  - certified; every certificate > 0 (>= 0 at a zero knot of positive data);
- *    ts_certify agrees for the line schemes; no certified interval has a
+ *    ts_spline_certify agrees for the line schemes; no certified interval has a
  *    knot across a line in exact arithmetic;
- *  - 64 samples per interval (ts_eval_batch; geometric form 16, each a
+ *  - 64 samples per interval (ts_spline_eval_batch; geometric form 16, each a
  *    Newton solve) inside the region and never below the certificate by
  *    more than rounding; the certificate within the sampling bound of the
  *    sampled minimum (geometric form: x(θ) is not linear, so this uses 64
@@ -34,9 +34,9 @@
  * 0; paper and C¹ alpha in [1e-4, 0.05], geometric form alpha in
  * [TS_GEOMETRIC_A_MIN, 0.45], the smallest it allows) leave the region in a
  * sizeable share of sets (asserted, so this test could fail: measured 79–92%
- * in the geometric form, 96–99.6% in the others), and ts_certify reports
+ * in the geometric form, 96–99.6% in the others), and ts_spline_certify reports
  * VIOLATED whenever a sample is outside (it never certifies a curve that
- * leaves); geometric form: sampled in θ, and ts_eval at the worst sample's
+ * leaves); geometric form: sampled in θ, and ts_spline_eval at the worst sample's
  * x agrees with it.
  * Fixed regression cases (regressions()) precede the random sets.
  *
@@ -66,7 +66,7 @@
 #define NFORMS 3 /* paper, C¹, geometric */
 #define NMAX 200
 #define SAMPLES 64     /* samples per interval: in x (paper, C¹), in θ (geometric) */
-#define SAMPLES_GEO_X 16 /* geometric form, samples in x through ts_eval_batch: each
+#define SAMPLES_GEO_X 16 /* geometric form, samples in x through ts_spline_eval_batch: each
                             costs a Newton solve (the tight checks use θ) */
 
 #define EPS DBL_EPSILON
@@ -119,7 +119,7 @@ typedef struct dataset {
     size_t n;
     double x[NMAX + 1], f[NMAX + 1], us[NMAX + 1];
     double alphas[NMAX], margins[NMAX];
-    ts_options o;
+    ts_spline_options o;
 } dataset;
 
 /* The scheme's boundaries (positive: y = 0): lines[k] with sign +1 (lower)
@@ -190,7 +190,7 @@ static double hmax(const dataset *D, size_t i)
 
 static void gen(dataset *D, int scheme, int form)
 {
-    ts_options *o = &D->o;
+    ts_spline_options *o = &D->o;
     th_options_paper(o);
     o->form = (ts_form)form;
     o->shape = (ts_shape)scheme;
@@ -442,12 +442,12 @@ static long check_spline(const ts_spline *s, const dataset *D, int scheme, int f
     int sg[2], nl = scheme == TS_SHAPE_MONOTONE ? 0 : boundaries(D, scheme, L, sg);
     CHECK(ts_spline_certified(s) == 1);
     if (lines) /* the public certificate agrees with the build's */
-        CHECK(ts_certify(s, scheme != TS_SHAPE_BELOW ? &D->o.lower : NULL,
+        CHECK(ts_spline_certify(s, scheme != TS_SHAPE_BELOW ? &D->o.lower : NULL,
                          scheme != TS_SHAPE_ABOVE ? &D->o.upper : NULL, NULL, NULL) == TS_OK);
     int ns = geo ? SAMPLES_GEO_X : SAMPLES;
     int m = fill_queries(s, ns);
     ts_cursor cur = TS_CURSOR_INIT;
-    CHECK(ts_eval_batch(s, 0, xq, (size_t)m, yq, &cur, NULL) == TS_OK);
+    CHECK(ts_spline_eval_batch(s, 0, xq, (size_t)m, yq, &cur, NULL) == TS_OK);
     for (size_t i = 0; i < n; i++) {
         ts_interval_report r;
         CHECK(ts_spline_report(s, i, &r) == TS_OK);
@@ -480,14 +480,14 @@ static long check_spline(const ts_spline *s, const dataset *D, int scheme, int f
             /* knots: θ = 0 exactly at x_i, so S = B0 = f_i up to the batch
              * kernel's 8 ε·M (fast.c); at x_n, θ = h·((π/2)/h) is off π/2 by
              * ≤ 3 ε·π/2 and |dS/dθ| ≤ 3(|D0|+|D1|+|D2|) ≤ 18 M (docs/method.md (2.1)):
-             * 8 εM + 16 εM (ts_eval) + 85 εM < 128 ε·M */
+             * 8 εM + 16 εM (ts_spline_eval) + 85 εM < 128 ε·M */
             CHECK(fabs(ys[0] - f[i]) <= 8 * EPS * bsc);
             if (i + 1 == n)
                 CHECK(fabs(yq[m - 1] - f[n]) <= 128 * EPS * bsc);
         }
         if (scheme == TS_SHAPE_MONOTONE) {
             /* B lies between f_i and f_{i+1}: M = max(|f_i|, |f_{i+1}|);
-             * evaluation 24 εM (ts_eval + batch), θ rounding of each
+             * evaluation 24 εM (ts_spline_eval + batch), θ rounding of each
              * sample moves S along the curve (not off it), so monotonicity
              * needs only the value rounding.  Geometric form: the same
              * argument for φ (the solve of X(φ) = x errs by ~1e-14 of the
@@ -536,7 +536,7 @@ static long check_spline(const ts_spline *s, const dataset *D, int scheme, int f
             int zero_end = scheme == TS_SHAPE_POSITIVE && !(f[i] > 0 && f[i + 1] > 0);
             CHECKF(gap > 0 || (zero_end && gap >= 0), "interval %zu: certificate %.17g", i, gap);
             /* te = 256 ε·sc: certificate rounding (its guard, typically
-             * ≤ 64 ε·sc) + S at a sample (ts_eval 16 εM, batch 8 εM more)
+             * ≤ 64 ε·sc) + S at a sample (ts_spline_eval 16 εM, batch 8 εM more)
              * + the rounding of θ = (x − x_i)(π/2)/h (≤ 3 ε relative) times
              * |dS/dθ| ≤ 18 M, ≤ 86 εM, against L evaluated at x itself;
              * ts = ½|g''|(Δ/2)², the sampling bound (test_shape.c).
@@ -634,13 +634,13 @@ static void check_infeasible(const dataset *D, size_t j, int form)
 /* negative control: same data, no scheme, small a = alpha (beta = 0); the
  * geometric form refuses a < TS_GEOMETRIC_A_MIN (TS_ERR_GEOMETRIC), so there
  * alpha is drawn from [TS_GEOMETRIC_A_MIN, 0.45]: the least tension it allows.
- * Paper and C¹ forms are sampled in x through ts_eval_batch; the geometric
+ * Paper and C¹ forms are sampled in x through ts_spline_eval_batch; the geometric
  * form in θ from its control values (geo_point: exact up to rounding, no
- * Newton solve), and where a sample of a line scheme is outside, ts_eval at
+ * Newton solve), and where a sample of a line scheme is outside, ts_spline_eval at
  * its abscissa must agree with it. */
 static void control(const dataset *D, int scheme, stats *st)
 {
-    ts_options o = D->o;
+    ts_spline_options o = D->o;
     int geo = o.form == TS_FORM_GEOMETRIC;
     o.shape = TS_SHAPE_NONE;
     o.alphas = NULL;
@@ -655,7 +655,7 @@ static void control(const dataset *D, int scheme, stats *st)
     st->control_sets++;
     if (!geo) {
         int m = fill_queries(s, SAMPLES);
-        ts_eval_batch(s, 0, xq, (size_t)m, yq, NULL, NULL);
+        ts_spline_eval_batch(s, 0, xq, (size_t)m, yq, NULL, NULL);
     }
     ts_line L[2];
     int sg[2], nl = scheme == TS_SHAPE_MONOTONE ? 0 : boundaries(D, scheme, L, sg);
@@ -700,27 +700,27 @@ static void control(const dataset *D, int scheme, stats *st)
     if (first_out != TS_NO_INDEX) {
         st->control_violate++;
         if (scheme != TS_SHAPE_MONOTONE) {
-            /* ts_certify must not certify a curve that leaves */
+            /* ts_spline_certify must not certify a curve that leaves */
             const ts_line *lo = scheme == TS_SHAPE_BELOW ? NULL : &L[0];
             const ts_line *up = scheme == TS_SHAPE_BELOW     ? &L[0]
                                 : scheme == TS_SHAPE_BETWEEN ? &L[1]
                                                              : NULL;
             ts_error e;
-            CHECK(ts_certify(s, lo, up, NULL, &e) == TS_ERR_VIOLATED && e.index <= first_out);
+            CHECK(ts_spline_certify(s, lo, up, NULL, &e) == TS_ERR_VIOLATED && e.index <= first_out);
             if (geo) {
                 /* the evaluator at the worst sample's x agrees: the sample is
                  * (X(θ), Y(θ)) up to 8 ε of max|X_l| in x and 8 ε max|B_l| in
-                 * y; ts_eval solves X(φ) = x to 8 ε h (check_spline), so the
+                 * y; ts_spline_eval solves X(φ) = x to 8 ε h (check_spline), so the
                  * two gaps differ by te (values) + (|S'| + |m|) δx,
                  * δx ≤ 16 ε(|x_i| + |x_{i+1}|) */
                 double y, dy;
                 size_t i = first_out;
-                CHECK(ts_eval_deriv(s, wx, NULL, &y, &dy, NULL) == TS_OK);
+                CHECK(ts_spline_eval_deriv(s, wx, NULL, &y, &dy, NULL) == TS_OK);
                 double gl = sg[wk] * (y - line_at(&L[wk], wx));
                 double dx = 16 * EPS * (fabs(D->x[i]) + fabs(D->x[i + 1]));
                 double tol = wte + (fabs(dy) + fabs(L[wk].m)) * dx;
                 CHECKF(fabs(gl - worst) <= tol,
-                       "control interval %zu: ts_eval gap %.17g, θ-sample gap %.17g (y %.17g) "
+                       "control interval %zu: ts_spline_eval gap %.17g, θ-sample gap %.17g (y %.17g) "
                        "tol %.3g",
                        i, gl, worst, wy, tol);
             }
@@ -756,7 +756,7 @@ static void large_offsets(void)
             /* at 1.7e18 the line itself rounds by up to 512 in double: wider gaps */
             f[i] = (2.75 * i + g[i] + (k == 2 ? 0.5 : 0.0)) * hs[k];
         }
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.form = TS_FORM_GEOMETRIC;
         o.shape = TS_SHAPE_ABOVE;
@@ -770,7 +770,7 @@ static void large_offsets(void)
         long bad = 0, n = 0;
         for (double xv = x[0]; xv <= x[4]; xv = nextafter(xv, TH_INF), n++) {
             double y;
-            if (ts_eval(s, xv, NULL, &y) != TS_OK)
+            if (ts_spline_eval(s, xv, NULL, &y) != TS_OK)
                 continue;
             /* 2.75 xv and the sum are exact in long double (64-bit significand) */
             long double gap = (long double)y - (2.75L * (long double)xv + (long double)o.lower.c);
@@ -794,7 +794,7 @@ static void regressions(void)
         f2b[l] = l == 2 ? f2[l] : nextafter(nextafter(nextafter(L, TH_INF), TH_INF), TH_INF);
     }
     for (int c = 0; c < 4; c++) {
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.form = TS_FORM_GEOMETRIC;
         o.alpha = 1e-3;
@@ -821,7 +821,7 @@ static void regressions(void)
         if (!s)
             continue;
         CHECK(ts_spline_certified(s) == 1);
-        CHECK(ts_certify(s, c % 2 ? NULL : &L, c % 2 ? &L : NULL, NULL, NULL) == TS_OK);
+        CHECK(ts_spline_certify(s, c % 2 ? NULL : &L, c % 2 ? &L : NULL, NULL, NULL) == TS_OK);
         for (size_t i = 0; i < 3; i++) {
             ts_interval_report r;
             CHECK(ts_spline_report(s, i, &r) == TS_OK);
@@ -843,7 +843,7 @@ static void regressions(void)
     large_offsets();
     /* monotone at a = 4/(3π) */
     const double xm[6] = {0, 1, 3, 3.5, 7, 8}, fm[6] = {0, 1, 1, 4, 9, 9.5};
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.form = TS_FORM_GEOMETRIC;
     o.shape = TS_SHAPE_MONOTONE;

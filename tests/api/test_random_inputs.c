@@ -20,7 +20,7 @@
  *  - knots: the value at x_i uses θ = 0 (exact) or, at the last knot,
  *    θ = fl(π/2) where the basis differs from (0,0,0,1) by < 2ε, so
  *    |S − f| <= 16 ε max|B| is generous; curves the same.
- *  - inside the region: ts_eval has <= ~10 roundings of terms bounded by
+ *  - inside the region: ts_spline_eval has <= ~10 roundings of terms bounded by
  *    max|B|, the line m x + c two more: 64 ε (max|B| + |m| max|x| + |c|).
  *    A real violation of a certificate is never this close (the build adds
  *    the margin t to beta); this only absorbs evaluation rounding.
@@ -232,7 +232,7 @@ static ts_status expect_data_error(const sdata *D, size_t *idx)
     return TS_OK;
 }
 
-static void check_named(const sdata *D, const ts_options *o, ts_status st, const ts_error *e)
+static void check_named(const sdata *D, const ts_spline_options *o, ts_status st, const ts_error *e)
 {
     size_t i = e->index;
     const double *f = D->f, *x = D->x;
@@ -325,7 +325,7 @@ static int known_issue(const ts_spline *s)
     return 0;
 }
 
-static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
+static void check_spline(const sdata *D, const ts_spline_options *o, ts_spline *s)
 {
     size_t n = ts_spline_intervals(s), np = n + 1;
     CHECK(n == D->np - 1);
@@ -349,7 +349,7 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
     /* knots */
     for (size_t i = 0; i < np; i++) {
         double y = TH_NAN;
-        ts_status st = ts_eval(s, xs[i], NULL, &y);
+        ts_status st = ts_spline_eval(s, xs[i], NULL, &y);
         double M = fmax(max_abs_B(s, i < n ? i : n - 1), i ? max_abs_B(s, i - 1) : 0.0);
         CHECKF(st == TS_OK && fabs(y - fs[i]) <= 16 * EPS * M,
                "knot %zu of %zu: S = %.17g, f = %.17g (form %d)", i, np, y, fs[i], (int)o->form);
@@ -377,7 +377,7 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
                 double x = k == 8 ? xs[i + 1] : xs[i] + h * k / 8.0, y;
                 if (x > xs[i + 1])
                     x = xs[i + 1];
-                if (ts_eval(s, x, NULL, &y) != TS_OK) {
+                if (ts_spline_eval(s, x, NULL, &y) != TS_OK) {
                     bad++;
                     continue;
                 }
@@ -400,15 +400,15 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
         }
         CHECKF(bad == 0, "shape %d form %d n %zu: %d samples outside", (int)shape, (int)o->form,
                n, bad);
-        /* ts_certify against the scheme's own lines: the build certified
+        /* ts_spline_certify against the scheme's own lines: the build certified
          * with the same gap and guard, or (geometric form, certify = 0) with
-         * the control-value proof that ts_certify also accepts: they agree */
+         * the control-value proof that ts_spline_certify also accepts: they agree */
         if (shape == TS_SHAPE_ABOVE || shape == TS_SHAPE_BELOW || shape == TS_SHAPE_BETWEEN) {
             const ts_line *lo = shape != TS_SHAPE_BELOW ? &o->lower : NULL;
             const ts_line *up = shape != TS_SHAPE_ABOVE ? &o->upper : NULL;
             ts_error e;
-            ts_status st = ts_certify(s, lo, up, NULL, &e);
-            CHECKF(st == TS_OK, "ts_certify of a certified spline: %s (form %d)",
+            ts_status st = ts_spline_certify(s, lo, up, NULL, &e);
+            CHECKF(st == TS_OK, "ts_spline_certify of a certified spline: %s (form %d)",
                    ts_strerror(st), (int)o->form);
             if (st != TS_OK)
                 soft_certify_mismatch++;
@@ -436,7 +436,7 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
     for (int j = 0; j < NQ; j++) {
         q[j] = th_chance(0.7) ? x0 + w * th_unit() : th_chance(0.5) ? x0 + w * (th_unit() * 3 - 1) : th_hostile();
         double y, dy, d2y;
-        ts_status st = ts_eval_deriv(s, q[j], th_chance(0.5) ? &cur : NULL, &y, &dy, &d2y);
+        ts_status st = ts_spline_eval_deriv(s, q[j], th_chance(0.5) ? &cur : NULL, &y, &dy, &d2y);
         sq[j] = st;
         CHECK(in_set(st, SET_EVAL));
         int valid = !isnan(q[j]) &&
@@ -450,7 +450,7 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
     }
     int deriv = th_chance(0.9) ? (int)th_below(3) : (th_chance(0.5) ? 3 : -1);
     ts_error e;
-    ts_status stb = ts_eval_batch(s, deriv, q, NQ, yb, th_chance(0.5) ? &cur : NULL, &e);
+    ts_status stb = ts_spline_eval_batch(s, deriv, q, NQ, yb, th_chance(0.5) ? &cur : NULL, &e);
     CHECK(in_set(stb, SET_BATCH));
     if (deriv < 0 || (deriv > 2 && ts_spline_form(s) == TS_FORM_GEOMETRIC)) {
         CHECK(stb == TS_ERR_OPTION);
@@ -469,20 +469,20 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
     }
     for (int j = 0; j + 1 < NQ; j += 2) {
         double v;
-        ts_status st = ts_integral(s, q[j], q[j + 1], &v);
+        ts_status st = ts_spline_integral(s, q[j], q[j + 1], &v);
         CHECK(in_set(st, SET_EVAL));
         int in = x0 <= q[j] && q[j] <= xn && x0 <= q[j + 1] && q[j + 1] <= xn;
         CHECK(in == (st == TS_OK));
         if (st != TS_OK)
             CHECK(isnan(v));
     }
-    /* ts_certify with random lines */
+    /* ts_spline_certify with random lines */
     {
         ts_line a = {th_chance(0.9) ? th_unit() - 0.5 : th_hostile(), th_chance(0.9) ? th_unit() * 4 - 2 : th_hostile()};
         ts_line b = {a.m, a.c + 1};
         ts_interval_report *rep = th_chance(0.5) ? malloc(n * sizeof *rep) : NULL;
         int which = (int)th_below(4);
-        ts_status st = ts_certify(s, which & 1 ? &a : NULL, which & 2 ? &b : NULL, rep, &e);
+        ts_status st = ts_spline_certify(s, which & 1 ? &a : NULL, which & 2 ? &b : NULL, rep, &e);
         CHECK(in_set(st, SET_CERTIFY) && real_message(st) && err_ok(&e, st, np, n));
         CHECK(which != 0 || st == TS_ERR_NULL);
         if (which && !(isfinite(a.m) && isfinite(a.c)))
@@ -492,7 +492,7 @@ static void check_spline(const sdata *D, const ts_options *o, ts_spline *s)
     /* error bound (crash safety and statuses only) */
     {
         double bound, *per = th_chance(0.5) ? malloc(n * sizeof *per) : NULL;
-        ts_status st = ts_error_bound(s, th_chance(0.8) ? th_logu(1e-3, 1e3) : th_hostile(),
+        ts_status st = ts_spline_error_bound(s, th_chance(0.8) ? th_logu(1e-3, 1e3) : th_hostile(),
                                       th_chance(0.8) ? th_logu(1e-3, 1e3) : th_hostile(), (int)th_below(2),
                                       &bound, per);
         CHECK(in_set(st, SET_BOUND));
@@ -511,7 +511,7 @@ static void dump_doubles(const char *name, const double *v, size_t n)
     fprintf(stderr, "}\n");
 }
 
-static void dump_spline(const sdata *D, const ts_options *o)
+static void dump_spline(const sdata *D, const ts_spline_options *o)
 {
     size_t n = D->np ? D->np - 1 : 0;
     fprintf(stderr, "  case: np %zu form %d slopes %d shape %d extrap %d alpha %a beta %a "
@@ -538,8 +538,8 @@ static void fuzz_splines(void)
         int hint = (int)th_below(6);
         gen_spline_data(&D, hint);
         size_t np = D.np, n = np ? np - 1 : 0;
-        ts_options o;
-        ts_options_init(&o);
+        ts_spline_options o;
+        ts_spline_options_init(&o);
         o.form = (ts_form)(th_chance(0.9) ? (int)th_below(3) : enum_val(3));
         o.slopes = (ts_slopes)(th_chance(0.9) ? (int)th_below(TS_SLOPES_COUNT_) : enum_val(TS_SLOPES_COUNT_));
         o.shape = (ts_shape)(th_chance(0.7) ? hint : th_chance(0.9) ? (int)th_below(6) : enum_val(6));
@@ -602,8 +602,8 @@ static void fuzz_splines(void)
         if (use_opt && st != TS_OK)
             check_named(&D, &o, st, &e);
         if (st == TS_OK) {
-            ts_options dflt;
-            ts_options_init(&dflt);
+            ts_spline_options dflt;
+            ts_spline_options_init(&dflt);
             ok_by_shape[(int)ts_spline_shape(s)]++;
             ok_by_form[(int)ts_spline_form(s)]++;
             long before = th_fail_;
@@ -846,7 +846,7 @@ int main(void)
     printf("known issues (not failed, see known_issue): overflowing controls %ld, tiny h %ld, "
            "values near DBL_MAX %ld\n", n_known_overflow, n_known_tiny_h, n_known_huge);
     printf("successes by shape: %ld %ld %ld %ld %ld %ld; by form: %ld %ld %ld; curves %ld (box "
-           "%ld); named offenders %ld; ts_certify "
+           "%ld); named offenders %ld; ts_spline_certify "
            "disagreements %ld\n",
            ok_by_shape[0], ok_by_shape[1], ok_by_shape[2], ok_by_shape[3], ok_by_shape[4],
            ok_by_shape[5], ok_by_form[0], ok_by_form[1], ok_by_form[2], n_curve_ok,

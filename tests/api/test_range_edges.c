@@ -7,7 +7,7 @@
  *  - |f| and control values above TS_VALUE_MAX are refused (S could
  *    overflow between knots), values at the limit give finite samples;
  *  - integrals of pieces much shorter than their interval: relative error a
- *    few ε of the piece.  Reference: Simpson's rule on ts_eval values over
+ *    few ε of the piece.  Reference: Simpson's rule on ts_spline_eval values over
  *    the piece (pieces <= 1e-4 h: the rule's error ~ (1e-4)^4 S''''/2880 is
  *    below 1e-18 of the piece); tolerance 16ε of |S| (b − a), for S bounded
  *    away from 0 on the test data;
@@ -66,8 +66,8 @@ static void values_near_dbl_max(void)
     const double M = DBL_MAX, V = TS_VALUE_MAX;
     const double x[2] = {0, 1}, fm[2] = {M, M};
     for (int fm_ = 0; fm_ < 3; fm_++) {
-        ts_options o;
-        ts_options_init(&o);
+        ts_spline_options o;
+        ts_spline_options_init(&o);
         o.form = (ts_form)fm_;
         o.shape = TS_SHAPE_POSITIVE;
         ts_spline *s = NULL;
@@ -99,8 +99,8 @@ static void values_near_dbl_max(void)
             xs[i] = xs[i - 1] + th_rng_logu(&r, 0.1, 10);
         for (int i = 0; i < 6; i++)
             fs[i] = V * th_rng_range(&r, -1, 1);
-        ts_options o;
-        ts_options_init(&o);
+        ts_spline_options o;
+        ts_spline_options_init(&o);
         o.form = (ts_form)th_rng_below(&r, 3);
         o.slopes = (ts_slopes)th_rng_below(&r, 6);
         o.alpha = th_rng_logu(&r, 0.5, 4);
@@ -116,14 +116,14 @@ static void values_near_dbl_max(void)
         for (int k = 0; k <= 400; k++)
             q[k] = xs[0] + (xs[5] - xs[0]) * (k / 400.0);
         q[400] = xs[5];
-        ts_eval_batch(s, 0, q, 401, y, NULL, NULL);
+        ts_spline_eval_batch(s, 0, q, 401, y, NULL, NULL);
         for (int k = 0; k <= 400; k++) {
             double ys;
-            ts_eval(s, q[k], NULL, &ys);
+            ts_spline_eval(s, q[k], NULL, &ys);
             bad += !(fabs(y[k]) <= M) || !(fabs(ys) <= M);
         }
         double I;
-        CHECK(ts_integral(s, xs[0], xs[5], &I) == TS_OK && !isnan(I));
+        CHECK(ts_spline_integral(s, xs[0], xs[5], &I) == TS_OK && !isnan(I));
         ts_spline_free(s);
     }
     CHECKF(bad == 0 && built > 50, "%ld non-finite samples, %ld built", bad, built);
@@ -132,9 +132,9 @@ static void values_near_dbl_max(void)
 static double simpson(const ts_spline *s, double a, double b)
 {
     double ya, ym, yb;
-    ts_eval(s, a, NULL, &ya);
-    ts_eval(s, a + 0.5 * (b - a), NULL, &ym);
-    ts_eval(s, b, NULL, &yb);
+    ts_spline_eval(s, a, NULL, &ya);
+    ts_spline_eval(s, a + 0.5 * (b - a), NULL, &ym);
+    ts_spline_eval(s, b, NULL, &yb);
     return (b - a) * (ya + 4 * ym + yb) / 6;
 }
 
@@ -142,8 +142,8 @@ static void short_pieces(void)
 {
     const double x[4] = {0, 1, 2.5, 3}, f[4] = {1, 3, 2, 5};
     for (int fm = 0; fm < 3; fm++) {
-        ts_options o;
-        ts_options_init(&o);
+        ts_spline_options o;
+        ts_spline_options_init(&o);
         o.form = (ts_form)fm;
         ts_spline *s = NULL;
         CHECK(ts_spline_new(x, f, 4, &o, &s, NULL) == TS_OK);
@@ -158,20 +158,20 @@ static void short_pieces(void)
                     double a = starts[k], b = a + rel * h, I;
                     if (b > x[i + 1])
                         b = x[i + 1];
-                    CHECK(ts_integral(s, a, b, &I) == TS_OK);
+                    CHECK(ts_spline_integral(s, a, b, &I) == TS_OK);
                     double ref = simpson(s, a, b), err = fabs(I - ref) / fabs(ref);
                     worst = err > worst ? err : worst;
                     CHECKF(err <= 16 * EPS, "form %d interval %d [%.17g, %.17g]: rel err %g", fm,
                            i, a, b, err);
                     /* the reverse is the negative */
                     double J;
-                    CHECK(ts_integral(s, b, a, &J) == TS_OK && J == -I);
+                    CHECK(ts_spline_integral(s, b, a, &J) == TS_OK && J == -I);
                 }
             }
         }
         /* a short piece across a knot: two short end pieces */
         double I, a = 1 - 1e-9, b = 1 + 1e-9;
-        CHECK(ts_integral(s, a, b, &I) == TS_OK);
+        CHECK(ts_spline_integral(s, a, b, &I) == TS_OK);
         double ref = simpson(s, a, 1) + simpson(s, 1, b);
         CHECKF(fabs(I - ref) <= 16 * EPS * fabs(ref), "form %d across a knot: %g vs %g", fm, I,
                ref);
@@ -193,8 +193,8 @@ static void monotone_samples(void)
                 double f[10];
                 for (int i = 0; i < 10; i++)
                     f[i] = dir ? up[i] : -up[i];
-                ts_options o;
-                ts_options_init(&o);
+                ts_spline_options o;
+                ts_spline_options_init(&o);
                 o.form = (ts_form)fm;
                 o.slopes = (ts_slopes)sl;
                 o.shape = TS_SHAPE_MONOTONE;
@@ -207,12 +207,12 @@ static void monotone_samples(void)
                 static double q[NQ], yb[NQ];
                 for (int k = 0; k < NQ; k++)
                     q[k] = 10.0 * k / (NQ - 1);
-                ts_eval_batch(s, 0, q, NQ, yb, NULL, NULL);
+                ts_spline_eval_batch(s, 0, q, NQ, yb, NULL, NULL);
                 long wrong = 0;
                 double prev = 0;
                 for (int k = 0; k < NQ; k++) {
                     double ys;
-                    ts_eval(s, q[k], NULL, &ys);
+                    ts_spline_eval(s, q[k], NULL, &ys);
                     if (k > 0) {
                         wrong += dir ? yb[k] < yb[k - 1] : yb[k] > yb[k - 1];
                         wrong += dir ? ys < prev : ys > prev;

@@ -28,7 +28,7 @@ static long below_line(const ts_spline *s, const ts_line *l)
             double q = x[i] + (x[i + 1] - x[i]) * (k / 4096.0), y;
             if (q > x[i + 1])
                 q = x[i + 1];
-            ts_eval(s, q, NULL, &y);
+            ts_spline_eval(s, q, NULL, &y);
             bad += !((long double)y - ((long double)l->m * (long double)q + (long double)l->c) > 0);
         }
     return bad;
@@ -42,8 +42,8 @@ static void c1_uniform_family(void)
         f[k] = 10.0 * k + 1 + 0.5 * sin(k);
     }
     for (double al = 0.8; al <= 1.06; al += 0.05) {
-        ts_options o;
-        ts_options_init(&o);
+        ts_spline_options o;
+        ts_spline_options_init(&o);
         o.form = TS_FORM_C1;
         o.shape = TS_SHAPE_ABOVE;
         o.lower.m = 10;
@@ -69,8 +69,8 @@ static void proved_infeasible(void)
     const double f[6] = {46.43631937903465, 45.628852045351344, 44.69959316161613,
                          45.67238960663792, 49.26444394952097, 47.49206524154462};
     for (int form = TS_FORM_PAPER; form <= TS_FORM_C1; form++) {
-        ts_options o;
-        ts_options_init(&o);
+        ts_spline_options o;
+        ts_spline_options_init(&o);
         o.form = (ts_form)form;
         o.shape = TS_SHAPE_ABOVE;
         o.lower.m = 0.5;
@@ -99,8 +99,8 @@ static void precision_refusal(void)
         f[k] = k % 2 ? 1 + 14 * DBL_EPSILON : 2;
     }
     for (int form = TS_FORM_PAPER; form <= TS_FORM_C1; form++) {
-        ts_options o;
-        ts_options_init(&o);
+        ts_spline_options o;
+        ts_spline_options_init(&o);
         o.form = (ts_form)form;
         o.shape = TS_SHAPE_ABOVE;
         o.slopes = TS_SLOPES_HARMONIC; /* 0 at the extrema */

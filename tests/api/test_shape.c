@@ -29,7 +29,7 @@ static const double F4[] = {2.5, 7, 8, 29, 8, 21, 30};
 
 static double line_at(const ts_line *l, double x) { return l->m * x + l->c; }
 
-static ts_spline *build(const double *x, const double *f, size_t np, const ts_options *o,
+static ts_spline *build(const double *x, const double *f, size_t np, const ts_spline_options *o,
                         ts_status *st, ts_error *e)
 {
     ts_spline *s = NULL;
@@ -38,8 +38,8 @@ static ts_spline *build(const double *x, const double *f, size_t np, const ts_op
 }
 
 /* Dense check of a certified shape spline: M+1 samples per interval of
- * ts_eval.  Tolerances: te = 256 ε·(scale of B and the line): the rounding of
- * the certificate (certify.c guard, typically ≤ 64 ε·scale), of ts_eval
+ * ts_spline_eval.  Tolerances: te = 256 ε·(scale of B and the line): the rounding of
+ * the certificate (certify.c guard, typically ≤ 64 ε·scale), of ts_spline_eval
  * (16 ε·M) and of θ = (x − x_i)(π/2)/h (≤ 3 ε relative, times |dS/dθ| ≤
  * 18 max|B| by docs/method.md (2.1): ≤ 86 ε·M); ts = ½|g''|(Δ/2)², the sampling bound (|g''| ≤
  * 8|C1−C0| + 8|C2−C0| + 6|C3−C0|, max|A_l''| = 6, 8, 8, 6 on [0, π/2], and
@@ -56,13 +56,13 @@ static void dense_check(const ts_spline *s, int M, const char *what)
         CHECK(ts_spline_report(s, i, &r) == TS_OK);
         CHECKF(r.certified == 1, "%s: interval %zu not certified", what, i);
         double y;
-        ts_eval(s, x[i], NULL, &y);
+        ts_spline_eval(s, x[i], NULL, &y);
         double sc = fabs(f[i]);
         for (int l = 0; l < 4; l++)
             sc = fabs(r.B[l]) > sc ? fabs(r.B[l]) : sc;
         CHECKF(fabs(y - f[i]) <= 8 * EPS * sc, "%s: knot %zu: %.17g vs %.17g", what, i, y, f[i]);
         if (i + 1 == n) {
-            ts_eval(s, x[n], NULL, &y);
+            ts_spline_eval(s, x[n], NULL, &y);
             /* θ at x_n is off π/2 by ≤ 3 ε·π/2, |dS/dθ| ≤ 18 max|B|:
              * 85 εM plus evaluation (test_property.c) */
             CHECKF(fabs(y - f[n]) <= 128 * EPS * sc, "%s: last knot", what);
@@ -115,7 +115,7 @@ static void dense_lines_r(const ts_spline *s, const ts_line *lo, const ts_line *
             double mn = TH_INF;
             for (int j = 0; j <= M; j++) {
                 double xx = j == M ? x[i + 1] : x[i] + (x[i + 1] - x[i]) * j / M, y;
-                ts_eval(s, xx, NULL, &y);
+                ts_spline_eval(s, xx, NULL, &y);
                 double g = sign * (y - line_at(ln, xx));
                 mn = g < mn ? g : mn;
             }
@@ -193,7 +193,7 @@ static void test_tables(void)
         /* Table 1, Figures 4c (alpha 0.15) and 4d (alpha 0.0001) */
         const double a1[] = {0.15, 0.0001};
         for (int k = 0; k < 2; k++) {
-            ts_options o;
+            ts_spline_options o;
             th_options_paper(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_POSITIVE;
@@ -214,7 +214,7 @@ static void test_tables(void)
          * paper's slope shifted down, y = 0.31x − 4, lies below every point
          * (smallest gap 0.35 at x = 15).  Figures 5c (0.01), 5d (0.12). */
         {
-            ts_options o;
+            ts_spline_options o;
             th_options_paper(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_ABOVE;
@@ -235,7 +235,7 @@ static void test_tables(void)
         }
         const double a2[] = {0.01, 0.12};
         for (int k = 0; k < 2; k++) {
-            ts_options o;
+            ts_spline_options o;
             th_options_paper(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_ABOVE;
@@ -256,7 +256,7 @@ static void test_tables(void)
         /* Table 3 below y = x + 2.5: Figures 6c (0.001), 6d (0.1) */
         const double a3[] = {0.001, 0.1};
         for (int k = 0; k < 2; k++) {
-            ts_options o;
+            ts_spline_options o;
             th_options_paper(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_BELOW;
@@ -277,7 +277,7 @@ static void test_tables(void)
         /* Table 4 between y = x + 0.1 and y = 8x + 6: Figures 7c (0.4), 7d (0.1) */
         const double a4[] = {0.4, 0.1};
         for (int k = 0; k < 2; k++) {
-            ts_options o;
+            ts_spline_options o;
             th_options_paper(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_BETWEEN;
@@ -317,7 +317,7 @@ static void test_unconstrained_figures(void)
              {0.01, 0.0, -6.25, -6.15, TS_ERR_VIOLATED},
              {0.05, 0.0, 0.0, 1.0, TS_OK}};
     for (int k = 0; k < 4; k++) {
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.alpha = c[k].a;
         o.beta = c[k].b;
@@ -326,7 +326,7 @@ static void test_unconstrained_figures(void)
         if (!s)
             continue;
         ts_interval_report r[8];
-        st = ts_certify(s, &zero, NULL, r, &e);
+        st = ts_spline_certify(s, &zero, NULL, r, &e);
         CHECKF(st == c[k].want, "a=%g: status %d", c[k].a, st);
         double mn = TH_INF;
         for (int i = 0; i < 8; i++)
@@ -357,7 +357,7 @@ static void test_theorem4_signs(void)
         m = v2 > m ? v2 : m;
         beta_printed[i] = t + m;
     }
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.alpha = al;
     o.betas = beta_printed;
@@ -366,7 +366,7 @@ static void test_theorem4_signs(void)
     CHECK(st == TS_OK);
     if (s) {
         ts_interval_report r[4];
-        st = ts_certify(s, NULL, &up, r, &e);
+        st = ts_spline_certify(s, NULL, &up, r, &e);
         CHECK(st == TS_ERR_VIOLATED && e.index == 3 && e.where == TS_WHERE_INTERVAL);
         CHECKF(r[3].gap_upper < -145.0 && r[3].gap_upper > -146.0, "printed: %.6g", r[3].gap_upper);
         dense_lines_r(s, NULL, &up, 2000, r, 0, "printed theorem 4");
@@ -384,7 +384,7 @@ static void test_theorem4_signs(void)
         if (!s)
             continue;
         ts_interval_report r[4];
-        CHECK(ts_certify(s, NULL, &up, r, &e) == TS_OK);
+        CHECK(ts_spline_certify(s, NULL, &up, r, &e) == TS_OK);
         double mn = TH_INF;
         for (int i = 0; i < 4; i++)
             mn = r[i].gap_upper < mn ? r[i].gap_upper : mn;
@@ -399,7 +399,7 @@ static void test_theorem4_signs(void)
     }
 }
 
-static void expect(const double *x, const double *f, size_t np, const ts_options *o, ts_status want,
+static void expect(const double *x, const double *f, size_t np, const ts_spline_options *o, ts_status want,
                    size_t index, ts_where where, const char *what)
 {
     ts_status st;
@@ -413,7 +413,7 @@ static void expect(const double *x, const double *f, size_t np, const ts_options
 
 static void test_bad_data(void)
 {
-    ts_options o;
+    ts_spline_options o;
     const double x5[] = {0, 1, 2, 3, 4};
     /* positive: first negative point */
     {
@@ -582,14 +582,14 @@ static void test_bad_data(void)
             if (form == 0) {
                 int any = 0;
                 for (double a = 10; a < 1e7 && !any; a *= 1.1) {
-                    ts_options p;
+                    ts_spline_options p;
                     th_options_paper(&p);
                     p.alpha = a;
                     ts_spline *s = NULL;
                     ts_spline_new(x4, f, 4, &p, &s, NULL);
                     ts_error e;
                     ts_interval_report r[3];
-                    if (s && ts_certify(s, &o.lower, NULL, r, &e) == TS_OK)
+                    if (s && ts_spline_certify(s, &o.lower, NULL, r, &e) == TS_OK)
                         any = 1;
                     if (s && r[0].certified)
                         any = 1;
@@ -607,7 +607,7 @@ static void test_bad_data(void)
 static void test_underflow_limit(void)
 {
     const double x[] = {0, 1, 2, 3}, f[] = {1, 1e-300, 4.9e-324, 1};
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.shape = TS_SHAPE_POSITIVE;
     expect(x, f, 4, &o, TS_ERR_INFEASIBLE, 1, TS_WHERE_INTERVAL, "underflow");
@@ -630,7 +630,7 @@ static void test_repair(void)
         for (int g = 0; g < 2; g++) {
             for (int k = 0; k < 3; k++) {
                 double f[] = {1, 10 + gaps[g], 21, 31};
-                ts_options o;
+                ts_spline_options o;
                 th_options_paper(&o);
                 o.form = (ts_form)form;
                 o.shape = TS_SHAPE_ABOVE;
@@ -667,7 +667,7 @@ static void test_repair(void)
             int term;
             betas[i] = rule_beta(x, f, d, i, 0.1, 0.01, &L, NULL, 0, &term);
         }
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.alpha = 0.1;
         o.betas = betas;
@@ -675,7 +675,7 @@ static void test_repair(void)
         ts_spline *s = NULL;
         CHECK(ts_spline_new(x, f, 4, &o, &s, NULL) == TS_OK);
         ts_error e;
-        CHECK(ts_certify(s, &L, NULL, NULL, &e) == TS_ERR_VIOLATED && e.index == 0);
+        CHECK(ts_spline_certify(s, &L, NULL, NULL, &e) == TS_ERR_VIOLATED && e.index == 0);
         ts_spline_free(s);
     }
 }
@@ -687,7 +687,7 @@ static void test_zeros(void)
     const double f[] = {0, 0, 3, 0, 5, 2, 0, 0, 1e-3};
     for (int form = 0; form < 2; form++) {
         for (int k = 0; k < 3; k++) {
-            ts_options o;
+            ts_spline_options o;
             th_options_paper(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_POSITIVE;
@@ -723,7 +723,7 @@ static void test_zeros(void)
         double d[4];
         ts_slopes_compute(TS_SLOPES_ARITHMETIC, xe, fe, 4, d, NULL);
         CHECK(d[3] > 0); /* the estimate has the wrong sign at the end... */
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.shape = TS_SHAPE_POSITIVE;
         ts_spline *s = NULL;
@@ -738,7 +738,7 @@ static void test_zeros(void)
     /* periodic slopes with zero ends: one knot, d0 = dn = 0 */
     {
         const double xp[] = {0, 1, 2, 3, 4}, fp[] = {0, 2, 1, 3, 0};
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.shape = TS_SHAPE_POSITIVE;
         o.slopes = TS_SLOPES_PERIODIC;
@@ -754,14 +754,14 @@ static void test_zeros(void)
     /* all zero */
     {
         const double xz[] = {0, 1, 2}, fz[] = {0, 0, 0};
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.shape = TS_SHAPE_POSITIVE;
         ts_spline *s = NULL;
         CHECK(ts_spline_new(xz, fz, 3, &o, &s, NULL) == TS_OK && ts_spline_certified(s));
         double y;
         if (s) {
-            ts_eval(s, 0.7, NULL, &y);
+            ts_spline_eval(s, 0.7, NULL, &y);
             CHECK(y == 0);
         }
         ts_spline_free(s);
@@ -776,12 +776,12 @@ static void monotone_dense(const ts_spline *s, int dir, int M, const char *what)
     CHECKF(ts_spline_certified(s), "%s", what);
     for (size_t i = 0; i < n; i++) {
         double prev = f[i], lo = f[i] < f[i + 1] ? f[i] : f[i + 1], hi = f[i] + f[i + 1] - lo;
-        /* rounding of ts_eval: 16 ε·max|f| per sample */
+        /* rounding of ts_spline_eval: 16 ε·max|f| per sample */
         double tol = 16 * EPS * (fabs(f[i]) + fabs(f[i + 1]));
         int bad = 0;
         for (int j = 1; j <= M; j++) {
             double xx = j == M ? x[i + 1] : x[i] + (x[i + 1] - x[i]) * j / M, y;
-            ts_eval(s, xx, NULL, &y);
+            ts_spline_eval(s, xx, NULL, &y);
             if (dir * (y - prev) < -tol || y < lo - tol || y > hi + tol)
                 bad++;
             prev = y;
@@ -799,7 +799,7 @@ static void test_monotone(void)
     const double f[] = {0, 0, 0.1, 0.2, 5, 5, 5.01, 9, 9.5};
     for (int form = 0; form < 2; form++) {
         for (int k = 0; k < 3; k++) {
-            ts_options o;
+            ts_spline_options o;
             th_options_paper(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_MONOTONE;
@@ -833,7 +833,7 @@ static void test_monotone(void)
     /* decreasing, user slopes with wrong signs set to 0 */
     {
         const double xd[] = {0, 1, 2, 3}, fd[] = {3, 2, 2, 0}, ud[] = {1, -1, 5, -2};
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.shape = TS_SHAPE_MONOTONE;
         o.slopes = TS_SLOPES_USER;
@@ -852,14 +852,14 @@ static void test_monotone(void)
     /* constant data: constant curve */
     {
         const double xc[] = {0, 1, 3}, fc[] = {2, 2, 2};
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.shape = TS_SHAPE_MONOTONE;
         ts_spline *s = NULL;
         CHECK(ts_spline_new(xc, fc, 3, &o, &s, NULL) == TS_OK);
         double y;
         if (s) {
-            ts_eval(s, 1.7, NULL, &y);
+            ts_spline_eval(s, 1.7, NULL, &y);
             CHECK_CLOSE(y, 2, 4 * EPS); /* Σ A_l = 1 up to rounding */
             CHECK(ts_spline_certified(s));
         }
@@ -873,7 +873,7 @@ static void test_monotone(void)
 static void test_certify_off(void)
 {
     for (int k = 0; k < 2; k++) {
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.alpha = 0.0001;
         if (k == 0) {
@@ -914,7 +914,7 @@ static void test_horizontal(void)
     const double f[] = {99.9, 0.05, 99.99, 50, 1e-3, 99, 0.5};
     const double al[] = {0.01, 2, 1e-4, 0.5, 10, 0.05};
     for (int form = 0; form < 2; form++) {
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.form = (ts_form)form;
         o.shape = TS_SHAPE_BETWEEN;
@@ -946,11 +946,11 @@ static void test_horizontal(void)
  * (§2), whose minimum over θ is found independently in long double
  * (tests/common/th_gapmin.h, κ = 0 for a constant line): >= 0 everywhere
  * (to the long double rounding of the sum, 1e-17 of the values), > 0 on
- * intervals with neither end on the bound; dense samples of ts_eval inside
- * [0, 1] to ts_eval's rounding (16 ε·max|B|, as dense_check) and >= 0
+ * intervals with neither end on the bound; dense samples of ts_spline_eval inside
+ * [0, 1] to ts_spline_eval's rounding (16 ε·max|B|, as dense_check) and >= 0
  * exactly for the bound 0 (a sum of non-negative products); the report
- * certified with gap 0 at a touching knot; ts_certify agrees. */
-static void touch_one(const double *x, const double *f, size_t np, const ts_options *o,
+ * certified with gap 0 at a touching knot; ts_spline_certify agrees. */
+static void touch_one(const double *x, const double *f, size_t np, const ts_spline_options *o,
                       const char *what)
 {
     ts_status st;
@@ -1002,7 +1002,7 @@ static void touch_one(const double *x, const double *f, size_t np, const ts_opti
         }
         for (int k = 0; k <= 400; k++) {
             double xx = k == 400 ? x[i + 1] : x[i] + (x[i + 1] - x[i]) * k / 400.0, y;
-            ts_eval(s, xx, NULL, &y);
+            ts_spline_eval(s, xx, NULL, &y);
             if (lower)
                 CHECKF(o->lower.c == 0.0 ? y >= 0.0 : y >= o->lower.c - 16 * EPS * sc,
                        "%s: S(%.17g) = %.17g below", what, xx, y);
@@ -1011,8 +1011,8 @@ static void touch_one(const double *x, const double *f, size_t np, const ts_opti
         }
     }
     ts_interval_report reps[16];
-    CHECKF(ts_certify(s, lower ? &o->lower : NULL, upper ? &o->upper : NULL, reps, NULL) == TS_OK,
-           "%s: ts_certify", what);
+    CHECKF(ts_spline_certify(s, lower ? &o->lower : NULL, upper ? &o->upper : NULL, reps, NULL) == TS_OK,
+           "%s: ts_spline_certify", what);
     ts_spline_free(s);
 }
 
@@ -1034,7 +1034,7 @@ static void test_touch_constant(void)
                     for (int data = 0; data < 3; data++) {
                         if (sl == TS_SLOPES_USER || (sl == TS_SLOPES_PERIODIC) != (data == 2))
                             continue;
-                        ts_options o;
+                        ts_spline_options o;
                         th_options_paper(&o);
                         o.form = (ts_form)form;
                         o.shape = shapes[sh];
@@ -1054,7 +1054,7 @@ static void test_touch_constant(void)
                     }
     /* error paths: user slopes that leave the region at a touching knot; a
      * point an ulp outside; a sloped line still may not be touched */
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.shape = TS_SHAPE_BETWEEN;
     o.lower = (ts_line){0, 0};
@@ -1099,10 +1099,10 @@ static void test_touch_constant(void)
 
 /* Monotone samples where data rise by a few ulps after a flat interval
  * (found by fuzz_spline: paper form, x = −20.545, 71.455, 163.455, f = −1.6882786079646144e260
- * twice, then 9e-15 higher: ts_eval_batch at x = 79.12 gave one ulp below f_1).
+ * twice, then 9e-15 higher: ts_spline_eval_batch at x = 79.12 gave one ulp below f_1).
  * Expected, from the monotone promise (docs/method.md §5.5; S non-decreasing
  * for increasing data) applied to the computed samples, as fuzz_spline does:
- * every sample of ts_eval_batch and of ts_eval, in increasing x, is >= the
+ * every sample of ts_spline_eval_batch and of ts_spline_eval, in increasing x, is >= the
  * one before, on every form; the data's magnitudes 1 to 1e300 and rises of
  * 1 to 64 ulps. */
 static void test_monotone_ulps(void)
@@ -1129,7 +1129,7 @@ static void test_monotone_ulps(void)
                     for (int k = 0; k < ulps; k++)
                         f[2] = nextafter(f[2], HUGE_VAL);
                 }
-                ts_options o;
+                ts_spline_options o;
                 th_options_paper(&o);
                 o.form = (ts_form)form;
                 o.shape = TS_SHAPE_MONOTONE;
@@ -1141,15 +1141,15 @@ static void test_monotone_ulps(void)
                 cases++;
                 for (int j = 0; j <= 2000; j++)
                     xq[j] = j == 2000 ? xr[2] : xr[0] + (xr[2] - xr[0]) * j / 2000.0;
-                CHECK(ts_eval_batch(s, 0, xq, 2001, yb, NULL, NULL) == TS_OK);
+                CHECK(ts_spline_eval_batch(s, 0, xq, 2001, yb, NULL, NULL) == TS_OK);
                 double prev = -HUGE_VAL, prevs = -HUGE_VAL;
                 for (int j = 0; j <= 2000; j++) {
                     double y;
-                    ts_eval(s, xq[j], NULL, &y);
+                    ts_spline_eval(s, xq[j], NULL, &y);
                     int ok = yb[j] >= prev && y >= prevs;
                     if (!ok && bad++ < 5)
                         CHECKF(ok, "form %d slopes %d case %d: at x = %.17g batch %.17g after %.17g, "
-                                   "ts_eval %.17g after %.17g", form, sl, v, xq[j], yb[j], prev, y, prevs);
+                                   "ts_spline_eval %.17g after %.17g", form, sl, v, xq[j], yb[j], prev, y, prevs);
                     prev = yb[j];
                     prevs = y;
                 }

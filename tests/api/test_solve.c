@@ -16,7 +16,7 @@
 
 static ts_spline *fit(const double *x, const double *f, size_t n, ts_form form)
 {
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.form = form;
     ts_spline *s = NULL;

@@ -46,14 +46,14 @@ enum { NSPL = 3, NCRV = 2 };
 typedef struct ref_spline {
     ts_spline *s;
     double x[NP], f[NP];
-    ts_options opt;
+    ts_spline_options opt;
     double q[NQ], qs[NQ];              /* queries; sorted copy */
     int sidx[NQ];                      /* q[sidx[j]] = qs[j] */
     ts_status st[NQ];
-    double y[NQ], dy[NQ], d2y[NQ];     /* ts_eval_deriv */
-    double yb[3][NQ], ybs[3][NQ];      /* ts_eval_batch unsorted / sorted, deriv 0..2 */
+    double y[NQ], dy[NQ], d2y[NQ];     /* ts_spline_eval_deriv */
+    double yb[3][NQ], ybs[3][NQ];      /* ts_spline_eval_batch unsorted / sorted, deriv 0..2 */
     ts_status stb[3], stbs[3];
-    double ia[NQ / 2];                 /* ts_integral of (q[2j], q[2j+1]) */
+    double ia[NQ / 2];                 /* ts_spline_integral of (q[2j], q[2j+1]) */
     ts_status sti[NQ / 2];
     ts_interval_report rep[NP];
     ts_interval_report cert[NP];
@@ -104,7 +104,7 @@ static void make_splines(void)
             x += 0.05 + th_unit();
             R->x[i] = x;
         }
-        ts_options_init(&R->opt);
+        ts_spline_options_init(&R->opt);
         R->lo = (ts_line){0.01, -3.0};
         R->up = (ts_line){0.01, 3.0};
         if (k == 0) { /* paper form, positive, data touching zero */
@@ -159,16 +159,16 @@ static void make_splines(void)
         for (int j = 0; j < NQ; j++)
             R->qs[j] = R->q[R->sidx[j]];
         for (int j = 0; j < NQ; j++)
-            R->st[j] = ts_eval_deriv(R->s, R->q[j], NULL, &R->y[j], &R->dy[j], &R->d2y[j]);
+            R->st[j] = ts_spline_eval_deriv(R->s, R->q[j], NULL, &R->y[j], &R->dy[j], &R->d2y[j]);
         for (int d = 0; d < 3; d++) {
-            R->stb[d] = ts_eval_batch(R->s, d, R->q, NQ, R->yb[d], NULL, NULL);
-            R->stbs[d] = ts_eval_batch(R->s, d, R->qs, NQ, R->ybs[d], NULL, NULL);
+            R->stb[d] = ts_spline_eval_batch(R->s, d, R->q, NQ, R->yb[d], NULL, NULL);
+            R->stbs[d] = ts_spline_eval_batch(R->s, d, R->qs, NQ, R->ybs[d], NULL, NULL);
         }
         for (int j = 0; j < NQ / 2; j++)
-            R->sti[j] = ts_integral(R->s, R->q[2 * j], R->q[2 * j + 1], &R->ia[j]);
+            R->sti[j] = ts_spline_integral(R->s, R->q[2 * j], R->q[2 * j + 1], &R->ia[j]);
         for (size_t i = 0; i + 1 < NP; i++)
             CHECK(ts_spline_report(R->s, i, &R->rep[i]) == TS_OK);
-        R->stc = ts_certify(R->s, &R->lo, &R->up, R->cert, NULL);
+        R->stc = ts_spline_certify(R->s, &R->lo, &R->up, R->cert, NULL);
     }
 }
 
@@ -262,27 +262,27 @@ static void *worker(void *arg)
             for (int jj = 0; jj < NQ; jj++) {
                 int j = order[jj];
                 double y, dy, d2y;
-                ts_status st = ts_eval_deriv(R->s, R->q[j], cp, &y, &dy, &d2y);
+                ts_status st = ts_spline_eval_deriv(R->s, R->q[j], cp, &y, &dy, &d2y);
                 o->calls++;
                 if (st != R->st[j] || !same(y, R->y[j]) || !same(dy, R->dy[j]) ||
                     !same(d2y, R->d2y[j]))
                     o->eval_bad++;
-                if (jj % 4 == 0) { /* ts_eval (value only) agrees too */
+                if (jj % 4 == 0) { /* ts_spline_eval (value only) agrees too */
                     double v;
-                    if (ts_eval(R->s, R->q[j], cp, &v) != R->st[j] || !same(v, R->y[j]))
+                    if (ts_spline_eval(R->s, R->q[j], cp, &v) != R->st[j] || !same(v, R->y[j]))
                         o->eval_bad++;
                 }
             }
             for (int d = 0; d < 3; d++) {
                 ts_error e;
-                ts_status st = ts_eval_batch(R->s, d, R->q, NQ, yb, cp, &e);
+                ts_status st = ts_spline_eval_batch(R->s, d, R->q, NQ, yb, cp, &e);
                 if (st != R->stb[d] || memcmp(yb, R->yb[d], sizeof yb) != 0)
                     o->batch_bad++;
-                st = ts_eval_batch(R->s, d, R->qs, NQ, yb, cp, &e);
+                st = ts_spline_eval_batch(R->s, d, R->qs, NQ, yb, cp, &e);
                 if (st != R->stbs[d] || memcmp(yb, R->ybs[d], sizeof yb) != 0)
                     o->batch_bad++;
                 if (round == 0) { /* threads inside threads */
-                    st = ts_eval_batch_mt(R->s, d, R->q, NQ, yb, 2, &e);
+                    st = ts_spline_eval_batch_mt(R->s, d, R->q, NQ, yb, 2, &e);
                     if (st != R->stb[d] || memcmp(yb, R->yb[d], sizeof yb) != 0)
                         o->mt_bad++;
                 }
@@ -290,14 +290,14 @@ static void *worker(void *arg)
             }
             for (int j = 0; j < NQ / 2; j++) {
                 double v;
-                ts_status st = ts_integral(R->s, R->q[2 * j], R->q[2 * j + 1], &v);
+                ts_status st = ts_spline_integral(R->s, R->q[2 * j], R->q[2 * j + 1], &v);
                 if (st != R->sti[j] || !same(v, R->ia[j]))
                     o->integral_bad++;
             }
             for (size_t i = 0; i + 1 < NP; i++)
                 if (ts_spline_report(R->s, i, &rep) != TS_OK || !report_same(&rep, &R->rep[i]))
                     o->report_bad++;
-            if (ts_certify(R->s, &R->lo, &R->up, cert, NULL) != R->stc)
+            if (ts_spline_certify(R->s, &R->lo, &R->up, cert, NULL) != R->stc)
                 o->certify_bad++;
             for (size_t i = 0; i + 1 < NP; i++)
                 if (!report_same(&cert[i], &R->cert[i]))

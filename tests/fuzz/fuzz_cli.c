@@ -245,7 +245,7 @@ static void check_opts(const cli_opts *o)
                    "an option of fit taken by certify");
 }
 
-static void check_ts_options(const cli_opts *o, const ts_options *opt)
+static void check_ts_spline_options(const cli_opts *o, const ts_spline_options *opt)
 {
     FUZZ_CHECK(fin(opt->alpha) && opt->alpha > 0.0 && fin(opt->beta) && opt->beta >= 0.0 &&
                    fin(opt->margin) && opt->margin > 0.0,
@@ -309,7 +309,7 @@ static int parse_once(cli_cmd cmd, int argc, char **argv, FILE *f, captured *msg
     capture_begin(msg);
     int rc = cli_parse(cmd, argc, argv, &o);
     int rc2 = CLI_OK;
-    ts_options opt;
+    ts_spline_options opt;
     ts_curve_options co;
     if (rc == CLI_OK) {
         if (cmd == CLI_CURVE)
@@ -327,7 +327,7 @@ static int parse_once(cli_cmd cmd, int argc, char **argv, FILE *f, captured *msg
         if (rc2 == CLI_OK && cmd == CLI_CURVE)
             check_curve_options(&o, &co);
         else if (rc2 == CLI_OK)
-            check_ts_options(&o, &opt);
+            check_ts_spline_options(&o, &opt);
     }
     cli_opts_free(&o);
     FUZZ_CHECK(!o.alphas && !o.betas && !o.at_list && !o.xcol && !o.ycol, "cli_opts_free");

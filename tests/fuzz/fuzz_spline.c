@@ -46,7 +46,7 @@ static int documented(ts_status st)
     }
 }
 
-static void check_spline(const ts_spline *s, const ts_options *o)
+static void check_spline(const ts_spline *s, const ts_spline_options *o)
 {
     size_t n = ts_spline_intervals(s);
     const double *x = ts_spline_x(s), *f = ts_spline_f(s);
@@ -63,11 +63,11 @@ static void check_spline(const ts_spline *s, const ts_options *o)
     }
     q[m++] = x[n];
     ts_error e;
-    ts_status st = ts_eval_batch(s, 0, q, m, yb, NULL, &e);
+    ts_status st = ts_spline_eval_batch(s, 0, q, m, yb, NULL, &e);
     FUZZ_CHECK(st == TS_OK, "batch: %s at %zu", ts_strerror(st), e.index);
     for (size_t i = 0; i <= n; i++) {
         double y, bm = Bmax[i < n ? i : n - 1];
-        ts_eval(s, x[i], NULL, &y);
+        ts_spline_eval(s, x[i], NULL, &y);
         FUZZ_CHECK(fabs(y - f[i]) <= 2 * DBL_EPSILON * bm, "knot %zu: %.17g vs %.17g", i, y, f[i]);
     }
     ts_shape shape = ts_spline_shape(s);
@@ -75,7 +75,7 @@ static void check_spline(const ts_spline *s, const ts_options *o)
     for (size_t j = 0; j < m; j++) {
         size_t i = j / PER < n ? j / PER : n - 1;
         double y, tol = 8 * DBL_EPSILON * Bmax[i] + 64 * DBL_TRUE_MIN;
-        ts_eval(s, q[j], NULL, &y);
+        ts_spline_eval(s, q[j], NULL, &y);
         FUZZ_CHECK(fabs(y - yb[j]) <= tol || (isnan(y) && isnan(yb[j])),
                    "batch %.17g vs scalar %.17g at x = %.17g", yb[j], y, q[j]);
         if (!certified)
@@ -104,23 +104,23 @@ static void check_spline(const ts_spline *s, const ts_options *o)
                        "monotone: %.17g then %.17g at x = %.17g", yb[j - 1], yb[j], q[j]);
     }
     double I;
-    FUZZ_CHECK(ts_integral(s, x[0], x[n], &I) == TS_OK && !isnan(I), "integral %g", I);
-    FUZZ_CHECK(ts_integral(s, q[m / 3], q[m / 2], &I) == TS_OK && !isnan(I), "integral %g", I);
+    FUZZ_CHECK(ts_spline_integral(s, x[0], x[n], &I) == TS_OK && !isnan(I), "integral %g", I);
+    FUZZ_CHECK(ts_spline_integral(s, q[m / 3], q[m / 2], &I) == TS_OK && !isnan(I), "integral %g", I);
     if (shape == TS_SHAPE_ABOVE || shape == TS_SHAPE_BELOW || shape == TS_SHAPE_BETWEEN) {
         ts_interval_report reps[NMAX];
         const ts_line *lo = shape != TS_SHAPE_BELOW ? &o->lower : NULL;
         const ts_line *hi = shape != TS_SHAPE_ABOVE ? &o->upper : NULL;
-        st = ts_certify(s, lo, hi, reps, &e);
+        st = ts_spline_certify(s, lo, hi, reps, &e);
         FUZZ_CHECK(st == TS_OK || st == TS_ERR_VIOLATED, "certify: %s", ts_strerror(st));
-        FUZZ_CHECK(!certified || st == TS_OK, "certified spline fails ts_certify at %zu", e.index);
+        FUZZ_CHECK(!certified || st == TS_OK, "certified spline fails ts_spline_certify at %zu", e.index);
     }
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     fuzz_in in = {data, size};
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     unsigned b0 = fuzz_byte(&in), b1 = fuzz_byte(&in);
     o.form = (ts_form)(b0 % 3);
     o.slopes = (ts_slopes)(b0 / 3 % 8);

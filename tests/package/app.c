@@ -10,8 +10,8 @@
 int main(void)
 {
     static const double x[2] = {0.0, 1.0}, f[2] = {0.0, 1.0}, d[2] = {1.0, 1.0};
-    ts_options opt;
-    ts_options_init(&opt);
+    ts_spline_options opt;
+    ts_spline_options_init(&opt);
     opt.form = TS_FORM_PAPER;
     opt.slopes = TS_SLOPES_USER;
     opt.user_slopes = d;
@@ -32,9 +32,9 @@ int main(void)
     static const double q[3] = {0.5, 1.0 / 3.0, 0.25};
     for (int i = 0; i < 3; i++) {
         double y, dy;
-        st = ts_eval_deriv(s, q[i], NULL, &y, &dy, NULL);
+        st = ts_spline_eval_deriv(s, q[i], NULL, &y, &dy, NULL);
         if (st != TS_OK) {
-            fprintf(stderr, "app: ts_eval_deriv: %s\n", ts_strerror(st));
+            fprintf(stderr, "app: ts_spline_eval_deriv: %s\n", ts_strerror(st));
             ts_spline_free(s);
             return 1;
         }

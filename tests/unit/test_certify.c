@@ -1,6 +1,6 @@
 /* Certificates (docs/method.md §2, §5): ts__trig_min against closed forms, an mpmath
  * reference (tests/ref/certify_trigmin_ref.py) and brute force; interval
- * gaps against dense sampling of ts_eval; ts_certify, ts_spline_report,
+ * gaps against dense sampling of ts_spline_eval; ts_spline_certify, ts_spline_report,
  * ts_spline_certified and their error paths. */
 #include "th.h"
 #include "th_options.h"
@@ -190,20 +190,20 @@ static void test_brute(void)
     }
 }
 
-/* ---- interval gaps, ts_certify, reports ---------------------------- */
+/* ---- interval gaps, ts_spline_certify, reports ---------------------------- */
 
 static const double X3[] = {0, 0.4, 2, 3, 5}, F3[] = {1.2, 0.5, 2, 5, 0.5};
 
 static double line_at(const ts_line *l, double x) { return l->m * x + l->c; }
 
-/* dense minimum of sign·(S − L) over interval i with M+1 samples of ts_eval */
+/* dense minimum of sign·(S − L) over interval i with M+1 samples of ts_spline_eval */
 static double dense_gap(const ts_spline *s, size_t i, const ts_line *ln, int sign, int M)
 {
     const double *x = ts_spline_x(s);
     double mn = TH_INF;
     for (int j = 0; j <= M; j++) {
         double xx = j == M ? x[i + 1] : x[i] + (x[i + 1] - x[i]) * j / M, y;
-        ts_eval(s, xx, NULL, &y);
+        ts_spline_eval(s, xx, NULL, &y);
         double g = sign * (y - line_at(ln, xx));
         mn = g < mn ? g : mn;
     }
@@ -212,7 +212,7 @@ static double dense_gap(const ts_spline *s, size_t i, const ts_line *ln, int sig
 
 /* Tolerances for a certificate against M+1 dense samples of interval i:
  * lower side te = 256 ε·scale (certify.c guard, typically ≤ 64 ε·scale;
- * ts_eval 16 ε·M; θ = (x − x_i)(π/2)/h rounded ≤ 3 ε relative, times
+ * ts_spline_eval 16 ε·M; θ = (x − x_i)(π/2)/h rounded ≤ 3 ε relative, times
  * |dS/dθ| ≤ 18 max|B|), upper side te + ½|g''|(Δ/2)². */
 static void gap_tols(const ts_spline *s, size_t i, const ts_line *ln, int M, double *te,
                      double *ts)
@@ -235,7 +235,7 @@ static void test_gaps_vs_dense(void)
     ts_line up = {1.0, 2.5}, lo = {-0.5, -1.0};
     for (int form = 0; form < 2; form++) {
         for (int r = 0; r < 6; r++) {
-            ts_options o;
+            ts_spline_options o;
             th_options_paper(&o);
             o.form = (ts_form)form;
             o.alpha = r < 3 ? 0.02 * (r + 1) : 1.0 + r;
@@ -257,7 +257,7 @@ static void test_gaps_vs_dense(void)
                     /* the location is inside the interval and attains the gap */
                     double y;
                     CHECK(at >= X3[i] && at <= X3[i + 1]);
-                    ts_eval(s, at, NULL, &y);
+                    ts_spline_eval(s, at, NULL, &y);
                     CHECK_CLOSE(sign * (y - line_at(ln, at)), g, te + 1e-9 * fabs(g));
                 }
             }
@@ -268,7 +268,7 @@ static void test_gaps_vs_dense(void)
 
 static void test_certify_api(void)
 {
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.alpha = 0.001; /* small a: Table 3 overshoots y = x + 2.5 (docs/method.md §5.3) */
     ts_spline *s = NULL;
@@ -278,7 +278,7 @@ static void test_certify_api(void)
         return;
     ts_line up = {1.0, 2.5}, lo = {0.0, -1000.0}, bad = {TH_NAN, 0.0}, bad2 = {0.0, TH_INF};
     ts_interval_report rep[4];
-    ts_status st = ts_certify(s, NULL, &up, rep, &e);
+    ts_status st = ts_spline_certify(s, NULL, &up, rep, &e);
     CHECK(st == TS_ERR_VIOLATED);
     CHECK(e.status == TS_ERR_VIOLATED && e.where == TS_WHERE_INTERVAL);
     /* first violating interval: the first whose dense gap is negative */
@@ -298,15 +298,15 @@ static void test_certify_api(void)
         CHECK(rep[i].a == 0.001);
     }
     /* a far line: OK; reports may be NULL; err may be NULL */
-    CHECK(ts_certify(s, &lo, NULL, NULL, &e) == TS_OK && e.status == TS_OK &&
+    CHECK(ts_spline_certify(s, &lo, NULL, NULL, &e) == TS_OK && e.status == TS_OK &&
           e.index == TS_NO_INDEX);
-    CHECK(ts_certify(s, &lo, NULL, NULL, NULL) == TS_OK);
-    CHECK(ts_certify(s, &lo, &up, NULL, NULL) == TS_ERR_VIOLATED);
+    CHECK(ts_spline_certify(s, &lo, NULL, NULL, NULL) == TS_OK);
+    CHECK(ts_spline_certify(s, &lo, &up, NULL, NULL) == TS_ERR_VIOLATED);
     /* errors */
-    CHECK(ts_certify(NULL, &lo, &up, NULL, &e) == TS_ERR_NULL && e.status == TS_ERR_NULL);
-    CHECK(ts_certify(s, NULL, NULL, NULL, &e) == TS_ERR_NULL && e.index == TS_NO_INDEX);
-    CHECK(ts_certify(s, &bad, NULL, rep, &e) == TS_ERR_NONFINITE && e.status == TS_ERR_NONFINITE);
-    CHECK(ts_certify(s, &lo, &bad2, rep, &e) == TS_ERR_NONFINITE);
+    CHECK(ts_spline_certify(NULL, &lo, &up, NULL, &e) == TS_ERR_NULL && e.status == TS_ERR_NULL);
+    CHECK(ts_spline_certify(s, NULL, NULL, NULL, &e) == TS_ERR_NULL && e.index == TS_NO_INDEX);
+    CHECK(ts_spline_certify(s, &bad, NULL, rep, &e) == TS_ERR_NONFINITE && e.status == TS_ERR_NONFINITE);
+    CHECK(ts_spline_certify(s, &lo, &bad2, rep, &e) == TS_ERR_NONFINITE);
 
     /* report / certified of a TS_SHAPE_NONE spline: nothing promised */
     ts_interval_report r;
@@ -330,7 +330,7 @@ static void test_geometric_gap(void)
     ts_line lines[3] = {{1.0, 2.5}, {-0.5, -1.0}, {0.0, 0.0}};
     const double X3g[] = {0, 0.4, 2, 3, 5}, F3g[] = {1.2, 0.5, 2, 5, 0.5};
     for (int r = 0; r < 3; r++) {
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.form = TS_FORM_GEOMETRIC;
         o.alpha = 0.45 + r;
@@ -368,7 +368,7 @@ static void test_geometric_gap(void)
         ts_spline_free(s);
     }
     /* a geometric shape spline is certified, with exact line conditions */
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.form = TS_FORM_GEOMETRIC;
     o.shape = TS_SHAPE_BELOW;

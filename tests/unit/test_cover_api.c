@@ -52,7 +52,7 @@ static void test_null_accessors(void)
     CHECK(ts_spline_form(NULL) == TS_FORM_PAPER);
     CHECK(ts_spline_shape(NULL) == TS_SHAPE_NONE);
     CHECK(ts_spline_extrapolation(NULL) == TS_EXTRAP_ERROR);
-    ts_options_init(NULL); /* a no-op, no crash */
+    ts_spline_options_init(NULL); /* a no-op, no crash */
     double a = 0.0;
     CHECK(ts_curve_params(NULL, 0, &a, NULL) == TS_ERR_NULL && isnan(a));
 }
@@ -101,10 +101,10 @@ static void check_flat(const ts_spline *s, size_t np)
     size_t n = np - 1;
     double y = 0.0, I = 0.0;
     CHECK(ts_spline_intervals(s) == n);
-    CHECK(ts_eval(s, (double)n, NULL, &y) == TS_OK && y == 3.0);
-    CHECK(ts_eval(s, 0.5 * (double)n + 0.25, NULL, &y) == TS_OK && y == 3.0);
+    CHECK(ts_spline_eval(s, (double)n, NULL, &y) == TS_OK && y == 3.0);
+    CHECK(ts_spline_eval(s, 0.5 * (double)n + 0.25, NULL, &y) == TS_OK && y == 3.0);
     /* sum of n terms 3: exact in double (3n < 2^53) */
-    CHECK(ts_integral(s, 0.0, (double)n, &I) == TS_OK);
+    CHECK(ts_spline_integral(s, 0.0, (double)n, &I) == TS_OK);
     CHECK_CLOSE(I, 3.0 * (double)n, 1e-12 * 3.0 * (double)n); /* n additions of ~1 ulp */
 }
 
@@ -168,8 +168,8 @@ static void test_alpha_beta_offenders(void)
         {{1, 1, 1, DBL_MAX}, {0, 0, 0, DBL_MAX}, TS_ERR_BETA, 3},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
-        ts_options o;
-        ts_options_init(&o);
+        ts_spline_options o;
+        ts_spline_options_init(&o);
         o.alphas = cases[k].al;
         o.n_alphas = 4;
         o.betas = cases[k].be;
@@ -281,7 +281,7 @@ static void test_curve_subnormal_step(void)
     ts_curve_free(c);
 }
 
-/* ts_certify with both lines where the lower one fails: the upper gap is
+/* ts_spline_certify with both lines where the lower one fails: the upper gap is
  * still reported.  f = 0, 1, 0 on x = 0, 1, 2 (paper form, no shape): S
  * interpolates 0 at x = 0 and 2, below y = 0.5 on both intervals.  S is a
  * convex combination of its control values (A_l >= 0, sum 1); d_1 = 0 and
@@ -298,7 +298,7 @@ static void test_certify_both_lines(void)
     ts_line lo = {0.0, 0.5}, hi = {0.0, 10.0};
     ts_interval_report r[2];
     ts_error e;
-    CHECK(ts_certify(s, &lo, &hi, r, &e) == TS_ERR_VIOLATED && e.index == 0);
+    CHECK(ts_spline_certify(s, &lo, &hi, r, &e) == TS_ERR_VIOLATED && e.index == 0);
     for (int i = 0; i < 2; i++) {
         CHECK(r[i].certified == 0 && r[i].has_lower && r[i].has_upper);
         CHECK(r[i].gap_lower == -0.5); /* at the knot value 0: exact */
@@ -306,7 +306,7 @@ static void test_certify_both_lines(void)
     }
     CHECK(ts_spline_certified(s) == 0); /* no shape: nothing promised */
     /* only an upper line: certified (max S = 1 < 10), its gap 9 */
-    CHECK(ts_certify(s, NULL, &hi, r, &e) == TS_OK && r[0].certified && !r[0].has_lower);
+    CHECK(ts_spline_certify(s, NULL, &hi, r, &e) == TS_OK && r[0].certified && !r[0].has_lower);
     ts_spline_free(s);
 }
 
@@ -316,8 +316,8 @@ static void test_certify_both_lines(void)
 static void test_report_upper_uncertified_build(void)
 {
     static const double x[4] = {0, 1, 3, 4}, f[4] = {1, 1, 1, 1};
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = TS_FORM_GEOMETRIC;
     o.shape = TS_SHAPE_BELOW;
     o.upper.m = 0.0;

@@ -59,7 +59,7 @@ static void root_isolation(void)
 static void monotone_polygon(void)
 {
     const double x[3] = {0, 1, 2}, f[3] = {0, 1, 2};
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.shape = TS_SHAPE_MONOTONE;
     ts_spline *s = NULL;
@@ -94,7 +94,7 @@ static void monotone_polygon(void)
 static void huge_margin(void)
 {
     const double x[3] = {0, 1, 2}, f[3] = {1, 2, 3}, d[3] = {1, -1e301, 1};
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.shape = TS_SHAPE_ABOVE;
     o.lower.m = 1;
@@ -118,7 +118,7 @@ static void huge_margin(void)
     ts_spline_free(s);
 }
 
-static ts_status build(const double *x, const double *f, size_t np, const ts_options *o,
+static ts_status build(const double *x, const double *f, size_t np, const ts_spline_options *o,
                        ts_error *e)
 {
     ts_spline *s = NULL;
@@ -134,7 +134,7 @@ static ts_status build(const double *x, const double *f, size_t np, const ts_opt
  * arithmetic (worked out in its comment), so TS_ERR_SIDE is right. */
 static void side_edges(void)
 {
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.shape = TS_SHAPE_ABOVE;
     ts_error e;
@@ -189,7 +189,7 @@ static void rule_zero_gap(void)
     }
     f[5] = 0.1 * 5;
     CHECK((long double)f[5] < (long double)0.1 * 5);
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.shape = TS_SHAPE_BELOW;
     o.upper.m = 0.1;
@@ -205,7 +205,7 @@ static void rule_zero_gap(void)
 static void margins_at_the_top(void)
 {
     const double x[3] = {0, 1, 2}, f[3] = {1, 2, 3}, al[2] = {DBL_MAX, DBL_MAX}, t[2] = {1e300, 1e300};
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.shape = TS_SHAPE_POSITIVE;
     o.alphas = al;
@@ -235,7 +235,7 @@ static void periodic_zero(void)
         x[k] = k;
         f[k] = k == 0 || k == N - 1 ? 0.0 : 2.0 + sin(0.01 * k);
     }
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.shape = TS_SHAPE_POSITIVE;
     o.slopes = TS_SLOPES_PERIODIC;
@@ -260,7 +260,7 @@ static void batch_blocks(void)
         x[k] = 0.1 * k;
         f[k] = 0.5 * x[k] + 1.5 + sin(x[k]);
     }
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.shape = TS_SHAPE_ABOVE;
     o.lower.m = 0.5;

@@ -8,9 +8,9 @@
  * Expected values: the slope formulas of docs/method.md §6 re-derived here;
  * knot values f_i; closed forms of the paper form at a knot
  * (S'(x_i) = d_i / a_i: docs/method.md §2, 3w(B1 − B0) with B1 − B0 = k d,
- * k = 2h/(3π a), w = π/(2h)); the plain path ts_eval_deriv (checked against
+ * k = 2h/(3π a), w = π/(2h)); the plain path ts_spline_eval_deriv (checked against
  * the mpmath reference in test_core.c) for the kernels, with the tolerances
- * derived in tests/unit/test_fast.c; single-threaded ts_eval_batch for the
+ * derived in tests/unit/test_fast.c; single-threaded ts_spline_eval_batch for the
  * threaded one (bitwise: each query runs the same instructions wherever
  * it sits, docs/design.md).  Each tolerance is stated where it is used. */
 #define _GNU_SOURCE
@@ -38,7 +38,7 @@ static th_rng rng = TH_RNG_INIT(0x243F6A8885A308D3u);
 static ts_spline *make(const double *x, const double *f, size_t np, ts_form form, ts_slopes sl,
                        ts_extrap ex)
 {
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.form = form;
     o.slopes = sl;
@@ -178,8 +178,8 @@ static void integral_short(void)
         if (!s)
             continue;
         double a = 2.0, b = nextafter(2.0, 4.0), v = 0, w = 0;
-        CHECK(ts_integral(s, a, b, &v) == TS_OK);
-        CHECK(ts_integral(s, b, a, &w) == TS_OK);
+        CHECK(ts_spline_integral(s, a, b, &v) == TS_OK);
+        CHECK(ts_spline_integral(s, b, a, &w) == TS_OK);
         double want = 3.0 * (b - a);
         CHECKF(fabs(v - want) <= 16 * EPS * want, "form %d: %.17g want %.17g", form, v, want);
         CHECK(w == -v);
@@ -224,8 +224,8 @@ static void batch_mt(void)
         size_t m = ms[c];
         for (int deriv = 0; deriv <= 2; deriv++) {
             ts_error e, e1;
-            CHECK(ts_eval_batch(s, deriv, q, m, r, NULL, &e1) == TS_OK);
-            CHECK(ts_eval_batch_mt(s, deriv, q, m, y, th[c], &e) == TS_OK && e.status == TS_OK);
+            CHECK(ts_spline_eval_batch(s, deriv, q, m, r, NULL, &e1) == TS_OK);
+            CHECK(ts_spline_eval_batch_mt(s, deriv, q, m, y, th[c], &e) == TS_OK && e.status == TS_OK);
             CHECKF(!memcmp(y, r, m * sizeof *y), "%u threads, %zu queries, deriv %d: differs",
                    th[c], m, deriv);
             int knots_ok = 1; /* knot values f_i exactly */
@@ -239,17 +239,17 @@ static void batch_mt(void)
     double keep = q[bad];
     q[bad] = X[n] + 1.0;
     ts_error e;
-    CHECK(ts_eval_batch_mt(s, 1, q, m, y, 2, &e) == TS_ERR_DOMAIN);
+    CHECK(ts_spline_eval_batch_mt(s, 1, q, m, y, 2, &e) == TS_ERR_DOMAIN);
     CHECKF(e.status == TS_ERR_DOMAIN && e.index == bad && e.where == TS_WHERE_QUERY, "index %zu",
            e.index);
     CHECK(isnan(y[bad]) && !isnan(y[bad - 1]) && !isnan(y[bad + 1]));
     q[bad] = keep;
     /* bad arguments with enough queries for threads */
-    CHECK(ts_eval_batch_mt(s, 0, NULL, m, y, 2, &e) == TS_ERR_NULL && e.status == TS_ERR_NULL);
-    CHECK(ts_eval_batch_mt(s, 0, q, m, NULL, 2, &e) == TS_ERR_NULL);
-    CHECK(ts_eval_batch_mt(s, -1, q, m, y, 2, &e) == TS_ERR_OPTION && isnan(y[0]) &&
+    CHECK(ts_spline_eval_batch_mt(s, 0, NULL, m, y, 2, &e) == TS_ERR_NULL && e.status == TS_ERR_NULL);
+    CHECK(ts_spline_eval_batch_mt(s, 0, q, m, NULL, 2, &e) == TS_ERR_NULL);
+    CHECK(ts_spline_eval_batch_mt(s, -1, q, m, y, 2, &e) == TS_ERR_OPTION && isnan(y[0]) &&
           isnan(y[m - 1]));
-    CHECK(ts_eval_batch_mt(s, -3, q, m, y, 2, &e) == TS_ERR_OPTION && e.index == TS_NO_INDEX);
+    CHECK(ts_spline_eval_batch_mt(s, -3, q, m, y, 2, &e) == TS_ERR_OPTION && e.index == TS_NO_INDEX);
 #if defined(__GLIBC__)
     /* a thread that cannot be created runs on the caller's thread: make
      * every pthread_create fail (a stack larger than the address space) */
@@ -264,8 +264,8 @@ static void batch_mt(void)
             if (!fails)
                 pthread_join(t, NULL);
             CHECKF(fails, "pthread_create with a 2^60-byte stack succeeded");
-            CHECK(ts_eval_batch(s, 2, q, m, r, NULL, NULL) == TS_OK);
-            CHECK(ts_eval_batch_mt(s, 2, q, m, y, 2, &e) == TS_OK);
+            CHECK(ts_spline_eval_batch(s, 2, q, m, r, NULL, NULL) == TS_OK);
+            CHECK(ts_spline_eval_batch_mt(s, 2, q, m, y, 2, &e) == TS_OK);
             CHECK(!memcmp(y, r, m * sizeof *y));
             pthread_setattr_default_np(&def);
         }
@@ -316,7 +316,7 @@ static int flat_interval(const ts_spline *s, size_t i)
     return F[i] == F[i + 1] && D[i] == 0.0 && D[i + 1] == 0.0;
 }
 
-/* y[0..m) of kernel isa against ts_eval_deriv, tolerances of test_fast.c;
+/* y[0..m) of kernel isa against ts_spline_eval_deriv, tolerances of test_fast.c;
  * on flat intervals the value f exactly and derivatives 0. */
 static void against_plain(const ts_spline *s, int isa, int deriv, const double *q, size_t m,
                           const double *y, const char *what)
@@ -328,7 +328,7 @@ static void against_plain(const ts_spline *s, int isa, int deriv, const double *
     size_t first = 0;
     for (size_t j = 0; j < m; j++) {
         double o[3];
-        CHECK(ts_eval_deriv(s, q[j], NULL, &o[0], &o[1], &o[2]) == TS_OK);
+        CHECK(ts_spline_eval_deriv(s, q[j], NULL, &o[0], &o[1], &o[2]) == TS_OK);
         size_t i = interval_of(X, n, q[j]);
         double h = X[i + 1] - X[i], unit;
         if (geo) {
@@ -477,7 +477,7 @@ static void nearly_flat(void)
     for (int j = 0; j < 64; j++)
         q[j] = (j + 0.5) / 64.0;
     for (int c = 0; c < 4; c++) {
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.form = c == 0 ? TS_FORM_PAPER : TS_FORM_GEOMETRIC;
         o.slopes = TS_SLOPES_USER;
@@ -526,7 +526,7 @@ static void geometric_tiny(void)
     /* a = α: 1, the raised 4/(3π) of the shape schemes, the least allowed */
     const double alphas[3] = {1.0, TS_GEOMETRIC_A_RAISE, TS_GEOMETRIC_A_MIN};
     for (int ia = 0; ia < 3; ia++) {
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.form = TS_FORM_GEOMETRIC;
         o.alpha = alphas[ia];
@@ -543,7 +543,7 @@ static void geometric_tiny(void)
         }
         for (int j = 0; j < 8; j++) {
             double v, dv;
-            CHECK(ts_eval_deriv(s, q[j], NULL, &v, &dv, NULL) == TS_OK);
+            CHECK(ts_spline_eval_deriv(s, q[j], NULL, &v, &dv, NULL) == TS_OK);
             CHECKF(fabs(v - f[1]) <= EPS * fabs(f[1]), "S(%g) = %.17g", q[j], v);
             CHECKF(fabs(dv - D[1]) <= 16 * EPS * fabs(D[1]), "S'(%g) = %.17g, d_1 = %.17g", q[j],
                    dv, D[1]);
@@ -586,9 +586,9 @@ static void out_of_range(void)
                                      (isinf(xq) && ex != TS_EXTRAP_CLAMP)
                                  ? TS_ERR_DOMAIN
                                  : TS_OK;
-            CHECK(ts_eval(s, xq, NULL, &v) == want);
-            CHECK(ts_eval_deriv(s, xq, NULL, &v2, &dv, NULL) == want);
-            CHECK(ts_eval_batch(s, 0, &xq, 1, &yb, NULL, NULL) == want);
+            CHECK(ts_spline_eval(s, xq, NULL, &v) == want);
+            CHECK(ts_spline_eval_deriv(s, xq, NULL, &v2, &dv, NULL) == want);
+            CHECK(ts_spline_eval_batch(s, 0, &xq, 1, &yb, NULL, NULL) == want);
             if (want != TS_OK) {
                 CHECK(isnan(v) && isnan(v2) && isnan(dv) && isnan(yb));
                 continue;
@@ -606,8 +606,8 @@ static void out_of_range(void)
         }
         /* only the derivative asked for (no value pointer): the same number */
         double dv1 = 0, dv2 = 0, v = 0;
-        CHECK(ts_eval_deriv(s, 1.5, NULL, &v, &dv1, NULL) == TS_OK);
-        CHECK(ts_eval_deriv(s, 1.5, NULL, NULL, &dv2, NULL) == TS_OK && dv1 == dv2);
+        CHECK(ts_spline_eval_deriv(s, 1.5, NULL, &v, &dv1, NULL) == TS_OK);
+        CHECK(ts_spline_eval_deriv(s, 1.5, NULL, NULL, &dv2, NULL) == TS_OK && dv1 == dv2);
         ts_spline_free(s);
     }
 }

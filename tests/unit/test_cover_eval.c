@@ -4,7 +4,7 @@
  *    steps (the cap TS_GEO_PASSES is 16), the root's residual is rounding,
  *    and the start's model derivative is positive where it divides;
  *  - solve_worst: the slowest point of that grid (a_i = TS_GEOMETRIC_A_MIN,
- *    u near 1/2: 9 steps) through ts_eval and every kernel, against a
+ *    u near 1/2: 9 steps) through ts_spline_eval and every kernel, against a
  *    long-double solve;
  *  - huge_a: a_i = 1e300 at a knot (u = 0: Halley's denominator 18κ²
  *    underflows to 0, the guard keeps 0/0 and FE_INVALID away);
@@ -12,7 +12,7 @@
  *    iterate at the cap is u/(3κ) to a few 2^-1074/κ);
  *  - pick, mt_threads: the kernel choice for every CPU-feature combination
  *    and the thread count for every processor count;
- *  - entry_points: the NULL and NaN cases of ts_eval and ts_eval_deriv;
+ *  - entry_points: the NULL and NaN cases of ts_spline_eval and ts_spline_eval_deriv;
  *  - interval_eval: ts__interval_eval inside an interval with every want.
  * Expected values come from the definitions re-derived here (X̂ of
  * docs/method.md §4 with libm's sine and cosine in long double; the
@@ -136,7 +136,7 @@ static void solve_worst(void)
     double phi;
     CHECK(root_steps(u, kappa_max(), &phi) == 9);
     const double x[2] = {0.0, 1.0}, f[2] = {0.0, 1.0}, d[2] = {2.0, -1.0};
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.form = TS_FORM_GEOMETRIC;
     o.alpha = TS_GEOMETRIC_A_MIN;
@@ -149,7 +149,7 @@ static void solve_worst(void)
         return;
     long double want = ref_value((long double)kappa_max(), u, f[0], f[1], d[0], d[1]);
     double y, dy;
-    CHECK(ts_eval_deriv(s, u, NULL, &y, &dy, NULL) == TS_OK);
+    CHECK(ts_spline_eval_deriv(s, u, NULL, &y, &dy, NULL) == TS_OK);
     /* the solve's φ is good to ε/X̂' (F's rounding over X̂' ≈ 1e-4 here), so
      * S to ε(|S| + h|S'|) times a few (8), the derivative's own rounding
      * there included in |S'| */
@@ -175,7 +175,7 @@ static void huge_a(void)
      * S'(x_i) = d_i (exact slopes of the form, docs/method.md §4; d_i to the
      * rounding of Y'(0)/X̂'(0) = 3k d_i/(3κ h), a few ulps: 4ε). */
     const double x[3] = {0.0, 1.0, 3.0}, f[3] = {1.0, 2.0, -1.0};
-    ts_options o;
+    ts_spline_options o;
     th_options_paper(&o);
     o.form = TS_FORM_GEOMETRIC;
     o.beta = 1e300;
@@ -187,7 +187,7 @@ static void huge_a(void)
     for (int p = 0; p < 3; p++) {
         double y, dy;
         feclearexcept(FE_ALL_EXCEPT);
-        CHECK(ts_eval_deriv(s, x[p], NULL, &y, &dy, NULL) == TS_OK);
+        CHECK(ts_spline_eval_deriv(s, x[p], NULL, &y, &dy, NULL) == TS_OK);
         CHECKF(!fetestexcept(FE_INVALID), "FE_INVALID at %g", x[p]);
         CHECKF(y == f[p], "S(%g) = %.17g", x[p], y);
         CHECKF(fabs(dy - D[p]) <= 4 * EPS * fabs(D[p]), "S'(%g) = %.17g, d = %.17g", x[p], dy, D[p]);
@@ -254,7 +254,7 @@ static void pick(void)
     /* a kernel that is none: refused, nothing done */
     const double x[2] = {0.0, 1.0}, f[2] = {0.0, 1.0};
     ts_spline *s = NULL;
-    ts_options po;
+    ts_spline_options po;
     th_options_paper(&po); /* the paper form has a fast kernel */
     CHECK(ts_spline_new(x, f, 2, &po, &s, NULL) == TS_OK);
     double q = 0.5, y = -7.0;
@@ -266,7 +266,7 @@ static void pick(void)
 
 static void mt_threads(void)
 {
-    /* ts_eval_batch_mt (header): the threads asked, or with 0 the online
+    /* ts_spline_eval_batch_mt (header): the threads asked, or with 0 the online
      * processors, 1 when that count is not positive; at most 64 */
     CHECK(ts__mt_threads(0, 4) == 4);
     CHECK(ts__mt_threads(0, 1) == 1);
@@ -284,7 +284,7 @@ static void entry_points(void)
 {
     const double x[3] = {0.0, 1.0, 2.0}, f[3] = {1.0, 3.0, 2.0};
     for (int form = 0; form < 2; form++) {
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.form = form ? TS_FORM_GEOMETRIC : TS_FORM_PAPER;
         ts_spline *s = NULL;
@@ -293,19 +293,19 @@ static void entry_points(void)
             return;
         double y = 0.0, dy = 0.0, d2y = 0.0;
         /* knots are interpolated exactly (docs/method.md §2, §4) */
-        CHECK(ts_eval(s, 1.0, NULL, NULL) == TS_OK);
-        CHECK(ts_eval(NULL, 1.0, NULL, &y) == TS_ERR_NULL && isnan(y));
-        CHECK(ts_eval(s, TH_NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
-        CHECK(ts_eval_deriv(NULL, 1.0, NULL, &y, &dy, &d2y) == TS_ERR_NULL && isnan(y) &&
+        CHECK(ts_spline_eval(s, 1.0, NULL, NULL) == TS_OK);
+        CHECK(ts_spline_eval(NULL, 1.0, NULL, &y) == TS_ERR_NULL && isnan(y));
+        CHECK(ts_spline_eval(s, TH_NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
+        CHECK(ts_spline_eval_deriv(NULL, 1.0, NULL, &y, &dy, &d2y) == TS_ERR_NULL && isnan(y) &&
               isnan(dy) && isnan(d2y));
-        CHECK(ts_eval_deriv(s, TH_NAN, NULL, &y, &dy, NULL) == TS_ERR_DOMAIN && isnan(y) && isnan(dy));
-        CHECK(ts_eval_deriv(s, 1.0, NULL, NULL, &dy, NULL) == TS_OK);
-        CHECK(ts_eval_deriv(s, 2.0, NULL, &y, NULL, NULL) == TS_OK && y == 2.0);
+        CHECK(ts_spline_eval_deriv(s, TH_NAN, NULL, &y, &dy, NULL) == TS_ERR_DOMAIN && isnan(y) && isnan(dy));
+        CHECK(ts_spline_eval_deriv(s, 1.0, NULL, NULL, &dy, NULL) == TS_OK);
+        CHECK(ts_spline_eval_deriv(s, 2.0, NULL, &y, NULL, NULL) == TS_OK && y == 2.0);
         /* a cursor on another interval: the search, the same value */
         ts_cursor c = TS_CURSOR_INIT;
         double y1;
-        CHECK(ts_eval(s, 1.75, &c, &y) == TS_OK && ts_eval(s, 0.25, &c, &y1) == TS_OK);
-        CHECK(ts_eval(s, 0.25, NULL, &y) == TS_OK && y == y1);
+        CHECK(ts_spline_eval(s, 1.75, &c, &y) == TS_OK && ts_spline_eval(s, 0.25, &c, &y1) == TS_OK);
+        CHECK(ts_spline_eval(s, 0.25, NULL, &y) == TS_OK && y == y1);
         ts_spline_free(s);
     }
 }
@@ -320,7 +320,7 @@ static void interval_eval(void)
      * S' = d_i (exact slopes, docs/method.md §4; 4ε as in huge_a). */
     const double x[4] = {0.0, 1.0, 2.0, 3.5}, f[4] = {0.0, 2.0, 2.0, 5.0}, d[4] = {1.0, 0.0, 0.0, 2.0};
     for (int form = 0; form < 2; form++) {
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.form = form ? TS_FORM_GEOMETRIC : TS_FORM_PAPER;
         o.slopes = TS_SLOPES_USER;

@@ -14,7 +14,7 @@ static const double X5[5] = {0, 1, 2.5, 3, 4.75};
 static const double F5[5] = {1, -2, 0.5, 3, 2};
 
 /* ts_spline_new must fail with st, report (index, where) and leave *out NULL. */
-static void expect_new(const double *x, const double *f, size_t np, const ts_options *o, ts_status st,
+static void expect_new(const double *x, const double *f, size_t np, const ts_spline_options *o, ts_status st,
                        size_t index, ts_where where, int line)
 {
     ts_spline *s = (ts_spline *)(uintptr_t)1; /* must be reset to NULL */
@@ -59,7 +59,7 @@ static void test_strerror(void)
 
 static void test_new(void)
 {
-    ts_options o;
+    ts_spline_options o;
     double x[5], f[5];
     ts_spline *s = NULL;
 
@@ -238,7 +238,7 @@ static void test_new(void)
 static void test_eval_errors(void)
 {
     ts_spline *s = NULL;
-    ts_options po;
+    ts_spline_options po;
     th_options_paper(&po);
     CHECK(ts_spline_new(X5, F5, 5, &po, &s, NULL) == TS_OK);
     if (!s)
@@ -247,45 +247,45 @@ static void test_eval_errors(void)
     ts_cursor cur = TS_CURSOR_INIT;
 
     /* NULL spline: TS_ERR_NULL, NaN outputs */
-    CHECK(ts_eval(NULL, 1.0, NULL, &y) == TS_ERR_NULL && isnan(y));
+    CHECK(ts_spline_eval(NULL, 1.0, NULL, &y) == TS_ERR_NULL && isnan(y));
     y = dy = d2y = 0;
-    CHECK(ts_eval_deriv(NULL, 1.0, &cur, &y, &dy, &d2y) == TS_ERR_NULL && isnan(y) && isnan(dy) && isnan(d2y));
+    CHECK(ts_spline_eval_deriv(NULL, 1.0, &cur, &y, &dy, &d2y) == TS_ERR_NULL && isnan(y) && isnan(dy) && isnan(d2y));
     /* every output may be NULL */
-    CHECK(ts_eval_deriv(s, 1.0, NULL, NULL, NULL, NULL) == TS_OK);
-    CHECK(ts_eval(s, 1.0, NULL, NULL) == TS_OK);
+    CHECK(ts_spline_eval_deriv(s, 1.0, NULL, NULL, NULL, NULL) == TS_OK);
+    CHECK(ts_spline_eval(s, 1.0, NULL, NULL) == TS_OK);
     dy = 0;
-    CHECK(ts_eval_deriv(s, 1.0, NULL, NULL, &dy, NULL) == TS_OK && isfinite(dy) && dy != 0);
+    CHECK(ts_spline_eval_deriv(s, 1.0, NULL, NULL, &dy, NULL) == TS_OK && isfinite(dy) && dy != 0);
 
     /* NaN query: an error, not a NaN with success (every policy) */
     y = dy = d2y = 0;
-    CHECK(ts_eval_deriv(s, TH_NAN, &cur, &y, &dy, &d2y) == TS_ERR_DOMAIN && isnan(y) && isnan(dy) && isnan(d2y));
+    CHECK(ts_spline_eval_deriv(s, TH_NAN, &cur, &y, &dy, &d2y) == TS_ERR_DOMAIN && isnan(y) && isnan(dy) && isnan(d2y));
     y = 0;
-    CHECK(ts_eval(s, TH_NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
+    CHECK(ts_spline_eval(s, TH_NAN, NULL, &y) == TS_ERR_DOMAIN && isnan(y));
     /* out of range under the default policy, just outside each end, and ±Inf */
     const double outq[6] = {-1e-300, nextafter(0.0, -1.0), 4.75 + 1e-15 * 4.75 * 4, 1e308, TH_INF, -TH_INF};
     for (int k = 0; k < 6; k++) {
         y = dy = d2y = 0;
-        CHECKF(ts_eval_deriv(s, outq[k], NULL, &y, &dy, &d2y) == TS_ERR_DOMAIN && isnan(y) && isnan(dy) &&
+        CHECKF(ts_spline_eval_deriv(s, outq[k], NULL, &y, &dy, &d2y) == TS_ERR_DOMAIN && isnan(y) && isnan(dy) &&
                    isnan(d2y),
                "query %.17g", outq[k]);
     }
     /* the ends themselves are inside */
-    CHECK(ts_eval(s, 0.0, NULL, &y) == TS_OK && y == 1.0);
-    CHECK(ts_eval(s, 4.75, NULL, &y) == TS_OK && fabs(y - 2.0) < 1e-15);
-    CHECK(ts_eval(s, -0.0, NULL, &y) == TS_OK && y == 1.0);
+    CHECK(ts_spline_eval(s, 0.0, NULL, &y) == TS_OK && y == 1.0);
+    CHECK(ts_spline_eval(s, 4.75, NULL, &y) == TS_OK && fabs(y - 2.0) < 1e-15);
+    CHECK(ts_spline_eval(s, -0.0, NULL, &y) == TS_OK && y == 1.0);
 
     /* integral: NULLs, NaN / outside ends, NaN output */
     double r = 0;
-    CHECK(ts_integral(NULL, 0, 1, &r) == TS_ERR_NULL);
-    CHECK(ts_integral(s, 0, 1, NULL) == TS_ERR_NULL);
+    CHECK(ts_spline_integral(NULL, 0, 1, &r) == TS_ERR_NULL);
+    CHECK(ts_spline_integral(s, 0, 1, NULL) == TS_ERR_NULL);
     const double ia[5] = {TH_NAN, -0.5, 0.0, 0.0, 5.0}, ib[5] = {1.0, 1.0, TH_NAN, 4.76, 4.0};
     for (int k = 0; k < 5; k++) {
         r = 0;
-        CHECKF(ts_integral(s, ia[k], ib[k], &r) == TS_ERR_DOMAIN, "integral %g..%g", ia[k], ib[k]);
+        CHECKF(ts_spline_integral(s, ia[k], ib[k], &r) == TS_ERR_DOMAIN, "integral %g..%g", ia[k], ib[k]);
         /* header convention: out-parameters are reset before any check */
         CHECKF(isnan(r), "integral output after a failure: %g", r);
     }
-    CHECK(ts_integral(s, 0, 4.75, &r) == TS_OK && isfinite(r));
+    CHECK(ts_spline_integral(s, 0, 4.75, &r) == TS_OK && isfinite(r));
 
     /* accessors */
     double a = 0, B[4] = {0, 0, 0, 0}, X[4];
@@ -303,21 +303,21 @@ static void test_eval_errors(void)
     /* batch: NULLs, bad deriv, NaN and out-of-range queries */
     double xq[4] = {0.5, TH_NAN, 9.0, 1.0}, yq[4] = {0, 0, 0, 0};
     ts_error err;
-    CHECK(ts_eval_batch(NULL, 0, xq, 4, yq, NULL, &err) == TS_ERR_NULL && err.status == TS_ERR_NULL);
-    CHECK(ts_eval_batch(s, 0, NULL, 4, yq, NULL, &err) == TS_ERR_NULL);
-    CHECK(ts_eval_batch(s, 0, xq, 4, NULL, NULL, &err) == TS_ERR_NULL);
+    CHECK(ts_spline_eval_batch(NULL, 0, xq, 4, yq, NULL, &err) == TS_ERR_NULL && err.status == TS_ERR_NULL);
+    CHECK(ts_spline_eval_batch(s, 0, NULL, 4, yq, NULL, &err) == TS_ERR_NULL);
+    CHECK(ts_spline_eval_batch(s, 0, xq, 4, NULL, NULL, &err) == TS_ERR_NULL);
     /* deriv 3 is a valid order in the paper form: the NaN query fails */
-    CHECK(ts_eval_batch(s, 3, xq, 4, yq, NULL, &err) == TS_ERR_DOMAIN && err.index == 1);
-    CHECK(ts_eval_batch(s, -2, xq, 4, yq, NULL, &err) == TS_ERR_OPTION && err.status == TS_ERR_OPTION);
-    CHECK(ts_eval_batch(s, -1, xq, 4, yq, NULL, &err) == TS_ERR_OPTION);
-    CHECK(ts_eval_batch_mt(NULL, 0, xq, 4, yq, 2, &err) == TS_ERR_NULL);
-    CHECK(ts_eval_batch_mt(s, -7, xq, 4, yq, 2, &err) == TS_ERR_OPTION);
-    CHECK(ts_eval_batch_mt(s, 0, NULL, 4, yq, 2, &err) == TS_ERR_NULL);
-    CHECK(ts_eval_batch(s, 0, xq, 4, yq, NULL, &err) == TS_ERR_DOMAIN);
+    CHECK(ts_spline_eval_batch(s, 3, xq, 4, yq, NULL, &err) == TS_ERR_DOMAIN && err.index == 1);
+    CHECK(ts_spline_eval_batch(s, -2, xq, 4, yq, NULL, &err) == TS_ERR_OPTION && err.status == TS_ERR_OPTION);
+    CHECK(ts_spline_eval_batch(s, -1, xq, 4, yq, NULL, &err) == TS_ERR_OPTION);
+    CHECK(ts_spline_eval_batch_mt(NULL, 0, xq, 4, yq, 2, &err) == TS_ERR_NULL);
+    CHECK(ts_spline_eval_batch_mt(s, -7, xq, 4, yq, 2, &err) == TS_ERR_OPTION);
+    CHECK(ts_spline_eval_batch_mt(s, 0, NULL, 4, yq, 2, &err) == TS_ERR_NULL);
+    CHECK(ts_spline_eval_batch(s, 0, xq, 4, yq, NULL, &err) == TS_ERR_DOMAIN);
     CHECK(err.status == TS_ERR_DOMAIN && err.index == 1 && err.where == TS_WHERE_QUERY);
     CHECK(isfinite(yq[0]) && isnan(yq[1]) && isnan(yq[2]) && isfinite(yq[3]));
-    CHECK(ts_eval_batch(s, 0, xq, 4, yq, NULL, NULL) == TS_ERR_DOMAIN); /* err may be NULL */
-    CHECK(ts_eval_batch(s, 1, xq, 0, yq, NULL, &err) == TS_OK && err.status == TS_OK); /* m = 0 */
+    CHECK(ts_spline_eval_batch(s, 0, xq, 4, yq, NULL, NULL) == TS_ERR_DOMAIN); /* err may be NULL */
+    CHECK(ts_spline_eval_batch(s, 1, xq, 0, yq, NULL, &err) == TS_OK && err.status == TS_OK); /* m = 0 */
     ts_spline_free(s);
 }
 
@@ -408,7 +408,7 @@ static void test_overflowing_controls(void)
     static const double x[4] = {0, 1, 2, 3}, f[4] = {1, 2, 0, 3};
     static const double x2[3] = {0, 1e-310, 1}, f2[3] = {1, 1, 3};
     for (int form = TS_FORM_PAPER; form <= TS_FORM_C1; form++) {
-        ts_options o;
+        ts_spline_options o;
         th_options_paper(&o);
         o.form = (ts_form)form;
         o.alpha = 1e-310;

@@ -1,6 +1,6 @@
-/* The batch kernels of src/fast.c against plain ts_eval_deriv.
+/* The batch kernels of src/fast.c against plain ts_spline_eval_deriv.
  *
- * Expected values: ts_eval_deriv (the plain path, itself checked against the
+ * Expected values: ts_spline_eval_deriv (the plain path, itself checked against the
  * mpmath reference in test_core.c); the knot values f_i exactly; a
  * long-double evaluation of docs/method.md §2/(2.1) written here says which side an
  * error is on (printed, not asserted).
@@ -44,7 +44,7 @@
  * structure() checks the contract of ts__fast_batch (prefix up to the first
  * block with a query outside, cursor, kernels chosen by number), knots
  * exactly, the geometric form's prefix and knots, sparse sorted queries (galloping) and
- * ts_eval_batch / ts_eval_batch_mt against the kernel.  flat() checks flat
+ * ts_spline_eval_batch / ts_spline_eval_batch_mt against the kernel.  flat() checks flat
  * intervals exactly (value f_i, derivatives 0).  order() checks that sorted
  * and shuffled batches give the same bits (widths that round included).
  */
@@ -131,8 +131,8 @@ static ts_spline *random_spline(size_t np, int kind, int form)
     }
     for (size_t i = 0; i + 1 < np; i++)
         al[i] = pow(10.0, -2.0 + 4.0 * th_unit());
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = form ? TS_FORM_C1 : TS_FORM_PAPER;
     o.slopes = TS_SLOPES_USER;
     o.user_slopes = d;
@@ -172,7 +172,7 @@ static int qset_fill(qset *Q)
     long bad = 0;
     for (size_t j = 0; j < Q->m; j++) {
         double o[3], B[4];
-        bad += ts_eval_deriv(Q->s, Q->q[j], NULL, &o[0], &o[1], &o[2]) != TS_OK;
+        bad += ts_spline_eval_deriv(Q->s, Q->q[j], NULL, &o[0], &o[1], &o[2]) != TS_OK;
         size_t i = interval_of(Q->s, Q->q[j]);
         ts_spline_control(Q->s, i, B, NULL);
         double M = fmax(fmax(fabs(B[0]), fabs(B[1])), fmax(fabs(B[2]), fabs(B[3])));
@@ -191,7 +191,7 @@ static int qset_fill(qset *Q)
                                                                                    : (long double)w * (long double)w);
         }
     }
-    CHECKF(bad == 0, "%s: ts_eval_deriv failed at %ld queries", Q->what, bad);
+    CHECKF(bad == 0, "%s: ts_spline_eval_deriv failed at %ld queries", Q->what, bad);
     return 1;
 }
 
@@ -336,8 +336,8 @@ static void flat(void)
         for (size_t i = 0; i < NP; i++)
             f[i] = level[c];
         for (int form = 0; form < 2; form++) {
-            ts_options o;
-            ts_options_init(&o);
+            ts_spline_options o;
+            ts_spline_options_init(&o);
             o.form = form ? TS_FORM_C1 : TS_FORM_PAPER;
             ts_spline *s = NULL;
             ts_error e;
@@ -368,11 +368,11 @@ static void flat(void)
                 ts_cursor cur = TS_CURSOR_INIT;
                 for (size_t j = 0; j < M; j++) {
                     double v0, v1, v2, v;
-                    bad += ts_eval(s, q[j], &cur, &v) != TS_OK || !(v == level[c]);
-                    bad += ts_eval_deriv(s, q[j], NULL, &v0, &v1, &v2) != TS_OK || !(v0 == level[c]) ||
+                    bad += ts_spline_eval(s, q[j], &cur, &v) != TS_OK || !(v == level[c]);
+                    bad += ts_spline_eval_deriv(s, q[j], NULL, &v0, &v1, &v2) != TS_OK || !(v0 == level[c]) ||
                            !(v1 == 0.0) || !(v2 == 0.0);
                 }
-                CHECKF(bad == 0, "flat %g, form %d, ts_eval/ts_eval_deriv, %s: %ld queries not exact", level[c],
+                CHECKF(bad == 0, "flat %g, form %d, ts_spline_eval/ts_spline_eval_deriv, %s: %ld queries not exact", level[c],
                        form, sorted ? "sorted" : "random", bad);
             }
             ts_spline_free(s);
@@ -397,8 +397,8 @@ static ts_spline *small_spline(size_t np, ts_form form)
         x[i] = x[i - 1] + 0.1 + th_unit();
     for (size_t i = 0; i < np; i++)
         f[i] = 3.0 + 2.0 * sin(x[i]) + th_unit();
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = form;
     ts_error e;
     ts_status st = ts_spline_new(x, f, np, &o, &s, &e);
@@ -470,7 +470,7 @@ static void structure(void)
         int ok = 1;
         for (size_t j = 0; j < k; j++) {
             double r;
-            ts_eval(s, q[j], NULL, &r);
+            ts_spline_eval(s, q[j], NULL, &r);
             ok &= close_value(s, q[j], y[j], r);
         }
         for (size_t j = k; j < M; j++)
@@ -479,15 +479,15 @@ static void structure(void)
         CHECK(k == 0 || c.interval == interval_of(s, q[k - 1]));
         /* the public batch: NaN / DOMAIN there, every other query evaluated */
         ts_error e;
-        ts_status st = ts_eval_batch(s, 0, q, M, y, NULL, &e);
+        ts_status st = ts_spline_eval_batch(s, 0, q, M, y, NULL, &e);
         CHECK(st == TS_ERR_DOMAIN && e.index == 300 && e.where == TS_WHERE_QUERY && isnan(y[300]));
         ok = 1;
         for (size_t j = 0; j < M; j++) {
             double r;
-            if (j != 300 && ts_eval(s, q[j], NULL, &r) == TS_OK)
+            if (j != 300 && ts_spline_eval(s, q[j], NULL, &r) == TS_OK)
                 ok &= close_value(s, q[j], y[j], r);
         }
-        CHECKF(ok, "bad query %d: ts_eval_batch values", b);
+        CHECKF(ok, "bad query %d: ts_spline_eval_batch values", b);
         q[300] = keep;
     }
     /* an unsorted block with a NaN: stops before it; a NaN first: nothing */
@@ -498,7 +498,7 @@ static void structure(void)
     q[0] = TH_NAN;
     CHECK(ts__fast_batch(s, 0, q, M, y, NULL) == 0);
 
-    /* ts_eval_batch, ts_eval_batch_mt and the best kernel agree bitwise on
+    /* ts_spline_eval_batch, ts_spline_eval_batch_mt and the best kernel agree bitwise on
      * valid queries (one kernel), for every derivative and query order */
     for (int order = 0; order < 3; order++) {
         for (size_t j = 0; j < M; j++)
@@ -517,11 +517,11 @@ static void structure(void)
             ts_cursor c = {n + 7}; /* stale */
             CHECK(ts__fast_batch_isa(s, deriv, q, M, ref, &c, -1, &done) == 1 && done == M);
             CHECK(c.interval == interval_of(s, q[M - 1]));
-            CHECK(ts_eval_batch(s, deriv, q, M, y, NULL, NULL) == TS_OK);
-            CHECKF(!memcmp(y, ref, sizeof y), "order %d deriv %d: ts_eval_batch differs from the kernel", order,
+            CHECK(ts_spline_eval_batch(s, deriv, q, M, y, NULL, NULL) == TS_OK);
+            CHECKF(!memcmp(y, ref, sizeof y), "order %d deriv %d: ts_spline_eval_batch differs from the kernel", order,
                    deriv);
-            CHECK(ts_eval_batch_mt(s, deriv, q, M, y, 2, NULL) == TS_OK);
-            CHECKF(!memcmp(y, ref, sizeof y), "order %d deriv %d: ts_eval_batch_mt differs", order, deriv);
+            CHECK(ts_spline_eval_batch_mt(s, deriv, q, M, y, 2, NULL) == TS_OK);
+            CHECKF(!memcmp(y, ref, sizeof y), "order %d deriv %d: ts_spline_eval_batch_mt differs", order, deriv);
         }
     }
     ts_spline_free(s);
@@ -539,7 +539,7 @@ static void structure(void)
         int ok = 1;
         for (size_t j = 0; j < M; j++) {
             double r;
-            ts_eval(s, q[j], NULL, &r);
+            ts_spline_eval(s, q[j], NULL, &r);
             ok &= close_value(s, q[j], y[j], r);
         }
         CHECK(ok);
@@ -557,7 +557,7 @@ static void structure(void)
             CHECK(y2[0] == -2.0 && y2[4] == 7.0);
             for (int j = 0; j < 5; j++) {
                 double r;
-                ts_eval(t, q2[j], NULL, &r);
+                ts_spline_eval(t, q2[j], NULL, &r);
                 CHECK(close_value(t, q2[j], y2[j], r));
             }
             ts_spline_free(t);
@@ -580,12 +580,12 @@ static void structure(void)
         q[700] = deriv == 1 ? TH_NAN : keep; /* S': stops before the block of a NaN */
         size_t k = ts__fast_batch(s, deriv, q, M, y, &c);
         CHECK(k == (deriv == 1 ? 700 / TS_FAST_BLOCK * TS_FAST_BLOCK : M));
-        /* and ts_eval_batch equals the kernel bitwise on every valid query */
-        CHECK(ts_eval_batch(s, deriv, q, M, ref, NULL, NULL) == (deriv == 1 ? TS_ERR_DOMAIN : TS_OK));
+        /* and ts_spline_eval_batch equals the kernel bitwise on every valid query */
+        CHECK(ts_spline_eval_batch(s, deriv, q, M, ref, NULL, NULL) == (deriv == 1 ? TS_ERR_DOMAIN : TS_OK));
         int same = 1;
         for (size_t j = 0; j < k; j++)
             same &= !memcmp(&ref[j], &y[j], sizeof y[j]);
-        CHECKF(same, "geometric deriv %d: ts_eval_batch differs from the kernel", deriv);
+        CHECKF(same, "geometric deriv %d: ts_spline_eval_batch differs from the kernel", deriv);
     }
     q[700] = keep;
     /* knots exactly */
@@ -607,7 +607,7 @@ static void structure(void)
  * Expected values: docs/method.md §4 re-derived here in long double
  * (geo_ref: X̂(φ) = u from the nearer end by Newton's method inside a
  * bisection bracket with sinl and cosl, then Y, Y', Y'' and the quotients
- * of §4); ts_eval_deriv itself is checked against the mpmath reference in
+ * of §4); ts_spline_eval_deriv itself is checked against the mpmath reference in
  * test_geometric.c.  Single evaluation runs the kernels' solve (internal.h:
  * ts__geo_root, ts__geo_y): without FMA (the portable kernel on x86-64,
  * where neither contracts) its values are the portable kernel's bit for bit.
@@ -649,8 +649,8 @@ static ts_spline *geo_spline(size_t np, double amin, double amax)
         f[i] = 40.0 * (th_unit() - 0.5);
     for (size_t i = 0; i + 1 < np; i++)
         al[i] = amin * pow(amax / amin, th_unit());
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = TS_FORM_GEOMETRIC;
     o.alphas = al;
     o.n_alphas = np - 1;
@@ -733,7 +733,7 @@ static void geometric(void)
             double o[3];
             geo_ref(s, interval_of(s, q[j]), q[j], o);
             ref[j] = o[0], ref[m + j] = o[1], ref[2 * m + j] = o[2];
-            CHECK(ts_eval_deriv(s, q[j], NULL, &yd[j], &yd[m + j], &yd[2 * m + j]) == TS_OK);
+            CHECK(ts_spline_eval_deriv(s, q[j], NULL, &yd[j], &yd[m + j], &yd[2 * m + j]) == TS_OK);
         }
         for (int isa = 0; isa <= 2; isa++) {
             if (!have_kernel(isa))
@@ -745,7 +745,7 @@ static void geometric(void)
 #if defined(__x86_64__)
                 if (isa == 0)
                     CHECKF(!memcmp(yd + (size_t)deriv * m, y, m * sizeof *y),
-                           "geometric set %d deriv %d: ts_eval_deriv differs from the portable kernel",
+                           "geometric set %d deriv %d: ts_spline_eval_deriv differs from the portable kernel",
                            set, deriv);
 #endif
                 /* a query's value does not depend on its block: alone (a
@@ -841,8 +841,8 @@ static void order(void)
         q[j] = qs[perm[j]];
     const ts_form forms[3] = {TS_FORM_PAPER, TS_FORM_C1, TS_FORM_GEOMETRIC};
     for (int k = 0; k < 3; k++) {
-        ts_options o;
-        ts_options_init(&o);
+        ts_spline_options o;
+        ts_spline_options_init(&o);
         o.form = forms[k];
         ts_spline *s = NULL;
         ts_error e;
@@ -875,7 +875,7 @@ static void order(void)
 }
 
 
-/* ts_eval's value inside the data is the portable kernel's, bit for bit:
+/* ts_spline_eval's value inside the data is the portable kernel's, bit for bit:
  * the same products tu, tv and nearer-end test, the same polynomials and
  * B0 + Σ A_l (B_l − B0) (internal.h's ts__trig_eval_in).  Only where neither
  * is contracted into FMA: an x86-64 build without FMA (the default); the
@@ -921,11 +921,11 @@ static void scalar(void)
                 ts_cursor c1 = TS_CURSOR_INIT;
                 for (size_t j = 0; j < M; j++) {
                     double v;
-                    int off = ts_eval(s, q[j], &c1, &v) != TS_OK || memcmp(&v, &y[j], sizeof v) != 0;
+                    int off = ts_spline_eval(s, q[j], &c1, &v) != TS_OK || memcmp(&v, &y[j], sizeof v) != 0;
                     if (off && !bad++)
                         first = j;
                 }
-                CHECKF(bad == 0, "kind %d form %d %s: ts_eval differs from the portable kernel at %ld queries, first x = %.17g",
+                CHECKF(bad == 0, "kind %d form %d %s: ts_spline_eval differs from the portable kernel at %ld queries, first x = %.17g",
                        kind, form, sorted ? "sorted" : "random", bad, q[first]);
             }
             ts_spline_free(s);

@@ -37,7 +37,7 @@ static int certify_csv(tsu_plot_buf *b, const cli_data *d, const ts_interval_rep
 
 int cli_certify(cli_opts *o)
 {
-    ts_options opt;
+    ts_spline_options opt;
     int rc = cli_fit_options(o, &opt);
     if (rc != CLI_OK)
         return rc;
@@ -74,7 +74,7 @@ int cli_certify(cli_opts *o)
         goto done;
     }
     ts_error e;
-    ts_status st = ts_certify(s, lower, upper, reps, &e);
+    ts_status st = ts_spline_certify(s, lower, upper, reps, &e);
     if (st != TS_OK && st != TS_ERR_VIOLATED) {
         cli_error("certify: %s", ts_strerror(st));
         rc = st == TS_ERR_NONFINITE ? CLI_USAGE : CLI_DATA;
@@ -87,7 +87,7 @@ int cli_certify(cli_opts *o)
             continue;
         double at = r->has_lower && !(r->gap_lower > 0.0) ? r->at_lower : r->at_upper;
         double y;
-        if (!isfinite(at) || ts_eval(s, at, NULL, &y) != TS_OK)
+        if (!isfinite(at) || ts_spline_eval(s, at, NULL, &y) != TS_OK)
             continue;
         cli_xy_push(&bad, at, y);
     }

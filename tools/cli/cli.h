@@ -11,7 +11,7 @@
  *   sample.c       sampling a spline into sinks; growable point arrays
  *   table.c        reading DATA rows: options, columns by name, missing values
  *   data.c         reading DATA, explaining data and scheme errors
- *   fit_options.c  cli_opts -> ts_options (fit, certify), ts_curve_options (curve)
+ *   fit_options.c  cli_opts -> ts_spline_options (fit, certify), ts_curve_options (curve)
  *   axis.c         date and log ticks of plots
  *   spline_json.c  the JSON report of a spline
  *   spline_plot.c  the SVG plot of a spline
@@ -58,7 +58,7 @@ typedef enum cli_plot_format { CLI_PLOT_SVG = 0, CLI_PLOT_PNG = 1, CLI_PLOT_PDF 
 #define CLI_MAX_HELD_SAMPLES 10000000u
 
 /* The parsed command line.  Values of options not given are the library's
- * defaults (ts_options_init / ts_curve_options_init); *_set says "given". */
+ * defaults (ts_spline_options_init / ts_curve_options_init); *_set says "given". */
 typedef struct cli_opts {
     cli_cmd cmd;
     const char *data; /* path, "-" = stdin */
@@ -331,21 +331,21 @@ void cli_data_free(cli_data *d);
 /* Report a ts_spline_new failure on points x[0..n) (lines[i] their lines,
  * NULL if unknown) read from name; x is written as cli_x_text(cols) (cols
  * NULL: numbers).  Returns the exit status. */
-int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char *name,
+int cli_report_build_error(const cli_opts *o, const ts_spline_options *opt, const char *name,
                            const cli_cols *cols, const double *x, const double *f,
                            const unsigned long long *lines, size_t n, const ts_error *e,
                            ts_status st, size_t index_offset);
 /* Read DATA (cli_read_data) and fit the spline with opt; on failure the
  * error is reported (cli_report_build_error), d freed, *s NULL.  Returns the
  * exit status. */
-int cli_read_and_fit(const cli_opts *o, const ts_options *opt, cli_data *d, ts_spline **s);
+int cli_read_and_fit(const cli_opts *o, const ts_spline_options *opt, cli_data *d, ts_spline **s);
 
 /* ---- fit_options.c --------------------------------------------------- */
 /* The checks of options that depend on each other, after cli_parse; like
  * it they read no file and print only on cli_messages().
  * Fill opt from o (fit and certify).  Returns CLI_OK or CLI_USAGE (message
  * printed). */
-int cli_fit_options(const cli_opts *o, ts_options *opt);
+int cli_fit_options(const cli_opts *o, ts_spline_options *opt);
 /* Fill co from o (curve; the box as given, whatever the data's dimension).
  * Returns CLI_OK or CLI_USAGE (message printed). */
 int cli_curve_options(const cli_opts *o, ts_curve_options *co);
@@ -389,7 +389,7 @@ tsu_plot_status cli_plot_axes(const cli_opts *o, tsu_plot *p, const cli_cols *c,
 int cli_can_stream(const cli_opts *o);
 /* The environment variable TRIGSPLINE_CHUNK overrides the chunk size (tests
  * of chunk borders), TRIGSPLINE_DEBUG reports border rebuilds. */
-int cli_fit_stream(const cli_opts *o, const ts_options *opt);
+int cli_fit_stream(const cli_opts *o, const ts_spline_options *opt);
 
 /* ---- overshoot.c ----------------------------------------------------- */
 /* The curve's range and its largest excursions beyond the data of an
@@ -486,7 +486,7 @@ struct cli_optdef {
 };
 extern const cli_optdef cli_optdefs[];
 extern const size_t cli_n_optdefs;
-/* The options of cmd before argv: the library's defaults (ts_options_init,
+/* The options of cmd before argv: the library's defaults (ts_spline_options_init,
  * ts_curve_options_init, ts_surface_options_init) and the rows' def; o is a
  * cli_opts, or a cli_surface_opts for CLI_SURFACE. */
 void cli_opts_defaults(cli_cmd cmd, void *o);

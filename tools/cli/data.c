@@ -149,24 +149,24 @@ static void where(char *buf, size_t len, const char *name, const unsigned long l
 }
 
 /* Append the x of every point failing pred (at most 12, then "..."). */
-typedef int (*point_pred)(const ts_options *opt, double x, double f);
+typedef int (*point_pred)(const ts_spline_options *opt, double x, double f);
 
-static int pred_negative(const ts_options *opt, double x, double f)
+static int pred_negative(const ts_spline_options *opt, double x, double f)
 {
     (void)opt;
     (void)x;
     return !(f >= 0.0);
 }
-static int pred_not_above(const ts_options *opt, double x, double f)
+static int pred_not_above(const ts_spline_options *opt, double x, double f)
 {
     return !(f - (opt->lower.m * x + opt->lower.c) > 0.0);
 }
-static int pred_not_below(const ts_options *opt, double x, double f)
+static int pred_not_below(const ts_spline_options *opt, double x, double f)
 {
     return !((opt->upper.m * x + opt->upper.c) - f > 0.0);
 }
 
-static void list_points(char *buf, size_t len, const ts_options *opt, point_pred pred,
+static void list_points(char *buf, size_t len, const ts_spline_options *opt, point_pred pred,
                         const cli_cols *cols, const double *x, const double *f, size_t n)
 {
     size_t cnt = 0, used = 0;
@@ -190,7 +190,7 @@ static void list_points(char *buf, size_t len, const ts_options *opt, point_pred
     }
 }
 
-int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char *name,
+int cli_report_build_error(const cli_opts *o, const ts_spline_options *opt, const char *name,
                            const cli_cols *cols, const double *x, const double *f,
                            const unsigned long long *lines, size_t n, const ts_error *e,
                            ts_status st, size_t off)
@@ -362,7 +362,7 @@ int cli_report_build_error(const cli_opts *o, const ts_options *opt, const char 
     return CLI_DATA;
 }
 
-int cli_read_and_fit(const cli_opts *o, const ts_options *opt, cli_data *d, ts_spline **s)
+int cli_read_and_fit(const cli_opts *o, const ts_spline_options *opt, cli_data *d, ts_spline **s)
 {
     int rc;
     *s = NULL;

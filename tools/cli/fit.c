@@ -91,7 +91,7 @@ static int eval_at(const cli_opts *o, const ts_spline *s, const cli_cols *cols, 
     if (!a->y)
         return cli_nomem();
     ts_cursor cur = TS_CURSOR_INIT;
-    ts_status es = ts_eval_batch(s, o->deriv, a->x, a->m, a->y, &cur, &e);
+    ts_status es = ts_spline_eval_batch(s, o->deriv, a->x, a->m, a->y, &cur, &e);
     if (es != TS_OK) {
         size_t q = e.index < a->m ? e.index : 0;
         char bx[TSU_TIME_SIZE], b0[TSU_TIME_SIZE], b1[TSU_TIME_SIZE], ln[64] = "";
@@ -118,7 +118,7 @@ static void at_free(at_vals *a)
 
 int cli_fit(cli_opts *o)
 {
-    ts_options opt;
+    ts_spline_options opt;
     int rc = cli_fit_options(o, &opt);
     if (rc != CLI_OK)
         return rc;

@@ -1,4 +1,4 @@
-/* From the command-line options to the ts_options of fit and certify and
+/* From the command-line options to the ts_spline_options of fit and certify and
  * the ts_curve_options of curve. */
 #include "cli.h"
 
@@ -101,10 +101,10 @@ static int check_alpha_beta(const cli_opts *o)
     return CLI_OK;
 }
 
-int cli_fit_options(const cli_opts *o, ts_options *opt)
+int cli_fit_options(const cli_opts *o, ts_spline_options *opt)
 {
     int rc;
-    ts_options_init(opt);
+    ts_spline_options_init(opt);
     if ((rc = check_output_opts(o)) != CLI_OK)
         return rc;
     opt->form = o->form;

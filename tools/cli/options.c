@@ -830,8 +830,8 @@ void cli_opts_defaults(cli_cmd cmd, void *vo)
             o->margin = d.margin;
             o->param = d.param;
         } else {
-            ts_options d;
-            ts_options_init(&d);
+            ts_spline_options d;
+            ts_spline_options_init(&d);
             o->shape = d.shape;
             o->slopes = d.slopes;
             o->form = d.form;

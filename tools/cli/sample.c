@@ -37,7 +37,7 @@ int cli_sample_after(const ts_spline *s, size_t i0, size_t i1, int with_end, siz
             last = x;
             xs[k++] = x;
             if (k == CLI_BLOCK) {
-                (void)ts_eval_batch(s, deriv, xs, k, ys, &cur, &e);
+                (void)ts_spline_eval_batch(s, deriv, xs, k, ys, &cur, &e);
                 if ((rc = sink(ctx, xs, ys, k)) != 0)
                     return rc;
                 k = 0;
@@ -46,7 +46,7 @@ int cli_sample_after(const ts_spline *s, size_t i0, size_t i1, int with_end, siz
     }
     *prev = last;
     if (k) {
-        (void)ts_eval_batch(s, deriv, xs, k, ys, &cur, &e);
+        (void)ts_spline_eval_batch(s, deriv, xs, k, ys, &cur, &e);
         if ((rc = sink(ctx, xs, ys, k)) != 0)
             return rc;
     }
@@ -74,7 +74,7 @@ int cli_sample_even(const ts_spline *s, double a, double b, size_t n, int deriv,
         last = x;
         xs[k++] = x;
         if (k == CLI_BLOCK || i + 1 == n) {
-            ts_status st = ts_eval_batch(s, deriv, xs, k, ys, &cur, err);
+            ts_status st = ts_spline_eval_batch(s, deriv, xs, k, ys, &cur, err);
             if (st != TS_OK) {
                 *bad_x = xs[err->index < k ? err->index : 0];
                 return -1;

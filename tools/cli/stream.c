@@ -40,7 +40,7 @@ enum { ART_LEFT = -10, ART_RIGHT = -11 };
 
 typedef struct stream {
     const cli_opts *o;
-    const ts_options *opt;
+    const ts_spline_options *opt;
     const char *name;
     FILE *fp;
     tsu_reader *r;
@@ -310,7 +310,7 @@ static int is_last(const stream *s, const chunk *c)
     return s->eof && c->e1 + 1 == npts(s);
 }
 
-int cli_fit_stream(const cli_opts *o, const ts_options *opt)
+int cli_fit_stream(const cli_opts *o, const ts_spline_options *opt)
 {
     stream s;
     chunk pend, next;

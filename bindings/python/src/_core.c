@@ -129,7 +129,7 @@ static int opt_line(PyObject *obj, ts_line *l)
 /* spline_new(x, f, *, form=None, slopes=None, user_slopes=None, alpha=None,
  * alphas=None, beta=None, betas=None, shape=0, lower=None, upper=None,
  * margin=None, margins=None, certify=1, extrapolate=TS_EXTRAP_EXTEND).
- * None keeps the ts_options_init default. */
+ * None keeps the ts_spline_options_init default. */
 static PyObject *spline_new(PyObject *mod, PyObject *args, PyObject *kw)
 {
     (void)mod;
@@ -145,8 +145,8 @@ static PyObject *spline_new(PyObject *mod, PyObject *args, PyObject *kw)
                                      &oslopes, &ous, &oalpha, &oalphas, &obeta, &obetas, &shape,
                                      &olower, &oupper, &omargin, &omargins, &certify, &extrap))
         return NULL;
-    ts_options opt;
-    ts_options_init(&opt);
+    ts_spline_options opt;
+    ts_spline_options_init(&opt);
     PyArrayObject *ax = NULL, *af = NULL, *aus = NULL, *aal = NULL, *abe = NULL, *ama = NULL;
     PyObject *result = NULL;
     ax = as_vector(ox, "x");
@@ -266,7 +266,7 @@ static PyObject *spline_eval(SplineHandle *self, PyObject *args, PyObject *kw)
     double *yq = (double *)PyArray_DATA(ao);
     npy_intp m = PyArray_SIZE(aq);
     /* MODE_EXTEND: the handle's own policy (TS_EXTRAP_EXTEND for the
-     * package's handles), through ts_eval_batch */
+     * package's handles), through ts_spline_eval_batch */
     ts_extrap ex = mode == MODE_CLAMP    ? TS_EXTRAP_CLAMP
                    : mode == MODE_LINEAR ? TS_EXTRAP_LINEAR
                                          : TS_EXTRAP_ERROR;
@@ -276,8 +276,8 @@ static PyObject *spline_eval(SplineHandle *self, PyObject *args, PyObject *kw)
     npy_intp bad = -1;
     Py_BEGIN_ALLOW_THREADS
     if (mode == MODE_EXTEND)
-        st = threads == 1 ? ts_eval_batch(self->s, nu, xq, (size_t)m, yq, NULL, &err)
-                          : ts_eval_batch_mt(self->s, nu, xq, (size_t)m, yq, nth, &err);
+        st = threads == 1 ? ts_spline_eval_batch(self->s, nu, xq, (size_t)m, yq, NULL, &err)
+                          : ts_spline_eval_batch_mt(self->s, nu, xq, (size_t)m, yq, nth, &err);
     else if (threads == 1)
         st = ts_spline_eval_batch_mode(self->s, nu, ex, xq, (size_t)m, yq, NULL, &err);
     else
@@ -313,7 +313,7 @@ static PyObject *spline_integral(SplineHandle *self, PyObject *args)
     double a, b, r;
     if (!PyArg_ParseTuple(args, "dd", &a, &b))
         return NULL;
-    ts_status st = ts_integral(self->s, a, b, &r);
+    ts_status st = ts_spline_integral(self->s, a, b, &r);
     if (st != TS_OK)
         return raise_status(st, TS_NO_INDEX, TS_WHERE_NONE);
     return PyFloat_FromDouble(r);
@@ -337,7 +337,7 @@ static PyObject *spline_antiderivative(SplineHandle *self, PyObject *arg)
     npy_intp m = PyArray_SIZE(aq);
     Py_BEGIN_ALLOW_THREADS
     for (npy_intp j = 0; j < m; j++)
-        if (ts_integral(self->s, self->x0, xq[j], &yq[j]) != TS_OK)
+        if (ts_spline_integral(self->s, self->x0, xq[j], &yq[j]) != TS_OK)
             yq[j] = (double)NAN;
     Py_END_ALLOW_THREADS
     Py_DECREF(aq);
@@ -514,7 +514,7 @@ static PyObject *spline_certify(SplineHandle *self, PyObject *args)
     ts_error err;
     ts_status st;
     Py_BEGIN_ALLOW_THREADS
-    st = ts_certify(self->s, olo == Py_None ? NULL : &lo, oup == Py_None ? NULL : &up, reps, &err);
+    st = ts_spline_certify(self->s, olo == Py_None ? NULL : &lo, oup == Py_None ? NULL : &up, reps, &err);
     Py_END_ALLOW_THREADS
     return certify_result(st, &err, reps, n);
 }
@@ -531,7 +531,7 @@ static PyObject *spline_error_bound(SplineHandle *self, PyObject *args)
     if (!per)
         return NULL;
     double b;
-    ts_status st = ts_error_bound(self->s, fp, fs, exact, &b,
+    ts_status st = ts_spline_error_bound(self->s, fp, fs, exact, &b,
                                   (double *)PyArray_DATA((PyArrayObject *)per));
     if (st != TS_OK) {
         Py_DECREF(per);
@@ -1440,12 +1440,12 @@ static PyObject *library_version(PyObject *mod, PyObject *unused)
     return PyUnicode_FromString(ts_version());
 }
 
-/* options_defaults() -> (form, slopes, alpha, beta, margin, certify) of ts_options_init. */
+/* options_defaults() -> (form, slopes, alpha, beta, margin, certify) of ts_spline_options_init. */
 static PyObject *options_defaults(PyObject *mod, PyObject *unused)
 {
     (void)mod, (void)unused;
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     return Py_BuildValue("(iidddi)", (int)o.form, (int)o.slopes, o.alpha, o.beta, o.margin,
                          o.certify);
 }
@@ -1462,7 +1462,7 @@ static PyObject *surface_options_defaults(PyObject *mod, PyObject *unused)
 }
 
 /* defaults() -> {"spline": {...}, "curve": {...}, "surface": {...}}: the
- * value fields of ts_options_init, ts_curve_options_init and
+ * value fields of ts_spline_options_init, ts_curve_options_init and
  * ts_surface_options_init by field name (pointer and count fields, NULL/0
  * by default, left out), enumerations by their canonical names, flags as
  * bool, lines as (m, c), planes as (p, q, c), per-coordinate boxes as
@@ -1480,10 +1480,10 @@ static PyObject *defaults(PyObject *mod, PyObject *unused)
     static const char *const sshape[] = {"none", "positive", "bounds", "planes", "range"};
 #define TS_NAME(table, v)                                                                     \
     ((unsigned)(v) < sizeof table / sizeof *table ? table[(unsigned)(v)] : "unknown")
-    ts_options o;
+    ts_spline_options o;
     ts_curve_options c;
     ts_surface_options u;
-    ts_options_init(&o);
+    ts_spline_options_init(&o);
     ts_curve_options_init(&c);
     ts_surface_options_init(&u);
     PyObject *sp = Py_BuildValue(
@@ -1529,7 +1529,7 @@ static PyMethodDef module_methods[] = {
     {"slopes_compute", slopes_compute, METH_VARARGS, "slopes_compute(method, x, f)"},
     {"strerror", strerror_, METH_O, "ts_strerror(status)"},
     {"library_version", library_version, METH_NOARGS, "ts_version() of the compiled library"},
-    {"options_defaults", options_defaults, METH_NOARGS, "defaults of ts_options_init"},
+    {"options_defaults", options_defaults, METH_NOARGS, "defaults of ts_spline_options_init"},
     {"defaults", defaults, METH_NOARGS, "defaults() -> dict of the library's option defaults"},
     {NULL, NULL, 0, NULL}};
 

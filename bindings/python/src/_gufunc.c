@@ -3,7 +3,7 @@
  *   interp(x(n), f(n), xq(m), opt(k)) -> y(m), status(), index(), gap()
  *
  * One series per core call: the spline is built with ts_spline_new and
- * evaluated with ts_eval_batch, the calls trigspline.Spline makes, so the
+ * evaluated with ts_spline_eval_batch, the calls trigspline.Spline makes, so the
  * values are those of one Spline per series.  Loops: float64 in and out,
  * float32 data (x and queries float32 or float64) to float32 out; the fit is
  * always in float64.  numpy runs these loops without the GIL (no object
@@ -64,12 +64,12 @@ enum {
 };
 
 typedef struct {
-    ts_options opt;
+    ts_spline_options opt;
     int skipna, want_gap, nan_outside;
     double gap_first, gap_end;
 } series_options;
 
-/* The option vector -> ts_options; 0 if a value is not a valid enum. */
+/* The option vector -> ts_spline_options; 0 if a value is not a valid enum. */
 static int read_options(const char *p, npy_intp step, npy_intp k, series_options *so)
 {
     if (k != OPT_LEN)
@@ -77,7 +77,7 @@ static int read_options(const char *p, npy_intp step, npy_intp k, series_options
     double v[OPT_LEN];
     for (int i = 0; i < OPT_LEN; i++)
         v[i] = *(const double *)(p + i * step);
-    ts_options_init(&so->opt);
+    ts_spline_options_init(&so->opt);
     /* enums travel as small integers in doubles; NaN-safe range checks */
     if (!(0 <= v[OPT_SHAPE] && v[OPT_SHAPE] <= TS_SHAPE_MONOTONE) || !(0 <= v[OPT_FORM] && v[OPT_FORM] <= TS_FORM_GEOMETRIC) ||
         !(0 <= v[OPT_SLOPES] && v[OPT_SLOPES] < TS_SLOPES_COUNT_ && v[OPT_SLOPES] != TS_SLOPES_USER) ||
@@ -188,7 +188,7 @@ static ts_status fit_series(scratch *w, npy_intp n, npy_intp m, const series_opt
     }
     ts_cursor cur = TS_CURSOR_INIT;
     /* TS_ERR_DOMAIN only: those queries are NaN, the others evaluated */
-    (void)ts_eval_batch(s, 0, w->xq, (size_t)m, w->y, &cur, NULL);
+    (void)ts_spline_eval_batch(s, 0, w->xq, (size_t)m, w->y, &cur, NULL);
     if (so->want_gap)
         *gap = least_gap(s, so->gap_first, so->gap_end);
     ts_spline_free(s);

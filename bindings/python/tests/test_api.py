@@ -102,7 +102,7 @@ def test_extrapolate_modes():
     x, f = smooth_data()
     out = np.array([x[0] - 1.0, x[-1] + 2.0])
     for form in ("paper", "geometric"):
-        # the library's default ('error', ts_options_init); SciPy's is True
+        # the library's default ('error', ts_spline_options_init); SciPy's is True
         assert Spline(x, f, form=form).extrapolate == "error"
         s = Spline(x, f, form=form, extrapolate=True)
         assert s.extrapolate == "extend"

@@ -1,5 +1,5 @@
 """Results equal to the C library's, bit for bit: the same ts_spline_new and
-ts_eval_batch calls through ctypes on the shared library CMake builds
+ts_spline_eval_batch calls through ctypes on the shared library CMake builds
 (TS_BUILD_DIR, default <repo>/build; make test builds it first)."""
 import ctypes
 import os
@@ -21,7 +21,7 @@ class Line(ctypes.Structure):
     _fields_ = [("m", ctypes.c_double), ("c", ctypes.c_double)]
 
 
-class Options(ctypes.Structure):  # ts_options, field by field (include/trigspline.h)
+class Options(ctypes.Structure):  # ts_spline_options, field by field (include/trigspline.h)
     _fields_ = [("form", ctypes.c_int), ("slopes", ctypes.c_int), ("user_slopes", dp),
                 ("n_user_slopes", ctypes.c_size_t), ("alpha", ctypes.c_double),
                 ("alphas", dp), ("n_alphas", ctypes.c_size_t), ("beta", ctypes.c_double),
@@ -40,17 +40,17 @@ def lib():
     L = ctypes.CDLL(LIB)
     L.ts_spline_new.argtypes = [dp, dp, ctypes.c_size_t, ctypes.POINTER(Options),
                                 ctypes.POINTER(ctypes.c_void_p), ctypes.POINTER(Error)]
-    L.ts_eval_batch.argtypes = [ctypes.c_void_p, ctypes.c_int, dp, ctypes.c_size_t, dp,
+    L.ts_spline_eval_batch.argtypes = [ctypes.c_void_p, ctypes.c_int, dp, ctypes.c_size_t, dp,
                                 ctypes.c_void_p, ctypes.POINTER(Error)]
     L.ts_spline_free.argtypes = [ctypes.c_void_p]
-    L.ts_options_init.argtypes = [ctypes.POINTER(Options)]
-    L.ts_integral.argtypes = [ctypes.c_void_p, ctypes.c_double, ctypes.c_double, dp]
+    L.ts_spline_options_init.argtypes = [ctypes.POINTER(Options)]
+    L.ts_spline_integral.argtypes = [ctypes.c_void_p, ctypes.c_double, ctypes.c_double, dp]
     return L
 
 
 def c_eval(L, x, f, xq, nu, **fields):
     opt = Options()
-    L.ts_options_init(ctypes.byref(opt))
+    L.ts_spline_options_init(ctypes.byref(opt))
     for k, v in fields.items():
         setattr(opt, k, v)
     h = ctypes.c_void_p()
@@ -59,10 +59,10 @@ def c_eval(L, x, f, xq, nu, **fields):
                            ctypes.byref(h), ctypes.byref(err)) == 0
     try:
         out = np.empty_like(xq)
-        L.ts_eval_batch(h, nu, xq.ctypes.data_as(dp), len(xq), out.ctypes.data_as(dp), None,
+        L.ts_spline_eval_batch(h, nu, xq.ctypes.data_as(dp), len(xq), out.ctypes.data_as(dp), None,
                         ctypes.byref(err))
         I = ctypes.c_double()
-        L.ts_integral(h, x[0], x[-1], ctypes.byref(I))
+        L.ts_spline_integral(h, x[0], x[-1], ctypes.byref(I))
         return out, I.value, opt.form
     finally:
         L.ts_spline_free(h)

@@ -2,7 +2,7 @@
 keywords with the same defaults, the library's; deprecated spellings warn and
 mean the same.
 
-References: the defaults of the C library itself (ts_options_init through
+References: the defaults of the C library itself (ts_spline_options_init through
 ctypes on the CMake build, the extension's own defaults tuples), the table of
 docs/options.md, and each entry point called with every default spelled out.
 """
@@ -120,7 +120,7 @@ def test_same_keywords_same_defaults_in_every_entry_point():
 def test_defaults_are_the_library_s():
     d = trigspline.defaults()
     assert d["extrapolate"] == "error" and d["errors"] == "raise" and d["skipna"] is False
-    # the extension's tuples, read from ts_options_init / ts_surface_options_init
+    # the extension's tuples, read from ts_spline_options_init / ts_surface_options_init
     form, slopes, alpha, beta, margin, certify = _core.options_defaults()
     assert (d["form"], d["slopes"], d["alpha"], d["beta"], d["margin"], d["certify"]) == (
         _options.FORMS[form], _options.SLOPES[slopes], alpha, beta, margin, bool(certify))
@@ -135,14 +135,14 @@ def test_defaults_are_the_library_s():
     assert {"param", "closed", "slopes", "alpha", "beta", "margin"} <= set(lib["curve"])
     assert {"form", "slopes", "zero_twist", "alpha", "beta", "margin", "shape"} <= set(
         lib["surface"])
-    # and the shared library's own ts_options_init, through ctypes
+    # and the shared library's own ts_spline_options_init, through ctypes
     import ctypes
     import test_clib
     if not os.path.exists(test_clib.LIB):
         pytest.skip("no CMake build at " + test_clib.LIB)
     L = ctypes.CDLL(test_clib.LIB)
     o = test_clib.Options()
-    L.ts_options_init(ctypes.byref(o))
+    L.ts_spline_options_init(ctypes.byref(o))
     assert (d["form"], d["slopes"], d["alpha"], d["beta"], d["margin"], d["shape"],
             d["certify"], d["extrapolate"]) == (
         _options.FORMS[o.form], _options.SLOPES[o.slopes], o.alpha, o.beta, o.margin,

@@ -6,7 +6,7 @@ pandas.interpolate, estimate_slopes) takes ``None`` for an option it was not
 given and resolves it here:
 
 * options of the library take the library's default, read once from
-  ``ts_options_init``, ``ts_curve_options_init`` and
+  ``ts_spline_options_init``, ``ts_curve_options_init`` and
   ``ts_surface_options_init`` through ``_core.defaults()``;
 * the options that exist only in Python (``errors``, ``skipna``, the
   ``'nan'`` extrapolation) have their one default in ``PYTHON`` below.

@@ -130,7 +130,7 @@ class Spline:
     The keywords and their defaults are the package's one vocabulary
     (docs/options.md), shared with :func:`trigspline.interp`, the xarray
     accessor, :func:`trigspline.pandas.interpolate`, :class:`Surface` and
-    :class:`Curve`; the defaults are the library's (``ts_options_init``).
+    :class:`Curve`; the defaults are the library's (``ts_spline_options_init``).
 
     Parameters
     ----------
@@ -604,7 +604,7 @@ class Spline:
     def integrate(self, a: float, b: float, extrapolate: Extrapolate = None):
         """Definite integral of S over [a, b] (``PPoly.integrate``).
 
-        Closed form inside the data (``ts_integral``); outside by the
+        Closed form inside the data (``ts_spline_integral``); outside by the
         extrapolation policy (``False``: NaN, as SciPy).  A float for one
         series, else an array of the series' shape.
         """
@@ -635,7 +635,7 @@ class Spline:
         return np.array(res).reshape(self._pre + self._trail)
 
     def integral(self, a: float, b: float) -> float:
-        """Exact integral over [a, b] inside the data (``ts_integral``); raises outside."""
+        """Exact integral over [a, b] inside the data (``ts_spline_integral``); raises outside."""
         av, bv = to_float(a, "a"), to_float(b, "b")
         try:
             return self._h[0].integral(av, bv)
@@ -690,7 +690,7 @@ class Spline:
         return [_report_dict(h.report(i)) for i in range(self._n)]
 
     def certify(self, lower=None, upper=None, *, report: bool = False):
-        """Exact check that lower < S < upper on every interval (``ts_certify``).
+        """Exact check that lower < S < upper on every interval (``ts_spline_certify``).
 
         lower/upper: (m, c) lines; with neither, the spline's own scheme lines
         (positive: y = 0).  Returns True/False, or (ok, list of report dicts)
@@ -718,7 +718,7 @@ class Spline:
     def error_bound(self, fprime_max: float, fsecond_max: float = math.inf,
                     exact_slopes: bool = False, per_interval: bool = False):
         """Bound on max|f - S| for any f through the data with max|f'| <=
-        fprime_max (``ts_error_bound``, first series); with
+        fprime_max (``ts_spline_error_bound``, first series); with
         ``per_interval=True`` also the array per interval."""
         try:
             b, per = self._h[0].error_bound(to_float(fprime_max, "fprime_max"),

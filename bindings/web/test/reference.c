@@ -8,8 +8,8 @@
  *   file   = "TSREF1\0\0" u32 count, then count cases
  *   spline = u32 0, u32 form slopes shape extrap, u32 n, f64 alpha beta margin
  *            lm lc um uc, f64 x[n] f[n], u32 status index, and when status is 0:
- *            u32 m, f64 xq[m], f64 scalar[3m] (y dy d2y of ts_eval_deriv per query;
- *            NaN where it fails), f64 batch[3m] (ts_eval_batch deriv 0, 1, 2),
+ *            u32 m, f64 xq[m], f64 scalar[3m] (y dy d2y of ts_spline_eval_deriv per query;
+ *            NaN where it fails), f64 batch[3m] (ts_spline_eval_batch deriv 0, 1, 2),
  *            f64 report[17 (n-1)] (ts_spline_report rows, glue.c's order)
  *   curve  = u32 1, u32 param closed slopes, u32 n, f64 alpha beta margin,
  *            f64 box[12] (glue.c's order), f64 pts[2n], u32 status index, and when
@@ -56,8 +56,8 @@ static void spline_case(int form, int slopes, int shape, int extrap, size_t n, d
                         double beta, double margin, ts_line lo, ts_line hi, const double *x,
                         const double *f)
 {
-    ts_options o;
-    ts_options_init(&o);
+    ts_spline_options o;
+    ts_spline_options_init(&o);
     o.form = (ts_form)form;
     o.slopes = (ts_slopes)slopes;
     o.shape = (ts_shape)shape;
@@ -87,9 +87,9 @@ static void spline_case(int form, int slopes, int shape, int extrap, size_t n, d
         xq[j] = j < n ? x[j] : x[0] - pad + (span + 2 * pad) * uniform();
     ts_cursor cur = TS_CURSOR_INIT;
     for (size_t j = 0; j < NQ; j++)
-        (void)ts_eval_deriv(s, xq[j], &cur, &val[3 * j], &val[3 * j + 1], &val[3 * j + 2]);
+        (void)ts_spline_eval_deriv(s, xq[j], &cur, &val[3 * j], &val[3 * j + 1], &val[3 * j + 2]);
     for (int d = 0; d < 3; d++)
-        (void)ts_eval_batch(s, d, xq, NQ, bat + (size_t)d * NQ, NULL, &e);
+        (void)ts_spline_eval_batch(s, d, xq, NQ, bat + (size_t)d * NQ, NULL, &e);
     u32(NQ);
     f64s(xq, NQ);
     f64s(val, 3 * NQ);
