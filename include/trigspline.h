@@ -205,7 +205,8 @@ TS_API const char *ts_status_name(ts_status status);
 /* Options                                                              */
 /* ------------------------------------------------------------------ */
 
-/* docs/method.md §3 paper form (default), §3 C¹ option, §4 geometric form. */
+/* docs/method.md §3 paper form, §3 C¹ option, §4 geometric form (default of
+ * ts_spline_options_init, docs/method.md §5.10). */
 typedef enum ts_form {
     TS_FORM_PAPER = 0,
     TS_FORM_C1 = 1,
@@ -257,7 +258,8 @@ typedef enum ts_form {
  * TS_SLOPES_ARITHMETIC, replaced by 0 unless it has the (non-zero) sign of
  * the end secant.  Every method returns exactly m on data of a line y = m x + c
  * whose secants are exactly equal, never NaN on flat runs (Δ = 0), and d_i = 0
- * at local extrema and flat points for GEOMETRIC, HARMONIC and FRITSCH_CARLSON.
+ * at local extrema and flat points for GEOMETRIC, HARMONIC, FRITSCH_CARLSON and
+ * STEFFEN.
  *
  *  ARITHMETIC  d_i = w Δ_{i-1} + (1-w) Δ_i; ends d_0 = Δ_0 + (Δ_0 - Δ_1) h_0/(h_0 + h_1)
  *              and its mirror: the slopes of the parabola through three
@@ -289,6 +291,16 @@ typedef enum ts_form {
  *  PERIODIC    the arithmetic mean with wrap-around: interval n-1 is the left
  *              neighbour of point 0; d_n = d_0 exactly.  Needs f[0] == f[n]
  *              exactly (TS_ERR_PERIODIC, index n).
+ *  STEFFEN     Steffen 1990 (the default): d_i = (sgn Δ_{i-1} + sgn Δ_i)
+ *              min(|Δ_{i-1}|, |Δ_i|, |p_i|/2), p_i the three-point (arithmetic)
+ *              slope; so d_i = 0 where the data turn or a neighbouring secant is
+ *              0, and d_i = p_i on smooth monotone data away from extrema.
+ *              Ends (Steffen's eq. 26): the three-point end value p_0 of
+ *              ARITHMETIC, 0 if p_0 Δ_0 <= 0, 2Δ_0 if |p_0| > 2|Δ_0| (and
+ *              mirrored).  On every interval 0 <= d/Δ <= 2 at both ends, which
+ *              with alpha >= 8/(3π) keeps PCHIP's promise (docs/method.md §5.10).
+ *              GSL's gsl_interp_steffen takes d_0 = Δ_0, d_n = Δ_{n-1} at the
+ *              ends instead; inner slopes are the same.
  *
  * ts_slopes_compute fills d with NaN when it fails; finite data whose
  * slope overflows (huge f over a tiny h) give TS_ERR_SLOPE_OVERFLOW with the
@@ -296,16 +308,17 @@ typedef enum ts_form {
  * is finite (secants of f near ±DBL_MAX, the end formula's Δ_0 − Δ_1).
  */
 typedef enum ts_slopes {
-    TS_SLOPES_ARITHMETIC = 0,     /* three-point arithmetic mean (default) */
+    TS_SLOPES_ARITHMETIC = 0,     /* three-point arithmetic mean (the paper's) */
     TS_SLOPES_GEOMETRIC = 1,      /* weighted geometric mean of neighbouring secants (0 if signs differ) */
     TS_SLOPES_HARMONIC = 2,       /* weighted harmonic mean, Fritsch–Butland (three-point weights) */
     TS_SLOPES_FRITSCH_CARLSON = 3,/* PCHIP (Fritsch–Carlson 1980 with Brodlie weights; ends as in Fritsch–Carlson/Moler) */
     TS_SLOPES_AKIMA = 4,          /* Akima 1970 */
     TS_SLOPES_MAKIMA = 5,         /* modified Akima (Moler 2019) */
     TS_SLOPES_USER = 6,           /* ts_spline_options.user_slopes, n+1 values */
-    TS_SLOPES_PERIODIC = 7        /* periodic three-point mean; needs f[0] == f[n] */
+    TS_SLOPES_PERIODIC = 7,       /* periodic three-point mean; needs f[0] == f[n] */
+    TS_SLOPES_STEFFEN = 8         /* Steffen 1990 (default): 0 <= d/Δ <= 2 on every interval */
 } ts_slopes;
-#define TS_SLOPES_COUNT_ 8
+#define TS_SLOPES_COUNT_ 9
 
 /*
  * docs/method.md §5.  Which region the curve must stay in.  The caller gives alpha and
@@ -381,6 +394,18 @@ typedef struct ts_line {
     double c;
 } ts_line;
 
+/*
+ * Default alpha (docs/method.md §5.10).  With slopes in the box
+ * 0 <= d/Δ <= D at both ends of an interval, a_i >= 4D/(3π) keeps its control
+ * values monotone and between its two data values, so S is monotone there
+ * and stays inside the interval's data range (PCHIP's promise; no new
+ * extrema).  Steffen's slopes (the default) have D = 2: the bound is
+ * 8/(3π) = 0.8488263631567751, rounded up to 0.85 (relative slack 1.4e-3
+ * against rounding of the control values).  The geometric form needs
+ * a_i >= TS_GEOMETRIC_A_MIN, which 0.85 satisfies.
+ */
+#define TS_DEFAULT_ALPHA 0.85
+
 /* Default margin t of docs/method.md §5 (dimensionless, added to beta). */
 #define TS_DEFAULT_MARGIN 0.01
 
@@ -391,12 +416,12 @@ typedef struct ts_line {
  */
 typedef struct ts_spline_options {
     size_t struct_size;        /* sizeof(ts_spline_options), set by ts_spline_options_init (struct guards) */
-    ts_form form;              /* default TS_FORM_PAPER */
-    ts_slopes slopes;          /* default TS_SLOPES_ARITHMETIC */
+    ts_form form;              /* default TS_FORM_GEOMETRIC (the paper's: TS_FORM_PAPER) */
+    ts_slopes slopes;          /* default TS_SLOPES_STEFFEN (the paper's: TS_SLOPES_ARITHMETIC) */
     const double *user_slopes; /* TS_SLOPES_USER: n_points values */
     size_t n_user_slopes;
 
-    double alpha;              /* default 1 */
+    double alpha;              /* default TS_DEFAULT_ALPHA (the paper's: 1) */
     const double *alphas;      /* optional, per interval */
     size_t n_alphas;
 
@@ -424,6 +449,11 @@ typedef struct ts_spline_options {
     ts_extrap extrapolate;     /* default TS_EXTRAP_ERROR */
 } ts_spline_options;
 
+/* The defaults: geometric form, Steffen's slopes, alpha = TS_DEFAULT_ALPHA,
+ * beta 0, no shape scheme, margin TS_DEFAULT_MARGIN, certify on, extrapolation
+ * error.  Every interval of the default curve is monotone and between its two
+ * data values (docs/method.md §5.10).  The paper's own spline: form
+ * TS_FORM_PAPER, slopes TS_SLOPES_ARITHMETIC, alpha 1. */
 TS_API void ts_spline_options_init(ts_spline_options *opt);
 
 /* ------------------------------------------------------------------ */

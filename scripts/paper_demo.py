@@ -29,8 +29,17 @@ def data(name):
     return os.path.join(DATA, name)
 
 
+# The paper's own spline (docs/method.md §3): the library's defaults are the
+# geometric form with Steffen's slopes (docs/method.md §5.10), so every
+# function fit states the paper's options; a panel's own --alpha follows and wins.
+PAPER_OPTIONS = ["--form", "paper", "--slopes", "arithmetic", "--alpha", "1"]
+
+
 def run(args, svg_title):
     """Run the CLI with --json and --svg; return (status, json or None, svg text, stderr)."""
+    if args[0] in ("fit", "certify") and "--points-only" not in args:
+        pin = PAPER_OPTIONS[:4] if "--alphas" in args else PAPER_OPTIONS
+        args = args[:2] + pin + args[2:]
     svg = os.path.join(TMP, "p%d.svg" % run.counter)
     run.counter += 1
     cmd = [CLI] + args + ["--json", "--svg", svg, "--title", svg_title]

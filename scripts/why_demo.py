@@ -9,8 +9,8 @@ data/examples/; the page goes to OUT_DIR/index.html (temporary file +
 rename), the files the commands write to OUT_DIR/files/.
 
 Every number on the page is computed here, when the page is made:
-  - ours: the `trigspline` commands shown on the page in full (--form given
-    explicitly), their JSON report (the exact certificate, docs/method.md §5.6,
+  - ours: the `trigspline` commands shown on the page in full (--form and
+    the paper's --slopes arithmetic given explicitly), their JSON report (the exact certificate, docs/method.md §5.6,
     and the overshoot, §5.9) and their samples;
   - SciPy CubicSpline (not-a-knot), PchipInterpolator, Akima1DInterpolator,
     from Debian's python3-scipy;
@@ -190,7 +190,7 @@ def function_panel(key, title, intro, verdict, data_name, lower, upper, our_args
     """A data set y(x) with a lower and/or upper bound (functions of x, or None)."""
     data = os.path.join(DATA, data_name)
     x, f, cols = read_xy(data)
-    ours = Ours(key + "_ours", data, ["--form", FORM] + our_args)
+    ours = Ours(key + "_ours", data, ["--form", FORM, "--slopes", "arithmetic"] + our_args)
     grid = dense_grid(x, DENSE)
     comp = competitors(x, f, data, grid)
     pgrid = dense_grid(x, PLOT_M)
@@ -385,7 +385,7 @@ def rejected_panel():
     key = "cloud"
     data = os.path.join(DATA, "cloud_cover.csv")
     x, f, cols = read_xy(data)
-    cmd = [CLI, "fit", data, "--form", FORM, "--lower", "0,0", "--upper", "0,100", "--json"]
+    cmd = [CLI, "fit", data, "--form", FORM, "--slopes", "arithmetic", "--alpha", "1", "--lower", "0,0", "--upper", "0,100", "--json"]
     p = subprocess.run(cmd, capture_output=True, text=True)
     grid = dense_grid(x, DENSE)
     comp = competitors(x, f, data, grid)
@@ -446,7 +446,7 @@ def alpha_study():
         x, f, _ = read_xy(data)
         span = float(np.max(f) - np.min(f))
         for a in alphas:
-            cmd = [CLI, "fit", data, "--form", FORM] + args + ["--alpha", a, "--json"]
+            cmd = [CLI, "fit", data, "--form", FORM, "--slopes", "arithmetic"] + args + ["--alpha", a, "--json"]
             p = run(cmd, ok=(0, 3))
             cmds.append(cmd)
             if p.returncode == 3:
@@ -461,7 +461,7 @@ def alpha_study():
             js = json.loads(p.stdout)
             ov = js["overshoot"]
             exc = max(ov["max_excursion_above"], ov["max_excursion_below"]) / span
-            cmd2 = [CLI, "fit", data, "--form", FORM] + args + ["--alpha", a, "--samples", "41"]
+            cmd2 = [CLI, "fit", data, "--form", FORM, "--slopes", "arithmetic"] + args + ["--alpha", a, "--samples", "41"]
             q = run(cmd2)
             cmds.append(cmd2)
             sx, sy = read_cli_xy(q.stdout)
@@ -479,7 +479,7 @@ def alpha_study():
     x, f, _ = read_xy(data)
     span = float(np.max(f) - np.min(f))
     for form in ("paper", "c1", "geometric"):
-        cmd = [CLI, "fit", data, "--form", form, "--shape", "positive", "--alpha", "1", "--json"]
+        cmd = [CLI, "fit", data, "--form", form, "--slopes", "arithmetic", "--shape", "positive", "--alpha", "1", "--json"]
         js = json.loads(run(cmd).stdout)
         cmds.append(cmd)
         ov = js["overshoot"]
@@ -491,7 +491,7 @@ def alpha_study():
         with open(at, "w") as fh:
             for i in range(1, len(x) - 1):
                 fh.write("%r\n%r\n" % (x[i] - 1e-9 * (x[i] - x[i - 1]), x[i] + 1e-9 * (x[i + 1] - x[i])))
-        cmd_d = [CLI, "fit", data, "--form", form, "--shape", "positive", "--alpha", "1", "--at", at,
+        cmd_d = [CLI, "fit", data, "--form", form, "--slopes", "arithmetic", "--shape", "positive", "--alpha", "1", "--at", at,
                  "--derivative", "1"]
         q = run(cmd_d)
         cmds.append(cmd_d)
@@ -530,7 +530,7 @@ def overshoot_section():
     data = os.path.join(DATA, "rainfall_daily.csv")
     out = []
     for a in ("0.1", "1"):
-        cmd = [CLI, "fit", data, "--form", FORM, "--shape", "positive", "--alpha", a, "--json"]
+        cmd = [CLI, "fit", data, "--form", FORM, "--slopes", "arithmetic", "--shape", "positive", "--alpha", a, "--json"]
         p = run(cmd)
         js = json.loads(p.stdout)
         ov = js["overshoot"]

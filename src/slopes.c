@@ -234,6 +234,48 @@ static void periodic(const double *x, const double *f, size_t n, double *d, size
         d[n] = e;
 }
 
+/* docs/method.md §6 Steffen (1990): inner d_i = (sgn Δ_{i-1} + sgn Δ_i)
+ * min(|Δ_{i-1}|, |Δ_i|, |p_i|/2), p_i the three-point slope; 2 min(..) <= |p_i|,
+ * so no overflow.  Ends (his eq. 26): the three-point end value, 0 unless it
+ * has the sign of Δ_0, at most 2Δ_0. */
+static void steffen(const double *x, const double *f, size_t n, double *d, size_t p0, size_t p1)
+{
+    size_t lo = p0 > 1 ? p0 : 1, hi = p1 < n ? p1 : n;
+    for (size_t i = lo; i < hi; i++) {
+        double hl = x[i] - x[i - 1], hr = x[i + 1] - x[i];
+        double Dl = secant_of(f[i - 1], f[i], hl), Dr = secant_of(f[i], f[i + 1], hr);
+        if (!same_sign(Dl, Dr)) {
+            d[i] = 0.0;
+            continue;
+        }
+        double p = mean_arith3(hl, hr, Dl, Dr);
+        double m = fmin(fmin(fabs(Dl), fabs(Dr)), 0.5 * fabs(p));
+        d[i] = Dl > 0.0 ? 2.0 * m : -2.0 * m;
+    }
+    for (int side = 0; side < 2; side++) {
+        if (side == 0 ? p0 > 0 : p1 <= n)
+            continue;
+        double h0, h1, D0, D1;
+        if (side == 0) {
+            h0 = x[1] - x[0];
+            h1 = x[2] - x[1];
+            D0 = secant(x, f, 0);
+            D1 = secant(x, f, 1);
+        } else {
+            h0 = x[n] - x[n - 1];
+            h1 = x[n - 1] - x[n - 2];
+            D0 = secant(x, f, n - 1);
+            D1 = secant(x, f, n - 2);
+        }
+        double e = end3(h0, h1, D0, D1);
+        if (!same_sign(e, D0))
+            e = 0.0;
+        else if (fabs(e) > 2.0 * fabs(D0))
+            e = 2.0 * D0;
+        d[side == 0 ? 0 : n] = e;
+    }
+}
+
 /* 1 if every d[0..np) is finite. */
 TS_VECTOR_LOOP static int all_finite(const double *restrict d, size_t np)
 {
@@ -274,6 +316,9 @@ void ts__slopes_range(ts_slopes method, const double *x, const double *f, size_t
         break;
     case TS_SLOPES_PERIODIC:
         periodic(x, f, n, d, p0, p1);
+        break;
+    case TS_SLOPES_STEFFEN:
+        steffen(x, f, n, d, p0, p1);
         break;
     case TS_SLOPES_ARITHMETIC:
     case TS_SLOPES_USER:

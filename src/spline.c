@@ -14,9 +14,9 @@ void ts__options_defaults(ts_spline_options *opt)
         return;
     memset(opt, 0, sizeof *opt);
     opt->struct_size = sizeof *opt;
-    opt->form = TS_FORM_PAPER;
-    opt->slopes = TS_SLOPES_ARITHMETIC;
-    opt->alpha = 1.0;
+    opt->form = TS_FORM_GEOMETRIC; /* docs/method.md §5.10 */
+    opt->slopes = TS_SLOPES_STEFFEN;
+    opt->alpha = TS_DEFAULT_ALPHA;
     opt->beta = 0.0;
     opt->shape = TS_SHAPE_NONE;
     opt->margin = TS_DEFAULT_MARGIN;

@@ -45,7 +45,8 @@ static const char *const slopes_names[] = {
     [TS_SLOPES_ARITHMETIC] = "arithmetic", [TS_SLOPES_GEOMETRIC] = "geometric",
     [TS_SLOPES_HARMONIC] = "harmonic",     [TS_SLOPES_FRITSCH_CARLSON] = "fritsch-carlson",
     [TS_SLOPES_AKIMA] = "akima",           [TS_SLOPES_MAKIMA] = "makima",
-    [TS_SLOPES_USER] = "user",             [TS_SLOPES_PERIODIC] = "periodic"};
+    [TS_SLOPES_USER] = "user",             [TS_SLOPES_PERIODIC] = "periodic",
+    [TS_SLOPES_STEFFEN] = "steffen"};
 static const char *const shape_names[] = {
     [TS_SHAPE_NONE] = "none",   [TS_SHAPE_POSITIVE] = "positive", [TS_SHAPE_ABOVE] = "above",
     [TS_SHAPE_BELOW] = "below", [TS_SHAPE_BETWEEN] = "between",   [TS_SHAPE_MONOTONE] = "monotone"};

@@ -182,7 +182,7 @@ def main():
     # ---- ours: the exact certificate against dense samples of our curve
     for key, name, args, lo in (("rainfall", "rainfall_daily.csv", ["--shape", "positive"], lambda s: 0 * s),
                                 ("growth", "growth_above_trend.csv", ["--lower", "1.5,10"], lambda s: 1.5 * s + 10)):
-        q = subprocess.run([CLI, "fit", os.path.join(DATA, name), "--form", "paper"] + args +
+        q = subprocess.run([CLI, "fit", os.path.join(DATA, name), "--form", "paper", "--slopes", "arithmetic"] + args +
                            ["--alpha", "1", "--samples", "2001"], capture_output=True, text=True)
         d = cli_xy(q.stdout)
         smin = float(np.min(d["y"] - lo(d["x"])))

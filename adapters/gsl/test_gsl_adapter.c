@@ -139,7 +139,7 @@ static void test_compare(void)
     compare(ts_gsl_interp_positive_c1, &o, D4x, D4f, N_OF(D4x), "positive_c1/D4");
     o.shape = TS_SHAPE_MONOTONE;
     compare(ts_gsl_interp_monotone_c1, &o, D3x, D3f, N_OF(D3x), "monotone_c1/D3");
-    o.form = TS_FORM_PAPER;
+    o.form = TS_FORM_GEOMETRIC; /* ts_spline_options_init's form: the types without "_c1" */
     compare(ts_gsl_interp_monotone, &o, D3x, D3f, N_OF(D3x), "monotone/D3");
     compare(ts_gsl_interp_monotone, &o, T1x, T1f, 4, "monotone/T1 decreasing part");
 
@@ -150,9 +150,9 @@ static void test_compare(void)
         ts_shape shape;
         ts_form form;
     } types[] = {
-        {ts_gsl_interp_trig, "trigspline", TS_SHAPE_NONE, TS_FORM_PAPER},
-        {ts_gsl_interp_positive, "trigspline-positive", TS_SHAPE_POSITIVE, TS_FORM_PAPER},
-        {ts_gsl_interp_monotone, "trigspline-monotone", TS_SHAPE_MONOTONE, TS_FORM_PAPER},
+        {ts_gsl_interp_trig, "trigspline", TS_SHAPE_NONE, TS_FORM_GEOMETRIC},
+        {ts_gsl_interp_positive, "trigspline-positive", TS_SHAPE_POSITIVE, TS_FORM_GEOMETRIC},
+        {ts_gsl_interp_monotone, "trigspline-monotone", TS_SHAPE_MONOTONE, TS_FORM_GEOMETRIC},
         {ts_gsl_interp_positive_c1, "trigspline-positive-c1", TS_SHAPE_POSITIVE, TS_FORM_C1},
         {ts_gsl_interp_monotone_c1, "trigspline-monotone-c1", TS_SHAPE_MONOTONE, TS_FORM_C1},
     };
@@ -167,7 +167,7 @@ static void test_compare(void)
         CHECK(gsl_spline_init(sp, D3x, D3f, N_OF(D3x)) == GSL_SUCCESS);
         const ts_spline *s = ts_gsl_spline(sp->interp);
         CHECK(s && ts_spline_shape(s) == types[k].shape && ts_spline_form(s) == types[k].form);
-        CHECK(s && ts_spline_alpha(s)[0] == 1.0);
+        CHECK(s && ts_spline_alpha(s)[0] == TS_DEFAULT_ALPHA);
         if (s && types[k].shape != TS_SHAPE_NONE)
             CHECK(ts_spline_certified(s) == 1);
         gsl_spline_free(sp);
@@ -358,7 +358,7 @@ static void test_interp_and_configure(void)
     CHECK(ts_gsl_configure(it, NULL) == GSL_SUCCESS);
     CHECK(gsl_interp_init(it, T1x, T1f, n) == GSL_SUCCESS);
     g = ts_gsl_spline(it);
-    CHECK(g && ts_spline_alpha(g)[0] == 1.0);
+    CHECK(g && ts_spline_alpha(g)[0] == TS_DEFAULT_ALPHA);
     for (int j = 0; j <= 300; j++) {
         double q = 30.0 * j / 300.0;
         gsl_interp_eval_e(it, T1x, T1f, q, acc, &v);

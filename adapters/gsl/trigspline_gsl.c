@@ -13,17 +13,18 @@ typedef struct ts_gsl_state {
     ts_spline_options opt;
 } ts_gsl_state;
 
-/* The defaults of one type. */
+/* The defaults of one type: the library's (ts_spline_options_init) with this shape,
+ * and form C¹ for the "_c1" types. */
 typedef struct ts_gsl_kind {
     ts_shape shape;
-    ts_form form;
+    int c1;
 } ts_gsl_kind;
 
-static const ts_gsl_kind kind_trig = {TS_SHAPE_NONE, TS_FORM_PAPER};
-static const ts_gsl_kind kind_positive = {TS_SHAPE_POSITIVE, TS_FORM_PAPER};
-static const ts_gsl_kind kind_monotone = {TS_SHAPE_MONOTONE, TS_FORM_PAPER};
-static const ts_gsl_kind kind_positive_c1 = {TS_SHAPE_POSITIVE, TS_FORM_C1};
-static const ts_gsl_kind kind_monotone_c1 = {TS_SHAPE_MONOTONE, TS_FORM_C1};
+static const ts_gsl_kind kind_trig = {TS_SHAPE_NONE, 0};
+static const ts_gsl_kind kind_positive = {TS_SHAPE_POSITIVE, 0};
+static const ts_gsl_kind kind_monotone = {TS_SHAPE_MONOTONE, 0};
+static const ts_gsl_kind kind_positive_c1 = {TS_SHAPE_POSITIVE, 1};
+static const ts_gsl_kind kind_monotone_c1 = {TS_SHAPE_MONOTONE, 1};
 
 int ts_gsl_status(ts_status status)
 {
@@ -82,7 +83,8 @@ static int init_kind(void *vstate, const double xa[], const double ya[], size_t 
     } else {
         ts_spline_options_init(&o);
         o.shape = k->shape;
-        o.form = k->form;
+        if (k->c1)
+            o.form = TS_FORM_C1;
     }
     /* NaN / Inf in ya (or xa) gives TS_ERR_NONFINITE -> GSL_EINVAL */
     return ts_gsl_status(ts_spline_new(xa, ya, size, &o, &st->s, &st->err));

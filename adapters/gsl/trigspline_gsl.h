@@ -14,13 +14,16 @@
  *
  * Link with libtrigspline_gsl.a, libtrigspline and -lgsl -lgslcblas -lm.
  *
- * The types (all min_size 2, arithmetic-mean slopes of docs/method.md §6,
- * paper form of docs/method.md §3 unless "_c1"):
+ * The types (all min_size 2, the library's defaults of ts_spline_options_init —
+ * Steffen's slopes of docs/method.md §6, alpha = TS_DEFAULT_ALPHA, the
+ * geometric form of docs/method.md §4 — unless "_c1"):
  *
- *   ts_gsl_interp_trig         "trigspline"              no shape scheme, alpha = 1,
- *                                                        beta = 0: a_i = 1 on every
- *                                                        interval, so the curve is C¹
- *                                                        and S'(x_i) = d_i
+ *   ts_gsl_interp_trig         "trigspline"              no shape scheme: every
+ *                                                        interval monotone and inside
+ *                                                        its two data values, no new
+ *                                                        extrema (PCHIP's promise,
+ *                                                        docs/method.md §5.10), C¹,
+ *                                                        S'(x_i) = d_i, lines exact
  *   ts_gsl_interp_positive     "trigspline-positive"     docs/method.md §5.1: S >= 0
  *                                                        (S > 0 where all data > 0),
  *                                                        certified
@@ -31,16 +34,12 @@
  *                                                        derivative jump at the knots;
  *                                                        same guarantees)
  *
- * Default alpha: 1 for every type, margin t = TS_DEFAULT_MARGIN (0.01).
- * With alpha = 1 the shape schemes leave the curve as it is wherever it is
- * far from the boundary (beta_i = t, a_i = 1.01: the plain spline up to 1%)
- * and raise beta_i only where a constraint needs it (a steep approach to zero
- * for the positive scheme, knot slopes large against the secant for the
- * monotone one), so a GSL user gets the least deformed curve that keeps the
- * promise.  The paper
- * draws its figures with small alpha (0.15 in Figure 4c), which gives a
- * flatter, tighter look; choose that, or any other option of ts_spline_options,
- * with ts_gsl_configure() below.
+ * Default alpha: TS_DEFAULT_ALPHA (0.85) for every type, margin t =
+ * TS_DEFAULT_MARGIN (0.01).  The shape schemes only raise beta_i where a
+ * constraint needs it, so a GSL user gets the least deformed curve that keeps
+ * the promise.  The paper's own spline (paper form, arithmetic slopes,
+ * alpha = 1) and its figures' small alpha (0.15 in Figure 4c) are one
+ * ts_gsl_configure() away (below).
  *
  * Calling convention.  GSL passes the data arrays x, y again to every eval
  * function; the adapter ignores them and evaluates the spline built by the

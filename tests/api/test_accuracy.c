@@ -4,6 +4,7 @@
  * study's functions, the measured orders within derived limits, lines in
  * every form. */
 #include "th.h"
+#include "th_options.h"
 #include "common/th_rng.h"
 #include "trigspline.h"
 
@@ -63,7 +64,7 @@ static double study(const fun *F, size_t n, int pert, ts_form form, ts_slopes sl
     if (sl != TS_SLOPES_USER)
         CHECK(ts_slopes_compute(sl, x, f, n + 1, d, NULL) == TS_OK);
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.form = form;
     o.slopes = TS_SLOPES_USER;
     o.user_slopes = d;
@@ -120,7 +121,7 @@ static void test_theorem1(void)
         double x[2] = {2.0, 2.0 + hs[k]}, f[2] = {2.0, 2.0 + hs[k]}, d[2] = {1, 1};
         double h = x[1] - x[0]; /* the h the spline sees */
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.slopes = TS_SLOPES_USER;
         o.user_slopes = d;
         o.n_user_slopes = 2;
@@ -307,7 +308,7 @@ static void test_lines_forms(void)
         for (int ai = 0; ai < 3; ai++) {
             double a = ai == 0 ? 0.5 : ai == 1 ? 1.0 : 3.0;
             ts_spline_options o;
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.form = (ts_form)fo;
             o.slopes = TS_SLOPES_USER;
             o.user_slopes = d;

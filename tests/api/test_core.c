@@ -23,6 +23,7 @@
  * magnitude <= (x_n - x_0)·M: tol 1e-13·M·(x_n - x_0).
  */
 #include "th.h"
+#include "th_options.h"
 #include "common/th_rng.h"
 #include "trigspline.h"
 
@@ -76,7 +77,7 @@ static double h_of(const tcase *tc, size_t i) { return tc->x[i + 1] - tc->x[i]; 
 static ts_spline *build(const tcase *tc, ts_extrap ex)
 {
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.form = tc->form ? TS_FORM_C1 : TS_FORM_PAPER;
     if (tc->slopes == 6) {
         o.slopes = TS_SLOPES_USER;
@@ -480,17 +481,21 @@ static void case_end(tcase *tc)
     tc->sp = tc->ext = NULL;
 }
 
-/* opt == NULL means all defaults: same spline as alpha 1, beta 0, paper form,
- * arithmetic slopes, extrapolation error. */
+/* opt == NULL means all defaults: same spline as ts_spline_options_init's, which are
+ * the geometric form, Steffen's slopes, alpha = TS_DEFAULT_ALPHA >= 8/(3π)
+ * (docs/method.md §5.10), beta 0, extrapolation error. */
 static void test_defaults(void)
 {
     const double x[5] = {0, 1, 2.5, 3, 4.75}, f[5] = {1, -2, 0.5, 3, 2};
     ts_spline *a = NULL, *b = NULL;
     ts_spline_options o;
     ts_spline_options_init(&o);
-    CHECK(o.form == TS_FORM_PAPER && o.slopes == TS_SLOPES_ARITHMETIC && o.alpha == 1.0 && o.beta == 0.0 &&
+    CHECK(o.form == TS_FORM_GEOMETRIC && o.slopes == TS_SLOPES_STEFFEN &&
+          o.alpha == TS_DEFAULT_ALPHA && o.beta == 0.0 &&
           o.shape == TS_SHAPE_NONE && o.extrapolate == TS_EXTRAP_ERROR && o.margin == TS_DEFAULT_MARGIN &&
           o.alphas == NULL && o.betas == NULL && o.user_slopes == NULL && o.certify == 1);
+    /* the bound of docs/method.md §5.10 with D = 2, and not far above it */
+    CHECK(TS_DEFAULT_ALPHA >= 8.0 / (3.0 * TH_PI) && TS_DEFAULT_ALPHA < 1.002 * 8.0 / (3.0 * TH_PI));
     CHECK(ts_spline_new(x, f, 5, NULL, &a, NULL) == TS_OK);
     CHECK(ts_spline_new(x, f, 5, &o, &b, NULL) == TS_OK);
     if (a && b) {
@@ -500,14 +505,17 @@ static void test_defaults(void)
             CHECK(ts_spline_eval_deriv(b, t, NULL, &yb, &db, &sb) == TS_OK);
             CHECK(ya == yb && da == db && sa == sb);
         }
-        CHECK(ts_spline_alpha(a)[2] == 1.0 && ts_spline_beta(a)[2] == 0.0);
+        CHECK(ts_spline_alpha(a)[2] == TS_DEFAULT_ALPHA && ts_spline_beta(a)[2] == 0.0);
+        CHECK(ts_spline_form(a) == TS_FORM_GEOMETRIC);
         /* arithmetic mean is exact on quadratics (docs/method.md §6): slopes of 2x² - x */
         ts_spline_free(a);
         a = NULL;
         double q[5];
         for (int i = 0; i < 5; i++)
             q[i] = 2 * x[i] * x[i] - x[i];
-        CHECK(ts_spline_new(x, q, 5, NULL, &a, NULL) == TS_OK);
+        ts_spline_options ar = o;
+        ar.slopes = TS_SLOPES_ARITHMETIC;
+        CHECK(ts_spline_new(x, q, 5, &ar, &a, NULL) == TS_OK);
         if (a)
             for (int i = 0; i < 5; i++)
                 CHECK_CLOSE(ts_spline_slopes(a)[i], 4 * x[i] - 1, 1e-13 * 50);
@@ -540,7 +548,7 @@ static void test_constant(void)
 {
     double x[4] = {-1, 0.5, 0.75, 4}, f[4] = {2.5, 2.5, 2.5, 2.5}, al[3] = {0.1, 3, 1}, be[3] = {0, 0.5, 7};
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.alphas = al, o.n_alphas = 3, o.betas = be, o.n_betas = 3;
     for (int form = 0; form < 2; form++) {
         o.form = form ? TS_FORM_C1 : TS_FORM_PAPER;

@@ -17,6 +17,7 @@
  *    last one not proved, one not proved in a later block of 256; every
  *    result checked by ts_spline_certify and dense samples in long double. */
 #include "th.h"
+#include "th_options.h"
 #include "common/th_gapmin.h"
 #include "common/th_rng.h"
 #include "trigspline.h"
@@ -41,7 +42,7 @@ static long double exact_min(const double B[4], double x0, double x1, double m, 
 static ts_spline *plain(const double *x, const double *f, const double *d, size_t np)
 {
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.slopes = TS_SLOPES_USER;
     o.user_slopes = d;
     o.n_user_slopes = np;
@@ -166,7 +167,7 @@ static void built(const double *x, const double *f, size_t np, ts_shape shape, t
                   ts_line lo, ts_line up, const char *what)
 {
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.shape = shape;
     o.form = form;
     o.lower = lo;

@@ -43,6 +43,7 @@
  * Seed: fixed (TS_PROP_SEED); each set is reproducible from (scheme, form, k).
  */
 #include "th.h"
+#include "th_options.h"
 #include "common/th_basis.h"
 #include "common/th_rng.h"
 #include "trigspline.h"
@@ -190,7 +191,7 @@ static double hmax(const dataset *D, size_t i)
 static void gen(dataset *D, int scheme, int form)
 {
     ts_spline_options *o = &D->o;
-    ts_spline_options_init(o);
+    th_options_paper(o);
     o->form = (ts_form)form;
     o->shape = (ts_shape)scheme;
     double r = th_unit();
@@ -756,7 +757,7 @@ static void large_offsets(void)
             f[i] = (2.75 * i + g[i] + (k == 2 ? 0.5 : 0.0)) * hs[k];
         }
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.form = TS_FORM_GEOMETRIC;
         o.shape = TS_SHAPE_ABOVE;
         o.lower.m = 2.75;
@@ -794,7 +795,7 @@ static void regressions(void)
     }
     for (int c = 0; c < 4; c++) {
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.form = TS_FORM_GEOMETRIC;
         o.alpha = 1e-3;
         const double *x = c < 2 ? x1 : x2, *f = c < 2 ? f1 : f2b;
@@ -843,7 +844,7 @@ static void regressions(void)
     /* monotone at a = 4/(3π) */
     const double xm[6] = {0, 1, 3, 3.5, 7, 8}, fm[6] = {0, 1, 1, 4, 9, 9.5};
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.form = TS_FORM_GEOMETRIC;
     o.shape = TS_SHAPE_MONOTONE;
     o.alpha = 1e-3;

@@ -618,7 +618,7 @@ static void fuzz_splines(void)
 
         /* ts_slopes_compute on the same data */
         double d[MAXP];
-        ts_slopes m = (ts_slopes)(th_chance(0.9) ? (int)th_below(TS_SLOPES_COUNT_) : enum_val(8));
+        ts_slopes m = (ts_slopes)(th_chance(0.9) ? (int)th_below(TS_SLOPES_COUNT_) : enum_val(TS_SLOPES_COUNT_));
         st = ts_slopes_compute(m, th_chance(0.02) ? NULL : D.x, D.f, np, d, &e);
         CHECK(in_set(st, SET_SLOPES) && err_ok(&e, st, np, n));
         int all_nan = 1, all_fin = 1;
@@ -659,7 +659,8 @@ static void fuzz_curves(void)
         co.closed = (int)th_below(2);
         if (co.closed && np > 2 && th_chance(0.5)) /* first point repeated at the end */
             memcpy(pts + (np - 1) * stride, pts, stride * sizeof(double));
-        co.slopes = (ts_slopes)(th_chance(0.9) ? (int)th_below(TS_SLOPES_COUNT_) : enum_val(8));
+        /* curves: the slopes before TS_SLOPES_STEFFEN (curves keep their own defaults) */
+        co.slopes = (ts_slopes)(th_chance(0.9) ? (int)th_below(8) : enum_val(8));
         co.alpha = th_chance(0.9) ? th_logu(1e-2, 10) : th_hostile();
         co.beta = th_chance(0.9) ? (th_chance(0.5) ? 0 : th_logu(1e-3, 10)) : th_hostile();
         size_t seg = co.closed ? np : (np ? np - 1 : 0);

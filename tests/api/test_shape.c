@@ -4,6 +4,7 @@
  * error with its exact status and index. */
 #include "common/th_gapmin.h"
 #include "th.h"
+#include "th_options.h"
 #include "trigspline.h"
 
 #include <float.h>
@@ -193,7 +194,7 @@ static void test_tables(void)
         const double a1[] = {0.15, 0.0001};
         for (int k = 0; k < 2; k++) {
             ts_spline_options o;
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_POSITIVE;
             o.alpha = a1[k];
@@ -214,7 +215,7 @@ static void test_tables(void)
          * (smallest gap 0.35 at x = 15).  Figures 5c (0.01), 5d (0.12). */
         {
             ts_spline_options o;
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_ABOVE;
             o.lower.m = 0.31;
@@ -235,7 +236,7 @@ static void test_tables(void)
         const double a2[] = {0.01, 0.12};
         for (int k = 0; k < 2; k++) {
             ts_spline_options o;
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_ABOVE;
             o.lower.m = 0.31;
@@ -256,7 +257,7 @@ static void test_tables(void)
         const double a3[] = {0.001, 0.1};
         for (int k = 0; k < 2; k++) {
             ts_spline_options o;
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_BELOW;
             o.upper.m = 1;
@@ -277,7 +278,7 @@ static void test_tables(void)
         const double a4[] = {0.4, 0.1};
         for (int k = 0; k < 2; k++) {
             ts_spline_options o;
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_BETWEEN;
             o.lower.m = 1;
@@ -317,7 +318,7 @@ static void test_unconstrained_figures(void)
              {0.05, 0.0, 0.0, 1.0, TS_OK}};
     for (int k = 0; k < 4; k++) {
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.alpha = c[k].a;
         o.beta = c[k].b;
         ts_spline *s = build(X1, F1, 9, &o, &st, &e);
@@ -358,7 +359,7 @@ static void test_theorem4_signs(void)
         beta_printed[i] = t + m;
     }
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.alpha = al;
     o.betas = beta_printed;
     o.n_betas = 4;
@@ -374,7 +375,7 @@ static void test_theorem4_signs(void)
         ts_spline_free(s);
     }
     for (int form = 0; form < 2; form++) {
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.form = (ts_form)form;
         o.alpha = al;
         o.margin = t;
@@ -420,7 +421,7 @@ static void test_bad_data(void)
     /* positive: first negative point */
     {
         const double f[] = {1, 2, -0.5, 3, -1};
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.shape = TS_SHAPE_POSITIVE;
         expect(x5, f, 5, &o, TS_ERR_NEGATIVE, 2, TS_WHERE_POINT, "negative");
         const double g[] = {-1e-300, 2, 1, 3, 1};
@@ -429,7 +430,7 @@ static void test_bad_data(void)
     /* above: point on the line, point across */
     {
         const double f[] = {1, 2, 2, 4, 6}; /* y = x: point 2 on it */
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.shape = TS_SHAPE_ABOVE;
         o.lower.m = 1;
         o.lower.c = 0;
@@ -440,7 +441,7 @@ static void test_bad_data(void)
     /* below */
     {
         const double f[] = {-1, 0, 1, 5, 2}; /* below y = x + 1: point 3 above */
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.shape = TS_SHAPE_BELOW;
         o.upper.m = 1;
         o.upper.c = 1;
@@ -451,7 +452,7 @@ static void test_bad_data(void)
     /* between: lines meet at x = 2 (lower y = x, upper y = 4 − x) */
     {
         const double f[] = {2, 2, 2, 2, 2};
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.shape = TS_SHAPE_BETWEEN;
         o.lower.m = 1;
         o.lower.c = 0;
@@ -469,7 +470,7 @@ static void test_bad_data(void)
     }
     /* monotone */
     {
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.shape = TS_SHAPE_MONOTONE;
         const double f[] = {0, 1, 1, 2, 1.5};
         expect(x5, f, 5, &o, TS_ERR_NONMONOTONE, 4, TS_WHERE_POINT, "nonmonotone up");
@@ -479,7 +480,7 @@ static void test_bad_data(void)
     /* zero knots with user slopes of the wrong sign */
     {
         const double x3[] = {0, 1, 2};
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.shape = TS_SHAPE_POSITIVE;
         o.slopes = TS_SLOPES_USER;
         o.n_user_slopes = 3;
@@ -509,7 +510,7 @@ static void test_bad_data(void)
     /* margins */
     {
         const double f[] = {1, 2, 3, 4, 5};
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.shape = TS_SHAPE_POSITIVE;
         const double bad[] = {0.0, -1.0, TH_NAN, TH_INF, -0.0};
         for (int k = 0; k < 5; k++) {
@@ -544,7 +545,7 @@ static void test_bad_data(void)
     /* non-finite lines (only the lines the scheme uses matter) */
     {
         const double f[] = {1, 2, 3, 4, 5};
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.shape = TS_SHAPE_ABOVE;
         o.lower.m = TH_NAN;
         expect(x5, f, 5, &o, TS_ERR_NONFINITE, TS_NO_INDEX, TS_WHERE_NONE, "lower nan");
@@ -574,7 +575,7 @@ static void test_bad_data(void)
     {
         const double x4[] = {0, 1, 2, 3}, f[] = {1, 10.3, 21, 31};
         for (int form = 0; form < 2; form++) {
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_ABOVE;
             o.lower.m = 10;
@@ -585,7 +586,7 @@ static void test_bad_data(void)
                 int any = 0;
                 for (double a = 10; a < 1e7 && !any; a *= 1.1) {
                     ts_spline_options p;
-                    ts_spline_options_init(&p);
+                    th_options_paper(&p);
                     p.alpha = a;
                     ts_spline *s = NULL;
                     ts_spline_new(x4, f, 4, &p, &s, NULL);
@@ -611,7 +612,7 @@ static void test_underflow_limit(void)
 {
     const double x[] = {0, 1, 2, 3}, f[] = {1, 1e-300, 4.9e-324, 1};
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.shape = TS_SHAPE_POSITIVE;
     expect(x, f, 4, &o, TS_ERR_INFEASIBLE, 1, TS_WHERE_INTERVAL, "underflow");
     /* 1e-300 alone is fine: a ≈ 1e299 */
@@ -634,7 +635,7 @@ static void test_repair(void)
             for (int k = 0; k < 3; k++) {
                 double f[] = {1, 10 + gaps[g], 21, 31};
                 ts_spline_options o;
-                ts_spline_options_init(&o);
+                th_options_paper(&o);
                 o.form = (ts_form)form;
                 o.shape = TS_SHAPE_ABOVE;
                 o.lower.m = 10;
@@ -671,7 +672,7 @@ static void test_repair(void)
             betas[i] = rule_beta(x, f, d, i, 0.1, 0.01, &L, NULL, 0, &term);
         }
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.alpha = 0.1;
         o.betas = betas;
         o.n_betas = 3;
@@ -691,7 +692,7 @@ static void test_zeros(void)
     for (int form = 0; form < 2; form++) {
         for (int k = 0; k < 3; k++) {
             ts_spline_options o;
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_POSITIVE;
             o.alpha = k == 0 ? 1e-4 : k == 1 ? 0.1 : 3;
@@ -727,7 +728,7 @@ static void test_zeros(void)
         ts_slopes_compute(TS_SLOPES_ARITHMETIC, xe, fe, 4, d, NULL);
         CHECK(d[3] > 0); /* the estimate has the wrong sign at the end... */
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.shape = TS_SHAPE_POSITIVE;
         ts_spline *s = NULL;
         CHECK(ts_spline_new(xe, fe, 4, &o, &s, NULL) == TS_OK);
@@ -742,7 +743,7 @@ static void test_zeros(void)
     {
         const double xp[] = {0, 1, 2, 3, 4}, fp[] = {0, 2, 1, 3, 0};
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.shape = TS_SHAPE_POSITIVE;
         o.slopes = TS_SLOPES_PERIODIC;
         ts_spline *s = NULL;
@@ -758,7 +759,7 @@ static void test_zeros(void)
     {
         const double xz[] = {0, 1, 2}, fz[] = {0, 0, 0};
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.shape = TS_SHAPE_POSITIVE;
         ts_spline *s = NULL;
         CHECK(ts_spline_new(xz, fz, 3, &o, &s, NULL) == TS_OK && ts_spline_certified(s));
@@ -803,7 +804,7 @@ static void test_monotone(void)
     for (int form = 0; form < 2; form++) {
         for (int k = 0; k < 3; k++) {
             ts_spline_options o;
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.form = (ts_form)form;
             o.shape = TS_SHAPE_MONOTONE;
             o.alpha = k == 0 ? 1e-4 : k == 1 ? 0.3 : 5;
@@ -837,7 +838,7 @@ static void test_monotone(void)
     {
         const double xd[] = {0, 1, 2, 3}, fd[] = {3, 2, 2, 0}, ud[] = {1, -1, 5, -2};
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.shape = TS_SHAPE_MONOTONE;
         o.slopes = TS_SLOPES_USER;
         o.user_slopes = ud;
@@ -856,7 +857,7 @@ static void test_monotone(void)
     {
         const double xc[] = {0, 1, 3}, fc[] = {2, 2, 2};
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.shape = TS_SHAPE_MONOTONE;
         ts_spline *s = NULL;
         CHECK(ts_spline_new(xc, fc, 3, &o, &s, NULL) == TS_OK);
@@ -877,7 +878,7 @@ static void test_certify_off(void)
 {
     for (int k = 0; k < 2; k++) {
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.alpha = 0.0001;
         if (k == 0) {
             o.shape = TS_SHAPE_POSITIVE;
@@ -918,7 +919,7 @@ static void test_horizontal(void)
     const double al[] = {0.01, 2, 1e-4, 0.5, 10, 0.05};
     for (int form = 0; form < 2; form++) {
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.form = (ts_form)form;
         o.shape = TS_SHAPE_BETWEEN;
         o.lower.m = 0;
@@ -1039,7 +1040,7 @@ static void test_touch_constant(void)
                         if (sl == TS_SLOPES_USER || (sl == TS_SLOPES_PERIODIC) != (data == 2))
                             continue;
                         ts_spline_options o;
-                        ts_spline_options_init(&o);
+                        th_options_paper(&o);
                         o.form = (ts_form)form;
                         o.shape = shapes[sh];
                         o.slopes = (ts_slopes)sl;
@@ -1059,7 +1060,7 @@ static void test_touch_constant(void)
     /* error paths: user slopes that leave the region at a touching knot; a
      * point an ulp outside; a sloped line still may not be touched */
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.shape = TS_SHAPE_BETWEEN;
     o.lower = (ts_line){0, 0};
     o.upper = (ts_line){0, 1};
@@ -1134,7 +1135,7 @@ static void test_monotone_ulps(void)
                         f[2] = nextafter(f[2], HUGE_VAL);
                 }
                 ts_spline_options o;
-                ts_spline_options_init(&o);
+                th_options_paper(&o);
                 o.form = (ts_form)form;
                 o.shape = TS_SHAPE_MONOTONE;
                 o.slopes = (ts_slopes)sl;

@@ -7,6 +7,7 @@
  * re-evaluated in long double from the basis of docs/method.md §2 (an
  * evaluation independent of the library's). */
 #include "th.h"
+#include "th_options.h"
 #include "trigspline.h"
 
 #include <float.h>
@@ -16,7 +17,7 @@
 static ts_spline *fit(const double *x, const double *f, size_t n, ts_form form)
 {
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.form = form;
     ts_spline *s = NULL;
     ts_status st = ts_spline_new(x, f, n, &o, &s, NULL);

@@ -582,7 +582,7 @@ static void test_errors(void)
         CHECK(ts_surface_new(x, 3, y, 3, z, &o, &s, &e) == status && s == NULL);            \
     } while (0)
     OPT_IS(o.form, (ts_form)3, TS_ERR_OPTION);
-    OPT_IS(o.slopes, (ts_slopes)8, TS_ERR_OPTION);
+    OPT_IS(o.slopes, (ts_slopes)TS_SLOPES_COUNT_, TS_ERR_OPTION);
     OPT_IS(o.slopes, TS_SLOPES_USER, TS_ERR_OPTION);
     OPT_IS(o.slopes, TS_SLOPES_PERIODIC, TS_ERR_OPTION);
     OPT_IS(o.shape, (ts_surface_shape)5, TS_ERR_OPTION);

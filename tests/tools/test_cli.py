@@ -73,6 +73,17 @@ def run(args, stdin=None, env=None, timeout=120):
     return p.returncode, p.stdout.decode("utf-8", "replace"), p.stderr.decode("utf-8", "replace")
 
 
+# The paper's own options (docs/method.md §3; the defaults before 1.0).  The
+# checks of the paper's tables below were derived for them: their calls pin
+# them, placed before the test's own options so that those still win.
+PAPER_OPTIONS = ["--form", "paper", "--slopes", "arithmetic", "--alpha", "1"]
+
+
+def paper_run(args, **kw):
+    pin = PAPER_OPTIONS[:4] if "--alphas" in args else PAPER_OPTIONS  # one of the two
+    return run(args[:2] + pin + args[2:], **kw)
+
+
 def csv_rows(text):
     lines = text.strip().split("\n")
     return lines[0], [l.split(",") for l in lines[1:]]
@@ -207,7 +218,7 @@ def test_usage_errors():
 
 
 def test_table1_positive():
-    rc, out, err = run(["fit", T1, "--shape", "positive", "--alpha", "0.15", "--json"])
+    rc, out, err = paper_run(["fit", T1, "--shape", "positive", "--alpha", "0.15", "--json"])
     check("T1 json rc", rc == 0, err)
     js = json.loads(out)
     check("T1 certified true", js["certified"] is True)
@@ -242,7 +253,7 @@ def test_table1_positive():
     check("T1 min gap = min of intervals",
           js["min_gap_lower"] == min(iv["gap_lower"] for iv in js["intervals"]))
     # CSV samples all > 0, count n*(N-1)+1
-    rc, out2, err = run(["fit", T1, "--shape", "positive", "--alpha", "0.15"])
+    rc, out2, err = paper_run(["fit", T1, "--shape", "positive", "--alpha", "0.15"])
     head, rows = csv_rows(out2)
     ys = [float(r[1]) for r in rows]
     check("T1 csv header: the input's names", head == "x,f")
@@ -256,7 +267,7 @@ def test_table1_positive():
         i = [float(x) for x in xs].index(kn["x"])
         check("T1 knot %s reproduced" % kn["x"], float(rows[i][1]) == kn["f"])
     # a fresh run prints the identical JSON (deterministic)
-    rc, out3, err = run(["fit", T1, "--shape", "positive", "--alpha", "0.15", "--json"])
+    rc, out3, err = paper_run(["fit", T1, "--shape", "positive", "--alpha", "0.15", "--json"])
     check("T1 json deterministic", out3 == out)
 
 
@@ -369,40 +380,40 @@ def test_malformed():
 def test_exit_statuses():
     # 2: Table 2 above the paper's line y = 0.31x + 1 (docs/method.md §9.5)
     for extra in ([], ["--json", "--svg", tmp("t2.svg")]):
-        rc, out, err = run(["fit", T2, "--shape", "above", "--line", "0.31,1"] + extra)
+        rc, out, err = paper_run(["fit", T2, "--shape", "above", "--line", "0.31,1"] + extra)
         check("table 2 refused rc 2 %s" % extra, rc == 2, err)
         check("table 2 names x = 1", "x = 1," in err and "table2_above_line.csv:2:" in err, err)
         check("table 2 lists 1, 14, 15", "x = 1, 14, 15" in err, err)
         check("table 2 nothing written", out == "" and not os.path.exists(tmp("t2.svg")))
     # 3: infeasible interval named
     for extra in ([], ["--json"]):
-        rc, out, err = run(["fit", fix("cli_infeasible.csv"), "--shape", "above", "--line",
+        rc, out, err = paper_run(["fit", fix("cli_infeasible.csv"), "--shape", "above", "--line",
                             "0.5,0", "-o", tmp("inf.csv")] + extra)
         check("infeasible rc 3 %s" % extra, rc == 3 and "interval 2" in err
               and "89.32847435369952" in err and "cli_infeasible.csv:6-7" in err, err)
         check("infeasible nothing written", not os.path.exists(tmp("inf.csv")))
-    rc, out, err = run(["fit", fix("cli_infeasible.csv"), "--shape", "above", "--line", "0.5,0",
+    rc, out, err = paper_run(["fit", fix("cli_infeasible.csv"), "--shape", "above", "--line", "0.5,0",
                         "--form", "geometric"])
     check("geometric form feasible there", rc == 0, err)
     # data touching constant bounds (docs/method.md §5.8): probabilities with 0 and 1
     probs = b"0,0\n1,0\n2,0.1\n3,0.5\n4,0.9\n5,1\n6,1\n7,0.7\n8,0.2\n9,0\n"
     for form in ("paper", "c1", "geometric"):
-        rc, out, err = run(["fit", "-", "--lower", "0,0", "--upper", "0,1", "--form", form,
+        rc, out, err = paper_run(["fit", "-", "--lower", "0,0", "--upper", "0,1", "--form", form,
                             "--json", "--samples", "200"], stdin=probs)
         js = json.loads(out) if rc == 0 else {}
         check("touching 0 and 1 (%s)" % form, rc == 0 and js["certified"] is True
               and js["samples"]["min_y"] >= 0 and js["samples"]["max_y"] <= 1
               and js["intervals"][0]["gap_lower"] == 0, err)
-    rc, out, err = run(["fit", "-", "--lower", "0,0", "--upper", "0,1"],
+    rc, out, err = paper_run(["fit", "-", "--lower", "0,0", "--upper", "0,1"],
                        stdin=probs.replace(b"5,1\n", b"5,1.0000001\n"))
     check("above a constant upper bound rc 2", rc == 2 and "x = 5" in err, err)
     # 4: certify Table 1 at a = 0.04 (docs/method.md §9.6: dips below zero, intervals 0 and 7)
-    rc, out, err = run(["certify", T1, "--alpha", "0.04", "--beta", "0", "--shape", "positive"])
+    rc, out, err = paper_run(["certify", T1, "--alpha", "0.04", "--beta", "0", "--shape", "positive"])
     check("certify violated rc 4", rc == 4, err)
     check("certify lists intervals", "interval 0 [0, 2]" in err and "interval 7 [28, 30]" in err
           and "interval 3 " not in err, err)
     check("certify report written", ",false" in out and ",true" in out)
-    rc, out, err = run(["certify", T1, "--alpha", "0.04", "--beta", "0", "--shape", "positive",
+    rc, out, err = paper_run(["certify", T1, "--alpha", "0.04", "--beta", "0", "--shape", "positive",
                         "--json"])
     js = json.loads(out)
     check("certify json violated", rc == 4 and js["certified"] is False
@@ -410,37 +421,37 @@ def test_exit_statuses():
           and js["intervals"][0]["certified"] is False and js["intervals"][3]["certified"] is True
           and js["min_gap_lower"] < 0 and js["samples"]["min_y"] < 0, err)
     # 0: Figure 4b parameters do not go negative (docs/method.md §9.6: stays above 1.53)
-    rc, out, err = run(["certify", T1, "--alpha", "1.4", "--beta", "1.9", "--shape", "positive",
+    rc, out, err = paper_run(["certify", T1, "--alpha", "1.4", "--beta", "1.9", "--shape", "positive",
                         "--json"])
     js = json.loads(out)
     check("fig 4b certified", rc == 0 and js["certified"] is True and js["min_gap_lower"] > 1.53
           and js["samples"]["min_y"] > 1.53, err)
     # certify with lines: --line with --shape, --lower/--upper alone, between
-    rc, out, err = run(["certify", T3, "--alpha", "0.2", "--beta", "0.21", "--shape", "below",
+    rc, out, err = paper_run(["certify", T3, "--alpha", "0.2", "--beta", "0.21", "--shape", "below",
                         "--line", "1,2.5", "--json"])
     js = json.loads(out)
     check("certify below", rc in (0, 4) and js["upper"] == {"m": 1, "c": 2.5}
           and js["lower"] is None and js["shape"] == "below", err)
-    rc, out, err = run(["certify", T4, "--alpha", "0.02", "--beta", "0", "--lower", "1,0.1",
+    rc, out, err = paper_run(["certify", T4, "--alpha", "0.02", "--beta", "0", "--lower", "1,0.1",
                         "--upper", "8,6"])
     check("certify between violated", rc == 4 and "upper boundary" in err, err)
-    rc, out, err = run(["certify", T4, "--alphas", "1,1,1,1,1,1", "--betas", "0,1,2,3,4,5",
+    rc, out, err = paper_run(["certify", T4, "--alphas", "1,1,1,1,1,1", "--betas", "0,1,2,3,4,5",
                         "--upper", "8,6", "--json"])
     js = json.loads(out)
     check("certify --alphas/--betas", rc in (0, 4)
           and [iv["beta"] for iv in js["intervals"]] == [0, 1, 2, 3, 4, 5], err)
     # 5: I/O errors
-    rc, out, err = run(["fit", tmp("no_such_file.csv")])
+    rc, out, err = paper_run(["fit", tmp("no_such_file.csv")])
     check("missing data rc 5", rc == 5 and "no_such_file.csv" in err, err)
-    rc, out, err = run(["fit", tmp("no_such_file.csv"), "--json"])
+    rc, out, err = paper_run(["fit", tmp("no_such_file.csv"), "--json"])
     check("missing data rc 5 (in memory)", rc == 5, err)
-    rc, out, err = run(["fit", T1, "-o", tmp("nodir/out.csv")])
+    rc, out, err = paper_run(["fit", T1, "-o", tmp("nodir/out.csv")])
     check("unwritable -o rc 5", rc == 5 and "nodir" in err, err)
-    rc, out, err = run(["fit", T1, "--json", "-o", tmp("io1.json"), "--svg", tmp("nodir/p.svg")])
+    rc, out, err = paper_run(["fit", T1, "--json", "-o", tmp("io1.json"), "--svg", tmp("nodir/p.svg")])
     check("unwritable --svg rc 5", rc == 5 and not os.path.exists(tmp("io1.json")), err)
-    rc, out, err = run(["fit", T1, "--at", tmp("no_such_at.csv")])
+    rc, out, err = paper_run(["fit", T1, "--at", tmp("no_such_at.csv")])
     check("missing --at rc 5", rc == 5, err)
-    rc, out, err = run(["fit", T1, "-o", TMP])
+    rc, out, err = paper_run(["fit", T1, "-o", TMP])
     check("-o a directory rc 5", rc == 5, err)
     check("no temp files left", not no_leftovers(), no_leftovers())
 
@@ -459,7 +470,7 @@ def test_range_messages():
         fh.write("-1e308,1\n1e308,2\n")
     rc, out, err = run(["fit", p])
     check("overflowing step rc 2", rc == 2 and "overflows" in err and "wide.csv:2" in err, err)
-    rc, out, err = run(["fit", T1, "--alpha", "1e-310"])
+    rc, out, err = paper_run(["fit", T1, "--alpha", "1e-310"])
     check("tiny alpha: alpha + beta too small", rc == 2 and "is too small for the slopes" in err
           and "NaN" not in err, err)
     p = tmp("huge.csv")
@@ -478,64 +489,64 @@ def test_options():
                         (["--shape", "none", "--lower", "0.03,0.3"], "above"),
                         (["--shape", "above", "--lower", "0.03,0.3"], "above"),
                         (["--shape", "below", "--upper", "1,30"], "below")):
-        rc, out, err = run(["fit", T2, "--json"] + args)
+        rc, out, err = paper_run(["fit", T2, "--json"] + args)
         js = json.loads(out) if rc == 0 else {}
         check("shape from %s" % args, rc == 0 and js["shape"] == shape and js["certified"], err)
-    rc, out, err = run(["fit", T2, "--lower", "0.03,0.3", "--json"])
+    rc, out, err = paper_run(["fit", T2, "--lower", "0.03,0.3", "--json"])
     js = json.loads(out)
     check("lower line json", js["lower"] == {"m": 0.03, "c": 0.3} and js["upper"] is None)
     # every slope method, form and shape, in memory and streamed
     for sl in ["arithmetic", "geometric", "harmonic", "fritsch-carlson", "akima", "makima"]:
-        rc, out, err = run(["fit", T1, "--slopes", sl, "--json"])
+        rc, out, err = paper_run(["fit", T1, "--slopes", sl, "--json"])
         check("slopes %s" % sl, rc == 0 and json.loads(out)["slopes"] == sl, err)
-    rc, out, err = run(["fit", T1, "--slopes", "periodic", "--json"])
+    rc, out, err = paper_run(["fit", T1, "--slopes", "periodic", "--json"])
     js = json.loads(out)
     check("slopes periodic", rc == 0 and js["slopes"] == "periodic"
           and js["knots"][0]["d"] == js["knots"][-1]["d"], err)
     for form in ["paper", "c1", "geometric"]:
-        rc, out, err = run(["fit", T1, "--form", form, "--shape", "positive", "--json"])
+        rc, out, err = paper_run(["fit", T1, "--form", form, "--shape", "positive", "--json"])
         check("form %s" % form, rc == 0 and json.loads(out)["form"] == form, err)
     rc, out, err = run(["fit", T1, "--c1", "--json"])
     check("--c1", rc == 0 and json.loads(out)["form"] == "c1", err)
     # alpha, beta, alphas, betas, margin
-    rc, out, err = run(["fit", T1, "--alpha", "0.7", "--beta", "0.3", "--json"])
+    rc, out, err = paper_run(["fit", T1, "--alpha", "0.7", "--beta", "0.3", "--json"])
     js = json.loads(out)
     check("alpha beta", all(iv["alpha"] == 0.7 and iv["beta"] == 0.3 and iv["term"] == "user"
                             for iv in js["intervals"]) and js["certified"] is False
           and js["lower"] is None and js["min_gap_lower"] is None
           and js["intervals"][0]["gap_lower"] is None, err)
     al = [0.1 * (i + 1) for i in range(8)]
-    rc, out, err = run(["fit", T1, "--alphas", ",".join(map(repr, al)), "--betas",
+    rc, out, err = paper_run(["fit", T1, "--alphas", ",".join(map(repr, al)), "--betas",
                         "0,0,0,0,1,1,1,1", "--json"])
     js = json.loads(out)
     check("alphas betas", rc == 0 and [iv["alpha"] for iv in js["intervals"]] == al
           and [iv["beta"] for iv in js["intervals"]] == [0, 0, 0, 0, 1, 1, 1, 1], err)
-    rc, out, err = run(["fit", T1, "--alphas", ",".join(map(repr, al)), "--shape", "positive",
+    rc, out, err = paper_run(["fit", T1, "--alphas", ",".join(map(repr, al)), "--shape", "positive",
                         "--samples", "3"])
     check("alphas with a scheme (in memory)", rc == 0 and len(out.strip().split("\n")) == 18, err)
-    rc, out, err = run(["fit", T1, "--shape", "positive", "--margin", "0.5", "--json"])
+    rc, out, err = paper_run(["fit", T1, "--shape", "positive", "--margin", "0.5", "--json"])
     js = json.loads(out)
     check("margin", rc == 0 and all(iv["beta"] >= 0.5 for iv in js["intervals"]), err)
     # monotone scheme: monotone samples on monotone data
-    rc, out, err = run(["fit", T3, "--columns", "1,2", "--shape", "monotone"])
+    rc, out, err = paper_run(["fit", T3, "--columns", "1,2", "--shape", "monotone"])
     check("monotone refuses Table 3", rc == 2, err)
     with open(tmp("mono.csv"), "w") as fh:
         fh.write("x,f\n0,0\n1,0.1\n2,3\n3,3\n4,3.2\n5,9\n")
-    rc, out, err = run(["fit", tmp("mono.csv"), "--shape", "monotone", "--alpha", "0.01"])
+    rc, out, err = paper_run(["fit", tmp("mono.csv"), "--shape", "monotone", "--alpha", "0.01"])
     ys = [float(r[1]) for r in csv_rows(out)[1]]
     # evaluation rounding: fast.c bounds |batch - exact| by 8 eps max|B| (max|B| <= 9 here)
     tol = 8 * 2.0 ** -52 * 9
     check("monotone samples", rc == 0 and all(b >= a - tol for a, b in zip(ys, ys[1:])), err)
     # samples
     for n in (2, 3, 101):
-        rc, out, err = run(["fit", T1, "--samples", str(n)])
+        rc, out, err = paper_run(["fit", T1, "--samples", str(n)])
         check("samples %d" % n, len(csv_rows(out)[1]) == 8 * (n - 1) + 1)
     # --at, --derivative, --extrapolate
-    rc, out, err = run(["fit", T1, "--at", fix("cli_at.csv")])
+    rc, out, err = paper_run(["fit", T1, "--at", fix("cli_at.csv")])
     head, rows = csv_rows(out)
     check("--at", rc == 0 and [r[0] for r in rows] == ["0", "0.1", "2", "14.5", "30"]
           and rows[0][1] == "2" and rows[2][1] == "1.58", out)
-    rc, out0, err = run(["fit", T1, "--at", fix("cli_at.csv"), "--json"])
+    rc, out0, err = paper_run(["fit", T1, "--at", fix("cli_at.csv"), "--json"])
     js = json.loads(out0)
     check("--at json samples", js["samples"]["count"] == 5
           and js["samples"]["min_y"] == min(float(r[1]) for r in rows), err)
@@ -544,37 +555,37 @@ def test_options():
     hh = 1e-6
     with open(tmp("fd.csv"), "w") as fh:
         fh.write("x\n%r\n%r\n%r\n" % (14.5 - hh, 14.5, 14.5 + hh))
-    y0 = [float(r[1]) for r in csv_rows(run(["fit", T1, "--at", tmp("fd.csv")])[1])[1]]
-    y1 = [float(r[1]) for r in csv_rows(run(["fit", T1, "--at", tmp("fd.csv"), "--derivative",
+    y0 = [float(r[1]) for r in csv_rows(paper_run(["fit", T1, "--at", tmp("fd.csv")])[1])[1]]
+    y1 = [float(r[1]) for r in csv_rows(paper_run(["fit", T1, "--at", tmp("fd.csv"), "--derivative",
                                              "1"])[1])[1]]
-    y2 = [float(r[1]) for r in csv_rows(run(["fit", T1, "--at", tmp("fd.csv"), "--derivative",
+    y2 = [float(r[1]) for r in csv_rows(paper_run(["fit", T1, "--at", tmp("fd.csv"), "--derivative",
                                              "2"])[1])[1]]
     check("--derivative 1", abs(y1[1] - (y0[2] - y0[0]) / (2 * hh)) < 1e-6, (y1, y0))
     check("--derivative 2", abs(y2[1] - (y1[2] - y1[0]) / (2 * hh)) < 1e-5, (y2, y1))
-    rc, out, err = run(["fit", T1, "--samples", "4", "--derivative", "1"])
+    rc, out, err = paper_run(["fit", T1, "--samples", "4", "--derivative", "1"])
     check("--derivative dense", rc == 0 and len(csv_rows(out)[1]) == 25, err)
-    rc, out, err = run(["fit", T1, "--at", fix("cli_at_outside.csv")])
+    rc, out, err = paper_run(["fit", T1, "--at", fix("cli_at_outside.csv")])
     check("--extrapolate error", rc == 2 and "cli_at_outside.csv:3:" in err and "x = 31" in err
           and out == "", err)
-    rc, out, err = run(["fit", T1, "--at", fix("cli_at_outside.csv"), "--extrapolate", "clamp"])
+    rc, out, err = paper_run(["fit", T1, "--at", fix("cli_at_outside.csv"), "--extrapolate", "clamp"])
     rows = csv_rows(out)[1]
     check("--extrapolate clamp", rc == 0 and rows[1] == ["31", "2"], out)
     for ex in ("extend", "linear"):
-        rc, out, err = run(["fit", T1, "--at", fix("cli_at_outside.csv"), "--extrapolate", ex])
+        rc, out, err = paper_run(["fit", T1, "--at", fix("cli_at_outside.csv"), "--extrapolate", ex])
         rows = csv_rows(out)[1]
         check("--extrapolate %s" % ex, rc == 0 and math.isfinite(float(rows[1][1]))
               and float(rows[1][1]) != 2, out)
     # -o writes the file, nothing on stdout
-    rc, out, err = run(["fit", T1, "--json", "-o", tmp("o.json")])
+    rc, out, err = paper_run(["fit", T1, "--json", "-o", tmp("o.json")])
     check("-o", rc == 0 and out == "" and json.load(open(tmp("o.json")))["n_points"] == 9, err)
-    rc, out, err = run(["fit", T1, "--output", tmp("o2.csv"), "--samples", "2"])
+    rc, out, err = paper_run(["fit", T1, "--output", tmp("o2.csv"), "--samples", "2"])
     check("--output streamed", rc == 0 and open(tmp("o2.csv")).read().count("\n") == 10, err)
     # -o over an existing file replaces it; a failing run leaves it untouched
     with open(tmp("keep.csv"), "w") as fh:
         fh.write("old\n")
-    rc, out, err = run(["fit", T2, "--shape", "above", "--line", "0.31,1", "-o", tmp("keep.csv")])
+    rc, out, err = paper_run(["fit", T2, "--shape", "above", "--line", "0.31,1", "-o", tmp("keep.csv")])
     check("failed run keeps old file", rc == 2 and open(tmp("keep.csv")).read() == "old\n")
-    rc, out, err = run(["fit", T1, "-o", tmp("keep.csv"), "--samples", "2"])
+    rc, out, err = paper_run(["fit", T1, "-o", tmp("keep.csv"), "--samples", "2"])
     check("-o replaces file", rc == 0 and open(tmp("keep.csv")).read().startswith("x,f\n0,2\n"))
     # a FIFO target is written directly, not replaced by a regular file
     fifo = tmp("fifo")
@@ -582,7 +593,7 @@ def test_options():
     got = []
     t = threading.Thread(target=lambda: got.append(open(fifo).read()))
     t.start()
-    rc, out, err = run(["fit", T1, "--samples", "2", "-o", fifo])
+    rc, out, err = paper_run(["fit", T1, "--samples", "2", "-o", fifo])
     t.join(10)
     check("-o FIFO written directly", rc == 0 and stat.S_ISFIFO(os.stat(fifo).st_mode)
           and got and got[0].startswith("x,f\n"), err)
@@ -590,7 +601,7 @@ def test_options():
 
 def test_svg():
     title = "Table 1 <&> \"quotes\" α = 0.15"
-    rc, out, err = run(["fit", T1, "--shape", "positive", "--alpha", "0.15", "--svg",
+    rc, out, err = paper_run(["fit", T1, "--shape", "positive", "--alpha", "0.15", "--svg",
                         tmp("a.svg"), "--title", title, "--show-control", "--json"])
     check("svg fit rc", rc == 0 and json.loads(out)["certified"], err)
     check("svg fit parses", svg_ok(tmp("a.svg")))
@@ -601,19 +612,19 @@ def test_svg():
     for w in ("data", "spline", "control polygon", "floor y = 0"):
         check("svg legend %s" % w, w in texts, texts[:300])
     check("svg no nan", "nan" not in txt.lower())
-    rc, out, err = run(["fit", T4, "--lower", "1,0.1", "--upper", "8,6", "--alpha", "0.1", "--svg",
+    rc, out, err = paper_run(["fit", T4, "--lower", "1,0.1", "--upper", "8,6", "--alpha", "0.1", "--svg",
                         tmp("b.svg"), "-o", tmp("b.csv")])
     root = ET.parse(tmp("b.svg")).getroot()
     texts = " ".join(t.text or "" for t in root.iter() if t.tag.endswith("text"))
     check("svg between lines", rc == 0 and "lower line y = x + 0.1" in texts
           and "upper line y = 8x + 6" in texts and os.path.exists(tmp("b.csv")), texts[:300])
-    rc, out, err = run(["fit", T2, "--points-only", "--lower", "0.03,0.3", "--svg", tmp("c.svg"),
+    rc, out, err = paper_run(["fit", T2, "--points-only", "--lower", "0.03,0.3", "--svg", tmp("c.svg"),
                         "--json", "--title", "points"])
     root = ET.parse(tmp("c.svg")).getroot()
     texts = " ".join(t.text or "" for t in root.iter() if t.tag.endswith("text"))
     check("svg points-only", rc == 0 and "spline" not in texts and "data" in texts
           and "lower line" in texts, texts[:300])
-    rc, out, err = run(["certify", T1, "--alpha", "0.04", "--beta", "0", "--shape", "positive",
+    rc, out, err = paper_run(["certify", T1, "--alpha", "0.04", "--beta", "0", "--shape", "positive",
                         "--svg", tmp("d.svg"), "--json"])
     root = ET.parse(tmp("d.svg")).getroot()
     texts = " ".join(t.text or "" for t in root.iter() if t.tag.endswith("text"))

@@ -460,7 +460,7 @@ def test_time_in_messages():
         check("time in 'change direction' %s" % extra, rc == 2 and "mono_day.csv:4: point 2 "
               "(x = %s, f = 1): the data change direction" % d2 in err, err)
     # certify's list of violated intervals: the interval ends are knots, in the file's form
-    rc, out, err = run(["certify", mono, "--alpha", "0.2", "--beta", "0", "--upper", "0,2",
+    rc, out, err = run(["certify", mono, "--form", "paper", "--slopes", "arithmetic", "--alpha", "0.2", "--beta", "0", "--upper", "0,2",
                         "-o", os.devnull])
     check("time in certify's violations", rc == 4 and "interval 1 [%s, %s] (lines 3-4)" %
           (datetime.date.fromisoformat(days[1]).isoformat(), d2) in err and

@@ -3,6 +3,7 @@
  * gaps against dense sampling of ts_spline_eval; ts_spline_certify, ts_spline_report,
  * ts_spline_certified and their error paths. */
 #include "th.h"
+#include "th_options.h"
 #include "common/th_basis.h"
 #include "common/th_rng.h"
 #include "trigspline.h"
@@ -235,7 +236,7 @@ static void test_gaps_vs_dense(void)
     for (int form = 0; form < 2; form++) {
         for (int r = 0; r < 6; r++) {
             ts_spline_options o;
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.form = (ts_form)form;
             o.alpha = r < 3 ? 0.02 * (r + 1) : 1.0 + r;
             o.beta = 0.01;
@@ -268,7 +269,7 @@ static void test_gaps_vs_dense(void)
 static void test_certify_api(void)
 {
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.alpha = 0.001; /* small a: Table 3 overshoots y = x + 2.5 (docs/method.md §5.3) */
     ts_spline *s = NULL;
     ts_error e;
@@ -331,7 +332,7 @@ static void test_geometric_gap(void)
     const double X3g[] = {0, 0.4, 2, 3, 5}, F3g[] = {1.2, 0.5, 2, 5, 0.5};
     for (int r = 0; r < 3; r++) {
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.form = TS_FORM_GEOMETRIC;
         o.alpha = 0.45 + r;
         ts_spline *s = NULL;
@@ -369,7 +370,7 @@ static void test_geometric_gap(void)
     }
     /* a geometric shape spline is certified, with exact line conditions */
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.form = TS_FORM_GEOMETRIC;
     o.shape = TS_SHAPE_BELOW;
     o.upper.m = 1;

@@ -7,6 +7,7 @@
  * from closed forms and from a minimiser in long double (grid and golden
  * section, tests/common/th_gapmin.h), not from the code under test. */
 #include "th.h"
+#include "th_options.h"
 #include "common/th_gapmin.h"
 #include "internal.h"
 #include "trigspline.h"
@@ -59,7 +60,7 @@ static void monotone_polygon(void)
 {
     const double x[3] = {0, 1, 2}, f[3] = {0, 1, 2};
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.shape = TS_SHAPE_MONOTONE;
     ts_spline *s = NULL;
     CHECK(ts_spline_new(x, f, 3, &o, &s, NULL) == TS_OK);
@@ -94,7 +95,7 @@ static void huge_margin(void)
 {
     const double x[3] = {0, 1, 2}, f[3] = {1, 2, 3}, d[3] = {1, -1e301, 1};
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.shape = TS_SHAPE_ABOVE;
     o.lower.m = 1;
     o.lower.c = 0;
@@ -134,7 +135,7 @@ static ts_status build(const double *x, const double *f, size_t np, const ts_spl
 static void side_edges(void)
 {
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.shape = TS_SHAPE_ABOVE;
     ts_error e;
     /* m x = 2^1021 at x = 2^30, c = −2^1021: the line is 0 there, f = 0 */
@@ -189,7 +190,7 @@ static void rule_zero_gap(void)
     f[5] = 0.1 * 5;
     CHECK((long double)f[5] < (long double)0.1 * 5);
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.shape = TS_SHAPE_BELOW;
     o.upper.m = 0.1;
     o.upper.c = 0;
@@ -205,7 +206,7 @@ static void margins_at_the_top(void)
 {
     const double x[3] = {0, 1, 2}, f[3] = {1, 2, 3}, al[2] = {DBL_MAX, DBL_MAX}, t[2] = {1e300, 1e300};
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.shape = TS_SHAPE_POSITIVE;
     o.alphas = al;
     o.n_alphas = 2;
@@ -235,7 +236,7 @@ static void periodic_zero(void)
         f[k] = k == 0 || k == N - 1 ? 0.0 : 2.0 + sin(0.01 * k);
     }
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.shape = TS_SHAPE_POSITIVE;
     o.slopes = TS_SLOPES_PERIODIC;
     ts_spline *s = NULL;
@@ -260,7 +261,7 @@ static void batch_blocks(void)
         f[k] = 0.5 * x[k] + 1.5 + sin(x[k]);
     }
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.shape = TS_SHAPE_ABOVE;
     o.lower.m = 0.5;
     o.lower.c = 0;

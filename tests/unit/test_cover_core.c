@@ -15,6 +15,7 @@
  * it sits, docs/design.md).  Each tolerance is stated where it is used. */
 #define _GNU_SOURCE
 #include "th.h"
+#include "th_options.h"
 #include "common/th_rng.h"
 #include "trigspline.h"
 #include "internal.h"
@@ -38,7 +39,7 @@ static ts_spline *make(const double *x, const double *f, size_t np, ts_form form
                        ts_extrap ex)
 {
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.form = form;
     o.slopes = sl;
     o.extrapolate = ex;
@@ -477,7 +478,7 @@ static void nearly_flat(void)
         q[j] = (j + 0.5) / 64.0;
     for (int c = 0; c < 4; c++) {
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.form = c == 0 ? TS_FORM_PAPER : TS_FORM_GEOMETRIC;
         o.slopes = TS_SLOPES_USER;
         o.user_slopes = ds[c];
@@ -526,7 +527,7 @@ static void geometric_tiny(void)
     const double alphas[3] = {1.0, TS_GEOMETRIC_A_RAISE, TS_GEOMETRIC_A_MIN};
     for (int ia = 0; ia < 3; ia++) {
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.form = TS_FORM_GEOMETRIC;
         o.alpha = alphas[ia];
         ts_spline *s = NULL;

@@ -19,6 +19,7 @@
  * documented choice of kernel and thread count), each tolerance where it is
  * used. */
 #include "th.h"
+#include "th_options.h"
 #include "trigspline.h"
 #include "internal.h"
 
@@ -136,7 +137,7 @@ static void solve_worst(void)
     CHECK(root_steps(u, kappa_max(), &phi) == 9);
     const double x[2] = {0.0, 1.0}, f[2] = {0.0, 1.0}, d[2] = {2.0, -1.0};
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.form = TS_FORM_GEOMETRIC;
     o.alpha = TS_GEOMETRIC_A_MIN;
     o.slopes = TS_SLOPES_USER;
@@ -175,7 +176,7 @@ static void huge_a(void)
      * rounding of Y'(0)/X̂'(0) = 3k d_i/(3κ h), a few ulps: 4ε). */
     const double x[3] = {0.0, 1.0, 3.0}, f[3] = {1.0, 2.0, -1.0};
     ts_spline_options o;
-    ts_spline_options_init(&o);
+    th_options_paper(&o);
     o.form = TS_FORM_GEOMETRIC;
     o.beta = 1e300;
     ts_spline *s = NULL;
@@ -253,7 +254,9 @@ static void pick(void)
     /* a kernel that is none: refused, nothing done */
     const double x[2] = {0.0, 1.0}, f[2] = {0.0, 1.0};
     ts_spline *s = NULL;
-    CHECK(ts_spline_new(x, f, 2, NULL, &s, NULL) == TS_OK);
+    ts_spline_options po;
+    th_options_paper(&po); /* the paper form has a fast kernel */
+    CHECK(ts_spline_new(x, f, 2, &po, &s, NULL) == TS_OK);
     double q = 0.5, y = -7.0;
     size_t done = 9;
     CHECK(ts__fast_batch_isa(s, 0, &q, 1, &y, NULL, 3, &done) == 0 && y == -7.0 && done == 9);
@@ -282,7 +285,7 @@ static void entry_points(void)
     const double x[3] = {0.0, 1.0, 2.0}, f[3] = {1.0, 3.0, 2.0};
     for (int form = 0; form < 2; form++) {
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.form = form ? TS_FORM_GEOMETRIC : TS_FORM_PAPER;
         ts_spline *s = NULL;
         CHECK(ts_spline_new(x, f, 3, &o, &s, NULL) == TS_OK);
@@ -318,7 +321,7 @@ static void interval_eval(void)
     const double x[4] = {0.0, 1.0, 2.0, 3.5}, f[4] = {0.0, 2.0, 2.0, 5.0}, d[4] = {1.0, 0.0, 0.0, 2.0};
     for (int form = 0; form < 2; form++) {
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.form = form ? TS_FORM_GEOMETRIC : TS_FORM_PAPER;
         o.slopes = TS_SLOPES_USER;
         o.user_slopes = d;

@@ -2,6 +2,7 @@
  * index and kind reported through ts_error (header: include/trigspline.h).
  * Expected statuses come from the header's per-function lists. */
 #include "th.h"
+#include "th_options.h"
 #include "internal.h"
 #include "trigspline.h"
 
@@ -114,24 +115,24 @@ static void test_new(void)
     /* alpha <= 0, NaN, Inf: scalar (index 0) and per interval */
     const double bad_alpha[5] = {0.0, -1.0, TH_NAN, TH_INF, -0.0};
     for (int b = 0; b < 5; b++) {
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.alpha = bad_alpha[b];
         EXPECT_NEW(X5, F5, 5, &o, TS_ERR_ALPHA, 0, TS_WHERE_INTERVAL);
         double al[4] = {1, 1, 1, 1};
         al[2] = bad_alpha[b];
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.alphas = al, o.n_alphas = 4;
         EXPECT_NEW(X5, F5, 5, &o, TS_ERR_ALPHA, 2, TS_WHERE_INTERVAL);
     }
     /* beta < 0, NaN, Inf */
     const double bad_beta[4] = {-1e-300, -2.0, TH_NAN, TH_INF};
     for (int b = 0; b < 4; b++) {
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.beta = bad_beta[b];
         EXPECT_NEW(X5, F5, 5, &o, TS_ERR_BETA, 0, TS_WHERE_INTERVAL);
         double be[4] = {0, 0.5, 0, 0};
         be[3] = bad_beta[b];
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.betas = be, o.n_betas = 4;
         EXPECT_NEW(X5, F5, 5, &o, TS_ERR_BETA, 3, TS_WHERE_INTERVAL);
     }
@@ -139,7 +140,7 @@ static void test_new(void)
      * only go wrong by overflowing to +Inf, which the header's BETA covers
      * ("beta ... not finite" is the nearest: a must be usable). */
     {
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.alpha = 1.5e308;
         o.beta = 1.5e308;
         ts_status st = ts_spline_new(X5, F5, 5, &o, &s, NULL);
@@ -157,18 +158,18 @@ static void test_new(void)
         double v[6] = {1, 1, 1, 1, 1, 1};
         size_t lens[3] = {3, 5, 0};
         for (int k = 0; k < 3; k++) {
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.alphas = v, o.n_alphas = lens[k];
             EXPECT_NEW(X5, F5, 5, &o, TS_ERR_LENGTH, NOIDX);
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.betas = v, o.n_betas = lens[k];
             EXPECT_NEW(X5, F5, 5, &o, TS_ERR_LENGTH, NOIDX);
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.slopes = TS_SLOPES_USER;
             o.user_slopes = v, o.n_user_slopes = lens[k] == 5 ? 4 : lens[k]; /* n_points = 5 */
             EXPECT_NEW(X5, F5, 5, &o, TS_ERR_LENGTH, NOIDX);
         }
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.slopes = TS_SLOPES_USER;
         o.user_slopes = v, o.n_user_slopes = 5;
         EXPECT_NEW(X5, F5, 5, &o, TS_OK, NOIDX);
@@ -191,27 +192,27 @@ static void test_new(void)
     {
         int bad_enum[3] = {-1, 99, 1 << 20};
         for (int k = 0; k < 3; k++) {
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.form = (ts_form)bad_enum[k];
             EXPECT_NEW(X5, F5, 5, &o, TS_ERR_OPTION, NOIDX);
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.slopes = (ts_slopes)bad_enum[k];
             EXPECT_NEW(X5, F5, 5, &o, TS_ERR_OPTION, NOIDX);
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.shape = (ts_shape)bad_enum[k];
             EXPECT_NEW(X5, F5, 5, &o, TS_ERR_OPTION, NOIDX);
-            ts_spline_options_init(&o);
+            th_options_paper(&o);
             o.extrapolate = (ts_extrap)bad_enum[k];
             EXPECT_NEW(X5, F5, 5, &o, TS_ERR_OPTION, NOIDX);
         }
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.slopes = (ts_slopes)TS_SLOPES_COUNT_;
         EXPECT_NEW(X5, F5, 5, &o, TS_ERR_OPTION, NOIDX);
     }
 
     /* periodic slopes need f[0] == f[n] */
     {
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.slopes = TS_SLOPES_PERIODIC;
         ts_status st = ts_spline_new(X5, F5, 5, &o, &s, NULL);
         CHECKF(st == TS_ERR_PERIODIC && s == NULL, "periodic with f0 != fn: %d", (int)st);
@@ -237,7 +238,9 @@ static void test_new(void)
 static void test_eval_errors(void)
 {
     ts_spline *s = NULL;
-    CHECK(ts_spline_new(X5, F5, 5, NULL, &s, NULL) == TS_OK);
+    ts_spline_options po;
+    th_options_paper(&po);
+    CHECK(ts_spline_new(X5, F5, 5, &po, &s, NULL) == TS_OK);
     if (!s)
         return;
     double y = 0, dy = 0, d2y = 0;
@@ -406,7 +409,7 @@ static void test_overflowing_controls(void)
     static const double x2[3] = {0, 1e-310, 1}, f2[3] = {1, 1, 3};
     for (int form = TS_FORM_PAPER; form <= TS_FORM_C1; form++) {
         ts_spline_options o;
-        ts_spline_options_init(&o);
+        th_options_paper(&o);
         o.form = (ts_form)form;
         o.alpha = 1e-310;
         ts_spline *s = NULL;

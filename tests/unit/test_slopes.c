@@ -330,7 +330,7 @@ static void test_reference(void)
         const slopes_ref_set *R = &slopes_ref_sets[s];
         double tol = 64 * EPS * max_abs_secant(R->x, R->f, R->np);
         double d[16];
-        for (int m = 0; m < TS_SLOPES_COUNT_; m++) {
+        for (int m = 0; m < (int)(sizeof R->d / sizeof *R->d); m++) {
             if (!R->d[m])
                 continue;
             ts_error err = {TS_ERR_NULL, 7, TS_WHERE_QUERY};

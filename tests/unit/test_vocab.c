@@ -51,7 +51,7 @@ int main(void)
         "TS_ERR_VERSION"};
     static const char *const form[] = {"paper", "c1", "geometric"};
     static const char *const slopes[] = {"arithmetic", "geometric", "harmonic", "fritsch-carlson",
-                                         "akima", "makima", "user", "periodic"};
+                                         "akima", "makima", "user", "periodic", "steffen"};
     static const char *const shape[] = {"none", "positive", "above", "below", "between",
                                         "monotone"};
     static const char *const extrap[] = {"error", "clamp", "extend", "linear"};

@@ -64,7 +64,7 @@ def test_pandas_series():
 
 def test_nan_queries_give_nan():
     x, f = smooth_data()
-    s = Spline(x, f)
+    s = Spline(x, f, form="paper")  # derivatives of order 3 need the paper or c1 form
     xq = np.array([x[0], np.nan, x[5], np.nan])
     y = s(xq)
     assert np.isnan(y[1]) and np.isnan(y[3]) and np.isfinite(y[[0, 2]]).all()
@@ -242,7 +242,7 @@ def test_cubic_hermite_and_akima_migration():
     interp = pytest.importorskip("scipy.interpolate")
     x, f = smooth_data()
     d = np.cos(x)
-    s = Spline(x, f, slopes=d, form="paper")
+    s = Spline(x, f, slopes=d, form="paper", alpha=1.0)
     assert np.allclose(s(x[:-1], 1), d[:-1], rtol=1e-12, atol=1e-13)
     assert np.array_equal(s(x), f)
     ak = interp.Akima1DInterpolator(x, f)
@@ -274,9 +274,9 @@ def test_core_defaults_are_the_library_inits():
     assert set(d) == {"spline", "curve", "surface"}
     sp, cu, su = d["spline"], d["curve"], d["surface"]
     form, slopes, alpha, beta, margin, certify = _core.options_defaults()
-    assert ["paper", "c1", "geometric"][form] == sp["form"] == "paper"
-    assert sp["slopes"] == "arithmetic" and slopes == 0
-    assert (sp["alpha"], sp["beta"], sp["margin"]) == (alpha, beta, margin) == (1.0, 0.0, 0.01)
+    assert ["paper", "c1", "geometric"][form] == sp["form"] == "geometric"
+    assert sp["slopes"] == "steffen" and slopes == 8
+    assert (sp["alpha"], sp["beta"], sp["margin"]) == (alpha, beta, margin) == (0.85, 0.0, 0.01)
     assert sp["certify"] is bool(certify) is True
     assert (sp["shape"], sp["extrapolate"]) == ("none", "error")
     assert sp["lower"] == sp["upper"] == (0.0, 0.0)

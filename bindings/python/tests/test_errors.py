@@ -137,7 +137,7 @@ def test_no_floating_point_warnings_on_valid_input():
                 if shape == "above":
                     f = f + 10 * x  # the paper's table 2 data violate the line; lift them
                     kw = {"lower": (0.31, 1.0)}
-                s = Spline(x, f, shape=shape, **kw)
+                s = Spline(x, f, shape=shape, **{"form": "paper", **kw})  # s(xq, 3)
                 xq = np.linspace(x[0], x[-1], 1001)
                 s(xq), s(xq, 1), s(xq, 2), s(xq, 3), s.integrate(x[0], x[-1]), s.roots()
                 assert s.certified

@@ -44,7 +44,7 @@ def test_numpy_backed_equals_one_spline_per_series():
     secs = (da.time.values - da.time.values[0]) / np.timedelta64(1, "s")
     q = (new - da.time.values[0]) / np.timedelta64(1, "s")
     for i, j in [(0, 0), (1, 3), (2, 2)]:
-        ref = Spline(secs, da.values[i, j], shape="positive", form="paper")(q)
+        ref = Spline(secs, da.values[i, j], shape="positive")(q)
         np.testing.assert_array_equal(out.values[i, j], ref)
     assert (out.values >= 0).all()
     # coordinates, attrs and name kept; the time coordinate is the new one

@@ -243,6 +243,21 @@ def interp(x, f, xq, *, shape=None, lower=None, upper=None, alpha=None, form=Non
     o = resolve(shape, lower, upper, alpha=alpha, form=form, slopes=slopes,
                 extrapolate=extrapolate, margin=margin, skipna=skipna, certify=certify,
                 errors=errors)
+    if np.iscomplexobj(x) or np.iscomplexobj(xq):
+        raise TrigsplineError(_S.OPTION, "x and xq must be real, not complex")
+    if np.iscomplexobj(f):
+        # as SciPy: the real and imaginary parts are two real splines with the
+        # same options; the shape schemes bound real data only
+        if o["shape"] != "none":
+            raise TrigsplineError(_S.OPTION, "f is complex: the shape schemes keep real "
+                                  "data inside bounds; use shape='none'")
+        if full or gap:
+            raise ValueError("full= and gap= take real f; interpolate f.real and f.imag")
+        kw = dict(shape=shape, lower=lower, upper=upper, alpha=alpha, form=form, slopes=slopes,
+                  extrapolate=extrapolate, margin=margin, skipna=skipna, certify=certify,
+                  errors=errors, axis=axis)
+        fc = np.asarray(f)
+        return interp(x, fc.real, xq, **kw) + 1j * interp(x, fc.imag, xq, **kw)
     opt = pack(o, want_gap=gap)
     f = _coerce(f, "f")
     x = _coerce(x, "x")

@@ -84,7 +84,7 @@ def estimate_slopes(x: ArrayLike, f: ArrayLike, slopes: Optional[str] = None, *,
         Points, x strictly increasing.
     slopes : str, default ${slopes}
         ``'arithmetic'``, ``'geometric'``, ``'harmonic'``, ``'fritsch-carlson'``,
-        ``'akima'``, ``'makima'`` or ``'periodic'`` (the ``slopes`` of
+        ``'akima'``, ``'makima'``, ``'periodic'`` or ``'steffen'`` (the ``slopes`` of
         :class:`Spline`).
     method : str
         Deprecated name of ``slopes``.
@@ -124,6 +124,14 @@ class Spline:
     between two lines, or monotone, certified exactly on every interval.
     Unlike SciPy, a query outside the data raises by default (the library's
     ``extrapolate='error'``): ``extrapolate=True`` gives SciPy's behaviour.
+
+    With no options the curve keeps PCHIP's promise: on every interval it is
+    monotone and stays between the interval's two data values (no new
+    extrema), it is exact on straight lines and C¹ (geometric form, Steffen's
+    slopes, ``alpha=0.85``; docs/method.md §5.10).  Complex ``f`` is
+    interpolated as two real splines (real and imaginary parts, the same
+    options; no shape scheme); complex ``x`` is refused; zero-size ``f``
+    gives empty results.
 
     The keywords and their defaults are the package's one vocabulary
     (docs/options.md), shared with :func:`trigspline.interp`, the xarray
@@ -165,7 +173,9 @@ class Spline:
     slopes : str or array_like, default ${slopes}
         Slope estimate (docs/method.md §6): ``'arithmetic'``,
         ``'geometric'``, ``'harmonic'``, ``'fritsch-carlson'``, ``'akima'``,
-        ``'makima'``, ``'periodic'``; or your own slopes d_i, an array the
+        ``'makima'``, ``'periodic'``, ``'steffen'`` (Steffen 1990, the default:
+        with the default alpha it keeps PCHIP's promise, docs/method.md §5.10);
+        or your own slopes d_i, an array the
         shape of ``f`` (as ``dydx`` of SciPy's ``CubicHermiteSpline``).
     form : {'paper', 'c1', 'geometric'}, default ${form}
         docs/method.md §3/§4.
@@ -195,11 +205,26 @@ class Spline:
                  margin: Any = None, slopes: Any = None, form: Optional[str] = None,
                  certify: Optional[bool] = None, line: Optional[Tuple[float, float]] = None,
                  slopes_values: ArrayLike = None) -> None:
+        if np.iscomplexobj(x):
+            raise TrigsplineError(_S.OPTION, "x is complex; the abscissae must be real")
+        # complex f (as SciPy): the real and imaginary parts are two real
+        # splines with the same options, a trailing axis of 2 inside
+        self._complex = np.iscomplexobj(f)
+        if self._complex:
+            fc = np.asarray(f)
+            shp_name = _options.infer_shape(shape, lower, upper) if line is None else shape
+            if (shp_name is not None and shp_name != "none") or line is not None:
+                raise TrigsplineError(_S.OPTION, "f is complex: the shape schemes keep real "
+                                      "data inside bounds; use shape='none' or split the "
+                                      "real and imaginary parts yourself")
+            f = np.stack([fc.real, fc.imag], axis=-1)
         xa = float_array(x, "x", 1)
         fa = float_array(f, "f")
-        if fa.ndim == 0:
+        if fa.ndim == 0 or (self._complex and fa.ndim == 1):
             raise ValueError("f must have at least one dimension")
         ax = int(axis)
+        if self._complex and ax < 0:
+            ax -= 1  # counted on f without the inner axis of 2
         if not -fa.ndim <= ax < fa.ndim:
             raise ValueError("axis %d is out of range for f of shape %r" % (ax, fa.shape))
         ax %= fa.ndim
@@ -299,6 +324,11 @@ class Spline:
             series = list(fm)
             svs = (list(np.ascontiguousarray(np.moveaxis(sv, ax, -1)).reshape(-1, xa.size))
                    if sv is not None else [None] * len(series))
+        if not series or fa.size == 0:  # zero-size f: nothing to fit, empty results
+            self._h = []
+            self._x = xa
+            self._n = n
+            return
         handles = []
         for k, (fk, sk) in enumerate(zip(series, svs)):
             o = dict(opts)
@@ -461,6 +491,16 @@ class Spline:
         if nu < 0 or int(nu) != nu:
             raise ValueError("nu must be an integer >= 0, not %r" % (nu,))
         nu = int(nu)
+        if self._complex:
+            self._complex = False
+            try:
+                r = self(x, nu, extrapolate, threads=threads)
+            finally:
+                self._complex = True
+            return r[..., 0] + 1j * r[..., 1]
+        if not self._h:
+            xq = np.asarray(x, dtype=np.float64)
+            return np.empty(self._pre + xq.shape + self._trail)
         try:
             if len(self._h) == 1 and not self._pre and not self._trail:
                 return self._h[0].eval(x, nu, mode, out, threads)

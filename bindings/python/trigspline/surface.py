@@ -162,7 +162,10 @@ class Surface:
     slopes : str, default ${slopes}
         The 1-D slope method applied along every grid line (docs/method.md
         §6): ``'arithmetic'``, ``'geometric'``, ``'harmonic'``,
-        ``'fritsch-carlson'``, ``'akima'``, ``'makima'``.
+        ``'fritsch-carlson'``, ``'akima'``, ``'makima'``, ``'steffen'``
+        (much less overshoot on the data/surface fields: 0.1–0.3 % of the
+        range with ``alpha=0.85`` against 7–16 % at the defaults, but not
+        PCHIP's 1-D promise; CHANGELOG).
     alpha : float, default ${alpha}
         Lower bound on every shape parameter a; with ``shape='none'`` a =
         alpha + beta.

@@ -31,7 +31,7 @@ from .interp import DATA_GAPS, STATUS_OK, pack, resolve, status_message
 __all__ = ["TrigsplineAccessor", "TrigsplineDatasetAccessor", "halo_knots", "summary"]
 
 _LOCAL_FORMS = ("paper", "geometric")
-_THREE_POINT = ("arithmetic", "geometric", "harmonic", "fritsch-carlson")
+_THREE_POINT = ("arithmetic", "geometric", "harmonic", "fritsch-carlson", "steffen")
 _FIVE_POINT = ("akima", "makima")
 
 

@@ -19,7 +19,8 @@ const NS = 'http://www.w3.org/2000/svg';
 const DEFAULT = {
   mode: 'function',
   points: [[0, 2], [2, 1.58], [3, 1.55], [5, 1.54], [15, 1.8], [25, 1.54], [27, 1.55], [28, 1.58], [30, 2]],
-  scheme: 'positive', form: 'paper', slopes: 'arithmetic', alpha: 1, alphas: null, beta: 0,
+  scheme: 'positive', form: ts.defaults.form, slopes: ts.defaults.slopes, alpha: ts.defaults.alpha,
+  alphas: null, beta: 0,
   margin: ts.defaults.margin, lower: { m: 0, c: 1.45 }, upper: { m: 0, c: 2.2 },
   closed: false, param: 'centripetal', box: { on: true, xmin: -1, xmax: 31, ymin: 1.2, ymax: 2.4 },
   overlay: { cubic: true, pchip: false },

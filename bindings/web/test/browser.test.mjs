@@ -88,7 +88,7 @@ const TABLE1 = [[0, 2], [2, 1.58], [3, 1.55], [5, 1.54], [15, 1.8], [25, 1.54], 
 
 test('drag a point towards the bound: the curve stays in the region, the certificate changes', async () => {
   const page = await openExplorer();
-  await page.evaluate((P) => window.explorer.set({ points: P, scheme: 'positive', form: 'paper', alpha: 1 }), TABLE1);
+  await page.evaluate((P) => window.explorer.set({ points: P, scheme: 'positive', form: 'paper', slopes: 'arithmetic', alpha: 1 }), TABLE1);
   const before = await certText(page);
   await dragPoint(page, 3, 5, 0.02);
   const s = await state(page);
@@ -99,7 +99,7 @@ test('drag a point towards the bound: the curve stays in the region, the certifi
   for (const row of r.rows) assert.ok(row.certified && row.gapLower >= 0, JSON.stringify(row));
   // the exact minimum of every interval (the certificate) and the one the
   // module computes for the same data agree
-  const sp = (await lib.load()).spline(s.points.map((p) => p[0]), s.points.map((p) => p[1]), { shape: 'positive', form: 'paper', alpha: 1 });
+  const sp = (await lib.load()).spline(s.points.map((p) => p[0]), s.points.map((p) => p[1]), { shape: 'positive', form: 'paper', slopes: 'arithmetic', alpha: 1 });
   assert.deepEqual(r.rows.map((q) => q.gapLower), sp.report().map((q) => q.gapLower));
   sp.free();
   assert.notEqual(await certText(page), before);
@@ -115,7 +115,7 @@ test('drag a point towards the bound: the curve stays in the region, the certifi
   assert.equal(await page.locator('#curve').count(), 0);
   // an infeasible interval (data above the steep line y = 10x with alpha = 10,
   // tests/api/test_shape.c): marked, with the library's reason
-  await page.evaluate(() => window.explorer.set({ points: [[0, 1], [1, 10.3], [2, 21], [3, 31]], scheme: 'above', lower: { m: 10, c: 0 }, alpha: 10, form: 'paper' }));
+  await page.evaluate(() => window.explorer.set({ points: [[0, 1], [1, 10.3], [2, 21], [3, 31]], scheme: 'above', lower: { m: 10, c: 0 }, alpha: 10, form: 'paper', slopes: 'arithmetic' }));
   assert.match(await page.locator('#status').innerText(),
                /Refused: TS_ERR_INFEASIBLE: interval 0 \[0, 1\]: no beta >= 0 keeps/);
   assert.match(await page.locator('rect.badint[data-interval="0"] title').textContent(), /TS_ERR_INFEASIBLE/);
@@ -124,7 +124,7 @@ test('drag a point towards the bound: the curve stays in the region, the certifi
 
 test('alpha (all and per interval), scheme switch, line ends, curve with a box, URL state', async () => {
   const page = await openExplorer();
-  await page.evaluate((P) => window.explorer.set({ points: P, scheme: 'positive', form: 'paper', alpha: 1 }), TABLE1);
+  await page.evaluate((P) => window.explorer.set({ points: P, scheme: 'positive', form: 'paper', slopes: 'arithmetic', alpha: 1 }), TABLE1);
   const t0 = await certText(page);
   await page.evaluate(() => { const a = document.getElementById('alpha'); a.value = '-1'; a.dispatchEvent(new Event('input')); });
   assert.equal((await state(page)).alpha, 0.1);
@@ -214,7 +214,7 @@ test('1000 knots: a drag re-fits and re-certifies per frame', async () => {
   const page = await openExplorer();
   // positive data, 1000 knots (a deterministic sequence)
   const P = Array.from({ length: 1000 }, (_, i) => [i, 1.05 + Math.sin(i * 0.37) * Math.cos(i * 0.011)]);
-  await page.evaluate((Q) => window.explorer.set({ points: Q, scheme: 'positive', form: 'paper', alpha: 1, overlay: { cubic: false, pchip: false } }), P);
+  await page.evaluate((Q) => window.explorer.set({ points: Q, scheme: 'positive', form: 'paper', slopes: 'arithmetic', alpha: 1, overlay: { cubic: false, pchip: false } }), P);
   await page.evaluate(() => { window.explorer.timings.length = 0; });
   await dragPoint(page, 500, 500, 0.01, 60);
   const t = await page.evaluate(() => window.explorer.timings.filter((q) => q.n === 1000));

@@ -166,7 +166,7 @@ function throwsStatus(fn, status, index = null, where = null) {
 
 test('every status the library can return reaches JavaScript as a TrigSplineError', async () => {
   const x = [0, 1, 2, 3], f = [1, 2, 0.5, 3];
-  const P = { form: 'paper' };
+  const P = { form: 'paper', slopes: 'arithmetic', alpha: 1 }; // the paper's options
   const seen = new Set(['TS_OK']);
   const t = (fn, st, i, w) => { throwsStatus(fn, st, i, w); seen.add(st); };
   t(() => ts.spline([0], [1], P), 'TS_ERR_TOO_FEW');
@@ -307,7 +307,7 @@ test('solve, derivatives of every order, extrapolation per call, interval search
     assert.ok(Math.abs(r[0] - (y + 2) / 3) <= 1e-13, `geometric root ${r[0]}`);
   }
   // flat pieces as scipy's PPoly.solve: [x_i, NaN] per interval with S == y
-  const fl = ts.spline([0, 1, 2, 3, 4], [1, 1, 1, 1, 2], { form: 'paper' });
+  const fl = ts.spline([0, 1, 2, 3, 4], [1, 1, 1, 1, 2], { form: 'paper', slopes: 'arithmetic' });
   const rf = Array.from(fl.solve(1));
   assert.equal(rf.length, 6);
   assert.ok(rf[0] === 0 && Number.isNaN(rf[1]) && rf[2] === 1 && Number.isNaN(rf[3]) && rf[4] === 2 && rf[5] === 3);
@@ -363,9 +363,10 @@ test('curve factory: d3 protocol, bounds kept in data space', () => {
   assert.equal(calls[0][0], 'M');
   assert.equal(calls.length, 3 * 50 + 1);
   for (const [, , py] of calls) assert.ok(sy.invert(py) >= 0);
-  // the unconstrained curve dips below zero on the same data (what the scheme prevents)
+  // the paper's unconstrained curve dips below zero on the same data (what the
+  // scheme prevents; the defaults' curve stays inside its data, docs/method.md §5.10)
   const calls2 = [];
-  const plain = lib.curveTrig.scales(sx, sy).samples(50).alpha(1).form('paper')({ ...ctx, moveTo: (a, b) => calls2.push(b), lineTo: (a, b) => calls2.push(b) });
+  const plain = lib.curveTrig.scales(sx, sy).samples(50).alpha(1).form('paper').slopes('arithmetic')({ ...ctx, moveTo: (a, b) => calls2.push(b), lineTo: (a, b) => calls2.push(b) });
   plain.lineStart();
   for (const [a, b] of data) plain.point(sx(a), sy(b));
   plain.lineEnd();
