@@ -215,7 +215,7 @@ static void surfaces_touching(const scase *sc, th_rng *r)
     tally t;
     memset(&t, 0, sizeof t);
     static double xq[QM], yq[QM], bx[QM * QM], by[QM * QM], bz[QM * QM], grid[QM * QM];
-    for (int rep = 0; rep < 40; rep++) {
+    for (int rep = 0; rep < 160; rep++) {
         double x[SN], y[SN], z[SN * SN];
         double off = rep % 4 == 0 ? 0.0 : rep % 4 == 1 ? 1e3 : rep % 4 == 2 ? 1e6 : 1e9;
         double scale = th_rng_logu(r, 1e-3, 1e6);
