@@ -142,7 +142,8 @@ TS_VECTOR_LOOP static void interior_arith(const double *restrict x, const double
 
 /* Both ends by the three-point formula; limit 0: sign-limited (d = 0 unless d
  * has the sign of the end secant); limit 1: also Fritsch–Carlson/Moler's
- * |d| <= 3|Δ| when the two end secants differ in sign. */
+ * |d| <= 3|Δ| when the two end secants differ in sign; limit 2: also
+ * Steffen's |d| <= 2|Δ| (his eq. 26). */
 static void ends3(const double *x, const double *f, size_t n, double *d, int limit, size_t p0,
                   size_t p1)
 {
@@ -164,8 +165,10 @@ static void ends3(const double *x, const double *f, size_t n, double *d, int lim
         double e = end3(h0, h1, D0, D1);
         if (limit >= 0 && !same_sign(e, D0))
             e = 0.0;
-        else if (limit >= 1 && !same_sign(D0, D1) && fabs(e) > fabs(3.0 * D0))
+        else if (limit == 1 && !same_sign(D0, D1) && fabs(e) > fabs(3.0 * D0))
             e = 3.0 * D0;
+        else if (limit == 2 && fabs(e) > 2.0 * fabs(D0))
+            e = 2.0 * D0;
         d[side == 0 ? 0 : n] = e;
     }
 }
@@ -252,28 +255,7 @@ static void steffen(const double *x, const double *f, size_t n, double *d, size_
         double m = fmin(fmin(fabs(Dl), fabs(Dr)), 0.5 * fabs(p));
         d[i] = Dl > 0.0 ? 2.0 * m : -2.0 * m;
     }
-    for (int side = 0; side < 2; side++) {
-        if (side == 0 ? p0 > 0 : p1 <= n)
-            continue;
-        double h0, h1, D0, D1;
-        if (side == 0) {
-            h0 = x[1] - x[0];
-            h1 = x[2] - x[1];
-            D0 = secant(x, f, 0);
-            D1 = secant(x, f, 1);
-        } else {
-            h0 = x[n] - x[n - 1];
-            h1 = x[n - 1] - x[n - 2];
-            D0 = secant(x, f, n - 1);
-            D1 = secant(x, f, n - 2);
-        }
-        double e = end3(h0, h1, D0, D1);
-        if (!same_sign(e, D0))
-            e = 0.0;
-        else if (fabs(e) > 2.0 * fabs(D0))
-            e = 2.0 * D0;
-        d[side == 0 ? 0 : n] = e;
-    }
+    ends3(x, f, n, d, 2, p0, p1);
 }
 
 /* 1 if every d[0..np) is finite. */
