@@ -39,5 +39,17 @@ __all__ = ["Spline", "Curve", "Surface", "Derivative", "Antiderivative", "Trigsp
 
 
 def library_version() -> str:
-    """Version of the libtrigspline compiled into the package, e.g. "0.1.0"."""
+    """Version of the libtrigspline compiled into the package, e.g. "0.2.0"."""
     return _core.library_version()
+
+
+# The xarray accessor (``da.trigspline``, ``ds.trigspline``) registers itself
+# when xarray is installed, as rioxarray's does; without xarray nothing is
+# imported (find_spec only looks the package up).
+def _register_xarray():
+    import importlib.util
+    if importlib.util.find_spec("xarray") is not None:
+        from . import xarray  # noqa: F401
+
+
+_register_xarray()
