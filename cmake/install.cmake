@@ -1,4 +1,4 @@
-# Install rules: the libraries, the header, the man page, the CMake package
+# Install rules: the libraries, the header, the man page, the licence, the CMake package
 # (trigsplineConfig.cmake, ...ConfigVersion.cmake, trigsplineTargets.cmake)
 # and trigspline.pc.  Included from the top-level CMakeLists.txt when TS_INSTALL.
 include(CMakePackageConfigHelpers)
@@ -15,6 +15,9 @@ install(FILES ${PROJECT_SOURCE_DIR}/include/trigspline.h
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(FILES ${PROJECT_SOURCE_DIR}/docs/trigspline.1
   DESTINATION ${CMAKE_INSTALL_MANDIR}/man1)
+# The licence travels with the binaries (share/doc/trigspline/LICENSE).
+install(FILES ${PROJECT_SOURCE_DIR}/LICENSE
+  DESTINATION ${CMAKE_INSTALL_DOCDIR})
 
 install(EXPORT trigsplineTargets NAMESPACE trigspline::
   FILE trigsplineTargets.cmake DESTINATION ${TS_CMAKE_DIR})

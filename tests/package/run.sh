@@ -138,7 +138,7 @@ for f in "$includedir/trigspline.h" "$includedir/trigspline_version.h" "$libdir/
          "$libdir/cmake/trigspline/trigsplineConfig.cmake" \
          "$libdir/cmake/trigspline/trigsplineConfigVersion.cmake" \
          "$libdir/cmake/trigspline/trigsplineTargets.cmake" \
-         "$libdir/pkgconfig/trigspline.pc"; do
+         "$libdir/pkgconfig/trigspline.pc" "share/doc/trigspline/LICENSE"; do
     check "installed $f" test -e "$prefix/$f"
 done
 check "no internal header installed" test ! -e "$prefix/$includedir/internal.h"
