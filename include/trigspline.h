@@ -568,7 +568,9 @@ typedef struct ts_interval_report {
                              * the larger of the interval's two data values (0: it does not) */
     double excursion_below; /* min(S(x0), S(x1)) - y_min >= 0: how far it dips below the smaller */
 } ts_interval_report;
-/* ts_interval_report rep = TS_INTERVAL_REPORT_INIT;  (C99 designated initialiser) */
+/* ts_interval_report rep = TS_INTERVAL_REPORT_INIT;  (a C99 designated
+ * initialiser, which C++ accepts from C++20 on; before that, and for arrays,
+ * call ts_interval_report_init) */
 #define TS_INTERVAL_REPORT_INIT {.struct_size = sizeof(ts_interval_report)}
 /* Initialise n reports (an array for ts_spline_certify, ts_curve_certify*): struct_size
  * set, values NaN, flags 0.  reports may be NULL (then nothing happens). */
@@ -1155,7 +1157,8 @@ typedef struct ts_patch_report {
     double proven_upper, sampled_upper, at_upper[2];
     int certified;
 } ts_patch_report;
-/* ts_patch_report rep = TS_PATCH_REPORT_INIT; */
+/* ts_patch_report rep = TS_PATCH_REPORT_INIT;  (C++ before C++20, and
+ * arrays: ts_patch_report_init) */
 #define TS_PATCH_REPORT_INIT {.struct_size = sizeof(ts_patch_report)}
 /* Initialise n patch reports (for ts_surface_certify): struct_size set,
  * values NaN, flags 0.  reports may be NULL. */
