@@ -1,33 +1,57 @@
 /* Exact signs for checks against a region with zero tolerance (tests and
- * fuzz harnesses): the sign of a sum of doubles (Shewchuk's expansion sum:
- * TwoSum keeps every rounding error, the largest nonzero component of the
- * nonoverlapping result has the sum's sign), and the side of a value
+ * fuzz harnesses): the sign of a sum of doubles, and the side of a value
  * relative to a line m x + c or a plane p x + q y + c, whose products are
- * split exactly by fma (a x = P + e).  Independent of the library's own
- * version (src/shape.c). */
+ * split exactly by fma (a x = P + e).  The sum is accumulated as one big
+ * integer in units of 2^-1074 (every double is an integer multiple of it),
+ * not by the library's expansion sum (src/shape.c, ts__exact_sign): a
+ * different method, so the two cannot share a mistake. */
 #ifndef TS_TH_EXACT_H
 #define TS_TH_EXACT_H
 #include <math.h>
 
 #define TH_EXACT_TERMS 8
+/* limbs of 32 bits from 2^-1074 up: |v| <= 2^1020 needs 1074 + 1021 bits,
+ * plus carries of at most TH_EXACT_TERMS terms */
+#define TH_EXACT_LIMBS 68
 
 /* sign of v[0] + ... + v[n-1] exactly, n <= TH_EXACT_TERMS, every |v| <= 2^1020 */
 static inline int th_exact_sign(const double *v, int n)
 {
-    double e[TH_EXACT_TERMS];
-    int k = 0;
+    long long L[TH_EXACT_LIMBS] = {0};
     for (int j = 0; j < n; j++) {
-        double q = v[j];
-        for (int l = 0; l < k; l++) {
-            double s = q + e[l], z = s - q;
-            e[l] = (q - (s - z)) + (e[l] - z);
-            q = s;
+        if (v[j] == 0.0)
+            continue;
+        int e;
+        double fr = frexp(v[j], &e);                    /* v = fr 2^e, 1/2 <= |fr| < 1 */
+        long long m = (long long)ldexp(fabs(fr), 53);   /* exact, < 2^53 */
+        int at = e - 53 + 1074;                         /* v = ±m 2^(at - 1074) */
+        if (at < 0) {                                   /* subnormal: m has that many low zeros */
+            m /= 1LL << -at;
+            at = 0;
         }
-        e[k++] = q;
+        long long sg = v[j] < 0.0 ? -1 : 1;
+        unsigned long long lo = ((unsigned long long)m & 0xffffffffULL) << (at % 32);
+        unsigned long long hi = ((unsigned long long)m >> 32) << (at % 32);
+        int k = at / 32;
+        L[k] += sg * (long long)(lo & 0xffffffffULL);
+        L[k + 1] += sg * (long long)((lo >> 32) + (hi & 0xffffffffULL));
+        L[k + 2] += sg * (long long)(hi >> 32);
     }
-    for (int l = k - 1; l >= 0; l--)
-        if (e[l] != 0.0)
-            return (e[l] > 0.0) - (e[l] < 0.0);
+    /* carries: every limb but the top one into [0, 2^32) */
+    for (int k = 0; k + 1 < TH_EXACT_LIMBS; k++) {
+        long long q = L[k] / 4294967296LL, r = L[k] - q * 4294967296LL;
+        if (r < 0) {
+            r += 4294967296LL;
+            q -= 1;
+        }
+        L[k] = r;
+        L[k + 1] += q;
+    }
+    if (L[TH_EXACT_LIMBS - 1] != 0)
+        return L[TH_EXACT_LIMBS - 1] > 0 ? 1 : -1;
+    for (int k = TH_EXACT_LIMBS - 2; k >= 0; k--)
+        if (L[k] != 0)
+            return 1;
     return 0;
 }
 
