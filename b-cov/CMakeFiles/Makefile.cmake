@@ -110,6 +110,7 @@ set(CMAKE_DEPEND_INFO_FILES
   "tests/CMakeFiles/test_solve.dir/DependInfo.cmake"
   "tests/CMakeFiles/test_struct_guard.dir/DependInfo.cmake"
   "tests/CMakeFiles/test_surface.dir/DependInfo.cmake"
+  "tests/CMakeFiles/test_surface_huge_planes.dir/DependInfo.cmake"
   "tests/CMakeFiles/test_surface_offsets.dir/DependInfo.cmake"
   "tests/CMakeFiles/test_threads.dir/DependInfo.cmake"
   "tests/CMakeFiles/test_basis.dir/DependInfo.cmake"

@@ -30,6 +30,7 @@ set(OLD_GLOB
   "/work/wt/trust/tests/api/test_solve.c"
   "/work/wt/trust/tests/api/test_struct_guard.c"
   "/work/wt/trust/tests/api/test_surface.c"
+  "/work/wt/trust/tests/api/test_surface_huge_planes.c"
   "/work/wt/trust/tests/api/test_surface_offsets.c"
   "/work/wt/trust/tests/api/test_threads.c"
   )

@@ -722,6 +722,8 @@ static void test_more_paths(void)
     o.n_betas = 2;
     o.n_margins = 2;
     EXPECT(&le, &c, "a per-interval or per-point array has the wrong length");
+    c = spline_ctx(x, f, 3, NULL); /* no array at all: no length to name */
+    EXPECT(&le, &c, "a per-interval or per-point array has the wrong length");
 
     TH_CASE("generic places of a spline without data");
     ts_error_context_init(&c);

@@ -1,0 +1,2 @@
+# Empty compiler generated dependencies file for test_surface_huge_planes.
+# This may be replaced when dependencies are built.
