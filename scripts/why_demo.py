@@ -210,8 +210,8 @@ def function_panel(key, title, intro, verdict, data_name, lower, upper, our_args
             least, nviol, worst = violations(x, grid, g)
             res.append((side, least, nviol))
             marks.setdefault(name, []).extend((grid[w], y[w]) for w in worst)
-            if side == ("lower" if lower is not None else "upper"):
-                gaps_plot[name] = (grid, g)
+            # the plotted gap: to the nearer bound
+            gaps_plot[name] = (grid, np.minimum(gaps_plot[name][1], g) if name in gaps_plot else g)
         rows.append((name, res))
     # ours: the exact certificate
     our_res = []
@@ -221,8 +221,9 @@ def function_panel(key, title, intro, verdict, data_name, lower, upper, our_args
             if v is not None:
                 bad = sum(1 for iv in ours.js["intervals"] if not iv["certified"])
                 our_res.append((side, v, bad))
-        g = ours.y - lower(ours.x) if lower is not None else upper(ours.x) - ours.y
-        gaps_plot["ours"] = (ours.x, g)
+        gs = [ours.y - lower(ours.x)] if lower is not None else []
+        gs += [upper(ours.x) - ours.y] if upper is not None else []
+        gaps_plot["ours"] = (ours.x, np.minimum.reduce(gs))
 
     # ---- plot: curves (top) and the gap to the bound, zoomed (bottom)
     fig, (ax, bx) = plt.subplots(2, 1, figsize=(9.5, 6.4), height_ratios=[3, 2], sharex=True)
@@ -257,7 +258,8 @@ def function_panel(key, title, intro, verdict, data_name, lower, upper, our_args
     bx.axhline(0, color="k", lw=1, ls="--")
     bx.axhspan(-10 * zoom, 0, color="#f4cccc", alpha=0.5, lw=0)
     bx.set_ylim(-zoom, zoom)
-    bx.set_ylabel("gap to the %s bound\n(zoomed; below 0 = violation)" % ("lower" if lower is not None else "upper"))
+    bx.set_ylabel("gap to the %s bound\n(zoomed; below 0 = violation)" % (
+        "nearer" if lower is not None and upper is not None else "lower" if lower is not None else "upper"))
     bx.set_xlabel(cols[0])
     bx.grid(alpha=0.25)
     svg_text = figure_svg(fig)
