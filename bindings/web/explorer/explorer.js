@@ -611,6 +611,13 @@ async function readInto(text, name) {
   state.alphas = null;
   selected = null;
   focusPoint = 0;
+  if (state.mode === 'curve' && state.box.on) {
+    // a box around the new points (10 % of their extent beyond them), which the user then drags
+    const X = r.points.map((q) => q[0]), Y = r.points.map((q) => q[1]);
+    const [x0, x1, y0, y1] = [Math.min(...X), Math.max(...X), Math.min(...Y), Math.max(...Y)];
+    const dx = 0.1 * (x1 - x0 || 1), dy = 0.1 * (y1 - y0 || 1);
+    state.box = { on: true, xmin: x0 - dx, xmax: x1 + dx, ymin: y0 - dy, ymax: y1 + dy };
+  }
   const cols = r.names ? ` (columns ${r.names.map((n) => esc(JSON.stringify(n))).join(' and ')}${r.xTime ? '; x as dates' : ''})` : '';
   const skipped = r.skipped ? `; ${r.skipped} row${r.skipped === 1 ? '' : 's'} with a missing value skipped` : '';
   const lines = r.report.length ? `<ul>${r.report.map((l) => `<li>${esc(l)}</li>`).join('')}</ul>` : '';
