@@ -43,7 +43,8 @@ function page(template, parts) {
   return src(template).replace('<!--SCRIPT-->', () => `<script type="module">\n${inline(code)}\n</script>`);
 }
 writeFileSync(join(outDir, 'index.html'),
-  page('explorer/index.html', [cliJs, unexport(embedded), unexport(body('explorer/explorer.js'))]));
+  page('explorer/index.html', [cliJs, unexport(embedded), unexport(body('explorer/ticks.js')),
+    unexport(body('explorer/reader.js')), unexport(body('explorer/explorer.js'))]));
 writeFileSync(join(outDir, 'example.html'),
   page('explorer/example.html', [unexport(embedded), unexport(body('explorer/example.js'))]));
 
