@@ -1090,11 +1090,13 @@ static void test_reader_realworld(void)
                "line has ',': mixed delimiters? see --delimiter)", 2, 1);
     EXPECT_ERR("Station Bern\nt v w\n1 2 3\n", NULL, TSU_IO_ERR_LAYOUT,
                "t.csv:2:1: every field of this line is text: a second header line (units?) after "
-               "the header on line 1? skip lines before the data with --skip N", 2, 1);
+               "the header on line 1? skip it with --units-row (lines before the header: "
+               "--skip N)", 2, 1);
     /* a second header line */
     EXPECT_ERR("day,rain\nd,mm\n1,2\n", NULL, TSU_IO_ERR_LAYOUT,
                "t.csv:2:1: every field of this line is text: a second header line (units?) after "
-               "the header on line 1? skip lines before the data with --skip N", 2, 1);
+               "the header on line 1? skip it with --units-row (lines before the header: "
+               "--skip N)", 2, 1);
     /* mixed delimiters */
     EXPECT_ERR("a,b\n1;2\n", NULL, TSU_IO_ERR_NUMBER,
                "t.csv:2:1: expected a number, found \"1;2\" (the delimiter is ','; this line has "

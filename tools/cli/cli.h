@@ -125,6 +125,16 @@ typedef struct cli_opts {
     int box_set;
     double box[6]; /* xmin, xmax, ymin, ymax[, zmin, zmax]; ±inf = absent */
     size_t n_box;
+
+    /* reading DATA, more (table.c) */
+    const char *date_format; /* --date-format: x read with tsu_parse_time_format */
+    int units_row;           /* --units-row: the line after the header is skipped */
+    /* --step S: samples at the multiples of S (of the seconds of step_unit for
+     * a time x; step_unit 0: a plain number) */
+    int step_set;
+    double step;
+    double step_unit;
+    const char *step_text;
 } cli_opts;
 
 /* ---- names.c --------------------------------------------------------- */
@@ -242,6 +252,23 @@ int cli_sample_after(const ts_spline *s, size_t i0, size_t i1, int with_end, siz
  * errno of the sink, or -1: an evaluation failed (outside the data without
  * --extrapolate; *err, *bad_x). */
 int cli_sample_even(const ts_spline *s, double a, double b, size_t n, int deriv, cli_sink sink,
+                    void *ctx, ts_error *err, double *bad_x);
+/* Points at a step: x_j = base + j * num / den for j = j0 .. j0 + n - 1
+ * (num, den integers, so that a decimal step such as 0.1 gives the doubles
+ * nearest to 0.3, 0.7, ...; den 1 and num any double when the step has too
+ * many digits). */
+typedef struct cli_step_grid {
+    double base, num, den, j0;
+    size_t n;
+} cli_step_grid;
+double cli_step_x(const cli_step_grid *g, double j);
+/* The grid of step text (a decimal number) times unit over [a, b]: aligned
+ * (the multiples of the step counted from base) or from a.  0, or -1 when
+ * more than max points (g->n is then max + 1). */
+int cli_step_grid_make(const char *text, double unit, double a, double b, int aligned,
+                       double base, size_t max, cli_step_grid *g);
+/* The points of g (as cli_sample_even). */
+int cli_sample_step(const ts_spline *s, const cli_step_grid *g, int deriv, cli_sink sink,
                     void *ctx, ts_error *err, double *bad_x);
 
 /* Growable pair of double arrays (failed: an allocation failed, nothing
