@@ -105,6 +105,7 @@ static int read_grid(const cli_surface_opts *o, surf_grid *g)
     g->name = strcmp(o->data, "-") == 0 ? "<stdin>" : o->data;
     tsu_read_options ro;
     tsu_read_options_init(&ro);
+    ro.header_corner = o->matrix_in; /* ",x1,x2,...": pandas' empty corner cell */
     tsu_table t;
     tsu_io_error e;
     tsu_io_status st = tsu_read_table_path(o->data, &ro, &t, &e);

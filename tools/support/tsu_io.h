@@ -350,6 +350,9 @@ typedef struct tsu_read_options {
                                 instead of as ISO 8601 (NULL: ISO 8601) */
     unsigned long long skip_after_header; /* content lines after the header skipped
                                              unread (units rows; default 0) */
+    int header_corner;    /* 1: with TSU_HEADER_AUTO a first content line whose first
+                             field is empty is the header too (the corner cell of a
+                             matrix layout, as pandas DataFrame.to_csv writes it) */
 } tsu_read_options;
 
 #define TSU_IO_MAX_LINE ((size_t)16 << 20)

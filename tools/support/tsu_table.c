@@ -58,6 +58,7 @@ struct tsu_reader {
     unsigned long long after_header; /* content lines still to skip after the header */
     unsigned long long skip_after;   /* tsu_read_options.skip_after_header */
     int sniffed;          /* the first bytes were checked for compressed data */
+    int header_corner;    /* tsu_read_options.header_corner */
     int failed;
     tsu_io_error saved;
 };
@@ -185,6 +186,7 @@ tsu_io_status tsu_reader_open(tsu_reader **out, FILE *fp, const char *name,
     r->time_detect = opt->time_detect;
     r->time_col = opt->time_col;
     r->skip_after = opt->skip_after_header;
+    r->header_corner = opt->header_corner;
     *out = r;
     return TSU_IO_OK;
 }
@@ -772,6 +774,19 @@ static int classify(tsu_reader *r, const field *f)
     return FK_TEXT;
 }
 
+/* Is the first field of the record [ls, le) empty (a matrix's corner cell)? */
+static int empty_first(tsu_reader *r, const char *ls, const char *le)
+{
+    const char *p = ls, *e, *s;
+    field f;
+    if (next_field(r, &p, le, 1, &f, 0) != 1) {
+        r->failed = 0; /* a quote error: let the data parser report it */
+        return 0;
+    }
+    s = field_text(r, &f, &e);
+    return s && s == e && p < le;
+}
+
 /* Is the record [ls, le) a header (a field that is text)? -1: error (reported). */
 static int is_header(tsu_reader *r, const char *ls, const char *le, int *all_text)
 {
@@ -1226,7 +1241,9 @@ static int next_record(tsu_reader *r, const char **lep)
             int hd;
             r->seen_content = 1;
             hd = r->header == TSU_HEADER_YES ||
-                 (r->header == TSU_HEADER_AUTO && is_header(r, ls, le, NULL) != 0);
+                 (r->header == TSU_HEADER_AUTO && is_header(r, ls, le, NULL) != 0) ||
+                 (r->header == TSU_HEADER_AUTO && r->header_corner && !r->failed &&
+                  empty_first(r, ls, le));
             if (r->failed)
                 break;
             if (hd) {
