@@ -169,6 +169,9 @@ int cli_report_io(const tsu_io_error *e);
 int cli_usage(cli_cmd cmd, const char *fmt, ...) CLI_PRINTF(2, 3);
 /* Shortest round-trip text of v (tsu_format_double). */
 const char *cli_num(double v, char buf[TSU_FMT_SIZE]);
+/* v to sig significant digits (1 to 17; "%.*g" without trailing zeros), for
+ * texts meant for a reader rather than for a program: 4.69, -2.69e+05. */
+const char *cli_num_sig(double v, int sig, char buf[TSU_FMT_SIZE]);
 /* "y = M*x + C" into buf. */
 void cli_line_text(const ts_line *l, char *buf, size_t len);
 /* "out of memory"; returns the exit status for it. */
