@@ -22,6 +22,7 @@
  *   args.c         argv -> cli_opts / cli_surface_opts
  *   curve_json.c   the JSON report of a parametric curve
  *   curve_plot.c   the SVG plot of a parametric curve
+ *   surface_plot.c the SVG heatmap of a surface
  *   fit.c, certify.c, curve.c   the commands
  *   surface.c      the surface command (gridded data)
  *   main.c         picks the command
@@ -552,6 +553,16 @@ void cli_curve_json(cli_json *j, const cli_opts *o, const cli_curve_run *cr);
 /* The plot of curve --svg into svg.  CLI_OK or CLI_IO (message printed). */
 int cli_curve_plot(const cli_opts *o, const cli_data *d, const cli_curve_run *cr,
                    tsu_plot_buf *svg);
+
+/* ---- surface_plot.c -------------------------------------------------- */
+/* The heatmap of surface s through the grid x, y, z (z[j*nx + i]) built with
+ * so: viridis, or a diverging map centred on 0 when the values straddle 0;
+ * contours, axis ticks, colour bar; the patches where the shape scheme
+ * acts (the surface built without it leaves the bounds; else active[c])
+ * hatched.  rep, active: per patch, or NULL.  0 or ENOMEM. */
+int cli_surface_plot(const double *x, size_t nx, const double *y, size_t ny, const double *z,
+                     const ts_surface *s, const ts_surface_options *so,
+                     const ts_patch_report *rep, const int *active, tsu_plot_buf *svg);
 
 /* ---- fit.c, certify.c, curve.c, surface.c ---------------------------- */
 int cli_fit(cli_opts *o);
