@@ -714,7 +714,8 @@ const cli_optdef cli_optdefs[] = {
      COUNT(2, 100000000, (double)NAN, CLI_G_OUTPUT, "N points evenly over the data range instead")},
     {ROW("--grid", NULL, "A:B:N", CLI_F, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_grid, CLI_G_OUTPUT,
-           "N points evenly over [A, B] instead of --samples (A, B numbers or dates)")},
+           "N points evenly over [A, B] instead of --samples (A, B numbers or dates); --grid "
+           "A:B --step S: A, A + S, ... up to B")},
     {ROW("--step", NULL, "S", CLI_F, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_step, CLI_G_OUTPUT,
            "points at the multiples of S within the data range (with --grid A:B: A, A + S, "
