@@ -219,7 +219,7 @@ void cli_log_ticks(void *ctx, tsu_plot_ticks *t)
             continue;
         t->value[t->n] = log10(lin.value[i]);
         if (lin.exponent)
-            snprintf(t->label[t->n], TSU_PLOT_LABEL_MAX, "%se%d", lin.label[i], lin.exponent);
+            snprintf(t->label[t->n], TSU_PLOT_LABEL_MAX, "%.16se%d", lin.label[i], lin.exponent);
         else
             snprintf(t->label[t->n], TSU_PLOT_LABEL_MAX, "%s", lin.label[i]);
         t->n++;

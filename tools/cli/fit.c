@@ -120,10 +120,10 @@ static int make_step(const cli_opts *o, const ts_spline *s, const cli_cols *cols
     const double *X = ts_spline_x(s);
     size_t n = ts_spline_intervals(s);
     double base = 0.0;
-    if (cols->x_time && !o->step_unit)
+    if (cols->x_time && o->step_unit == 0.0)
         return cli_usage(o->cmd, "--step %s: x holds dates, give the step a unit s, min, h or d "
                                  "(1h, 15min)", o->step_text);
-    if (!cols->x_time && o->step_unit)
+    if (!cols->x_time && o->step_unit != 0.0)
         return cli_usage(o->cmd, "--step %s: a unit applies to dates only, x holds numbers",
                          o->step_text);
     if (cols->x_time && cols->tform.zone == 2)

@@ -137,14 +137,14 @@ int cli_step_grid_make(const char *text, double unit, double a, double b, int al
         double scale = 1.0;
         for (int k = 0; k < (e < 0 ? -e : e); k++)
             scale *= 10.0;
-        num *= unit ? unit : 1.0;
+        num *= unit != 0.0 ? unit : 1.0;
         if (e >= 0)
             num *= scale;
         else
             g->den = scale;
     } else {
         (void)tsu_parse_double(text, NULL, &num, NULL);
-        num *= unit ? unit : 1.0;
+        num *= unit != 0.0 ? unit : 1.0;
     }
     g->num = num;
     step = num / g->den;
