@@ -196,11 +196,18 @@ void cli_log_ticks(void *ctx, tsu_plot_ticks *t)
         }
         return;
     }
-    /* up to three decades: 1-2-5 in each, else every digit (matplotlib's LogLocator) */
+    /* up to three decades: 1-2-5 in each, else 1-2-3-5, else every digit (as
+     * matplotlib's LogLocator with subs) */
     static const int m125[] = {1, 2, 5}, m19[] = {1, 2, 3, 4, 5, 6, 7, 8, 9};
     size_t c125 = mant_ticks(m125, 3, t, 0);
     if (c125 >= 3 && c125 <= 10) {
         t->n = mant_ticks(m125, 3, t, 1);
+        return;
+    }
+    static const int m1235[] = {1, 2, 3, 5};
+    size_t c1235 = mant_ticks(m1235, 4, t, 0);
+    if (c1235 >= 3 && c1235 <= 10) {
+        t->n = mant_ticks(m1235, 4, t, 1);
         return;
     }
     size_t c19 = mant_ticks(m19, 9, t, 0);
