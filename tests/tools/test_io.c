@@ -1242,6 +1242,25 @@ static void test_time_format(void)
     CHECK(RT("0,1,2\n10,3,4\n", &o, &t, &e) == TSU_IO_OK && t.nrows == 2 && !t.names);
     tsu_table_free(&t);
     EXPECT_ERR(",1,2\n10,3,4\n", NULL, TSU_IO_ERR_NUMBER, "t.csv:1:1: empty field", 1, 1);
+    /* a column forced to dates: after the layout, before the first row */
+    {
+        FILE *f = mem_file("d,q\n20240105,1\n20240106,2\n", 27);
+        tsu_reader *r;
+        const double *row;
+        tsu_read_options_init(&o);
+        o.time_format = "%Y%m%d";
+        CHECK(tsu_reader_open(&r, f, "t.csv", &o, &e) == TSU_IO_OK);
+        CHECK(tsu_reader_set_time_column(r, 0) == -1); /* columns not known yet */
+        CHECK(tsu_reader_layout(r, &e) == TSU_IO_OK);
+        CHECK(tsu_reader_set_time_column(r, 2) == -1); /* not a column */
+        CHECK(tsu_reader_set_time_column(r, 0) == 0);
+        CHECK(tsu_reader_next(r, &row, &e) == TSU_IO_OK && row[0] == 19727.0 * 86400 &&
+              tsu_reader_is_time(r, 0, NULL) && !tsu_reader_is_time(r, 1, NULL));
+        CHECK(tsu_reader_set_time_column(r, 1) == -1); /* too late */
+        CHECK(tsu_reader_set_time_column(NULL, 0) == -1);
+        tsu_reader_free(r);
+        fclose(f);
+    }
     /* compressed input */
     EXPECT_ERR("\x1f\x8b\x08\x00\x00\x00\x00\x00", NULL, TSU_IO_ERR_ENCODING,
                "t.csv: gzip-compressed input: decompress it first (zcat t.csv | trigspline ...)",
