@@ -186,9 +186,20 @@ int cli_surface_plot(const double *x, size_t nx, const double *y, size_t ny, con
             "viewBox=\"0 0 %g %g\" font-family=\"sans-serif\" font-size=\"12\">\n",
         L + W + R, T + H + B, L + W + R, T + H + B);
     put(&w, "<rect width=\"100%%\" height=\"100%%\" fill=\"#fff\"/>\n");
-    put(&w, "<defs><pattern id=\"acted\" patternUnits=\"userSpaceOnUse\" width=\"8\" "
+    /* the hatching's id: unique per data (plots inlined in one HTML page
+     * share the id namespace), the same for the same data */
+    unsigned long long hsh = 1469598103934665603ULL;
+    for (size_t k = 0; k < nx * ny; k++) {
+        unsigned char bytes[sizeof(double)];
+        memcpy(bytes, &z[k], sizeof bytes);
+        for (size_t q = 0; q < sizeof bytes; q++)
+            hsh = (hsh ^ bytes[q]) * 1099511628211ULL;
+    }
+    char pid[32];
+    snprintf(pid, sizeof pid, "acted-%08llx", hsh & 0xffffffffULL);
+    put(&w, "<defs><pattern id=\"%s\" patternUnits=\"userSpaceOnUse\" width=\"8\" "
             "height=\"8\"><path d=\"M-1 9L9 -1\" stroke=\"#fff\" stroke-width=\"0.9\" "
-            "stroke-opacity=\"0.4\"/></pattern></defs>\n");
+            "stroke-opacity=\"0.4\"/></pattern></defs>\n", pid);
     put(&w, "<g shape-rendering=\"crispEdges\">\n");
     double cw = W / (double)N, ch = H / (double)N;
     for (size_t b = 0; b < N; b++)
@@ -236,7 +247,7 @@ int cli_surface_plot(const double *x, size_t nx, const double *y, size_t ny, con
         if (scheme_acted(x, nx, y, ny, z, so, acted) != 0)
             for (size_t c = 0; c < np; c++)
                 acted[c] = active[c];
-        put(&w, "<g fill=\"url(#acted)\" stroke=\"none\">\n");
+        put(&w, "<g fill=\"url(#%s)\" stroke=\"none\">\n", pid);
         for (size_t c = 0; c < np; c++)
             if (acted[c]) {
                 n_acted++;
@@ -311,9 +322,9 @@ int cli_surface_plot(const double *x, size_t nx, const double *y, size_t ny, con
 #undef BY
     if (n_acted) {
         put(&w, "<rect x=\"%g\" y=\"%g\" width=\"14\" height=\"10\" fill=\"#3b518b\"/>"
-                "<rect x=\"%g\" y=\"%g\" width=\"14\" height=\"10\" fill=\"url(#acted)\" "
+                "<rect x=\"%g\" y=\"%g\" width=\"14\" height=\"10\" fill=\"url(#%s)\" "
                 "stroke=\"#000\" stroke-width=\"0.5\"/>\n",
-            L, T + H + 48, L, T + H + 48);
+            L, T + H + 48, L, T + H + 48, pid);
         put(&w, "<text x=\"%g\" y=\"%g\" font-size=\"11\">patches where the shape scheme acts "
                 "(%zu of %zu: without it the surface leaves the bounds there)</text>\n",
             L + 20, T + H + 57, n_acted, np);
