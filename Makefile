@@ -130,9 +130,9 @@ clean:
 PYTHON := /usr/bin/python3
 PYTHON_PACKAGES := python3 python3-numpy python3-scipy python3-pytest python3-setuptools \
   python3-wheel python3-venv python3-pip python3-dev python3-xarray python3-dask \
-  python3-distributed python3-pandas
+  python3-distributed python3-pandas python3-matplotlib python3-netcdf4
 python-deps:
-	@$(PYTHON) -c 'import numpy, scipy, pytest, setuptools, wheel, ensurepip, xarray, dask, distributed, pandas, os, sys, sysconfig; \
+	@$(PYTHON) -c 'import numpy, scipy, pytest, setuptools, wheel, ensurepip, xarray, dask, distributed, pandas, matplotlib, netCDF4, os, sys, sysconfig; \
 	  sys.exit(not os.path.exists(os.path.join(sysconfig.get_paths()["include"], "Python.h")))' \
 	  2>/dev/null || { apt-get update && \
 	  DEBIAN_FRONTEND=noninteractive apt-get install -y $(PYTHON_PACKAGES); }
