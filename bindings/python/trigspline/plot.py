@@ -148,7 +148,9 @@ def spline(s, ax=None, *, data=True, bounds=True, active=True, per_interval=32, 
         numpy's time unit of x when ``epoch`` is given.
     xscale, yscale : {'linear', 'log', ...}, default the axes' own
         matplotlib scales (``'log'``: ``LogLocator`` ticks).
-    label, color : default 'trigspline', matplotlib's next colour
+    label : str, default 'trigspline'
+        The curve's legend entry.
+    color : matplotlib colour, default the axes' next colour
     xlabel, ylabel : str, default none
 
     Returns
