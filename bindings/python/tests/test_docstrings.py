@@ -73,3 +73,15 @@ def test_every_keyword_states_its_actual_default(doc_obj, func, kind):
 def test_the_parser_reads_what_it_should():
     doc = "    a, b : float, default 1\n    alpha : float, default 0.85\n"
     assert documented_defaults(doc) == {"a": "1", "b": "1", "alpha": "0.85"}
+
+
+def test_readme_table_states_the_spline_defaults():
+    """bindings/python/README.md's Spline table ends each row with its default."""
+    import os
+    from conftest import REPO
+    text = open(os.path.join(REPO, "bindings", "python", "README.md"), encoding="utf-8").read()
+    rows = dict(re.findall(r"^\| `(\w+)`(?:, `\w+`)? \| .* \(([^()]*)\) \|$", text, flags=re.M))
+    d = trigspline.defaults()
+    assert rows["alpha"] == "%s, %s" % (_options._text(d["alpha"]), _options._text(d["beta"]))
+    for k in ("margin", "slopes", "form", "extrapolate", "certify"):
+        assert rows[k].strip("`") == _options._text(d[k]), (k, rows[k])
