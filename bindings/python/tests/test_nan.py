@@ -200,3 +200,24 @@ def test_netcdf_fill_value_hour(tmp_path):
     near = (new > t[29]) & (new < t[31])
     np.testing.assert_array_equal(np.isnan(out.values[0, 0]), near | (new > t[-1]))
     assert near.sum() == 10 and out.values.size == 427   # was 427 NaN before
+
+
+def test_chunked_failure_beats_an_earlier_gap():
+    # a NaN in the first chunk and a negative value (a fault) in a later one:
+    # the series fails as unchunked, with the fault's status and position
+    da = cube(seed=12).fillna(0.0)
+    da.values[0, 0, 10] = np.nan
+    da.values[0, 0, 60] = -1.0
+    new = da.time.values[:-1] + np.timedelta64(30, "m")
+    ref, cert = da.trigspline.interp(time=new, lower=0, errors="nan", certificate=True)
+    assert cert.status.values[0, 0] == TS_ERR_NEGATIVE and cert.index.values[0, 0] == 60
+    assert np.isnan(ref.values[0, 0]).all() and not np.isnan(ref.values[0, 1]).any()
+    for chunk in (5, 13):
+        out, c = da.chunk({"time": chunk}).trigspline.interp(time=new, lower=0, errors="nan",
+                                                             certificate=True)
+        np.testing.assert_array_equal(out.compute(scheduler="sync").values, ref.values)
+        c = c.compute(scheduler="sync")
+        np.testing.assert_array_equal(c.status.values, cert.status.values)
+        np.testing.assert_array_equal(c.index.values, cert.index.values)
+    with pytest.raises(ValueError, match=r"series lat=1.0, lon=0.0: .*\(position 60\)"):
+        da.trigspline.interp(time=new, lower=0)
