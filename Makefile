@@ -4,8 +4,8 @@
 #   make build-asan ASan+UBSan build in build-asan/
 #   make test       all three builds, then tests/run_all.sh (package test and the
 #                   Python package's pytest included)
-#   make demo       the paper's numerical section (out/paper) and the
-#                   "why trigspline" page (out/why)
+#   make demo       the paper's numerical section (out/paper), the
+#                   "why trigspline" page (out/why) and the Python gallery (out/gallery)
 #   make web        the WebAssembly module and the explorer page (out/web)
 #   make test-web   Node and headless-Chromium tests of out/web and out/why
 #   make bench      benchmark against GSL and the build decisions -> bench/RESULTS.md
@@ -119,6 +119,7 @@ accuracy: build
 demo: demo-tools
 	python3 scripts/paper_demo.py build/trigspline data/paper out/paper
 	$(MAKE) --no-print-directory why-demo
+	$(MAKE) --no-print-directory gallery
 
 clean:
 	rm -rf build build-asan build-clang build-bench build-web build-coverage build-fuzz build-tsan \
@@ -130,9 +131,9 @@ clean:
 PYTHON := /usr/bin/python3
 PYTHON_PACKAGES := python3 python3-numpy python3-scipy python3-pytest python3-setuptools \
   python3-wheel python3-venv python3-pip python3-dev python3-xarray python3-dask \
-  python3-distributed python3-pandas
+  python3-distributed python3-pandas python3-matplotlib python3-netcdf4
 python-deps:
-	@$(PYTHON) -c 'import numpy, scipy, pytest, setuptools, wheel, ensurepip, xarray, dask, distributed, pandas, os, sys, sysconfig; \
+	@$(PYTHON) -c 'import numpy, scipy, pytest, setuptools, wheel, ensurepip, xarray, dask, distributed, pandas, matplotlib, netCDF4, os, sys, sysconfig; \
 	  sys.exit(not os.path.exists(os.path.join(sysconfig.get_paths()["include"], "Python.h")))' \
 	  2>/dev/null || { apt-get update && \
 	  DEBIAN_FRONTEND=noninteractive apt-get install -y $(PYTHON_PACKAGES); }
@@ -150,6 +151,23 @@ bench-python: python-deps
 	  --no-build-isolation ./bindings/python
 	cd build-bench && python-venv/bin/python ../bench/bench_python.py
 	cd build-bench && python-venv/bin/python ../bench/bench_xarray.py
+
+# The gallery (out/gallery/index.html): figures of trigspline.plot, each with
+# the code that made it (scripts/gallery.py, a few seconds).  The package is
+# installed into build/gallery-venv once and again only when its sources change.
+.PHONY: gallery
+GALLERY_VENV := build/gallery-venv
+GALLERY_SRC := $(wildcard bindings/python/trigspline/*.py bindings/python/src/*.c src/*.c \
+  src/*.h include/*.h) bindings/python/setup.py CMakeLists.txt
+$(GALLERY_VENV)/.installed: $(GALLERY_SRC)
+	@$(MAKE) --no-print-directory python-deps
+	rm -rf $(GALLERY_VENV)
+	$(PYTHON) -m venv --system-site-packages $(GALLERY_VENV)
+	env -u PIP_FIND_LINKS PIP_NO_INDEX=1 $(GALLERY_VENV)/bin/pip install -q \
+	  --no-build-isolation ./bindings/python
+	touch $@
+gallery: $(GALLERY_VENV)/.installed
+	$(GALLERY_VENV)/bin/python scripts/gallery.py out/gallery
 
 # The companion page "why trigspline" (out/why): our curves beside SciPy's and
 # GSL's on data/examples/, α guidance and the overshoot report.  Run by `make
