@@ -51,7 +51,11 @@ test)
         fi
         MAKEFLAGS=-j2 R CMD check --as-cran $manual --output="$tmp" "$tarball" \
             >"$tmp/check.log" 2>&1 || true
+        # the tail, and every NOTE / WARNING / ERROR with its explanation
         tail -n 25 "$tmp/check.log"
+        echo "---- R CMD check: notes, warnings, errors"
+        awk '/\.\.\. *(NOTE|WARNING|ERROR)$/ {show = 1; print; next}
+             /^\* / {show = 0} show' "$tmp/check.log"
         if grep -q "^Status: .*\(ERROR\|WARNING\)" "$tmp/check.log"; then
             echo "$0: R CMD check failed" >&2
             exit 1

@@ -10,17 +10,23 @@
     value
 }
 
+## x as the only argument: a matrix (z, with x, y its indices) or a list
+## with components x, y, z (as persp() and image() take).
+.grid_of <- function(x) {
+    if (is.list(x) && !is.null(x$z)) return(list(x = x$x, y = x$y, z = x$z))
+    if (is.matrix(x)) return(list(x = seq_len(nrow(x)), y = NULL, z = x))
+    stop("no 'z' matrix given")
+}
+
 trigsurfacefun <- function(x = seq_len(nrow(z)), y = seq_len(ncol(z)), z,
                            shape = NULL, lower = NULL, upper = NULL, form = NULL,
                            alpha = NULL, beta = NULL, slopes = NULL, margin = NULL,
                            zero.twist = NULL) {
     call <- match.call()
     if (missing(z)) {
-        if (is.list(x) && !is.null(x$z)) {
-            y <- x$y; z <- x$z; x <- x$x
-        } else if (is.matrix(x)) {
-            z <- x; x <- seq_len(nrow(z))
-        } else stop("no 'z' matrix given")
+        g <- .grid_of(x)
+        x <- g$x; z <- g$z
+        if (!is.null(g$y)) y <- g$y
     }
     z <- as.matrix(z)
     if (!is.numeric(z)) stop("'z' must be a numeric matrix")
@@ -97,6 +103,11 @@ trigsurface <- function(x = seq_len(nrow(z)), y = seq_len(ncol(z)), z,
                         nx = 2L * length(x), ny = 2L * length(y),
                         xout = seq(min(x), max(x), length.out = nx),
                         yout = seq(min(y), max(y), length.out = ny), ...) {
+    if (missing(z)) {
+        g <- .grid_of(x)
+        x <- g$x; z <- g$z
+        if (!is.null(g$y)) y <- g$y
+    }
     f <- trigsurfacefun(x, y, z, ...)
     list(x = xout, y = yout, z = f(xout, yout, grid = TRUE))
 }

@@ -8,6 +8,7 @@
 #include <Rinternals.h>
 #include <R_ext/Rdynload.h>
 #include <R_ext/Visibility.h>
+#include <limits.h>
 #include <math.h>
 #include <string.h>
 
@@ -18,6 +19,7 @@
 static SEXP list_get(SEXP list, const char *name)
 {
     SEXP names = Rf_getAttrib(list, R_NamesSymbol);
+    if (TYPEOF(list) != VECSXP || TYPEOF(names) != STRSXP) return R_NilValue;
     for (R_xlen_t i = 0; i < Rf_xlength(list); i++)
         if (strcmp(CHAR(STRING_ELT(names, i)), name) == 0) return VECTOR_ELT(list, i);
     return R_NilValue;
@@ -183,6 +185,10 @@ static SEXP r_spline_new(SEXP x, SEXP f, SEXP opts)
     if (!Rf_isNull(v = list_get(opts, "extrapolate")))
         o.extrapolate = (ts_extrap)vocab_value(TS_VOCAB_EXTRAP, v, "extrapolate");
 
+    /* the pointer (with its finalizer) first: nothing leaks if an R
+     * allocation fails afterwards */
+    SEXP ptr = PROTECT(R_MakeExternalPtr(NULL, Rf_install("trigspline"), R_NilValue));
+    R_RegisterCFinalizerEx(ptr, spline_finalize, TRUE);
     ts_spline *s = NULL;
     ts_error err;
     size_t n = (size_t)Rf_xlength(x);
@@ -194,10 +200,10 @@ static SEXP r_spline_new(SEXP x, SEXP f, SEXP opts)
         ctx.n_points = n;
         ctx.spline_options = &o;
         ctx.first_index = 1;
+        UNPROTECT(1);
         return failure(&err, &ctx);
     }
-    SEXP ptr = PROTECT(R_MakeExternalPtr(s, Rf_install("trigspline"), R_NilValue));
-    R_RegisterCFinalizerEx(ptr, spline_finalize, TRUE);
+    R_SetExternalPtrAddr(ptr, s);
     UNPROTECT(1);
     return ptr;
 }
@@ -372,6 +378,8 @@ static SEXP r_surface_new(SEXP x, SEXP y, SEXP z, SEXP opts)
     plane_of(opts, "lower", &o.has_lower, &o.lower);
     plane_of(opts, "upper", &o.has_upper, &o.upper);
 
+    SEXP ptr = PROTECT(R_MakeExternalPtr(NULL, Rf_install("trigspline_surface"), R_NilValue));
+    R_RegisterCFinalizerEx(ptr, surface_finalize, TRUE);
     ts_surface *s = NULL;
     ts_error err;
     size_t nx = (size_t)Rf_xlength(x), ny = (size_t)Rf_xlength(y);
@@ -385,10 +393,10 @@ static SEXP r_surface_new(SEXP x, SEXP y, SEXP z, SEXP opts)
         ctx.f = REAL(z);
         ctx.surface_options = &o;
         ctx.first_index = 1;
+        UNPROTECT(1);
         return failure(&err, &ctx);
     }
-    SEXP ptr = PROTECT(R_MakeExternalPtr(s, Rf_install("trigspline_surface"), R_NilValue));
-    R_RegisterCFinalizerEx(ptr, surface_finalize, TRUE);
+    R_SetExternalPtrAddr(ptr, s);
     UNPROTECT(1);
     return ptr;
 }
@@ -444,6 +452,7 @@ static SEXP r_surface_grid(SEXP ptr, SEXP xq, SEXP yq)
     const ts_surface *s = surface_of(ptr);
     if (TYPEOF(xq) != REALSXP || TYPEOF(yq) != REALSXP) Rf_error("x and y must be double vectors");
     R_xlen_t mx = Rf_xlength(xq), my = Rf_xlength(yq);
+    if (mx > INT_MAX || my > INT_MAX) Rf_error("grid too large for a matrix");
     SEXP out = PROTECT(Rf_allocMatrix(REALSXP, (int)mx, (int)my));
     ts_error err;
     if (ts_surface_eval_grid(s, REAL(xq), (size_t)mx, REAL(yq), (size_t)my, REAL(out), &err) !=

@@ -127,3 +127,25 @@ test_that("shapes, lines and the certificate data.frame", {
     expect_identical(certificate(g)$bound, rep("lower+upper", 3))
     expect_false(certified(trigsplinefun(1:3, c(1, 3, 2))))
 })
+
+test_that("per-interval parameters, user slopes, names", {
+    f <- trigsplinefun(1:4, c(1, 3, 2, 4), alpha = c(1, 2, 3), form = "paper")
+    expect_identical(trigspline_info(f)$alpha, c(1, 2, 3))
+    err <- expect_error(trigsplinefun(1:4, c(1, 3, 2, 4), alpha = c(1, 2)),
+                        class = "trigspline_error")
+    expect_identical(err$status, "TS_ERR_LENGTH")
+    err <- expect_error(trigsplinefun(1:4, c(1, 3, 2, 4), slopes = c(0, 1)),
+                        class = "trigspline_error")
+    expect_identical(err$status, "TS_ERR_LENGTH")
+    expect_identical(trigspline_info(trigsplinefun(1:3, c(1, 3, 2), slopes = "fritsch"))$slopes[2], 0)
+    expect_true(all(c("paper", "c1", "geometric") %in% trigspline_names("form")))
+    expect_true("TS_ERR_NEGATIVE" %in% trigspline_names("status"))
+    expect_output(print(f), "4 points, paper form, shape none")
+})
+
+test_that("a function restored from a saved session refits its data", {
+    f <- trigsplinefun(table1$x, table1$f, shape = "positive", alpha = 0.15)
+    g <- unserialize(serialize(f, NULL))
+    expect_identical(g(c(4.2, 17)), f(c(4.2, 17)))
+    expect_identical(certificate(g), certificate(f))
+})

@@ -41,3 +41,19 @@ test_that("bounds, the patch certificate and errors", {
     expect_identical(err$status, "TS_ERR_DOMAIN")
     expect_identical(s(NA, 1), NA_real_)
 })
+
+test_that("a surface restored from a saved session refits its data", {
+    s <- trigsurfacefun(z = volcano[1:5, 1:4], shape = "range")
+    t2 <- unserialize(serialize(s, NULL))
+    expect_identical(t2(2.5, 3.5), s(2.5, 3.5))
+})
+
+test_that("a matrix or a list(x, y, z) as the only argument, as persp()", {
+    v <- trigsurface(volcano, nx = 20, ny = 10)
+    expect_identical(range(v$x), c(1, 87))
+    expect_identical(dim(v$z), c(20L, 10L))
+    w <- trigsurface(list(x = 10 * (1:87), y = 5 * (1:61), z = volcano), nx = 3, ny = 3)
+    expect_identical(w$y, c(5, 155, 305))
+    expect_identical(w$z[1, 1], 100)
+    expect_identical(trigsurfacefun(volcano)(1, 1), 100)
+})
