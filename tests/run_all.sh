@@ -61,8 +61,9 @@ if [ -n "$first" ]; then
         run_one "pytest/bindings/python" "$here/../bindings/python/tests/run.sh" "$first"
     fi
     # The R package: staged, installed into a temporary library, testthat and
-    # the smoke test (bindings/r/tests/run.sh; R and testthat: make r-deps)
-    run_one "r/bindings/r" "$here/../bindings/r/tests/run.sh"
+    # the smoke test, and its values bit for bit against the library of the
+    # first build (bindings/r/tests/run.sh; R and testthat: make r-deps)
+    run_one "r/bindings/r" "$here/../bindings/r/tests/run.sh" "$first"
     # Every stated version against CMakeLists.txt (after pytest: its venv has the package)
     run_one "script/check_version.py" python3 "$here/check_version.py" "$first"
 fi

@@ -16,5 +16,9 @@ e <- tryCatch(trigsplinefun(1:4, c(1, -1, 2, 3), shape = "positive"),
               trigspline_error = function(e) e)
 stopifnot(inherits(e, "trigspline_error"), identical(e$status, "TS_ERR_NEGATIVE"),
           grepl("point 2 (x = 2, f = -1)", conditionMessage(e), fixed = TRUE))
+# one version: DESCRIPTION's (from CMakeLists.txt by stage.sh) is the
+# compiled-in library's ts_version()
+stopifnot(identical(as.character(utils::packageVersion("trigspline")),
+                    trigspline_defaults()$version))
 cat(sprintf("R smoke test: trigspline %s, f(4.2) = %.17g, certified; error: %s\n",
             trigspline_defaults()$version, v, conditionMessage(e)))
