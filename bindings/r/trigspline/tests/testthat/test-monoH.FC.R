@@ -55,3 +55,21 @@ test_that("they differ on rain: monoH.FC goes negative, trigspline stays >= 0", 
     ## the default spline too: each interval stays in its data range (5.10)
     expect_gte(min(trigsplinefun(rain$day, rain$mm)(xq)), 0)
 })
+
+test_that("the library's \"fritsch-carlson\" slopes are not monoH.FC's", {
+    ## the library's are Brodlie's weighted harmonic mean (PCHIP, 0 at
+    ## extrema); monoH.FC starts from the plain mean of the two secants and
+    ## only limits it, so it keeps a non-zero slope at a local extremum
+    x <- c(0, 1, 3, 4, 7)
+    y <- c(0, 2, 1, 3, 3.5)
+    m <- splinefun(x, y, method = "monoH.FC")(x, deriv = 1)
+    d <- trigspline_info(trigsplinefun(x, y, slopes = "fritsch-carlson"))$slopes
+    ## at x = 1 (a maximum): the mean of the secants 2 and -0.5
+    expect_equal(m[2], 0.75, tolerance = 1e-14)
+    expect_identical(d[2], 0)
+    ## at x = 4 the secants 2 and 1/6 have one sign: Brodlie's weights
+    ## (w1 = 2 h_i + h_(i-1) = 7, w2 = h_i + 2 h_(i-1) = 5), where
+    ## monoH.FC's mean 13/12 is then cut by its limiter
+    expect_equal(d[4], 12 / (7 / 2 + 5 * 6), tolerance = 1e-14)
+    expect_false(isTRUE(all.equal(d[4], m[4])))
+})

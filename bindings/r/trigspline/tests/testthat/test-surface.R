@@ -57,3 +57,17 @@ test_that("a matrix or a list(x, y, z) as the only argument, as persp()", {
     expect_identical(w$z[1, 1], 100)
     expect_identical(trigsurfacefun(volcano)(1, 1), 100)
 })
+
+test_that("sloped planes in the geometric form", {
+    x <- 0:4; y <- 0:3
+    z <- outer(x, y, function(x, y) 1 + 0.5 * x + 0.25 * y + sin(x + y)^2)
+    s <- trigsurfacefun(x, y, z, lower = c(0.9, 0.5, 0.25), form = "geometric")
+    expect_identical(trigspline_defaults()$surface$form, "paper")
+    expect_true(certified(s))
+    expect_identical(environment(s)$info$shape, "planes")
+    g <- expand.grid(x = seq(0, 4, by = 0.05), y = seq(0, 3, by = 0.05))
+    expect_true(all(s(g$x, g$y) > 0.9 + 0.5 * g$x + 0.25 * g$y))
+    err <- expect_error(trigsurfacefun(x, y, z, lower = c(0.9, 0.5, 0.25)),
+                        class = "trigspline_error")
+    expect_identical(err$status, "TS_ERR_OPTION")
+})
