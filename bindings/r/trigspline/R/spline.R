@@ -29,7 +29,7 @@ trigsplinefun <- function(x, y = NULL, shape = NULL, lower = NULL, upper = NULL,
     info <- .Call(C_spline_info, ptr)
     state <- new.env(parent = emptyenv())
     state$ptr <- ptr
-    ## restored from a saved session: the pointer is gone, refit the same data
+    ## restored by readRDS() or load(): the pointer is gone, refit the same data
     spline <- function() {
         if (identical(.Call(C_ptr_valid, state$ptr), FALSE))
             state$ptr <- .check(.Call(C_spline_new, xy$x, xy$y, opts), call)

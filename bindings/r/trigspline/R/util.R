@@ -1,4 +1,4 @@
-## Shared helpers: the library's vocabulary and defaults, option checks,
+## Shared internals: the library's vocabulary and defaults, option checks,
 ## conditions.
 
 .vocab_ids <- c(status = 0L, form = 1L, slopes = 2L, shape = 3L, extrapolate = 4L,

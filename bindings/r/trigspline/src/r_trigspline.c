@@ -14,7 +14,7 @@
 
 #include "trigspline.h"
 
-/* ---- helpers ------------------------------------------------------------ */
+/* ---- utilities ---------------------------------------------------------- */
 
 static SEXP list_get(SEXP list, const char *name)
 {
@@ -127,7 +127,7 @@ static void spline_finalize(SEXP ptr)
 static const ts_spline *spline_of(SEXP ptr)
 {
     if (TYPEOF(ptr) != EXTPTRSXP || R_ExternalPtrAddr(ptr) == NULL)
-        Rf_error("not a fitted trigspline (or one restored from a saved session)");
+        Rf_error("not a fitted trigspline (or one restored by readRDS or load)");
     return (const ts_spline *)R_ExternalPtrAddr(ptr);
 }
 
@@ -338,7 +338,7 @@ static void surface_finalize(SEXP ptr)
 static const ts_surface *surface_of(SEXP ptr)
 {
     if (TYPEOF(ptr) != EXTPTRSXP || R_ExternalPtrAddr(ptr) == NULL)
-        Rf_error("not a fitted trigspline surface (or one restored from a saved session)");
+        Rf_error("not a fitted trigspline surface (or one restored by readRDS or load)");
     return (const ts_surface *)R_ExternalPtrAddr(ptr);
 }
 

@@ -143,7 +143,7 @@ test_that("per-interval parameters, user slopes, names", {
     expect_output(print(f), "4 points, paper form, shape none")
 })
 
-test_that("a function restored from a saved session refits its data", {
+test_that("a function restored by unserialize() refits its data", {
     f <- trigsplinefun(table1$x, table1$f, shape = "positive", alpha = 0.15)
     g <- unserialize(serialize(f, NULL))
     expect_identical(g(c(4.2, 17)), f(c(4.2, 17)))

@@ -42,7 +42,7 @@ test_that("bounds, the patch certificate and errors", {
     expect_identical(s(NA, 1), NA_real_)
 })
 
-test_that("a surface restored from a saved session refits its data", {
+test_that("a surface restored by unserialize() refits its data", {
     s <- trigsurfacefun(z = volcano[1:5, 1:4], shape = "range")
     t2 <- unserialize(serialize(s, NULL))
     expect_identical(t2(2.5, 3.5), s(2.5, 3.5))
