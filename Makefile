@@ -14,12 +14,14 @@
 #   make valgrind   memcheck of the test programs
 #   make tsan       ThreadSanitizer build of the threads and core tests
 #   make coverage   line and branch coverage of the library (gcovr)
+#   make test-r     the R package (bindings/r): R CMD build, install, smoke test and
+#                   R CMD check --as-cran (tests included)
 #   make fuzz       the libFuzzer harnesses, FUZZ_SECONDS each (corpus replay is in make test)
 # Each target installs the Debian packages it needs (apt-get) when missing.
 # The compiler of a build directory is fixed when it is first configured
 # (CC=gcc or CC=clang below); `make clean` starts over.
 .PHONY: all build configure-build demo-tools build-asan build-clang test demo bench accuracy valgrind clean \
-  python-deps bench-python
+  python-deps bench-python r-deps test-r
 
 JOBS ?= 2
 CMAKE ?= cmake
@@ -72,7 +74,7 @@ build-asan:
 	  -DTS_SANITIZE=ON >/dev/null
 	$(CMAKE) --build build-asan -j $(JOBS)
 
-test: why-deps python-deps build build-asan build-clang
+test: why-deps python-deps r-deps build build-asan build-clang
 	$(call need,$(TEST_TOOLS))
 	$(call need,$(PLOT_TEST_TOOLS))
 	$(call need_file,$(STATIC_LIBC),libc6-dev)
@@ -123,7 +125,7 @@ demo: demo-tools
 
 clean:
 	rm -rf build build-asan build-clang build-bench build-web build-coverage build-fuzz build-tsan \
-	  bindings/python/build out
+	  bindings/python/build out build-r
 
 # ---- Python package (bindings/python) --------------------------------------
 # Debian's own interpreter (/usr/bin/python3, not another python3 on PATH)
@@ -137,6 +139,21 @@ python-deps:
 	  sys.exit(not os.path.exists(os.path.join(sysconfig.get_paths()["include"], "Python.h")))' \
 	  2>/dev/null || { apt-get update && \
 	  DEBIAN_FRONTEND=noninteractive apt-get install -y $(PYTHON_PACKAGES); }
+
+# ---- R package (bindings/r) -------------------------------------------------
+# R with its headers and testthat (Debian); the R package's tests run in
+# `make test` (bindings/r/tests/run.sh), the whole R CMD check here.
+r-deps:
+	$(call need_file,/usr/share/doc/r-base-dev,r-base-dev)
+	$(call need_file,/usr/lib/R/site-library/testthat/DESCRIPTION,r-cran-testthat)
+
+# tools/dist/r.sh: the source tarball into build-r/, installed into a temporary
+# library and smoke-tested, then R CMD check --as-cran on it (the PDF manual
+# only where pdflatex is installed: --no-manual otherwise).
+test-r: r-deps
+	rm -rf build-r
+	tools/dist/r.sh build build-r
+	R_CHECK=1 tools/dist/r.sh test build-r
 
 # Python rows of the benchmark (bench/bench_python.py): the package installed
 # into a fresh venv, against SciPy's PchipInterpolator in the same run.
