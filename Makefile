@@ -42,7 +42,7 @@ endef
 BUILD_TOOLS := cmake:cmake gcc:gcc cc:gcc python3:python3
 # PNG/PDF plots of the command (rsvg-convert) and their checks in tests/tools/test_realworld.py
 PLOT_TEST_TOOLS := rsvg-convert:librsvg2-bin pdfinfo:poppler-utils pdftoppm:poppler-utils
-TEST_TOOLS := valgrind:valgrind pkg-config:pkg-config readelf:binutils
+TEST_TOOLS := valgrind:valgrind pkg-config:pkg-config readelf:binutils musl-gcc:musl-tools
 # libc.a: the package test links a -static program
 STATIC_LIBC := /usr/lib/$(shell gcc -print-multiarch 2>/dev/null || echo x86_64-linux-gnu)/libc.a
 
