@@ -15,6 +15,11 @@
 #   make tsan       ThreadSanitizer build of the threads and core tests
 #   make coverage   line and branch coverage of the library (gcovr)
 #   make fuzz       the libFuzzer harnesses, FUZZ_SECONDS each (corpus replay is in make test)
+#   make dist       every package into dist/ (tools/dist/CHANNEL.sh build): Python wheel and
+#                   sdist, musl tarball, Debian packages, the conda recipe checked, ...
+#   make test-dist  each package installed in a clean place and smoke-tested
+#                   (tools/dist/CHANNEL.sh test); a summary table: channel, artifact, size, result
+#   make test-musl  every C test program built with musl-gcc and run
 # Each target installs the Debian packages it needs (apt-get) when missing.
 # The compiler of a build directory is fixed when it is first configured
 # (CC=gcc or CC=clang below); `make clean` starts over.
@@ -122,7 +127,7 @@ demo: demo-tools
 
 clean:
 	rm -rf build build-asan build-clang build-bench build-web build-coverage build-fuzz build-tsan \
-	  bindings/python/build out
+	  build-musl bindings/python/build out dist
 
 # ---- Python package (bindings/python) --------------------------------------
 # Debian's own interpreter (/usr/bin/python3, not another python3 on PATH)
@@ -345,3 +350,28 @@ fuzz:
 	  echo "fuzz $$n: $$st, $${runs:-?} runs in $(FUZZ_SECONDS) s, corpus $$(ls $$b/corpus/$$n | wc -l) new + $$(ls tests/fuzz/corpus/$$n | wc -l) checked in (log $$b/fuzz_$$n.log)"; \
 	done; \
 	if [ -n "$$failed" ]; then echo "fuzz: FAILED:$$failed (inputs in $(FUZZ_BUILD)/artifacts/)"; exit 1; fi
+# ---- distribution: packages for each channel (tools/dist/) ----
+# One script per channel, tools/dist/CHANNEL.sh, with `build DISTDIR` and
+# `test DISTDIR` (interface: tools/dist/lib/common.sh); tools/dist/run.py runs
+# them in turn and prints the summary.  DIST_CHANNELS="python musl" for some.
+.PHONY: dist test-dist test-musl
+DIST ?= dist
+DIST_CHANNELS ?=
+dist:
+	$(call need,$(BUILD_TOOLS))
+	$(PYTHON) tools/dist/run.py build $(DIST) $(DIST_CHANNELS)
+
+test-dist: dist
+	$(PYTHON) tools/dist/run.py test $(DIST) $(DIST_CHANNELS)
+
+# All C test programs on musl (make test runs three of them: tests/test_musl.py).
+MUSL_BUILD := build-musl
+test-musl:
+	$(call need,$(BUILD_TOOLS) musl-gcc:musl-tools)
+	CC=musl-gcc $(CMAKE) -S . -B $(MUSL_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTS_WERROR=ON \
+	  -DTS_BUILD_EXAMPLES=OFF >/dev/null
+	$(CMAKE) --build $(MUSL_BUILD) -j $(JOBS)
+	@failed=""; n=0; for t in $(MUSL_BUILD)/tests/test_*; do [ -x $$t ] || continue; n=$$((n+1)); \
+	  if $$t >$$t.log 2>&1; then echo "musl $$(basename $$t): $$(tail -n 1 $$t.log)"; \
+	  else echo "musl $$(basename $$t): FAILED (log $$t.log)"; tail -n 20 $$t.log; failed="$$failed $$t"; fi; \
+	done; if [ -n "$$failed" ]; then echo "test-musl: FAILED:$$failed"; exit 1; fi; echo "test-musl: $$n programs passed"
