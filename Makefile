@@ -364,14 +364,18 @@ dist:
 test-dist: dist
 	$(PYTHON) tools/dist/run.py test $(DIST) $(DIST_CHANNELS)
 
-# All C test programs on musl (make test runs three of them: tests/test_musl.py).
+# All C test programs on musl (make test runs three of them: tests/test_musl.py),
+# except test_package: it checks an installation with the host's glibc tools
+# (ldd cannot resolve a musl program; musl's crti adds _init/_fini to the
+# exported symbols it compares with trigspline.h).
 MUSL_BUILD := build-musl
 test-musl:
 	$(call need,$(BUILD_TOOLS) musl-gcc:musl-tools)
 	CC=musl-gcc $(CMAKE) -S . -B $(MUSL_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTS_WERROR=ON \
 	  -DTS_BUILD_EXAMPLES=OFF >/dev/null
 	$(CMAKE) --build $(MUSL_BUILD) -j $(JOBS)
-	@failed=""; n=0; for t in $(MUSL_BUILD)/tests/test_*; do [ -x $$t ] || continue; n=$$((n+1)); \
+	@failed=""; n=0; for t in $(MUSL_BUILD)/tests/test_*; do [ -x $$t ] || continue; \
+	  case $$t in *test_package) continue;; esac; n=$$((n+1)); \
 	  if $$t >$$t.log 2>&1; then echo "musl $$(basename $$t): $$(tail -n 1 $$t.log)"; \
 	  else echo "musl $$(basename $$t): FAILED (log $$t.log)"; tail -n 20 $$t.log; failed="$$failed $$t"; fi; \
 	done; if [ -n "$$failed" ]; then echo "test-musl: FAILED:$$failed"; exit 1; fi; echo "test-musl: $$n programs passed"
