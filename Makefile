@@ -17,7 +17,7 @@
 #   make fuzz       the libFuzzer harnesses, FUZZ_SECONDS each (corpus replay is in make test)
 #   make dist       every package into dist/ (tools/dist/CHANNEL.sh build): Python wheel and
 #                   sdist, musl tarball, Debian packages, the conda recipe checked, ...
-#   make test-dist  each package installed in a clean place and smoke-tested
+#   make test-dist  make dist, then each package installed in a clean place and smoke-tested
 #                   (tools/dist/CHANNEL.sh test); a summary table: channel, artifact, size, result
 #   make test-musl  every C test program built with musl-gcc and run
 # Each target installs the Debian packages it needs (apt-get) when missing.
@@ -361,8 +361,10 @@ dist:
 	$(call need,$(BUILD_TOOLS))
 	$(PYTHON) tools/dist/run.py build $(DIST) $(DIST_CHANNELS)
 
-test-dist: dist
-	$(PYTHON) tools/dist/run.py test $(DIST) $(DIST_CHANNELS)
+# builds too (the packages of the tree as it is), then installs and tests each
+test-dist:
+	$(call need,$(BUILD_TOOLS))
+	$(PYTHON) tools/dist/run.py all $(DIST) $(DIST_CHANNELS)
 
 # All C test programs on musl (make test runs three of them: tests/test_musl.py),
 # except test_package: it checks an installation with the host's glibc tools

@@ -6,7 +6,9 @@ DISTDIR/logs/CHANNEL-STEP.log and prints a summary table: channel, artifact,
 size, result.  After `test`, the smoke test's value y(4.2) (the "smoke:"
 lines) must be the same double on every channel that prints one.
 
-    tools/dist/run.py build|test DISTDIR [CHANNEL ...]   (default: every channel)
+    tools/dist/run.py build|test|all DISTDIR [CHANNEL ...]   (default: every channel)
+
+`all` (make test-dist) builds each channel, then tests the ones that built.
 
 Exit status 0 when no channel failed (77, "cannot run here", is not a failure
 but is shown as "skipped").
@@ -49,7 +51,7 @@ def run_channel(step, dist, name):
 
 
 def main():
-    if len(sys.argv) < 3 or sys.argv[1] not in ("build", "test"):
+    if len(sys.argv) < 3 or sys.argv[1] not in ("build", "test", "all"):
         sys.exit(__doc__)
     step, dist = sys.argv[1], os.path.abspath(sys.argv[2])
     names = sys.argv[3:] or channels()
@@ -57,6 +59,19 @@ def main():
     if unknown:
         sys.exit("no channel script tools/dist/%s.sh" % ", ".join(unknown))
     os.makedirs(os.path.join(dist, "logs"), exist_ok=True)
+    t0 = time.time()
+    if step == "all":
+        build_failed = steps("build", dist, names)
+        test_failed = steps("test", dist, [n for n in names if n not in build_failed])
+        ok = not build_failed and not test_failed
+    else:
+        ok = not steps(step, dist, names)
+    print("%s: %.0f s" % (step, time.time() - t0))
+    sys.exit(0 if ok else 1)
+
+
+def steps(step, dist, names):
+    """Runs STEP of each channel; prints the summary; returns the failed channels."""
     rows, failed, values, all_notes = [], [], {}, []
     for name in names:
         print("== %s %s" % (step, name), flush=True)
@@ -107,7 +122,7 @@ def main():
         print("note: " + note)
     if failed:
         print("FAILED: %s" % ", ".join(failed))
-        sys.exit(1)
+    return failed
 
 
 if __name__ == "__main__":
