@@ -40,7 +40,10 @@ def run_channel(step, dist, name):
     log = os.path.join(dist, "logs", "%s-%s.log" % (name, step))
     t0 = time.time()
     try:
-        r = subprocess.run(["sh", os.path.join(HERE, name + ".sh"), step, dist],
+        script = os.path.join(HERE, name + ".sh")
+        # by its own #! line when executable (a bash script), else sh
+        cmd = [script] if os.access(script, os.X_OK) else ["sh", script]
+        r = subprocess.run(cmd + [step, dist],
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, timeout=TIMEOUT)
         out, rc = r.stdout.decode("utf-8", "replace"), r.returncode
     except subprocess.TimeoutExpired as e:
