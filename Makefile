@@ -17,6 +17,11 @@
 #   make test-r     the R package (bindings/r): R CMD build, install, smoke test and
 #                   R CMD check --as-cran (tests included)
 #   make fuzz       the libFuzzer harnesses, FUZZ_SECONDS each (corpus replay is in make test)
+#   make dist       every package into dist/ (tools/dist/CHANNEL.sh build): Python wheel and
+#                   sdist, musl tarball, Debian packages, the conda recipe checked, ...
+#   make test-dist  make dist, then each package installed in a clean place and smoke-tested
+#                   (tools/dist/CHANNEL.sh test); a summary table: channel, artifact, size, result
+#   make test-musl  every C test program built with musl-gcc and run
 # Each target installs the Debian packages it needs (apt-get) when missing.
 # The compiler of a build directory is fixed when it is first configured
 # (CC=gcc or CC=clang below); `make clean` starts over.
@@ -44,7 +49,7 @@ endef
 BUILD_TOOLS := cmake:cmake gcc:gcc cc:gcc python3:python3
 # PNG/PDF plots of the command (rsvg-convert) and their checks in tests/tools/test_realworld.py
 PLOT_TEST_TOOLS := rsvg-convert:librsvg2-bin pdfinfo:poppler-utils pdftoppm:poppler-utils
-TEST_TOOLS := valgrind:valgrind pkg-config:pkg-config readelf:binutils
+TEST_TOOLS := valgrind:valgrind pkg-config:pkg-config readelf:binutils musl-gcc:musl-tools
 # libc.a: the package test links a -static program
 STATIC_LIBC := /usr/lib/$(shell gcc -print-multiarch 2>/dev/null || echo x86_64-linux-gnu)/libc.a
 
@@ -125,7 +130,7 @@ demo: demo-tools
 
 clean:
 	rm -rf build build-asan build-clang build-bench build-web build-coverage build-fuzz build-tsan \
-	  bindings/python/build out build-r
+	  build-musl bindings/python/build out dist build-r
 
 # ---- Python package (bindings/python) --------------------------------------
 # Debian's own interpreter (/usr/bin/python3, not another python3 on PATH)
@@ -380,3 +385,34 @@ fuzz:
 	  echo "fuzz $$n: $$st, $${runs:-?} runs in $(FUZZ_SECONDS) s, corpus $$(ls $$b/corpus/$$n | wc -l) new + $$(ls tests/fuzz/corpus/$$n | wc -l) checked in (log $$b/fuzz_$$n.log)"; \
 	done; \
 	if [ -n "$$failed" ]; then echo "fuzz: FAILED:$$failed (inputs in $(FUZZ_BUILD)/artifacts/)"; exit 1; fi
+# ---- distribution: packages for each channel (tools/dist/) ----
+# One script per channel, tools/dist/CHANNEL.sh, with `build DISTDIR` and
+# `test DISTDIR` (interface: tools/dist/lib/common.sh); tools/dist/run.py runs
+# them in turn and prints the summary.  DIST_CHANNELS="python musl" for some.
+.PHONY: dist test-dist test-musl
+DIST ?= dist
+DIST_CHANNELS ?=
+dist:
+	$(call need,$(BUILD_TOOLS))
+	$(PYTHON) tools/dist/run.py build $(DIST) $(DIST_CHANNELS)
+
+# builds too (the packages of the tree as it is), then installs and tests each
+test-dist:
+	$(call need,$(BUILD_TOOLS))
+	$(PYTHON) tools/dist/run.py all $(DIST) $(DIST_CHANNELS)
+
+# All C test programs on musl (make test runs three of them: tests/test_musl.py),
+# except test_package: it checks an installation with the host's glibc tools
+# (ldd cannot resolve a musl program; musl's crti adds _init/_fini to the
+# exported symbols it compares with trigspline.h).
+MUSL_BUILD := build-musl
+test-musl:
+	$(call need,$(BUILD_TOOLS) musl-gcc:musl-tools)
+	CC=musl-gcc $(CMAKE) -S . -B $(MUSL_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTS_WERROR=ON \
+	  -DTS_BUILD_EXAMPLES=OFF >/dev/null
+	$(CMAKE) --build $(MUSL_BUILD) -j $(JOBS)
+	@failed=""; n=0; for t in $(MUSL_BUILD)/tests/test_*; do [ -x $$t ] || continue; \
+	  case $$t in *test_package) continue;; esac; n=$$((n+1)); \
+	  if $$t >$$t.log 2>&1; then echo "musl $$(basename $$t): $$(tail -n 1 $$t.log)"; \
+	  else echo "musl $$(basename $$t): FAILED (log $$t.log)"; tail -n 20 $$t.log; failed="$$failed $$t"; fi; \
+	done; if [ -n "$$failed" ]; then echo "test-musl: FAILED:$$failed"; exit 1; fi; echo "test-musl: $$n programs passed"
