@@ -135,12 +135,13 @@ export const chartjsTrigspline = {
 
 // ---- ECharts (v5) ----------------------------------------------------------
 
-const DRAWN = Symbol('trigspline');
+const DRAWN = Symbol('trigspline drawing'); // an element's dense points
+const PATCHED = Symbol('trigspline patched'); // on a prototype, on echarts
 // Draw an element's dense points instead of its own path (ECharts' line and
 // area elements, ECPolyline / ECPolygon: their buildPath smooths the points).
 function patchBuildPath(el) {
   const proto = Object.getPrototypeOf(el);
-  if (proto[DRAWN]) return;
+  if (proto[PATCHED]) return;
   const own = proto.buildPath;
   proto.buildPath = function buildPath(ctx, shape) {
     const d = this[DRAWN];
@@ -153,7 +154,7 @@ function patchBuildPath(el) {
     }
     return undefined;
   };
-  proto[DRAWN] = true;
+  proto[PATCHED] = true;
 }
 
 function markDrawn(el, d) {
@@ -168,8 +169,8 @@ function markDrawn(el, d) {
 // namespace; then `smooth: 'trigspline'` on a line series (on each series of
 // a stack, or on one of them: a stack is drawn by one rule) turns it on.
 export function installEChartsTrigspline(echarts, options = {}) {
-  if (echarts[DRAWN]) return;
-  echarts[DRAWN] = true;
+  if (echarts[PATCHED]) return;
+  echarts[PATCHED] = true;
   echarts.registerPostUpdate((ecModel, api) => {
     const ts = options.module ?? getDefaultModule();
     if (!ts) return;

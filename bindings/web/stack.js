@@ -38,7 +38,10 @@
 // guarantee does not depend on the certificate succeeding (layers.linear
 // counts them).  The form is 'c1' unless .options() says otherwise: C¹ in x,
 // and evaluated about 4 times faster than the geometric form (no inversion
-// of x(θ)), which matters when every frame is re-fitted.
+// of x(θ)), which matters when every frame is re-fitted; certify is off
+// (docs/options.md): the positive scheme's control values are a proof by
+// themselves, the exact minimum is computed only where they are not, and
+// layers.certified still says whether every layer is certified.
 
 import { getDefaultModule } from './trigspline.js';
 
@@ -96,7 +99,7 @@ export function fitThicknesses(ts, x, thick, xs, options = {}) {
     } else {
       let s = null;
       try {
-        s = ts.spline(x, t, { form: 'c1', ...options, shape: 'positive' });
+        s = ts.spline(x, t, { form: 'c1', certify: false, ...options, shape: 'positive' });
         certified &&= s.certified;
         s.evalBatch(xs, 0, S);
         for (let k = 0; k < m; k++) if (!(S[k] >= 0)) { S[k] = 0; clamped++; }
@@ -242,16 +245,27 @@ export function areaTrig() {
     });
     return parts.join('');
   };
+  // the layers of one stack share their abscissae: mapped once
+  let lastX = null, lastScale = null, lastPx = null;
+  const mapX = (x) => {
+    if (x !== lastX || cfg.x !== lastScale) {
+      lastPx = Float64Array.from(x, (v) => cfg.x(v));
+      lastX = x;
+      lastScale = cfg.x;
+    }
+    return lastPx;
+  };
   function area(layer) {
-    const { x, y0, y1 } = layer, m = x.length;
+    const { y0, y1 } = layer, px = mapX(layer.x), m = px.length;
     return emit((c) => {
-      for (let k = 0; k < m; k++) (k ? c.lineTo : c.moveTo).call(c, cfg.x(x[k]), cfg.y(y1[k]));
-      for (let k = m - 1; k >= 0; k--) c.lineTo(cfg.x(x[k]), cfg.y(y0[k]));
+      for (let k = 0; k < m; k++) (k ? c.lineTo : c.moveTo).call(c, px[k], cfg.y(y1[k]));
+      for (let k = m - 1; k >= 0; k--) c.lineTo(px[k], cfg.y(y0[k]));
       c.closePath();
     });
   }
   area.line = (layer) => emit((c) => {
-    for (let k = 0; k < layer.x.length; k++) (k ? c.lineTo : c.moveTo).call(c, cfg.x(layer.x[k]), cfg.y(layer.y1[k]));
+    const px = mapX(layer.x);
+    for (let k = 0; k < px.length; k++) (k ? c.lineTo : c.moveTo).call(c, px[k], cfg.y(layer.y1[k]));
   });
   area.x = (s) => { cfg.x = s; return area; };
   area.y = (s) => { cfg.y = s; return area; };
