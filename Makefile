@@ -240,7 +240,7 @@ $(WEB_BUILD)/trigspline-cli.js: $(WEB_LIB_SRC) $(WEB_CLI_SRC) tools/cli/cli.h to
 	  -sEXPORTED_RUNTIME_METHODS='["FS","callMain"]' -o $@
 
 $(WEB_OUT)/index.html: $(WEB_BUILD)/trigspline.wasm $(WEB_BUILD)/trigspline-cli.js \
-  $(wildcard bindings/web/*.js bindings/web/*.mjs bindings/web/explorer/*)
+  $(wildcard bindings/web/*.js bindings/web/*.mjs bindings/web/*.mts bindings/web/explorer/*)
 	node bindings/web/build.mjs $(WEB_BUILD) $(WEB_OUT)
 
 # Native references for the Node test: the same sources with musl's libm (the

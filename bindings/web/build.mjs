@@ -6,6 +6,7 @@
 //                       factories (curve.js), stacked areas (stack.js), the
 //                       chart plugins (charts.js), the exports (export.js); loads
 //   trigspline.wasm     from next to itself (fetch, or the file in Node)
+//   trigspline.d.mts    its types (kept by hand beside the sources)
 //   trigspline-cli.mjs  the CLI as an ES module (default export: the factory)
 //   index.html          the explorer: one page, everything inlined
 //   example.html        the curve factory on a canvas
@@ -34,6 +35,7 @@ const lib = body('trigspline.js') + body('curve.js') + body('stack.js') + body('
 const embedded = `const WASM_BASE64 = ${JSON.stringify(wasm.toString('base64'))};\n${lib}`;
 writeFileSync(join(outDir, 'trigspline.mjs'), lib);
 writeFileSync(join(outDir, 'trigspline.wasm'), wasm);
+writeFileSync(join(outDir, 'trigspline.d.mts'), src('trigspline.d.mts'));
 writeFileSync(join(outDir, 'trigspline-cli.mjs'), `${cliJs}\nexport default createTrigsplineCli;\n`);
 
 // Pages: <!--SCRIPT--> in the template becomes one inline module script, the
