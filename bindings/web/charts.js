@@ -159,7 +159,7 @@ function patchBuildPath(el) {
 
 function markDrawn(el, d) {
   if (!el) return;
-  patchBuildPath(el);
+  if (d) patchBuildPath(el);
   el[DRAWN] = d;
   if (el.dirtyShape) el.dirtyShape();
   else if (el.dirty) el.dirty();
@@ -185,8 +185,14 @@ export function installEChartsTrigspline(echarts, options = {}) {
     for (const root of line.filter((sm) => !below.has(sm))) {
       const chain = [root];
       while (above.has(chain[chain.length - 1])) chain.push(above.get(chain[chain.length - 1]));
-      if (!chain.some((sm) => sm.get('smooth') === 'trigspline')) continue;
-      drawChain(ts, chain, api, options.samples ?? 0);
+      const on = chain.some((sm) => sm.get('smooth') === 'trigspline');
+      if (!on || !drawChain(ts, chain, api, options.samples ?? 0)) {
+        // ECharts' own drawing (again, when the option was turned off)
+        for (const sm of chain) {
+          const v = api.getViewOfSeriesModel(sm);
+          for (const el of [v && v._polyline, v && v._polygon]) if (el && el[DRAWN]) markDrawn(el, null);
+        }
+      }
     }
   });
 }
@@ -194,14 +200,14 @@ export function installEChartsTrigspline(echarts, options = {}) {
 function drawChain(ts, chain, api, samples) {
   const views = chain.map((sm) => api.getViewOfSeriesModel(sm));
   const pts = chain.map((sm) => sm.getData().getLayout('points'));
-  if (views.some((v) => !v) || pts.some((p) => !p || p.length < 4)) return;
+  if (views.some((v) => !v) || pts.some((p) => !p || p.length < 4)) return false;
   const coordSys = chain[0].coordinateSystem;
-  if (!coordSys || coordSys.type !== 'cartesian2d' || coordSys.getBaseAxis().dim !== 'x') return;
+  if (!coordSys || coordSys.type !== 'cartesian2d' || coordSys.getBaseAxis().dim !== 'x') return false;
   const n = pts[0].length / 2;
   const px = Array.from({ length: n }, (_, i) => pts[0][2 * i]);
-  if (!increasing(px) || pts.some((p) => p.length !== 2 * n || px.some((x, i) => p[2 * i] !== x))) return;
+  if (!increasing(px) || pts.some((p) => p.length !== 2 * n || px.some((x, i) => p[2 * i] !== x))) return false;
   const layers = pts.map((p) => Array.from({ length: n }, (_, i) => p[2 * i + 1]));
-  if (layers.some((l) => l.some((v) => !Number.isFinite(v)))) return;
+  if (layers.some((l) => l.some((v) => !Number.isFinite(v)))) return false;
   // the base of the bottom layer: what ECharts fills down to, else value 0
   const valueAxis = coordSys.getOtherAxis(coordSys.getBaseAxis());
   const poly0 = views[0]._polygon;
@@ -210,9 +216,10 @@ function drawChain(ts, chain, api, samples) {
     : valueAxis.toGlobalCoord(valueAxis.dataToCoord(0));
   const dir = valueAxis.inverse ? 1 : -1;
   const r = stackPixels(ts, px, layers, base, dir, samples);
-  if (!r) return;
+  if (!r) return false;
   views.forEach((v, k) => {
     markDrawn(v._polyline, { xs: r.xs, top: r.ys[k] });
     markDrawn(v._polygon, { xs: r.xs, top: r.ys[k], bottom: k ? r.ys[k - 1] : r.base });
   });
+  return true;
 }

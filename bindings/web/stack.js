@@ -156,14 +156,14 @@ export function stackTrig() {
     order.forEach((k, pos) => {
       const s = series[k];
       if (s.length !== n) throw new TypeError(`stackTrig: series ${k} has ${s.length} points, not ${n}`);
-      const t = new Float64Array(n);
+      const t = new Float64Array(n), under = pos ? series[order[pos - 1]] : null;
       for (let i = 0; i < n; i++) {
-        const lo = +s[i][0], hi = +s[i][1];
+        const d = s[i], lo = +d[0], hi = +d[1];
         if (!Number.isFinite(lo) || !Number.isFinite(hi)) {
           throw new TypeError(`stackTrig: series ${k} point ${i} is not a finite number`);
         }
         if (pos === 0) base[i] = lo;
-        else if (lo !== +series[order[pos - 1]][i][1]) {
+        else if (lo !== +under[i][1]) {
           throw new TypeError(`stackTrig: layers not contiguous at point ${i} (series ${k}): `
             + 'stackOffsetDiverging or negative values; stack non-negative data with stackOffsetNone');
         }

@@ -72,8 +72,10 @@ const page = readFileSync(join(here, 'index.html'), 'utf8')
     + `${inline(readFileSync(join(here, 'gallery.js'), 'utf8'))}\n</script>`);
 mkdirSync(outDir, { recursive: true });
 writeFileSync(join(outDir, 'index.html'), page);
-const fmt = (c) => `${c.cross.toFixed(1)} deep over ${(100 * c.fraction).toFixed(0)} %, dip ${c.below.toFixed(2)}`;
+// the methods that cross or dip, per data set
+const fmt = (c) => `${c.cross.toPrecision(3)} deep over ${(100 * c.fraction).toFixed(0)} %, dip ${c.below.toPrecision(3)}`;
 for (const [name, byMethod] of Object.entries(costs)) {
-  console.log(`${name}: ${Object.entries(byMethod).map(([k, c]) => `${k}: ${fmt(c)}`).join('; ')}`);
+  const bad = Object.entries(byMethod).filter(([, c]) => c.cross > 1e-9 || c.below > 1e-9);
+  console.log(`${name}: ${bad.length ? bad.map(([k, c]) => `${k}: ${fmt(c)}`).join('; ') : 'no crossing'}`);
 }
 console.log(`wrote ${join(outDir, 'index.html')} (${(page.length / 1024).toFixed(0)} KB)`);

@@ -127,6 +127,26 @@ test('ECharts plugin: smooth: \'trigspline\' draws straight pieces through dense
   }
 });
 
+test('ECharts plugin: turning smooth: \'trigspline\' off gives ECharts\' own drawing back, and on again ours', async () => {
+  const r = await page.evaluate(() => {
+    const i = window.gallery.drawn.findIndex((d) => d.id === 'echarts-uk' && d.side === 'after');
+    const chart = window.gallery.charts[i];
+    const beziers = () => chart.getZr().storage.getDisplayList(true).filter((e) => e.type === 'ec-polyline')
+      .map((el) => {
+        let c = 0;
+        el.buildPath({ moveTo() {}, lineTo() {}, bezierCurveTo() { c++; }, closePath() {} }, el.shape);
+        return c;
+      });
+    const n = chart.getOption().series.length;
+    chart.setOption({ series: Array.from({ length: n }, () => ({ smooth: true })) });
+    const off = beziers();
+    chart.setOption({ series: Array.from({ length: n }, () => ({ smooth: 'trigspline' })) });
+    return { off, on: beziers() };
+  });
+  assert.ok(r.off.every((c) => c > 0), `off: ${r.off}`);
+  assert.ok(r.on.every((c) => c === 0), `on: ${r.on}`);
+});
+
 test('frame time: 20 layers x 1000 points re-fitted and drawn (reported)', async () => {
   const t = await page.evaluate(async () => {
     const { stackTrig, areaTrig, stackPixels, ts } = window.gallery;
