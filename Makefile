@@ -5,9 +5,11 @@
 #   make test       all three builds, then tests/run_all.sh (package test and the
 #                   Python package's pytest included)
 #   make demo       the paper's numerical section (out/paper), the
-#                   "why trigspline" page (out/why) and the Python gallery (out/gallery)
+#                   "why trigspline" page (out/why), the Python gallery (out/gallery)
+#                   and the charts gallery (out/charts)
 #   make web        the WebAssembly module and the explorer page (out/web)
-#   make test-web   Node and headless-Chromium tests of out/web and out/why
+#   make test-web   Node and headless-Chromium tests of out/web, out/why and out/charts
+#   make test-web-stack-full  stacked-area crossings on 1e5 random data sets
 #   make bench      benchmark against GSL and the build decisions -> bench/RESULTS.md
 #   make bench-python  the Python package against SciPy (also run by make bench)
 #   make accuracy   convergence study -> docs/accuracy.md, docs/accuracy.svg
@@ -127,6 +129,7 @@ demo: demo-tools
 	python3 scripts/paper_demo.py build/trigspline data/paper out/paper
 	$(MAKE) --no-print-directory why-demo
 	$(MAKE) --no-print-directory gallery
+	$(MAKE) --no-print-directory charts-demo
 
 clean:
 	rm -rf build build-asan build-clang build-bench build-web build-coverage build-fuzz build-tsan \
@@ -278,7 +281,7 @@ $(WEB_BUILD)/trigspline-cli.js: $(WEB_LIB_SRC) $(WEB_CLI_SRC) tools/cli/cli.h to
 	  -sEXPORTED_RUNTIME_METHODS='["FS","callMain"]' -o $@
 
 $(WEB_OUT)/index.html: $(WEB_BUILD)/trigspline.wasm $(WEB_BUILD)/trigspline-cli.js \
-  $(wildcard bindings/web/*.js bindings/web/*.mjs bindings/web/explorer/*)
+  $(wildcard bindings/web/*.js bindings/web/*.mjs bindings/web/*.mts bindings/web/explorer/*)
 	node bindings/web/build.mjs $(WEB_BUILD) $(WEB_OUT)
 
 # Native references for the Node test: the same sources with musl's libm (the
@@ -296,12 +299,34 @@ $(WEB_BUILD)/trigspline-musl: $(WEB_LIB_SRC) $(WEB_CLI_SRC) include/trigspline.h
 	musl-gcc -std=c11 -O2 -DTS_FAST_PORTABLE $(WEB_WARN) -Iinclude -I$(WEB_BUILD)/include -Isrc -Itools/support \
 	  -Itools/cli $(WEB_LIB_SRC) $(WEB_CLI_SRC) -lm -o $@
 
-test-web: web build $(WEB_BUILD)/reference-musl $(WEB_BUILD)/trigspline-musl test-why-page
+test-web: web build $(WEB_BUILD)/reference-musl $(WEB_BUILD)/trigspline-musl test-why-page charts-demo
 	$(call need,node:nodejs npm:npm)
 	$(call need_file,/usr/bin/chromium,chromium)
-	test -e bindings/web/node_modules/playwright-core/package.json || \
-	  (cd bindings/web && npm ci --no-audit --no-fund)
-	bindings/web/test/run.sh $(WEB_OUT) $(WEB_BUILD) build out/web-test
+	$(WEB_NODE_MODULES)
+	bindings/web/test/run.sh $(WEB_OUT) $(WEB_BUILD) build out/web-test $(CHARTS_OUT)
+
+# bindings/web's npm packages (package-lock.json): playwright-core drives
+# Chromium; d3, chart.js and echarts are what the chart plugins are tested
+# against and what the gallery inlines; typescript checks trigspline.d.ts.
+WEB_NODE_MODULES = @for p in playwright-core d3 chart.js echarts typescript; do \
+	  test -e bindings/web/node_modules/$$p/package.json || { (cd bindings/web && npm ci --no-audit --no-fund) && break; }; done
+
+# The charts gallery (out/charts/index.html, one static page that works from
+# file://): d3, Chart.js and ECharts before and after on d3-shape#81's data and
+# on real series, with the cost of each crossing.  Part of `make demo`.
+.PHONY: charts-demo test-web-stack-full
+CHARTS_OUT := out/charts
+charts-demo: web
+	$(call need,node:nodejs npm:npm)
+	$(WEB_NODE_MODULES)
+	node bindings/web/gallery/build.mjs $(WEB_OUT) $(CHARTS_OUT)
+
+# The stacked-area crossing measurement on 1e5 random data sets (make test-web
+# runs 2000 of them): out/web-test/stack-crossings-full.md.
+test-web-stack-full: web
+	$(call need,node:nodejs npm:npm)
+	$(WEB_NODE_MODULES)
+	node bindings/web/test/stack_full.mjs $(WEB_OUT) out/web-test 100000
 # ---- trust at the edges: thread sanitizer, coverage, fuzzing ----
 .PHONY: tsan coverage fuzz
 
