@@ -199,7 +199,7 @@ static void kernel_copies(void)
         CHECK(ts_spline_eval_deriv(s, q[p], NULL, &y1[0], &y1[1], &y1[2]) == TS_OK);
         size_t i = q[p] < 0.0 ? 0 : (size_t)q[p] + 1; /* the interval [x[i], x[i+1]] */
         double h = x[i + 1] - x[i];
-        long double u = ((long double)q[p] - x[i]) / h;
+        long double u = ((long double)q[p] - (long double)x[i]) / (long double)h;
         double v[3]; /* the form table's evaluation (certificates, integrals) */
         ts__interval_eval(s, i, q[p], 2, v);
         for (int deriv = 0; deriv <= 2; deriv++)
