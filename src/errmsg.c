@@ -38,7 +38,7 @@ static void num(out *o, double v)
 
 static void xval(out *o, const ts_error_context *c, double v)
 {
-    if (c && c->format_x) {
+    if (c->format_x) { /* c: never NULL (ts_error_message's `none`) */
         char b[128];
         int w = c->format_x(v, b, sizeof b, c->format_x_user);
         if (w >= 0 && (size_t)w < sizeof b) {
@@ -366,7 +366,7 @@ static int spline_sentence(out *o, const data *d, const ts_error *e)
 static int query_sentence(out *o, const ts_error_context *c, const ts_error *e, size_t base)
 {
     size_t i = e->index;
-    if (e->status != TS_ERR_DOMAIN || !c || !c->queries || !(i < c->n_queries))
+    if (e->status != TS_ERR_DOMAIN || !c->queries || !(i < c->n_queries))
         return 0;
     double q = c->queries[i];
     put(o, "query %zu", base + i);

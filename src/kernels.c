@@ -36,7 +36,11 @@
 
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(TS_FAST_PORTABLE)
 #define TS_FAST_X86 1
+#if defined(TS_COVERAGE) /* one copy per object, as TS_INLINE (internal.h) */
+#define TS_ALWAYS_INLINE static inline
+#else
 #define TS_ALWAYS_INLINE static inline __attribute__((always_inline))
+#endif
 #if defined(__clang__)
 #define TS_TARGET_512 "avx512f,fma"
 #else /* GCC otherwise keeps 256-bit vectors */
