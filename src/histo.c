@@ -1,0 +1,588 @@
+/* docs/method.md §12: a rate from bin totals.  Two cubic trigonometric
+ * pieces per bin (knots at the edges and the midpoint), C¹ everywhere,
+ * each bin's integral its total, lo <= r <= hi proved by the control
+ * values (§12.3–§12.5). */
+#include "internal.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* §12.2: a piece's mean is W0 (B0 + B3) + W1 (B1 + B2) */
+#define HW1 0.33427249868113159128 /* 22/(3π) − 2 */
+#define HW0 0.16572750131886840872 /* 5/2 − 22/(3π) */
+/* §12.4: limits scaled by this keep every rounded control value inside */
+#define HSHRINK (1.0 - 8.0 * DBL_EPSILON)
+/* §12.6: the largest |mean − lo| accepted (control values stay below
+ * 6 times it, TS_VALUE_MAX) */
+#define HMEAN_MAX 0x1p1019
+
+struct ts_histo {
+    size_t n;
+    double lo, hi, H; /* H = hi − lo (+inf without an upper bound) */
+    double *e;        /* n + 1 edges */
+    double *B;        /* 8 per bin: the two pieces' control values minus lo */
+    double *tot;      /* n: ∫ r over the bin from the pieces (lo included) */
+};
+
+static void options_defaults(ts_histo_options *opt)
+{
+    memset(opt, 0, sizeof *opt);
+    opt->struct_size = sizeof *opt;
+    opt->alpha = TS_DEFAULT_ALPHA;
+    opt->lo = 0.0;
+    opt->hi = HUGE_VAL;
+}
+
+static void release(ts_histo *h);
+
+void ts_histo_options_init(ts_histo_options *opt)
+{
+    if (opt)
+        options_defaults(opt);
+}
+
+/* The bin's mean minus lo; within 4 ulps of a bound it is taken on it
+ * (totals formed as lo·w or hi·w, §12.6). */
+static double rho_of(const double *e, const double *T, size_t j, double lo, double hi)
+{
+    double m = T[j] / (e[j + 1] - e[j]), r = m - lo, H = hi - lo;
+    double tl = 4.0 * DBL_EPSILON * fmax(fabs(m), fabs(lo));
+    double th = 4.0 * DBL_EPSILON * fmax(fabs(m), fabs(hi));
+    r = (r < 0.0 && r >= -tl) ? 0.0 : r;
+    return (r > H && r <= H + th) ? H : r;
+}
+
+/* §12.4: the value at an inner edge between bins of means (minus lo) p, q,
+ * and whether the bounds leave it no room (*bad). */
+static double edge_value(double p, double q, double H, int *bad)
+{
+    double mn = p < q ? p : q, mx = p < q ? q : p;
+    double ub = 2.0 * mn, lb = 2.0 * mx - H;
+    ub = ub < H ? ub : H;
+    lb = lb > 0.0 ? lb : 0.0;
+    *bad = lb > ub;
+    double y = mn > 0.0 ? 2.0 * mn * (mx / (mn + mx)) : 0.0; /* harmonic mean */
+    y = y < lb ? lb : y;
+    return y > ub ? ub : y;
+}
+
+static void set_status(ts_status *st, size_t j, ts_status s)
+{
+    if (st && st[j] == TS_OK)
+        st[j] = s;
+}
+
+/* The checks of ts_histo_new in their order; st (may be NULL) per bin. */
+static ts_status analyse(const double *e, const double *T, size_t n, const ts_histo_options *o,
+                         ts_status *st, ts_error *err)
+{
+    ts_status first = TS_OK;
+    size_t fi = TS_NO_INDEX;
+    ts_where fw = TS_WHERE_NONE;
+#define HFAIL(S, I, W)                                                                   \
+    do {                                                                                 \
+        if (first == TS_OK) {                                                            \
+            first = (S);                                                                 \
+            fi = (I);                                                                    \
+            fw = (W);                                                                    \
+        }                                                                                \
+    } while (0)
+    if (st)
+        for (size_t j = 0; j < n; j++)
+            st[j] = TS_OK;
+    int edges_ok = 1;
+    for (size_t i = 0; i <= n; i++) {
+        ts_status s = TS_OK;
+        if (!isfinite(e[i]))
+            s = TS_ERR_NONFINITE;
+        else if (i > 0 && isfinite(e[i - 1])) {
+            double w = e[i] - e[i - 1];
+            if (!(e[i] > e[i - 1]))
+                s = TS_ERR_UNSORTED;
+            else if (!(DBL_MIN <= w && w <= DBL_MAX))
+                s = TS_ERR_WIDTH;
+        }
+        if (s != TS_OK) {
+            edges_ok = 0;
+            HFAIL(s, i, TS_WHERE_POINT);
+            if (i > 0)
+                set_status(st, i - 1, s);
+            if (i < n)
+                set_status(st, i, s);
+        }
+    }
+    int plain = o->lo == 0.0 && o->hi == HUGE_VAL;
+    double H = o->hi - o->lo;
+    for (size_t j = 0; j < n && edges_ok; j++) {
+        ts_status s = TS_OK;
+        double r = isfinite(T[j]) ? rho_of(e, T, j, o->lo, o->hi) : (double)NAN;
+        if (!isfinite(T[j]))
+            s = TS_ERR_NONFINITE;
+        else if (!(fabs(r) <= HMEAN_MAX))
+            s = TS_ERR_TOO_LARGE;
+        else if (!(0.0 <= r && r <= H))
+            s = plain ? TS_ERR_NEGATIVE : TS_ERR_INFEASIBLE;
+        if (s != TS_OK) {
+            HFAIL(s, j, TS_WHERE_INTERVAL);
+            set_status(st, j, s);
+        }
+    }
+    /* §12.4: neighbours the scheme cannot join (only with an upper bound) */
+    for (size_t j = 1; j < n && edges_ok && first == TS_OK && H < HUGE_VAL; j++) {
+        int bad;
+        (void)edge_value(rho_of(e, T, j - 1, o->lo, o->hi), rho_of(e, T, j, o->lo, o->hi), H, &bad);
+        if (bad) {
+            HFAIL(TS_ERR_INFEASIBLE, j - 1, TS_WHERE_INTERVAL);
+            set_status(st, j - 1, TS_ERR_INFEASIBLE);
+            set_status(st, j, TS_ERR_INFEASIBLE);
+        }
+    }
+    /* later bins' infeasible edges for the per-bin status as well */
+    for (size_t j = 1; j < n && edges_ok && st && first != TS_OK && H < HUGE_VAL; j++) {
+        double p = rho_of(e, T, j - 1, o->lo, o->hi), q = rho_of(e, T, j, o->lo, o->hi);
+        int bad;
+        if (!(0.0 <= p && p <= H && 0.0 <= q && q <= H))
+            continue;
+        (void)edge_value(p, q, H, &bad);
+        if (bad) {
+            set_status(st, j - 1, TS_ERR_INFEASIBLE);
+            set_status(st, j, TS_ERR_INFEASIBLE);
+        }
+    }
+#undef HFAIL
+    if (first != TS_OK)
+        return ts__fail(err, first, fi, fw);
+    return TS_OK;
+}
+
+/* Arguments and options, shared by ts_histo_new and ts_histo_check. */
+static ts_status check_args(const double *edges, const double *totals, size_t n_bins,
+                            const ts_histo_options *opt, ts_histo_options *o, ts_error *err)
+{
+    if (!edges || !totals)
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    if (opt && opt->struct_size != sizeof *opt)
+        return ts__fail(err, TS_ERR_VERSION, TS_NO_INDEX, TS_WHERE_NONE);
+    if (opt)
+        *o = *opt;
+    else
+        options_defaults(o);
+    if (n_bins == 0)
+        return ts__fail(err, TS_ERR_TOO_FEW, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!ts__alpha_ok(o->alpha))
+        return ts__fail(err, TS_ERR_ALPHA, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!(fabs(o->lo) <= HMEAN_MAX) || !(o->lo < o->hi) || !(o->hi - o->lo > 0.0))
+        return ts__fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
+    return TS_OK;
+}
+
+ts_status ts_histo_check(const double *edges, const double *totals, size_t n_bins,
+                         const ts_histo_options *opt, ts_status *status, ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    ts_histo_options o;
+    ts_status s = check_args(edges, totals, n_bins, opt, &o, err);
+    if (s != TS_OK)
+        return s;
+    return analyse(edges, totals, n_bins, &o, status, err);
+}
+
+/* §12.3: bin j's midpoint value v, its slope s and the control values
+ * from the edge values y and slopes sg; zs: the midpoint slope forced to 0. */
+static void build_bin(ts_histo *h, size_t j, double rho, const double *y, const double *sg,
+                      double alpha, int zs)
+{
+    double w = h->e[j + 1] - h->e[j], hh = 0.5 * w, K = w / (3.0 * TS_PI);
+    double yl = y[j], yr = y[j + 1], H = h->H;
+    double v = 2.0 * rho - 0.5 * (yl + yr) - HW1 * K * (sg[j] - sg[j + 1]);
+    v = v > 0.0 ? v : 0.0;
+    v = v < H ? v : H;
+    double a = (v - yl) / hh, b = (yr - v) / hh, s = 0.0;
+    if (a * b > 0.0)
+        s = 2.0 * a * (b / (a + b)) / alpha;
+    double room = v < H - v ? v : H - v;
+    double L = room / K * HSHRINK;
+    s = s < L ? s : L;
+    s = s > -L ? s : -L;
+    if (zs || !isfinite(s))
+        s = 0.0;
+    double *B = h->B + 8 * j;
+    B[0] = yl;
+    B[1] = yl + K * sg[j];
+    B[2] = v - K * s;
+    B[3] = v;
+    B[4] = v;
+    B[5] = v + K * s;
+    B[6] = yr - K * sg[j + 1];
+    B[7] = yr;
+}
+
+static int bin_inside(const ts_histo *h, size_t j)
+{
+    const double *B = h->B + 8 * j;
+    int ok = 1;
+    for (int l = 0; l < 8; l++)
+        ok &= (0.0 <= B[l]) & (B[l] <= h->H);
+    return ok;
+}
+
+/* §12.2: ∫ of a piece of width hh over its whole width */
+static double piece_total(const double *P, double hh)
+{
+    return hh * (HW0 * (P[0] + P[3]) + HW1 * (P[1] + P[2]));
+}
+
+ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
+                       const ts_histo_options *opt, ts_histo **out, ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (out)
+        *out = NULL;
+    if (!out)
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    ts_histo_options o;
+    ts_status st = check_args(edges, totals, n_bins, opt, &o, err);
+    if (st != TS_OK)
+        return st;
+    /* doubles: e (n+1), B (8n), tot (n), y (n+1), sg (n+1), rho (n); flags n */
+    if (n_bins > (SIZE_MAX / sizeof(double) - 3) / 12)
+        return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
+    st = analyse(edges, totals, n_bins, &o, NULL, err);
+    if (st != TS_OK)
+        return st;
+    size_t n = n_bins;
+    ts_histo *h = ts__calloc(1, sizeof *h);
+    double *work = ts__malloc((3 * n + 2) * sizeof(double));
+    unsigned char *zs = ts__calloc(n, 1);
+    if (h)
+        h->e = ts__malloc((10 * n + 1) * sizeof(double));
+    if (!h || !h->e || !work || !zs) {
+        free(work);
+        free(zs);
+        release(h);
+        return ts__fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
+    }
+    h->n = n;
+    h->lo = o.lo;
+    h->hi = o.hi;
+    h->H = o.hi - o.lo;
+    h->B = h->e + (n + 1);
+    h->tot = h->B + 8 * n;
+    memcpy(h->e, edges, (n + 1) * sizeof(double));
+    double *y = work, *sg = work + (n + 1), *rho = work + 2 * (n + 1);
+    for (size_t j = 0; j < n; j++)
+        rho[j] = rho_of(edges, totals, j, o.lo, o.hi);
+    /* §12.4: edge values, then the room each bin leaves for its edge slopes */
+    y[0] = rho[0];
+    y[n] = rho[n - 1];
+    for (size_t j = 1; j < n; j++) {
+        int bad;
+        y[j] = edge_value(rho[j - 1], rho[j], h->H, &bad);
+    }
+    /* slack of bin j: min(2ρ − (yl + yr)/2, H − 2ρ + (yl + yr)/2) >= 0 */
+    sg[0] = sg[n] = 0.0;
+    for (size_t j = 1; j < n; j++) {
+        double wl = edges[j] - edges[j - 1], wr = edges[j + 1] - edges[j];
+        double Kl = wl / (3.0 * TS_PI), Kr = wr / (3.0 * TS_PI);
+        double room = y[j] < h->H - y[j] ? y[j] : h->H - y[j];
+        double L = room / (Kl > Kr ? Kl : Kr);
+        for (int side = 0; side < 2; side++) {
+            size_t b = j - 1 + (size_t)side;
+            double m = 0.5 * (y[b] + y[b + 1]);
+            double sl = 2.0 * rho[b] - m, sh = h->H - 2.0 * rho[b] + m;
+            double slack = sl < sh ? sl : sh;
+            double Lb = slack / (4.0 * HW1 * (side ? Kr : Kl));
+            L = Lb < L ? Lb : L;
+        }
+        L *= HSHRINK;
+        double d = (rho[j] - rho[j - 1]) / (0.5 * (wl + wr)) / o.alpha;
+        d = d < L ? d : L;
+        d = d > -L ? d : -L;
+        sg[j] = isfinite(d) ? d : 0.0;
+    }
+    for (size_t j = 0; j < n; j++)
+        build_bin(h, j, rho[j], y, sg, o.alpha, 0);
+    /* rounding (subnormal widths) may leave a control value outside by an
+     * ulp: such a bin's slopes become 0, its neighbours rebuilt (§12.4) */
+    for (int changed = 1; changed;) {
+        changed = 0;
+        for (size_t j = 0; j < n; j++) {
+            if (bin_inside(h, j))
+                continue;
+            changed = !(sg[j] == 0.0 && sg[j + 1] == 0.0 && zs[j]);
+            sg[j] = sg[j + 1] = 0.0;
+            zs[j] = 1;
+            for (size_t k = j > 0 ? j - 1 : 0; k <= j + 1 && k < n; k++)
+                build_bin(h, k, rho[k], y, sg, o.alpha, zs[k]);
+            if (changed)
+                break;
+        }
+    }
+    free(work);
+    free(zs);
+    for (size_t j = 0; j < n; j++) {
+        double hh = 0.5 * (edges[j + 1] - edges[j]);
+        double t = piece_total(h->B + 8 * j, hh) + piece_total(h->B + 8 * j + 4, hh);
+        h->tot[j] = t + o.lo * (edges[j + 1] - edges[j]);
+        if (!isfinite(h->tot[j])) {
+            release(h);
+            return ts__fail(err, TS_ERR_TOO_LARGE, j, TS_WHERE_INTERVAL);
+        }
+    }
+    *out = h;
+    return TS_OK;
+}
+
+static void release(ts_histo *h)
+{
+    if (!h)
+        return;
+    free(h->e);
+    free(h);
+}
+
+void ts_histo_free(ts_histo *h)
+{
+    release(h);
+}
+
+size_t ts_histo_bins(const ts_histo *h)
+{
+    return h ? h->n : 0;
+}
+
+/* The bin holding x (x in [e_0, e_n]); the last bin holds e_n. */
+static size_t find_bin(const ts_histo *h, double x)
+{
+    return ts__search(h->e, h->n, x, NULL);
+}
+
+/* §12.5: r − lo and dr/dx at x in bin j. */
+static void eval_in(const ts_histo *h, size_t j, double x, double *r, double *dr)
+{
+    double e0 = h->e[j], e1 = h->e[j + 1], w = e1 - e0, hh = 0.5 * w;
+    double dl = x - e0, dre = e1 - x;
+    const double *P;
+    double dist;
+    int rev;
+    if (dl <= dre) { /* left piece */
+        P = h->B + 8 * j;
+        rev = dl > 0.5 * hh;
+        dist = rev ? hh - dl : dl;
+    } else {
+        P = h->B + 8 * j + 4;
+        rev = dre <= 0.5 * hh;
+        dist = rev ? dre : hh - dre;
+    }
+    dist = dist > 0.0 ? dist : 0.0;
+    double Q[4];
+    for (int l = 0; l < 4; l++)
+        Q[l] = rev ? P[3 - l] : P[l];
+    double u = TS_HALF_PI * (dist / hh), s, c, ms, mc;
+    ts__sincos_q(u, &s, &c, &ms, &mc);
+    /* every factor >= 0: the sum of non-negative terms is >= 0 exactly */
+    double A0 = ms * ms * ms, A1 = s * ms * (3.0 - s), A2 = c * mc * (3.0 - c), A3 = mc * mc * mc;
+    *r = A0 * Q[0] + A1 * Q[1] + A2 * Q[2] + A3 * Q[3];
+    if (dr) {
+        double d = 3.0 * ms * ms * c * (Q[1] - Q[0]) + 2.0 * s * c * (Q[2] - Q[1]) +
+                   3.0 * mc * mc * s * (Q[3] - Q[2]);
+        d *= TS_HALF_PI / hh;
+        *dr = rev ? -d : d;
+    }
+}
+
+static double clamp_rate(const ts_histo *h, double rr)
+{
+    double v = h->lo + rr;
+    return v < h->hi ? v : h->hi;
+}
+
+ts_status ts_histo_eval(const ts_histo *h, double x, double *r, double *dr)
+{
+    if (r)
+        *r = NAN;
+    if (dr)
+        *dr = NAN;
+    if (!h || !r)
+        return TS_ERR_NULL;
+    if (!(h->e[0] <= x && x <= h->e[h->n]))
+        return TS_ERR_DOMAIN;
+    double rr;
+    eval_in(h, find_bin(h, x), x, &rr, dr);
+    *r = clamp_rate(h, rr);
+    return TS_OK;
+}
+
+ts_status ts_histo_eval_batch(const ts_histo *h, const double *x, size_t m, double *r, double *dr,
+                              ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    for (size_t k = 0; r && k < m; k++) {
+        r[k] = NAN;
+        if (dr)
+            dr[k] = NAN;
+    }
+    if (!h || (m > 0 && (!x || !r)))
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    ts_cursor cur = {0};
+    for (size_t k = 0; k < m; k++) {
+        if (!(h->e[0] <= x[k] && x[k] <= h->e[h->n]))
+            return ts__fail(err, TS_ERR_DOMAIN, k, TS_WHERE_QUERY);
+        double rr;
+        eval_in(h, ts__search(h->e, h->n, x[k], &cur), x[k], &rr, dr ? dr + k : NULL);
+        r[k] = clamp_rate(h, rr);
+    }
+    return TS_OK;
+}
+
+/* §12.2: ∫ over [0, d] of the piece P of width hh, from the nearer end. */
+static double piece_partial(const double *P, double hh, double d)
+{
+    double th = TS_HALF_PI * (d / hh), I[4];
+    if (th <= 0.5 * TS_HALF_PI) {
+        ts__basis_int(th, sin(th), cos(th), I);
+        return (hh / TS_HALF_PI) * (I[0] * P[0] + I[1] * P[1] + I[2] * P[2] + I[3] * P[3]);
+    }
+    double tm = TS_HALF_PI - th;
+    tm = tm > 0.0 ? tm : 0.0;
+    ts__basis_int(tm, sin(tm), cos(tm), I);
+    return piece_total(P, hh) -
+           (hh / TS_HALF_PI) * (I[0] * P[3] + I[1] * P[2] + I[2] * P[1] + I[3] * P[0]);
+}
+
+/* ∫_{e_j}^x (r − lo) for x in bin j, from the nearer edge. */
+static double bin_partial(const ts_histo *h, size_t j, double x)
+{
+    double e0 = h->e[j], e1 = h->e[j + 1], hh = 0.5 * (e1 - e0);
+    double dl = x - e0, dre = e1 - x;
+    const double *L = h->B + 8 * j, *R = L + 4;
+    if (dl <= dre)
+        return dl <= hh ? piece_partial(L, hh, dl) : piece_total(L, hh) + piece_partial(R, hh, dl - hh);
+    double Rr[4] = {R[3], R[2], R[1], R[0]}, Lr[4] = {L[3], L[2], L[1], L[0]};
+    double back = dre <= hh ? piece_partial(Rr, hh, dre)
+                            : piece_total(R, hh) + piece_partial(Lr, hh, dre - hh);
+    double rtot = h->tot[j] - h->lo * (e1 - e0);
+    return rtot - back;
+}
+
+/* ∫_a^b r for e_0 <= a <= b <= e_n, bins ja, jb holding them. */
+static double integral_ab(const ts_histo *h, double a, size_t ja, double b, size_t jb)
+{
+    if (ja == jb)
+        return (bin_partial(h, ja, b) - bin_partial(h, ja, a)) + h->lo * (b - a);
+    double s = h->tot[ja] - (bin_partial(h, ja, a) + h->lo * (a - h->e[ja]));
+    for (size_t j = ja + 1; j < jb; j++)
+        s += h->tot[j];
+    return s + (bin_partial(h, jb, b) + h->lo * (b - h->e[jb]));
+}
+
+/* Within [lo, hi] times the width (rounding, §12.5). */
+static double clamp_total(const ts_histo *h, double v, double width)
+{
+    double lo = h->lo * width, hi = h->hi * width;
+    v = v > lo ? v : lo;
+    return v < hi ? v : hi;
+}
+
+ts_status ts_histo_integral(const ts_histo *h, double a, double b, double *out)
+{
+    if (out)
+        *out = NAN;
+    if (!h || !out)
+        return TS_ERR_NULL;
+    double e0 = h->e[0], en = h->e[h->n];
+    if (!(e0 <= a && a <= en && e0 <= b && b <= en))
+        return TS_ERR_DOMAIN;
+    int neg = b < a;
+    double p = neg ? b : a, q = neg ? a : b;
+    double v = clamp_total(h, integral_ab(h, p, find_bin(h, p), q, find_bin(h, q)), q - p);
+    *out = neg ? -v : v;
+    return TS_OK;
+}
+
+ts_status ts_histo_totals(const ts_histo *h, const double *grid, size_t m, double *out,
+                          ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    for (size_t k = 0; out && k + 1 < m; k++)
+        out[k] = NAN;
+    if (!h || (m >= 2 && (!grid || !out)))
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    if (m < 2)
+        return TS_OK;
+    double e0 = h->e[0], en = h->e[h->n];
+    for (size_t k = 0; k < m; k++) {
+        if (!(e0 <= grid[k] && grid[k] <= en))
+            return ts__fail(err, TS_ERR_DOMAIN, k, TS_WHERE_QUERY);
+        if (k > 0 && grid[k] < grid[k - 1])
+            return ts__fail(err, TS_ERR_UNSORTED, k, TS_WHERE_QUERY);
+    }
+    ts_cursor cur = {0};
+    size_t ja = ts__search(h->e, h->n, grid[0], &cur);
+    for (size_t k = 0; k + 1 < m; k++) {
+        size_t jb = ts__search(h->e, h->n, grid[k + 1], &cur);
+        out[k] = clamp_total(h, integral_ab(h, grid[k], ja, grid[k + 1], jb), grid[k + 1] - grid[k]);
+        ja = jb;
+    }
+    return TS_OK;
+}
+
+static void report_reset(ts_bin_report *rep)
+{
+    rep->struct_size = sizeof *rep;
+    rep->e0 = rep->e1 = rep->total = rep->mean = NAN;
+    rep->r_min = rep->at_min = rep->r_max = rep->at_max = rep->guard = NAN;
+    for (int l = 0; l < 8; l++)
+        rep->B[l] = NAN;
+    rep->certified = 0;
+}
+
+void ts_bin_report_init(ts_bin_report *rep)
+{
+    if (rep)
+        report_reset(rep);
+}
+
+ts_status ts_histo_report(const ts_histo *h, size_t bin, ts_bin_report *rep)
+{
+    if (!rep)
+        return TS_ERR_NULL;
+    if (rep->struct_size != sizeof *rep)
+        return TS_ERR_VERSION;
+    report_reset(rep);
+    if (!h)
+        return TS_ERR_NULL;
+    if (bin >= h->n)
+        return TS_ERR_INDEX;
+    double e0 = h->e[bin], e1 = h->e[bin + 1], hh = 0.5 * (e1 - e0);
+    rep->e0 = e0;
+    rep->e1 = e1;
+    rep->total = h->tot[bin];
+    rep->mean = h->tot[bin] / (e1 - e0);
+    memcpy(rep->B, h->B + 8 * bin, sizeof rep->B);
+    rep->certified = bin_inside(h, bin);
+    double mn = HUGE_VAL, mx = -HUGE_VAL, g = 0.0;
+    for (int p = 0; p < 2; p++) {
+        const double *P = h->B + 8 * bin + 4 * p;
+        double x0 = p ? e0 + hh : e0, th, tb, eb;
+        double v = ts__trig_min_core(P[0], P[1], P[2], P[3], 0.0, &th, &tb, &eb);
+        g = eb > g ? eb : g;
+        if (v < mn) {
+            mn = v;
+            rep->at_min = x0 + (hh / TS_HALF_PI) * th;
+        }
+        v = -ts__trig_min_core(-P[0], -P[1], -P[2], -P[3], 0.0, &th, &tb, &eb);
+        g = eb > g ? eb : g;
+        if (v > mx) {
+            mx = v;
+            rep->at_max = x0 + (hh / TS_HALF_PI) * th;
+        }
+    }
+    rep->r_min = h->lo + mn;
+    rep->r_max = h->lo + mx;
+    rep->guard = g;
+    return TS_OK;
+}
