@@ -1302,11 +1302,12 @@ TS_API size_t ts_error_message(const ts_error *err, const ts_error_context *ctx,
  *   - r continuous with a continuous derivative (C¹) across bin edges and
  *     inside the bins.  A bin with mean lo (a dry bin) forces r ≡ lo on it,
  *     hence r = lo, r' = 0 at its edges.
- * Each bin is two cubic trigonometric pieces (the basis of §2) split at its
- * midpoint: knots at the edges and midpoints, with values and slopes
- * chosen from the neighbouring bin means and the midpoint value solving
- * the bin's total exactly (the integral is linear in the Hermite data).
- * The tension alpha divides the slopes (larger: flatter rate), as in §3.
+ * Each bin is four cubic trigonometric pieces (the basis of §2; knots at
+ * the edges and quarter points): edge values and slopes from the
+ * neighbouring bin means, the inner knots from a linear system that meets
+ * the total exactly and makes r C² (r'' continuous, 0 at the edges),
+ * blended towards a flat solution only where that would leave [lo, hi].
+ * The tension alpha divides the edge slopes (larger: flatter), as in §3.
  *
  * Designed for 1-D bins; a rectilinear grid of cell averages (the 2-D
  * case) follows the same construction per axis (docs/method.md §12.7).
@@ -1394,7 +1395,7 @@ typedef struct ts_bin_report {
     double r_min, at_min;/* exact minimum of r over the bin and an x where it is attained */
     double r_max, at_max;/* exact maximum (the peak) and an x where it is attained */
     double guard;        /* the rounding bound of r_min and r_max (docs/method.md §5.6) */
-    double B[8];         /* control values of the two pieces, minus lo */
+    double B[16];        /* control values of the four pieces (4 each), minus lo */
     int certified;       /* every control value in [lo, hi]: lo <= r <= hi proved */
 } ts_bin_report;
 /* struct_size set, values NaN, certified 0; rep may be NULL. */

@@ -1,7 +1,7 @@
-/* docs/method.md §12: a rate from bin totals.  Two cubic trigonometric
- * pieces per bin (knots at the edges and the midpoint), C¹ everywhere,
- * each bin's integral its total, lo <= r <= hi proved by the control
- * values (§12.3–§12.5). */
+/* docs/method.md §12: a rate from bin totals.  Four cubic trigonometric
+ * pieces per bin (knots at the edges and the quarter points), C¹
+ * everywhere and C² where the bounds allow, each bin's integral its total,
+ * lo <= r <= hi proved by the control values (§12.3–§12.5). */
 #include "internal.h"
 
 #include <float.h>
@@ -18,12 +18,14 @@
 /* §12.6: the largest |mean − lo| accepted (control values stay below
  * 6 times it, TS_VALUE_MAX) */
 #define HMEAN_MAX 0x1p1019
+#define HP 4          /* pieces per bin */
+#define HB (4 * HP)   /* control values per bin */
 
 struct ts_histo {
     size_t n;
     double lo, hi, H; /* H = hi − lo (+inf without an upper bound) */
     double *e;        /* n + 1 edges */
-    double *B;        /* 8 per bin: the two pieces' control values minus lo */
+    double *B;        /* HB per bin: the HP pieces' control values minus lo */
     double *tot;      /* n: ∫ r over the bin from the pieces (lo included) */
 };
 
@@ -190,43 +192,87 @@ ts_status ts_histo_check(const double *edges, const double *totals, size_t n_bin
     return analyse(edges, totals, n_bins, &o, status, err);
 }
 
-/* §12.3: bin j's midpoint value v, its slope s and the control values
- * from the edge values y and slopes sg; zs: the midpoint slope forced to 0. */
-static void build_bin(ts_histo *h, size_t j, double rho, const double *y, const double *sg,
-                      double alpha, int zs)
+/* §12.3: the inverse of the matrix of (12.3) times 2400 (exact: its
+ * determinant is −2400); rows Y1, Y2, Y3, E1, E2, E3, columns the
+ * right-hand sides (integral, C² at the three inner knots, r'' at the
+ * left and right edges). */
+static const double HINV[6][6] = {
+    {240, 280, -40, 40, 1100, -140},  {1920, -240, 0, 240, -960, -960},
+    {240, -40, 40, -280, -140, 1100}, {240, 280, -40, 40, -100, -140},
+    {0, -80, 320, -80, -160, 160},    {-240, 40, -40, 280, 140, 100}};
+
+/* The control values of a bin from its knot values Y[0..4] and scaled
+ * slopes E = K_q·slope (§12.3). */
+static void controls(const double *Y, const double *E, double *B)
 {
-    double w = h->e[j + 1] - h->e[j], hh = 0.5 * w, K = w / (3.0 * TS_PI);
-    double yl = y[j], yr = y[j + 1], H = h->H;
-    double v = 2.0 * rho - 0.5 * (yl + yr) - HW1 * K * (sg[j] - sg[j + 1]);
-    v = v > 0.0 ? v : 0.0;
-    v = v < H ? v : H;
-    double a = (v - yl) / hh, b = (yr - v) / hh, s = 0.0;
-    if (a * b > 0.0)
-        s = 2.0 * a * (b / (a + b)) / alpha;
-    double room = v < H - v ? v : H - v;
-    double L = room / K * HSHRINK;
-    s = s < L ? s : L;
-    s = s > -L ? s : -L;
-    if (zs || !isfinite(s))
-        s = 0.0;
-    double *B = h->B + 8 * j;
-    B[0] = yl;
-    B[1] = yl + K * sg[j];
-    B[2] = v - K * s;
-    B[3] = v;
-    B[4] = v;
-    B[5] = v + K * s;
-    B[6] = yr - K * sg[j + 1];
-    B[7] = yr;
+    for (int k = 0; k < HP; k++) {
+        B[4 * k] = Y[k];
+        B[4 * k + 1] = Y[k] + E[k];
+        B[4 * k + 2] = Y[k + 1] - E[k + 1];
+        B[4 * k + 3] = Y[k + 1];
+    }
+}
+
+static int inside(const double *B, double H)
+{
+    int ok = 1;
+    for (int l = 0; l < HB; l++)
+        ok &= (0.0 <= B[l]) & (B[l] <= H);
+    return ok;
+}
+
+/* §12.3: bin j from its edge values y, edge slopes sg: the C² solution X
+ * of (12.3) blended with the flat solution Z by the largest λ in [0, 1]
+ * that keeps every control value in [0, H]; flat: λ = 0. */
+static void build_bin(ts_histo *h, size_t j, double rho, const double *y, const double *sg, int flat)
+{
+    double w = h->e[j + 1] - h->e[j], Kq = w / (6.0 * TS_PI), H = h->H;
+    double Y0 = y[j], Y4 = y[j + 1], E0 = Kq * sg[j], E4 = Kq * sg[j + 1];
+    /* (12.3) with r'' = 0 at the edges */
+    double b[6] = {4.0 * rho - 0.5 * (Y0 + Y4) - HW1 * (E0 - E4), -Y0 - E0, 0.0, Y4 - E4,
+                   2.0 * Y0 + 8.0 * E0, 2.0 * Y4 - 8.0 * E4};
+    double zv = b[0] / 3.0;
+    zv = zv > 0.0 ? zv : 0.0;
+    zv = zv < H ? zv : H;
+    double YZ[5] = {Y0, zv, zv, zv, Y4}, EZ[5] = {E0, 0.0, 0.0, 0.0, E4};
+    double YX[5] = {Y0, 0, 0, 0, Y4}, EX[5] = {E0, 0, 0, 0, E4};
+    for (int i = 0; i < 3; i++) {
+        double sy = 0.0, se = 0.0;
+        for (int k = 0; k < 6; k++) {
+            sy += HINV[i][k] * b[k];
+            se += HINV[i + 3][k] * b[k];
+        }
+        YX[i + 1] = sy / 2400.0;
+        EX[i + 1] = se / 2400.0;
+    }
+    double BZ[HB], BX[HB];
+    controls(YZ, EZ, BZ);
+    controls(YX, EX, BX);
+    double lam = flat ? 0.0 : 1.0;
+    for (int l = 0; l < HB; l++) {
+        double z = BZ[l], x = BX[l];
+        if (!isfinite(x))
+            lam = 0.0;
+        else if (x < 0.0)
+            lam = fmin(lam, z / (z - x));
+        else if (x > H)
+            lam = fmin(lam, (H - z) / (x - z));
+    }
+    lam = lam > 0.0 ? lam * HSHRINK : 0.0;
+    double Y[5], E[5];
+    for (int k = 0; k < 5; k++) {
+        Y[k] = (k == 0 || k == 4) ? YZ[k] : YZ[k] + lam * (YX[k] - YZ[k]);
+        E[k] = (k == 0 || k == 4) ? EZ[k] : EZ[k] + lam * (EX[k] - EZ[k]);
+    }
+    double *B = h->B + HB * j;
+    controls(Y, E, B);
+    if (!inside(B, H))
+        memcpy(B, BZ, sizeof BZ);
 }
 
 static int bin_inside(const ts_histo *h, size_t j)
 {
-    const double *B = h->B + 8 * j;
-    int ok = 1;
-    for (int l = 0; l < 8; l++)
-        ok &= (0.0 <= B[l]) & (B[l] <= h->H);
-    return ok;
+    return inside(h->B + HB * j, h->H);
 }
 
 /* §12.2: ∫ of a piece of width hh over its whole width */
@@ -247,8 +293,8 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
     ts_status st = check_args(edges, totals, n_bins, opt, &o, err);
     if (st != TS_OK)
         return st;
-    /* doubles: e (n+1), B (8n), tot (n), y (n+1), sg (n+1), rho (n); flags n */
-    if (n_bins > (SIZE_MAX / sizeof(double) - 3) / 12)
+    /* doubles: e (n+1), B (HB n), tot (n), y (n+1), sg (n+1), rho (n); flags n */
+    if (n_bins > (SIZE_MAX / sizeof(double) - 3) / (HB + 4))
         return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
     st = analyse(edges, totals, n_bins, &o, NULL, err);
     if (st != TS_OK)
@@ -258,7 +304,7 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
     double *work = ts__malloc((3 * n + 2) * sizeof(double));
     unsigned char *zs = ts__calloc(n, 1);
     if (h)
-        h->e = ts__malloc((10 * n + 1) * sizeof(double));
+        h->e = ts__malloc(((HB + 2) * n + 1) * sizeof(double));
     if (!h || !h->e || !work || !zs) {
         free(work);
         free(zs);
@@ -270,7 +316,7 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
     h->hi = o.hi;
     h->H = o.hi - o.lo;
     h->B = h->e + (n + 1);
-    h->tot = h->B + 8 * n;
+    h->tot = h->B + HB * n;
     memcpy(h->e, edges, (n + 1) * sizeof(double));
     double *y = work, *sg = work + (n + 1), *rho = work + 2 * (n + 1);
     for (size_t j = 0; j < n; j++)
@@ -304,7 +350,7 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
         sg[j] = isfinite(d) ? d : 0.0;
     }
     for (size_t j = 0; j < n; j++)
-        build_bin(h, j, rho[j], y, sg, o.alpha, 0);
+        build_bin(h, j, rho[j], y, sg, 0);
     /* rounding (subnormal widths) may leave a control value outside by an
      * ulp: such a bin's slopes become 0, its neighbours rebuilt (§12.4) */
     for (int changed = 1; changed;) {
@@ -316,7 +362,7 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
             sg[j] = sg[j + 1] = 0.0;
             zs[j] = 1;
             for (size_t k = j > 0 ? j - 1 : 0; k <= j + 1 && k < n; k++)
-                build_bin(h, k, rho[k], y, sg, o.alpha, zs[k]);
+                build_bin(h, k, rho[k], y, sg, zs[k]);
             if (changed)
                 break;
         }
@@ -324,8 +370,9 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
     free(work);
     free(zs);
     for (size_t j = 0; j < n; j++) {
-        double hh = 0.5 * (edges[j + 1] - edges[j]);
-        double t = piece_total(h->B + 8 * j, hh) + piece_total(h->B + 8 * j + 4, hh);
+        double q = 0.25 * (edges[j + 1] - edges[j]), t = 0.0;
+        for (int k = 0; k < HP; k++)
+            t += piece_total(h->B + HB * j + 4 * k, q);
         h->tot[j] = t + o.lo * (edges[j + 1] - edges[j]);
         if (!isfinite(h->tot[j])) {
             release(h);
@@ -360,28 +407,39 @@ static size_t find_bin(const ts_histo *h, double x)
     return ts__search(h->e, h->n, x, NULL);
 }
 
+/* The piece of bin j holding x, its distance from the piece's nearer end
+ * and whether that is its right end (§12.5). */
+static const double *locate_piece(const ts_histo *h, size_t j, double x, double *dist, int *rev)
+{
+    double e0 = h->e[j], e1 = h->e[j + 1], q = 0.25 * (e1 - e0);
+    double dl = x - e0, dre = e1 - x, dL, dR;
+    int k;
+    if (dl <= dre) {
+        k = dl > q ? 1 : 0;
+        dL = dl - k * q;
+        dR = (k + 1) * q - dl;
+    } else {
+        int kr = dre > q ? 1 : 0;
+        k = HP - 1 - kr;
+        dR = dre - kr * q;
+        dL = (kr + 1) * q - dre;
+    }
+    *rev = dL > dR;
+    double d = *rev ? dR : dL;
+    *dist = d > 0.0 ? d : 0.0;
+    return h->B + HB * j + 4 * k;
+}
+
 /* §12.5: r − lo and dr/dx at x in bin j. */
 static void eval_in(const ts_histo *h, size_t j, double x, double *r, double *dr)
 {
-    double e0 = h->e[j], e1 = h->e[j + 1], w = e1 - e0, hh = 0.5 * w;
-    double dl = x - e0, dre = e1 - x;
-    const double *P;
-    double dist;
+    double q = 0.25 * (h->e[j + 1] - h->e[j]), dist;
     int rev;
-    if (dl <= dre) { /* left piece */
-        P = h->B + 8 * j;
-        rev = dl > 0.5 * hh;
-        dist = rev ? hh - dl : dl;
-    } else {
-        P = h->B + 8 * j + 4;
-        rev = dre <= 0.5 * hh;
-        dist = rev ? dre : hh - dre;
-    }
-    dist = dist > 0.0 ? dist : 0.0;
+    const double *P = locate_piece(h, j, x, &dist, &rev);
     double Q[4];
     for (int l = 0; l < 4; l++)
         Q[l] = rev ? P[3 - l] : P[l];
-    double u = TS_HALF_PI * (dist / hh), s, c, ms, mc;
+    double u = TS_HALF_PI * (dist / q), s, c, ms, mc;
     ts__sincos_q(u, &s, &c, &ms, &mc);
     /* every factor >= 0: the sum of non-negative terms is >= 0 exactly */
     double A0 = ms * ms * ms, A1 = s * ms * (3.0 - s), A2 = c * mc * (3.0 - c), A3 = mc * mc * mc;
@@ -389,7 +447,7 @@ static void eval_in(const ts_histo *h, size_t j, double x, double *r, double *dr
     if (dr) {
         double d = 3.0 * ms * ms * c * (Q[1] - Q[0]) + 2.0 * s * c * (Q[2] - Q[1]) +
                    3.0 * mc * mc * s * (Q[3] - Q[2]);
-        d *= TS_HALF_PI / hh;
+        d *= TS_HALF_PI / q;
         *dr = rev ? -d : d;
     }
 }
@@ -456,16 +514,22 @@ static double piece_partial(const double *P, double hh, double d)
 /* ∫_{e_j}^x (r − lo) for x in bin j, from the nearer edge. */
 static double bin_partial(const ts_histo *h, size_t j, double x)
 {
-    double e0 = h->e[j], e1 = h->e[j + 1], hh = 0.5 * (e1 - e0);
-    double dl = x - e0, dre = e1 - x;
-    const double *L = h->B + 8 * j, *R = L + 4;
-    if (dl <= dre)
-        return dl <= hh ? piece_partial(L, hh, dl) : piece_total(L, hh) + piece_partial(R, hh, dl - hh);
-    double Rr[4] = {R[3], R[2], R[1], R[0]}, Lr[4] = {L[3], L[2], L[1], L[0]};
-    double back = dre <= hh ? piece_partial(Rr, hh, dre)
-                            : piece_total(R, hh) + piece_partial(Lr, hh, dre - hh);
-    double rtot = h->tot[j] - h->lo * (e1 - e0);
-    return rtot - back;
+    double e0 = h->e[j], e1 = h->e[j + 1], q = 0.25 * (e1 - e0);
+    double dl = x - e0, dre = e1 - x, acc = 0.0;
+    const double *B = h->B + HB * j;
+    if (dl <= dre) {
+        int k = dl > q ? 1 : 0;
+        for (int i = 0; i < k; i++)
+            acc += piece_total(B + 4 * i, q);
+        return acc + piece_partial(B + 4 * k, q, dl - k * q);
+    }
+    int kr = dre > q ? 1 : 0;
+    for (int i = 0; i < kr; i++)
+        acc += piece_total(B + 4 * (HP - 1 - i), q);
+    const double *P = B + 4 * (HP - 1 - kr);
+    double Pr[4] = {P[3], P[2], P[1], P[0]};
+    acc += piece_partial(Pr, q, dre - kr * q);
+    return (h->tot[j] - h->lo * (e1 - e0)) - acc;
 }
 
 /* ∫_a^b r for e_0 <= a <= b <= e_n, bins ja, jb holding them. */
@@ -535,7 +599,7 @@ static void report_reset(ts_bin_report *rep)
     rep->struct_size = sizeof *rep;
     rep->e0 = rep->e1 = rep->total = rep->mean = NAN;
     rep->r_min = rep->at_min = rep->r_max = rep->at_max = rep->guard = NAN;
-    for (int l = 0; l < 8; l++)
+    for (int l = 0; l < 16; l++)
         rep->B[l] = NAN;
     rep->certified = 0;
 }
@@ -557,28 +621,28 @@ ts_status ts_histo_report(const ts_histo *h, size_t bin, ts_bin_report *rep)
         return TS_ERR_NULL;
     if (bin >= h->n)
         return TS_ERR_INDEX;
-    double e0 = h->e[bin], e1 = h->e[bin + 1], hh = 0.5 * (e1 - e0);
+    double e0 = h->e[bin], e1 = h->e[bin + 1], q = 0.25 * (e1 - e0);
     rep->e0 = e0;
     rep->e1 = e1;
     rep->total = h->tot[bin];
     rep->mean = h->tot[bin] / (e1 - e0);
-    memcpy(rep->B, h->B + 8 * bin, sizeof rep->B);
+    memcpy(rep->B, h->B + HB * bin, sizeof rep->B);
     rep->certified = bin_inside(h, bin);
     double mn = HUGE_VAL, mx = -HUGE_VAL, g = 0.0;
-    for (int p = 0; p < 2; p++) {
-        const double *P = h->B + 8 * bin + 4 * p;
-        double x0 = p ? e0 + hh : e0, th, tb, eb;
+    for (int p = 0; p < HP; p++) {
+        const double *P = h->B + HB * bin + 4 * p;
+        double x0 = e0 + p * q, th, tb, eb;
         double v = ts__trig_min_core(P[0], P[1], P[2], P[3], 0.0, &th, &tb, &eb);
         g = eb > g ? eb : g;
         if (v < mn) {
             mn = v;
-            rep->at_min = x0 + (hh / TS_HALF_PI) * th;
+            rep->at_min = x0 + (q / TS_HALF_PI) * th;
         }
         v = -ts__trig_min_core(-P[0], -P[1], -P[2], -P[3], 0.0, &th, &tb, &eb);
         g = eb > g ? eb : g;
         if (v > mx) {
             mx = v;
-            rep->at_max = x0 + (hh / TS_HALF_PI) * th;
+            rep->at_max = x0 + (q / TS_HALF_PI) * th;
         }
     }
     rep->r_min = h->lo + mn;

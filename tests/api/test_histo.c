@@ -110,26 +110,31 @@ static void check_series(const double *e, const double *T, size_t n, const ts_hi
             st->below += !(r >= lo);
             st->above += !(r <= hi);
         }
-        /* C¹ at the left edge (inner) and at the midpoint: the left side
-         * from the end of the piece before the knot (its control values,
-         * the end slope 3(B3 − B2)·π/(2 hh) of §2), the right side evaluated */
-        for (int kn = 0; kn < 2; kn++) {
+        /* C¹ at the left edge (inner) and at the three inner knots: the
+         * left side from the end of the piece before the knot (its control
+         * values, the end slope 3(B3 − B2)·π/(2q) of §2), the right side
+         * evaluated at the edge, or from the next piece's control values
+         * (the quarter points need not be doubles) */
+        ts_bin_report pr, pl;
+        ts_bin_report_init(&pr);
+        ts_bin_report_init(&pl);
+        ts_histo_report(h, j, &pr);
+        if (j > 0)
+            ts_histo_report(h, j - 1, &pl);
+        double qq = 0.25 * w;
+        for (int kn = 0; kn < 4; kn++) {
             if (!kn && j == 0)
                 continue;
-            ts_bin_report pr;
-            ts_bin_report_init(&pr);
-            ts_histo_report(h, kn ? j : j - 1, &pr);
-            double hh = 0.5 * (pr.e1 - pr.e0);
-            const double *P = pr.B + (kn ? 0 : 4);
-            double rl = lo + P[3], dl = 3.0 * (P[3] - P[2]) * (TH_HALF_PI / hh);
-            double rr, dr;
-            if (kn) { /* the midpoint need not be a double: the next piece's start */
-                rr = lo + P[4];
-                dr = 3.0 * (P[5] - P[4]) * (TH_HALF_PI / hh);
+            const double *P = kn ? pr.B + 4 * (kn - 1) : pl.B + 12;
+            double ql = kn ? qq : 0.25 * (pl.e1 - pl.e0);
+            double rl = lo + P[3], dl = 3.0 * (P[3] - P[2]) * (TH_HALF_PI / ql), rr, dr;
+            if (kn) {
+                rr = lo + pr.B[4 * kn];
+                dr = 3.0 * (pr.B[4 * kn + 1] - pr.B[4 * kn]) * (TH_HALF_PI / qq);
             } else {
                 ts_histo_eval(h, e[j], &rr, &dr);
             }
-            double wmin = kn ? 0.5 * w : fmin(w, e[j] - e[j - 1]);
+            double wmin = kn ? qq : fmin(qq, ql);
             double mu = T[j] / w - lo;
             if (!kn)
                 mu = fmax(mu, T[j - 1] / (e[j] - e[j - 1]) - lo);
@@ -309,9 +314,14 @@ static void closed_forms(void)
         CHECK_CLOSE(rep.mean, 24.0, 1e-14 * 24);
         CHECK(rep.certified);
         CHECK_CLOSE(rep.at_max, 1.5, 1e-9);
-        /* §12.3: v = 2 μ with zero edge data, the peak is v */
-        CHECK_CLOSE(rep.r_max, 48.0, 1e-13 * 48);
+        /* §12.3, (12.3) by hand with zero edge data: Y1 = Y3 = T/(10q),
+         * Y2 = 4T/(5q), q = w/4: the peak 3.2 T/w at the middle */
+        CHECK_CLOSE(rep.r_max, 76.8, 1e-13 * 77);
         CHECK(rep.r_min == 0.0);
+        ts_histo_eval(h, 1.25, &r, &d);
+        CHECK_CLOSE(r, 9.6, 1e-13 * 77);
+        ts_histo_eval(h, 1.75, &r, &d);
+        CHECK_CLOSE(r, 9.6, 1e-13 * 77);
         double a, b;
         ts_histo_eval(h, 1.3, &a, NULL);
         ts_histo_eval(h, 1.7, &b, NULL);
