@@ -416,6 +416,10 @@ class TrigsplineAccessor:
 
     interp.__doc__ = _options.fill(_DOC)
 
+    def disaggregate(self, indexers=None, **kwargs):
+        from .histo_xarray import disaggregate_dataarray
+        return disaggregate_dataarray(self._obj, indexers, **kwargs)
+
 
 class TrigsplineDatasetAccessor:
     """``Dataset.trigspline``: every data variable holding the dimension is
