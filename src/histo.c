@@ -461,9 +461,9 @@ static double clamp_rate(const ts_histo *h, double rr)
 ts_status ts_histo_eval(const ts_histo *h, double x, double *r, double *dr)
 {
     if (r)
-        *r = NAN;
+        *r = (double)NAN;
     if (dr)
-        *dr = NAN;
+        *dr = (double)NAN;
     if (!h || !r)
         return TS_ERR_NULL;
     if (!(h->e[0] <= x && x <= h->e[h->n]))
@@ -479,9 +479,9 @@ ts_status ts_histo_eval_batch(const ts_histo *h, const double *x, size_t m, doub
 {
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
     for (size_t k = 0; r && k < m; k++) {
-        r[k] = NAN;
+        r[k] = (double)NAN;
         if (dr)
-            dr[k] = NAN;
+            dr[k] = (double)NAN;
     }
     if (!h || (m > 0 && (!x || !r)))
         return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
@@ -554,7 +554,7 @@ static double clamp_total(const ts_histo *h, double v, double width)
 ts_status ts_histo_integral(const ts_histo *h, double a, double b, double *out)
 {
     if (out)
-        *out = NAN;
+        *out = (double)NAN;
     if (!h || !out)
         return TS_ERR_NULL;
     double e0 = h->e[0], en = h->e[h->n];
@@ -572,7 +572,7 @@ ts_status ts_histo_totals(const ts_histo *h, const double *grid, size_t m, doubl
 {
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
     for (size_t k = 0; out && k + 1 < m; k++)
-        out[k] = NAN;
+        out[k] = (double)NAN;
     if (!h || (m >= 2 && (!grid || !out)))
         return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
     if (m < 2)
@@ -597,10 +597,10 @@ ts_status ts_histo_totals(const ts_histo *h, const double *grid, size_t m, doubl
 static void report_reset(ts_bin_report *rep)
 {
     rep->struct_size = sizeof *rep;
-    rep->e0 = rep->e1 = rep->total = rep->mean = NAN;
-    rep->r_min = rep->at_min = rep->r_max = rep->at_max = rep->guard = NAN;
+    rep->e0 = rep->e1 = rep->total = rep->mean = (double)NAN;
+    rep->r_min = rep->at_min = rep->r_max = rep->at_max = rep->guard = (double)NAN;
     for (int l = 0; l < 16; l++)
-        rep->B[l] = NAN;
+        rep->B[l] = (double)NAN;
     rep->certified = 0;
 }
 
