@@ -17,7 +17,7 @@ export TS_WEB_CLI_SHIPPED=$(abs "$3")/trigspline
 export TS_WEB_ARTIFACTS=$(abs "$4")
 export TS_HEADER=$root/include/trigspline.h
 "$TS_WEB_REFBIN" "$TS_WEB_REF" || { echo "reference values not written"; echo "0 passed, 1 failed"; exit 1; }
-out=$(node --test --test-reporter=tap "$here/node.test.mjs" "$here/browser.test.mjs" 2>&1); rc=$?
+out=$(node --test --test-reporter=tap "$here/node.test.mjs" "$here/browser.test.mjs" "$here/histo.test.mjs" 2>&1); rc=$?
 printf '%s\n' "$out" | grep -E '^(not )?ok |^# [^\\]|^# \\#|# [a-z ]+:' | grep -v '^# Subtest'
 pass=$(printf '%s\n' "$out" | sed -n 's/^# pass \([0-9]*\)$/\1/p' | tail -n 1)
 fail=$(printf '%s\n' "$out" | sed -n 's/^# fail \([0-9]*\)$/\1/p' | tail -n 1)
