@@ -1386,6 +1386,18 @@ TS_API ts_status ts_histo_integral(const ts_histo *h, double a, double b, double
 TS_API ts_status ts_histo_totals(const ts_histo *h, const double *grid, size_t m, double *out,
                                  ts_error *err);
 
+/*
+ * Every bin cut into sub equal cells: out[j * sub + k] = ∫ r over cell k of
+ * bin j (n_bins * sub values; daily totals to hourly ones: sub = 24).  The
+ * same values as ts_histo_totals on that grid up to rounding, faster: the
+ * cells' weights on the control values are computed once for all bins
+ * (docs/method.md §12.5).  Each within [lo, hi] times the cell width; the
+ * cells of a bin add up to its total to rounding.  No allocation.  TS_OK,
+ * TS_ERR_NULL (h, out), TS_ERR_OPTION (sub == 0), TS_ERR_OVERFLOW (n_bins *
+ * sub overflows).
+ */
+TS_API ts_status ts_histo_subdivide(const ts_histo *h, size_t sub, double *out, ts_error *err);
+
 /* One bin's certificate (docs/method.md §12.5). */
 typedef struct ts_bin_report {
     size_t struct_size;  /* sizeof(ts_bin_report): ts_bin_report_init before the first call */

@@ -224,8 +224,14 @@ static int inside(const double *B, double H)
 /* §12.3: bin j from its edge values y, edge slopes sg: the C² solution X
  * of (12.3) blended with the flat solution Z by the largest λ in [0, 1]
  * that keeps every control value in [0, H]; flat: λ = 0. */
-static void build_bin(ts_histo *h, size_t j, double rho, const double *y, const double *sg, int flat)
+static int build_bin(ts_histo *h, size_t j, double rho, const double *y, const double *sg, int flat)
 {
+    double *B = h->B + HB * j;
+    if (rho == 0.0 && y[j] == 0.0 && y[j + 1] == 0.0 && sg[j] == 0.0 && sg[j + 1] == 0.0) {
+        for (int l = 0; l < HB; l++) /* a dry bin (§12.4): X = Z = 0 */
+            B[l] = 0.0;
+        return 1;
+    }
     double w = h->e[j + 1] - h->e[j], Kq = w / (6.0 * TS_PI), H = h->H;
     double Y0 = y[j], Y4 = y[j + 1], E0 = Kq * sg[j], E4 = Kq * sg[j + 1];
     /* (12.3) with r'' = 0 at the edges */
@@ -264,10 +270,11 @@ static void build_bin(ts_histo *h, size_t j, double rho, const double *y, const 
         Y[k] = (k == 0 || k == 4) ? YZ[k] : YZ[k] + lam * (YX[k] - YZ[k]);
         E[k] = (k == 0 || k == 4) ? EZ[k] : EZ[k] + lam * (EX[k] - EZ[k]);
     }
-    double *B = h->B + HB * j;
     controls(Y, E, B);
-    if (!inside(B, H))
-        memcpy(B, BZ, sizeof BZ);
+    if (inside(B, H))
+        return 1;
+    memcpy(B, BZ, sizeof BZ);
+    return inside(B, H);
 }
 
 static int bin_inside(const ts_histo *h, size_t j)
@@ -331,6 +338,10 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
     /* slack of bin j: min(2ρ − (yl + yr)/2, H − 2ρ + (yl + yr)/2) >= 0 */
     sg[0] = sg[n] = 0.0;
     for (size_t j = 1; j < n; j++) {
+        if (y[j] == 0.0 || y[j] == h->H) { /* the slope limit is 0 (§12.4) */
+            sg[j] = 0.0;
+            continue;
+        }
         double wl = edges[j] - edges[j - 1], wr = edges[j + 1] - edges[j];
         double Kl = wl / (3.0 * TS_PI), Kr = wr / (3.0 * TS_PI);
         double room = y[j] < h->H - y[j] ? y[j] : h->H - y[j];
@@ -349,11 +360,12 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
         d = d > -L ? d : -L;
         sg[j] = isfinite(d) ? d : 0.0;
     }
+    int bad = 0;
     for (size_t j = 0; j < n; j++)
-        build_bin(h, j, rho[j], y, sg, 0);
+        bad |= !build_bin(h, j, rho[j], y, sg, 0);
     /* rounding (subnormal widths) may leave a control value outside by an
-     * ulp: such a bin's slopes become 0, its neighbours rebuilt (§12.4) */
-    for (int changed = 1; changed;) {
+     * ulp: such a bin's slopes become 0, its neighbours rebuilt (§12.6) */
+    for (int changed = bad; changed;) {
         changed = 0;
         for (size_t j = 0; j < n; j++) {
             if (bin_inside(h, j))
@@ -362,7 +374,7 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
             sg[j] = sg[j + 1] = 0.0;
             zs[j] = 1;
             for (size_t k = j > 0 ? j - 1 : 0; k <= j + 1 && k < n; k++)
-                build_bin(h, k, rho[k], y, sg, zs[k]);
+                (void)build_bin(h, k, rho[k], y, sg, zs[k]);
             if (changed)
                 break;
         }
@@ -590,6 +602,88 @@ ts_status ts_histo_totals(const ts_histo *h, const double *grid, size_t m, doubl
         size_t jb = ts__search(h->e, h->n, grid[k + 1], &cur);
         out[k] = clamp_total(h, integral_ab(h, grid[k], ja, grid[k + 1], jb), grid[k + 1] - grid[k]);
         ja = jb;
+    }
+    return TS_OK;
+}
+
+
+/* §12.5: ∫_0^θ A_l dθ for θ in [0, π/2] from the nearer end (the far half
+ * as the whole integral minus the mirrored rest). */
+static void basis_int_near(double th, double I[4])
+{
+    static const double full[4] = {1.25 * TS_PI - 11.0 / 3.0, 11.0 / 3.0 - TS_PI,
+                                   11.0 / 3.0 - TS_PI, 1.25 * TS_PI - 11.0 / 3.0};
+    if (th <= 0.5 * TS_HALF_PI) {
+        ts__basis_int(th, sin(th), cos(th), I);
+        return;
+    }
+    double tm = TS_HALF_PI - th, J[4];
+    tm = tm > 0.0 ? tm : 0.0;
+    ts__basis_int(tm, sin(tm), cos(tm), J);
+    for (int l = 0; l < 4; l++)
+        I[l] = full[l] - J[3 - l];
+}
+
+ts_status ts_histo_subdivide(const ts_histo *h, size_t sub, double *out, ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!h || !out)
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    if (sub == 0)
+        return ts__fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
+    if (h->n > SIZE_MAX / sub)
+        return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
+    size_t n = h->n;
+    if (sub == 1) { /* the cell is the bin: its total (a cell below meets at most two pieces) */
+        for (size_t j = 0; j < n; j++)
+            out[j] = clamp_total(h, h->tot[j], h->e[j + 1] - h->e[j]);
+        return TS_OK;
+    }
+    /* cell k of every bin: the same weights on the control values (§12.5),
+     * c[p][l] = (1/(2π)) (I_l(θ_b) − I_l(θ_a)) over its overlap with piece p,
+     * times the width; a table of HSUB cells at a time (no allocation) */
+    enum { HSUB = 32 };
+    double c[HSUB][2][4];
+    int pk[HSUB][2];
+    for (size_t k0 = 0; k0 < sub; k0 += HSUB) {
+        size_t k1 = sub - k0 < HSUB ? sub : k0 + HSUB;
+        for (size_t k = k0; k < k1; k++) {
+            double a = (double)k / (double)sub, b = (double)(k + 1) / (double)sub;
+            int p0 = (int)(4.0 * a);
+            p0 = p0 < HP - 1 ? p0 : HP - 1;
+            for (int t = 0; t < 2; t++) {
+                int p = p0 + t < HP ? p0 + t : HP - 1;
+                double q0 = 0.25 * p, q1 = 0.25 * (p + 1);
+                double lo = a > q0 ? a : q0, hi = b < q1 ? b : q1;
+                pk[k - k0][t] = p;
+                for (int l = 0; l < 4; l++)
+                    c[k - k0][t][l] = 0.0;
+                if (!(lo < hi) || (t == 1 && p == p0))
+                    continue;
+                double Ia[4], Ib[4];
+                basis_int_near(TS_HALF_PI * 4.0 * (lo - q0), Ia);
+                basis_int_near(TS_HALF_PI * 4.0 * (hi - q0), Ib);
+                for (int l = 0; l < 4; l++)
+                    c[k - k0][t][l] = (Ib[l] - Ia[l]) / (2.0 * TS_PI);
+            }
+        }
+        for (size_t j = 0; j < n; j++) {
+            const double *B = h->B + HB * j;
+            double w = h->e[j + 1] - h->e[j], cw = w / (double)sub;
+            double *o = out + j * sub;
+            if (h->tot[j] == h->lo * w) { /* a bin at lo (dry): r ≡ lo */
+                for (size_t k = k0; k < k1; k++)
+                    o[k] = h->lo * cw;
+                continue;
+            }
+            for (size_t k = k0; k < k1; k++) {
+                const double *P = B + 4 * pk[k - k0][0], *Q = B + 4 * pk[k - k0][1];
+                double(*ck)[4] = c[k - k0];
+                double v = (ck[0][0] * P[0] + ck[0][1] * P[1] + ck[0][2] * P[2] + ck[0][3] * P[3]) +
+                           (ck[1][0] * Q[0] + ck[1][1] * Q[1] + ck[1][2] * Q[2] + ck[1][3] * Q[3]);
+                o[k] = clamp_total(h, w * v + h->lo * cw, cw);
+            }
+        }
     }
     return TS_OK;
 }

@@ -67,6 +67,7 @@ typedef struct stats {
     double tot_err;           /* largest relative error of a bin total */
     double c1_jump;           /* largest relative jump of r' at a knot */
     double c0_jump;
+    double sub_diff;          /* ts_histo_subdivide against ts_histo_totals */
 } stats;
 
 static void check_series(const double *e, const double *T, size_t n, const ts_histo_options *o,
@@ -168,6 +169,35 @@ static void check_series(const double *e, const double *T, size_t n, const ts_hi
             double er = fabs(sum - T[j]) / scale;
             st->tot_err = er > st->tot_err ? er : st->tot_err;
         }
+        /* the same cells by ts_histo_subdivide: its sums, and the same
+         * values as the grid's to rounding (1e-13 of the bin's total) once
+         * the grid's own rounding is allowed for: its points are up to an
+         * ulp of x from the exact subdivision, which moves a cell's total
+         * by up to the bin's peak rate times that */
+        s = ts_histo_subdivide(h, sub, out, &err);
+        CHECK(s == TS_OK);
+        double *gt = malloc((m - 1) * sizeof *gt);
+        if (gt && s == TS_OK && ts_histo_totals(h, g, m, gt, NULL) == TS_OK) {
+            for (size_t j = 0; j < n; j++) {
+                double sum = 0.0, scale = fabs(T[j]) > 0.0 ? fabs(T[j]) : DBL_MIN;
+                ts_bin_report br;
+                ts_bin_report_init(&br);
+                ts_histo_report(h, j, &br);
+                for (size_t k = 0; k < sub; k++) {
+                    double c = out[j * sub + k], cw = (e[j + 1] - e[j]) / (double)sub;
+                    double ga = fabs(g[j * sub + k]), gb = fabs(g[j * sub + k + 1]);
+                    double allow = fabs(br.r_max) * ((nextafter(ga, TH_INF) - ga) + (nextafter(gb, TH_INF) - gb));
+                    st->below += !(c >= lo * cw);
+                    st->above += !(c <= hi * cw);
+                    sum += c;
+                    double d = fmax(fabs(c - gt[j * sub + k]) - allow, 0.0) / scale;
+                    st->sub_diff = d > st->sub_diff ? d : st->sub_diff;
+                }
+                double er = fabs(sum - T[j]) / scale;
+                st->tot_err = er > st->tot_err ? er : st->tot_err;
+            }
+        }
+        free(gt);
     }
     free(g);
     free(out);
@@ -177,9 +207,9 @@ static void check_series(const double *e, const double *T, size_t n, const ts_hi
 static void print_stats(const char *what, const stats *st)
 {
     printf("%s: %ld series, %ld bins (%.1f %% dry): total error %.3g, %ld below, %ld above, "
-           "%ld uncertified, C1 jump %.3g, C0 jump %.3g\n",
+           "%ld uncertified, C1 jump %.3g, C0 jump %.3g, subdivide vs grid %.3g\n",
            what, st->series, st->bins, 100.0 * (double)st->dry / (double)(st->bins ? st->bins : 1),
-           st->tot_err, st->below, st->above, st->uncert, st->c1_jump, st->c0_jump);
+           st->tot_err, st->below, st->above, st->uncert, st->c1_jump, st->c0_jump, st->sub_diff);
 }
 
 static void check_stats(const stats *st)
@@ -191,6 +221,7 @@ static void check_stats(const stats *st)
     CHECK(st->report_below == 0);
     CHECKF(st->c1_jump <= 1e-12, "C1 jump %.3g", st->c1_jump);
     CHECKF(st->c0_jump <= 1e-12, "C0 jump %.3g", st->c0_jump);
+    CHECKF(st->sub_diff <= 1e-13, "subdivide against the grid %.3g", st->sub_diff);
 }
 
 /* One random intermittent series: bins of width 1 (or irregular), about 70 %
@@ -327,6 +358,16 @@ static void closed_forms(void)
         ts_histo_eval(h, 1.7, &b, NULL);
         CHECK_CLOSE(a, b, 1e-14 * 48);
         ts_histo_free(h);
+    }
+    TH_CASE("bins a few DBL_MIN wide (K subnormal, §12.6)");
+    {
+        double e[5] = {0, 3e-308, 6e-308, 1e-307, 1.3e-307};
+        double T[4] = {1e-300, 5e-300, 2e-300, 0};
+        stats st = {0};
+        check_series(e, T, 4, NULL, &st, 64);
+        print_stats("tiny widths", &st);
+        CHECK(st.series == 1 && st.below == 0 && st.uncert == 0);
+        CHECKF(st.tot_err <= 1e-13, "%.3g", st.tot_err);
     }
     TH_CASE("the integral of a piece (closed form, §12.2)");
     {
@@ -469,6 +510,17 @@ static void errors(void)
     CHECK(ts_histo_totals(h, g, 3, out, &err) == TS_OK);
     CHECK_CLOSE(out[0], 3.0, 1e-14 * 3);
     CHECK_CLOSE(out[1], 3.0, 1e-14 * 3);
+    double so[6];
+    CHECK(ts_histo_subdivide(h, 0, so, &err) == TS_ERR_OPTION);
+    CHECK(ts_histo_subdivide(h, 2, NULL, &err) == TS_ERR_NULL);
+    CHECK(ts_histo_subdivide(NULL, 2, so, &err) == TS_ERR_NULL);
+    CHECK(ts_histo_subdivide(h, SIZE_MAX / 2, so, &err) == TS_ERR_OVERFLOW);
+    CHECK(ts_histo_subdivide(h, 2, so, &err) == TS_OK && err.status == TS_OK);
+    CHECK_CLOSE(so[0] + so[1], 1.0, 1e-15);
+    CHECK_CLOSE(so[4] + so[5], 3.0, 3e-15);
+    CHECK(ts_histo_subdivide(h, 1, so, &err) == TS_OK);
+    CHECK_CLOSE(so[0], 1.0, 1e-15);
+    CHECK_CLOSE(so[2], 3.0, 3e-15);
     /* reports */
     ts_bin_report rep;
     CHECK(ts_histo_report(h, 0, NULL) == TS_ERR_NULL);

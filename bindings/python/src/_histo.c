@@ -10,8 +10,9 @@
  * ts_status, index the bin or edge it names (-1 if none).  float64 only;
  * numpy runs the loop without the GIL.
  *
- * opt (float64, OPT_LEN values): kind (0 totals, 1 rate, 2 derivative),
- * alpha, lo, hi. */
+ * opt (float64, OPT_LEN values): kind (0 totals, 1 rate, 2 derivative,
+ * 3 every bin cut into q / n equal cells: ts_histo_subdivide, the grid's
+ * values unused), alpha, lo, hi. */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
 
@@ -40,12 +41,12 @@ static ts_status one_series(const double *e, npy_intp p, const double *T, npy_in
                             const double *g, npy_intp q, const double *o, double *out,
                             npy_int64 *index)
 {
-    *index = -1;
-    for (npy_intp j = 0; j < q; j++)
-        out[j] = (double)NAN;
+    *index = -1; /* out is set to NaN by the caller on failure */
     int kind = (int)o[OPT_KIND];
-    if (p != n + 1 || !(o[OPT_KIND] == 0.0 || o[OPT_KIND] == 1.0 || o[OPT_KIND] == 2.0))
-        return p != n + 1 ? TS_ERR_LENGTH : TS_ERR_OPTION;
+    if (!(o[OPT_KIND] == 0.0 || o[OPT_KIND] == 1.0 || o[OPT_KIND] == 2.0 || o[OPT_KIND] == 3.0))
+        return TS_ERR_OPTION;
+    if (p != n + 1 || (kind == 3 && (n == 0 || q % n != 0)))
+        return TS_ERR_LENGTH;
     ts_histo_options ho;
     ts_histo_options_init(&ho);
     ho.alpha = o[OPT_ALPHA];
@@ -55,7 +56,9 @@ static ts_status one_series(const double *e, npy_intp p, const double *T, npy_in
     ts_error err;
     ts_status st = ts_histo_new(e, T, (size_t)n, &ho, &h, &err);
     if (st == TS_OK) {
-        if (kind == 0) {
+        if (kind == 3) {
+            st = q > 0 ? ts_histo_subdivide(h, (size_t)(q / n), out, &err) : TS_OK;
+        } else if (kind == 0) {
             st = ts_histo_totals(h, g, (size_t)q, q > 1 ? out + 1 : NULL, &err);
             if (st == TS_OK && q > 0)
                 out[0] = 0.0;
@@ -104,6 +107,9 @@ static void loop_f64(char **args, npy_intp const *dims, npy_intp const *steps, v
         ts_status st;
         npy_int64 index = -1;
         double *e = buf, *T = buf + p, *g = T + n, *out = g + q;
+        /* contiguous output: written in place */
+        if (sout == (npy_intp)sizeof(double))
+            out = (double *)pout;
         if (!buf) {
             st = TS_ERR_NOMEM;
         } else if (k != OPT_LEN) {
@@ -113,13 +119,15 @@ static void loop_f64(char **args, npy_intp const *dims, npy_intp const *steps, v
             load(o, po, so, OPT_LEN);
             load(e, pe, se, p);
             load(T, pT, sT, n);
-            load(g, pg, sg, q);
+            if (o[OPT_KIND] != 3.0) /* kind 3 reads only the grid's length */
+                load(g, pg, sg, q);
             st = one_series(e, p, T, n, g, q, o, out, &index);
         }
         *pst = (npy_int32)st;
         *pix = index;
-        for (npy_intp j = 0; j < q; j++)
-            *(double *)(pout + j * sout) = (st == TS_OK) ? out[j] : (double)NAN;
+        if (st != TS_OK || out != (double *)pout)
+            for (npy_intp j = 0; j < q; j++)
+                *(double *)(pout + j * sout) = (st == TS_OK) ? out[j] : (double)NAN;
     }
     fesetexceptflag(&flags, FE_ALL_EXCEPT);
     free(buf);

@@ -148,3 +148,22 @@ def test_xarray_numpy_and_dask():
     num = xr.DataArray([0.0, 3.0, 0.0], dims="x", coords={"x": [0.0, 2.0, 4.0]})
     cells = num.trigspline.disaggregate(x=0.5)
     assert cells.sizes["x"] == 12 and abs(float(cells.sum()) - 3.0) < 1e-14
+
+
+def test_per_bin_fast_path():
+    rng = np.random.default_rng(11)
+    t = np.stack([intermittent(rng, 40) for _ in range(50)])
+    e = np.arange(41.0)
+    fast = trigspline.disaggregate(e, t, per_bin=24)
+    grid = trigspline.disaggregate(e, t, np.arange(40 * 24 + 1) / 24.0)
+    assert fast.shape == grid.shape == (50, 960)
+    assert (fast >= 0).all()
+    # the same cells by two paths: to rounding of the bin totals (the grid's
+    # points k/24 are rounded, moving a cell by an ulp of x times the rate)
+    scale = np.repeat(np.maximum(t, 1e-300), 24, axis=1)
+    assert (np.abs(fast - grid) / scale).max() <= 1e-13
+    np.testing.assert_allclose(fast.reshape(50, 40, 24).sum(-1), t, rtol=1e-13)
+    with pytest.raises(ValueError):
+        trigspline.disaggregate(e, t, per_bin=24, kind="rate")
+    with pytest.raises(ValueError):
+        trigspline.disaggregate(e, t)

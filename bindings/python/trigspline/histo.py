@@ -45,8 +45,8 @@ def _raise_first(status, index):
     raise TrigsplineError(st, msg, ix if ix >= 0 else None, where, series or None)
 
 
-def disaggregate(edges, totals, grid, *, kind="totals", lo=None, hi=None, alpha=None,
-                 axis=-1, errors="raise"):
+def disaggregate(edges, totals, grid=None, *, per_bin=None, kind="totals", lo=None, hi=None,
+                 alpha=None, axis=-1, errors="raise"):
     """Totals over a finer grid, or the rate, from bin totals.
 
     Parameters
@@ -57,6 +57,10 @@ def disaggregate(edges, totals, grid, *, kind="totals", lo=None, hi=None, alpha=
         The total of each bin, within ``[lo, hi]`` times its width.
     grid : array_like, shape (..., m)
         Points inside ``[edges[0], edges[-1]]``, non-decreasing.
+    per_bin : int, optional
+        Instead of ``grid``: cut every bin into this many equal cells and
+        return their totals (shape ``(..., n * per_bin)``), the fast path
+        (``ts_histo_subdivide``: the cells' weights computed once for all bins).
     kind : {"totals", "rate", "derivative"}
         ``"totals"``: the m - 1 totals over ``[grid[k], grid[k+1]]`` (they add up
         to the bins' totals); ``"rate"``: r at the m points; ``"derivative"``: r'.
@@ -79,7 +83,17 @@ def disaggregate(edges, totals, grid, *, kind="totals", lo=None, hi=None, alpha=
     opt = _options(kind, lo, hi, alpha)
     t = np.moveaxis(np.asarray(totals, dtype=np.float64), axis, -1)
     e = np.asarray(edges, dtype=np.float64)
-    g = np.asarray(grid, dtype=np.float64)
+    if (grid is None) == (per_bin is None):
+        raise ValueError("give either grid or per_bin")
+    if per_bin is not None:
+        per_bin = int(per_bin)
+        if kind != "totals" or per_bin < 1:
+            raise ValueError("per_bin (>= 1) gives cell totals only (kind='totals')")
+        opt[0] = 3.0
+        # the grid argument only carries the output length (zero strides)
+        g = np.broadcast_to(np.float64(0.0), (t.shape[-1] * per_bin,))
+    else:
+        g = np.asarray(grid, dtype=np.float64)
     if e.shape[-1:] != (t.shape[-1] + 1,):
         raise TrigsplineError(STATUS_NAMES.index("TS_ERR_LENGTH"),
                               "edges must have one more value than totals along the bins "
@@ -88,6 +102,6 @@ def disaggregate(edges, totals, grid, *, kind="totals", lo=None, hi=None, alpha=
     out, status, index = _histo.disaggregate(e, t, g, opt)
     if errors == "raise":
         _raise_first(status, index)
-    if kind == "totals":
+    if kind == "totals" and per_bin is None:
         out = out[..., 1:]
     return np.moveaxis(out, -1, axis)
