@@ -263,6 +263,11 @@ test-web: web build $(WEB_BUILD)/reference-musl $(WEB_BUILD)/trigspline-musl tes
 	test -e bindings/web/node_modules/playwright-core/package.json || \
 	  (cd bindings/web && npm ci --no-audit --no-fund)
 	bindings/web/test/run.sh $(WEB_OUT) $(WEB_BUILD) build out/web-test
+# ---- rates from bin totals at full size (make test runs 10^4 series) ----
+.PHONY: test-histo
+test-histo: build
+	TS_HISTO_SERIES=200000 build/tests/test_histo
+
 # ---- trust at the edges: thread sanitizer, coverage, fuzzing ----
 .PHONY: tsan coverage fuzz
 
