@@ -81,6 +81,10 @@ check("rows: 16 cells", len(cells) == 16, len(cells))
 check("rows: bin 1 kept", abs(sum(float(c[2]) for c in cells[4:12]) - 4.0) <= 1e-14, cells)
 check("rows: last bin dry", all(float(c[2]) == 0.0 for c in cells[12:]), cells[12:])
 
+# a step that is a whole fraction only to rounding: 24 cells a bin, not 25
+rc, out, err = run(["--step", repr(1 / 24)], "0,1\n1,2\n")
+check("step 1/24: 48 cells", rc == 0 and len(out.splitlines()) == 49, len(out.splitlines()))
+
 # the rate
 rc, out, err = run(["--step", "0.1", "--rate"], "0,0\n1,5\n2,0\n")
 r = [float(ln.split(",")[1]) for ln in out.splitlines()[1:]]

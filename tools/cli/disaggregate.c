@@ -295,7 +295,11 @@ int cli_disaggregate(int argc, char **argv)
                                                          : CLI_DATA;
     }
     double e0 = b.e[0], en = b.e[b.n];
-    double cells = ceil((en - e0) / step);
+    /* a whole number of steps to rounding (a step such as 1/24) is that
+     * number, not one more cell of a few ulps */
+    double span = (en - e0) / step, cells = nearbyint(span);
+    if (!(fabs(span - cells) <= 1e-9 * span))
+        cells = ceil(span);
     if (!(cells >= 1.0 && cells <= 1e9)) {
         cli_error("disaggregate: --step %s gives %.0f cells", o.step, cells);
         ts_histo_free(h);
