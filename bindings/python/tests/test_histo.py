@@ -145,6 +145,9 @@ def test_xarray_numpy_and_dask():
     assert (r.values >= 0).all()
     with pytest.raises(ValueError):
         da.trigspline.disaggregate(time="7h")  # 30 days are not whole 7 h steps
+    ds = xr.Dataset({"rain": da, "elev": ("station", np.arange(6.0))})
+    dh = ds.trigspline.disaggregate(time="1h")
+    assert np.array_equal(dh["rain"].values, h.values) and "elev" in dh
     num = xr.DataArray([0.0, 3.0, 0.0], dims="x", coords={"x": [0.0, 2.0, 4.0]})
     cells = num.trigspline.disaggregate(x=0.5)
     assert cells.sizes["x"] == 12 and abs(float(cells.sum()) - 3.0) < 1e-14

@@ -16,7 +16,7 @@ import xarray as xr
 
 from . import histo
 
-__all__ = ["disaggregate_dataarray"]
+__all__ = ["disaggregate_dataarray", "disaggregate_dataset"]
 
 
 def _step_and_positions(coord, step, width):
@@ -112,3 +112,21 @@ def disaggregate_dataarray(da, indexers=None, *, kind="totals", lo=None, hi=None
                          dask_gufunc_kwargs={"output_sizes": {new: m}})
     out = out.rename({new: dim}).assign_coords({dim: newc})
     return out.transpose(*da.dims)
+
+
+def disaggregate_dataset(ds, indexers=None, **kwargs):
+    """``ds.trigspline.disaggregate(time="1h")``: every numeric data variable
+    holding the dimension, as ``DataArray.trigspline.disaggregate``; the
+    others are kept, those without the dimension unchanged."""
+    ind = dict(indexers or {}, **{k: v for k, v in kwargs.items() if k in ds.dims})
+    opts = {k: v for k, v in kwargs.items() if k not in ds.dims}
+    if len(ind) != 1:
+        raise ValueError("disaggregate: give exactly one dim=step (got %s)" % (list(ind),))
+    (dim, _), = ind.items()
+    out = {}
+    for name, var in ds.data_vars.items():
+        if dim in var.dims and var.dtype.kind in "fiu":
+            out[name] = disaggregate_dataarray(var, ind, **opts)
+        elif dim not in var.dims:
+            out[name] = var
+    return xr.Dataset(out, attrs=ds.attrs)

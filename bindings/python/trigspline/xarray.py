@@ -457,6 +457,10 @@ class TrigsplineDatasetAccessor:
 
     interp.__doc__ = TrigsplineAccessor.interp.__doc__
 
+    def disaggregate(self, indexers=None, **kwargs):
+        from .histo_xarray import disaggregate_dataset
+        return disaggregate_dataset(self._obj, indexers, **kwargs)
+
 
 def _register():
     with warnings.catch_warnings():
