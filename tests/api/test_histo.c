@@ -477,6 +477,13 @@ static void errors(void)
     CHECK(ts_histo_new(e, Tc, 3, &o, &h, &err) == TS_ERR_INFEASIBLE);
     CHECK(ts_histo_check(e, T, 3, NULL, bs, &err) == TS_OK && bs[2] == TS_OK);
     CHECK(ts_histo_check(NULL, T, 3, NULL, bs, &err) == TS_ERR_NULL);
+    CHECK(ts_histo_check(e, T, 0, NULL, bs, &err) == TS_ERR_TOO_FEW);
+    ts_histo_options_init(&o);
+    o.struct_size = 1;
+    CHECK(ts_histo_check(e, T, 3, &o, bs, &err) == TS_ERR_VERSION);
+    CHECK(ts_histo_check(e, Tn, 3, NULL, NULL, &err) == TS_ERR_NEGATIVE && err.index == 1);
+    CHECK(ts_histo_check(eu, T, 3, NULL, bs, &err) == TS_ERR_UNSORTED);
+    CHECK(bs[0] == TS_OK && bs[1] == TS_ERR_UNSORTED && bs[2] == TS_ERR_UNSORTED);
 
     /* evaluation */
     CHECK(ts_histo_new(e, T, 3, NULL, &h, &err) == TS_OK && err.status == TS_OK);
@@ -505,6 +512,8 @@ static void errors(void)
     g[2] = 5;
     CHECK(ts_histo_totals(h, g, 3, out, &err) == TS_ERR_DOMAIN && err.index == 2 && isnan(out[0]));
     CHECK(ts_histo_totals(h, NULL, 3, out, &err) == TS_ERR_NULL);
+    CHECK(ts_histo_totals(NULL, g, 3, out, &err) == TS_ERR_NULL);
+    CHECK(ts_histo_eval_batch(NULL, xq, 3, rq, dq, &err) == TS_ERR_NULL);
     CHECK(ts_histo_totals(h, g, 1, NULL, &err) == TS_OK);
     g[2] = 3;
     CHECK(ts_histo_totals(h, g, 3, out, &err) == TS_OK);
