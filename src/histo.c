@@ -79,7 +79,7 @@ static void set_status(ts_status *st, size_t j, ts_status s)
 
 /* The checks of ts_histo_new in their order; st (may be NULL) per bin. */
 static ts_status analyse(const double *e, const double *T, size_t n, const ts_histo_options *o,
-                         ts_status *st, ts_error *err)
+                         ts_status *st, double *rho, ts_error *err)
 {
     ts_status first = TS_OK;
     size_t fi = TS_NO_INDEX;
@@ -121,6 +121,8 @@ static ts_status analyse(const double *e, const double *T, size_t n, const ts_hi
     for (size_t j = 0; j < n && edges_ok; j++) {
         ts_status s = TS_OK;
         double r = isfinite(T[j]) ? rho_of(e, T, j, o->lo, o->hi) : (double)NAN;
+        if (rho)
+            rho[j] = r;
         if (!isfinite(T[j]))
             s = TS_ERR_NONFINITE;
         else if (!(fabs(r) <= HMEAN_MAX))
@@ -189,7 +191,7 @@ ts_status ts_histo_check(const double *edges, const double *totals, size_t n_bin
     ts_status s = check_args(edges, totals, n_bins, opt, &o, err);
     if (s != TS_OK)
         return s;
-    return analyse(edges, totals, n_bins, &o, status, err);
+    return analyse(edges, totals, n_bins, &o, status, NULL, err);
 }
 
 /* §12.3: the inverse of the matrix of (12.3) times 2400 (exact: its
@@ -264,13 +266,15 @@ static int build_bin(ts_histo *h, size_t j, double rho, const double *y, const d
         else if (x > H)
             lam = fmin(lam, (H - z) / (x - z));
     }
-    lam = lam > 0.0 ? lam * HSHRINK : 0.0;
-    double Y[5], E[5];
-    for (int k = 0; k < 5; k++) {
-        Y[k] = (k == 0 || k == 4) ? YZ[k] : YZ[k] + lam * (YX[k] - YZ[k]);
-        E[k] = (k == 0 || k == 4) ? EZ[k] : EZ[k] + lam * (EX[k] - EZ[k]);
+    /* the control values are linear in the knot data: blend them directly
+     * (the edge ones are the same in X and Z, so they stay exact) */
+    if (lam == 1.0) {
+        memcpy(B, BX, sizeof BX);
+    } else {
+        lam = lam > 0.0 ? lam * HSHRINK : 0.0;
+        for (int l = 0; l < HB; l++)
+            B[l] = BZ[l] + lam * (BX[l] - BZ[l]);
     }
-    controls(Y, E, B);
     if (inside(B, H))
         return 1;
     memcpy(B, BZ, sizeof BZ);
@@ -303,9 +307,6 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
     /* doubles: e (n+1), B (HB n), tot (n), y (n+1), sg (n+1), rho (n); flags n */
     if (n_bins > (SIZE_MAX / sizeof(double) - 3) / (HB + 4))
         return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
-    st = analyse(edges, totals, n_bins, &o, NULL, err);
-    if (st != TS_OK)
-        return st;
     size_t n = n_bins;
     ts_histo *h = ts__calloc(1, sizeof *h);
     double *work = ts__malloc((3 * n + 2) * sizeof(double));
@@ -318,6 +319,14 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
         release(h);
         return ts__fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
     }
+    double *y = work, *sg = work + (n + 1), *rho = work + 2 * (n + 1);
+    st = analyse(edges, totals, n_bins, &o, NULL, rho, err);
+    if (st != TS_OK) {
+        free(work);
+        free(zs);
+        release(h);
+        return st;
+    }
     h->n = n;
     h->lo = o.lo;
     h->hi = o.hi;
@@ -325,9 +334,6 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
     h->B = h->e + (n + 1);
     h->tot = h->B + HB * n;
     memcpy(h->e, edges, (n + 1) * sizeof(double));
-    double *y = work, *sg = work + (n + 1), *rho = work + 2 * (n + 1);
-    for (size_t j = 0; j < n; j++)
-        rho[j] = rho_of(edges, totals, j, o.lo, o.hi);
     /* §12.4: edge values, then the room each bin leaves for its edge slopes */
     y[0] = rho[0];
     y[n] = rho[n - 1];
@@ -667,13 +673,15 @@ ts_status ts_histo_subdivide(const ts_histo *h, size_t sub, double *out, ts_erro
                     c[k - k0][t][l] = (Ib[l] - Ia[l]) / (2.0 * TS_PI);
             }
         }
+        const double lo = h->lo, hi = h->hi; /* locals: out may alias nothing of h */
         for (size_t j = 0; j < n; j++) {
             const double *B = h->B + HB * j;
             double w = h->e[j + 1] - h->e[j], cw = w / (double)sub;
+            double lc = lo * cw, hc = hi * cw;
             double *o = out + j * sub;
-            if (h->tot[j] == h->lo * w) { /* a bin at lo (dry): r ≡ lo */
+            if (h->tot[j] == lo * w) { /* a bin at lo (dry): r ≡ lo */
                 for (size_t k = k0; k < k1; k++)
-                    o[k] = h->lo * cw;
+                    o[k] = lc;
                 continue;
             }
             for (size_t k = k0; k < k1; k++) {
@@ -681,7 +689,9 @@ ts_status ts_histo_subdivide(const ts_histo *h, size_t sub, double *out, ts_erro
                 double(*ck)[4] = c[k - k0];
                 double v = (ck[0][0] * P[0] + ck[0][1] * P[1] + ck[0][2] * P[2] + ck[0][3] * P[3]) +
                            (ck[1][0] * Q[0] + ck[1][1] * Q[1] + ck[1][2] * Q[2] + ck[1][3] * Q[3]);
-                o[k] = clamp_total(h, w * v + h->lo * cw, cw);
+                double x = w * v + lc; /* within [lo, hi] times the width (rounding) */
+                x = x > lc ? x : lc;
+                o[k] = x < hc ? x : hc;
             }
         }
     }
