@@ -514,17 +514,31 @@ ts_status ts_histo_eval_batch(const ts_histo *h, const double *x, size_t m, doub
     return TS_OK;
 }
 
+/* ∫_0^θ A_l for θ in [0, π/4] (ts__basis_int with the kernels' sine and
+ * cosine, ts__sincos_q: 1 − cos without cancellation). */
+static void basis_int_q(double th, double I[4])
+{
+    double s, c, ms, mc;
+    ts__sincos_q(th, &s, &c, &ms, &mc);
+    double sc = s * c, is2 = 0.5 * (th - sc), ic2 = 0.5 * (th + sc);
+    double is3 = mc * (2.0 - c - c * c) / 3.0, ic3 = s - s * s * s / 3.0;
+    I[0] = th - 3.0 * mc + 3.0 * is2 - is3;
+    I[1] = 3.0 * mc - 4.0 * is2 + is3;
+    I[2] = 3.0 * s - 4.0 * ic2 + ic3;
+    I[3] = th - 3.0 * s + 3.0 * ic2 - ic3;
+}
+
 /* §12.2: ∫ over [0, d] of the piece P of width hh, from the nearer end. */
 static double piece_partial(const double *P, double hh, double d)
 {
     double th = TS_HALF_PI * (d / hh), I[4];
     if (th <= 0.5 * TS_HALF_PI) {
-        ts__basis_int(th, sin(th), cos(th), I);
+        basis_int_q(th, I);
         return (hh / TS_HALF_PI) * (I[0] * P[0] + I[1] * P[1] + I[2] * P[2] + I[3] * P[3]);
     }
     double tm = TS_HALF_PI - th;
     tm = tm > 0.0 ? tm : 0.0;
-    ts__basis_int(tm, sin(tm), cos(tm), I);
+    basis_int_q(tm, I);
     return piece_total(P, hh) -
            (hh / TS_HALF_PI) * (I[0] * P[3] + I[1] * P[2] + I[2] * P[1] + I[3] * P[0]);
 }
@@ -602,12 +616,25 @@ ts_status ts_histo_totals(const ts_histo *h, const double *grid, size_t m, doubl
         if (k > 0 && grid[k] < grid[k - 1])
             return ts__fail(err, TS_ERR_UNSORTED, k, TS_WHERE_QUERY);
     }
+    /* integral_ab's expressions, each point's partial integral formed once */
     ts_cursor cur = {0};
     size_t ja = ts__search(h->e, h->n, grid[0], &cur);
+    double Ga = bin_partial(h, ja, grid[0]);
     for (size_t k = 0; k + 1 < m; k++) {
-        size_t jb = ts__search(h->e, h->n, grid[k + 1], &cur);
-        out[k] = clamp_total(h, integral_ab(h, grid[k], ja, grid[k + 1], jb), grid[k + 1] - grid[k]);
+        double a = grid[k], b = grid[k + 1];
+        size_t jb = ts__search(h->e, h->n, b, &cur);
+        double Gb = bin_partial(h, jb, b), v;
+        if (ja == jb) {
+            v = (Gb - Ga) + h->lo * (b - a);
+        } else {
+            v = h->tot[ja] - (Ga + h->lo * (a - h->e[ja]));
+            for (size_t j = ja + 1; j < jb; j++)
+                v += h->tot[j];
+            v += Gb + h->lo * (b - h->e[jb]);
+        }
+        out[k] = clamp_total(h, v, b - a);
         ja = jb;
+        Ga = Gb;
     }
     return TS_OK;
 }
