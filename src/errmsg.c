@@ -398,7 +398,7 @@ static void surface_where(out *o, const ts_error_context *c, const ts_error *e)
     size_t nx = c->n_points, ny = c->ny_points;
     if (e->where == TS_WHERE_POINT && nx && e->index / nx < ny) {
         size_t i = e->index % nx, j = e->index / nx;
-        put(o, "node (%zu, %zu)", i, j);
+        put(o, "node (%zu, %zu)", c->first_index + i, c->first_index + j);
         if (c->x && c->y) {
             put(o, " (x = ");
             xval(o, c, c->x[i]);
@@ -413,7 +413,7 @@ static void surface_where(out *o, const ts_error_context *c, const ts_error *e)
     } else if (e->where == TS_WHERE_INTERVAL && nx > 1 && ny > 1 &&
                e->index / (nx - 1) < ny - 1) {
         size_t i = e->index % (nx - 1), j = e->index / (nx - 1);
-        put(o, "patch (%zu, %zu)", i, j);
+        put(o, "patch (%zu, %zu)", c->first_index + i, c->first_index + j);
         if (c->x && c->y) {
             put(o, " [");
             xval(o, c, c->x[i]);
@@ -426,7 +426,7 @@ static void surface_where(out *o, const ts_error_context *c, const ts_error *e)
             put(o, "]");
         }
     } else {
-        put(o, "%s %zu", where_name(e->where), e->index);
+        put(o, "%s %zu", where_name(e->where), c->first_index + e->index);
     }
 }
 

@@ -44,6 +44,7 @@ import html
 import io
 import json
 import re
+import shlex
 import tempfile
 import xml.etree.ElementTree as ET
 
@@ -98,6 +99,39 @@ def dense(x, m):
                           + [x[-1:]])
 
 
+def check_claims(page):
+    """Every section that shows `trigspline fit` commands says what they do:
+    it speaks of a refusal exactly when one of them exits non-zero (with that
+    exit status shown), and when all succeed its data set has a number, not a
+    refusal, in the summary table.  The commands are re-run here (from the
+    repository, as shown; the page's output directory still exists)."""
+    summary = page[:page.index("<section")]
+    for m in re.finditer(r'<section id="([^"]+)"><h2>(.*?)</h2>(.*?)</section>', page, re.S):
+        key, title, body = m.group(1), html.unescape(m.group(2)), m.group(3)
+        pre = re.search(r"<pre>(.*?)</pre>", body, re.S)
+        if not pre:
+            continue
+        cmds = [html.unescape(c) for c in re.findall(r"^\$ (build/trigspline fit [^\n<]*)", pre.group(1), re.M)]
+        if not cmds:
+            continue
+        status = [subprocess.run([CLI] + shlex.split(c)[1:], cwd=REPO, capture_output=True).returncode
+                  for c in cmds]
+        text = re.sub(r"<[^>]+>", " ", re.sub(r'<div class="svg">.*?</div>', "", body, flags=re.S))
+        refused = any(status)
+        check(refused == bool(re.search(r"refus", text, re.I)),
+              "%s: the section speaks of a refusal exactly when a command exits non-zero (exits %s)" % (key, status))
+        for st in status:
+            check(st == 0 or "(exit status %d)" % st in body, "%s: exit status %d shown" % (key, st))
+        if 'class="ours"' not in body:  # not a comparison with the alternatives
+            continue
+        row = re.search(r"<tr><td>%s</td>(.*?)</tr>" % re.escape(html.escape(title)), summary)
+        check(row is not None, "%s: a summary row" % key)
+        if row and not refused:
+            first = re.search(r"<td[^>]*>([^<]*)</td>", row.group(1)).group(1)
+            check(re.fullmatch(r"[−\d.e+]+( \(\d+\))?", first) is not None,
+                  "%s: the summary states our least gap, not %r" % (key, first))
+
+
 def main():
     if not os.access(os.path.join(BUILD, "gsl_eval"), os.X_OK):
         print("test_why: %s/gsl_eval not built (GSL missing: make why-deps)" % BUILD)
@@ -113,6 +147,7 @@ def main():
             page = fh.read()
         with open(os.path.join(out, "numbers.json")) as fh:
             numbers = json.load(fh)
+        check_claims(page)
     vals = cell_values(page)
 
     # ---- structure
@@ -133,7 +168,14 @@ def main():
         check("…" not in c and "..." not in c, "command in full: %s" % c)
         check(c.startswith("build/trigspline "), "command as typed from the repository: %s" % c)
     check('href="../paper/index.html"' in page, "links the paper page")
-    check("surfaces" in page, "says the gridded field waits for surfaces")
+    check("will be added" not in page and "will\nbe added" not in page, "no promise of what exists already")
+    m = re.search(r"<code>(build/trigspline surface [^<]*)</code>", page)
+    check(m is not None, "names the surface command")
+    if m:
+        q = subprocess.run([CLI] + html.unescape(m.group(1)).split()[1:], cwd=REPO, capture_output=True, text=True)
+        claim = re.search(r"certified: <b>(\w+)</b>", page[m.end():m.end() + 400])
+        check(q.returncode == 0 and claim is not None and claim.group(1) == ("yes" if json.loads(q.stdout)[
+            "certified"] else "no"), "the surface sentence states what the command does (exit %d)" % q.returncode)
     for k in ("rainfall/SciPy CubicSpline/lower", "growth/GSL cspline/lower", "growth/SciPy PCHIP/lower",
               "outline/SciPy CubicSpline/box", "rainfall/ours/lower", "growth/ours/lower", "overshoot/0.1/y_max"):
         check(k in vals, "page states %s" % k)

@@ -310,6 +310,15 @@ static void test_surface_and_curve(void)
     gz[1] = 2;
     ts_error pe = {TS_ERR_INFEASIBLE, 1, TS_WHERE_INTERVAL};
     EXPECT(&pe, &c, "patch (1, 0) [1, 2] x [0, 1]: no beta keeps this interval inside the region");
+    /* first_index shifts both grid indices of nodes and patches (1-based
+     * front-ends such as R name node (2, 1) as z[2, 1]) */
+    c.first_index = 1;
+    EXPECT(&e, &c, "node (3, 2) (x = 2, y = 1, z = -1) is negative; the positive shape needs "
+                   "z >= 0");
+    EXPECT(&pe, &c, "patch (2, 1) [1, 2] x [0, 1]: no beta keeps this interval inside the region");
+    ts_error off = {TS_ERR_INFEASIBLE, 7, TS_WHERE_INTERVAL}; /* beyond the grid: index only */
+    EXPECT(&off, &c, "interval 8: no beta keeps this interval inside the region");
+    c.first_index = 0;
 
     TH_CASE("curve point");
     double pts[] = {0, 0, 2, 0.5, 1, 1};

@@ -22,6 +22,7 @@
  *   args.c         argv -> cli_opts / cli_surface_opts
  *   curve_json.c   the JSON report of a parametric curve
  *   curve_plot.c   the SVG plot of a parametric curve
+ *   surface_plot.c the SVG heatmap of a surface
  *   fit.c, certify.c, curve.c   the commands
  *   surface.c      the surface command (gridded data)
  *   main.c         picks the command
@@ -125,6 +126,16 @@ typedef struct cli_opts {
     int box_set;
     double box[6]; /* xmin, xmax, ymin, ymax[, zmin, zmax]; ±inf = absent */
     size_t n_box;
+
+    /* reading DATA, more (table.c) */
+    const char *date_format; /* --date-format: x read with tsu_parse_time_format */
+    int units_row;           /* --units-row: the line after the header is skipped */
+    /* --step S: samples at the multiples of S (of the seconds of step_unit for
+     * a time x; step_unit 0: a plain number) */
+    int step_set;
+    double step;
+    double step_unit;
+    const char *step_text;
 } cli_opts;
 
 /* ---- names.c --------------------------------------------------------- */
@@ -159,6 +170,9 @@ int cli_report_io(const tsu_io_error *e);
 int cli_usage(cli_cmd cmd, const char *fmt, ...) CLI_PRINTF(2, 3);
 /* Shortest round-trip text of v (tsu_format_double). */
 const char *cli_num(double v, char buf[TSU_FMT_SIZE]);
+/* v to sig significant digits (1 to 17; "%.*g" without trailing zeros), for
+ * texts meant for a reader rather than for a program: 4.69, -2.69e+05. */
+const char *cli_num_sig(double v, int sig, char buf[TSU_FMT_SIZE]);
 /* "y = M*x + C" into buf. */
 void cli_line_text(const ts_line *l, char *buf, size_t len);
 /* "out of memory"; returns the exit status for it. */
@@ -242,6 +256,23 @@ int cli_sample_after(const ts_spline *s, size_t i0, size_t i1, int with_end, siz
  * errno of the sink, or -1: an evaluation failed (outside the data without
  * --extrapolate; *err, *bad_x). */
 int cli_sample_even(const ts_spline *s, double a, double b, size_t n, int deriv, cli_sink sink,
+                    void *ctx, ts_error *err, double *bad_x);
+/* Points at a step: x_j = base + j * num / den for j = j0 .. j0 + n - 1
+ * (num, den integers, so that a decimal step such as 0.1 gives the doubles
+ * nearest to 0.3, 0.7, ...; den 1 and num any double when the step has too
+ * many digits). */
+typedef struct cli_step_grid {
+    double base, num, den, j0;
+    size_t n;
+} cli_step_grid;
+double cli_step_x(const cli_step_grid *g, double j);
+/* The grid of step text (a decimal number) times unit over [a, b]: aligned
+ * (the multiples of the step counted from base) or from a.  0, or -1 when
+ * more than max points (g->n is then max + 1). */
+int cli_step_grid_make(const char *text, double unit, double a, double b, int aligned,
+                       double base, size_t max, cli_step_grid *g);
+/* The points of g (as cli_sample_even). */
+int cli_sample_step(const ts_spline *s, const cli_step_grid *g, int deriv, cli_sink sink,
                     void *ctx, ts_error *err, double *bad_x);
 
 /* Growable pair of double arrays (failed: an allocation failed, nothing
@@ -522,6 +553,16 @@ void cli_curve_json(cli_json *j, const cli_opts *o, const cli_curve_run *cr);
 /* The plot of curve --svg into svg.  CLI_OK or CLI_IO (message printed). */
 int cli_curve_plot(const cli_opts *o, const cli_data *d, const cli_curve_run *cr,
                    tsu_plot_buf *svg);
+
+/* ---- surface_plot.c -------------------------------------------------- */
+/* The heatmap of surface s through the grid x, y, z (z[j*nx + i]) built with
+ * so: viridis, or a diverging map centred on 0 when the values straddle 0;
+ * contours, axis ticks, colour bar; the patches where the shape scheme
+ * acts (the surface built without it leaves the bounds; else active[c])
+ * hatched.  rep, active: per patch, or NULL.  0 or ENOMEM. */
+int cli_surface_plot(const double *x, size_t nx, const double *y, size_t ny, const double *z,
+                     const ts_surface *s, const ts_surface_options *so,
+                     const ts_patch_report *rep, const int *active, tsu_plot_buf *svg);
 
 /* ---- fit.c, certify.c, curve.c, surface.c ---------------------------- */
 int cli_fit(cli_opts *o);

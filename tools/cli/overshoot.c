@@ -52,6 +52,21 @@ double cli_overshoot_ratio(const cli_overshoot *w)
     return range > 0.0 ? e / range : (double)INFINITY;
 }
 
+/* x inside [x0, x1] for a reader: a date to the second, a number to three
+ * significant digits of its place in the interval (more when x is large
+ * against the interval's width). */
+static const char *x_near(const cli_cols *c, double x, double x0, double x1,
+                          char buf[TSU_TIME_SIZE])
+{
+    if (c && c->x_time)
+        return cli_x_text(c, nearbyint(x), buf);
+    double big = fabs(x0) > fabs(x1) ? fabs(x0) : fabs(x1), w = x1 - x0;
+    int sig = 3;
+    if (w > 0.0 && big > w)
+        sig += (int)ceil(log10(big / w));
+    return cli_num_sig(x, sig, buf);
+}
+
 void cli_overshoot_warn(const cli_overshoot *w, const cli_cols *c)
 {
     double ratio = cli_overshoot_ratio(w);
@@ -68,11 +83,11 @@ void cli_overshoot_warn(const cli_overshoot *w, const cli_cols *c)
     cli_error("warning: the curve %s %s %s its data in interval %zu [%s, %s] (to %s at x = %s; "
               "%s the data range %s); a certificate covers the bounds, not overshoot: a larger "
               "--alpha reduces it",
-              up ? "rises" : "dips", cli_num(up ? w->above : w->below, b[0]),
+              up ? "rises" : "dips", cli_num_sig(up ? w->above : w->below, 3, b[0]),
               up ? "above" : "below", up ? w->i_above : w->i_below, cli_x_text(c, r->x0, b[1]),
-              cli_x_text(c, r->x1, b[2]), cli_num(up ? r->y_max : r->y_min, b[3]),
-              cli_x_text(c, up ? r->at_y_max : r->at_y_min, b[4]), pct,
-              cli_num(w->data_max - w->data_min, b[5]));
+              cli_x_text(c, r->x1, b[2]), cli_num_sig(up ? r->y_max : r->y_min, 3, b[3]),
+              x_near(c, up ? r->at_y_max : r->at_y_min, r->x0, r->x1, b[4]), pct,
+              cli_num_sig(w->data_max - w->data_min, 3, b[5]));
 }
 
 void cli_overshoot_json(cli_json *j, const cli_overshoot *w)

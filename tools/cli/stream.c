@@ -77,7 +77,7 @@ static size_t npts(const stream *s)
 int cli_can_stream(const cli_opts *o)
 {
     return o->cmd == CLI_FIT && !o->json && !o->svg && !o->at && !o->alphas && !o->betas &&
-           !o->grid_set && !o->samples_total &&
+           !o->grid_set && !o->samples_total && !o->step_set &&
            o->slopes != TS_SLOPES_PERIODIC && !o->no_stream;
 }
 
