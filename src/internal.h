@@ -25,6 +25,7 @@
  *   L4  spline.c, curve.c, eval.c, report.c, accuracy.c: the public API
  *       find.c, solve.c: interval search, the roots of S − y
  *       surface.c, surface_eval.c: the public surface API
+ *       histo.c: rates from bin totals (the public histogram API)
  *   L5  errmsg.c    the full sentence of an error (ts_error_message)
  *   L6  deprecated.c  the 0.1 names, each calling its new public name (the
  *                     one file allowed to call public entry points) */

@@ -164,7 +164,7 @@ def main():
     cmds = [html.unescape(c) for c in re.findall(r"(?:^|<pre>)\$ ([^\n<]*)", page, re.M)]
     check(len(cmds) >= 12, "commands shown (%d)" % len(cmds))
     for c in cmds:
-        check("--form " in c or " curve " in c, "command states --form: %s" % c)
+        check("--form " in c or " curve " in c or " disaggregate " in c, "command states --form: %s" % c)
         check("…" not in c and "..." not in c, "command in full: %s" % c)
         check(c.startswith("build/trigspline "), "command as typed from the repository: %s" % c)
     check('href="../paper/index.html"' in page, "links the paper page")
@@ -245,7 +245,34 @@ def main():
           "overshoot example: page y_max %r, sampled %r" % (vals["overshoot/0.1/y_max"], ymax))
     check(ymax > 1.2 * float(np.max(read_xy("rainfall_daily.csv")[1])), "the example does overshoot")
     check("warning: the curve rises" in page, "the page shows the CLI's overshoot warning")
+
+    # ---- daily rain to hourly (docs/method.md §12): ours keeps totals and
+    # signs; PCHIP's corners and the naive cubic's negatives re-derived
+    mm = read_xy("rainfall_daily.csv")[1]
+    n = len(mm)
+    check(vals.get("disagg/trigspline/negative") == 0, "ours: no negative hour")
+    check(vals.get("disagg/trigspline/total_error", 1.0) <= 1e-13, "ours: totals kept")
+    check(vals.get("disagg/trigspline/dry_error", 1.0) == 0, "ours: dry days dry")
+    check(vals.get("disagg/PCHIP/negative") == 0, "PCHIP on the cumulative: no negative hour")
+    mid = 24.0 * (np.arange(n) + 0.5)
+    naive = CubicSpline(mid, mm / 24.0)
+    cells = np.array([naive.integrate(a, a + 1.0, extrapolate=True) for a in range(24 * n)])
+    check(vals.get("disagg/cubic/negative") == int(np.sum(cells < 0)),
+          "naive cubic: negative hours %r, re-derived %d" % (vals.get("disagg/cubic/negative"),
+                                                               int(np.sum(cells < 0))))
+    e = np.arange(n + 1.0) * 24.0
+    P = PchipInterpolator(e, np.concatenate([[0.0], np.cumsum(mm)]))
+    d2 = P.derivative(2)
+    J = float(np.max(np.abs(d2(e[1:-1] + 1e-9) - d2(e[1:-1] - 1e-9))))   # r' jumps, exact to 1e-9
+    # the page's one-sided differences over 1 min differ from the exact
+    # jump by at most (1/60 h) max|r''| (r'' = C''' = 6 c0, constant per day)
+    bound = (1.0 / 60.0) * float(np.max(np.abs(6.0 * P.c[0]))) + 1e-9
+    # (printed to 3 significant digits: 5e-3 relative)
+    check(abs(vals.get("disagg/PCHIP/slope_jump", -1.0) - J) <= bound + 5e-3 * J,
+          "PCHIP slope jump: page %r, exact %r (bound %r)" % (vals.get("disagg/PCHIP/slope_jump"), J, bound))
+    check(vals.get("disagg/trigspline/slope_jump", 1.0) <= 1e-3 * J, "ours: no corner at the day boundaries")
     return 0 if failed == 0 else 1
+
 
 
 if __name__ == "__main__":

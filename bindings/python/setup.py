@@ -89,6 +89,7 @@ def extension(name, source):
 EXT_MODULES = [
     extension("trigspline._core", "src/_core.c"),
     extension("trigspline._gufunc", "src/_gufunc.c"),
+    extension("trigspline._histo", "src/_histo.c"),
 ]
 
 

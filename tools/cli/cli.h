@@ -570,5 +570,7 @@ int cli_certify(cli_opts *o);
 int cli_curve(cli_opts *o);
 /* The whole surface command (argv after "surface"). */
 int cli_surface(int argc, char **argv);
+/* disaggregate.c: trigspline disaggregate (bin totals to a finer grid). */
+int cli_disaggregate(int argc, char **argv);
 
 #endif

@@ -418,6 +418,10 @@ class TrigsplineAccessor:
 
     interp.__doc__ = _options.fill(_DOC)
 
+    def disaggregate(self, indexers=None, **kwargs):
+        from .histo_xarray import disaggregate_dataarray
+        return disaggregate_dataarray(self._obj, indexers, **kwargs)
+
 
 class TrigsplineDatasetAccessor:
     """``Dataset.trigspline``: every data variable holding the dimension is
@@ -454,6 +458,10 @@ class TrigsplineDatasetAccessor:
         return result
 
     interp.__doc__ = TrigsplineAccessor.interp.__doc__
+
+    def disaggregate(self, indexers=None, **kwargs):
+        from .histo_xarray import disaggregate_dataset
+        return disaggregate_dataset(self._obj, indexers, **kwargs)
 
 
 def _register():
