@@ -3,7 +3,10 @@
  * FORM paper | c1 | geometric | gsl (GSL steffen, gsl_interp_eval + accel);
  * ISA 0 portable, 1 AVX2+FMA, 2 AVX-512F (valgrind has no AVX-512);
  * ORDER sorted | random.  The bench's data at 10001 knots, 1e5 queries;
- * instructions per point = the Ir of `measured` / 1e5. */
+ * instructions per point = the Ir of `measured` / 1e5.  With ICOUNT_REPS=r
+ * in the environment it also times r runs (thread CPU time) and prints the
+ * minimum and median ns per point. */
+#define _POSIX_C_SOURCE 200809L
 #include "trigspline.h"
 #include "internal.h"
 
@@ -14,6 +17,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #define NP 10001
 #define M 100000
@@ -70,6 +74,25 @@ int main(int argc, char **argv)
             return 1;
     }
     int ok = measured(s, g, acc, deriv, isa);
+    const char *reps_env = getenv("ICOUNT_REPS");
+    int reps = reps_env ? atoi(reps_env) : 0;
+    if (reps > 0 && reps <= 1000) {
+        double t[1000];
+        for (int r = 0; r < reps; r++) {
+            struct timespec a, b;
+            clock_gettime(CLOCK_THREAD_CPUTIME_ID, &a);
+            measured(s, g, acc, deriv, isa);
+            clock_gettime(CLOCK_THREAD_CPUTIME_ID, &b);
+            t[r] = ((double)(b.tv_sec - a.tv_sec) * 1e9 + (double)(b.tv_nsec - a.tv_nsec)) / M;
+        }
+        for (int a = 1; a < reps; a++) /* insertion sort */
+            for (int b = a; b > 0 && t[b - 1] > t[b]; b--) {
+                double u = t[b];
+                t[b] = t[b - 1];
+                t[b - 1] = u;
+            }
+        printf("ns/point: min %.3f median %.3f\n", t[0], t[reps / 2]);
+    }
     double sum = 0.0;
     for (size_t j = 0; j < M; j++)
         sum += Y[j];

@@ -1,17 +1,18 @@
 /* Batch evaluation kernels for every form.
  *
  * ts__fast_batch works on blocks of TS_FAST_BLOCK queries; the block's scratch
- * is on the stack (< 8 KiB), nothing is allocated.
+ * is on the stack (< 16 KiB), nothing is allocated.
  *  1. check: a sorted block is inside [x0, xn] when its two ends are; an
  *     unsorted one is checked query by query (NaN fails every comparison).
  *     A block with a query outside goes back to eval.c.
  *  2. stage: the interval is ts__locate's (largest i <= n−1 with x_i <= x:
- *     the right-hand one at an inner knot).  A sorted block walks the cursor
- *     with the current interval's values in registers, galloping over gaps;
- *     an unsorted block runs one branch-free binary search per query, all
- *     queries advancing a level at a time so their cache misses overlap.
- *     Per query: tu = (x − x_i)·w, tv = (x_{i+1} − x)·w, w = (π/2)/h_i, and
- *     B0..B3 — exactly the products eval.c's eval_in forms.
+ *     the right-hand one at an inner knot).  A sorted block walks the cursor,
+ *     galloping over gaps, and writes each interval's values (x_i, x_{i+1},
+ *     w = (π/2)/h_i, B0..B3) over its run of queries with whole-vector stores
+ *     (a store per value and vector width, not per query: the per-query
+ *     stores bounded the kernel); an unsorted block runs one branch-free
+ *     binary search per query, all queries advancing a level at a time so
+ *     their cache misses overlap, and stages each query's interval.
  *  3. evaluate, in a straight loop the compiler vectorises, always over a
  *     whole block (a short one padded) into an aligned buffer, so that a
  *     query's value does not depend on where it sits in the batch: from the nearer
@@ -41,6 +42,7 @@
 #define TS_TARGET_512 "avx512f,fma"
 #else /* GCC otherwise keeps 256-bit vectors */
 #define TS_TARGET_512 "avx512f,fma,prefer-vector-width=512"
+
 #endif
 #else
 #define TS_FAST_X86 0
@@ -80,19 +82,27 @@ TS_ALWAYS_INLINE size_t gallop(const double *xs, size_t n, size_t i, double x)
 
 /* ---- stage ----------------------------------------------------------- */
 
-/* Per query: θ measured from both ends, tu = (x − x_i)·w and tv = (x_{i+1} − x)·w
- * (w = (π/2)/h_i, dθ/dx; the products eval.c forms), and B0..B3, one array
- * each (the vector loop loads them without shuffles).  The evaluation uses
- * the nearer end, as eval.c: ϑ = min(tu, tv) <= π/4 and, from the right end,
- * the control values reversed (docs/method.md §2: A3(θ) = A0(π/2 − θ),
- * A2(θ) = A1(π/2 − θ)) and dϑ/dθ = −1.  Choosing in the vector loop keeps
- * this loop free of data-dependent branches.  A flat interval (B0 = B1 = B2
- * = B3) is staged with w = 0: ϑ = 0 gives A = (1, 0, 0, 0) exactly, so its
- * value is B0 (Σ A_l need not round to 1 elsewhere) and its derivatives 0,
- * without a test per query. */
+/* Per query: its interval's ends x_i, x_{i+1}, w = (π/2)/h_i (dθ/dx) and
+ * B0..B3, one array each.  Sorted queries meet few intervals per block, so
+ * the staging writes each interval's values over its run of queries with
+ * whole-vector stores (TS_FAST_RUN at a time, the last one spilling past the
+ * run, to be overwritten by the next run or left in the arrays' slack); the
+ * vector loop forms tu = (x − x_i)·w and tv = (x_{i+1} − x)·w, the products
+ * eval.c's eval_in forms, and uses the nearer end, as eval.c: ϑ = min(tu, tv)
+ * <= π/4 and, from the right end, the control values reversed
+ * (docs/method.md §2: A3(θ) = A0(π/2 − θ), A2(θ) = A1(π/2 − θ)) and dϑ/dθ =
+ * −1.  Choosing in the vector loop keeps the staging free of data-dependent
+ * branches but the cursor's advance.  A flat interval (B0 = B1 = B2 = B3) is
+ * staged with w = 0: ϑ = 0 gives A = (1, 0, 0, 0) exactly, so its value is B0
+ * (Σ A_l need not round to 1 elsewhere) and its derivatives 0, without a
+ * test per query.  q: the block's queries when it is short, padded with its
+ * first (a whole block is read in place). */
+#define TS_FAST_RUN 8
 typedef struct fast_stage {
-    double tu[TS_FAST_BLOCK], tv[TS_FAST_BLOCK], w[TS_FAST_BLOCK]; /* w: derivatives only */
-    double b0[TS_FAST_BLOCK], b1[TS_FAST_BLOCK], b2[TS_FAST_BLOCK], b3[TS_FAST_BLOCK];
+    double x0[TS_FAST_BLOCK + TS_FAST_RUN], x1[TS_FAST_BLOCK + TS_FAST_RUN], w[TS_FAST_BLOCK + TS_FAST_RUN];
+    double b0[TS_FAST_BLOCK + TS_FAST_RUN], b1[TS_FAST_BLOCK + TS_FAST_RUN];
+    double b2[TS_FAST_BLOCK + TS_FAST_RUN], b3[TS_FAST_BLOCK + TS_FAST_RUN];
+    double q[TS_FAST_BLOCK];
 } fast_stage;
 
 typedef struct fast_iv {
@@ -109,38 +119,61 @@ TS_ALWAYS_INLINE fast_iv fast_interval(const ts_spline *sp, size_t i)
     return v;
 }
 
-TS_ALWAYS_INLINE void stage_one(fast_stage *st, size_t j, double x, const fast_iv *v, int want_w)
+/* Interval v's values into places [j0, j1) (j0 < j1), run (<= TS_FAST_RUN,
+ * a vector's width; a constant at each call) at a time. */
+TS_ALWAYS_INLINE void stage_run(fast_stage *st, size_t j0, size_t j1, const fast_iv *v, size_t run)
 {
-    st->tu[j] = (x - v->x0) * v->w;
-    st->tv[j] = (v->x1 - x) * v->w;
-    if (want_w)
-        st->w[j] = v->w;
+    size_t j = j0;
+    do {
+        for (size_t l = 0; l < run; l++) { /* whole-vector stores */
+            st->x0[j + l] = v->x0;
+            st->x1[j + l] = v->x1;
+            st->w[j + l] = v->w;
+            st->b0[j + l] = v->b0;
+            st->b1[j + l] = v->b1;
+            st->b2[j + l] = v->b2;
+            st->b3[j + l] = v->b3;
+        }
+        j += run;
+    } while (j < j1);
+}
+
+/* Place j: interval v (one query). */
+TS_ALWAYS_INLINE void stage_one(fast_stage *st, size_t j, const fast_iv *v)
+{
+    st->x0[j] = v->x0;
+    st->x1[j] = v->x1;
+    st->w[j] = v->w;
     st->b0[j] = v->b0;
     st->b1[j] = v->b1;
     st->b2[j] = v->b2;
     st->b3[j] = v->b3;
 }
 
-/* Sorted q[0..nb), xs[i] <= q[0]: walk the cursor; the current interval's
- * values stay in registers.  want_w is a constant at each call. */
-TS_ALWAYS_INLINE size_t stage_sorted(const ts_spline *sp, const double *q, size_t nb, int want_w,
-                                     fast_stage *st, size_t i)
+/* Sorted q[0..nb), xs[i] <= q[0]: walk the cursor, staging each interval's
+ * run of queries when the walk leaves it; the next knot stays in a register. */
+TS_ALWAYS_INLINE size_t stage_sorted(const ts_spline *sp, const double *q, size_t nb, fast_stage *st, size_t i,
+                                     size_t run)
 {
     const double *xs = sp->x;
-    size_t n = sp->n;
-    fast_iv v = fast_interval(sp, i);
-    double next = i + 1 < n ? v.x1 : (double)INFINITY; /* the last interval never advances */
+    size_t n = sp->n, j0 = 0;
+    double next = i + 1 < n ? xs[i + 1] : (double)INFINITY; /* the last interval never advances */
     for (size_t j = 0; j < nb; j++) {
         double x = q[j];
         if (x >= next) {
+            if (j > j0) {
+                fast_iv v = fast_interval(sp, i);
+                stage_run(st, j0, j, &v, run);
+            }
+            j0 = j;
             i++;
             if (i + 1 < n && xs[i + 1] <= x)
                 i = gallop(xs, n, i, x);
-            v = fast_interval(sp, i);
-            next = i + 1 < n ? v.x1 : (double)INFINITY;
+            next = i + 1 < n ? xs[i + 1] : (double)INFINITY;
         }
-        stage_one(st, j, x, &v, want_w);
     }
+    fast_iv v = fast_interval(sp, i);
+    stage_run(st, j0, nb, &v, run);
     return i;
 }
 
@@ -213,8 +246,8 @@ TS_ALWAYS_INLINE int all_inside(const double *q, size_t nb, double x0, double xn
 /* Stages q[0..nb) (1 <= nb <= TS_FAST_BLOCK) into st, or into gs for the
  * geometric form (gs != NULL); *cur is the cursor, left on the last query's
  * interval.  Returns 0, without staging, if a query is outside [x0, xn] or NaN. */
-TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb, int want_w,
-                                 fast_stage *st, geo_stage *gs, size_t *cur)
+TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb, fast_stage *st,
+                                 geo_stage *gs, size_t *cur, size_t run)
 {
     const double *xs = sp->x;
     size_t n = sp->n, i = *cur;
@@ -232,7 +265,7 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
         if (gs)
             *cur = geo_stage_sorted(sp, q, nb, gs, i);
         else
-            *cur = want_w ? stage_sorted(sp, q, nb, 1, st, i) : stage_sorted(sp, q, nb, 0, st, i);
+            *cur = stage_sorted(sp, q, nb, st, i, run);
         return 1;
     }
     /* one binary search per query, all advancing a level at a time */
@@ -252,7 +285,7 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
             geo_stage_one(gs, j, q[j], &g);
         } else {
             fast_iv v = fast_interval(sp, i);
-            stage_one(st, j, q[j], &v, want_w);
+            stage_one(st, j, &v);
         }
     }
     *cur = i;
@@ -264,10 +297,11 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
 /* s = sin ϑ, c = cos ϑ, ms = 1 − s, mc = 1 − c for ϑ in [0, π/4]: internal.h. */
 #define fast_trig ts__sincos_q
 
-/* Query j seen from its nearer end: ϑ, the control values B', and the sign
- * of dϑ/dθ as ±1. */
-#define TS_FAST_NEAR(st, j)                                                        \
-    double tu = (st)->tu[j], tv = (st)->tv[j];                                     \
+/* Query j (at q[j]) seen from its nearer end: w, ϑ, the control values B',
+ * and the side. */
+#define TS_FAST_NEAR(st, q, j)                                                     \
+    double x = (q)[j], w = (st)->w[j];                                             \
+    double tu = (x - (st)->x0[j]) * w, tv = ((st)->x1[j] - x) * w;                 \
     int left = tu <= tv;                                                           \
     double b0 = (st)->b0[j], b1 = (st)->b1[j], b2 = (st)->b2[j], b3 = (st)->b3[j]; \
     double B0 = left ? b0 : b3, B1 = left ? b1 : b2;                               \
@@ -275,32 +309,32 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
     double s, c, ms, mc;                                                           \
     fast_trig(tv < tu ? tv : tu, &s, &c, &ms, &mc) /* minpd: left ? tu : tv */
 
-TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, double *y)
+TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, const double *q, size_t nb, double *y)
 {
     if (deriv == 0) {
         for (size_t j = 0; j < nb; j++) {
-            TS_FAST_NEAR(st, j);
+            TS_FAST_NEAR(st, q, j);
             /* docs/method.md §2, the expressions of ts__seg_scm (B0 + Σ A_l (B_l − B0)) */
             y[j] = B0 + ((s * ms * (3.0 - s)) * (B1 - B0) + (c * mc * (3.0 - c)) * (B2 - B0) +
                          (mc * mc * mc) * (B3 - B0));
         }
     } else if (deriv == 1) {
         for (size_t j = 0; j < nb; j++) {
-            TS_FAST_NEAR(st, j);
+            TS_FAST_NEAR(st, q, j);
             double d01 = B1 - B0, d12 = B2 - B1, d23 = B3 - B2;
             /* docs/method.md (2.1) */
             double d = 3.0 * (ms * ms) * c * d01 + 2.0 * (s * c) * d12 + 3.0 * (mc * mc) * s * d23;
-            y[j] = d * (left ? st->w[j] : -st->w[j]);
+            y[j] = d * (left ? w : -w);
         }
     } else {
         for (size_t j = 0; j < nb; j++) {
-            TS_FAST_NEAR(st, j);
+            TS_FAST_NEAR(st, q, j);
             double d01 = B1 - B0, d12 = B2 - B1, d23 = B3 - B2;
             /* d/dθ of (2.1) */
             double a0 = 6.0 * ms * (c * c) + 3.0 * (ms * ms) * s;
             double a3 = 6.0 * mc * (s * s) + 3.0 * (mc * mc) * c;
             double d = (a3 * d23 - a0 * d01) + 2.0 * ((c * c - s * s) * d12);
-            y[j] = d * (st->w[j] * st->w[j]);
+            y[j] = d * (w * w);
         }
     }
 }
@@ -439,7 +473,7 @@ TS_ALWAYS_INLINE void geo_pad(geo_stage *st, size_t nb)
 /* The whole batch, or its prefix up to the first block with a query outside
  * [x0, xn]; *cur is the cursor; returns the number of queries evaluated. */
 TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *xq, size_t m,
-                                 double *yq, size_t *cur, int geo)
+                                 double *yq, size_t *cur, int geo, size_t run)
 {
     union {
         fast_stage p;
@@ -450,7 +484,7 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
     if (geo) {
         while (j0 < m) {
             size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
-            if (!stage_block(sp, xq + j0, nb, 0, NULL, &st.g, cur))
+            if (!stage_block(sp, xq + j0, nb, NULL, &st.g, cur, 1))
                 break;
             geo_pad(&st.g, nb); /* as below */
             geo_eval_block(deriv, &st.g, TS_FAST_BLOCK, yt);
@@ -462,23 +496,29 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
     }
     while (j0 < m) {
         size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
-        if (!stage_block(sp, xq + j0, nb, deriv > 0, &st.p, NULL, cur))
+        if (!stage_block(sp, xq + j0, nb, &st.p, NULL, cur, run))
             break;
         /* A short block is padded with its first query and every block is
          * evaluated whole into an aligned buffer: no loop tail and no
          * alignment peel, so each query runs the same instructions wherever
          * it sits in the batch (split batches, threads and chunked callers
          * agree bit for bit). */
-        for (size_t j = nb; j < TS_FAST_BLOCK; j++) {
-            st.p.tu[j] = st.p.tu[0];
-            st.p.tv[j] = st.p.tv[0];
-            st.p.w[j] = deriv > 0 ? st.p.w[0] : 0.0;
-            st.p.b0[j] = st.p.b0[0];
-            st.p.b1[j] = st.p.b1[0];
-            st.p.b2[j] = st.p.b2[0];
-            st.p.b3[j] = st.p.b3[0];
+        const double *qb = xq + j0;
+        if (nb < TS_FAST_BLOCK) {
+            for (size_t j = 0; j < TS_FAST_BLOCK; j++)
+                st.p.q[j] = qb[j < nb ? j : 0];
+            for (size_t j = nb; j < TS_FAST_BLOCK; j++) {
+                st.p.x0[j] = st.p.x0[0];
+                st.p.x1[j] = st.p.x1[0];
+                st.p.w[j] = st.p.w[0];
+                st.p.b0[j] = st.p.b0[0];
+                st.p.b1[j] = st.p.b1[0];
+                st.p.b2[j] = st.p.b2[0];
+                st.p.b3[j] = st.p.b3[0];
+            }
+            qb = st.p.q;
         }
-        eval_block(deriv, &st.p, TS_FAST_BLOCK, yt);
+        eval_block(deriv, &st.p, qb, TS_FAST_BLOCK, yt);
         for (size_t j = 0; j < nb; j++)
             yq[j0 + j] = yt[j];
         j0 += nb;
@@ -494,33 +534,33 @@ typedef size_t (*pipeline_fn)(const ts_spline *, int, const double *, size_t, do
 #define TS_PIPELINE_ARGS const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur
 static TS_NOINLINE size_t pipeline_geo_portable(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur, 1);
+    return pipeline(sp, deriv, xq, m, yq, cur, 1, 1);
 }
 
 static TS_NOINLINE size_t pipeline_trig_portable(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur, 0);
+    return pipeline(sp, deriv, xq, m, yq, cur, 0, 2);
 }
 
 #if TS_FAST_X86
 __attribute__((target("avx2,fma"))) static TS_NOINLINE size_t pipeline_geo_avx2(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur, 1);
+    return pipeline(sp, deriv, xq, m, yq, cur, 1, 1);
 }
 
 __attribute__((target("avx2,fma"))) static TS_NOINLINE size_t pipeline_trig_avx2(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur, 0);
+    return pipeline(sp, deriv, xq, m, yq, cur, 0, 4);
 }
 
 __attribute__((target(TS_TARGET_512))) static TS_NOINLINE size_t pipeline_geo_avx512(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur, 1);
+    return pipeline(sp, deriv, xq, m, yq, cur, 1, 1);
 }
 
 __attribute__((target(TS_TARGET_512))) static TS_NOINLINE size_t pipeline_trig_avx512(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur, 0);
+    return pipeline(sp, deriv, xq, m, yq, cur, 0, 8);
 }
 #endif
 
