@@ -1,7 +1,7 @@
 /* Batch evaluation kernels for every form.
  *
  * ts__fast_batch works on blocks of TS_FAST_BLOCK queries; the block's scratch
- * is on the stack (< 16 KiB), nothing is allocated.
+ * is on the stack (< 20 KiB), nothing is allocated.
  *  1. check: a sorted block is inside [x0, xn] when its two ends are; an
  *     unsorted one is checked query by query (NaN fails every comparison).
  *     A block with a query outside goes back to eval.c.
@@ -178,14 +178,20 @@ TS_ALWAYS_INLINE size_t stage_sorted(const ts_spline *sp, const double *q, size_
 }
 
 /* The geometric form (docs/method.md §4), per query as geometric.c's
- * ts__geo_eval: the distances to both ends, the interval's h, κ = 2/(3π a),
- * f_i, f_{i+1}, d_i, d_{i+1}.  phi, u: the solve's scratch; s, c, ms, mc:
- * sin φ, cos φ, 1 − sin φ, 1 − cos φ at its root. */
+ * ts__geo_eval: its interval's ends x0, x1, h, κ = 2/(3π a), f_i, f_{i+1},
+ * d_i, d_{i+1}, staged over runs as fast_stage; dl, dr: the distances to
+ * both ends, formed by the first vector loop; phi, u: the solve's scratch;
+ * s, c, ms, mc: sin φ, cos φ, 1 − sin φ, 1 − cos φ at its root; q: a short
+ * block's queries, padded. */
 typedef struct geo_stage {
-    double dl[TS_FAST_BLOCK], dr[TS_FAST_BLOCK], h[TS_FAST_BLOCK], kappa[TS_FAST_BLOCK];
-    double f0[TS_FAST_BLOCK], f1[TS_FAST_BLOCK], d0[TS_FAST_BLOCK], d1[TS_FAST_BLOCK];
+    double x0[TS_FAST_BLOCK + TS_FAST_RUN], x1[TS_FAST_BLOCK + TS_FAST_RUN];
+    double h[TS_FAST_BLOCK + TS_FAST_RUN], kappa[TS_FAST_BLOCK + TS_FAST_RUN];
+    double f0[TS_FAST_BLOCK + TS_FAST_RUN], f1[TS_FAST_BLOCK + TS_FAST_RUN];
+    double d0[TS_FAST_BLOCK + TS_FAST_RUN], d1[TS_FAST_BLOCK + TS_FAST_RUN];
+    double dl[TS_FAST_BLOCK], dr[TS_FAST_BLOCK];
     double phi[TS_FAST_BLOCK], u[TS_FAST_BLOCK];
     double s[TS_FAST_BLOCK], c[TS_FAST_BLOCK], ms[TS_FAST_BLOCK], mc[TS_FAST_BLOCK];
+    double q[TS_FAST_BLOCK];
 } geo_stage;
 
 typedef struct geo_iv {
@@ -200,37 +206,48 @@ TS_ALWAYS_INLINE geo_iv geo_interval(const ts_spline *sp, size_t i)
     return g;
 }
 
-TS_ALWAYS_INLINE void geo_stage_one(geo_stage *st, size_t j, double x, const geo_iv *g)
+/* stage_run for the geometric form. */
+TS_ALWAYS_INLINE void geo_stage_run(geo_stage *st, size_t j0, size_t j1, const geo_iv *g, size_t run)
 {
-    st->dl[j] = x - g->x0;
-    st->dr[j] = g->x1 - x;
-    st->h[j] = g->h;
-    st->kappa[j] = g->kappa;
-    st->f0[j] = g->f0;
-    st->f1[j] = g->f1;
-    st->d0[j] = g->d0;
-    st->d1[j] = g->d1;
+    size_t j = j0;
+    do {
+        for (size_t l = 0; l < run; l++) { /* whole-vector stores */
+            st->x0[j + l] = g->x0;
+            st->x1[j + l] = g->x1;
+            st->h[j + l] = g->h;
+            st->kappa[j + l] = g->kappa;
+            st->f0[j + l] = g->f0;
+            st->f1[j + l] = g->f1;
+            st->d0[j + l] = g->d0;
+            st->d1[j + l] = g->d1;
+        }
+        j += run;
+    } while (j < j1);
 }
 
 /* stage_sorted for the geometric form. */
-TS_ALWAYS_INLINE size_t geo_stage_sorted(const ts_spline *sp, const double *q, size_t nb,
-                                         geo_stage *st, size_t i)
+TS_ALWAYS_INLINE size_t geo_stage_sorted(const ts_spline *sp, const double *q, size_t nb, geo_stage *st,
+                                         size_t i, size_t run)
 {
     const double *xs = sp->x;
-    size_t n = sp->n;
-    geo_iv g = geo_interval(sp, i);
-    double next = i + 1 < n ? g.x1 : (double)INFINITY;
+    size_t n = sp->n, j0 = 0;
+    double next = i + 1 < n ? xs[i + 1] : (double)INFINITY;
     for (size_t j = 0; j < nb; j++) {
         double x = q[j];
         if (x >= next) {
+            if (j > j0) {
+                geo_iv g = geo_interval(sp, i);
+                geo_stage_run(st, j0, j, &g, run);
+            }
+            j0 = j;
             i++;
             if (i + 1 < n && xs[i + 1] <= x)
                 i = gallop(xs, n, i, x);
-            g = geo_interval(sp, i);
-            next = i + 1 < n ? g.x1 : (double)INFINITY;
+            next = i + 1 < n ? xs[i + 1] : (double)INFINITY;
         }
-        geo_stage_one(st, j, x, &g);
     }
+    geo_iv g = geo_interval(sp, i);
+    geo_stage_run(st, j0, nb, &g, run);
     return i;
 }
 
@@ -263,7 +280,7 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
         if (!(xs[i] <= q[0]))
             i = search_range(xs, 0, i + 1, q[0]);
         if (gs)
-            *cur = geo_stage_sorted(sp, q, nb, gs, i);
+            *cur = geo_stage_sorted(sp, q, nb, gs, i, run);
         else
             *cur = stage_sorted(sp, q, nb, st, i, run);
         return 1;
@@ -282,7 +299,7 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
         i = idx[j];
         if (gs) {
             geo_iv g = geo_interval(sp, i);
-            geo_stage_one(gs, j, q[j], &g);
+            geo_stage_run(gs, j, j + 1, &g, 1);
         } else {
             fast_iv v = fast_interval(sp, i);
             stage_one(st, j, &v);
@@ -416,9 +433,11 @@ TS_ALWAYS_INLINE void geo_values(int deriv, const geo_stage *st, size_t nb, doub
  * ts__geo_root takes its third step, and the whole block's values are then
  * formed again (a stopped query repeats its stopping step from where it
  * started: the same bits). */
-TS_ALWAYS_INLINE void geo_fused(int deriv, geo_stage *st, size_t nb, double *y)
+TS_ALWAYS_INLINE void geo_fused(int deriv, geo_stage *st, const double *q, size_t nb, double *y)
 {
     for (size_t j = 0; j < nb; j++) {
+        st->dl[j] = q[j] - st->x0[j];
+        st->dr[j] = st->x1[j] - q[j];
         int right;
         double u;
         geo_side(st, j, &right, &u);
@@ -445,22 +464,27 @@ TS_ALWAYS_INLINE void geo_fused(int deriv, geo_stage *st, size_t nb, double *y)
 }
 
 /* deriv a constant in each loop */
-TS_ALWAYS_INLINE void geo_eval_block(int deriv, geo_stage *st, size_t nb, double *y)
+TS_ALWAYS_INLINE void geo_eval_block(int deriv, geo_stage *st, const double *q, size_t nb, double *y)
 {
     if (deriv == 0)
-        geo_fused(0, st, nb, y);
+        geo_fused(0, st, q, nb, y);
     else if (deriv == 1)
-        geo_fused(1, st, nb, y);
+        geo_fused(1, st, q, nb, y);
     else
-        geo_fused(2, st, nb, y);
+        geo_fused(2, st, q, nb, y);
 }
 
-/* Fills the stage's unused places [nb, TS_FAST_BLOCK) with its first query. */
-TS_ALWAYS_INLINE void geo_pad(geo_stage *st, size_t nb)
+/* Fills the stage's unused places [nb, TS_FAST_BLOCK) with its first query;
+ * returns the queries to read. */
+TS_ALWAYS_INLINE const double *geo_pad(geo_stage *st, const double *q, size_t nb)
 {
+    if (nb == TS_FAST_BLOCK)
+        return q;
+    for (size_t j = 0; j < TS_FAST_BLOCK; j++)
+        st->q[j] = q[j < nb ? j : 0];
     for (size_t j = nb; j < TS_FAST_BLOCK; j++) {
-        st->dl[j] = st->dl[0];
-        st->dr[j] = st->dr[0];
+        st->x0[j] = st->x0[0];
+        st->x1[j] = st->x1[0];
         st->h[j] = st->h[0];
         st->kappa[j] = st->kappa[0];
         st->f0[j] = st->f0[0];
@@ -468,6 +492,7 @@ TS_ALWAYS_INLINE void geo_pad(geo_stage *st, size_t nb)
         st->d0[j] = st->d0[0];
         st->d1[j] = st->d1[0];
     }
+    return st->q;
 }
 
 /* The whole batch, or its prefix up to the first block with a query outside
@@ -484,10 +509,10 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
     if (geo) {
         while (j0 < m) {
             size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
-            if (!stage_block(sp, xq + j0, nb, NULL, &st.g, cur, 1))
+            if (!stage_block(sp, xq + j0, nb, NULL, &st.g, cur, run))
                 break;
-            geo_pad(&st.g, nb); /* as below */
-            geo_eval_block(deriv, &st.g, TS_FAST_BLOCK, yt);
+            const double *qb = geo_pad(&st.g, xq + j0, nb); /* as below */
+            geo_eval_block(deriv, &st.g, qb, TS_FAST_BLOCK, yt);
             for (size_t j = 0; j < nb; j++)
                 yq[j0 + j] = yt[j];
             j0 += nb;
@@ -534,7 +559,7 @@ typedef size_t (*pipeline_fn)(const ts_spline *, int, const double *, size_t, do
 #define TS_PIPELINE_ARGS const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur
 static TS_NOINLINE size_t pipeline_geo_portable(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur, 1, 1);
+    return pipeline(sp, deriv, xq, m, yq, cur, 1, 2);
 }
 
 static TS_NOINLINE size_t pipeline_trig_portable(TS_PIPELINE_ARGS)
@@ -545,7 +570,7 @@ static TS_NOINLINE size_t pipeline_trig_portable(TS_PIPELINE_ARGS)
 #if TS_FAST_X86
 __attribute__((target("avx2,fma"))) static TS_NOINLINE size_t pipeline_geo_avx2(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur, 1, 1);
+    return pipeline(sp, deriv, xq, m, yq, cur, 1, 4);
 }
 
 __attribute__((target("avx2,fma"))) static TS_NOINLINE size_t pipeline_trig_avx2(TS_PIPELINE_ARGS)
@@ -555,7 +580,7 @@ __attribute__((target("avx2,fma"))) static TS_NOINLINE size_t pipeline_trig_avx2
 
 __attribute__((target(TS_TARGET_512))) static TS_NOINLINE size_t pipeline_geo_avx512(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur, 1, 1);
+    return pipeline(sp, deriv, xq, m, yq, cur, 1, 8);
 }
 
 __attribute__((target(TS_TARGET_512))) static TS_NOINLINE size_t pipeline_trig_avx512(TS_PIPELINE_ARGS)
