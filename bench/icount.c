@@ -2,8 +2,9 @@
  *   valgrind --tool=callgrind --toggle-collect=measured bench/icount FORM ISA ORDER [DERIV]
  * FORM paper | c1 | geometric | gsl (GSL steffen, gsl_interp_eval + accel);
  * ISA 0 portable, 1 AVX2+FMA, 2 AVX-512F (valgrind has no AVX-512);
- * ORDER sorted | random.  The bench's data at 10001 knots, 1e5 queries;
- * instructions per point = the Ir of `measured` / 1e5.  With ICOUNT_REPS=r
+ * ORDER sorted | random.  The bench's data at 10001 knots, 1e5 queries
+ * (ICOUNT_NP, ICOUNT_M to change them); instructions per point = the Ir of
+ * `measured` / the queries.  With ICOUNT_REPS=r
  * in the environment it also times r runs (thread CPU time) and prints the
  * minimum and median ns per point. */
 #define _POSIX_C_SOURCE 200809L
@@ -19,8 +20,7 @@
 #include <string.h>
 #include <time.h>
 
-#define NP 10001
-#define M 100000
+static size_t NP = 10001, M = 100000; /* ICOUNT_NP, ICOUNT_M in the environment */
 
 static uint64_t rng = 0x9E3779B97F4A7C15u;
 static double urand(void)
@@ -29,7 +29,7 @@ static double urand(void)
     return (double)(rng >> 11) * 0x1p-53;
 }
 
-static double X[NP], F[NP], Q[M], Y[M];
+static double *X, *F, *Q, *Y;
 
 __attribute__((noinline)) static int measured(const ts_spline *s, gsl_interp *g, gsl_interp_accel *acc, int deriv,
                                               int isa)
@@ -50,6 +50,18 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: icount paper|c1|geometric|gsl ISA sorted|random [DERIV]\n");
         return 2;
     }
+    if (getenv("ICOUNT_NP"))
+        NP = (size_t)atol(getenv("ICOUNT_NP"));
+    if (getenv("ICOUNT_M"))
+        M = (size_t)atol(getenv("ICOUNT_M"));
+    if (NP < 3 || M < 2 || NP > 100000000 || M > 1000000000)
+        return 2;
+    X = malloc(NP * sizeof *X);
+    F = malloc(NP * sizeof *F);
+    Q = malloc(M * sizeof *Q);
+    Y = malloc(M * sizeof *Y);
+    if (!X || !F || !Q || !Y)
+        return 3;
     int isa = atoi(argv[2]), random_q = !strcmp(argv[3], "random"), deriv = argc > 4 ? atoi(argv[4]) : 0;
     X[0] = 0.0;
     for (size_t i = 1; i < NP; i++)
@@ -83,7 +95,7 @@ int main(int argc, char **argv)
             clock_gettime(CLOCK_THREAD_CPUTIME_ID, &a);
             measured(s, g, acc, deriv, isa);
             clock_gettime(CLOCK_THREAD_CPUTIME_ID, &b);
-            t[r] = ((double)(b.tv_sec - a.tv_sec) * 1e9 + (double)(b.tv_nsec - a.tv_nsec)) / M;
+            t[r] = ((double)(b.tv_sec - a.tv_sec) * 1e9 + (double)(b.tv_nsec - a.tv_nsec)) / (double)M;
         }
         for (int a = 1; a < reps; a++) /* insertion sort */
             for (int b = a; b > 0 && t[b - 1] > t[b]; b--) {
@@ -100,5 +112,9 @@ int main(int argc, char **argv)
     ts_spline_free(s);
     gsl_interp_free(g);
     gsl_interp_accel_free(acc);
+    free(X);
+    free(F);
+    free(Q);
+    free(Y);
     return ok ? 0 : 1;
 }

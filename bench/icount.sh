@@ -7,7 +7,7 @@ run() {
     out=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null --toggle-collect=measured \
         "$b/bench/icount" "$@" 2>&1)
     ir=$(printf '%s\n' "$out" | sed -n 's/.*Collected : \([0-9]*\).*/\1/p')
-    echo "$* : $(echo "$ir" | awk '{printf "%.1f", $1 / 100000}') instructions/point"
+    echo "$* : $(echo "$ir" | awk -v m="${ICOUNT_M:-100000}" '{printf "%.1f", $1 / m}') instructions/point"
 }
 run gsl 0 sorted
 run gsl 0 random

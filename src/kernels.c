@@ -1,18 +1,23 @@
 /* Batch evaluation kernels for every form.
  *
  * ts__fast_batch works on blocks of TS_FAST_BLOCK queries; the block's scratch
- * is on the stack (< 20 KiB), nothing is allocated.
+ * is on the stack (< 16 KiB), nothing is allocated.
  *  1. check: a sorted block is inside [x0, xn] when its two ends are; an
  *     unsorted one is checked query by query (NaN fails every comparison).
  *     A block with a query outside goes back to eval.c.
  *  2. stage: the interval is ts__locate's (largest i <= n−1 with x_i <= x:
  *     the right-hand one at an inner knot).  A sorted block walks the cursor,
- *     galloping over gaps, and writes each interval's values (x_i, x_{i+1},
- *     w = (π/2)/h_i, B0..B3) over its run of queries with whole-vector stores
- *     (a store per value and vector width, not per query: the per-query
- *     stores bounded the kernel); an unsorted block runs one branch-free
- *     binary search per query, all queries advancing a level at a time so
- *     their cache misses overlap, and stages each query's interval.
+ *     galloping over gaps.  In a dense block (runs of TS_FAST_RUN queries per
+ *     interval on average) it stages each interval's run of queries when it
+ *     leaves it: a run as long as a vector gets the interval's values with
+ *     whole-vector stores and its tu, tv from a short vector loop, a shorter
+ *     one query by query (the per-query scalar stores bounded the kernel
+ *     when several queries share an interval); a sparse block is staged
+ *     query by query with the interval's values in registers.  An unsorted block runs one
+ *     branch-free binary search per query, all queries advancing a level at
+ *     a time so their cache misses overlap.
+ *     Per query: tu = (x − x_i)·w, tv = (x_{i+1} − x)·w, w = (π/2)/h_i, and
+ *     B0..B3 — exactly the products eval.c's eval_in forms.
  *  3. evaluate, in a straight loop the compiler vectorises, always over a
  *     whole block (a short one padded) into an aligned buffer, so that a
  *     query's value does not depend on where it sits in the batch: from the nearer
@@ -42,7 +47,6 @@
 #define TS_TARGET_512 "avx512f,fma"
 #else /* GCC otherwise keeps 256-bit vectors */
 #define TS_TARGET_512 "avx512f,fma,prefer-vector-width=512"
-
 #endif
 #else
 #define TS_FAST_X86 0
@@ -82,27 +86,21 @@ TS_ALWAYS_INLINE size_t gallop(const double *xs, size_t n, size_t i, double x)
 
 /* ---- stage ----------------------------------------------------------- */
 
-/* Per query: its interval's ends x_i, x_{i+1}, w = (π/2)/h_i (dθ/dx) and
- * B0..B3, one array each.  Sorted queries meet few intervals per block, so
- * the staging writes each interval's values over its run of queries with
- * whole-vector stores (TS_FAST_RUN at a time, the last one spilling past the
- * run, to be overwritten by the next run or left in the arrays' slack); the
- * vector loop forms tu = (x − x_i)·w and tv = (x_{i+1} − x)·w, the products
- * eval.c's eval_in forms, and uses the nearer end, as eval.c: ϑ = min(tu, tv)
- * <= π/4 and, from the right end, the control values reversed
- * (docs/method.md §2: A3(θ) = A0(π/2 − θ), A2(θ) = A1(π/2 − θ)) and dϑ/dθ =
- * −1.  Choosing in the vector loop keeps the staging free of data-dependent
- * branches but the cursor's advance.  A flat interval (B0 = B1 = B2 = B3) is
- * staged with w = 0: ϑ = 0 gives A = (1, 0, 0, 0) exactly, so its value is B0
- * (Σ A_l need not round to 1 elsewhere) and its derivatives 0, without a
- * test per query.  q: the block's queries when it is short, padded with its
- * first (a whole block is read in place). */
-#define TS_FAST_RUN 8
+/* Per query: θ measured from both ends, tu = (x − x_i)·w and tv = (x_{i+1} − x)·w
+ * (w = (π/2)/h_i, dθ/dx; the products eval.c forms), and B0..B3, one array
+ * each (the vector loop loads them without shuffles).  The evaluation uses
+ * the nearer end, as eval.c: ϑ = min(tu, tv) <= π/4 and, from the right end,
+ * the control values reversed (docs/method.md §2: A3(θ) = A0(π/2 − θ),
+ * A2(θ) = A1(π/2 − θ)) and dϑ/dθ = −1.  Choosing in the vector loop keeps
+ * this loop free of data-dependent branches.  A flat interval (B0 = B1 = B2
+ * = B3) is staged with w = 0: ϑ = 0 gives A = (1, 0, 0, 0) exactly, so its
+ * value is B0 (Σ A_l need not round to 1 elsewhere) and its derivatives 0,
+ * without a test per query. */
+#define TS_FAST_RUN 8 /* the widest vector, in doubles: the arrays' slack */
 typedef struct fast_stage {
-    double x0[TS_FAST_BLOCK + TS_FAST_RUN], x1[TS_FAST_BLOCK + TS_FAST_RUN], w[TS_FAST_BLOCK + TS_FAST_RUN];
+    double tu[TS_FAST_BLOCK], tv[TS_FAST_BLOCK], w[TS_FAST_BLOCK + TS_FAST_RUN]; /* w: derivatives only */
     double b0[TS_FAST_BLOCK + TS_FAST_RUN], b1[TS_FAST_BLOCK + TS_FAST_RUN];
     double b2[TS_FAST_BLOCK + TS_FAST_RUN], b3[TS_FAST_BLOCK + TS_FAST_RUN];
-    double q[TS_FAST_BLOCK];
 } fast_stage;
 
 typedef struct fast_iv {
@@ -119,15 +117,35 @@ TS_ALWAYS_INLINE fast_iv fast_interval(const ts_spline *sp, size_t i)
     return v;
 }
 
-/* Interval v's values into places [j0, j1) (j0 < j1), run (<= TS_FAST_RUN,
- * a vector's width; a constant at each call) at a time. */
-TS_ALWAYS_INLINE void stage_run(fast_stage *st, size_t j0, size_t j1, const fast_iv *v, size_t run)
+TS_ALWAYS_INLINE void stage_one(fast_stage *st, size_t j, double x, const fast_iv *v, int want_w)
 {
+    st->tu[j] = (x - v->x0) * v->w;
+    st->tv[j] = (v->x1 - x) * v->w;
+    if (want_w)
+        st->w[j] = v->w;
+    st->b0[j] = v->b0;
+    st->b1[j] = v->b1;
+    st->b2[j] = v->b2;
+    st->b3[j] = v->b3;
+}
+
+/* Queries q[j0..j1) (j0 < j1) in interval v: shorter than run (<= TS_FAST_RUN,
+ * a vector's width; a constant at each call) query by query; a longer run
+ * with whole-vector stores of v's values, run places at a time, the last one
+ * spilling past j1 (overwritten by the next run, or into the slack), and tu,
+ * tv by a loop the compiler vectorises (the same two operations per query as
+ * stage_one, so the same bits wherever the vector loop's tail falls). */
+TS_ALWAYS_INLINE void stage_run(fast_stage *st, const double *q, size_t j0, size_t j1, const fast_iv *v,
+                                int want_w, size_t run)
+{
+    if (j1 - j0 < run) {
+        for (size_t j = j0; j < j1; j++)
+            stage_one(st, j, q[j], v, want_w);
+        return;
+    }
     size_t j = j0;
     do {
         for (size_t l = 0; l < run; l++) { /* whole-vector stores */
-            st->x0[j + l] = v->x0;
-            st->x1[j + l] = v->x1;
             st->w[j + l] = v->w;
             st->b0[j + l] = v->b0;
             st->b1[j + l] = v->b1;
@@ -136,24 +154,41 @@ TS_ALWAYS_INLINE void stage_run(fast_stage *st, size_t j0, size_t j1, const fast
         }
         j += run;
     } while (j < j1);
+    double x0 = v->x0, x1 = v->x1, w = v->w;
+    for (j = j0; j < j1; j++) {
+        st->tu[j] = (q[j] - x0) * w;
+        st->tv[j] = (x1 - q[j]) * w;
+    }
 }
 
-/* Place j: interval v (one query). */
-TS_ALWAYS_INLINE void stage_one(fast_stage *st, size_t j, const fast_iv *v)
+/* Sorted q[0..nb), xs[i] <= q[0], a sparse block: walk the cursor with the
+ * current interval's values in registers, staging query by query. */
+TS_ALWAYS_INLINE size_t stage_sorted_sparse(const ts_spline *sp, const double *q, size_t nb, int want_w,
+                                            fast_stage *st, size_t i)
 {
-    st->x0[j] = v->x0;
-    st->x1[j] = v->x1;
-    st->w[j] = v->w;
-    st->b0[j] = v->b0;
-    st->b1[j] = v->b1;
-    st->b2[j] = v->b2;
-    st->b3[j] = v->b3;
+    const double *xs = sp->x;
+    size_t n = sp->n;
+    fast_iv v = fast_interval(sp, i);
+    double next = i + 1 < n ? v.x1 : (double)INFINITY; /* the last interval never advances */
+    for (size_t j = 0; j < nb; j++) {
+        double x = q[j];
+        if (x >= next) {
+            i++;
+            if (i + 1 < n && xs[i + 1] <= x)
+                i = gallop(xs, n, i, x);
+            v = fast_interval(sp, i);
+            next = i + 1 < n ? v.x1 : (double)INFINITY;
+        }
+        stage_one(st, j, x, &v, want_w);
+    }
+    return i;
 }
 
-/* Sorted q[0..nb), xs[i] <= q[0]: walk the cursor, staging each interval's
- * run of queries when the walk leaves it; the next knot stays in a register. */
-TS_ALWAYS_INLINE size_t stage_sorted(const ts_spline *sp, const double *q, size_t nb, fast_stage *st, size_t i,
-                                     size_t run)
+/* Sorted q[0..nb), xs[i] <= q[0], a dense block (long runs): walk the
+ * cursor, staging each interval's run of queries when the walk leaves it;
+ * the next knot stays in a register.  want_w is a constant at each call. */
+TS_ALWAYS_INLINE size_t stage_sorted_dense(const ts_spline *sp, const double *q, size_t nb, int want_w,
+                                     fast_stage *st, size_t i, size_t run)
 {
     const double *xs = sp->x;
     size_t n = sp->n, j0 = 0;
@@ -163,7 +198,7 @@ TS_ALWAYS_INLINE size_t stage_sorted(const ts_spline *sp, const double *q, size_
         if (x >= next) {
             if (j > j0) {
                 fast_iv v = fast_interval(sp, i);
-                stage_run(st, j0, j, &v, run);
+                stage_run(st, q, j0, j, &v, want_w, run);
             }
             j0 = j;
             i++;
@@ -173,25 +208,21 @@ TS_ALWAYS_INLINE size_t stage_sorted(const ts_spline *sp, const double *q, size_
         }
     }
     fast_iv v = fast_interval(sp, i);
-    stage_run(st, j0, nb, &v, run);
+    stage_run(st, q, j0, nb, &v, want_w, run);
     return i;
 }
 
 /* The geometric form (docs/method.md §4), per query as geometric.c's
- * ts__geo_eval: its interval's ends x0, x1, h, κ = 2/(3π a), f_i, f_{i+1},
- * d_i, d_{i+1}, staged over runs as fast_stage; dl, dr: the distances to
- * both ends, formed by the first vector loop; phi, u: the solve's scratch;
- * s, c, ms, mc: sin φ, cos φ, 1 − sin φ, 1 − cos φ at its root; q: a short
- * block's queries, padded. */
+ * ts__geo_eval: the distances to both ends, the interval's h, κ = 2/(3π a),
+ * f_i, f_{i+1}, d_i, d_{i+1}.  phi, u: the solve's scratch; s, c, ms, mc:
+ * sin φ, cos φ, 1 − sin φ, 1 − cos φ at its root. */
 typedef struct geo_stage {
-    double x0[TS_FAST_BLOCK + TS_FAST_RUN], x1[TS_FAST_BLOCK + TS_FAST_RUN];
+    double dl[TS_FAST_BLOCK], dr[TS_FAST_BLOCK];
     double h[TS_FAST_BLOCK + TS_FAST_RUN], kappa[TS_FAST_BLOCK + TS_FAST_RUN];
     double f0[TS_FAST_BLOCK + TS_FAST_RUN], f1[TS_FAST_BLOCK + TS_FAST_RUN];
     double d0[TS_FAST_BLOCK + TS_FAST_RUN], d1[TS_FAST_BLOCK + TS_FAST_RUN];
-    double dl[TS_FAST_BLOCK], dr[TS_FAST_BLOCK];
     double phi[TS_FAST_BLOCK], u[TS_FAST_BLOCK];
     double s[TS_FAST_BLOCK], c[TS_FAST_BLOCK], ms[TS_FAST_BLOCK], mc[TS_FAST_BLOCK];
-    double q[TS_FAST_BLOCK];
 } geo_stage;
 
 typedef struct geo_iv {
@@ -206,14 +237,30 @@ TS_ALWAYS_INLINE geo_iv geo_interval(const ts_spline *sp, size_t i)
     return g;
 }
 
-/* stage_run for the geometric form. */
-TS_ALWAYS_INLINE void geo_stage_run(geo_stage *st, size_t j0, size_t j1, const geo_iv *g, size_t run)
+TS_ALWAYS_INLINE void geo_stage_one(geo_stage *st, size_t j, double x, const geo_iv *g)
 {
+    st->dl[j] = x - g->x0;
+    st->dr[j] = g->x1 - x;
+    st->h[j] = g->h;
+    st->kappa[j] = g->kappa;
+    st->f0[j] = g->f0;
+    st->f1[j] = g->f1;
+    st->d0[j] = g->d0;
+    st->d1[j] = g->d1;
+}
+
+/* stage_run for the geometric form. */
+TS_ALWAYS_INLINE void geo_stage_run(geo_stage *st, const double *q, size_t j0, size_t j1, const geo_iv *g,
+                                    size_t run)
+{
+    if (j1 - j0 < run) {
+        for (size_t j = j0; j < j1; j++)
+            geo_stage_one(st, j, q[j], g);
+        return;
+    }
     size_t j = j0;
     do {
         for (size_t l = 0; l < run; l++) { /* whole-vector stores */
-            st->x0[j + l] = g->x0;
-            st->x1[j + l] = g->x1;
             st->h[j + l] = g->h;
             st->kappa[j + l] = g->kappa;
             st->f0[j + l] = g->f0;
@@ -223,10 +270,37 @@ TS_ALWAYS_INLINE void geo_stage_run(geo_stage *st, size_t j0, size_t j1, const g
         }
         j += run;
     } while (j < j1);
+    double x0 = g->x0, x1 = g->x1;
+    for (j = j0; j < j1; j++) {
+        st->dl[j] = q[j] - x0;
+        st->dr[j] = x1 - q[j];
+    }
 }
 
-/* stage_sorted for the geometric form. */
-TS_ALWAYS_INLINE size_t geo_stage_sorted(const ts_spline *sp, const double *q, size_t nb, geo_stage *st,
+/* Sorted, sparse: stage_sorted_sparse for the geometric form. */
+TS_ALWAYS_INLINE size_t geo_stage_sorted_sparse(const ts_spline *sp, const double *q, size_t nb,
+                                                geo_stage *st, size_t i)
+{
+    const double *xs = sp->x;
+    size_t n = sp->n;
+    geo_iv g = geo_interval(sp, i);
+    double next = i + 1 < n ? g.x1 : (double)INFINITY;
+    for (size_t j = 0; j < nb; j++) {
+        double x = q[j];
+        if (x >= next) {
+            i++;
+            if (i + 1 < n && xs[i + 1] <= x)
+                i = gallop(xs, n, i, x);
+            g = geo_interval(sp, i);
+            next = i + 1 < n ? g.x1 : (double)INFINITY;
+        }
+        geo_stage_one(st, j, x, &g);
+    }
+    return i;
+}
+
+/* Sorted, dense: stage_sorted_dense for the geometric form. */
+TS_ALWAYS_INLINE size_t geo_stage_sorted_dense(const ts_spline *sp, const double *q, size_t nb, geo_stage *st,
                                          size_t i, size_t run)
 {
     const double *xs = sp->x;
@@ -237,7 +311,7 @@ TS_ALWAYS_INLINE size_t geo_stage_sorted(const ts_spline *sp, const double *q, s
         if (x >= next) {
             if (j > j0) {
                 geo_iv g = geo_interval(sp, i);
-                geo_stage_run(st, j0, j, &g, run);
+                geo_stage_run(st, q, j0, j, &g, run);
             }
             j0 = j;
             i++;
@@ -247,7 +321,7 @@ TS_ALWAYS_INLINE size_t geo_stage_sorted(const ts_spline *sp, const double *q, s
         }
     }
     geo_iv g = geo_interval(sp, i);
-    geo_stage_run(st, j0, nb, &g, run);
+    geo_stage_run(st, q, j0, nb, &g, run);
     return i;
 }
 
@@ -263,8 +337,8 @@ TS_ALWAYS_INLINE int all_inside(const double *q, size_t nb, double x0, double xn
 /* Stages q[0..nb) (1 <= nb <= TS_FAST_BLOCK) into st, or into gs for the
  * geometric form (gs != NULL); *cur is the cursor, left on the last query's
  * interval.  Returns 0, without staging, if a query is outside [x0, xn] or NaN. */
-TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb, fast_stage *st,
-                                 geo_stage *gs, size_t *cur, size_t run)
+TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb, int want_w,
+                                 fast_stage *st, geo_stage *gs, size_t *cur, size_t run)
 {
     const double *xs = sp->x;
     size_t n = sp->n, i = *cur;
@@ -279,10 +353,17 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
     if (unsorted == 0.0) {
         if (!(xs[i] <= q[0]))
             i = search_range(xs, 0, i + 1, q[0]);
+        /* dense: the block ends before knot i + nb/TS_FAST_RUN, so its runs
+         * average at least TS_FAST_RUN queries; the staging by runs pays
+         * there (and costs 15 % at one query per interval) */
+        size_t probe = i + nb / TS_FAST_RUN;
+        int dense = probe < n && q[nb - 1] < xs[probe];
         if (gs)
-            *cur = geo_stage_sorted(sp, q, nb, gs, i, run);
+            *cur = dense ? geo_stage_sorted_dense(sp, q, nb, gs, i, run) : geo_stage_sorted_sparse(sp, q, nb, gs, i);
+        else if (dense)
+            *cur = want_w ? stage_sorted_dense(sp, q, nb, 1, st, i, run) : stage_sorted_dense(sp, q, nb, 0, st, i, run);
         else
-            *cur = stage_sorted(sp, q, nb, st, i, run);
+            *cur = want_w ? stage_sorted_sparse(sp, q, nb, 1, st, i) : stage_sorted_sparse(sp, q, nb, 0, st, i);
         return 1;
     }
     /* one binary search per query, all advancing a level at a time */
@@ -299,10 +380,10 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
         i = idx[j];
         if (gs) {
             geo_iv g = geo_interval(sp, i);
-            geo_stage_run(gs, j, j + 1, &g, 1);
+            geo_stage_one(gs, j, q[j], &g);
         } else {
             fast_iv v = fast_interval(sp, i);
-            stage_one(st, j, &v);
+            stage_one(st, j, q[j], &v, want_w);
         }
     }
     *cur = i;
@@ -314,11 +395,10 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
 /* s = sin ϑ, c = cos ϑ, ms = 1 − s, mc = 1 − c for ϑ in [0, π/4]: internal.h. */
 #define fast_trig ts__sincos_q
 
-/* Query j (at q[j]) seen from its nearer end: w, ϑ, the control values B',
- * and the side. */
-#define TS_FAST_NEAR(st, q, j)                                                     \
-    double x = (q)[j], w = (st)->w[j];                                             \
-    double tu = (x - (st)->x0[j]) * w, tv = ((st)->x1[j] - x) * w;                 \
+/* Query j seen from its nearer end: ϑ, the control values B', and the sign
+ * of dϑ/dθ as ±1. */
+#define TS_FAST_NEAR(st, j)                                                        \
+    double tu = (st)->tu[j], tv = (st)->tv[j];                                     \
     int left = tu <= tv;                                                           \
     double b0 = (st)->b0[j], b1 = (st)->b1[j], b2 = (st)->b2[j], b3 = (st)->b3[j]; \
     double B0 = left ? b0 : b3, B1 = left ? b1 : b2;                               \
@@ -326,32 +406,32 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
     double s, c, ms, mc;                                                           \
     fast_trig(tv < tu ? tv : tu, &s, &c, &ms, &mc) /* minpd: left ? tu : tv */
 
-TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, const double *q, size_t nb, double *y)
+TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, double *y)
 {
     if (deriv == 0) {
         for (size_t j = 0; j < nb; j++) {
-            TS_FAST_NEAR(st, q, j);
+            TS_FAST_NEAR(st, j);
             /* docs/method.md §2, the expressions of ts__seg_scm (B0 + Σ A_l (B_l − B0)) */
             y[j] = B0 + ((s * ms * (3.0 - s)) * (B1 - B0) + (c * mc * (3.0 - c)) * (B2 - B0) +
                          (mc * mc * mc) * (B3 - B0));
         }
     } else if (deriv == 1) {
         for (size_t j = 0; j < nb; j++) {
-            TS_FAST_NEAR(st, q, j);
+            TS_FAST_NEAR(st, j);
             double d01 = B1 - B0, d12 = B2 - B1, d23 = B3 - B2;
             /* docs/method.md (2.1) */
             double d = 3.0 * (ms * ms) * c * d01 + 2.0 * (s * c) * d12 + 3.0 * (mc * mc) * s * d23;
-            y[j] = d * (left ? w : -w);
+            y[j] = d * (left ? st->w[j] : -st->w[j]);
         }
     } else {
         for (size_t j = 0; j < nb; j++) {
-            TS_FAST_NEAR(st, q, j);
+            TS_FAST_NEAR(st, j);
             double d01 = B1 - B0, d12 = B2 - B1, d23 = B3 - B2;
             /* d/dθ of (2.1) */
             double a0 = 6.0 * ms * (c * c) + 3.0 * (ms * ms) * s;
             double a3 = 6.0 * mc * (s * s) + 3.0 * (mc * mc) * c;
             double d = (a3 * d23 - a0 * d01) + 2.0 * ((c * c - s * s) * d12);
-            y[j] = d * (w * w);
+            y[j] = d * (st->w[j] * st->w[j]);
         }
     }
 }
@@ -433,11 +513,9 @@ TS_ALWAYS_INLINE void geo_values(int deriv, const geo_stage *st, size_t nb, doub
  * ts__geo_root takes its third step, and the whole block's values are then
  * formed again (a stopped query repeats its stopping step from where it
  * started: the same bits). */
-TS_ALWAYS_INLINE void geo_fused(int deriv, geo_stage *st, const double *q, size_t nb, double *y)
+TS_ALWAYS_INLINE void geo_fused(int deriv, geo_stage *st, size_t nb, double *y)
 {
     for (size_t j = 0; j < nb; j++) {
-        st->dl[j] = q[j] - st->x0[j];
-        st->dr[j] = st->x1[j] - q[j];
         int right;
         double u;
         geo_side(st, j, &right, &u);
@@ -464,27 +542,22 @@ TS_ALWAYS_INLINE void geo_fused(int deriv, geo_stage *st, const double *q, size_
 }
 
 /* deriv a constant in each loop */
-TS_ALWAYS_INLINE void geo_eval_block(int deriv, geo_stage *st, const double *q, size_t nb, double *y)
+TS_ALWAYS_INLINE void geo_eval_block(int deriv, geo_stage *st, size_t nb, double *y)
 {
     if (deriv == 0)
-        geo_fused(0, st, q, nb, y);
+        geo_fused(0, st, nb, y);
     else if (deriv == 1)
-        geo_fused(1, st, q, nb, y);
+        geo_fused(1, st, nb, y);
     else
-        geo_fused(2, st, q, nb, y);
+        geo_fused(2, st, nb, y);
 }
 
-/* Fills the stage's unused places [nb, TS_FAST_BLOCK) with its first query;
- * returns the queries to read. */
-TS_ALWAYS_INLINE const double *geo_pad(geo_stage *st, const double *q, size_t nb)
+/* Fills the stage's unused places [nb, TS_FAST_BLOCK) with its first query. */
+TS_ALWAYS_INLINE void geo_pad(geo_stage *st, size_t nb)
 {
-    if (nb == TS_FAST_BLOCK)
-        return q;
-    for (size_t j = 0; j < TS_FAST_BLOCK; j++)
-        st->q[j] = q[j < nb ? j : 0];
     for (size_t j = nb; j < TS_FAST_BLOCK; j++) {
-        st->x0[j] = st->x0[0];
-        st->x1[j] = st->x1[0];
+        st->dl[j] = st->dl[0];
+        st->dr[j] = st->dr[0];
         st->h[j] = st->h[0];
         st->kappa[j] = st->kappa[0];
         st->f0[j] = st->f0[0];
@@ -492,7 +565,6 @@ TS_ALWAYS_INLINE const double *geo_pad(geo_stage *st, const double *q, size_t nb
         st->d0[j] = st->d0[0];
         st->d1[j] = st->d1[0];
     }
-    return st->q;
 }
 
 /* The whole batch, or its prefix up to the first block with a query outside
@@ -509,10 +581,10 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
     if (geo) {
         while (j0 < m) {
             size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
-            if (!stage_block(sp, xq + j0, nb, NULL, &st.g, cur, run))
+            if (!stage_block(sp, xq + j0, nb, 0, NULL, &st.g, cur, run))
                 break;
-            const double *qb = geo_pad(&st.g, xq + j0, nb); /* as below */
-            geo_eval_block(deriv, &st.g, qb, TS_FAST_BLOCK, yt);
+            geo_pad(&st.g, nb); /* as below */
+            geo_eval_block(deriv, &st.g, TS_FAST_BLOCK, yt);
             for (size_t j = 0; j < nb; j++)
                 yq[j0 + j] = yt[j];
             j0 += nb;
@@ -521,29 +593,23 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
     }
     while (j0 < m) {
         size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
-        if (!stage_block(sp, xq + j0, nb, &st.p, NULL, cur, run))
+        if (!stage_block(sp, xq + j0, nb, deriv > 0, &st.p, NULL, cur, run))
             break;
         /* A short block is padded with its first query and every block is
          * evaluated whole into an aligned buffer: no loop tail and no
          * alignment peel, so each query runs the same instructions wherever
          * it sits in the batch (split batches, threads and chunked callers
          * agree bit for bit). */
-        const double *qb = xq + j0;
-        if (nb < TS_FAST_BLOCK) {
-            for (size_t j = 0; j < TS_FAST_BLOCK; j++)
-                st.p.q[j] = qb[j < nb ? j : 0];
-            for (size_t j = nb; j < TS_FAST_BLOCK; j++) {
-                st.p.x0[j] = st.p.x0[0];
-                st.p.x1[j] = st.p.x1[0];
-                st.p.w[j] = st.p.w[0];
-                st.p.b0[j] = st.p.b0[0];
-                st.p.b1[j] = st.p.b1[0];
-                st.p.b2[j] = st.p.b2[0];
-                st.p.b3[j] = st.p.b3[0];
-            }
-            qb = st.p.q;
+        for (size_t j = nb; j < TS_FAST_BLOCK; j++) {
+            st.p.tu[j] = st.p.tu[0];
+            st.p.tv[j] = st.p.tv[0];
+            st.p.w[j] = deriv > 0 ? st.p.w[0] : 0.0;
+            st.p.b0[j] = st.p.b0[0];
+            st.p.b1[j] = st.p.b1[0];
+            st.p.b2[j] = st.p.b2[0];
+            st.p.b3[j] = st.p.b3[0];
         }
-        eval_block(deriv, &st.p, qb, TS_FAST_BLOCK, yt);
+        eval_block(deriv, &st.p, TS_FAST_BLOCK, yt);
         for (size_t j = 0; j < nb; j++)
             yq[j0 + j] = yt[j];
         j0 += nb;
@@ -554,7 +620,8 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
 typedef size_t (*pipeline_fn)(const ts_spline *, int, const double *, size_t, double *, size_t *);
 
 /* Per ISA, the geometric form's pipeline and the others' in functions of
- * their own (one's loops do not change the other's register allocation);
+ * their own (one's loops do not change the other's register allocation),
+ * with the ISA's vector width in doubles as stage_run's run;
  * pick chooses by ISA and form. */
 #define TS_PIPELINE_ARGS const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur
 static TS_NOINLINE size_t pipeline_geo_portable(TS_PIPELINE_ARGS)

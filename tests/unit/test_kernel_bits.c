@@ -2,8 +2,8 @@
  *
  * tests/data/kernel_bits.txt holds the value, S' and S'' of four splines
  * (paper form, paper form with the positive scheme, C¹ form, geometric
- * form; seeded data with flat runs) at 160 sorted queries (knots exactly,
- * dense runs and gaps the cursor gallops over: two blocks, the second short)
+ * form; seeded data with flat runs) at 160 sorted queries (knots exactly; a
+ * dense block and a sparse one whose gaps the cursor gallops over, short)
  * and 160 in random order, as hex floats: the portable kernel's, then the
  * FMA kernels' (AVX2+FMA and AVX-512F give the same bits) as GCC and as
  * Clang compile them (each contracts into fused multiply-adds in its own
@@ -54,15 +54,19 @@ static void make_data(void)
         F[i] = F[99];
     F[700] = F[701] = 1e-3; /* near zero: the positive scheme acts */
     (void)FM;
-    /* sorted: a dense run in a few intervals, gaps, knots exactly, both ends */
+    /* sorted: a first block of 128 in ten intervals (runs of about 13: the
+     * staging by runs, long and short), then a sparse one over all of them
+     * (query by query, galloping; short: padded), knots exactly, both ends */
     for (size_t j = 0; j < NQ; j++) {
         double u = th_rng_unit(&r);
-        QS[j] = j < 60 ? X[90] + (X[110] - X[90]) * u : X[0] + (X[NP - 1] - X[0]) * u;
+        QS[j] = j < 128 ? X[90] + (X[100] - X[90]) * u : X[100] + (X[NP - 1] - X[100]) * u;
     }
-    for (size_t j = 0; j < NQ; j += 13)
-        QS[j] = X[th_rng_below(&r, NP)];
-    QS[1] = X[0];
-    QS[2] = X[NP - 1];
+    for (size_t j = 0; j < 128; j += 13)
+        QS[j] = X[90 + th_rng_below(&r, 10)];
+    for (size_t j = 128; j < NQ; j += 7)
+        QS[j] = X[100 + th_rng_below(&r, NP - 100)];
+    QS[1] = X[90];
+    QS[NQ - 1] = X[NP - 1];
     for (size_t a = 1; a < NQ; a++) /* insertion sort */
         for (size_t b = a; b > 0 && QS[b - 1] > QS[b]; b--) {
             double t = QS[b];
