@@ -19,7 +19,8 @@
  * inlined), so there the FMA kernels are checked against each other and the
  * portable one against the table (an ASan build of the library before the
  * rewrite and one after gave the same bits for every kernel: checked when
- * the rewrite was made).
+ * the rewrite was made).  Not for valgrind: its emulation of fused
+ * multiply-adds gives some zero second derivatives the other sign.
  *
  * test_kernel_bits --write prints the portable, AVX2+FMA and AVX-512F
  * kernels' bits ("-" for one this CPU does not have).
