@@ -13,9 +13,9 @@
  *     whole-vector stores and its tu, tv from a short vector loop, a shorter
  *     one query by query (the per-query scalar stores bounded the kernel
  *     when several queries share an interval); a sparse block is staged
- *     query by query with the interval's values in registers.  An unsorted block runs one
- *     branch-free binary search per query, all queries advancing a level at
- *     a time so their cache misses overlap.
+ *     query by query with the interval's values in registers.  An unsorted
+ *     block runs one branch-free binary search per query, all queries
+ *     advancing a level at a time so their cache misses overlap.
  *     Per query: tu = (x − x_i)·w, tv = (x_{i+1} − x)·w, w = (π/2)/h_i, and
  *     B0..B3 — exactly the products eval.c's eval_in forms.
  *  3. evaluate, in a straight loop the compiler vectorises, always over a
@@ -188,7 +188,7 @@ TS_ALWAYS_INLINE size_t stage_sorted_sparse(const ts_spline *sp, const double *q
  * cursor, staging each interval's run of queries when the walk leaves it;
  * the next knot stays in a register.  want_w is a constant at each call. */
 TS_ALWAYS_INLINE size_t stage_sorted_dense(const ts_spline *sp, const double *q, size_t nb, int want_w,
-                                     fast_stage *st, size_t i, size_t run)
+                                           fast_stage *st, size_t i, size_t run)
 {
     const double *xs = sp->x;
     size_t n = sp->n, j0 = 0;
