@@ -31,8 +31,8 @@ static double urand(void)
 
 static double *X, *F, *Q, *Y;
 
-__attribute__((noinline)) static int measured(const ts_spline *s, gsl_interp *g, gsl_interp_accel *acc, int deriv,
-                                              int isa)
+__attribute__((noinline)) static int measured(const ts_spline *s, gsl_interp *g,
+                                              gsl_interp_accel *acc, int deriv, int isa)
 {
     if (g) {
         for (size_t j = 0; j < M; j++)
@@ -62,7 +62,8 @@ int main(int argc, char **argv)
     Y = malloc(M * sizeof *Y);
     if (!X || !F || !Q || !Y)
         return 3;
-    int isa = atoi(argv[2]), random_q = !strcmp(argv[3], "random"), deriv = argc > 4 ? atoi(argv[4]) : 0;
+    int isa = atoi(argv[2]), random_q = !strcmp(argv[3], "random"),
+        deriv = argc > 4 ? atoi(argv[4]) : 0;
     X[0] = 0.0;
     for (size_t i = 1; i < NP; i++)
         X[i] = X[i - 1] + 0.5 + urand();
@@ -81,7 +82,9 @@ int main(int argc, char **argv)
     } else {
         ts_spline_options o;
         ts_spline_options_init(&o);
-        o.form = !strcmp(argv[1], "paper") ? TS_FORM_PAPER : !strcmp(argv[1], "c1") ? TS_FORM_C1 : TS_FORM_GEOMETRIC;
+        o.form = !strcmp(argv[1], "paper") ? TS_FORM_PAPER
+                 : !strcmp(argv[1], "c1")  ? TS_FORM_C1
+                                           : TS_FORM_GEOMETRIC;
         if (ts_spline_new(X, F, NP, &o, &s, NULL) != TS_OK)
             return 1;
     }
@@ -95,7 +98,8 @@ int main(int argc, char **argv)
             clock_gettime(CLOCK_THREAD_CPUTIME_ID, &a);
             measured(s, g, acc, deriv, isa);
             clock_gettime(CLOCK_THREAD_CPUTIME_ID, &b);
-            t[r] = ((double)(b.tv_sec - a.tv_sec) * 1e9 + (double)(b.tv_nsec - a.tv_nsec)) / (double)M;
+            t[r] = ((double)(b.tv_sec - a.tv_sec) * 1e9 + (double)(b.tv_nsec - a.tv_nsec)) /
+                   (double)M;
         }
         for (int a = 1; a < reps; a++) /* insertion sort */
             for (int b = a; b > 0 && t[b - 1] > t[b]; b--) {
@@ -108,7 +112,8 @@ int main(int argc, char **argv)
     double sum = 0.0;
     for (size_t j = 0; j < M; j++)
         sum += Y[j];
-    printf("%s isa %d %s deriv %d: %s, sum %.17g\n", argv[1], isa, argv[3], deriv, ok ? "ok" : "not run", sum);
+    printf("%s isa %d %s deriv %d: %s, sum %.17g\n", argv[1], isa, argv[3], deriv,
+           ok ? "ok" : "not run", sum);
     ts_spline_free(s);
     gsl_interp_free(g);
     gsl_interp_accel_free(acc);

@@ -300,8 +300,8 @@ TS_ALWAYS_INLINE size_t geo_stage_sorted_sparse(const ts_spline *sp, const doubl
 }
 
 /* Sorted, dense: stage_sorted_dense for the geometric form. */
-TS_ALWAYS_INLINE size_t geo_stage_sorted_dense(const ts_spline *sp, const double *q, size_t nb, geo_stage *st,
-                                         size_t i, size_t run)
+TS_ALWAYS_INLINE size_t geo_stage_sorted_dense(const ts_spline *sp, const double *q, size_t nb,
+                                               geo_stage *st, size_t i, size_t run)
 {
     const double *xs = sp->x;
     size_t n = sp->n, j0 = 0;
@@ -359,11 +359,14 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
         size_t probe = i + nb / TS_FAST_RUN;
         int dense = probe < n && q[nb - 1] < xs[probe];
         if (gs)
-            *cur = dense ? geo_stage_sorted_dense(sp, q, nb, gs, i, run) : geo_stage_sorted_sparse(sp, q, nb, gs, i);
+            *cur = dense ? geo_stage_sorted_dense(sp, q, nb, gs, i, run)
+                         : geo_stage_sorted_sparse(sp, q, nb, gs, i);
         else if (dense)
-            *cur = want_w ? stage_sorted_dense(sp, q, nb, 1, st, i, run) : stage_sorted_dense(sp, q, nb, 0, st, i, run);
+            *cur = want_w ? stage_sorted_dense(sp, q, nb, 1, st, i, run)
+                          : stage_sorted_dense(sp, q, nb, 0, st, i, run);
         else
-            *cur = want_w ? stage_sorted_sparse(sp, q, nb, 1, st, i) : stage_sorted_sparse(sp, q, nb, 0, st, i);
+            *cur = want_w ? stage_sorted_sparse(sp, q, nb, 1, st, i)
+                          : stage_sorted_sparse(sp, q, nb, 0, st, i);
         return 1;
     }
     /* one binary search per query, all advancing a level at a time */

@@ -151,8 +151,8 @@ int main(int argc, char **argv)
         while (fgets(line, sizeof line, f)) {
             size_t s, d, o, j;
             char v[3][64];
-            if (line[0] == '#' ||
-                sscanf(line, "%zu %zu %zu %zu %63s %63s %63s", &s, &d, &o, &j, v[0], v[1], v[2]) != 7)
+            if (line[0] == '#' || sscanf(line, "%zu %zu %zu %zu %63s %63s %63s", &s, &d, &o, &j,
+                                         v[0], v[1], v[2]) != 7)
                 continue;
 #if defined(__clang__)
             memcpy(v[1], v[2], sizeof v[1]); /* Clang's FMA column */
@@ -187,10 +187,12 @@ int main(int argc, char **argv)
             if (fma_have)
                 for (size_t k = 0; k < total; k++)
                     if (memcmp(&got[k], &fma_got[k], sizeof(double)) != 0 && bad++ < 5)
-                        fprintf(stderr, "%s: %zu: %a, the other FMA kernel %a\n", kname[isa], k, got[k], fma_got[k]);
+                        fprintf(stderr, "%s: %zu: %a, the other FMA kernel %a\n", kname[isa], k,
+                                got[k], fma_got[k]);
             memcpy(fma_got, got, sizeof fma_got);
             fma_have = 1;
-            CHECKF(bad == 0, "%s kernel: %ld of %zu values differ from the other FMA kernel's", kname[isa], bad, total);
+            CHECKF(bad == 0, "%s kernel: %ld of %zu values differ from the other FMA kernel's",
+                   kname[isa], bad, total);
             continue;
         }
         for (size_t k = 0; k < total; k++) {
@@ -199,12 +201,14 @@ int main(int argc, char **argv)
                 continue;
             }
             if (memcmp(&got[k], &want[isa][k], sizeof(double)) != 0 && bad++ < 5)
-                fprintf(stderr, "%s: spline %zu deriv %zu order %zu index %zu: %a, table %a\n", kname[isa],
-                        k / (6 * NQ), k / (2 * NQ) % 3, k / NQ % 2, k % NQ, got[k], want[isa][k]);
+                fprintf(stderr, "%s: spline %zu deriv %zu order %zu index %zu: %a, table %a\n",
+                        kname[isa], k / (6 * NQ), k / (2 * NQ) % 3, k / NQ % 2, k % NQ, got[k],
+                        want[isa][k]);
         }
         if (absent) /* the table was written on a CPU without this kernel */
             printf("  %s kernel: no column in the table\n", kname[isa]);
-        CHECKF(bad == 0, "%s kernel: %ld of %zu values differ from the table", kname[isa], bad, total);
+        CHECKF(bad == 0, "%s kernel: %ld of %zu values differ from the table", kname[isa], bad,
+               total);
     }
     for (int s = 0; s < NS; s++)
         ts_spline_free(sp[s]);

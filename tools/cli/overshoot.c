@@ -35,7 +35,8 @@ static int cannot_warn(const cli_overshoot *w, const ts_spline *s, size_t i)
     }
     double top = B[0] > B[3] ? B[0] : B[3], bottom = B[0] < B[3] ? B[0] : B[3];
     double reach = (hi - top > bottom - lo ? hi - top : bottom - lo) + 1e-9 * m;
-    double dmin = w->data_min < bottom ? w->data_min : bottom, dmax = w->data_max > top ? w->data_max : top;
+    double dmin = w->data_min < bottom ? w->data_min : bottom,
+           dmax = w->data_max > top ? w->data_max : top;
     return reach < 0.5 * CLI_OVERSHOOT_FRACTION * (dmax - dmin); /* NaN: 0, computed */
 }
 
