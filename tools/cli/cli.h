@@ -428,6 +428,11 @@ typedef struct cli_overshoot {
     size_t i_above, i_below;   /* their intervals (global index) */
     ts_interval_report r_above, r_below;
     size_t count;              /* intervals seen */
+    int warn_only;             /* set after cli_overshoot_init when only the warning is wanted:
+                                  intervals whose control values (docs/method.md §2, convex hull)
+                                  bound both excursions well below CLI_OVERSHOOT_FRACTION of
+                                  the data range so far are not computed exactly, so y_min,
+                                  y_max, above and below then cover only the others */
 } cli_overshoot;
 void cli_overshoot_init(cli_overshoot *w);
 /* Intervals [i0, i1) of s; offset = the global index of s's interval 0. */
