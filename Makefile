@@ -412,12 +412,13 @@ fuzz:
 	@failed=""; for n in $(FUZZ_HARNESSES); do \
 	  b=$(FUZZ_BUILD); mkdir -p $$b/corpus/$$n $$b/artifacts; \
 	  dict=""; test -f tests/fuzz/$$n.dict && dict="-dict=tests/fuzz/$$n.dict"; \
-	  if $$b/fuzz/fuzz_$$n -max_total_time=$(FUZZ_SECONDS) -timeout=30 -print_final_stats=1 \
+	  if TS_FUZZ_STATS=1 $$b/fuzz/fuzz_$$n -max_total_time=$(FUZZ_SECONDS) -timeout=30 -print_final_stats=1 \
 	      -artifact_prefix=$$b/artifacts/$$n- $$dict $(FUZZ_FLAGS) \
 	      $$b/corpus/$$n tests/fuzz/corpus/$$n >$$b/fuzz_$$n.log 2>&1; then st=ok; \
 	  else st=FAILED; failed="$$failed $$n"; tail -n 40 $$b/fuzz_$$n.log; fi; \
 	  runs=$$(sed -n 's/^stat::number_of_executed_units: *//p' $$b/fuzz_$$n.log); \
-	  echo "fuzz $$n: $$st, $${runs:-?} runs in $(FUZZ_SECONDS) s, corpus $$(ls $$b/corpus/$$n | wc -l) new + $$(ls tests/fuzz/corpus/$$n | wc -l) checked in (log $$b/fuzz_$$n.log)"; \
+	  stats=$$(sed -n 's/^stats: //p' $$b/fuzz_$$n.log | tail -n 1); \
+	  echo "fuzz $$n: $$st, $${runs:-?} runs in $(FUZZ_SECONDS) s, corpus $$(ls $$b/corpus/$$n | wc -l) new + $$(ls tests/fuzz/corpus/$$n | wc -l) checked in$${stats:+ ($$stats)} (log $$b/fuzz_$$n.log)"; \
 	done; \
 	if [ -n "$$failed" ]; then echo "fuzz: FAILED:$$failed (inputs in $(FUZZ_BUILD)/artifacts/)"; exit 1; fi
 # ---- distribution: packages for each channel (tools/dist/) ----
