@@ -3,7 +3,8 @@
 
 Usage: python3 tests/tools/test_disaggregate_cli.py BUILD_DIR   (standard library only)
 
-Daily rain (data/examples/rainfall_daily.csv as dates) to hourly totals:
+Daily rain (data/examples/rainfall_daily.csv as dates, and the real series
+data/rain/hadukp_sw_england_daily_2016.csv) to hourly totals:
 every day's 24 hours add up to its total (1e-13 relative: sums of 24
 shortest-round-trip numbers), none negative, dates written as read; bins as
 start,end,total rows; the rate; every error exits with its status and names
@@ -72,6 +73,24 @@ for j, t in enumerate(totals):
     else:
         check("daily: dry day dry", s == 0.0, (j, s))
 check("daily: totals kept", worst <= 1e-13, worst)
+
+# a real daily series (data/rain: HadUKP South West England, 177 days, 12 of
+# them 0.00): the same three checks
+real = os.path.join(REPO, "data", "rain", "hadukp_sw_england_daily_2016.csv")
+with open(real) as f:
+    rtot = [float(ln.split(",")[1]) for ln in f if ln[:1].isdigit()]
+rc, out, err = run([real, "--step", "1h"])
+rv = [float(ln.split(",")[2]) for ln in out.splitlines()[1:]]
+check("real: exit 0, 24 cells a day", rc == 0 and len(rv) == 24 * len(rtot), err)
+check("real: none negative", rv and min(rv) >= 0.0, min(rv) if rv else None)
+rworst = 0.0
+for j, t in enumerate(rtot):
+    s = sum(rv[24 * j:24 * j + 24])
+    if t > 0:
+        rworst = max(rworst, abs(s - t) / t)
+    else:
+        check("real: dry day dry", s == 0.0, (j, s))
+check("real: totals kept", rworst <= 1e-13, rworst)
 
 # bins as rows, numbers
 rc, out, err = run(["--step", "0.25"], "0,1,2\n1,3,4\n3,4,0\n")
