@@ -82,7 +82,7 @@ int ts_spline_certified(const ts_spline *s)
 {
     /* construction of a shaped spline fails unless every interval is
      * certified (ts__certify_done) */
-    return s && s->shape != TS_SHAPE_NONE ? 1 : 0;
+    return s && (s->shape != TS_SHAPE_NONE || s->ncon) ? 1 : 0;
 }
 
 ts_status ts_spline_certify(const ts_spline *s, const ts_line *lower, const ts_line *upper,
