@@ -415,6 +415,13 @@ void ts__con_betas(const double *x, const double *f, size_t n, const ts_spline_o
     }
 }
 
+ts_status ts__con_conditions(const double *x, const double *f, size_t n,
+                             const ts_spline_options *o, ts_constraint_failure *fail)
+{
+    ts_status st = ts__con_validate(o, n, NULL, fail);
+    return st == TS_OK ? data_checks(x, f, n, o->constraints, o->n_constraints, NULL, fail) : st;
+}
+
 ts_status ts__con_prepare(const double *x, const double *f, size_t n, const ts_spline_options *o,
                           double *d, int *by, ts_error *err, ts_constraint_failure *fail)
 {
@@ -872,12 +879,22 @@ ts_status ts__con_certify(ts_spline *sp, const ts_constraint *cs, size_t nc, ts_
     for (size_t i = 0; i < sp->n; i++) {
         size_t bad = 0;
         int tries = 0;
+        double a0 = sp->alpha[i] + sp->beta[i], lo = TS_GEOMETRIC_A_RAISE;
         while (!interval_ok(sp, cs, nc, i, &bad)) {
-            double a = sp->alpha[i] + sp->beta[i];
-            if (tries++ >= CON_DOUBLINGS || !(2.0 * a < 1e300))
+            /* a0 doubled CON_DOUBLINGS times, then (a polyline piece's gap
+             * is not monotone in a) 16 values from 4/(3π) up to a0 */
+            double a;
+            if (tries < CON_DOUBLINGS && 2.0 * (sp->alpha[i] + sp->beta[i]) < 1e300)
+                a = 2.0 * (sp->alpha[i] + sp->beta[i]);
+            else if (tries < CON_DOUBLINGS + 16 && a0 > lo)
+                a = lo * pow(a0 / lo, (tries - CON_DOUBLINGS) / 16.0) * (1.0 + 0x1p-40);
+            else
                 return con_fail(err, fail, TS_ERR_UNPROVEN, bad, i, TS_WHERE_INTERVAL,
                                 TS_CONDITION_UNPROVEN);
-            sp->beta[i] = 2.0 * a - sp->alpha[i];
+            if (tries < CON_DOUBLINGS && !(2.0 * (sp->alpha[i] + sp->beta[i]) < 1e300))
+                tries = CON_DOUBLINGS;
+            tries++;
+            sp->beta[i] = a > sp->alpha[i] ? a - sp->alpha[i] : 0.0;
             sp->term[i] = (unsigned char)TS_TERM_CERTIFY;
             ts__controls_geo(sp, i, i + 1);
         }

@@ -854,6 +854,10 @@ ts_status ts__con_validate(const ts_spline_options *o, size_t n, ts_error *err,
  * TS_ERR_INFEASIBLE where the required slopes exclude each other. */
 ts_status ts__con_prepare(const double *x, const double *f, size_t n, const ts_spline_options *o,
                           double *d, int *by, ts_error *err, ts_constraint_failure *fail);
+/* Validation and the necessary conditions alone (no slopes, no allocation):
+ * the sentence of TS_ERR_CONDITION (errmsg.c). */
+ts_status ts__con_conditions(const double *x, const double *f, size_t n,
+                             const ts_spline_options *o, ts_constraint_failure *fail);
 /* beta[0..n) from the closed-form requirements; bind[i] the record that set it. */
 void ts__con_betas(const double *x, const double *f, size_t n, const ts_spline_options *o,
                    const double *d, double *beta, int *bind);
