@@ -870,6 +870,26 @@ static int interval_ok(const ts_spline *sp, const ts_constraint *cs, size_t nc, 
     return 1;
 }
 
+static int nudge(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i, size_t *bad)
+{
+    double b1 = sp->b1[i], b2 = sp->b2[i];
+    for (int u = -2; u <= 2; u++)
+        for (int v = -2; v <= 2; v++) {
+            double c1 = b1, c2 = b2;
+            for (int k = 0; k < (u < 0 ? -u : u); k++)
+                c1 = nextafter(c1, u < 0 ? -HUGE_VAL : HUGE_VAL);
+            for (int k = 0; k < (v < 0 ? -v : v); k++)
+                c2 = nextafter(c2, v < 0 ? -HUGE_VAL : HUGE_VAL);
+            sp->b1[i] = c1;
+            sp->b2[i] = c2;
+            if (interval_ok(sp, cs, nc, i, bad))
+                return 1;
+        }
+    sp->b1[i] = b1;
+    sp->b2[i] = b2;
+    return 0;
+}
+
 /* docs/method.md §12.4: certify every interval; double a_i where a
  * certificate fails (every closed-form condition of §12.3 survives a larger
  * a); TS_ERR_UNPROVEN after CON_DOUBLINGS doublings. */
@@ -881,6 +901,12 @@ ts_status ts__con_certify(ts_spline *sp, const ts_constraint *cs, size_t nc, ts_
         int tries = 0;
         double a0 = sp->alpha[i] + sp->beta[i], lo = TS_GEOMETRIC_A_RAISE;
         while (!interval_ok(sp, cs, nc, i, &bad)) {
+            /* first the inner control values moved by up to 2 ulps: a slope
+             * set exactly to a bound, or a forced line, is met in exact
+             * arithmetic only if B1, B2 round the right way (docs/method.md
+             * §12.4); evaluation reads the stored values */
+            if (tries == 0 && nudge(sp, cs, nc, i, &bad))
+                break;
             /* a0 doubled CON_DOUBLINGS times, then (a polyline piece's gap
              * is not monotone in a) 16 values from 4/(3π) up to a0 */
             double a;
