@@ -833,9 +833,9 @@ static double con_gap(const ts_spline *sp, const ts_constraint *c, size_t i, dou
         }
         *proven = ok;
         if (!any) {
-            *at = NAN;
+            *at = (double)NAN;
             *proven = 1;
-            return NAN;
+            return (double)NAN;
         }
     }
     *at = x_at(&g, tmin);
@@ -934,7 +934,7 @@ void ts__con_report(const ts_spline *sp, size_t k, size_t i, ts_constraint_repor
     const ts_constraint *c = &sp->con[k];
     rep->in_scope = covers(c, sp, i);
     rep->active = 0;
-    rep->gap = rep->at = NAN;
+    rep->gap = rep->at = (double)NAN;
     rep->certified = 0;
     if (!rep->in_scope)
         return;

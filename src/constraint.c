@@ -23,7 +23,7 @@ void ts_constraint_report_init(ts_constraint_report *r)
         return;
     memset(r, 0, sizeof *r);
     r->struct_size = sizeof *r;
-    r->gap = r->at = NAN;
+    r->gap = r->at = (double)NAN;
 }
 
 size_t ts_spline_constraints(const ts_spline *s)
@@ -41,7 +41,7 @@ ts_status ts_spline_constraint_report(const ts_spline *s, size_t k, size_t i,
     size_t sz = rep->struct_size;
     memset(rep, 0, sizeof *rep);
     rep->struct_size = sz;
-    rep->gap = rep->at = NAN;
+    rep->gap = rep->at = (double)NAN;
     if (k >= s->ncon || i >= s->n)
         return TS_ERR_INDEX;
     ts__con_report(s, k, i, rep);

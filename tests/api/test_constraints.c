@@ -348,7 +348,7 @@ static void test_refusals(void)
     c[0].n_poly = 1;
     expect(x, fl, 2, &o, c, 1, TS_ERR_LENGTH, 0, TS_NO_INDEX, TS_WHERE_NONE, TS_CONDITION_NONE);
     c[0].n_poly = 3;
-    qy[2] = NAN;
+    qy[2] = TH_NAN;
     expect(x, fl, 2, &o, c, 1, TS_ERR_NONFINITE, 0, TS_NO_INDEX, TS_WHERE_NONE, TS_CONDITION_NONE);
     qy[2] = 0.0;
     c[0].px = NULL;

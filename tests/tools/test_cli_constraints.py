@@ -18,7 +18,8 @@ Checks:
     output byte for byte;
   - a scope @I0-I1 reports null outside it;
   - refusals: unknown SPEC (usage, exit 1), non-concave data and a secant
-    beyond a slope cap (exit 2, the sentence naming the record).
+    beyond a slope cap (exit 2, the sentence naming the record), a search
+    that gave up and a proven slope conflict (exit 3).
 Prints "test_cli_constraints: N passed, M failed" last.
 """
 import json
@@ -157,6 +158,14 @@ check("secant beyond cap", r.returncode == 2 and "beyond the slope-max bound -0.
       r.stderr)
 r = run("fit", chain, "--constraint", "convex", "--shape", "positive")
 check("no shape with constraints", r.returncode == 1 and "--constraint replaces --shape" in r.stderr,
+      r.stderr)
+
+flat = write("flat.csv", "0,1\n1,1\n")
+r = run("fit", flat, "--constraint", "lower=poly:0,0;0.5,1.2;1,0")
+check("unproven exit 3", r.returncode == 3 and "the search gave up" in r.stderr, r.stderr)
+tent = write("tent.csv", "0,0\n1,1\n2,0\n")
+r = run("fit", tent, "--constraint", "abs-slope<=1")
+check("conflict exit 3", r.returncode == 3 and "straight lines of different slopes" in r.stderr,
       r.stderr)
 
 print("test_cli_constraints: %d passed, %d failed" % (passed, failed))
