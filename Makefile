@@ -14,6 +14,7 @@
 #   make valgrind   memcheck of the test programs
 #   make tsan       ThreadSanitizer build of the threads and core tests
 #   make coverage   line and branch coverage of the library (gcovr)
+#   make test-constraints  the constraint records' property test, 10^6 problems
 #   make fuzz       the libFuzzer harnesses, FUZZ_SECONDS each (corpus replay is in make test)
 # Each target installs the Debian packages it needs (apt-get) when missing.
 # The compiler of a build directory is fixed when it is first configured
@@ -262,6 +263,13 @@ test-web: web build $(WEB_BUILD)/reference-musl $(WEB_BUILD)/trigspline-musl tes
 	test -e bindings/web/node_modules/playwright-core/package.json || \
 	  (cd bindings/web && npm ci --no-audit --no-fund)
 	bindings/web/test/run.sh $(WEB_OUT) $(WEB_BUILD) build out/web-test
+# ---- the constraint records' property test at full size ----
+# test_constraints runs 4000 random combined-constraint problems in make
+# test; this runs 10^6 (docs/method.md §12; about 15 minutes on one core).
+.PHONY: test-constraints
+test-constraints: build
+	TS_CON_PROBLEMS=1000000 build/tests/test_constraints
+
 # ---- trust at the edges: thread sanitizer, coverage, fuzzing ----
 .PHONY: tsan coverage fuzz
 

@@ -86,3 +86,23 @@ def test_refusals_name_the_record():
         Spline(K, C, constraints=["wiggly"])
     with pytest.raises(ValueError, match="constraint kind"):
         Spline(K, C, constraints=[{"kind": "bumpy"}])
+
+
+def test_hagan_west_forwards_positive_where_cubic_spline_goes_negative():
+    """Hagan & West's test curve: zero rates 8.1, 7, 4.4, 7, 4, 3 % at
+    t = 0.1, 1, 4, 9, 20, 30.  Fitting y = t r (with y(0) = 0) increasing
+    with y' >= 0.005 certifies the forward y' >= 0.005; SciPy's CubicSpline
+    through the same y has negative forwards."""
+    t = np.array([0.0, 0.1, 1.0, 4.0, 9.0, 20.0, 30.0])
+    r = np.array([0.081, 0.081, 0.07, 0.044, 0.07, 0.04, 0.03])
+    y = t * r
+    s = Spline(t, y, constraints=["increasing", "slope>=0.005"])
+    assert s.certified
+    assert all(c["certified"] and c["gap"] >= 0 for row in s.constraint_report() for c in row)
+    xs = np.linspace(0, 30, 30001)
+    fwd = s(xs, 1)
+    assert np.isfinite(fwd).all() and fwd.min() >= 0.005 - 1e-12
+    assert np.allclose(s(t[1:]) / t[1:], r[1:], rtol=1e-15, atol=0)
+    scipy_interp = pytest.importorskip("scipy.interpolate")
+    assert scipy_interp.CubicSpline(t, y)(xs, 1).min() < 0.0
+
