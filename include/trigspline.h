@@ -679,8 +679,9 @@ TS_API ts_status ts_spline_certify(const ts_spline *s, const ts_line *lower, con
  *                      or interval): second divided differences of the wrong
  *                      sign (convex/concave), a secant beyond a slope bound,
  *                      data changing direction (increasing/decreasing), a
- *                      data point on or across a bound (the bound must hold
- *                      strictly at the data);
+ *                      data point across a bound, or on a polyline (a
+ *                      constant bound may be touched: the slope there is
+ *                      then 0, pointing into the region at the ends);
  *   TS_ERR_INFEASIBLE  the slopes the constraints require at a knot
  *                      exclude each other (a proof that no C¹ curve exists);
  *   TS_ERR_UNPROVEN    no certified a_i up to 2^60 alpha_i was found, without
@@ -731,7 +732,7 @@ typedef enum ts_condition {
     TS_CONDITION_CONVEX_DATA = 1,    /* Δ_{i-1} <= Δ_i (convex) violated at point i */
     TS_CONDITION_CONCAVE_DATA = 2,   /* Δ_{i-1} >= Δ_i (concave) violated at point i */
     TS_CONDITION_MONOTONE_DATA = 3,  /* data change direction at point i */
-    TS_CONDITION_INSIDE_BOUND = 4,   /* point i on or across the bound */
+    TS_CONDITION_INSIDE_BOUND = 4,   /* point i across the bound (or on a polyline) */
     TS_CONDITION_SECANT_SLOPE = 5,   /* the secant of interval i beyond the slope bound
                                         (S' = Δ_i somewhere in it: mean value theorem) */
     TS_CONDITION_SLOPE_CONFLICT = 6, /* the slope ranges required at knot i are disjoint */

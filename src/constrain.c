@@ -147,11 +147,8 @@ static int data_inside(const ts_constraint *c, double xj, double fj)
 {
     double sg = bound_sign(c), v[CON_EXACT];
     int k = 0;
-    if (c->bound == TS_BOUND_CONSTANT) {
-        v[k++] = sg * fj;
-        v[k++] = -sg * c->value;
-        return exact_sign(v, k) > 0;
-    }
+    if (c->bound == TS_BOUND_CONSTANT) /* may be touched (docs/method.md §12.1) */
+        return sg * (fj - c->value) >= 0.0; /* the sign of a difference is exact */
     size_t m = c->n_poly;
     if (xj < c->px[0] || xj > c->px[m - 1])
         return -1;
@@ -298,6 +295,26 @@ static ts_status con_slopes(const double *x, const double *f, size_t n, const ts
         size_t i0 = cs[k].first, i1 = scope_end(&cs[k], n);
         for (size_t j = i0; j <= i1; j++) {
             double v = d[j] < lo ? lo : d[j] > hi ? hi : d[j];
+            if (v != d[j])
+                d[j] = v, by[j] = (int)k;
+        }
+    }
+    /* a constant bound the data touch: the slope there 0 (pointing into the
+     * region at the first and last knot of the scope), docs/method.md §5.1, §12.2 */
+    for (size_t k = 0; k < nc; k++) {
+        const ts_constraint *c = &cs[k];
+        double bs = bound_sign(c);
+        if (bs == 0.0 || c->bound != TS_BOUND_CONSTANT)
+            continue;
+        size_t i0 = c->first, i1 = scope_end(c, n);
+        for (size_t j = i0; j <= i1; j++) {
+            if (f[j] != c->value)
+                continue;
+            double v = (j > i0 && j < i1) ? 0.0
+                       : j == i0 ? (bs * d[j] < 0.0 ? 0.0 : d[j])
+                                 : (bs * d[j] > 0.0 ? 0.0 : d[j]);
+            if (i1 - i0 >= 1 && j == i0 && j == i1)
+                v = 0.0;
             if (v != d[j])
                 d[j] = v, by[j] = (int)k;
         }
@@ -517,7 +534,9 @@ static int line_polygon(const seg *g, double x0, double y0, double m, double bs)
         v[k++] = bs * g->B[l];
         v[k++] = -bs * y0;
         prod_terms(mm, 1, tt, nt, -bs, v, &k);
-        if (exact_sign(v, k) <= 0)
+        /* a constant bound: S − c = Σ A_l (B_l − c) >= 0 needs B_l >= c only
+         * (the data may touch it); a sloped piece: strictly above */
+        if (exact_sign(v, k) < (m == 0.0 && x0 == g->xi ? 0 : 1))
             return 0;
     }
     return 1;

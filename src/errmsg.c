@@ -185,8 +185,7 @@ static int condition_sentence(out *o, const data *d, const ts_error *e)
         break;
     case TS_CONDITION_INSIDE_BOUND:
         point_xf(o, d, i);
-        put(o, " is not strictly %s the %s bound", c->kind == TS_CONSTRAINT_LOWER ? "above" : "below",
-            kind);
+        put(o, " is not %s the %s bound", c->kind == TS_CONSTRAINT_LOWER ? "above" : "below", kind);
         break;
     case TS_CONDITION_SECANT_SLOPE:
         if (!(i + 1 < n))

@@ -278,8 +278,8 @@ static void test_hagan_west(void)
 
 /* TSPACK's own test (Renka, TOMS 716, its test driver): f(x) = x² on
  * uniformly spaced points of [0, 1], positive, increasing and convex; here
- * 11 points.  Convex, increasing and S' <= 2 (f' at 1) certified; the
- * inner slopes are the exact 2x. */
+ * 11 points.  Convex, increasing and S' <= 2 (f' at 1) certified, then
+ * convex, increasing and S >= 0; the inner slopes are the exact 2x. */
 static void test_tspack_quadratic(void)
 {
     double x[11], f[11];
@@ -302,15 +302,19 @@ static void test_tspack_quadratic(void)
     for (int j = 1; j < 10; j++)
         CHECK(fabs(d[j] - 2.0 * x[j]) <= 1e-15 * 4.0);
     check_minima(s, c, 3);
-    /* positivity in TSPACK's sense (f >= 0 with f(0) = 0 touching) is not
-     * offered: a bound the data touch is refused, naming point 0 */
-    ts_constraint_init(&c[0], TS_CONSTRAINT_LOWER);
-    ts_constraint_failure fl;
-    ts_constraint_failure_init(&fl);
-    o.constraints = c;
-    o.n_constraints = 1;
-    CHECK(ts_constraints_diagnose(x, f, 11, &o, &fl) == TS_ERR_CONDITION &&
-          fl.condition == TS_CONDITION_INSIDE_BOUND && fl.index == 0);
+    ts_spline_free(s);
+    /* with positivity too (f(0) = 0 touches the bound y = 0: the slope there
+     * is 0, the parabola's own): S >= 0 certified, its minimum 0 at x = 0 */
+    ts_constraint_init(&c[2], TS_CONSTRAINT_LOWER);
+    s = build(x, f, 11, &o, c, 3, &st, &e);
+    CHECK(st == TS_OK);
+    if (!s)
+        return;
+    CHECK(ts_spline_slopes(s)[0] == 0.0);
+    check_minima(s, c, 3);
+    ts_constraint_report r;
+    ts_constraint_report_init(&r);
+    CHECK(ts_spline_constraint_report(s, 2, 0, &r) == TS_OK && r.gap == 0.0 && r.at == 0.0);
     ts_spline_free(s);
 }
 
@@ -396,9 +400,9 @@ static void test_refusals(void)
     double g[4] = {0, 1, 0.5, 3};
     ts_constraint_init(&c[0], TS_CONSTRAINT_INCREASING);
     expect(x, g, 4, &o, c, 1, TS_ERR_CONDITION, 0, 2, TS_WHERE_POINT, TS_CONDITION_MONOTONE_DATA);
-    /* a point on a constant bound; across a polyline */
+    /* a point across a constant bound (touching it is allowed); on a polyline */
     ts_constraint_init(&c[0], TS_CONSTRAINT_LOWER);
-    c[0].value = 0.0;
+    c[0].value = 0.5;
     expect(x, f, 4, &o, c, 1, TS_ERR_CONDITION, 0, 0, TS_WHERE_POINT, TS_CONDITION_INSIDE_BOUND);
     double px[2] = {0.5, 2.5}, py[2] = {0.0, 2.0}; /* y = x − 0.5: point 2 (1.5) on it */
     c[0].bound = TS_BOUND_POLYLINE;
@@ -541,11 +545,13 @@ static void make_problem(prob *p, int tight)
     }
     if (urand() < 0.5) {
         ts_constraint_init(&c[p->nc], TS_CONSTRAINT_LOWER);
-        c[p->nc++].value = flo - (fhi - flo + 0.1) * (urand() < 0.3 ? 1e-3 : urand());
+        double u = urand(); /* a tenth touch the lowest datum */
+        c[p->nc++].value = u < 0.1 ? flo : flo - (fhi - flo + 0.1) * (u < 0.35 ? 1e-3 : urand());
     }
     if (urand() < 0.4) {
         ts_constraint_init(&c[p->nc], TS_CONSTRAINT_UPPER);
-        c[p->nc++].value = fhi + (fhi - flo + 0.1) * (urand() < 0.3 ? 1e-3 : urand());
+        double u = urand();
+        c[p->nc++].value = u < 0.1 ? fhi : fhi + (fhi - flo + 0.1) * (u < 0.35 ? 1e-3 : urand());
     }
     if (tight || urand() < 0.5) {
         /* a polyline lower bound below the data near each breakpoint: its
