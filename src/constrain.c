@@ -796,7 +796,7 @@ static double min_on(const target *tg, const seg_poly *s, const seg *g, double l
 /* Exact minimum (to rounding) of record c's gap on interval i and where;
  * *proven: the certificate (docs/method.md §12.4). */
 static double con_gap(const ts_spline *sp, const ts_constraint *c, size_t i, double *at,
-                      int *proven)
+                      int *proven, int want)
 {
     seg g;
     seg_poly s;
@@ -808,7 +808,7 @@ static double con_gap(const ts_spline *sp, const ts_constraint *c, size_t i, dou
     if (sg != 0.0) {
         tg.which = 0, tg.sg = sg;
         *proven = convex_polygon(&g, sg);
-        best = min_on(&tg, &s, &g, 0.0, 1.0, &tmin);
+        best = want ? min_on(&tg, &s, &g, 0.0, 1.0, &tmin) : best;
     } else if (slope_range(c, &lo, &hi)) {
         int ok = 1;
         for (int side = 0; side < 2; side++) {
@@ -817,7 +817,7 @@ static double con_gap(const ts_spline *sp, const ts_constraint *c, size_t i, dou
                 continue;
             ok &= slope_polygon(&g, L, sl);
             tg.which = 1, tg.sg = sl, tg.L = L;
-            double v = min_on(&tg, &s, &g, 0.0, 1.0, &tm);
+            double v = want ? min_on(&tg, &s, &g, 0.0, 1.0, &tm) : best;
             if (v < best)
                 best = v, tmin = tm;
         }
@@ -825,7 +825,7 @@ static double con_gap(const ts_spline *sp, const ts_constraint *c, size_t i, dou
     } else if (c->bound == TS_BOUND_CONSTANT) {
         tg.which = 2, tg.sg = bs, tg.m = 0.0, tg.x0 = g.xi, tg.y0 = c->value;
         *proven = line_polygon(&g, g.xi, c->value, 0.0, bs);
-        best = min_on(&tg, &s, &g, 0.0, 1.0, &tmin);
+        best = want ? min_on(&tg, &s, &g, 0.0, 1.0, &tmin) : best;
     } else {
         int ok = 1, any = 0;
         double x1 = g.xi + g.h;
@@ -837,7 +837,7 @@ static double con_gap(const ts_spline *sp, const ts_constraint *c, size_t i, dou
             double m = piece_slope(c, p);
             tg.which = 2, tg.sg = bs, tg.m = m, tg.x0 = c->px[p], tg.y0 = c->py[p];
             double ta = a <= g.xi ? 0.0 : t_of_x(&g, a), tb = b >= x1 ? 1.0 : t_of_x(&g, b);
-            double v = min_on(&tg, &s, &g, ta, tb, &tm);
+            double v = want ? min_on(&tg, &s, &g, ta, tb, &tm) : best;
             if (v < best)
                 best = v, tmin = tm;
             if (!line_polygon(&g, c->px[p], c->py[p], m, bs)) {
@@ -880,7 +880,7 @@ static int interval_ok(const ts_spline *sp, const ts_constraint *cs, size_t nc, 
             continue;
         double at;
         int proven;
-        (void)con_gap(sp, &cs[k], i, &at, &proven);
+        (void)con_gap(sp, &cs[k], i, &at, &proven, 0); /* the proof alone */
         if (!proven) {
             *bad = k;
             return 0;
@@ -959,5 +959,5 @@ void ts__con_report(const ts_spline *sp, size_t k, size_t i, ts_constraint_repor
         return;
     rep->active = sp->con_bind[i] == (int)k || sp->con_by[i] == (int)k ||
                   sp->con_by[i + 1] == (int)k;
-    rep->gap = con_gap(sp, c, i, &rep->at, &rep->certified);
+    rep->gap = con_gap(sp, c, i, &rep->at, &rep->certified, 1);
 }
