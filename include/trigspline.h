@@ -571,7 +571,9 @@ typedef struct ts_interval_report {
     double at_lower;        /* the x where it is attained */
     double gap_upper;       /* exact min of upper(x) - S(x) (NaN if !has_upper) */
     double at_upper;
-    int certified;          /* every active gap > 0 (with the rounding guard of docs/method.md §5.6) */
+    int certified;          /* every active gap > 0 (with the rounding guard of docs/method.md §5.6);
+                               a spline built with constraint records: 1 (every record proven on
+                               the interval, ts_spline_constraint_report) */
     /* Range and overshoot of the interval (docs/method.md §5.9), for every
      * spline (shape scheme or not; also from ts_spline_certify, and per coordinate
      * from ts_curve_certify*, there in the parameter t).  Exact extrema of the

@@ -99,6 +99,8 @@ static void test_closed_forms(void)
     ts_constraint_report_init(&r);
     CHECK(ts_spline_constraint_report(s, 0, 0, &r) == TS_OK);
     CHECK(r.in_scope && r.active && r.certified && r.gap >= 0.0);
+    ts_interval_report ir = TS_INTERVAL_REPORT_INIT;
+    CHECK(ts_spline_report(s, 0, &ir) == TS_OK && ir.certified == 1);
     ts_spline_free(s);
 
     /* slope-max U = 2 with d = (0.5, 0.9): need = 2((2 − 0.5) + (2 − 0.9))/(3π (2 − 1)) */
