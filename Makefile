@@ -208,7 +208,7 @@ WEB_FUNCS := ts_version ts_strerror ts_status_name ts_vocab_name ts_vocab_count 
   ts_curve_dim ts_curve_closed ts_curve_knots ts_curve_control ts_curve_params ts_curve_eval \
   ts_curve_sample ts_curve_length tsw_spline_new tsw_curve_new tsw_defaults tsw_curve_defaults \
   tsw_report tsw_certify tsw_curve_certify tsw_error_constants tsw_heap_top ts_error_message \
-  tsw_message tsw_message_clear malloc free
+  tsw_message tsw_message_clear tsw_constraints tsw_constraint_report ts_spline_constraints malloc free
 web_comma := ,
 web_space := $(web_empty) $(web_empty)
 WEB_EXPORTS := $(subst $(web_space),$(web_comma),$(patsubst %,'_%',$(WEB_FUNCS)))
