@@ -712,15 +712,48 @@ static double y_at(const seg *g, double t)
     return g->B[0] + (A[1] * (g->B[1] - g->B[0]) + A[2] * (g->B[2] - g->B[0]) +
                       A[3] * (g->B[3] - g->B[0]));
 }
+/* S' and S'' at t from the basis derivatives (as evaluation forms them,
+ * docs/method.md §4: dS/dx = Y'/X', d²S/dx² = (Y'' − (Y'/X') X'')/X'²), not
+ * from the polynomials: near the ends of an interval with a large a, X' is
+ * 3κ and the polynomial forms lose the digits the ratio needs. */
+static void derivs_at(const seg *g, double t, double *d1, double *d2)
+{
+    double th = ts__theta_of(t), A1[4], A2[4];
+    double sn = sin(th), cs = cos(th);
+    ts__basis_d1(sn, cs, A1);
+    ts__basis_d2(sn, cs, A2);
+    double X[4] = {0.0, g->kap, 1.0 - g->kap, 1.0};
+    double Yp = 0.0, Xp = 0.0, Ypp = 0.0, Xpp = 0.0;
+    for (int l = 1; l < 4; l++) {
+        double dB = g->B[l] - g->B[0];
+        Yp += A1[l] * dB;
+        Ypp += A2[l] * dB;
+        Xp += A1[l] * X[l];
+        Xpp += A2[l] * X[l];
+    }
+    double r = Yp / Xp;
+    *d1 = r / g->h;
+    /* at the knots the slope is the polygon's end leg (B1 − B0)/(κh) and
+     * (B3 − B2)/(κh), without the sums' cancellation */
+    if (t == 0.0)
+        *d1 = (g->B[1] - g->B[0]) / (g->kap * g->h);
+    if (t == 1.0)
+        *d1 = (g->B[3] - g->B[2]) / (g->kap * g->h);
+    *d2 = (Ypp - r * Xpp) / Xp / Xp / g->h / g->h;
+}
 static double d1_at(const seg_poly *s, const seg *g, double t)
 {
-    return p_eval(&s->Y1, t) / (g->h * p_eval(&s->X1, t));
+    (void)s;
+    double a, b;
+    derivs_at(g, t, &a, &b);
+    return a;
 }
 static double d2_at(const seg_poly *s, const seg *g, double t)
 {
-    double X1 = p_eval(&s->X1, t), q = 1.0 + t * t;
-    double N = p_eval(&s->Y2, t) * X1 - p_eval(&s->Y1, t) * p_eval(&s->X2, t);
-    return q * q * q * N / (X1 * X1 * X1) / (g->h * g->h);
+    (void)s;
+    double a, b;
+    derivs_at(g, t, &a, &b);
+    return b;
 }
 
 /* t in [0, 1] with x_at = x (X increasing), by bisection. */

@@ -732,6 +732,23 @@ static void test_property(long problems, int gaps_only)
                            "(tolerance %.3g)\n",
                            t, k, ts_vocab_name(TS_VOCAB_CONSTRAINT, (int)p.c[k].kind), i,
                            r.certified, r.gap, tol);
+                    if (getenv("TS_CON_DUMP")) {
+                        const double *d = ts_spline_slopes(s);
+                        double a, B[4], X[4], worst = -HUGE_VAL, at = 0.0;
+                        ts_spline_a(s, i, &a);
+                        ts_spline_control(s, i, B, X);
+                        printf("  x %.17g %.17g f %.17g %.17g d %.17g %.17g a %.17g\n  B %.17g %.17g %.17g %.17g at %.17g\n",
+                               p.x[i], p.x[i + 1], p.f[i], p.f[i + 1], d[i], d[i + 1], a, B[0], B[1], B[2], B[3], r.at);
+                        for (int j = 0; j <= 200000; j++) {
+                            double xx = p.x[i] + (p.x[i + 1] - p.x[i]) * j / 200000.0, y, dy, d2;
+                            if (xx >= p.x[i + 1])
+                                xx = nextafter(p.x[i + 1], 0.0);
+                            ts_spline_eval_deriv(s, xx, NULL, &y, &dy, &d2);
+                            if (d2 > worst)
+                                worst = d2, at = xx;
+                        }
+                        printf("  dense max S'' %.17g at %.17g\n", worst, at);
+                    }
                 }
             }
         ts_spline_free(s);

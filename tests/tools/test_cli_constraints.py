@@ -124,7 +124,8 @@ for k, spec in enumerate(SPECS):
               "gap %r min sample %r" % (cr["gap"], lo))
         check("gap near samples %s %d" % (spec, i), lo - cr["gap"] <= 1e-4 * scale,
               "gap %r min sample %r" % (cr["gap"], lo))
-        check("gap non-negative %s %d" % (spec, i), cr["gap"] >= 0.0)
+        # the exact minimum, rounded: >= 0 up to 1e-12 of the quantity's scale
+        check("gap non-negative %s %d" % (spec, i), cr["gap"] >= -1e-12 * scale, cr["gap"])
 
 # the same from a JSON file: strings and objects
 cfile = write("cons.json", json.dumps(["convex", {"kind": "decreasing"},
