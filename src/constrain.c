@@ -453,10 +453,14 @@ ts_status ts__con_prepare(const double *x, const double *f, size_t n, const ts_s
 /* Local control polygon of interval i: Y = B, X̂ = (0, κ, 1 − κ, 1). */
 typedef struct seg {
     double B[4], kap, h, xi;
+    const ts_spline *sp;
+    size_t i;
 } seg;
 
 static void seg_of(const ts_spline *sp, size_t i, seg *g)
 {
+    g->sp = sp;
+    g->i = i;
     ts__B(sp, i, g->B);
     g->kap = sp->kappa[i];
     g->h = sp->h[i];
@@ -712,34 +716,21 @@ static double y_at(const seg *g, double t)
     return g->B[0] + (A[1] * (g->B[1] - g->B[0]) + A[2] * (g->B[2] - g->B[0]) +
                       A[3] * (g->B[3] - g->B[0]));
 }
-/* S' and S'' at t from the basis derivatives (as evaluation forms them,
- * docs/method.md §4: dS/dx = Y'/X', d²S/dx² = (Y'' − (Y'/X') X'')/X'²), not
- * from the polynomials: near the ends of an interval with a large a, X' is
- * 3κ and the polynomial forms lose the digits the ratio needs. */
+/* S' and S'' at t as evaluation gives them (ts__geo_eval at x = X(t),
+ * docs/method.md §4), not from the polynomials, which lose the digits of
+ * the ratios where X' = 3κ is small (a large a); at the knots the slope is
+ * the polygon's end leg (B1 − B0)/(κh), (B3 − B2)/(κh). */
 static void derivs_at(const seg *g, double t, double *d1, double *d2)
 {
-    double th = ts__theta_of(t), A1[4], A2[4];
-    double sn = sin(th), cs = cos(th);
-    ts__basis_d1(sn, cs, A1);
-    ts__basis_d2(sn, cs, A2);
-    double X[4] = {0.0, g->kap, 1.0 - g->kap, 1.0};
-    double Yp = 0.0, Xp = 0.0, Ypp = 0.0, Xpp = 0.0;
-    for (int l = 1; l < 4; l++) {
-        double dB = g->B[l] - g->B[0];
-        Yp += A1[l] * dB;
-        Ypp += A2[l] * dB;
-        Xp += A1[l] * X[l];
-        Xpp += A2[l] * X[l];
-    }
-    double r = Yp / Xp;
-    *d1 = r / g->h;
-    /* at the knots the slope is the polygon's end leg (B1 − B0)/(κh) and
-     * (B3 − B2)/(κh), without the sums' cancellation */
+    double out[3];
+    double x = t == 0.0 ? g->xi : t == 1.0 ? g->sp->x[g->i + 1] : x_at(g, t);
+    ts__geo_eval(g->sp, g->i, x, 2, out);
+    *d1 = out[1];
+    *d2 = out[2];
     if (t == 0.0)
         *d1 = (g->B[1] - g->B[0]) / (g->kap * g->h);
     if (t == 1.0)
         *d1 = (g->B[3] - g->B[2]) / (g->kap * g->h);
-    *d2 = (Ypp - r * Xpp) / Xp / Xp / g->h / g->h;
 }
 static double d1_at(const seg_poly *s, const seg *g, double t)
 {
