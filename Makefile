@@ -4,23 +4,32 @@
 #   make build-asan ASan+UBSan build in build-asan/
 #   make test       all three builds, then tests/run_all.sh (package test and the
 #                   Python package's pytest included)
-#   make demo       the paper's numerical section (out/paper) and the
-#                   "why trigspline" page (out/why)
+#   make demo       the paper's numerical section (out/paper), the
+#                   "why trigspline" page (out/why), the Python gallery (out/gallery)
+#                   and the charts gallery (out/charts)
 #   make web        the WebAssembly module and the explorer page (out/web)
-#   make test-web   Node and headless-Chromium tests of out/web and out/why
+#   make test-web   Node and headless-Chromium tests of out/web, out/why and out/charts
+#   make test-web-stack-full  stacked-area crossings on 1e5 random data sets
 #   make bench      benchmark against GSL and the build decisions -> bench/RESULTS.md
 #   make bench-python  the Python package against SciPy (also run by make bench)
 #   make accuracy   convergence study -> docs/accuracy.md, docs/accuracy.svg
 #   make valgrind   memcheck of the test programs
 #   make tsan       ThreadSanitizer build of the threads and core tests
 #   make coverage   line and branch coverage of the library (gcovr)
+#   make test-r     the R package (bindings/r): R CMD build, install, smoke test and
+#                   R CMD check --as-cran (tests included)
 #   make test-constraints  the constraint records' property test, 10^6 problems
 #   make fuzz       the libFuzzer harnesses, FUZZ_SECONDS each (corpus replay is in make test)
+#   make dist       every package into dist/ (tools/dist/CHANNEL.sh build): Python wheel and
+#                   sdist, musl tarball, Debian packages, the conda recipe checked, ...
+#   make test-dist  make dist, then each package installed in a clean place and smoke-tested
+#                   (tools/dist/CHANNEL.sh test); a summary table: channel, artifact, size, result
+#   make test-musl  every C test program built with musl-gcc and run
 # Each target installs the Debian packages it needs (apt-get) when missing.
 # The compiler of a build directory is fixed when it is first configured
 # (CC=gcc or CC=clang below); `make clean` starts over.
 .PHONY: all build configure-build demo-tools build-asan build-clang test demo bench accuracy valgrind clean \
-  python-deps bench-python
+  python-deps bench-python r-deps test-r
 
 JOBS ?= 2
 CMAKE ?= cmake
@@ -43,7 +52,7 @@ endef
 BUILD_TOOLS := cmake:cmake gcc:gcc cc:gcc python3:python3
 # PNG/PDF plots of the command (rsvg-convert) and their checks in tests/tools/test_realworld.py
 PLOT_TEST_TOOLS := rsvg-convert:librsvg2-bin pdfinfo:poppler-utils pdftoppm:poppler-utils
-TEST_TOOLS := valgrind:valgrind pkg-config:pkg-config readelf:binutils
+TEST_TOOLS := valgrind:valgrind pkg-config:pkg-config readelf:binutils musl-gcc:musl-tools
 # libc.a: the package test links a -static program
 STATIC_LIBC := /usr/lib/$(shell gcc -print-multiarch 2>/dev/null || echo x86_64-linux-gnu)/libc.a
 
@@ -73,7 +82,7 @@ build-asan:
 	  -DTS_SANITIZE=ON >/dev/null
 	$(CMAKE) --build build-asan -j $(JOBS)
 
-test: why-deps python-deps build build-asan build-clang
+test: why-deps python-deps r-deps build build-asan build-clang
 	$(call need,$(TEST_TOOLS))
 	$(call need,$(PLOT_TEST_TOOLS))
 	$(call need_file,$(STATIC_LIBC),libc6-dev)
@@ -83,10 +92,13 @@ test: why-deps python-deps build build-asan build-clang
 # Every program is checked (a failing one does not stop the others); the
 # tests whose references need x87 long double detect at run time that
 # valgrind computes it in double (th_long_double_wide, tests/th.h).
+# test_kernel_bits compares the kernels' bits with a table of native runs;
+# valgrind's emulation of FMA flips the sign of some zero results, so it is
+# left out here (its memory use is the batch kernels', which test_batch covers).
 valgrind: build
 	$(call need,valgrind:valgrind)
 	@failed=""; for t in build/tests/test_*; do \
-	  case $$t in *test_property|*test_fast|*test_random_inputs|*test_random_tool_inputs|*test_package) continue;; esac; \
+	  case $$t in *test_property|*test_fast|*test_random_inputs|*test_random_tool_inputs|*test_package|*test_kernel_bits) continue;; esac; \
 	  [ -x $$t ] || continue; \
 	  if valgrind -q --leak-check=full --errors-for-leak-kinds=all --error-exitcode=9 $$t >$$t.valgrind.log 2>&1; \
 	  then echo "valgrind $$t: ok"; \
@@ -120,10 +132,12 @@ accuracy: build
 demo: demo-tools
 	python3 scripts/paper_demo.py build/trigspline data/paper out/paper
 	$(MAKE) --no-print-directory why-demo
+	$(MAKE) --no-print-directory gallery
+	$(MAKE) --no-print-directory charts-demo
 
 clean:
 	rm -rf build build-asan build-clang build-bench build-web build-coverage build-fuzz build-tsan \
-	  bindings/python/build out
+	  build-musl bindings/python/build out dist build-r
 
 # ---- Python package (bindings/python) --------------------------------------
 # Debian's own interpreter (/usr/bin/python3, not another python3 on PATH)
@@ -131,12 +145,27 @@ clean:
 PYTHON := /usr/bin/python3
 PYTHON_PACKAGES := python3 python3-numpy python3-scipy python3-pytest python3-setuptools \
   python3-wheel python3-venv python3-pip python3-dev python3-xarray python3-dask \
-  python3-distributed python3-pandas
+  python3-distributed python3-pandas python3-matplotlib python3-netcdf4
 python-deps:
-	@$(PYTHON) -c 'import numpy, scipy, pytest, setuptools, wheel, ensurepip, xarray, dask, distributed, pandas, os, sys, sysconfig; \
+	@$(PYTHON) -c 'import numpy, scipy, pytest, setuptools, wheel, ensurepip, xarray, dask, distributed, pandas, matplotlib, netCDF4, os, sys, sysconfig; \
 	  sys.exit(not os.path.exists(os.path.join(sysconfig.get_paths()["include"], "Python.h")))' \
 	  2>/dev/null || { apt-get update && \
 	  DEBIAN_FRONTEND=noninteractive apt-get install -y $(PYTHON_PACKAGES); }
+
+# ---- R package (bindings/r) -------------------------------------------------
+# R with its headers and testthat (Debian); the R package's tests run in
+# `make test` (bindings/r/tests/run.sh), the whole R CMD check here.
+r-deps:
+	$(call need_file,/usr/share/doc/r-base-dev,r-base-dev)
+	$(call need_file,/usr/lib/R/site-library/testthat/DESCRIPTION,r-cran-testthat)
+
+# tools/dist/r.sh: the source tarball into build-r/, installed into a temporary
+# library and smoke-tested, then R CMD check --as-cran on it (the PDF manual
+# only where pdflatex is installed: --no-manual otherwise).
+test-r: r-deps
+	rm -rf build-r
+	tools/dist/r.sh build build-r
+	R_CHECK=1 tools/dist/r.sh test build-r
 
 # Python rows of the benchmark (bench/bench_python.py): the package installed
 # into a fresh venv, against SciPy's PchipInterpolator in the same run.
@@ -151,6 +180,23 @@ bench-python: python-deps
 	  --no-build-isolation ./bindings/python
 	cd build-bench && python-venv/bin/python ../bench/bench_python.py
 	cd build-bench && python-venv/bin/python ../bench/bench_xarray.py
+
+# The gallery (out/gallery/index.html): figures of trigspline.plot, each with
+# the code that made it (scripts/gallery.py, a few seconds).  The package is
+# installed into build/gallery-venv once and again only when its sources change.
+.PHONY: gallery
+GALLERY_VENV := build/gallery-venv
+GALLERY_SRC := $(wildcard bindings/python/trigspline/*.py bindings/python/src/*.c src/*.c \
+  src/*.h include/*.h) bindings/python/setup.py CMakeLists.txt
+$(GALLERY_VENV)/.installed: $(GALLERY_SRC)
+	@$(MAKE) --no-print-directory python-deps
+	rm -rf $(GALLERY_VENV)
+	$(PYTHON) -m venv --system-site-packages $(GALLERY_VENV)
+	env -u PIP_FIND_LINKS PIP_NO_INDEX=1 $(GALLERY_VENV)/bin/pip install -q \
+	  --no-build-isolation ./bindings/python
+	touch $@
+gallery: $(GALLERY_VENV)/.installed
+	$(GALLERY_VENV)/bin/python scripts/gallery.py out/gallery
 
 # The companion page "why trigspline" (out/why): our curves beside SciPy's and
 # GSL's on data/examples/, α guidance and the overshoot report.  Run by `make
@@ -208,7 +254,8 @@ WEB_FUNCS := ts_version ts_strerror ts_status_name ts_vocab_name ts_vocab_count 
   ts_curve_dim ts_curve_closed ts_curve_knots ts_curve_control ts_curve_params ts_curve_eval \
   ts_curve_sample ts_curve_length tsw_spline_new tsw_curve_new tsw_defaults tsw_curve_defaults \
   tsw_report tsw_certify tsw_curve_certify tsw_error_constants tsw_heap_top ts_error_message \
-  tsw_message tsw_message_clear tsw_constraints tsw_constraint_report ts_spline_constraints malloc free
+  tsw_message tsw_message_clear tsw_constraints tsw_constraint_report ts_spline_constraints malloc free \
+  tsw_disaggregate tsw_histo_defaults
 web_comma := ,
 web_space := $(web_empty) $(web_empty)
 WEB_EXPORTS := $(subst $(web_space),$(web_comma),$(patsubst %,'_%',$(WEB_FUNCS)))
@@ -239,7 +286,7 @@ $(WEB_BUILD)/trigspline-cli.js: $(WEB_LIB_SRC) $(WEB_CLI_SRC) tools/cli/cli.h to
 	  -sEXPORTED_RUNTIME_METHODS='["FS","callMain"]' -o $@
 
 $(WEB_OUT)/index.html: $(WEB_BUILD)/trigspline.wasm $(WEB_BUILD)/trigspline-cli.js \
-  $(wildcard bindings/web/*.js bindings/web/*.mjs bindings/web/explorer/*)
+  $(wildcard bindings/web/*.js bindings/web/*.mjs bindings/web/*.mts bindings/web/explorer/*)
 	node bindings/web/build.mjs $(WEB_BUILD) $(WEB_OUT)
 
 # Native references for the Node test: the same sources with musl's libm (the
@@ -257,15 +304,43 @@ $(WEB_BUILD)/trigspline-musl: $(WEB_LIB_SRC) $(WEB_CLI_SRC) include/trigspline.h
 	musl-gcc -std=c11 -O2 -DTS_FAST_PORTABLE $(WEB_WARN) -Iinclude -I$(WEB_BUILD)/include -Isrc -Itools/support \
 	  -Itools/cli $(WEB_LIB_SRC) $(WEB_CLI_SRC) -lm -o $@
 
-test-web: web build $(WEB_BUILD)/reference-musl $(WEB_BUILD)/trigspline-musl test-why-page
+test-web: web build $(WEB_BUILD)/reference-musl $(WEB_BUILD)/trigspline-musl test-why-page charts-demo
 	$(call need,node:nodejs npm:npm)
 	$(call need_file,/usr/bin/chromium,chromium)
-	test -e bindings/web/node_modules/playwright-core/package.json || \
-	  (cd bindings/web && npm ci --no-audit --no-fund)
-	bindings/web/test/run.sh $(WEB_OUT) $(WEB_BUILD) build out/web-test
+	$(WEB_NODE_MODULES)
+	bindings/web/test/run.sh $(WEB_OUT) $(WEB_BUILD) build out/web-test $(CHARTS_OUT)
+
+# bindings/web's npm packages (package-lock.json): playwright-core drives
+# Chromium; d3, chart.js and echarts are what the chart plugins are tested
+# against and what the gallery inlines; typescript checks trigspline.d.ts.
+WEB_NODE_MODULES = @for p in playwright-core d3 chart.js echarts typescript; do \
+	  test -e bindings/web/node_modules/$$p/package.json || { (cd bindings/web && npm ci --no-audit --no-fund) && break; }; done
+
+# The charts gallery (out/charts/index.html, one static page that works from
+# file://): d3, Chart.js and ECharts before and after on d3-shape#81's data and
+# on real series, with the cost of each crossing.  Part of `make demo`.
+.PHONY: charts-demo test-web-stack-full
+CHARTS_OUT := out/charts
+charts-demo: web
+	$(call need,node:nodejs npm:npm)
+	$(WEB_NODE_MODULES)
+	node bindings/web/gallery/build.mjs $(WEB_OUT) $(CHARTS_OUT)
+
+# The stacked-area crossing measurement on 1e5 random data sets (make test-web
+# runs 2000 of them): out/web-test/stack-crossings-full.md.
+test-web-stack-full: web
+	$(call need,node:nodejs npm:npm)
+	$(WEB_NODE_MODULES)
+	node bindings/web/test/stack_full.mjs $(WEB_OUT) out/web-test 100000
+
+# ---- rates from bin totals at full size (make test runs 10^4 series) ----
+.PHONY: test-histo
+test-histo: build
+	TS_HISTO_SERIES=200000 build/tests/test_histo
+
 # ---- the constraint records' property test at full size ----
 # test_constraints runs 4000 random combined-constraint problems in make
-# test; this runs 10^6 (docs/method.md §12; about 15 minutes on one core).
+# test; this runs 10^6 (docs/method.md §13; about 15 minutes on one core).
 .PHONY: test-constraints
 test-constraints: build
 	TS_CON_PROBLEMS=1000000 build/tests/test_constraints
@@ -345,11 +420,43 @@ fuzz:
 	@failed=""; for n in $(FUZZ_HARNESSES); do \
 	  b=$(FUZZ_BUILD); mkdir -p $$b/corpus/$$n $$b/artifacts; \
 	  dict=""; test -f tests/fuzz/$$n.dict && dict="-dict=tests/fuzz/$$n.dict"; \
-	  if $$b/fuzz/fuzz_$$n -max_total_time=$(FUZZ_SECONDS) -timeout=30 -print_final_stats=1 \
+	  if TS_FUZZ_STATS=1 $$b/fuzz/fuzz_$$n -max_total_time=$(FUZZ_SECONDS) -timeout=30 -print_final_stats=1 \
 	      -artifact_prefix=$$b/artifacts/$$n- $$dict $(FUZZ_FLAGS) \
 	      $$b/corpus/$$n tests/fuzz/corpus/$$n >$$b/fuzz_$$n.log 2>&1; then st=ok; \
 	  else st=FAILED; failed="$$failed $$n"; tail -n 40 $$b/fuzz_$$n.log; fi; \
 	  runs=$$(sed -n 's/^stat::number_of_executed_units: *//p' $$b/fuzz_$$n.log); \
-	  echo "fuzz $$n: $$st, $${runs:-?} runs in $(FUZZ_SECONDS) s, corpus $$(ls $$b/corpus/$$n | wc -l) new + $$(ls tests/fuzz/corpus/$$n | wc -l) checked in (log $$b/fuzz_$$n.log)"; \
+	  stats=$$(sed -n 's/^stats: //p' $$b/fuzz_$$n.log | tail -n 1); \
+	  echo "fuzz $$n: $$st, $${runs:-?} runs in $(FUZZ_SECONDS) s, corpus $$(ls $$b/corpus/$$n | wc -l) new + $$(ls tests/fuzz/corpus/$$n | wc -l) checked in$${stats:+ ($$stats)} (log $$b/fuzz_$$n.log)"; \
 	done; \
 	if [ -n "$$failed" ]; then echo "fuzz: FAILED:$$failed (inputs in $(FUZZ_BUILD)/artifacts/)"; exit 1; fi
+# ---- distribution: packages for each channel (tools/dist/) ----
+# One script per channel, tools/dist/CHANNEL.sh, with `build DISTDIR` and
+# `test DISTDIR` (interface: tools/dist/lib/common.sh); tools/dist/run.py runs
+# them in turn and prints the summary.  DIST_CHANNELS="python musl" for some.
+.PHONY: dist test-dist test-musl
+DIST ?= dist
+DIST_CHANNELS ?=
+dist:
+	$(call need,$(BUILD_TOOLS))
+	$(PYTHON) tools/dist/run.py build $(DIST) $(DIST_CHANNELS)
+
+# builds too (the packages of the tree as it is), then installs and tests each
+test-dist:
+	$(call need,$(BUILD_TOOLS))
+	$(PYTHON) tools/dist/run.py all $(DIST) $(DIST_CHANNELS)
+
+# All C test programs on musl (make test runs three of them: tests/test_musl.py),
+# except test_package: it checks an installation with the host's glibc tools
+# (ldd cannot resolve a musl program; musl's crti adds _init/_fini to the
+# exported symbols it compares with trigspline.h).
+MUSL_BUILD := build-musl
+test-musl:
+	$(call need,$(BUILD_TOOLS) musl-gcc:musl-tools)
+	CC=musl-gcc $(CMAKE) -S . -B $(MUSL_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DTS_WERROR=ON \
+	  -DTS_BUILD_EXAMPLES=OFF >/dev/null
+	$(CMAKE) --build $(MUSL_BUILD) -j $(JOBS)
+	@failed=""; n=0; for t in $(MUSL_BUILD)/tests/test_*; do [ -x $$t ] || continue; \
+	  case $$t in *test_package) continue;; esac; n=$$((n+1)); \
+	  if $$t >$$t.log 2>&1; then echo "musl $$(basename $$t): $$(tail -n 1 $$t.log)"; \
+	  else echo "musl $$(basename $$t): FAILED (log $$t.log)"; tail -n 20 $$t.log; failed="$$failed $$t"; fi; \
+	done; if [ -n "$$failed" ]; then echo "test-musl: FAILED:$$failed"; exit 1; fi; echo "test-musl: $$n programs passed"

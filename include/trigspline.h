@@ -1450,6 +1450,134 @@ TS_API void ts_error_context_init(ts_error_context *ctx);
 TS_API size_t ts_error_message(const ts_error *err, const ts_error_context *ctx, char *buf,
                                size_t len);
 
+/* ================================================================== */
+/* Histograms: a rate from bin totals (disaggregation)                 */
+/* ================================================================== */
+
+/*
+ * From bins [e_j, e_{j+1}] (edges e[0..n_bins], strictly increasing) and
+ * their totals T_j, a rate r(x) on [e_0, e_n] with (docs/method.md §12)
+ *   - ∫ r over bin j = T_j to rounding (a few ulps of T_j + lo w_j);
+ *   - lo <= r <= hi everywhere (default lo = 0, hi = +inf: r >= 0), proved
+ *     per bin by the control values and reported with the exact minimum
+ *     and maximum; values returned never leave [lo, hi];
+ *   - r continuous with a continuous derivative (C¹) across bin edges and
+ *     inside the bins.  A bin with mean lo (a dry bin) forces r ≡ lo on it,
+ *     hence r = lo, r' = 0 at its edges.
+ * Each bin is four cubic trigonometric pieces (the basis of §2; knots at
+ * the edges and quarter points): edge values and slopes from the
+ * neighbouring bin means, the inner knots from a linear system that meets
+ * the total exactly and makes r C² (r'' continuous, 0 at the edges),
+ * blended towards a flat solution only where that would leave [lo, hi].
+ * The tension alpha divides the edge slopes (larger: flatter), as in §3.
+ *
+ * Designed for 1-D bins; a rectilinear grid of cell averages (the 2-D
+ * case) follows the same construction per axis (docs/method.md §12.7).
+ */
+typedef struct ts_histo ts_histo;
+
+/* Start from ts_histo_options_init(), then set fields. */
+typedef struct ts_histo_options {
+    size_t struct_size;     /* sizeof(ts_histo_options), set by ts_histo_options_init */
+    double alpha;           /* tension > 0, finite; default TS_DEFAULT_ALPHA */
+    double lo, hi;          /* rate bounds: lo finite, lo < hi (hi may be +inf);
+                               default 0 and +inf */
+} ts_histo_options;
+TS_API void ts_histo_options_init(ts_histo_options *opt);
+
+/*
+ * Build the rate of n_bins bins (edges: n_bins + 1 values, totals: n_bins).
+ * opt may be NULL (defaults).  *out (required) is set to NULL first and to
+ * the new object on success; err may be NULL (reset first).  Statuses:
+ *   TS_ERR_NULL        edges, totals or out NULL
+ *   TS_ERR_VERSION     opt->struct_size (checked right after TS_ERR_NULL)
+ *   TS_ERR_TOO_FEW     n_bins == 0
+ *   TS_ERR_ALPHA       alpha not > 0 and finite
+ *   TS_ERR_OPTION      lo not finite, or not lo < hi, or hi NaN
+ *   TS_ERR_OVERFLOW    n_bins too large for the arrays
+ *   TS_ERR_NONFINITE   an edge (where = point) or a total (where = interval) NaN/inf
+ *   TS_ERR_UNSORTED    edges not strictly increasing (point i with e[i] <= e[i-1])
+ *   TS_ERR_WIDTH       a bin width overflows or is below DBL_MIN (point i = its right edge)
+ *   TS_ERR_TOO_LARGE   a bin mean beyond TS_VALUE_MAX / 4 in magnitude (interval)
+ *   TS_ERR_NEGATIVE    a total below lo times the bin width, with lo = 0 and
+ *                      hi = +inf: a negative total (interval)
+ *   TS_ERR_INFEASIBLE  with other bounds, a bin whose mean is outside [lo, hi], or two
+ *                      neighbouring bins the scheme cannot join inside the bounds
+ *                      (docs/method.md §12.4; interval = the first such bin;
+ *                      ts_histo_check gives every bin's status)
+ *   TS_ERR_NOMEM       allocation failed
+ */
+TS_API ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
+                              const ts_histo_options *opt, ts_histo **out, ts_error *err);
+/* The same checks, without building: status[j] (n_bins entries; may be
+ * NULL) is TS_OK or the status of bin j (an edge failing names both of its
+ * bins; TS_ERR_INFEASIBLE marks both bins of an edge the scheme cannot
+ * join).  Statuses as ts_histo_new, except TS_ERR_NOMEM; status[] is
+ * written (all TS_OK first) whenever the arguments are not NULL, the
+ * options valid and n_bins > 0. */
+TS_API ts_status ts_histo_check(const double *edges, const double *totals, size_t n_bins,
+                                const ts_histo_options *opt, ts_status *status, ts_error *err);
+TS_API void ts_histo_free(ts_histo *h);
+TS_API size_t ts_histo_bins(const ts_histo *h);
+
+/*
+ * r(x) and r'(x) (dr may be NULL).  x in [e_0, e_n]; no allocation.  Both
+ * outputs are set to NaN first.  TS_OK, TS_ERR_NULL (h, r),
+ * TS_ERR_DOMAIN (x outside [e_0, e_n] or NaN).  r is within [lo, hi]
+ * exactly (docs/method.md §12.5).
+ */
+TS_API ts_status ts_histo_eval(const ts_histo *h, double x, double *r, double *dr);
+/* r (and r' when dr is not NULL) at m queries; outputs NaN first; the
+ * first query outside [e_0, e_n] stops with TS_ERR_DOMAIN (err index =
+ * query, where = TS_WHERE_QUERY).  TS_OK, TS_ERR_NULL (h, or x, r with
+ * m > 0), TS_ERR_DOMAIN. */
+TS_API ts_status ts_histo_eval_batch(const ts_histo *h, const double *x, size_t m, double *r,
+                                     double *dr, ts_error *err);
+/* ∫_a^b r dx (negative when b < a).  *out = NaN first.  TS_OK,
+ * TS_ERR_NULL (h, out), TS_ERR_DOMAIN (a or b outside [e_0, e_n] or NaN). */
+TS_API ts_status ts_histo_integral(const ts_histo *h, double a, double b, double *out);
+/*
+ * Totals over the m − 1 cells of a grid: out[k] = ∫ r over
+ * [grid[k], grid[k+1]], grid non-decreasing inside [e_0, e_n] (m >= 2; m
+ * < 2 writes nothing).  Each is kept within [lo, hi] times the cell width
+ * (rounding); the cells of one bin add up to its total to rounding.
+ * O(n_bins + m).  outputs NaN first.  TS_OK, TS_ERR_NULL,
+ * TS_ERR_DOMAIN (grid[k] outside or NaN, index k, where = TS_WHERE_QUERY),
+ * TS_ERR_UNSORTED (grid[k] < grid[k-1], index k, where = TS_WHERE_QUERY).
+ */
+TS_API ts_status ts_histo_totals(const ts_histo *h, const double *grid, size_t m, double *out,
+                                 ts_error *err);
+
+/*
+ * Every bin cut into sub equal cells: out[j * sub + k] = ∫ r over cell k of
+ * bin j (n_bins * sub values; daily totals to hourly ones: sub = 24).  The
+ * same values as ts_histo_totals on that grid up to rounding, faster: the
+ * cells' weights on the control values are computed once for all bins
+ * (docs/method.md §12.5).  Each within [lo, hi] times the cell width; the
+ * cells of a bin add up to its total to rounding.  No allocation.  TS_OK,
+ * TS_ERR_NULL (h, out), TS_ERR_OPTION (sub == 0), TS_ERR_OVERFLOW (n_bins *
+ * sub overflows).
+ */
+TS_API ts_status ts_histo_subdivide(const ts_histo *h, size_t sub, double *out, ts_error *err);
+
+/* One bin's certificate (docs/method.md §12.5). */
+typedef struct ts_bin_report {
+    size_t struct_size;  /* sizeof(ts_bin_report): ts_bin_report_init before the first call */
+    double e0, e1;       /* the bin */
+    double total;        /* ∫ r over the bin, from the pieces (compare with the given total) */
+    double mean;         /* total / (e1 − e0) */
+    double r_min, at_min;/* exact minimum of r over the bin and an x where it is attained */
+    double r_max, at_max;/* exact maximum (the peak) and an x where it is attained */
+    double guard;        /* the rounding bound of r_min and r_max (docs/method.md §5.6) */
+    double B[16];        /* control values of the four pieces (4 each), minus lo */
+    int certified;       /* every control value in [lo, hi]: lo <= r <= hi proved */
+} ts_bin_report;
+/* struct_size set, values NaN, certified 0; rep may be NULL. */
+TS_API void ts_bin_report_init(ts_bin_report *rep);
+/* TS_OK, TS_ERR_NULL (h, rep), TS_ERR_VERSION (rep->struct_size; rep then
+ * untouched), TS_ERR_INDEX (bin >= n_bins; rep reset to NaN). */
+TS_API ts_status ts_histo_report(const ts_histo *h, size_t bin, ts_bin_report *rep);
+
 /* ------------------------------------------------------------------ */
 /* Deprecated names (docs/versions.md)                                  */
 /* ------------------------------------------------------------------ */

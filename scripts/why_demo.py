@@ -210,8 +210,8 @@ def function_panel(key, title, intro, verdict, data_name, lower, upper, our_args
             least, nviol, worst = violations(x, grid, g)
             res.append((side, least, nviol))
             marks.setdefault(name, []).extend((grid[w], y[w]) for w in worst)
-            if side == ("lower" if lower is not None else "upper"):
-                gaps_plot[name] = (grid, g)
+            # the plotted gap: to the nearer bound
+            gaps_plot[name] = (grid, np.minimum(gaps_plot[name][1], g) if name in gaps_plot else g)
         rows.append((name, res))
     # ours: the exact certificate
     our_res = []
@@ -221,8 +221,9 @@ def function_panel(key, title, intro, verdict, data_name, lower, upper, our_args
             if v is not None:
                 bad = sum(1 for iv in ours.js["intervals"] if not iv["certified"])
                 our_res.append((side, v, bad))
-        g = ours.y - lower(ours.x) if lower is not None else upper(ours.x) - ours.y
-        gaps_plot["ours"] = (ours.x, g)
+        gs = [ours.y - lower(ours.x)] if lower is not None else []
+        gs += [upper(ours.x) - ours.y] if upper is not None else []
+        gaps_plot["ours"] = (ours.x, np.minimum.reduce(gs))
 
     # ---- plot: curves (top) and the gap to the bound, zoomed (bottom)
     fig, (ax, bx) = plt.subplots(2, 1, figsize=(9.5, 6.4), height_ratios=[3, 2], sharex=True)
@@ -257,7 +258,8 @@ def function_panel(key, title, intro, verdict, data_name, lower, upper, our_args
     bx.axhline(0, color="k", lw=1, ls="--")
     bx.axhspan(-10 * zoom, 0, color="#f4cccc", alpha=0.5, lw=0)
     bx.set_ylim(-zoom, zoom)
-    bx.set_ylabel("gap to the %s bound\n(zoomed; below 0 = violation)" % ("lower" if lower is not None else "upper"))
+    bx.set_ylabel("gap to the %s bound\n(zoomed; below 0 = violation)" % (
+        "nearer" if lower is not None and upper is not None else "lower" if lower is not None else "upper"))
     bx.set_xlabel(cols[0])
     bx.grid(alpha=0.25)
     svg_text = figure_svg(fig)
@@ -380,57 +382,22 @@ def curve_panel():
             html.escape(os.path.relpath(data, REPO))))
 
 
-def rejected_panel():
-    """Cloud cover: 0 and 100 occur exactly: our between-lines scheme refuses data on a bound."""
-    key = "cloud"
-    data = os.path.join(DATA, "cloud_cover.csv")
-    x, f, cols = read_xy(data)
-    cmd = [CLI, "fit", data, "--form", FORM, "--slopes", "arithmetic", "--alpha", "1", "--lower", "0,0", "--upper", "0,100", "--json"]
-    p = subprocess.run(cmd, capture_output=True, text=True)
-    grid = dense_grid(x, DENSE)
-    comp = competitors(x, f, data, grid)
-    rows = []
-    for name in COMPETITORS:
-        y = comp[name]
-        lo = violations(x, grid, y)
-        hi = violations(x, grid, 100 - y)
-        for side, (least, nviol, _) in (("lower", lo), ("upper", hi)):
-            KEYS["%s/%s/%s" % (key, name, side)] = least
-            SUMMARY.append(("Cloud cover between 0 and 100 %", name, side, least, nviol))
-        cls = [' class="bad"' if r[1] else "" for r in (lo, hi)]
-        rows.append('<tr><td>%s</td><td data-key="%s/%s/lower"%s>%s</td><td%s>%d</td>'
-                    '<td data-key="%s/%s/upper"%s>%s</td><td%s>%d</td></tr>' % (
-                        name, key, html.escape(name), cls[0], fmt(lo[0]), cls[0], lo[1],
-                        key, html.escape(name), cls[1], fmt(hi[0]), cls[1], hi[1]))
-    fig, ax = plt.subplots(figsize=(9.5, 3.6))
-    pg = dense_grid(x, PLOT_M)
-    pc = competitors(x, f, data, pg)
-    ax.axhspan(100, 130, color="#f4cccc", alpha=0.5, lw=0)
-    ax.axhspan(-30, 0, color="#f4cccc", alpha=0.5, lw=0)
-    for name in COMPETITORS:
-        ax.plot(pg, pc[name], color=COLORS[name], lw=1.0, label=name)
-    ax.plot(x, f, "o", color="k", ms=3.5, label="data", zorder=5)
-    ax.set_ylim(-6, 106)
-    ax.set_xlabel(cols[0])
-    ax.set_ylabel("cloud cover (%)")
-    ax.legend(fontsize=7.5, ncol=3, frameon=False, loc="lower left")
-    ax.grid(alpha=0.25)
-    svg_text = figure_svg(fig)
-    pchip_ok = all(KEYS["%s/%s/%s" % (key, n, s)] >= 0 for n in ("SciPy PCHIP", "GSL steffen")
-                   for s in ("lower", "upper"))
-    SECTIONS.append(
-        '<section id="%s"><h2>A percentage that reaches 0 and 100</h2>'
-        "<p>Cloud cover is exactly 0 %% on a clear sky and 100 %% overcast, and the record has both. "
-        "<b>Our between-lines scheme refuses data that touch a bound</b> (it promises a curve strictly inside; "
-        "only the positive scheme accepts zeros): the command says which point.</p>"
-        '<pre>$ %s\n<span class="err">%s</span>\n<span class="err">(exit status %d)</span></pre>'
-        '<div class="svg">%s</div><table class="cmp"><tr><th>method</th><th>least gap above 0</th>'
-        "<th>intervals below 0</th><th>least gap below 100</th><th>intervals above 100</th></tr>%s</table>"
-        '<p class="verdict">%s</p></section>' % (
-            key, html.escape(shown(cmd)), html.escape(p.stderr.strip()), p.returncode, svg_text, "".join(rows),
-            ("Use PCHIP or GSL steffen here: they never leave the range of neighbouring data, so they keep 0 ≤ y ≤ "
-             "100 (least gaps 0 above), and we do not yet accept data on a two-sided bound." if pchip_ok else
-             "PCHIP or steffen leave the range here too (see the table).")))
+def cloud_verdict(k):
+    """What the cloud-cover command did (certified or refused), in words, from its numbers."""
+    least = {n: (k["cloud/%s/lower" % n], k["cloud/%s/upper" % n]) for n in COMPETITORS}
+    inside = [n for n in COMPETITORS if min(least[n]) >= 0]
+    cross = ["%s (least gaps %s above 0, %s below 100)" % (n, fmt(least[n][0]), fmt(least[n][1]))
+             for n in COMPETITORS if min(least[n]) < 0]
+    comp = ""
+    if inside:
+        comp += "%s stay within 0–100 here. " % ", ".join(inside)
+    if cross:
+        comp += "%s cross a bound." % "; ".join(cross)
+    if "cloud/ours/lower" not in k:
+        return "Our between-lines scheme refused these data (the command above says why). " + comp
+    return ("Our between-lines scheme accepts data on the bounds and certifies the curve: least gaps %s above 0 "
+            "and %s below 100, exact (the curve reaches a bound where the data sit on it and never crosses it). "
+            % (fmt(k["cloud/ours/lower"]), fmt(k["cloud/ours/upper"])) + comp)
 
 
 def alpha_study():
@@ -553,6 +520,98 @@ def overshoot_section():
                 fmt(o2["max_excursion_above"])))
 
 
+def disaggregate_section():
+    """Daily rain to hourly: ours (trigspline disaggregate), PCHIP on the
+    cumulative sum, a naive cubic through the daily means; totals, negative
+    hours and the rate's smoothness counted the same way for all three."""
+    _, mm, _ = read_xy(os.path.join(DATA, "rainfall_daily.csv"))
+    n = len(mm)
+    src = os.path.join(FILES, "rain_dates.csv")
+    with open(src, "w") as fh:
+        fh.write("date,rain_mm\n")
+        for k, v in enumerate(mm):
+            fh.write("%s,%s\n" % (np.datetime64("2021-06-01") + np.timedelta64(k, "D"), repr(float(v))))
+    cmd = [CLI, "disaggregate", src, "--step", "1h", "-o", os.path.join(FILES, "rain_hourly.csv")]
+    run(cmd)
+    ours = np.array([float(r.split(",")[2]) for r in open(os.path.join(FILES, "rain_hourly.csv")).read()
+                     .splitlines()[1:]])
+    cmd_rate = [CLI, "disaggregate", src, "--step", "1min", "--rate", "-o", os.path.join(FILES, "rain_rate.csv")]
+    run(cmd_rate)
+    # minutes since the first day; our rate per second -> mm/h
+    r_ours = np.array([float(r.split(",")[1]) for r in open(os.path.join(FILES, "rain_rate.csv")).read()
+                       .splitlines()[1:]]) * 3600.0
+    e = np.arange(n + 1.0) * 24.0                      # hours
+    P = PchipInterpolator(e, np.concatenate([[0.0], np.cumsum(mm)]))
+    mid = 24.0 * (np.arange(n) + 0.5)
+    naive = CubicSpline(mid, mm / 24.0)                # mm/h through the daily means
+    hours = np.arange(24 * n + 1.0)
+    minutes = np.arange(24 * 60 * n + 1.0) / 60.0
+    methods = {
+        "trigspline disaggregate": (ours, r_ours),
+        "PCHIP on the cumulative sum": (np.diff(P(hours)), P(minutes, 1)),
+        "cubic spline through the daily means": (
+            np.array([naive.integrate(a, a + 1.0, extrapolate=True) for a in hours[:-1]]),
+            naive(minutes, extrapolate=True)),
+    }
+    rows = []
+    fig, ax = plt.subplots(figsize=(10, 3.2))
+    lo, hi = 5 * 24 * 60, 21 * 24 * 60
+    for name, (cells, rate) in methods.items():
+        back = cells.reshape(n, 24).sum(1)
+        wet = mm > 0
+        err = float(np.max(np.abs(back - mm)[wet] / mm[wet]))
+        dry_err = float(np.max(np.abs(back[~wet]))) if (~wet).any() else 0.0
+        neg = int(np.sum(cells < 0))
+        # one-sided slopes of the rate over one minute either side of each day
+        # boundary (mm/h per h): a corner shows as a jump of the slope
+        b = 24 * 60 * np.arange(1, n)
+        sl = (rate[b] - rate[b - 1]) * 60.0
+        sr = (rate[b + 1] - rate[b]) * 60.0
+        jump = float(np.max(np.abs(sr - sl)))
+        key = name.split()[0]
+        rows.append("<tr><td>%s</td>%s%s%s%s</tr>" % (
+            html.escape(name), cell("disagg/%s/total_error" % key, err, 2),
+            cell("disagg/%s/dry_error" % key, dry_err, 2), cell("disagg/%s/negative" % key, neg, 4),
+            cell("disagg/%s/slope_jump" % key, jump, 3)))
+        ax.plot(minutes[lo:hi] / 24.0, rate[lo:hi], lw=1.0,
+                color={"trigspline": COLORS["ours"], "PCHIP": COLORS["SciPy PCHIP"]}.get(key, "#d62728"),
+                label=name)
+    ax.axhline(0, color="#999", lw=0.6)
+    ax.set_xlabel("day")
+    ax.set_ylabel("rain rate (mm/h)")
+    ax.legend(fontsize=8)
+    svg = figure_svg(fig)
+    table = ("<table class=\"cmp\"><tr><th>method</th><th>largest total error (wet days, relative)</th>"
+             "<th>largest total on a dry day (mm)</th><th>negative hours</th>"
+             "<th>largest jump of the rate's slope at a day boundary (mm/h²)</th></tr>%s</table>"
+             % "".join(rows))
+    return ('<section id="disaggregate"><h2>Daily rain to hourly: totals kept, never negative, smooth</h2>'
+            "<p>Turning daily totals into an hourly rate needs three things at once: every day's hours add up to "
+            "the day's total, no hour is negative, and the rate is smooth (no corner at midnight). PCHIP on the "
+            "cumulative sum keeps the first two but its rate has a corner at every day boundary; a cubic spline "
+            "through the daily means is smooth but keeps neither totals nor signs. "
+            "<code>trigspline disaggregate</code> keeps all three (docs/method.md §12; the rate is C¹, and C² "
+            "where the bounds allow):</p><pre>$ %s\n$ %s</pre><div class=\"svg\">%s</div>%s"
+            '<p class="small">Slopes are one-sided differences over one minute of each method\'s rate, sampled '
+            "every minute (ours from the second command, per second, shown per hour); totals are the 24 hourly "
+            "cells of each day.</p></section>" % (html.escape(shown(cmd)), html.escape(shown(cmd_rate)), svg, table))
+
+
+def surface_note():
+    """One sentence on gridded fields, from what `trigspline surface` does with the example field."""
+    data = os.path.join(REPO, "data", "surface", "cloud_percent_long.csv")
+    cmd = [CLI, "surface", data, "--shape", "bounds", "--lower", "0", "--upper", "100", "--json"]
+    p = subprocess.run(cmd, capture_output=True, text=True)
+    head = "Gridded fields (surfaces) are not compared on this page; "
+    if p.returncode != 0:
+        return head + "<code>%s</code> exits with status %d: %s" % (
+            html.escape(shown(cmd)), p.returncode, html.escape(p.stderr.strip()))
+    js = json.loads(p.stdout)
+    return head + ("<code>%s</code> fits a %d × %d percentage field kept within 0–100 and certifies it patch by "
+                   "patch (certified: <b>%s</b>; docs/method.md §11)." % (
+                       html.escape(shown(cmd)), js["nx_points"], js["ny_points"], fmt(js["certified"])))
+
+
 def main():
     for exe in (CLI, GSL):
         if not os.access(exe, os.X_OK):
@@ -582,7 +641,12 @@ def main():
                                        fmt(k["drug/ours/lower"]))),
         "drug_concentration.csv", lambda t: 0.05 + 0 * t, None, ["--lower", "0,0.05", "--alpha", "1"], "mg/L")
 
-    rejected_panel()
+    function_panel(
+        "cloud", "A percentage that reaches 0 and 100",
+        "Cloud cover is exactly 0 % on a clear sky and 100 % overcast, and the record has both: the curve must "
+        "stay within 0–100 between the observations too, touching the bounds only where the data do.",
+        cloud_verdict, "cloud_cover.csv", lambda t: 0 * t, lambda t: 100 + 0 * t,
+        ["--lower", "0,0", "--upper", "0,100", "--alpha", "1"], "cloud cover (%)")
 
     function_panel(
         "growth", "Growth that must stay above a rising reference line",
@@ -597,7 +661,7 @@ def main():
         "growth_above_trend.csv", lambda t: 1.5 * t + 10, None, ["--lower", "1.5,10", "--alpha", "1"], "kg")
 
     curve_panel()
-    over = overshoot_section()
+    over = overshoot_section() + disaggregate_section()
     alpha_table, form_table = alpha_study()
 
     # summary: one row per data set and method (the worst side)
@@ -620,7 +684,7 @@ def main():
         r = "<tr><td>%s</td>" % html.escape(ds)
         for m in methods:
             if (ds, m) not in best:
-                r += "<td>%s</td>" % ("refuses data on the bound" if m == "trigspline" else "–")
+                r += "<td>%s</td>" % ("refused (see its section)" if m == "trigspline" else "–")
                 continue
             least, nv = best[(ds, m)]
             cls = ' class="bad"' if least < 0 else ' class="good"' if m == "trigspline" else ""
@@ -632,7 +696,7 @@ def main():
     page = PAGE % {
         "css": CSS, "summary": summary, "sections": "\n".join(SECTIONS), "overshoot": over,
         "alpha_table": alpha_table, "form_table": form_table, "form": FORM, "dense": DENSE,
-        "recommend": recommendation()}
+        "recommend": recommendation(), "surface": surface_note()}
     dst = os.path.join(OUT, "index.html")
     tmp = dst + ".tmp"
     with open(tmp, "w", encoding="utf-8") as fh:
@@ -677,8 +741,7 @@ box</b>, and for every curve an <b>exact certificate</b>
 <p class="small">Every number and plot below was computed when this page was made (<code>make demo</code>,
 scripts/why_demo.py). Our curves come from the <code>trigspline</code> commands shown in full, always with
 <code>--form %(form)s</code> stated; the competitors' least gaps are minima over %(dense)d samples per interval.
-The paper's reproduction is on <a href="../paper/index.html">the other page</a>. A gridded field (surfaces) will
-be added when surfaces are in the library.</p>
+The paper's reproduction is on <a href="../paper/index.html">the other page</a>. %(surface)s</p>
 <h2>Summary: least gap to the bound (negative = the curve breaks it; in brackets: intervals that do)</h2>
 %(summary)s
 %(sections)s

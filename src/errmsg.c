@@ -38,7 +38,7 @@ static void num(out *o, double v)
 
 static void xval(out *o, const ts_error_context *c, double v)
 {
-    if (c && c->format_x) {
+    if (c->format_x) { /* c: never NULL (ts_error_message's `none`) */
         char b[128];
         int w = c->format_x(v, b, sizeof b, c->format_x_user);
         if (w >= 0 && (size_t)w < sizeof b) {
@@ -432,7 +432,7 @@ static int spline_sentence(out *o, const data *d, const ts_error *e)
 static int query_sentence(out *o, const ts_error_context *c, const ts_error *e, size_t base)
 {
     size_t i = e->index;
-    if (e->status != TS_ERR_DOMAIN || !c || !c->queries || !(i < c->n_queries))
+    if (e->status != TS_ERR_DOMAIN || !c->queries || !(i < c->n_queries))
         return 0;
     double q = c->queries[i];
     put(o, "query %zu", base + i);
@@ -464,7 +464,7 @@ static void surface_where(out *o, const ts_error_context *c, const ts_error *e)
     size_t nx = c->n_points, ny = c->ny_points;
     if (e->where == TS_WHERE_POINT && nx && e->index / nx < ny) {
         size_t i = e->index % nx, j = e->index / nx;
-        put(o, "node (%zu, %zu)", i, j);
+        put(o, "node (%zu, %zu)", c->first_index + i, c->first_index + j);
         if (c->x && c->y) {
             put(o, " (x = ");
             xval(o, c, c->x[i]);
@@ -479,7 +479,7 @@ static void surface_where(out *o, const ts_error_context *c, const ts_error *e)
     } else if (e->where == TS_WHERE_INTERVAL && nx > 1 && ny > 1 &&
                e->index / (nx - 1) < ny - 1) {
         size_t i = e->index % (nx - 1), j = e->index / (nx - 1);
-        put(o, "patch (%zu, %zu)", i, j);
+        put(o, "patch (%zu, %zu)", c->first_index + i, c->first_index + j);
         if (c->x && c->y) {
             put(o, " [");
             xval(o, c, c->x[i]);
@@ -492,7 +492,7 @@ static void surface_where(out *o, const ts_error_context *c, const ts_error *e)
             put(o, "]");
         }
     } else {
-        put(o, "%s %zu", where_name(e->where), e->index);
+        put(o, "%s %zu", where_name(e->where), c->first_index + e->index);
     }
 }
 

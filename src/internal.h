@@ -27,6 +27,7 @@
  *       constraint.c: the constraint records' public functions
  *       find.c, solve.c: interval search, the roots of S − y
  *       surface.c, surface_eval.c: the public surface API
+ *       histo.c: rates from bin totals (the public histogram API)
  *   L5  errmsg.c    the full sentence of an error (ts_error_message)
  *   L6  deprecated.c  the 0.1 names, each calling its new public name (the
  *                     one file allowed to call public entry points) */
@@ -57,10 +58,12 @@
  * behaviour.  Loops meant to vectorise take their arrays as restrict
  * parameters (GCC 12 does not vectorise through pointers in a struct).
  * Not under ThreadSanitizer: the ifunc resolvers run before TSan is
- * initialised and crash (docs/design.md). */
+ * initialised and crash (docs/design.md).  Only with glibc, whose loader
+ * resolves ifuncs (IRELATIVE relocations): musl's refuses them, and a
+ * musl-targeted GCC refuses target_clones (tests/test_musl.py). */
 #if defined(TS_VECTOR_LOOP) /* given on the command line (tests of one version, make coverage) */
 #elif defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && defined(__linux__) && \
-    !defined(TS_FAST_PORTABLE) && !defined(__SANITIZE_THREAD__)
+    defined(__GLIBC__) && !defined(TS_FAST_PORTABLE) && !defined(__SANITIZE_THREAD__)
 #define TS_VECTOR_LOOP                                                                   \
     __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"),       \
                    optimize("no-trapping-math", "fp-contract=off", "tree-vectorize",     \

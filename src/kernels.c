@@ -1,15 +1,21 @@
 /* Batch evaluation kernels for every form.
  *
  * ts__fast_batch works on blocks of TS_FAST_BLOCK queries; the block's scratch
- * is on the stack (< 8 KiB), nothing is allocated.
+ * is on the stack (< 16 KiB), nothing is allocated.
  *  1. check: a sorted block is inside [x0, xn] when its two ends are; an
  *     unsorted one is checked query by query (NaN fails every comparison).
  *     A block with a query outside goes back to eval.c.
  *  2. stage: the interval is ts__locate's (largest i <= n−1 with x_i <= x:
- *     the right-hand one at an inner knot).  A sorted block walks the cursor
- *     with the current interval's values in registers, galloping over gaps;
- *     an unsorted block runs one branch-free binary search per query, all
- *     queries advancing a level at a time so their cache misses overlap.
+ *     the right-hand one at an inner knot).  A sorted block walks the cursor,
+ *     galloping over gaps.  In a dense block (runs of TS_FAST_RUN queries per
+ *     interval on average) it stages each interval's run of queries when it
+ *     leaves it: a run as long as a vector gets the interval's values with
+ *     whole-vector stores and its tu, tv from a short vector loop, a shorter
+ *     one query by query (the per-query scalar stores bounded the kernel
+ *     when several queries share an interval); a sparse block is staged
+ *     query by query with the interval's values in registers.  An unsorted
+ *     block runs one branch-free binary search per query, all queries
+ *     advancing a level at a time so their cache misses overlap.
  *     Per query: tu = (x − x_i)·w, tv = (x_{i+1} − x)·w, w = (π/2)/h_i, and
  *     B0..B3 — exactly the products eval.c's eval_in forms.
  *  3. evaluate, in a straight loop the compiler vectorises, always over a
@@ -36,7 +42,11 @@
 
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(TS_FAST_PORTABLE)
 #define TS_FAST_X86 1
+#if defined(TS_COVERAGE) /* one copy per object, as TS_INLINE (internal.h) */
+#define TS_ALWAYS_INLINE static inline
+#else
 #define TS_ALWAYS_INLINE static inline __attribute__((always_inline))
+#endif
 #if defined(__clang__)
 #define TS_TARGET_512 "avx512f,fma"
 #else /* GCC otherwise keeps 256-bit vectors */
@@ -90,9 +100,11 @@ TS_ALWAYS_INLINE size_t gallop(const double *xs, size_t n, size_t i, double x)
  * = B3) is staged with w = 0: ϑ = 0 gives A = (1, 0, 0, 0) exactly, so its
  * value is B0 (Σ A_l need not round to 1 elsewhere) and its derivatives 0,
  * without a test per query. */
+#define TS_FAST_RUN 8 /* the widest vector, in doubles: the arrays' slack */
 typedef struct fast_stage {
-    double tu[TS_FAST_BLOCK], tv[TS_FAST_BLOCK], w[TS_FAST_BLOCK]; /* w: derivatives only */
-    double b0[TS_FAST_BLOCK], b1[TS_FAST_BLOCK], b2[TS_FAST_BLOCK], b3[TS_FAST_BLOCK];
+    double tu[TS_FAST_BLOCK], tv[TS_FAST_BLOCK], w[TS_FAST_BLOCK + TS_FAST_RUN]; /* w: derivatives only */
+    double b0[TS_FAST_BLOCK + TS_FAST_RUN], b1[TS_FAST_BLOCK + TS_FAST_RUN];
+    double b2[TS_FAST_BLOCK + TS_FAST_RUN], b3[TS_FAST_BLOCK + TS_FAST_RUN];
 } fast_stage;
 
 typedef struct fast_iv {
@@ -121,10 +133,42 @@ TS_ALWAYS_INLINE void stage_one(fast_stage *st, size_t j, double x, const fast_i
     st->b3[j] = v->b3;
 }
 
-/* Sorted q[0..nb), xs[i] <= q[0]: walk the cursor; the current interval's
- * values stay in registers.  want_w is a constant at each call. */
-TS_ALWAYS_INLINE size_t stage_sorted(const ts_spline *sp, const double *q, size_t nb, int want_w,
-                                     fast_stage *st, size_t i)
+/* Queries q[j0..j1) (j0 < j1) in interval v: shorter than run (<= TS_FAST_RUN,
+ * a vector's width; a constant at each call) query by query; a longer run
+ * with whole-vector stores of v's values, run places at a time, the last one
+ * spilling past j1 (overwritten by the next run, or into the slack), and tu,
+ * tv by a loop the compiler vectorises (the same two operations per query as
+ * stage_one, so the same bits wherever the vector loop's tail falls). */
+TS_ALWAYS_INLINE void stage_run(fast_stage *st, const double *q, size_t j0, size_t j1, const fast_iv *v,
+                                int want_w, size_t run)
+{
+    if (j1 - j0 < run) {
+        for (size_t j = j0; j < j1; j++)
+            stage_one(st, j, q[j], v, want_w);
+        return;
+    }
+    size_t j = j0;
+    do {
+        for (size_t l = 0; l < run; l++) { /* whole-vector stores */
+            st->w[j + l] = v->w;
+            st->b0[j + l] = v->b0;
+            st->b1[j + l] = v->b1;
+            st->b2[j + l] = v->b2;
+            st->b3[j + l] = v->b3;
+        }
+        j += run;
+    } while (j < j1);
+    double x0 = v->x0, x1 = v->x1, w = v->w;
+    for (j = j0; j < j1; j++) {
+        st->tu[j] = (q[j] - x0) * w;
+        st->tv[j] = (x1 - q[j]) * w;
+    }
+}
+
+/* Sorted q[0..nb), xs[i] <= q[0], a sparse block: walk the cursor with the
+ * current interval's values in registers, staging query by query. */
+TS_ALWAYS_INLINE size_t stage_sorted_sparse(const ts_spline *sp, const double *q, size_t nb, int want_w,
+                                            fast_stage *st, size_t i)
 {
     const double *xs = sp->x;
     size_t n = sp->n;
@@ -144,13 +188,43 @@ TS_ALWAYS_INLINE size_t stage_sorted(const ts_spline *sp, const double *q, size_
     return i;
 }
 
+/* Sorted q[0..nb), xs[i] <= q[0], a dense block (long runs): walk the
+ * cursor, staging each interval's run of queries when the walk leaves it;
+ * the next knot stays in a register.  want_w is a constant at each call. */
+TS_ALWAYS_INLINE size_t stage_sorted_dense(const ts_spline *sp, const double *q, size_t nb, int want_w,
+                                           fast_stage *st, size_t i, size_t run)
+{
+    const double *xs = sp->x;
+    size_t n = sp->n, j0 = 0;
+    double next = i + 1 < n ? xs[i + 1] : (double)INFINITY; /* the last interval never advances */
+    for (size_t j = 0; j < nb; j++) {
+        double x = q[j];
+        if (x >= next) {
+            if (j > j0) {
+                fast_iv v = fast_interval(sp, i);
+                stage_run(st, q, j0, j, &v, want_w, run);
+            }
+            j0 = j;
+            i++;
+            if (i + 1 < n && xs[i + 1] <= x)
+                i = gallop(xs, n, i, x);
+            next = i + 1 < n ? xs[i + 1] : (double)INFINITY;
+        }
+    }
+    fast_iv v = fast_interval(sp, i);
+    stage_run(st, q, j0, nb, &v, want_w, run);
+    return i;
+}
+
 /* The geometric form (docs/method.md §4), per query as geometric.c's
  * ts__geo_eval: the distances to both ends, the interval's h, κ = 2/(3π a),
  * f_i, f_{i+1}, d_i, d_{i+1}.  phi, u: the solve's scratch; s, c, ms, mc:
  * sin φ, cos φ, 1 − sin φ, 1 − cos φ at its root. */
 typedef struct geo_stage {
-    double dl[TS_FAST_BLOCK], dr[TS_FAST_BLOCK], h[TS_FAST_BLOCK], kappa[TS_FAST_BLOCK];
-    double f0[TS_FAST_BLOCK], f1[TS_FAST_BLOCK], d0[TS_FAST_BLOCK], d1[TS_FAST_BLOCK];
+    double dl[TS_FAST_BLOCK], dr[TS_FAST_BLOCK];
+    double h[TS_FAST_BLOCK + TS_FAST_RUN], kappa[TS_FAST_BLOCK + TS_FAST_RUN];
+    double f0[TS_FAST_BLOCK + TS_FAST_RUN], f1[TS_FAST_BLOCK + TS_FAST_RUN];
+    double d0[TS_FAST_BLOCK + TS_FAST_RUN], d1[TS_FAST_BLOCK + TS_FAST_RUN];
     double phi[TS_FAST_BLOCK], u[TS_FAST_BLOCK];
     double s[TS_FAST_BLOCK], c[TS_FAST_BLOCK], ms[TS_FAST_BLOCK], mc[TS_FAST_BLOCK];
 } geo_stage;
@@ -179,9 +253,37 @@ TS_ALWAYS_INLINE void geo_stage_one(geo_stage *st, size_t j, double x, const geo
     st->d1[j] = g->d1;
 }
 
-/* stage_sorted for the geometric form. */
-TS_ALWAYS_INLINE size_t geo_stage_sorted(const ts_spline *sp, const double *q, size_t nb,
-                                         geo_stage *st, size_t i)
+/* stage_run for the geometric form. */
+TS_ALWAYS_INLINE void geo_stage_run(geo_stage *st, const double *q, size_t j0, size_t j1, const geo_iv *g,
+                                    size_t run)
+{
+    if (j1 - j0 < run) {
+        for (size_t j = j0; j < j1; j++)
+            geo_stage_one(st, j, q[j], g);
+        return;
+    }
+    size_t j = j0;
+    do {
+        for (size_t l = 0; l < run; l++) { /* whole-vector stores */
+            st->h[j + l] = g->h;
+            st->kappa[j + l] = g->kappa;
+            st->f0[j + l] = g->f0;
+            st->f1[j + l] = g->f1;
+            st->d0[j + l] = g->d0;
+            st->d1[j + l] = g->d1;
+        }
+        j += run;
+    } while (j < j1);
+    double x0 = g->x0, x1 = g->x1;
+    for (j = j0; j < j1; j++) {
+        st->dl[j] = q[j] - x0;
+        st->dr[j] = x1 - q[j];
+    }
+}
+
+/* Sorted, sparse: stage_sorted_sparse for the geometric form. */
+TS_ALWAYS_INLINE size_t geo_stage_sorted_sparse(const ts_spline *sp, const double *q, size_t nb,
+                                                geo_stage *st, size_t i)
 {
     const double *xs = sp->x;
     size_t n = sp->n;
@@ -201,6 +303,32 @@ TS_ALWAYS_INLINE size_t geo_stage_sorted(const ts_spline *sp, const double *q, s
     return i;
 }
 
+/* Sorted, dense: stage_sorted_dense for the geometric form. */
+TS_ALWAYS_INLINE size_t geo_stage_sorted_dense(const ts_spline *sp, const double *q, size_t nb,
+                                               geo_stage *st, size_t i, size_t run)
+{
+    const double *xs = sp->x;
+    size_t n = sp->n, j0 = 0;
+    double next = i + 1 < n ? xs[i + 1] : (double)INFINITY;
+    for (size_t j = 0; j < nb; j++) {
+        double x = q[j];
+        if (x >= next) {
+            if (j > j0) {
+                geo_iv g = geo_interval(sp, i);
+                geo_stage_run(st, q, j0, j, &g, run);
+            }
+            j0 = j;
+            i++;
+            if (i + 1 < n && xs[i + 1] <= x)
+                i = gallop(xs, n, i, x);
+            next = i + 1 < n ? xs[i + 1] : (double)INFINITY;
+        }
+    }
+    geo_iv g = geo_interval(sp, i);
+    geo_stage_run(st, q, j0, nb, &g, run);
+    return i;
+}
+
 /* Every q[j] in [x0, xn] (none NaN). */
 TS_ALWAYS_INLINE int all_inside(const double *q, size_t nb, double x0, double xn)
 {
@@ -214,7 +342,7 @@ TS_ALWAYS_INLINE int all_inside(const double *q, size_t nb, double x0, double xn
  * geometric form (gs != NULL); *cur is the cursor, left on the last query's
  * interval.  Returns 0, without staging, if a query is outside [x0, xn] or NaN. */
 TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb, int want_w,
-                                 fast_stage *st, geo_stage *gs, size_t *cur)
+                                 fast_stage *st, geo_stage *gs, size_t *cur, size_t run)
 {
     const double *xs = sp->x;
     size_t n = sp->n, i = *cur;
@@ -229,10 +357,20 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
     if (unsorted == 0.0) {
         if (!(xs[i] <= q[0]))
             i = search_range(xs, 0, i + 1, q[0]);
+        /* dense: the block ends before knot i + nb/TS_FAST_RUN, so its runs
+         * average at least TS_FAST_RUN queries; the staging by runs pays
+         * there (and costs 15 % at one query per interval) */
+        size_t probe = i + nb / TS_FAST_RUN;
+        int dense = probe < n && q[nb - 1] < xs[probe];
         if (gs)
-            *cur = geo_stage_sorted(sp, q, nb, gs, i);
+            *cur = dense ? geo_stage_sorted_dense(sp, q, nb, gs, i, run)
+                         : geo_stage_sorted_sparse(sp, q, nb, gs, i);
+        else if (dense)
+            *cur = want_w ? stage_sorted_dense(sp, q, nb, 1, st, i, run)
+                          : stage_sorted_dense(sp, q, nb, 0, st, i, run);
         else
-            *cur = want_w ? stage_sorted(sp, q, nb, 1, st, i) : stage_sorted(sp, q, nb, 0, st, i);
+            *cur = want_w ? stage_sorted_sparse(sp, q, nb, 1, st, i)
+                          : stage_sorted_sparse(sp, q, nb, 0, st, i);
         return 1;
     }
     /* one binary search per query, all advancing a level at a time */
@@ -439,7 +577,7 @@ TS_ALWAYS_INLINE void geo_pad(geo_stage *st, size_t nb)
 /* The whole batch, or its prefix up to the first block with a query outside
  * [x0, xn]; *cur is the cursor; returns the number of queries evaluated. */
 TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *xq, size_t m,
-                                 double *yq, size_t *cur, int geo)
+                                 double *yq, size_t *cur, int geo, size_t run)
 {
     union {
         fast_stage p;
@@ -450,7 +588,7 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
     if (geo) {
         while (j0 < m) {
             size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
-            if (!stage_block(sp, xq + j0, nb, 0, NULL, &st.g, cur))
+            if (!stage_block(sp, xq + j0, nb, 0, NULL, &st.g, cur, run))
                 break;
             geo_pad(&st.g, nb); /* as below */
             geo_eval_block(deriv, &st.g, TS_FAST_BLOCK, yt);
@@ -462,7 +600,7 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
     }
     while (j0 < m) {
         size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
-        if (!stage_block(sp, xq + j0, nb, deriv > 0, &st.p, NULL, cur))
+        if (!stage_block(sp, xq + j0, nb, deriv > 0, &st.p, NULL, cur, run))
             break;
         /* A short block is padded with its first query and every block is
          * evaluated whole into an aligned buffer: no loop tail and no
@@ -489,38 +627,39 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
 typedef size_t (*pipeline_fn)(const ts_spline *, int, const double *, size_t, double *, size_t *);
 
 /* Per ISA, the geometric form's pipeline and the others' in functions of
- * their own (one's loops do not change the other's register allocation);
+ * their own (one's loops do not change the other's register allocation),
+ * with the ISA's vector width in doubles as stage_run's run;
  * pick chooses by ISA and form. */
 #define TS_PIPELINE_ARGS const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur
 static TS_NOINLINE size_t pipeline_geo_portable(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur, 1);
+    return pipeline(sp, deriv, xq, m, yq, cur, 1, 2);
 }
 
 static TS_NOINLINE size_t pipeline_trig_portable(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur, 0);
+    return pipeline(sp, deriv, xq, m, yq, cur, 0, 2);
 }
 
 #if TS_FAST_X86
 __attribute__((target("avx2,fma"))) static TS_NOINLINE size_t pipeline_geo_avx2(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur, 1);
+    return pipeline(sp, deriv, xq, m, yq, cur, 1, 4);
 }
 
 __attribute__((target("avx2,fma"))) static TS_NOINLINE size_t pipeline_trig_avx2(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur, 0);
+    return pipeline(sp, deriv, xq, m, yq, cur, 0, 4);
 }
 
 __attribute__((target(TS_TARGET_512))) static TS_NOINLINE size_t pipeline_geo_avx512(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur, 1);
+    return pipeline(sp, deriv, xq, m, yq, cur, 1, 8);
 }
 
 __attribute__((target(TS_TARGET_512))) static TS_NOINLINE size_t pipeline_trig_avx512(TS_PIPELINE_ARGS)
 {
-    return pipeline(sp, deriv, xq, m, yq, cur, 0);
+    return pipeline(sp, deriv, xq, m, yq, cur, 0, 8);
 }
 #endif
 

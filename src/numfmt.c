@@ -27,8 +27,7 @@ void ts__format_double(double v, char buf[TS__NUM_SIZE])
             break;
     }
     snprintf(buf, TS__NUM_SIZE, "%.*e", p - 1, v);
-    const char *e = strchr(buf, 'e');
-    int x = e ? atoi(e + 1) : 0;
+    int x = atoi(strchr(buf, 'e') + 1); /* %e of a finite double always has its 'e' */
     if (-4 <= x && x < 17)
         snprintf(buf, TS__NUM_SIZE, "%.*f", p - 1 - x > 0 ? p - 1 - x : 0, v);
 }

@@ -11,7 +11,8 @@ project(trigspline VERSION X.Y.Z) in CMakeLists.txt:
                after it) and the JavaScript module's ts.version (when a web
                build exists: out/web, or TS_WEB_OUT)
   text files   CITATION.cff, the man page docs/trigspline.1,
-               bindings/web/package.json and package-lock.json
+               bindings/web/package.json and package-lock.json, debian/changelog,
+               packaging/conda/meta.yaml
 
 Usage: python3 tests/check_version.py BUILD_DIR       (standard library only)
 Last line: "version: N passed, M failed".  A part whose build is absent (no
@@ -98,6 +99,11 @@ check("bindings/web/package.json", pkg.get("version"), want)
 lock = json.loads(read(os.path.join(REPO, "bindings", "web", "package-lock.json")))
 check("bindings/web/package-lock.json", [lock.get("version"), lock["packages"][""].get("version")],
       [want, want])
+# packaging: Debian (upstream part of the first changelog entry), conda recipe
+m = re.match(r"trigspline \(([^)-]*)-[^)]*\)", read(os.path.join(REPO, "debian", "changelog")))
+check("debian/changelog", m and m.group(1), want)
+m = re.search(r'set version = "([^"]*)"', read(os.path.join(REPO, "packaging", "conda", "meta.yaml")))
+check("packaging/conda/meta.yaml", m and m.group(1), want)
 
 print("version: %d passed, %d failed" % (passed, failed))
 sys.exit(1 if failed else 0)

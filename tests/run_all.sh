@@ -3,7 +3,8 @@
 # the programs of tests/api/, tests/unit/, tests/tools/ all land there), the
 # valgrind leak checks, the script tests (scripts/check_layers.py,
 # scripts/check_abi.py, tests/test_*.py and tests/tools/test_*.py) and the Python package's pytest run
-# (bindings/python/tests/run.sh) and the version check (tests/check_version.py)
+# (bindings/python/tests/run.sh), the R package's tests (bindings/r/tests/run.sh)
+# and the version check (tests/check_version.py)
 # against the first; prints each program's line and,
 # last, the sum as "total: N passed, M failed".  Exit status 0 only if nothing
 # failed.
@@ -59,6 +60,10 @@ if [ -n "$first" ]; then
     if [ -x "$here/../bindings/python/tests/run.sh" ]; then
         run_one "pytest/bindings/python" "$here/../bindings/python/tests/run.sh" "$first"
     fi
+    # The R package: staged, installed into a temporary library, testthat and
+    # the smoke test, and its values bit for bit against the library of the
+    # first build (bindings/r/tests/run.sh; R and testthat: make r-deps)
+    run_one "r/bindings/r" "$here/../bindings/r/tests/run.sh" "$first"
     # Every stated version against CMakeLists.txt (after pytest: its venv has the package)
     run_one "script/check_version.py" python3 "$here/check_version.py" "$first"
 fi

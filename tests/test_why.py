@@ -44,6 +44,7 @@ import html
 import io
 import json
 import re
+import shlex
 import tempfile
 import xml.etree.ElementTree as ET
 
@@ -98,6 +99,39 @@ def dense(x, m):
                           + [x[-1:]])
 
 
+def check_claims(page):
+    """Every section that shows `trigspline fit` commands says what they do:
+    it speaks of a refusal exactly when one of them exits non-zero (with that
+    exit status shown), and when all succeed its data set has a number, not a
+    refusal, in the summary table.  The commands are re-run here (from the
+    repository, as shown; the page's output directory still exists)."""
+    summary = page[:page.index("<section")]
+    for m in re.finditer(r'<section id="([^"]+)"><h2>(.*?)</h2>(.*?)</section>', page, re.S):
+        key, title, body = m.group(1), html.unescape(m.group(2)), m.group(3)
+        pre = re.search(r"<pre>(.*?)</pre>", body, re.S)
+        if not pre:
+            continue
+        cmds = [html.unescape(c) for c in re.findall(r"^\$ (build/trigspline fit [^\n<]*)", pre.group(1), re.M)]
+        if not cmds:
+            continue
+        status = [subprocess.run([CLI] + shlex.split(c)[1:], cwd=REPO, capture_output=True).returncode
+                  for c in cmds]
+        text = re.sub(r"<[^>]+>", " ", re.sub(r'<div class="svg">.*?</div>', "", body, flags=re.S))
+        refused = any(status)
+        check(refused == bool(re.search(r"refus", text, re.I)),
+              "%s: the section speaks of a refusal exactly when a command exits non-zero (exits %s)" % (key, status))
+        for st in status:
+            check(st == 0 or "(exit status %d)" % st in body, "%s: exit status %d shown" % (key, st))
+        if 'class="ours"' not in body:  # not a comparison with the alternatives
+            continue
+        row = re.search(r"<tr><td>%s</td>(.*?)</tr>" % re.escape(html.escape(title)), summary)
+        check(row is not None, "%s: a summary row" % key)
+        if row and not refused:
+            first = re.search(r"<td[^>]*>([^<]*)</td>", row.group(1)).group(1)
+            check(re.fullmatch(r"[−\d.e+]+( \(\d+\))?", first) is not None,
+                  "%s: the summary states our least gap, not %r" % (key, first))
+
+
 def main():
     if not os.access(os.path.join(BUILD, "gsl_eval"), os.X_OK):
         print("test_why: %s/gsl_eval not built (GSL missing: make why-deps)" % BUILD)
@@ -113,6 +147,7 @@ def main():
             page = fh.read()
         with open(os.path.join(out, "numbers.json")) as fh:
             numbers = json.load(fh)
+        check_claims(page)
     vals = cell_values(page)
 
     # ---- structure
@@ -129,11 +164,18 @@ def main():
     cmds = [html.unescape(c) for c in re.findall(r"(?:^|<pre>)\$ ([^\n<]*)", page, re.M)]
     check(len(cmds) >= 12, "commands shown (%d)" % len(cmds))
     for c in cmds:
-        check("--form " in c or " curve " in c, "command states --form: %s" % c)
+        check("--form " in c or " curve " in c or " disaggregate " in c, "command states --form: %s" % c)
         check("…" not in c and "..." not in c, "command in full: %s" % c)
         check(c.startswith("build/trigspline "), "command as typed from the repository: %s" % c)
     check('href="../paper/index.html"' in page, "links the paper page")
-    check("surfaces" in page, "says the gridded field waits for surfaces")
+    check("will be added" not in page and "will\nbe added" not in page, "no promise of what exists already")
+    m = re.search(r"<code>(build/trigspline surface [^<]*)</code>", page)
+    check(m is not None, "names the surface command")
+    if m:
+        q = subprocess.run([CLI] + html.unescape(m.group(1)).split()[1:], cwd=REPO, capture_output=True, text=True)
+        claim = re.search(r"certified: <b>(\w+)</b>", page[m.end():m.end() + 400])
+        check(q.returncode == 0 and claim is not None and claim.group(1) == ("yes" if json.loads(q.stdout)[
+            "certified"] else "no"), "the surface sentence states what the command does (exit %d)" % q.returncode)
     for k in ("rainfall/SciPy CubicSpline/lower", "growth/GSL cspline/lower", "growth/SciPy PCHIP/lower",
               "outline/SciPy CubicSpline/box", "rainfall/ours/lower", "growth/ours/lower", "overshoot/0.1/y_max"):
         check(k in vals, "page states %s" % k)
@@ -203,7 +245,34 @@ def main():
           "overshoot example: page y_max %r, sampled %r" % (vals["overshoot/0.1/y_max"], ymax))
     check(ymax > 1.2 * float(np.max(read_xy("rainfall_daily.csv")[1])), "the example does overshoot")
     check("warning: the curve rises" in page, "the page shows the CLI's overshoot warning")
+
+    # ---- daily rain to hourly (docs/method.md §12): ours keeps totals and
+    # signs; PCHIP's corners and the naive cubic's negatives re-derived
+    mm = read_xy("rainfall_daily.csv")[1]
+    n = len(mm)
+    check(vals.get("disagg/trigspline/negative") == 0, "ours: no negative hour")
+    check(vals.get("disagg/trigspline/total_error", 1.0) <= 1e-13, "ours: totals kept")
+    check(vals.get("disagg/trigspline/dry_error", 1.0) == 0, "ours: dry days dry")
+    check(vals.get("disagg/PCHIP/negative") == 0, "PCHIP on the cumulative: no negative hour")
+    mid = 24.0 * (np.arange(n) + 0.5)
+    naive = CubicSpline(mid, mm / 24.0)
+    cells = np.array([naive.integrate(a, a + 1.0, extrapolate=True) for a in range(24 * n)])
+    check(vals.get("disagg/cubic/negative") == int(np.sum(cells < 0)),
+          "naive cubic: negative hours %r, re-derived %d" % (vals.get("disagg/cubic/negative"),
+                                                               int(np.sum(cells < 0))))
+    e = np.arange(n + 1.0) * 24.0
+    P = PchipInterpolator(e, np.concatenate([[0.0], np.cumsum(mm)]))
+    d2 = P.derivative(2)
+    J = float(np.max(np.abs(d2(e[1:-1] + 1e-9) - d2(e[1:-1] - 1e-9))))   # r' jumps, exact to 1e-9
+    # the page's one-sided differences over 1 min differ from the exact
+    # jump by at most (1/60 h) max|r''| (r'' = C''' = 6 c0, constant per day)
+    bound = (1.0 / 60.0) * float(np.max(np.abs(6.0 * P.c[0]))) + 1e-9
+    # (printed to 3 significant digits: 5e-3 relative)
+    check(abs(vals.get("disagg/PCHIP/slope_jump", -1.0) - J) <= bound + 5e-3 * J,
+          "PCHIP slope jump: page %r, exact %r (bound %r)" % (vals.get("disagg/PCHIP/slope_jump"), J, bound))
+    check(vals.get("disagg/trigspline/slope_jump", 1.0) <= 1e-3 * J, "ours: no corner at the day boundaries")
     return 0 if failed == 0 else 1
+
 
 
 if __name__ == "__main__":

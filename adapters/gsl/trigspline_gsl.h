@@ -12,7 +12,9 @@
  *     gsl_spline_free(sp);
  *     gsl_interp_accel_free(acc);
  *
- * Link with libtrigspline_gsl.a, libtrigspline and -lgsl -lgslcblas -lm.
+ * Link with libtrigspline_gsl.a, libtrigspline and -lgsl -lgslcblas -lm: installed,
+ * CMake find_package(trigspline COMPONENTS gsl) and trigspline::gsl, or
+ * pkg-config --cflags --libs trigspline_gsl.
  *
  * The types (all min_size 2, the library's defaults of ts_spline_options_init —
  * Steffen's slopes of docs/method.md §6, alpha = TS_DEFAULT_ALPHA, the

@@ -1,6 +1,8 @@
-"""Build of the trigspline Python package (setuptools; no network needed).
+"""Build of the trigspline Python package (setuptools; pyproject.toml names
+the build requirements: setuptools, wheel, numpy).
 
-The C library is compiled from the repository's own sources (../../src) into
+The C library is compiled from the repository's own sources (../../src; in an
+sdist its copy csrc/, which Sdist below writes) into
 every extension module listed in EXT_MODULES, so the installed package needs
 nothing else on the system.  One place for what the library needs to compile:
 LIB_SOURCES and LIB_SOURCE_FLAGS (read from src/CMakeLists.txt), INCLUDE_DIRS,
@@ -15,9 +17,12 @@ import numpy
 from setuptools import Extension, setup
 from setuptools.command.build_ext import build_ext
 from setuptools.command.build_py import build_py
+from setuptools.command.sdist import sdist
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
+# The library's tree: the repository (../..) or, in an sdist, csrc/.
+CSRC = os.path.join(HERE, "csrc")
+ROOT = CSRC if os.path.isdir(CSRC) else os.path.normpath(os.path.join(HERE, "..", ".."))
 SRC = os.path.join(ROOT, "src")
 
 
@@ -84,6 +89,7 @@ def extension(name, source):
 EXT_MODULES = [
     extension("trigspline._core", "src/_core.c"),
     extension("trigspline._gufunc", "src/_gufunc.c"),
+    extension("trigspline._histo", "src/_histo.c"),
 ]
 
 
@@ -137,6 +143,26 @@ class BuildPy(build_py):
                          '__version__ = "%s"\n' % VERSION)
 
 
+class Sdist(sdist):
+    """The sdist carries what setup.py reads from the repository (the
+    library's sources and header, src/CMakeLists.txt, the version template and
+    the top CMakeLists.txt for the version) under csrc/, in the same layout,
+    so that it builds outside the repository."""
+
+    def make_release_tree(self, base_dir, files):
+        super().make_release_tree(base_dir, files)
+        if ROOT == CSRC:
+            names = [os.path.relpath(p, ROOT) for p in LIB_SOURCES]
+        else:
+            names = ["src/" + n for n in sorted(os.listdir(SRC)) if n.endswith((".c", ".h"))]
+        names += ["src/CMakeLists.txt", "include/trigspline.h", "CMakeLists.txt",
+                  "cmake/trigspline_version.h.in", "LICENSE"]
+        for name in sorted(set(names)):
+            dst = os.path.join(base_dir, "csrc", name)
+            os.makedirs(os.path.dirname(dst), exist_ok=True)
+            self.copy_file(os.path.join(ROOT, name), dst)
+
+
 setup(version=VERSION, packages=["trigspline"], package_data={"trigspline": ["py.typed"]},
       ext_modules=EXT_MODULES,
-      cmdclass={"build_ext": BuildExt, "build_py": BuildPy})
+      cmdclass={"build_ext": BuildExt, "build_py": BuildPy, "sdist": Sdist})

@@ -3,8 +3,10 @@
 // BUILD_DIR holds trigspline.wasm (the library + glue.c) and trigspline-cli.js
 // (the command-line tool, wasm embedded).  Writes to OUT_DIR:
 //   trigspline.mjs      ES module: the wrapper (trigspline.js), the curve
-//                       factories (curve.js), the exports (export.js); loads
+//                       factories (curve.js), stacked areas (stack.js), the
+//                       chart plugins (charts.js), the exports (export.js); loads
 //   trigspline.wasm     from next to itself (fetch, or the file in Node)
+//   trigspline.d.mts    its types (kept by hand beside the sources)
 //   trigspline-cli.mjs  the CLI as an ES module (default export: the factory)
 //   index.html          the explorer: one page, everything inlined
 //   example.html        the curve factory on a canvas
@@ -29,10 +31,11 @@ const cliJs = readFileSync(join(buildDir, 'trigspline-cli.js'), 'utf8');
 const body = (f) => src(f).replace(/^import [^;]*from '\.\.?\/[^']*';\n/gm, '');
 const unexport = (s) => s.replace(/^export (default )?/gm, '');
 
-const lib = body('trigspline.js') + body('curve.js') + body('export.js');
+const lib = body('trigspline.js') + body('curve.js') + body('stack.js') + body('charts.js') + body('export.js');
 const embedded = `const WASM_BASE64 = ${JSON.stringify(wasm.toString('base64'))};\n${lib}`;
 writeFileSync(join(outDir, 'trigspline.mjs'), lib);
 writeFileSync(join(outDir, 'trigspline.wasm'), wasm);
+writeFileSync(join(outDir, 'trigspline.d.mts'), src('trigspline.d.mts'));
 writeFileSync(join(outDir, 'trigspline-cli.mjs'), `${cliJs}\nexport default createTrigsplineCli;\n`);
 
 // Pages: <!--SCRIPT--> in the template becomes one inline module script, the
@@ -43,7 +46,8 @@ function page(template, parts) {
   return src(template).replace('<!--SCRIPT-->', () => `<script type="module">\n${inline(code)}\n</script>`);
 }
 writeFileSync(join(outDir, 'index.html'),
-  page('explorer/index.html', [cliJs, unexport(embedded), unexport(body('explorer/explorer.js'))]));
+  page('explorer/index.html', [cliJs, unexport(embedded), unexport(body('explorer/ticks.js')),
+    unexport(body('explorer/reader.js')), unexport(body('explorer/explorer.js'))]));
 writeFileSync(join(outDir, 'example.html'),
   page('explorer/example.html', [unexport(embedded), unexport(body('explorer/example.js'))]));
 

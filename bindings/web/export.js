@@ -3,11 +3,32 @@
 // trigspline-cli.mjs), so they are the CLI's bytes.  This file is the one
 // place where an explorer state becomes a command line.
 
+// x (seconds since 1970, UTC) as ISO 8601: a date when it is a whole day,
+// else a date-time in UTC with the fraction of a second to 1 ns.
+export function isoText(t) {
+  let s = Math.floor(t), ns = Math.round((t - s) * 1e9);
+  if (ns === 1e9) { s += 1; ns = 0; }
+  const iso = new Date(s * 1000).toISOString();
+  if (ns === 0 && s % 86400 === 0) return iso.slice(0, 10);
+  const frac = ns ? `.${String(ns).padStart(9, '0').replace(/0+$/, '')}` : '';
+  return `${iso.slice(0, 19)}${frac}Z`;
+}
+
+// One CSV field (RFC 4180 quoting when needed).
+const field = (v) => (/[",;\t\r\n ]/.test(v) ? `"${v.replace(/"/g, '""')}"` : v);
+
 // The data file as the CLI reads it (numbers in JavaScript's shortest
-// round-trip form, which the CLI's reader parses back to the same doubles).
+// round-trip form, which the CLI's reader parses back to the same doubles;
+// x as ISO 8601 when state.xTime; the header from state.names, the column
+// names the data were read with, when they are text).
 export function dataCsv(state) {
-  const head = state.mode === 'curve' ? 'x,y' : 'x,f';
-  return `${head}\n${state.points.map((p) => `${p[0]},${p[1]}`).join('\n')}\n`;
+  let head = state.mode === 'curve' ? 'x,y' : 'x,f';
+  const names = state.mode === 'function' ? state.names : null;
+  if (Array.isArray(names) && names.length === 2 && names.every((n) => typeof n === 'string' && n.trim() !== '' && !Number.isFinite(Number(n)))) {
+    head = names.map(field).join(',');
+  }
+  const xt = state.mode === 'function' && state.xTime ? isoText : String;
+  return `${head}\n${state.points.map((p) => `${xt(p[0])},${p[1]}`).join('\n')}\n`;
 }
 
 const line = (l) => `${l.m},${l.c}`;

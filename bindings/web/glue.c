@@ -309,3 +309,47 @@ size_t tsw_heap_top(void)
 {
     return (size_t)(uintptr_t)sbrk(0);
 }
+
+/* ---- rates from bin totals (docs/method.md §12) ---------------------- */
+void tsw_histo_defaults(double *out);
+ts_status tsw_disaggregate(const double *edges, const double *totals, size_t n, const double *grid,
+                           size_t m, int kind, double alpha, double lo, double hi, double *out,
+                           ts_error *err);
+
+/* alpha, lo, hi of ts_histo_options_init */
+void tsw_histo_defaults(double *out)
+{
+    ts_histo_options o;
+    ts_histo_options_init(&o);
+    out[0] = o.alpha;
+    out[1] = o.lo;
+    out[2] = o.hi;
+}
+
+/* One call: the rate of n bins, then on the m grid points either the
+ * m − 1 cell totals (kind 0), the rate (1) or its derivative (2) into out
+ * (m values; kind 0 writes m − 1). */
+ts_status tsw_disaggregate(const double *edges, const double *totals, size_t n, const double *grid,
+                           size_t m, int kind, double alpha, double lo, double hi, double *out,
+                           ts_error *err)
+{
+    ts_histo_options o;
+    ts_histo_options_init(&o);
+    o.alpha = alpha;
+    o.lo = lo;
+    o.hi = hi;
+    ts_histo *h = NULL;
+    ts_status st = ts_histo_new(edges, totals, n, &o, &h, err);
+    if (st != TS_OK)
+        return st;
+    if (kind == 0) {
+        st = ts_histo_totals(h, grid, m, out, err);
+    } else {
+        double *r = kind == 2 ? malloc((m ? m : 1) * sizeof *r) : out;
+        st = r ? ts_histo_eval_batch(h, grid, m, r, kind == 2 ? out : NULL, err) : TS_ERR_NOMEM;
+        if (kind == 2)
+            free(r);
+    }
+    ts_histo_free(h);
+    return st;
+}

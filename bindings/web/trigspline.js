@@ -378,6 +378,36 @@ class TrigSpline {
     return b;
   }
 
+  // disaggregate(edges, totals, grid, options): bin totals (edges.length =
+  // totals.length + 1) to the totals over the grid's cells (grid.length - 1
+  // values), or with options.kind 'rate' / 'derivative' the rate r or r' at
+  // the grid's points (docs/method.md §12: totals kept, lo <= r <= hi, C¹).
+  // options.lo, .hi (default 0 and Infinity), .alpha (tension).
+  disaggregate(edges, totals, grid, options = {}) {
+    numbersOf(edges, 'edges');
+    numbersOf(totals, 'totals');
+    numbersOf(grid, 'grid');
+    const kinds = ['totals', 'rate', 'derivative'];
+    const kind = kinds.indexOf(options.kind ?? 'totals');
+    if (kind < 0) {
+      throw new TrigSplineError(11, `${this.strerror(11)}: kind must be one of ${kinds.join(', ')}`, null, null);
+    }
+    if (edges.length !== totals.length + 1) {
+      throw new TrigSplineError(10, `${this.strerror(10)}: ${edges.length} edges for ${totals.length} totals`, null, null);
+    }
+    const d = this.withScratch(3, (p) => { this.w.tsw_histo_defaults(p); return Array.from(this.f64(p, 3)); });
+    const m = grid.length, nOut = kind === 0 ? Math.max(m - 1, 0) : m;
+    const out = this.alloc(Math.max(m, 1) * 8);
+    try {
+      this.resetError();
+      const st = this.withArrays([edges, totals, grid], (pe, pt, pg) =>
+        this.w.tsw_disaggregate(pe, pt, totals.length, pg, m, kind, options.alpha ?? d[0],
+          options.lo ?? d[1], options.hi ?? d[2], out, this.errPtr));
+      this.check(st);
+      return Float64Array.from(this.f64(out, nOut));
+    } finally { this.w.free(out); }
+  }
+
   // Slopes by a method of docs/method.md §6, as a Float64Array.
   slopes(method, x, f) {
     const n = x.length;

@@ -164,6 +164,32 @@ int main(void)
         CHECKF(allocations == 0, "curve closed=%d: %ld allocations while evaluating", closed, (long)allocations);
         ts_curve_free(c);
     }
+    TH_CASE("rates from bin totals");
+    {
+        static const double e[7] = {0, 1, 2, 3, 4.5, 5, 6}, T[6] = {0, 3, 0, 1, 2, 0.5};
+        ts_histo *h = NULL;
+        CHECK(ts_histo_new(e, T, 6, NULL, &h, NULL) == TS_OK);
+        static double g[121], out[6 * 24], r[121], d[121];
+        for (int k = 0; k <= 120; k++)
+            g[k] = 0.05 * k;
+        ts_bin_report rep;
+        ts_bin_report_init(&rep);
+        allocations = 0;
+        counting = 1;
+        for (int k = 0; k <= 120; k++) {
+            double a, b;
+            (void)ts_histo_eval(h, g[k], &a, &b);
+            (void)ts_histo_integral(h, 0.0, g[k], &a);
+        }
+        (void)ts_histo_eval_batch(h, g, 121, r, d, NULL);
+        (void)ts_histo_totals(h, g, 121, out, NULL);
+        (void)ts_histo_subdivide(h, 24, out, NULL);
+        for (size_t j = 0; j < 6; j++)
+            (void)ts_histo_report(h, j, &rep);
+        counting = 0;
+        CHECKF(allocations == 0, "histo: %ld allocations while evaluating", (long)allocations);
+        ts_histo_free(h);
+    }
     /* the counter itself works: a construction allocates */
     allocations = 0;
     counting = 1;

@@ -141,6 +141,29 @@ static void symmetric(void)
     ts_spline_free(s);
 }
 
+static void near_knots(void)
+{
+    TH_CASE("roots within an ulp of a knot stay strictly inside the interval");
+    /* f = x − 1e6 on x = 1e6, 1e6 + 1, 1e6 + 2 (a line: S = f exactly in the
+     * geometric form, docs/method.md §4): y one ulp of 1 below 1 has its
+     * root at x = 1e6 + 1 − 2^-53, which rounds to the knot 1e6 + 1; y one
+     * ulp above 0 at 1e6 + 2^-1074, which rounds to the knot 1e6.  Expected:
+     * the root reported strictly inside its interval, one ulp of x from the
+     * knot (ts_spline_solve: the knots themselves are reported only where
+     * f = y) */
+    static const double x[3] = {1e6, 1e6 + 1, 1e6 + 2}, f[3] = {0, 1, 2};
+    ts_spline *s = fit(x, f, 3, TS_FORM_GEOMETRIC);
+    if (!s)
+        return;
+    double r[4];
+    size_t cnt = 0;
+    CHECK(ts_spline_solve(s, nextafter(1.0, 0.0), r, 4, &cnt) == TS_OK && cnt == 1);
+    CHECKF(cnt == 1 && r[0] == nextafter(x[1], x[0]), "root %.17g", r[0]);
+    CHECK(ts_spline_solve(s, 4.9406564584124654e-324, r, 4, &cnt) == TS_OK && cnt == 1);
+    CHECKF(cnt == 1 && r[0] == nextafter(x[0], x[1]), "root %.17g", r[0]);
+    ts_spline_free(s);
+}
+
 static void oscillating(void)
 {
     TH_CASE("oscillating data: every crossing, touching, flat pieces");
@@ -219,6 +242,7 @@ int main(void)
     find_interval();
     lines();
     symmetric();
+    near_knots();
     oscillating();
     errors();
     return th_report("test_solve");

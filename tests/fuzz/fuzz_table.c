@@ -309,6 +309,17 @@ static void ref_read(const char *d0, size_t n, const ropts *o, ref *r)
     memset(r, 0, sizeof *r);
     memset(is_time, 0, sizeof is_time);
     char *rec = malloc(n + 1);
+    /* a compressed file or an archive, by its first bytes, whatever --skip
+     * says (docs/cli.md, "Compressed input"): gzip, bzip2, xz, zstd, zip */
+    static const unsigned char magic[5][6] = {{0x1f, 0x8b}, {'B', 'Z', 'h'},
+                                              {0xfd, '7', 'z', 'X', 'Z', 0},
+                                              {0x28, 0xb5, 0x2f, 0xfd}, {'P', 'K', 3, 4}};
+    static const size_t magic_len[5] = {2, 3, 6, 4, 4};
+    for (int k = 0; k < 5; k++)
+        if (n >= magic_len[k] && memcmp(d, magic[k], magic_len[k]) == 0) {
+            r->ok = 0;
+            goto out;
+        }
     while (pos < n) {
         /* one record: physical lines joined while a quote is open */
         size_t rl = 0, rec_line = line + 1, cend = (size_t)-1;

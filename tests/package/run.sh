@@ -14,6 +14,9 @@
 #           (readelf: libtrigspline.so is not needed);
 #        4. from an outside CMake project that add_subdirectory()s the source
 #           tree (only the library may be defined there);
+#        5. the GSL adapter (when the build found GSL): tests/package/gsl_app.c
+#           with find_package(trigspline COMPONENTS gsl) (trigspline::gsl) and
+#           with `pkg-config --cflags --libs trigspline_gsl`;
 #      every run checked against the closed form below;
 #  (c) nm -D --defined-only of the installed libtrigspline.so lists exactly
 #      the functions declared in the installed trigspline.h.
@@ -233,6 +236,64 @@ if "$cmake" -S "$here/consumer" -B "$tmp/sub" "${gen[@]}" -DTS_MODE=subdir \
     check "add_subdirectory: app_static does not need libtrigspline.so" not_needs_so "$tmp/sub/app_static"
 else
     tail -n 30 "$log"; bad "add_subdirectory(source tree): configure and build"
+fi
+
+# ---- (b5) the GSL adapter: find_package(... COMPONENTS gsl), pkg-config -----
+# Built and installed when the build found GSL (its CMake cache says so).
+gsl_ok() { # output file of gsl_app: the line y = 2x + 1 reproduced (1e-13
+    # relative: a few roundings of the geometric form's evaluation, while any
+    # wrong link, type or scheme is off by far more), the positive type's
+    # name, negative data refused
+    awk '
+        function bad(msg) { print "  " msg; err = 1 }
+        $1 == "name" { name = $2 }
+        $1 == "at" { n++; x = $2 + 0; y = $3 + 0; e = 2 * x + 1
+                     if (!(y - e <= 1e-13 * e && e - y <= 1e-13 * e))
+                         bad(sprintf("S(%.17g) = %.17g, expected %.17g", x, y, e)) }
+        $1 == "edom" { edom = $2 }
+        END { if (name != "trigspline-positive") bad("name " name)
+              if (n != 3) bad("expected 3 values, got " n)
+              if (edom != 1) bad("negative data not refused with GSL_EDOM")
+              exit err }' "$1"
+}
+if grep -q '^TS_GSL_LIBRARY:FILEPATH=/' "$build/CMakeCache.txt"; then
+    for f in "$libdir/libtrigspline_gsl.a" "$includedir/trigspline_gsl.h" \
+             "$libdir/cmake/trigspline/trigsplineGslTargets.cmake" "$libdir/pkgconfig/trigspline_gsl.pc"; do
+        check "installed $f" test -e "$prefix/$f"
+    done
+    if "$cmake" -S "$here/consumer" -B "$tmp/gsl" "${gen[@]}" -DTS_MODE=gsl \
+            -DTS_WANT_VERSION="$want_minor" -DCMAKE_PREFIX_PATH="$prefix" >"$log" 2>&1 &&
+       "$cmake" --build "$tmp/gsl" >>"$log" 2>&1; then
+        ok "find_package(trigspline COMPONENTS gsl): configure and build against trigspline::gsl"
+        if "$tmp/gsl/gsl_app" >"$tmp/gout" 2>&1 && gsl_ok "$tmp/gout"; then
+            ok "find_package gsl_app: values on the line, positive type, GSL_EDOM"
+        else
+            cat "$tmp/gout"; bad "find_package gsl_app: values"
+        fi
+    else
+        cat "$log"; bad "find_package(trigspline COMPONENTS gsl): configure and build"
+    fi
+    if command -v pkg-config >/dev/null 2>&1; then
+        export PKG_CONFIG_PATH="$prefix/$libdir/pkgconfig"
+        check "pkg-config --modversion trigspline_gsl = $version" \
+            test "$(pkg-config --modversion trigspline_gsl)" = "$version"
+        # shellcheck disable=SC2046
+        if "$cc" -std=c11 -Wall -Wextra -Wpedantic -Werror "$here/gsl_app.c" -o "$tmp/gsl_pc" \
+                $(pkg-config --cflags --libs trigspline_gsl) >"$log" 2>&1; then
+            ok "pkg-config --cflags --libs trigspline_gsl: build"
+            if LD_LIBRARY_PATH="$prefix/$libdir" "$tmp/gsl_pc" >"$tmp/gout" 2>&1 &&
+               gsl_ok "$tmp/gout"; then
+                ok "pkg-config gsl_app: values on the line, positive type, GSL_EDOM"
+            else
+                cat "$tmp/gout"; bad "pkg-config gsl_app: values"
+            fi
+        else
+            cat "$log"; bad "pkg-config --cflags --libs trigspline_gsl: build"
+        fi
+        unset PKG_CONFIG_PATH
+    fi
+else
+    echo "skip the GSL adapter: the build did not find GSL"
 fi
 
 # ---- (c) exported symbols = declared functions ----------------------------

@@ -1090,11 +1090,13 @@ static void test_reader_realworld(void)
                "line has ',': mixed delimiters? see --delimiter)", 2, 1);
     EXPECT_ERR("Station Bern\nt v w\n1 2 3\n", NULL, TSU_IO_ERR_LAYOUT,
                "t.csv:2:1: every field of this line is text: a second header line (units?) after "
-               "the header on line 1? skip lines before the data with --skip N", 2, 1);
+               "the header on line 1? skip it with --units-row (lines before the header: "
+               "--skip N)", 2, 1);
     /* a second header line */
     EXPECT_ERR("day,rain\nd,mm\n1,2\n", NULL, TSU_IO_ERR_LAYOUT,
                "t.csv:2:1: every field of this line is text: a second header line (units?) after "
-               "the header on line 1? skip lines before the data with --skip N", 2, 1);
+               "the header on line 1? skip it with --units-row (lines before the header: "
+               "--skip N)", 2, 1);
     /* mixed delimiters */
     EXPECT_ERR("a,b\n1;2\n", NULL, TSU_IO_ERR_NUMBER,
                "t.csv:2:1: expected a number, found \"1;2\" (the delimiter is ','; this line has "
@@ -1152,6 +1154,123 @@ static void test_reader_realworld(void)
         CHECK(!tsu_parse_time("2024-03-01T24:00", NULL, &v, &tf, NULL));
         CHECK(!tsu_parse_time("2024-03-01T23:59:60", NULL, &v, &tf, NULL)); /* no leap seconds */
     }
+}
+
+/* tsu_parse_time_format against the ISO reading of the same instants; the
+ * reader's time_format, skip_after_header, header_corner and compressed input. */
+static void test_time_format(void)
+{
+    static const struct {
+        const char *fmt, *text, *iso;
+    } ok[] = {{"%d/%m/%Y %H:%M", "05/01/2024 10:30", "2024-01-05T10:30Z"},
+              {"%d/%m/%Y %H:%M", "5/1/2024  9:05", "2024-01-05T09:05Z"},
+              {"%Y%m%d%H%M", "202401051030", "2024-01-05T10:30Z"},
+              {"%y-%m-%d", "69-07-20", "1969-07-20"},
+              {"%y-%m-%d", "68-07-20", "2068-07-20"},
+              {"%Y-%j", "2024-060", "2024-02-29"},
+              {"%Y-%j", "2023-365", "2023-12-31"},
+              {"%d %B %Y", "29 February 2024", "2024-02-29"},
+              {"%b %e %Y %I:%M:%S %p", "Mar  1 2024 12:00:05 AM", "2024-03-01T00:00:05Z"},
+              {"%b %e %Y %I:%M %p", "mar 1 2024 12:30 pm", "2024-03-01T12:30Z"},
+              {"%FT%T.%f%z", "2024-03-01T06:00:07.125+05:30", "2024-03-01T06:00:07.125+05:30"},
+              {"%F %R %z", "2024-03-01 06:00 -0230", "2024-03-01T06:00-02:30"},
+              {"%d.%m.%Y %H:%M:%S %z", "01.03.2024 06:00:00 Z", "2024-03-01T06:00:00Z"},
+              {"%H:%M %%%d/%m/%Y", "10:00 %5/1/2024", "2024-01-05T10:00Z"}};
+    for (size_t i = 0; i < sizeof ok / sizeof ok[0]; i++) {
+        double a = 0, b = -1;
+        tsu_time_form f;
+        const char *stop;
+        int got = tsu_parse_time_format(ok[i].fmt, ok[i].text, NULL, &a, &f, &stop);
+        CHECK(tsu_parse_time(ok[i].iso, NULL, &b, NULL, NULL));
+        CHECKF(got && *stop == 0 && a == b, "%s on \"%s\": %d %.17g %.17g", ok[i].fmt,
+               ok[i].text, got, a, b);
+    }
+    static const struct {
+        const char *fmt, *text;
+    } bad[] = {{"%d/%m/%Y", "31/02/2024"}, {"%d/%m/%Y", "00/01/2024"}, {"%m/%d/%Y", "13/01/2024"},
+               {"%Y-%j", "2023-366"},      {"%H:%M", "24:00"},          {"%H:%M:%S", "10:00:60"},
+               {"%d/%m/%Y", "05-01-2024"}, {"%Y", "24"},                {"%d %b %Y", "5 Foo 2024"},
+               {"%Y-%m-%d %z", "2024-01-05 +25"}, {"%Q", "1"},          {"%H:%M", ""}};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        double a;
+        CHECKF(!tsu_parse_time_format(bad[i].fmt, bad[i].text, NULL, &a, NULL, NULL),
+               "%s on \"%s\" accepted", bad[i].fmt, bad[i].text);
+    }
+    CHECK(!tsu_parse_time_format(NULL, "2024", NULL, NULL, NULL, NULL));
+    {
+        tsu_time_form f;
+        double v;
+        char b[TSU_TIME_SIZE];
+        CHECK(tsu_parse_time_format("%d/%m/%Y", "05/01/2024", NULL, &v, &f, NULL) && f.date_only);
+        tsu_format_time(v, &f, b);
+        CHECK(strcmp(b, "2024-01-05") == 0);
+        CHECK(tsu_parse_time_format("%d/%m/%Y %H:%M", "05/01/2024 10:00", NULL, &v, &f, NULL) &&
+              !f.date_only && !f.seconds && f.zone == 0);
+        tsu_format_time(v, &f, b);
+        CHECK(strcmp(b, "2024-01-05T10:00") == 0);
+    }
+    tsu_table t;
+    tsu_io_error e;
+    tsu_read_options o;
+    tsu_read_options_init(&o);
+    o.time_detect = 1;
+    o.time_format = "%d/%m/%Y %H:%M";
+    CHECK(RT("t;q\n05/01/2024 10:00;1\n05/01/2024 11:00;2\n", &o, &t, &e) == TSU_IO_OK &&
+          t.nrows == 2 && t.cols[0][1] - t.cols[0][0] == 3600 && t.names);
+    tsu_table_free(&t);
+    /* the first data line in the format is data, not a header */
+    CHECK(RT("05/01/2024 10:00;1\n05/01/2024 11:00;2\n", &o, &t, &e) == TSU_IO_OK &&
+          t.nrows == 2 && !t.names);
+    tsu_table_free(&t);
+    EXPECT_ERR("t;q\n05/01/2024 10:00;1\n2024-01-05T11:00;2\n", &o, TSU_IO_ERR_TIME,
+               "t.csv:3:1: not a date of the format \"%d/%m/%Y %H:%M\": \"2024-01-05T11:00\"", 3,
+               1);
+    /* units row */
+    tsu_read_options_init(&o);
+    o.skip_after_header = 1;
+    CHECK(RT("# c\nday,rain\n\n# c\nd,mm\n1,2\n3,4\n", &o, &t, &e) == TSU_IO_OK &&
+          t.nrows == 2 && t.lines[0] == 6 && strcmp(t.names[1], "rain") == 0);
+    tsu_table_free(&t);
+    CHECK(RT("1,2\n3,4\n", &o, &t, &e) == TSU_IO_OK && t.nrows == 2); /* no header: none */
+    tsu_table_free(&t);
+    /* the corner cell of a matrix */
+    tsu_read_options_init(&o);
+    o.header_corner = 1;
+    CHECK(RT(",1,2\n10,3,4\n", &o, &t, &e) == TSU_IO_OK && t.nrows == 1 && t.names &&
+          strcmp(t.names[0], "") == 0 && strcmp(t.names[2], "2") == 0);
+    tsu_table_free(&t);
+    CHECK(RT("0,1,2\n10,3,4\n", &o, &t, &e) == TSU_IO_OK && t.nrows == 2 && !t.names);
+    tsu_table_free(&t);
+    EXPECT_ERR(",1,2\n10,3,4\n", NULL, TSU_IO_ERR_NUMBER, "t.csv:1:1: empty field", 1, 1);
+    /* a column forced to dates: after the layout, before the first row */
+    {
+        FILE *f = mem_file("d,q\n20240105,1\n20240106,2\n", 27);
+        tsu_reader *r;
+        const double *row;
+        tsu_read_options_init(&o);
+        o.time_format = "%Y%m%d";
+        CHECK(tsu_reader_open(&r, f, "t.csv", &o, &e) == TSU_IO_OK);
+        CHECK(tsu_reader_set_time_column(r, 0) == -1); /* columns not known yet */
+        CHECK(tsu_reader_layout(r, &e) == TSU_IO_OK);
+        CHECK(tsu_reader_set_time_column(r, 2) == -1); /* not a column */
+        CHECK(tsu_reader_set_time_column(r, 0) == 0);
+        CHECK(tsu_reader_next(r, &row, &e) == TSU_IO_OK && row[0] == 19727.0 * 86400 &&
+              tsu_reader_is_time(r, 0, NULL) && !tsu_reader_is_time(r, 1, NULL));
+        CHECK(tsu_reader_set_time_column(r, 1) == -1); /* too late */
+        CHECK(tsu_reader_set_time_column(NULL, 0) == -1);
+        tsu_reader_free(r);
+        fclose(f);
+    }
+    /* compressed input */
+    EXPECT_ERR("\x1f\x8b\x08\x00\x00\x00\x00\x00", NULL, TSU_IO_ERR_ENCODING,
+               "t.csv: gzip-compressed input: decompress it first (zcat t.csv | trigspline ...)",
+               0, 0);
+    EXPECT_ERR("PK\x03\x04\x14\x00", NULL, TSU_IO_ERR_ENCODING,
+               "t.csv: a zip archive (or a spreadsheet: .xlsx, .ods): extract the table or save "
+               "it as CSV first", 0, 0);
+    /* one byte of gzip's magic is text */
+    CHECK(RT("\x1f", NULL, &t, &e) != TSU_IO_ERR_ENCODING);
+    tsu_table_free(&t);
 }
 
 /* tsu_reader_layout and tsu_reader_use_columns: the columns not chosen hold any text. */
@@ -1744,6 +1863,7 @@ int main(void)
     test_reader_errors();
     test_reader_realworld();
     test_reader_columns();
+    test_time_format();
     test_reader_stream();
     test_reader_line_ends();
     test_out();

@@ -62,22 +62,29 @@ static void test_null_accessors(void)
  * Paper form: 4 arrays of n+1 doubles, 5 of n, n term bytes (spline.c). */
 static void test_size_overflow(void)
 {
+    /* the layout of spline.c: 4 arrays of np = n + 1 doubles, 5 of n (6 in
+     * the geometric form, the default), n term bytes */
     static const double x[2] = {0, 1}, f[2] = {0, 1};
     const size_t M = SIZE_MAX;
-    size_t np[4];
-    np[0] = M / 4;      /* 4 np fits, 5 n does not */
-    np[1] = M / 6;      /* 4 np and 5 n fit, their sum does not */
-    np[2] = M / 16;     /* the sum 9n + 4 fits, times 8 bytes it does not */
-    np[3] = (M - 32) / 72 + 1; /* 8 (9n + 4) = 72n + 32 fits, plus n term bytes does not */
-    for (int k = 0; k < 4; k++) {
-        ts_spline *s = (ts_spline *)(uintptr_t)1;
-        ts_error e;
-        CHECKF(ts_spline_new(x, f, np[k], NULL, &s, &e) == TS_ERR_OVERFLOW && s == NULL &&
-                   e.status == TS_ERR_OVERFLOW, "case %d", k);
+    for (int geo = 0; geo <= 1; geo++) {
+        ts_spline_options o;
+        ts_spline_options_init(&o);
+        o.form = geo ? TS_FORM_GEOMETRIC : TS_FORM_PAPER;
+        size_t per = 5 + (size_t)geo, np[4];
+        np[0] = M / 4;      /* 4 np fits, per n does not */
+        np[1] = M / 6;      /* 4 np and per n fit, their sum does not */
+        np[2] = M / 16;     /* the sum (4 + per) n + 4 fits, times 8 bytes it does not */
+        np[3] = (M - 32) / (8 * (4 + per)) + 1; /* 8 ((4 + per) n + 4) fits, plus n bytes does not */
+        for (int k = 0; k < 4; k++) {
+            ts_spline *s = (ts_spline *)(uintptr_t)1;
+            ts_error e;
+            CHECKF(ts_spline_new(x, f, np[k], &o, &s, &e) == TS_ERR_OVERFLOW && s == NULL &&
+                       e.status == TS_ERR_OVERFLOW, "form %d, case %d", geo, k);
+        }
+        /* the check of case 3 is tight: n + c > SIZE_MAX, c = 8 (4 + per) n + 32 <= SIZE_MAX */
+        size_t n3 = np[3] - 1, c3 = 8 * (4 + per) * n3 + 32;
+        CHECKF(c3 / (8 * (4 + per)) == n3 && n3 > M - c3, "form %d", geo);
     }
-    /* the check of case 3 is tight: n + 72n + 32 > SIZE_MAX, 72n + 32 <= SIZE_MAX */
-    size_t n3 = np[3] - 1;
-    CHECK(72 * n3 + 32 >= 72 * n3 && n3 > M - (72 * n3 + 32));
 }
 
 /* f constant 3 on x = 0..n: every interval is flat, S = 3 exactly
@@ -110,6 +117,35 @@ static void check_flat(const ts_spline *s, size_t np)
 
 /* 1026 points: the second block of 1024 intervals has one interval, and
  * its points were copied with the first (spline.c copy_points). */
+static void test_mt_refusals(void)
+{
+    /* a batch large enough to be split over 2 threads (8192 queries each at
+     * least, src/eval.c), refused before any thread starts: deriv 3 in the
+     * geometric form and an extrapolation mode out of range give
+     * TS_ERR_OPTION and every value NaN (include/trigspline.h) */
+    const size_t m = 3 * 8192;
+    double *xq = malloc(m * sizeof *xq), *yq = malloc(m * sizeof *yq);
+    ts_error e;
+    ts_spline *s = flat_spline(4, &e);
+    CHECK(xq && yq && s);
+    if (xq && yq && s) {
+        for (size_t j = 0; j < m; j++)
+            xq[j] = 3.0 * (double)j / (double)m;
+        CHECK(ts_spline_eval_batch_mt(s, 3, xq, m, yq, 2, &e) == TS_ERR_OPTION &&
+              e.status == TS_ERR_OPTION);
+        size_t nan = 0;
+        for (size_t j = 0; j < m; j++)
+            nan += isnan(yq[j]) != 0;
+        CHECK(nan == m);
+        CHECK(ts_spline_eval_batch_mode_mt(s, 0, (ts_extrap)9, xq, m, yq, 2, &e) == TS_ERR_OPTION);
+        CHECK(ts_spline_eval_batch_mode_mt(s, 0, TS_EXTRAP_ERROR, xq, m, yq, 2, &e) == TS_OK);
+        CHECK(yq[0] == 3.0 && yq[m - 1] == 3.0);
+    }
+    ts_spline_free(s);
+    free(xq);
+    free(yq);
+}
+
 static void test_block_edge(void)
 {
     ts_error e;
@@ -361,5 +397,7 @@ int main(void)
     test_certify_both_lines();
     TH_CASE("report_upper_uncertified_build");
     test_report_upper_uncertified_build();
+    TH_CASE("mt refusals");
+    test_mt_refusals();
     return th_report("test_cover_api");
 }

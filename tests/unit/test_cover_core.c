@@ -199,10 +199,12 @@ static ts_spline *mt_spline(void)
     return make(x, f, 60, TS_FORM_PAPER, TS_SLOPES_ARITHMETIC, TS_EXTRAP_ERROR);
 }
 
+#if defined(__GLIBC__) /* pthread_setattr_default_np: the thread-failure check below */
 static void *idle(void *arg)
 {
     return arg;
 }
+#endif
 
 static void batch_mt(void)
 {

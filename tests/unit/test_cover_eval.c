@@ -164,6 +164,75 @@ static void solve_worst(void)
     ts_spline_free(s);
 }
 
+static void kernel_copies(void)
+{
+    /* Every kernel (ISA) and deriv 0, 1, 2 of the geometric form, whose
+     * solve and value are inlined into each: intervals with equal end
+     * values and slopes (0, 0), (0, d), (d, 0) (the flat test's every
+     * outcome), queries on both halves, at solve_worst's u (more than two
+     * Halley passes) and at a subnormal distance from a knot (every pass).
+     * Expected: on the (0, 0) interval S = f, S' = S'' = 0 exactly
+     * (docs/method.md §4: Y = F0, Y' = Y'' = 0); elsewhere S to
+     * solve_worst's long-double reference and tolerance where it applies
+     * (the left half), and S, S', S'' to
+     * ts_spline_eval_deriv within 1e-9 of |S| + |S'| + |S''| + 1 (the kernels agree
+     * with it to tests/unit/test_fast.c's bounds, far below this; a swapped
+     * side or slope gives errors of order 1). */
+    const double x[5] = {-1.0, 0.0, 1.0, 2.0, 3.0}, f[5] = {1.0, 1.0, 1.0, 1.0, 1.0};
+    const double d[5] = {0.0, 0.0, 0.3, 0.0, -0.2};
+    ts_spline_options o;
+    th_options_paper(&o);
+    o.form = TS_FORM_GEOMETRIC;
+    o.alpha = TS_GEOMETRIC_A_MIN;
+    o.slopes = TS_SLOPES_USER;
+    o.user_slopes = d;
+    o.n_user_slopes = 5;
+    ts_spline *s = NULL;
+    CHECK(ts_spline_new(x, f, 5, &o, &s, NULL) == TS_OK);
+    if (!s)
+        return;
+    const double w = 0.49999999995301059, sub = 4.9406564584124654e-324;
+    double q[] = {-1.0 + 0.25, -sub, sub, 0.5, 1.0 - w, 1.0 + w, 2.0 - w, 2.5, 2.0 + w, 3.0 - w};
+    size_t nq = sizeof q / sizeof q[0];
+    for (size_t p = 0; p < nq; p++) {
+        double y1[3];
+        CHECK(ts_spline_eval_deriv(s, q[p], NULL, &y1[0], &y1[1], &y1[2]) == TS_OK);
+        size_t i = q[p] < 0.0 ? 0 : (size_t)q[p] + 1; /* the interval [x[i], x[i+1]] */
+        double h = x[i + 1] - x[i];
+        long double u = ((long double)q[p] - (long double)x[i]) / (long double)h;
+        double v[3]; /* the form table's evaluation (certificates, integrals) */
+        ts__interval_eval(s, i, q[p], 2, v);
+        for (int deriv = 0; deriv <= 2; deriv++)
+            CHECKF(i == 0 ? v[deriv] == (deriv ? 0.0 : 1.0)
+                          : fabs(v[deriv] - y1[deriv]) <=
+                                1e-9 * (fabs(y1[0]) + fabs(y1[1]) + fabs(y1[2]) + 1.0),
+                   "interval_eval deriv %d at %g: %.17g, single %.17g", deriv, q[p], v[deriv],
+                   y1[deriv]);
+        for (int isa = 0; isa <= 2; isa++) {
+            for (int deriv = 0; deriv <= 2; deriv++) {
+                double yk;
+                if (!ts__fast_batch_isa(s, deriv, &q[p], 1, &yk, NULL, isa, NULL))
+                    continue; /* kernel not on this CPU */
+                if (i == 0) {
+                    CHECKF(yk == (deriv ? 0.0 : 1.0), "kernel %d, deriv %d at %g: %.17g", isa,
+                           deriv, q[p], yk);
+                } else if (deriv == 0 && u <= 0.5L) { /* ref_value: from the left end */
+                    long double want = ref_value((long double)ts__kappa(o.alpha), (double)u, f[i],
+                                                 f[i + 1], d[i] * h, d[i + 1] * h);
+                    double tol = 8 * EPS * (fabs(yk) + fabs(y1[1]) + 1.0);
+                    CHECKF(fabsl((long double)yk - want) <= (long double)tol,
+                           "kernel %d at %g: %.17g, want %.17Lg", isa, q[p], yk, want);
+                } else {
+                    CHECKF(fabs(yk - y1[deriv]) <= 1e-9 * (fabs(y1[0]) + fabs(y1[1]) + fabs(y1[2]) + 1.0),
+                           "kernel %d, deriv %d at %g: %.17g, single %.17g", isa, deriv, q[p], yk,
+                           y1[deriv]);
+                }
+            }
+        }
+    }
+    ts_spline_free(s);
+}
+
 static void huge_a(void)
 {
     /* a_i = 1 + 1e300: κ ≈ 2e-301, at a knot u = 0, φ = 0, F = 0 and
@@ -350,6 +419,8 @@ int main(void)
     solve_scan();
     TH_CASE("solve_worst");
     solve_worst();
+    TH_CASE("kernel_copies");
+    kernel_copies();
     TH_CASE("huge_a");
     huge_a();
     TH_CASE("subnormal_u");

@@ -135,6 +135,13 @@ int cli_parse(cli_cmd cmd, int argc, char **argv, cli_opts *o)
     if (o->grid_set + (o->at != NULL) + (o->samples_total != 0) > 1 ||
         (o->samples_set && o->samples_total))
         return cli_usage(cmd, "give one of --samples, --samples-total, --grid and --at");
+    if (o->step_set && (o->at || o->samples_total || o->samples_set))
+        return cli_usage(cmd, "--step: give one of --samples, --samples-total, --step and --at");
+    if (o->step_set && o->grid_set && o->grid_n)
+        return cli_usage(cmd, "--grid A:B:N and --step %s: give the count N or the step, not "
+                              "both (--grid A:B --step %s)", o->step_text, o->step_text);
+    if (o->grid_set && !o->grid_n && !o->step_set)
+        return cli_usage(cmd, "--grid A:B needs --step S (or the count of points: --grid A:B:N)");
 
     if (o->c1) {
         if (o->form_set && o->form != TS_FORM_C1)

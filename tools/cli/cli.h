@@ -22,6 +22,7 @@
  *   args.c         argv -> cli_opts / cli_surface_opts
  *   curve_json.c   the JSON report of a parametric curve
  *   curve_plot.c   the SVG plot of a parametric curve
+ *   surface_plot.c the SVG heatmap of a surface
  *   fit.c, certify.c, curve.c   the commands
  *   surface.c      the surface command (gridded data)
  *   main.c         picks the command
@@ -127,6 +128,16 @@ typedef struct cli_opts {
     int box_set;
     double box[6]; /* xmin, xmax, ymin, ymax[, zmin, zmax]; ±inf = absent */
     size_t n_box;
+
+    /* reading DATA, more (table.c) */
+    const char *date_format; /* --date-format: x read with tsu_parse_time_format */
+    int units_row;           /* --units-row: the line after the header is skipped */
+    /* --step S: samples at the multiples of S (of the seconds of step_unit for
+     * a time x; step_unit 0: a plain number) */
+    int step_set;
+    double step;
+    double step_unit;
+    const char *step_text;
 } cli_opts;
 
 /* ---- names.c --------------------------------------------------------- */
@@ -161,6 +172,9 @@ int cli_report_io(const tsu_io_error *e);
 int cli_usage(cli_cmd cmd, const char *fmt, ...) CLI_PRINTF(2, 3);
 /* Shortest round-trip text of v (tsu_format_double). */
 const char *cli_num(double v, char buf[TSU_FMT_SIZE]);
+/* v to sig significant digits (1 to 17; "%.*g" without trailing zeros), for
+ * texts meant for a reader rather than for a program: 4.69, -2.69e+05. */
+const char *cli_num_sig(double v, int sig, char buf[TSU_FMT_SIZE]);
 /* "y = M*x + C" into buf. */
 void cli_line_text(const ts_line *l, char *buf, size_t len);
 /* "out of memory"; returns the exit status for it. */
@@ -244,6 +258,23 @@ int cli_sample_after(const ts_spline *s, size_t i0, size_t i1, int with_end, siz
  * errno of the sink, or -1: an evaluation failed (outside the data without
  * --extrapolate; *err, *bad_x). */
 int cli_sample_even(const ts_spline *s, double a, double b, size_t n, int deriv, cli_sink sink,
+                    void *ctx, ts_error *err, double *bad_x);
+/* Points at a step: x_j = base + j * num / den for j = j0 .. j0 + n - 1
+ * (num, den integers, so that a decimal step such as 0.1 gives the doubles
+ * nearest to 0.3, 0.7, ...; den 1 and num any double when the step has too
+ * many digits). */
+typedef struct cli_step_grid {
+    double base, num, den, j0;
+    size_t n;
+} cli_step_grid;
+double cli_step_x(const cli_step_grid *g, double j);
+/* The grid of step text (a decimal number) times unit over [a, b]: aligned
+ * (the multiples of the step counted from base) or from a.  0, or -1 when
+ * more than max points (g->n is then max + 1). */
+int cli_step_grid_make(const char *text, double unit, double a, double b, int aligned,
+                       double base, size_t max, cli_step_grid *g);
+/* The points of g (as cli_sample_even). */
+int cli_sample_step(const ts_spline *s, const cli_step_grid *g, int deriv, cli_sink sink,
                     void *ctx, ts_error *err, double *bad_x);
 
 /* Growable pair of double arrays (failed: an allocation failed, nothing
@@ -399,6 +430,11 @@ typedef struct cli_overshoot {
     size_t i_above, i_below;   /* their intervals (global index) */
     ts_interval_report r_above, r_below;
     size_t count;              /* intervals seen */
+    int warn_only;             /* set after cli_overshoot_init when only the warning is wanted:
+                                  intervals whose control values (docs/method.md §2, convex hull)
+                                  bound both excursions well below CLI_OVERSHOOT_FRACTION of
+                                  the data range so far are not computed exactly, so y_min,
+                                  y_max, above and below then cover only the others */
 } cli_overshoot;
 void cli_overshoot_init(cli_overshoot *w);
 /* Intervals [i0, i1) of s; offset = the global index of s's interval 0. */
@@ -535,11 +571,23 @@ void cli_constraints_free(cli_opts *o);
 /* "constraints": per record, per interval {active, gap, at, certified} or null. */
 void cli_constraints_json(cli_json *j, const ts_spline *s);
 
+/* ---- surface_plot.c -------------------------------------------------- */
+/* The heatmap of surface s through the grid x, y, z (z[j*nx + i]) built with
+ * so: viridis, or a diverging map centred on 0 when the values straddle 0;
+ * contours, axis ticks, colour bar; the patches where the shape scheme
+ * acts (the surface built without it leaves the bounds; else active[c])
+ * hatched.  rep, active: per patch, or NULL.  0 or ENOMEM. */
+int cli_surface_plot(const double *x, size_t nx, const double *y, size_t ny, const double *z,
+                     const ts_surface *s, const ts_surface_options *so,
+                     const ts_patch_report *rep, const int *active, tsu_plot_buf *svg);
+
 /* ---- fit.c, certify.c, curve.c, surface.c ---------------------------- */
 int cli_fit(cli_opts *o);
 int cli_certify(cli_opts *o);
 int cli_curve(cli_opts *o);
 /* The whole surface command (argv after "surface"). */
 int cli_surface(int argc, char **argv);
+/* disaggregate.c: trigspline disaggregate (bin totals to a finer grid). */
+int cli_disaggregate(int argc, char **argv);
 
 #endif

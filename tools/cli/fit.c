@@ -12,24 +12,26 @@ typedef struct csv_ctx {
     const ts_spline *s;
     const cli_cols *cols;
     const char *name;
+    const cli_step_grid *step;
 } csv_ctx;
 
 /* The samples fit writes: --samples per interval, or --samples-total / --grid
  * points evenly spaced.  Returns 0, an errno of the sink, or -1 (an
  * evaluation outside the data; message printed). */
-static int fit_samples(const cli_opts *o, const ts_spline *s, const cli_cols *cols, cli_sink sink,
-                       void *ctx)
+static int fit_samples(const cli_opts *o, const ts_spline *s, const cli_cols *cols,
+                       const cli_step_grid *step, cli_sink sink, void *ctx)
 {
     size_t n = ts_spline_intervals(s);
     const double *X = ts_spline_x(s);
-    if (!o->samples_total && !o->grid_set)
+    if (!o->samples_total && !o->grid_set && !step)
         return cli_sample(s, 0, n, 1, o->samples, o->deriv, sink, ctx);
     ts_error e;
     double bad = 0;
-    int rc = o->grid_set ? cli_sample_even(s, o->grid_a, o->grid_b, o->grid_n, o->deriv, sink, ctx,
-                                           &e, &bad)
-                         : cli_sample_even(s, X[0], X[n], o->samples_total, o->deriv, sink, ctx,
-                                           &e, &bad);
+    int rc = step          ? cli_sample_step(s, step, o->deriv, sink, ctx, &e, &bad)
+             : o->grid_set ? cli_sample_even(s, o->grid_a, o->grid_b, o->grid_n, o->deriv, sink,
+                                             ctx, &e, &bad)
+                           : cli_sample_even(s, X[0], X[n], o->samples_total, o->deriv, sink, ctx,
+                                             &e, &bad);
     if (rc == -1) {
         char bx[TSU_TIME_SIZE], b0[TSU_TIME_SIZE], b1[TSU_TIME_SIZE];
         cli_error("--grid: x = %s is outside the data range [%s, %s] (--extrapolate "
@@ -52,7 +54,7 @@ static int write_dense_csv(void *ctx, FILE *fp)
         rc = tsu_writer_text(sk.w, hb.data, hb.len);
     tsu_plot_buf_free(&hb);
     if (!rc)
-        rc = fit_samples(c->o, c->s, c->cols, cli_sink_writer, &sk);
+        rc = fit_samples(c->o, c->s, c->cols, c->step, cli_sink_writer, &sk);
     int rc2 = tsu_writer_free(sk.w);
     if (rc == -1)
         return ECANCELED; /* reported */
@@ -80,6 +82,7 @@ static int eval_at(const cli_opts *o, const ts_spline *s, const cli_cols *cols, 
     } else {
         cli_read_options(o, &ro);
         ro.skip = 0;
+        ro.skip_after_header = 0;
         tsu_io_status st = tsu_read_table_path(o->at, &ro, &a->t, &ie);
         if (st != TSU_IO_OK)
             return cli_report_io(&ie);
@@ -105,6 +108,37 @@ static int eval_at(const cli_opts *o, const ts_spline *s, const cli_cols *cols, 
                   a->name, ln, cli_x_text(cols, a->x[q], bx), cli_x_text(cols, X[0], b0),
                   cli_x_text(cols, X[ts_spline_intervals(s)], b1));
         return CLI_DATA;
+    }
+    return CLI_OK;
+}
+
+/* --step (and --grid A:B): the points, checked against the kind of x.
+ * CLI_OK or CLI_USAGE (message printed). */
+static int make_step(const cli_opts *o, const ts_spline *s, const cli_cols *cols,
+                     cli_step_grid *g)
+{
+    const double *X = ts_spline_x(s);
+    size_t n = ts_spline_intervals(s);
+    double base = 0.0;
+    if (cols->x_time && o->step_unit == 0.0)
+        return cli_usage(o->cmd, "--step %s: x holds dates, give the step a unit s, min, h or d "
+                                 "(1h, 15min)", o->step_text);
+    if (!cols->x_time && o->step_unit != 0.0)
+        return cli_usage(o->cmd, "--step %s: a unit applies to dates only, x holds numbers",
+                         o->step_text);
+    if (cols->x_time && cols->tform.zone == 2)
+        base = -60.0 * cols->tform.offset_min; /* midnight in x's own offset */
+    int rc = o->grid_set ? cli_step_grid_make(o->step_text, o->step_unit, o->grid_a, o->grid_b, 0,
+                                              0.0, 100000000, g)
+                         : cli_step_grid_make(o->step_text, o->step_unit, X[0], X[n], 1, base,
+                                              100000000, g);
+    if (rc != 0)
+        return cli_usage(o->cmd, "--step %s: more than 100000000 points", o->step_text);
+    if (g->n == 0) {
+        char b0[TSU_TIME_SIZE], b1[TSU_TIME_SIZE];
+        return cli_usage(o->cmd, "--step %s: no multiple of the step in [%s, %s]", o->step_text,
+                         cli_x_text(cols, o->grid_set ? o->grid_a : X[0], b0),
+                         cli_x_text(cols, o->grid_set ? o->grid_b : X[n], b1));
     }
     return CLI_OK;
 }
@@ -145,12 +179,32 @@ int cli_fit(cli_opts *o)
     cli_json_init(&j);
     tsu_plot_buf svg = TSU_PLOT_BUF_INIT, text = TSU_PLOT_BUF_INIT;
     cli_stats smp = CLI_STATS_INIT;
-    csv_ctx cc = {o, s, &d.cols, d.name};
+    cli_step_grid step;
+    csv_ctx cc = {o, s, &d.cols, d.name, o->step_set ? &step : NULL};
     cli_writer_fn fn = NULL;
+    if (o->step_set && (rc = make_step(o, s, &d.cols, &step)) != CLI_OK)
+        goto done;
+    if (o->grid_set && opt.extrapolate == TS_EXTRAP_ERROR) {
+        /* before anything is written: the grid inside the data */
+        const double *X = ts_spline_x(s);
+        size_t n = ts_spline_intervals(s);
+        double lo = o->grid_a, hi = o->step_set ? cli_step_x(&step, step.j0 + (double)(step.n - 1))
+                                                : o->grid_b;
+        if (!(X[0] <= lo && hi <= X[n])) {
+            char bx[TSU_TIME_SIZE], b0[TSU_TIME_SIZE], b1[TSU_TIME_SIZE];
+            cli_error("--grid: x = %s is outside the data range [%s, %s] (--extrapolate "
+                      "clamp|extend|linear evaluates there)",
+                      cli_x_text(&d.cols, !(X[0] <= lo && lo <= X[n]) ? lo : hi, bx), cli_x_text(&d.cols, X[0], b0),
+                      cli_x_text(&d.cols, X[n], b1));
+            rc = CLI_DATA;
+            goto done;
+        }
+    }
     if (o->svg || (o->json && o->with_samples)) {
         /* held in memory: a documented limit */
         size_t n = ts_spline_intervals(s);
         double pts = o->samples_total ? (double)o->samples_total
+                     : o->step_set    ? (double)step.n
                      : o->grid_set    ? (double)o->grid_n
                                       : (double)n * (double)(o->samples - 1) + 1.0;
         if (pts > CLI_MAX_HELD_SAMPLES) {
@@ -172,8 +226,8 @@ int cli_fit(cli_opts *o)
             if (o->with_samples)
                 cli_sink_xy(&held, at.x, at.y, at.m);
         } else {
-            if (fit_samples(o, s, &d.cols, cli_sink_stats, &smp) == -1 ||
-                (o->with_samples && fit_samples(o, s, &d.cols, cli_sink_xy, &held) != 0)) {
+            if (fit_samples(o, s, &d.cols, cc.step, cli_sink_stats, &smp) == -1 ||
+                (o->with_samples && fit_samples(o, s, &d.cols, cc.step, cli_sink_xy, &held) != 0)) {
                 rc = held.failed ? cli_nomem() : CLI_DATA;
                 cli_xy_free(&held);
                 goto done;

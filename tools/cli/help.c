@@ -32,6 +32,8 @@ void cli_print_main_help(void)
            "  curve    parametric curve through 2-D or 3-D points (open or closed)\n"
            "  surface  certified surface through gridded x,y,z data (long or matrix\n"
            "           layout): kept positive, within bounds, planes or the data range\n"
+           "  disaggregate  bin totals (daily rain) to a finer grid's totals or a rate,\n"
+           "           totals kept, never negative, smooth\n"
            "\n"
            "  trigspline COMMAND --help   options of a command\n"
            "  trigspline --version        print the version\n"

@@ -23,6 +23,8 @@ int main(int argc, char **argv)
     }
     if (strcmp(c, "surface") == 0)
         return cli_surface(argc - 2, argv + 2);
+    if (strcmp(c, "disaggregate") == 0)
+        return cli_disaggregate(argc - 2, argv + 2);
     cli_cmd cmd;
     if (strcmp(c, "fit") == 0)
         cmd = CLI_FIT;

@@ -40,6 +40,14 @@ int cli_usage(cli_cmd cmd, const char *fmt, ...)
     return CLI_USAGE;
 }
 
+const char *cli_num_sig(double v, int sig, char buf[TSU_FMT_SIZE])
+{
+    if (!isfinite(v) || v == 0.0)
+        return cli_num(v, buf);
+    snprintf(buf, TSU_FMT_SIZE, "%.*g", sig < 1 ? 1 : sig > 17 ? 17 : sig, v);
+    return buf;
+}
+
 const char *cli_num(double v, char buf[TSU_FMT_SIZE])
 {
     tsu_format_double(v, buf);

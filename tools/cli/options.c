@@ -441,6 +441,22 @@ static int opt_grid(const cli_optdef *d, cli_cmd cmd, const char *name, const ch
                 break;
             }
     }
+    if (!mid || nn < 2) { /* A:B, the step from --step */
+        mid = NULL;
+        nn = 0;
+        for (const char *q = strchr(v, ':'); q; q = strchr(q + 1, ':'))
+            if (parse_x_value(v, (size_t)(q - v), &a) && parse_x_value(q + 1, strlen(q + 1), &b)) {
+                mid = q;
+                break;
+            }
+        if (mid && a < b) {
+            o->grid_set = 1;
+            o->grid_a = a;
+            o->grid_b = b;
+            o->grid_n = 0;
+            return CLI_OK;
+        }
+    }
     if (!mid || nn < 2 || nn > 100000000 || !(a < b))
         return cli_usage(cmd, "%s expects A:B:N (A < B numbers or ISO 8601 dates, 2 <= N <= "
                               "100000000), found \"%s\"", name, v);
@@ -448,6 +464,37 @@ static int opt_grid(const cli_optdef *d, cli_cmd cmd, const char *name, const ch
     o->grid_a = a;
     o->grid_b = b;
     o->grid_n = nn;
+    return CLI_OK;
+}
+
+/* --step S: a number > 0, for a time x with a unit s, min, h or d ("15min"). */
+static int opt_step(const cli_optdef *d, cli_cmd cmd, const char *name, const char *v, void *vo)
+{
+    static const struct {
+        const char *unit;
+        double seconds;
+    } units[] = {{"s", 1}, {"min", 60}, {"h", 3600}, {"d", 86400}};
+    cli_opts *o = vo;
+    size_t len = strlen(v), k = len;
+    double step = 0, unit = 0;
+    (void)d;
+    while (k > 0 && ((v[k - 1] >= 'a' && v[k - 1] <= 'z') || (v[k - 1] >= 'A' && v[k - 1] <= 'Z')))
+        k--;
+    if (k < len) {
+        for (size_t i = 0; i < sizeof units / sizeof units[0]; i++)
+            if (strcmp(v + k, units[i].unit) == 0)
+                unit = units[i].seconds;
+        if (unit == 0)
+            return cli_usage(cmd, "%s: unknown unit \"%s\" in \"%s\" (s, min, h or d)", name,
+                             v + k, v);
+    }
+    if (!parse_number(v, k, 0, &step) || !(step > 0))
+        return cli_usage(cmd, "%s expects a number > 0, with a unit s, min, h or d for dates "
+                              "(1h, 15min), found \"%s\"", name, v);
+    o->step_set = 1;
+    o->step = step;
+    o->step_unit = unit;
+    o->step_text = v;
     return CLI_OK;
 }
 
@@ -688,7 +735,13 @@ const cli_optdef cli_optdefs[] = {
      COUNT(2, 100000000, (double)NAN, CLI_G_OUTPUT, "N points evenly over the data range instead")},
     {ROW("--grid", NULL, "A:B:N", CLI_F, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_grid, CLI_G_OUTPUT,
-           "N points evenly over [A, B] instead of --samples (A, B numbers or dates)")},
+           "N points evenly over [A, B] instead of --samples (A, B numbers or dates); --grid "
+           "A:B --step S: A, A + S, ... up to B")},
+    {ROW("--step", NULL, "S", CLI_F, CLI_K_CUSTOM, NOF, NOF),
+     PLAIN(opt_step, CLI_G_OUTPUT,
+           "points at the multiples of S within the data range (with --grid A:B: A, A + S, "
+           "... up to B) instead of --samples; for dates S has a unit s, min, h or d (1h, "
+           "15min), multiples counted from midnight in x's own UTC offset")},
     {ROW("--at", NULL, "FILE", CLI_F, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_at, CLI_G_OUTPUT,
            "evaluate at the x values of FILE (first column) instead; --at X1,X2,...: at these "
@@ -747,6 +800,10 @@ const cli_optdef cli_optdefs[] = {
      PLAIN(opt_column, CLI_G_INPUT, "the y column alone (as in --columns)")},
     {ROW("--x-time", NULL, NULL, CLI_F | CLI_C, CLI_K_FLAG, OFF(x_time), NOF),
      PLAIN(NULL, CLI_G_INPUT, "x must hold ISO 8601 dates (else they are detected)")},
+    {ROW("--date-format", NULL, "FMT", CLI_F | CLI_C, CLI_K_TEXT, OFF(date_format), NOF),
+     PLAIN(NULL, CLI_G_INPUT,
+           "x holds dates written in FMT (strptime: %Y %y %m %b %d %j %H %I %p %M %S %f %z; "
+           "'%d/%m/%Y %H:%M'); without %z UTC; written back as ISO 8601")},
     {ROW("--delimiter", NULL, ",|;|tab|space|auto", FCV, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_delimiter, CLI_G_INPUT,
            "field separator (default auto: ';' if the first line has one, else ',', else tab, "
@@ -764,6 +821,9 @@ const cli_optdef cli_optdefs[] = {
     {ROW("--skip", NULL, "N", FCV, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_skip, CLI_G_INPUT, "skip N leading lines unread (metadata); '#' comments as "
                                   "always")},
+    {ROW("--units-row", NULL, NULL, FCV, CLI_K_FLAG, OFF(units_row), NOF),
+     PLAIN(NULL, CLI_G_INPUT, "the line after the header holds units (or other text): "
+                              "skipped (--skip N counts lines before the header)")},
     {ROW("--verbose", "-v", NULL, FCV, CLI_K_FLAG, OFF(verbose), NOF),
      PLAIN(NULL, CLI_G_INPUT, "report skipped rows on standard error")},
 

@@ -87,6 +87,124 @@ int cli_sample_even(const ts_spline *s, double a, double b, size_t n, int deriv,
     return 0;
 }
 
+double cli_step_x(const cli_step_grid *g, double j)
+{
+    return g->base + (g->den == 1.0 ? j * g->num : (j * g->num) / g->den);
+}
+
+/* The decimal step text as num * 10^e (num an integer below 2^53), e <= 0
+ * when it has decimals; 0 when it has too many digits. */
+static int step_decimal(const char *t, double *num, int *e)
+{
+    double m = 0;
+    int digits = 0, frac = 0, exp = 0, seen_point = 0;
+    const char *p = t;
+    for (; (*p >= '0' && *p <= '9') || *p == '.'; p++) {
+        if (*p == '.') {
+            seen_point = 1;
+            continue;
+        }
+        if (m == 0 && *p == '0') {
+            frac += seen_point;
+            continue;
+        }
+        if (++digits > 15)
+            return 0;
+        m = m * 10 + (*p - '0');
+        frac += seen_point;
+    }
+    if (*p == 'e' || *p == 'E') {
+        char *end;
+        long v = strtol(p + 1, &end, 10);
+        if (end == p + 1 || v < -30 || v > 30)
+            return 0;
+        exp = (int)v;
+        p = end;
+    }
+    *num = m;
+    *e = exp - frac;
+    return 1;
+}
+
+int cli_step_grid_make(const char *text, double unit, double a, double b, int aligned,
+                       double base, size_t max, cli_step_grid *g)
+{
+    double num, step;
+    int e;
+    g->base = aligned ? base : a;
+    g->den = 1.0;
+    if (step_decimal(text, &num, &e) && e >= -22) {
+        double scale = 1.0;
+        for (int k = 0; k < (e < 0 ? -e : e); k++)
+            scale *= 10.0;
+        num *= unit != 0.0 ? unit : 1.0;
+        if (e >= 0)
+            num *= scale;
+        else
+            g->den = scale;
+    } else {
+        (void)tsu_parse_double(text, NULL, &num, NULL);
+        num *= unit != 0.0 ? unit : 1.0;
+    }
+    g->num = num;
+    step = num / g->den;
+    g->j0 = 0.0;
+    if (aligned) {
+        double j = ceil((a - g->base) / step);
+        while (cli_step_x(g, j) < a)
+            j++;
+        while (cli_step_x(g, j - 1) >= a)
+            j--;
+        g->j0 = j;
+    } else {
+        /* A itself a multiple of the step: count from 0 (round decimals) */
+        double j = nearbyint(a / step);
+        if (fabs(j) < 9007199254740992.0 && cli_step_x(&(cli_step_grid){0, g->num, g->den, 0, 0},
+                                                      j) == a) {
+            g->base = 0.0;
+            g->j0 = j;
+        }
+    }
+    double last = floor((b - g->base) / step);
+    while (cli_step_x(g, last) > b)
+        last--;
+    while (cli_step_x(g, last + 1) <= b)
+        last++;
+    if (last - g->j0 + 1 > (double)max) {
+        g->n = max + 1;
+        return -1;
+    }
+    g->n = last < g->j0 ? 0 : (size_t)(last - g->j0 + 1);
+    return 0;
+}
+
+int cli_sample_step(const ts_spline *s, const cli_step_grid *g, int deriv, cli_sink sink,
+                    void *ctx, ts_error *err, double *bad_x)
+{
+    double xs[CLI_BLOCK], ys[CLI_BLOCK], last = -(double)INFINITY;
+    size_t k = 0;
+    ts_cursor cur = TS_CURSOR_INIT;
+    int rc;
+    for (size_t i = 0; i < g->n; i++) {
+        double x = cli_step_x(g, g->j0 + (double)i);
+        if (x > last) {
+            last = x;
+            xs[k++] = x;
+        }
+        if (k && (k == CLI_BLOCK || i + 1 == g->n)) {
+            ts_status st = ts_spline_eval_batch(s, deriv, xs, k, ys, &cur, err);
+            if (st != TS_OK) {
+                *bad_x = xs[err->index < k ? err->index : 0];
+                return -1;
+            }
+            if ((rc = sink(ctx, xs, ys, k)) != 0)
+                return rc;
+            k = 0;
+        }
+    }
+    return 0;
+}
+
 int cli_sink_stats(void *ctx, const double *x, const double *y, size_t k)
 {
     cli_stats *st = ctx;

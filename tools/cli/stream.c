@@ -77,7 +77,7 @@ static size_t npts(const stream *s)
 int cli_can_stream(const cli_opts *o)
 {
     return o->cmd == CLI_FIT && !o->json && !o->svg && !o->at && !o->alphas && !o->betas &&
-           !o->grid_set && !o->samples_total &&
+           !o->grid_set && !o->samples_total && !o->step_set &&
            o->slopes != TS_SLOPES_PERIODIC && !o->no_stream;
 }
 
@@ -323,6 +323,7 @@ int cli_fit_stream(const cli_opts *o, const ts_spline_options *opt)
     s.o = o;
     s.opt = opt;
     cli_overshoot_init(&s.ov);
+    s.ov.warn_only = 1; /* only cli_overshoot_warn reads it */
     s.chunk = CLI_CHUNK;
     s.prev_x = -(double)INFINITY;
     const char *env = getenv("TRIGSPLINE_CHUNK");

@@ -105,6 +105,7 @@ static int read_grid(const cli_surface_opts *o, surf_grid *g)
     g->name = strcmp(o->data, "-") == 0 ? "<stdin>" : o->data;
     tsu_read_options ro;
     tsu_read_options_init(&ro);
+    ro.header_corner = o->matrix_in; /* ",x1,x2,...": pandas' empty corner cell */
     tsu_table t;
     tsu_io_error e;
     tsu_io_status st = tsu_read_table_path(o->data, &ro, &t, &e);
@@ -258,115 +259,6 @@ static double *sample_axis(const double *t, size_t np, size_t per, size_t unifor
     return v;
 }
 
-/* ---- SVG: heatmap, contours, nodes, active patches ------------------------- */
-static void ramp(double u, char col[8])
-{
-    /* blue -> white -> orange-red (diverging, colour-blind safe ends) */
-    double r, gg, b;
-    if (u < 0.5) {
-        double s = u / 0.5;
-        r = 0.13 + 0.87 * s, gg = 0.40 + 0.60 * s, b = 0.67 + 0.33 * s;
-    } else {
-        double s = (u - 0.5) / 0.5;
-        r = 1.0 - 0.16 * s, gg = 1.0 - 0.63 * s, b = 1.0 - 0.93 * s;
-    }
-    snprintf(col, 8, "#%02x%02x%02x", (unsigned)(r * 255), (unsigned)(gg * 255), (unsigned)(b * 255));
-}
-
-static int render_svg(const surf_grid *g, const ts_surface *s, const ts_patch_report *rep,
-                      const int *active, tsu_plot_buf *svg)
-{
-    const size_t N = 120;
-    double W = 560, H = 420, L = 60, T = 30;
-    double xs[120], ys[120], *v = malloc(N * N * sizeof *v);
-    if (!v)
-        return ENOMEM;
-    sbuf w = {svg, 0};
-    for (size_t a = 0; a < N; a++) {
-        xs[a] = g->x[0] + (g->x[g->nx - 1] - g->x[0]) * ((double)a + 0.5) / (double)N;
-        ys[a] = g->y[0] + (g->y[g->ny - 1] - g->y[0]) * ((double)a + 0.5) / (double)N;
-    }
-    ts_surface_eval_grid(s, xs, N, ys, N, v, NULL);
-    double lo = (double)INFINITY, hi = -(double)INFINITY;
-    for (size_t k = 0; k < N * N; k++)
-        lo = fmin(lo, v[k]), hi = fmax(hi, v[k]);
-    if (!(hi > lo))
-        hi = lo + 1;
-    double x0 = g->x[0], x1 = g->x[g->nx - 1], y0 = g->y[0], y1 = g->y[g->ny - 1];
-#define PX(x) (L + W * ((x) - x0) / (x1 - x0))
-#define PY(y) (T + H * (1.0 - ((y) - y0) / (y1 - y0)))
-    sprint(&w,
-                        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%g\" height=\"%g\" "
-                        "viewBox=\"0 0 %g %g\" font-family=\"sans-serif\" font-size=\"12\">\n",
-                        W + L + 120, H + T + 50, W + L + 120, H + T + 50);
-    sputs(&w, "<g shape-rendering=\"crispEdges\">\n");
-    double cw = W / (double)N, ch = H / (double)N;
-    for (size_t b = 0; b < N; b++)
-        for (size_t a = 0; a < N; a++) {
-            char col[8];
-            ramp((v[b * N + a] - lo) / (hi - lo), col);
-            sprint(&w, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"%s\"/>\n",
-                                L + cw * (double)a, T + H - ch * (double)(b + 1), cw + 0.3, ch + 0.3, col);
-        }
-    sputs(&w, "</g>\n<g stroke=\"#222\" stroke-width=\"0.8\" fill=\"none\">\n");
-    /* contours: marching squares on the cell centres, 8 levels */
-    for (int c = 1; c <= 8; c++) {
-        double level = lo + (hi - lo) * c / 9.0;
-        for (size_t b = 0; b + 1 < N; b++)
-            for (size_t a = 0; a + 1 < N; a++) {
-                double q[4] = {v[b * N + a], v[b * N + a + 1], v[(b + 1) * N + a + 1], v[(b + 1) * N + a]};
-                double px[4] = {xs[a], xs[a + 1], xs[a + 1], xs[a]};
-                double py[4] = {ys[b], ys[b], ys[b + 1], ys[b + 1]};
-                double ex[4], ey[4];
-                int k = 0;
-                for (int e = 0; e < 4 && k < 4; e++) {
-                    double f0 = q[e] - level, f1 = q[(e + 1) % 4] - level;
-                    if ((f0 < 0) != (f1 < 0)) {
-                        double u = f0 / (f0 - f1);
-                        ex[k] = px[e] + u * (px[(e + 1) % 4] - px[e]);
-                        ey[k] = py[e] + u * (py[(e + 1) % 4] - py[e]);
-                        k++;
-                    }
-                }
-                for (int m = 0; m + 1 < k; m += 2)
-                    sprint(&w, "<path d=\"M%.2f %.2fL%.2f %.2f\"/>\n", PX(ex[m]),
-                                        PY(ey[m]), PX(ex[m + 1]), PY(ey[m + 1]));
-            }
-    }
-    sputs(&w, "</g>\n<g fill=\"none\" stroke=\"#d55e00\" stroke-width=\"2\">\n");
-    size_t np = (g->nx - 1) * (g->ny - 1);
-    for (size_t c = 0; rep && c < np; c++)
-        if (active[c])
-            sprint(&w, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\"><title>patch (%zu, %zu): bound active</title></rect>\n",
-                                PX(rep[c].x0), PY(rep[c].y1), PX(rep[c].x1) - PX(rep[c].x0),
-                                PY(rep[c].y0) - PY(rep[c].y1), rep[c].i, rep[c].j);
-    sputs(&w, "</g>\n<g fill=\"#000\">\n");
-    for (size_t k = 0; k < g->nx * g->ny; k++)
-        sprint(&w, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"2\"/>\n", PX(g->x[k % g->nx]),
-                            PY(g->y[k / g->nx]));
-    sputs(&w, "</g>\n");
-    char b1[TSU_FMT_SIZE], b2[TSU_FMT_SIZE];
-    sprint(&w, "<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"none\" stroke=\"#000\"/>\n",
-                        L, T, W, H);
-    sprint(&w, "<text x=\"%g\" y=\"%g\" text-anchor=\"middle\">x: %s .. %s</text>\n",
-                        L + W / 2, T + H + 30, cli_num(x0, b1), cli_num(x1, b2));
-    sprint(&w, "<text x=\"%g\" y=\"%g\" transform=\"rotate(-90 %g %g)\" text-anchor=\"middle\">y: %s .. %s</text>\n",
-                        L - 20, T + H / 2, L - 20, T + H / 2, cli_num(y0, b1), cli_num(y1, b2));
-    for (int c = 0; c <= 10; c++) {
-        char col[8];
-        ramp(c / 10.0, col);
-        sprint(&w, "<rect x=\"%g\" y=\"%g\" width=\"20\" height=\"%g\" fill=\"%s\"/>\n",
-                            L + W + 20, T + H - H * (c + 1) / 11.0, H / 11.0 + 0.3, col);
-    }
-    sprint(&w, "<text x=\"%g\" y=\"%g\">%s</text>\n", L + W + 45, T + H, cli_num(lo, b1));
-    sprint(&w, "<text x=\"%g\" y=\"%g\">%s</text>\n", L + W + 45, T + 10, cli_num(hi, b1));
-    sputs(&w, "</svg>\n");
-#undef PX
-#undef PY
-    free(v);
-    return w.bad ? ENOMEM : 0;
-}
-
 /* ---- the command ------------------------------------------------------------ */
 int cli_surface(int argc, char **argv)
 {
@@ -518,7 +410,7 @@ int cli_surface(int argc, char **argv)
         rc = cli_nomem();
         goto out;
     }
-    if (o.svg && render_svg(&g, s, rep, active, &svg) != 0) {
+    if (o.svg && cli_surface_plot(g.x, g.nx, g.y, g.ny, g.z, s, &o.so, rep, active, &svg) != 0) {
         rc = cli_nomem();
         goto out;
     }

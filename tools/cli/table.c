@@ -16,6 +16,8 @@ void cli_read_options(const cli_opts *o, tsu_read_options *ro)
     ro->na = o->na;
     ro->skip = o->skip;
     ro->time_detect = o->cmd != CLI_CURVE;
+    ro->time_format = o->date_format;
+    ro->skip_after_header = o->units_row ? 1 : 0;
 }
 
 /* Column numbers up to this are given to the reader before the header test. */
@@ -117,6 +119,8 @@ int cli_cols_select(const cli_opts *o, tsu_reader *r, const char *name, cli_cols
     size_t use[2] = {c->ix, c->iy};
     if (tsu_reader_use_columns(r, use, 2, &ie) != TSU_IO_OK)
         return cli_report_io(&ie);
+    if (o->date_format)
+        (void)tsu_reader_set_time_column(r, c->ix); /* "20240105" is a date too */
     return CLI_OK;
 }
 

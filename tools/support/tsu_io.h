@@ -246,6 +246,30 @@ typedef struct tsu_time_form {
 
 int tsu_parse_time(const char *s, const char *end, double *t, tsu_time_form *form,
                    const char **stop);
+
+/*
+ * tsu_parse_time_format: the same for a strptime-like format fmt (POSIX
+ * strptime's conversions that name fields of a date, read from exactly
+ * these texts):
+ *
+ *     %Y 4-digit year      %y 2-digit year (69-99: 19xx, 00-68: 20xx)
+ *     %m month 1-12        %b %B %h English month name (full or 3 letters, any case)
+ *     %d %e day 1-31       %j day of the year 1-366
+ *     %H hour 00-23        %I hour 1-12 with %p AM / PM (any case)
+ *     %M minute 00-59      %S second 00-59 (no leap second)
+ *     %f digits of a fraction of the second (after %S and a '.' written in fmt)
+ *     %z Z or a numeric UTC offset (+HH:MM, +HHMM, +HH)
+ *     %F = %Y-%m-%d   %T = %H:%M:%S   %R = %H:%M   %% a '%'
+ *
+ * Numeric fields take one or two digits (%m, %d, %H ...; %j up to three);
+ * a blank in fmt (or %n, %t) matches any run of blanks, none included; any
+ * other character matches itself.  Fields left out are 1970, January, day 1,
+ * 00:00:00 UTC.  form says: date only when fmt has no time of day, seconds
+ * when it has %S or %T, the zone of %z.  Returns 1 when [s, end) starts with
+ * a match (*stop just past it), else 0.
+ */
+int tsu_parse_time_format(const char *fmt, const char *s, const char *end, double *t,
+                          tsu_time_form *form, const char **stop);
 size_t tsu_format_time(double t, const tsu_time_form *form, char buf[TSU_TIME_SIZE]);
 
 /*
@@ -322,6 +346,13 @@ typedef struct tsu_read_options {
     int time_detect;      /* 1: a column whose first data field is a date is a time column */
     size_t time_col;      /* 1-based column that must hold dates (0: none) */
     const char *time_name; /* or the header name of that column (NULL: none) */
+    const char *time_format; /* dates are read with tsu_parse_time_format(time_format)
+                                instead of as ISO 8601 (NULL: ISO 8601) */
+    unsigned long long skip_after_header; /* content lines after the header skipped
+                                             unread (units rows; default 0) */
+    int header_corner;    /* 1: with TSU_HEADER_AUTO a first content line whose first
+                             field is empty is the header too (the corner cell of a
+                             matrix layout, as pandas DataFrame.to_csv writes it) */
 } tsu_read_options;
 
 #define TSU_IO_MAX_LINE ((size_t)16 << 20)
@@ -389,6 +420,10 @@ int tsu_reader_is_time(const tsu_reader *r, size_t j, tsu_time_form *form);
 void tsu_reader_field_pos(const tsu_reader *r, size_t j, unsigned long long *line, size_t *col);
 /* Line of the header, 0 if none. */
 unsigned long long tsu_reader_header_line(const tsu_reader *r);
+/* Column j (0-based) holds dates whatever its first value looks like (a
+ * date format of digits only, "20240105"): call after tsu_reader_layout,
+ * before the first row.  0, or -1 when too late or j is not a column. */
+int tsu_reader_set_time_column(tsu_reader *r, size_t j);
 void tsu_reader_free(tsu_reader *r);                        /* NULL ok; does not close fp */
 
 /* ---- whole table in memory ---------------------------------------- */

@@ -1277,11 +1277,13 @@ static void w_attr(wr *w, const char *name, double v)
     w_s(w, "\"");
 }
 
-/* tick label: ASCII '-' written as a real minus sign */
+/* tick label: the '-' of a number's sign or exponent written as a real minus
+ * sign; other hyphens (dates: 2024-01-05) stay ASCII */
 static void w_label(wr *w, const char *s)
 {
-    for (; *s; s++) {
-        if (*s == '-')
+    for (const char *s0 = s; *s; s++) {
+        if (*s == '-' && (s == s0 || s[-1] == 'e' || s[-1] == 'E' || s[-1] == ' ' ||
+                          s[-1] == '('))
             w_s(w, "&#8722;");
         else
             w_raw(w, s, 1);

@@ -54,6 +54,11 @@ struct tsu_reader {
     const char *pend_le; /* its content end (r->ls its start) */
     int rec_scanned;      /* its last line was quote-scanned: */
     const char *rec_hash; /* then its comment '#' (NULL: none) */
+    char *time_format;    /* tsu_parse_time_format's, NULL: ISO 8601 */
+    unsigned long long after_header; /* content lines still to skip after the header */
+    unsigned long long skip_after;   /* tsu_read_options.skip_after_header */
+    int sniffed;          /* the first bytes were checked for compressed data */
+    int header_corner;    /* tsu_read_options.header_corner */
     int failed;
     tsu_io_error saved;
 };
@@ -122,6 +127,7 @@ void tsu_reader_free(tsu_reader *r)
     free(r->buf);
     free(r->name);
     free(r->time_name);
+    free(r->time_format);
     free(r->is_time);
     free(r->tform);
     free(r->use);
@@ -165,7 +171,9 @@ tsu_io_status tsu_reader_open(tsu_reader **out, FILE *fp, const char *name,
     r->cap = opt->buffer_size < r->cap_max ? opt->buffer_size : r->cap_max;
     r->buf = tsu_io__malloc(r->cap);
     if (!r->buf || (opt->na && set_na(r, opt->na) != 0) ||
-        (opt->time_name && !(r->time_name = tsu_io__dup_str(opt->time_name, strlen(opt->time_name))))) {
+        (opt->time_name && !(r->time_name = tsu_io__dup_str(opt->time_name, strlen(opt->time_name)))) ||
+        (opt->time_format &&
+         !(r->time_format = tsu_io__dup_str(opt->time_format, strlen(opt->time_format))))) {
         tsu_reader_free(r);
         tsu_io__err_set(err, TSU_IO_ERR_NOMEM, 0, name, 0, 0, 0, "out of memory");
         return TSU_IO_ERR_NOMEM;
@@ -177,6 +185,8 @@ tsu_io_status tsu_reader_open(tsu_reader **out, FILE *fp, const char *name,
     r->decimal_comma = opt->decimal_comma;
     r->time_detect = opt->time_detect;
     r->time_col = opt->time_col;
+    r->skip_after = opt->skip_after_header;
+    r->header_corner = opt->header_corner;
     *out = r;
     return TSU_IO_OK;
 }
@@ -193,6 +203,15 @@ unsigned long long tsu_reader_header_line(const tsu_reader *r) { return r ? r->h
 const char *tsu_reader_name(const tsu_reader *r, size_t j)
 {
     return (r && r->names && j < r->nnames) ? r->names[j] : NULL;
+}
+
+int tsu_reader_set_time_column(tsu_reader *r, size_t j)
+{
+    if (!r || r->failed || r->rows || j >= r->ncols || !r->is_time)
+        return -1;
+    if (r->is_time[j] != 1)
+        r->is_time[j] = 2; /* forced; form from the first value */
+    return 0;
 }
 
 int tsu_reader_is_time(const tsu_reader *r, size_t j, tsu_time_form *form)
@@ -323,6 +342,29 @@ static void lone_cr(tsu_reader *r, size_t from)
 
 /* Next record (without its final '\n') into [*ls, *ls + *ll): 1, 0 at the
  * end, or the negative of an error status. */
+/* The first bytes of a compressed file or an archive: its kind ("gzip") and
+ * the command that decompresses it ("zcat"; NULL: an archive), else 0. */
+static int compressed_kind(const unsigned char *b, size_t n, const char **kind,
+                           const char **tool)
+{
+    static const struct {
+        const char *magic;
+        size_t len;
+        const char *kind, *tool;
+    } k[] = {{"\x1f\x8b", 2, "gzip", "zcat"},
+             {"BZh", 3, "bzip2", "bzcat"},
+             {"\xfd" "7zXZ\0", 6, "xz", "xzcat"},
+             {"\x28\xb5\x2f\xfd", 4, "zstd", "zstdcat"},
+             {"PK\x03\x04", 4, "zip", NULL}};
+    for (size_t i = 0; i < sizeof k / sizeof k[0]; i++)
+        if (n >= k[i].len && memcmp(b, k[i].magic, k[i].len) == 0) {
+            *kind = k[i].kind;
+            *tool = k[i].tool;
+            return 1;
+        }
+    return 0;
+}
+
 static int get_record(tsu_reader *r, char **ls, size_t *ll)
 {
     size_t scan = 0; /* bytes of the record scanned so far, from r->pos */
@@ -406,6 +448,20 @@ static int get_record(tsu_reader *r, char **ls, size_t *ll)
                 r->eof = 1;
             }
             lone_cr(r, from);
+            if (!r->sniffed && (r->len >= 6 || r->eof)) {
+                const char *kind, *tool;
+                r->sniffed = 1;
+                if (compressed_kind((const unsigned char *)r->buf, r->len, &kind, &tool)) {
+                    if (!tool)
+                        return -(int)RFAIL(r, TSU_IO_ERR_ENCODING, 0, 0, 0, 0,
+                                           "a zip archive (or a spreadsheet: .xlsx, .ods): "
+                                           "extract the table or save it as CSV first");
+                    return -(int)RFAIL(r, TSU_IO_ERR_ENCODING, 0, 0, 0, 0,
+                                       "%s-compressed input: decompress it first (%s %s | "
+                                       "trigspline ...)", kind, tool,
+                                       strcmp(r->name, "<stdin>") ? r->name : "FILE");
+                }
+            }
         }
     }
 }
@@ -648,6 +704,15 @@ static int num_field(tsu_reader *r, const char *s, const char *e, double *v)
 
 #define IS_ALPHA(c) ((unsigned)(((unsigned char)(c) | 0x20) - 'a') < 26u)
 
+/* A date of the reader's format (tsu_read_options.time_format, else ISO 8601). */
+static int parse_time_r(const tsu_reader *r, const char *s, const char *e, double *t,
+                        tsu_time_form *form, const char **stop)
+{
+    if (r->time_format)
+        return tsu_parse_time_format(r->time_format, s, e, t, form, stop);
+    return tsu_parse_time(s, e, t, form, stop);
+}
+
 /* A date or date-time followed by a time-zone name ("CET", " Europe/Paris",
  * "[Europe/Paris]": two letters or a '['), which is not accepted: 1 and
  * *name where the name starts, else 0. */
@@ -701,12 +766,25 @@ static int classify(tsu_reader *r, const field *f)
         return FK_NUMBER;
     if (r->time_detect || r->time_col || r->time_name) {
         const char *stop;
-        if (tsu_parse_time(s, e, NULL, NULL, &stop) && stop == e)
+        if (parse_time_r(r, s, e, NULL, NULL, &stop) && stop == e)
             return FK_TIME;
-        if (zone_name(s, e, &stop))
+        if (!r->time_format && zone_name(s, e, &stop))
             return FK_TIME; /* a date all the same: data, refused when parsed */
     }
     return FK_TEXT;
+}
+
+/* Is the first field of the record [ls, le) empty (a matrix's corner cell)? */
+static int empty_first(tsu_reader *r, const char *ls, const char *le)
+{
+    const char *p = ls, *e, *s;
+    field f;
+    if (next_field(r, &p, le, 1, &f, 0) != 1) {
+        r->failed = 0; /* a quote error: let the data parser report it */
+        return 0;
+    }
+    s = field_text(r, &f, &e);
+    return s && s == e && p < le;
 }
 
 /* Is the record [ls, le) a header (a field that is text)? -1: error (reported). */
@@ -907,7 +985,8 @@ static tsu_io_status value_error(tsu_reader *r, int ns, const field *f, const ch
     int all_text = 0;
     const char *zn;
     tsu_io__quote_text(q, sizeof q, s, e);
-    if (ns == TSU_NUM_SYNTAX && r->time_detect && r->rows == 0 && zone_name(s, e, &zn))
+    if (ns == TSU_NUM_SYNTAX && r->time_detect && r->rows == 0 && !r->time_format &&
+        zone_name(s, e, &zn))
         ZONE_FAIL(r, f->at, fieldno, s, e, zn);
     if (ns == TSU_NUM_NONFINITE)
         POS_FAIL(r, TSU_IO_ERR_NONFINITE, f->at, fieldno, "not a finite number: %s", q);
@@ -929,7 +1008,8 @@ static tsu_io_status value_error(tsu_reader *r, int ns, const field *f, const ch
         all_text)
         POS_FAIL(r, TSU_IO_ERR_LAYOUT, f->at, fieldno,
                  "every field of this line is text: a second header line (units?) after the "
-                 "header on line %llu? skip lines before the data with --skip N",
+                 "header on line %llu? skip it with --units-row (lines before the header: "
+                 "--skip N)",
                  r->header_line);
     POS_FAIL(r, TSU_IO_ERR_NUMBER, f->at, fieldno, "expected a number, found %s%s", q, hint);
 }
@@ -972,7 +1052,7 @@ static tsu_io_status parse_data(tsu_reader *r, const char *ls, const char *le)
             if (!dc) /* white space ends the field: "date HH:MM" is two fields */
                 for (fe = p; fe < le && !IS_BLANK(*fe); fe++)
                     ;
-            if (tsu_parse_time(p, fe, &v, &tf, &stop)) {
+            if (parse_time_r(r, p, fe, &v, &tf, &stop)) {
                 if ((q = fast_field_end(stop, le, dc)) != NULL) {
                     r->row[nf++] = v;
                     if (q == le)
@@ -1009,7 +1089,7 @@ static tsu_io_status parse_data(tsu_reader *r, const char *ls, const char *le)
                 if (r->is_time[nf]) {
                     tsu_time_form tf;
                     good = fs < fe && r->is_time[nf] == 1 &&
-                           tsu_parse_time(fs, fe, &v, &tf, &stop) && stop == fe;
+                           parse_time_r(r, fs, fe, &v, &tf, &stop) && stop == fe;
                 } else {
                     good = fs < fe && !r->decimal_comma &&
                            tsu_parse_double(fs, fe, &v, &stop) == TSU_NUM_OK && stop == fe;
@@ -1052,11 +1132,18 @@ static tsu_io_status parse_data(tsu_reader *r, const char *ls, const char *le)
             const char *stop;
             tsu_time_form tf;
             char q[200];
-            if (!tsu_parse_time(s, e, &v, &tf, &stop) || stop != e) {
+            if (!parse_time_r(r, s, e, &v, &tf, &stop) || stop != e) {
                 const char *zn;
-                if (zone_name(s, e, &zn))
+                if (!r->time_format && zone_name(s, e, &zn))
                     ZONE_FAIL(r, f.at, nf + 1, s, e, zn);
                 tsu_io__quote_text(q, sizeof q, s, e);
+                if (r->time_format) {
+                    char fq[200];
+                    tsu_io__quote_text(fq, sizeof fq, r->time_format,
+                                       r->time_format + strlen(r->time_format));
+                    POS_FAIL(r, TSU_IO_ERR_TIME, f.at, nf + 1,
+                             "not a date of the format %s: %s", fq, q);
+                }
                 POS_FAIL(r, TSU_IO_ERR_TIME, f.at, nf + 1,
                          "not a valid ISO 8601 date or date-time: %s (YYYY-MM-DD[THH:MM[:SS]]"
                          "[Z|+HH:MM])", q);
@@ -1075,7 +1162,7 @@ static tsu_io_status parse_data(tsu_reader *r, const char *ls, const char *le)
             const char *stop;
             tsu_time_form tf;
             if (k == TSU_NUM_SYNTAX && r->time_detect && r->rows == 0 &&
-                tsu_parse_time(s, e, &v, &tf, &stop) && stop == e) {
+                parse_time_r(r, s, e, &v, &tf, &stop) && stop == e) {
                 r->is_time[nf] = 1;
                 r->tform[nf] = tf;
                 r->row[nf++] = v;
@@ -1154,16 +1241,23 @@ static int next_record(tsu_reader *r, const char **lep)
             int hd;
             r->seen_content = 1;
             hd = r->header == TSU_HEADER_YES ||
-                 (r->header == TSU_HEADER_AUTO && is_header(r, ls, le, NULL) != 0);
+                 (r->header == TSU_HEADER_AUTO && is_header(r, ls, le, NULL) != 0) ||
+                 (r->header == TSU_HEADER_AUTO && r->header_corner && !r->failed &&
+                  empty_first(r, ls, le));
             if (r->failed)
                 break;
             if (hd) {
                 if (read_header(r, ls, le) != TSU_IO_OK)
                     break;
+                r->after_header = r->skip_after;
                 continue;
             }
             if (r->ncols && set_columns(r, r->ncols) != TSU_IO_OK)
                 break;
+        }
+        if (r->after_header) { /* a units row under the header */
+            r->after_header--;
+            continue;
         }
         *lep = le;
         return 1;

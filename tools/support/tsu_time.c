@@ -210,3 +210,245 @@ size_t tsu_format_time(double t, const tsu_time_form *form, char buf[TSU_TIME_SI
     }
     return n < 0 ? 0 : (size_t)n;
 }
+
+/* ------------------------------------------------------------------ */
+/* strptime-like formats                                                */
+/* ------------------------------------------------------------------ */
+
+/* 1 to max digits at *p into *v (greedy); 0 if none. */
+static int digits_upto(const char **p, const char *end, int max, int *v)
+{
+    int acc = 0, n = 0;
+    while (n < max && *p < end && IS_DIGIT(**p)) {
+        acc = acc * 10 + (**p - '0');
+        (*p)++;
+        n++;
+    }
+    *v = acc;
+    return n > 0;
+}
+
+static int lower_ascii(int c) { return c >= 'A' && c <= 'Z' ? c + 32 : c; }
+
+/* An English month name (full or its first three letters, any case) at *p: 1-12, 0 if none. */
+static int month_name(const char **p, const char *end)
+{
+    static const char *const names[12] = {"january", "february", "march",     "april",
+                                          "may",     "june",     "july",      "august",
+                                          "september", "october", "november", "december"};
+    for (int m = 0; m < 12; m++) {
+        size_t full = strlen(names[m]), k = 0;
+        while (k < full && *p + k < end && lower_ascii((unsigned char)(*p)[k]) == names[m][k])
+            k++;
+        if (k == full || k == 3) {
+            *p += k;
+            return m + 1;
+        }
+    }
+    return 0;
+}
+
+int tsu_parse_time_format(const char *fmt, const char *s, const char *end, double *t,
+                          tsu_time_form *form, const char **stop)
+{
+    tsu_time_form f;
+    const char *p = s, *q;
+    int Y = 1970, M = 1, D = 1, yday = 0, h = 0, mi = 0, sec = 0, pm = -1, v;
+    int have_date = 0;
+    double frac = 0.0;
+    memset(&f, 0, sizeof f);
+    f.date_only = 1;
+    f.sep = 'T';
+    if (!end)
+        end = s + strlen(s);
+    if (stop)
+        *stop = s;
+    if (!fmt)
+        return 0;
+    for (const char *c = fmt; *c; c++) {
+        if (*c == ' ' || *c == '\t') { /* any run of blanks, none included */
+            while (p < end && IS_BLANK(*p))
+                p++;
+            continue;
+        }
+        if (*c != '%' || !c[1]) {
+            if (p >= end || *p != *c)
+                goto fail;
+            p++;
+            continue;
+        }
+        switch (*++c) {
+        case 'Y':
+            if (!digits_at(p, end, 4, &Y))
+                goto fail;
+            p += 4;
+            have_date = 1;
+            break;
+        case 'y':
+            if (!digits_at(p, end, 2, &v))
+                goto fail;
+            Y = v < 69 ? 2000 + v : 1900 + v; /* POSIX strptime */
+            p += 2;
+            have_date = 1;
+            break;
+        case 'm':
+            if (!digits_upto(&p, end, 2, &M) || M < 1 || M > 12)
+                goto fail;
+            have_date = 1;
+            break;
+        case 'b':
+        case 'B':
+        case 'h':
+            if (!(M = month_name(&p, end)))
+                goto fail;
+            have_date = 1;
+            break;
+        case 'd':
+        case 'e':
+            if (!digits_upto(&p, end, 2, &D) || D < 1 || D > 31)
+                goto fail;
+            have_date = 1;
+            break;
+        case 'j':
+            if (!digits_upto(&p, end, 3, &yday) || yday < 1 || yday > 366)
+                goto fail;
+            have_date = 1;
+            break;
+        case 'H':
+        case 'I':
+            if (!digits_upto(&p, end, 2, &h) || (*c == 'H' ? h > 23 : h < 1 || h > 12))
+                goto fail;
+            if (*c == 'I' && pm < 0)
+                pm = 2; /* 12-hour clock, %p not seen yet */
+            f.date_only = 0;
+            break;
+        case 'M':
+            if (!digits_upto(&p, end, 2, &mi) || mi > 59)
+                goto fail;
+            f.date_only = 0;
+            break;
+        case 'S':
+            if (!digits_upto(&p, end, 2, &sec) || sec > 59)
+                goto fail;
+            f.date_only = 0;
+            f.seconds = 1;
+            break;
+        case 'f': /* fraction digits of the second (Python's %f, any number) */
+            if (p >= end || !IS_DIGIT(*p))
+                goto fail;
+            {
+                char tmp[48];
+                size_t n = 0;
+                tmp[n++] = '.';
+                for (q = p; q < end && IS_DIGIT(*q); q++)
+                    if (n + 1 < sizeof tmp)
+                        tmp[n++] = *q;
+                tmp[n] = 0;
+                (void)tsu_parse_double(tmp, NULL, &frac, NULL);
+                p = q;
+            }
+            break;
+        case 'p':
+            if (end - p >= 2 && (lower_ascii((unsigned char)p[0]) == 'a' ||
+                                 lower_ascii((unsigned char)p[0]) == 'p') &&
+                lower_ascii((unsigned char)p[1]) == 'm') {
+                int is_pm = lower_ascii((unsigned char)p[0]) == 'p';
+                pm = pm == 2 || pm < 0 ? 10 + is_pm : pm;
+                p += 2;
+            } else {
+                goto fail;
+            }
+            break;
+        case 'z':
+            if (p < end && (*p == 'Z' || *p == 'z')) {
+                f.zone = 1;
+                p++;
+            } else if (p < end && (*p == '+' || *p == '-') && digits_at(p + 1, end, 2, &v)) {
+                int sign = *p == '-' ? -1 : 1, om = 0;
+                q = p + 3;
+                if (q < end && *q == ':' && digits_at(q + 1, end, 2, &om)) {
+                    f.colon = 1;
+                    q += 3;
+                } else if (digits_at(q, end, 2, &om)) {
+                    q += 2;
+                }
+                if (v > 23 || om > 59)
+                    goto fail;
+                f.zone = 2;
+                f.offset_min = sign * (v * 60 + om);
+                p = q;
+            } else {
+                goto fail;
+            }
+            break;
+        case 'T': /* %H:%M:%S */
+            if (!digits_upto(&p, end, 2, &h) || h > 23 || p >= end || *p++ != ':' ||
+                !digits_upto(&p, end, 2, &mi) || mi > 59 || p >= end || *p++ != ':' ||
+                !digits_upto(&p, end, 2, &sec) || sec > 59)
+                goto fail;
+            f.date_only = 0;
+            f.seconds = 1;
+            break;
+        case 'R': /* %H:%M */
+            if (!digits_upto(&p, end, 2, &h) || h > 23 || p >= end || *p++ != ':' ||
+                !digits_upto(&p, end, 2, &mi) || mi > 59)
+                goto fail;
+            f.date_only = 0;
+            break;
+        case 'F': /* %Y-%m-%d */
+            if (!digits_at(p, end, 4, &Y) || end - p < 5 || p[4] != '-')
+                goto fail;
+            p += 5;
+            if (!digits_upto(&p, end, 2, &M) || M < 1 || M > 12 || p >= end || *p++ != '-' ||
+                !digits_upto(&p, end, 2, &D) || D < 1)
+                goto fail;
+            have_date = 1;
+            break;
+        case 'n':
+        case 't':
+            while (p < end && IS_BLANK(*p))
+                p++;
+            break;
+        case '%':
+            if (p >= end || *p != '%')
+                goto fail;
+            p++;
+            break;
+        default: /* a conversion not supported: never matches */
+            goto fail;
+        }
+    }
+    if (pm >= 10) { /* %I with %p */
+        h = h % 12 + (pm == 11 ? 12 : 0);
+    }
+    if (yday) {
+        int leap = (Y % 4 == 0 && Y % 100 != 0) || Y % 400 == 0;
+        if (yday > 365 + leap)
+            goto fail;
+        M = 1;
+        D = yday;
+        while (D > month_days(Y, M)) {
+            D -= month_days(Y, M);
+            M++;
+        }
+    } else if (D > month_days(Y, M)) {
+        goto fail;
+    }
+    if (!have_date && f.date_only)
+        goto fail; /* neither a date nor a time */
+    {
+        long long whole = days_from_civil(Y, M, D) * 86400 + h * 3600 + mi * 60 + sec -
+                          (long long)f.offset_min * 60;
+        if (t)
+            *t = (double)whole + frac;
+    }
+    if (form)
+        *form = f;
+    if (stop)
+        *stop = p;
+    return 1;
+fail:
+    if (stop)
+        *stop = p;
+    return 0;
+}

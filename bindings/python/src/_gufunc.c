@@ -14,6 +14,19 @@
  * numbering, -1 if none).  Queries outside the data under extrapolation
  * "nan" (and NaN queries) are NaN without a status.
  *
+ * Missing points (x or f NaN or ±Inf) stay local unless skipna: the series
+ * is split at them into runs of consecutive finite points, each run of two
+ * or more points is fitted on its own (fit_runs), and a query gets the value
+ * of the run whose [first, last] knot holds it; queries in an interval that
+ * touches a missing point, at a missing point or in a run of one point are
+ * NaN.  Extrapolation is the first (last) run's when it starts (ends) at the
+ * series' end, NaN otherwise.  Status TS_ERR_NONFINITE, index = the first
+ * missing point, marks such a series (its values are written); a run that
+ * fails makes the whole series fail with that run's status.  Each run's
+ * values depend on its knots only as a spline's do (docs/method.md §3, §6),
+ * so a window of the series (a dask chunk with its halo) gives the same
+ * values on its own intervals.
+ *
  * opt (float64, OPT_LEN values; the layout is trigspline.interp's):
  *   shape, form, slopes, extrapolate (-1: NaN outside), alpha,
  *   lower.m, lower.c, upper.m, upper.c, margin, skipna, certify, want_gap,
@@ -124,24 +137,36 @@ static double least_gap(const ts_spline *s, double first, double end)
     return g;
 }
 
-/* Scratch for one loop call: x, f, xq, y (double) and the finite-point map. */
+/* Scratch for one loop call: x, f, xq, y (double), the finite-point map and
+ * the tables of fit_runs: run of each kept point, start of each run (and one
+ * past the last), query offsets per run, run of each query, queries ordered
+ * by run, gathered queries and values. */
 typedef struct {
-    double *x, *f, *xq, *y;
-    npy_intp *keep;
+    double *x, *f, *xq, *y, *gq, *gy;
+    npy_intp *keep, *rid, *rstart, *roff, *qrun, *qorder;
 } scratch;
 
 static int scratch_new(scratch *w, npy_intp n, npy_intp m)
 {
     memset(w, 0, sizeof *w);
-    size_t un = (size_t)n, um = (size_t)m;
-    if (un > SIZE_MAX / sizeof(double) / 2 || um > SIZE_MAX / sizeof(double) / 2)
+    size_t un = (size_t)n + 2, um = (size_t)m + 1;
+    if (un > SIZE_MAX / sizeof(double) / 2 || um > SIZE_MAX / sizeof(double) / 2 ||
+        un > SIZE_MAX / sizeof(npy_intp) / 2 || um > SIZE_MAX / sizeof(npy_intp) / 2)
         return 0;
-    w->x = malloc((un ? un : 1) * sizeof(double));
-    w->f = malloc((un ? un : 1) * sizeof(double));
-    w->xq = malloc((um ? um : 1) * sizeof(double));
-    w->y = malloc((um ? um : 1) * sizeof(double));
-    w->keep = malloc((un ? un : 1) * sizeof(npy_intp));
-    return w->x && w->f && w->xq && w->y && w->keep;
+    w->x = malloc(un * sizeof(double));
+    w->f = malloc(un * sizeof(double));
+    w->xq = malloc(um * sizeof(double));
+    w->y = malloc(um * sizeof(double));
+    w->gq = malloc(um * sizeof(double));
+    w->gy = malloc(um * sizeof(double));
+    w->keep = malloc(un * sizeof(npy_intp));
+    w->rid = malloc(un * sizeof(npy_intp));
+    w->rstart = malloc(un * sizeof(npy_intp));
+    w->roff = malloc(un * sizeof(npy_intp));
+    w->qrun = malloc(um * sizeof(npy_intp));
+    w->qorder = malloc(um * sizeof(npy_intp));
+    return w->x && w->f && w->xq && w->y && w->gq && w->gy && w->keep && w->rid &&
+           w->rstart && w->roff && w->qrun && w->qorder;
 }
 
 static void scratch_free(scratch *w)
@@ -150,16 +175,154 @@ static void scratch_free(scratch *w)
     free(w->f);
     free(w->xq);
     free(w->y);
+    free(w->gq);
+    free(w->gy);
     free(w->keep);
+    free(w->rid);
+    free(w->rstart);
+    free(w->roff);
+    free(w->qrun);
+    free(w->qorder);
+}
+
+/* The run whose knots hold query q (-1: NaN there); kept points x[0..nn-1]
+ * at series positions keep[], n the series length (see the top of the
+ * file). */
+static npy_intp query_run(const scratch *w, npy_intp nn, npy_intp n, double q)
+{
+    if (nn == 0 || isnan(q))
+        return -1;
+    npy_intp r;
+    if (q < w->x[0]) {
+        r = w->keep[0] == 0 ? w->rid[0] : -1;
+    } else if (q > w->x[nn - 1]) {
+        r = w->keep[nn - 1] == n - 1 ? w->rid[nn - 1] : -1;
+    } else {
+        npy_intp lo = 0, hi = nn - 1; /* the last j with x[j] <= q */
+        while (lo < hi) {
+            npy_intp mid = lo + (hi - lo + 1) / 2;
+            if (w->x[mid] <= q)
+                lo = mid;
+            else
+                hi = mid - 1;
+        }
+        if (w->x[lo] == q || (lo + 1 < nn && w->rid[lo + 1] == w->rid[lo]))
+            r = w->rid[lo];
+        else
+            r = -1;
+    }
+    if (r >= 0 && w->rstart[r + 1] - w->rstart[r] < 2)
+        r = -1;
+    return r;
+}
+
+/* A series with missing points (not skipna): each run fitted on its own. */
+static ts_status fit_runs(scratch *w, npy_intp n, npy_intp m, const series_options *so,
+                          npy_int64 *index, double *gap)
+{
+    npy_intp nn = 0, nrun = 0, first_missing = -1;
+    for (npy_intp i = 0; i < n; i++) {
+        if (isfinite(w->x[i]) && isfinite(w->f[i])) {
+            if (nn == 0 || w->keep[nn - 1] != i - 1)
+                w->rstart[nrun++] = nn;
+            w->x[nn] = w->x[i];
+            w->f[nn] = w->f[i];
+            w->rid[nn] = nrun - 1;
+            w->keep[nn++] = i;
+        } else if (first_missing < 0) {
+            first_missing = i;
+        }
+    }
+    w->rstart[nrun] = nn;
+    for (npy_intp j = 1; j < nn; j++) { /* runs in order (within a run: the library) */
+        if (w->rid[j] != w->rid[j - 1] && !(w->x[j - 1] < w->x[j])) {
+            *index = (npy_int64)w->keep[j];
+            return TS_ERR_UNSORTED;
+        }
+    }
+    /* queries ordered by run (counting sort): off[r + 2] counts run r's
+     * queries, then off[r + 1] is their start, then (placed) their end */
+    npy_intp *off = w->roff, *order = w->qorder;
+    for (npy_intp r = 0; r <= nrun + 1; r++)
+        off[r] = 0;
+    for (npy_intp j = 0; j < m; j++) {
+        w->qrun[j] = query_run(w, nn, n, w->xq[j]);
+        w->y[j] = (double)NAN;
+        if (w->qrun[j] >= 0)
+            off[w->qrun[j] + 2]++;
+    }
+    for (npy_intp r = 2; r <= nrun + 1; r++)
+        off[r] += off[r - 1];
+    for (npy_intp j = 0; j < m; j++)
+        if (w->qrun[j] >= 0)
+            order[off[w->qrun[j] + 1]++] = j;
+    /* run r's queries: order[off[r] .. off[r + 1]) */
+    ts_status st = TS_OK;
+    for (npy_intp r = 0; r < nrun && st == TS_OK; r++) {
+        npy_intp a = w->rstart[r], len = w->rstart[r + 1] - a;
+        if (len < 2)
+            continue;
+        ts_spline *s = NULL;
+        ts_error err;
+        st = ts_spline_new(w->x + a, w->f + a, (size_t)len, &so->opt, &s, &err);
+        if (st == TS_OK && so->opt.shape != TS_SHAPE_NONE && !ts_spline_certified(s)) {
+            st = TS_ERR_VIOLATED;
+            err.index = TS_NO_INDEX;
+        }
+        if (st != TS_OK) {
+            ts_spline_free(s);
+            if (err.index != TS_NO_INDEX)
+                *index = (npy_int64)(err.index < (size_t)len ? w->keep[a + (npy_intp)err.index]
+                                                             : w->keep[a] + (npy_intp)err.index);
+            break;
+        }
+        npy_intp q0 = off[r], q1 = off[r + 1];
+        for (npy_intp k = q0; k < q1; k++)
+            w->gq[k - q0] = w->xq[order[k]];
+        ts_cursor cur = TS_CURSOR_INIT;
+        /* TS_ERR_DOMAIN only: those queries are NaN, the others evaluated */
+        (void)ts_spline_eval_batch(s, 0, w->gq, (size_t)(q1 - q0), w->gy, &cur, NULL);
+        for (npy_intp k = q0; k < q1; k++)
+            w->y[order[k]] = w->gy[k - q0];
+        if (so->want_gap) {
+            /* the run's intervals inside [gap_first, gap_end) of the series */
+            double first = so->gap_first - (double)w->keep[a];
+            double end = so->gap_end < 0 ? -1.0 : so->gap_end - (double)w->keep[a];
+            double g = so->gap_end >= 0 && end <= 0 ? (double)NAN
+                                                    : least_gap(s, first > 0 ? first : 0, end);
+            if (!isnan(g) && !(*gap <= g))
+                *gap = g;
+        }
+        ts_spline_free(s);
+    }
+    if (st != TS_OK) {
+        *gap = (double)NAN;
+        for (npy_intp j = 0; j < m; j++)
+            w->y[j] = (double)NAN;
+        return st;
+    }
+    *index = (npy_int64)first_missing;
+    return TS_ERR_NONFINITE;
 }
 
 /* Fit one series from w->x, w->f (n points) and evaluate at w->xq (m) into
- * w->y; returns the status, *index in the caller's numbering, *gap. */
+ * w->y; returns the status, *index in the caller's numbering, *gap, and
+ * *valued = 1 when w->y holds the values (always for TS_OK). */
 static ts_status fit_series(scratch *w, npy_intp n, npy_intp m, const series_options *so,
-                            npy_int64 *index, double *gap)
+                            npy_int64 *index, double *gap, int *valued)
 {
     *index = -1;
     *gap = (double)NAN;
+    *valued = 0;
+    if (!so->skipna) {
+        for (npy_intp i = 0; i < n; i++) {
+            if (!(isfinite(w->x[i]) && isfinite(w->f[i]))) {
+                ts_status st = fit_runs(w, n, m, so, index, gap);
+                *valued = st == TS_ERR_NONFINITE; /* NaN where no run gives a value */
+                return st;
+            }
+        }
+    }
     npy_intp nn = n;
     if (so->skipna) { /* fit through the finite points only */
         nn = 0;
@@ -192,6 +355,7 @@ static ts_status fit_series(scratch *w, npy_intp n, npy_intp m, const series_opt
     if (so->want_gap)
         *gap = least_gap(s, so->gap_first, so->gap_end);
     ts_spline_free(s);
+    *valued = 1;
     return TS_OK;
 }
 
@@ -271,6 +435,7 @@ static void interp_loop(char **args, npy_intp const *dims, npy_intp const *steps
         ts_status st;
         npy_int64 index = -1;
         double gap = (double)NAN;
+        int valued = 0;
         if (!ok) {
             st = TS_ERR_NOMEM;
         } else if (!read_options(po, so_, k, &so)) {
@@ -279,12 +444,12 @@ static void interp_loop(char **args, npy_intp const *dims, npy_intp const *steps
             load(w.x, px, sx, n, x_f32);
             load(w.f, pf, sf, n, is_f32);
             load(w.xq, pq, sq, m, x_f32);
-            st = fit_series(&w, n, m, &so, &index, &gap);
+            st = fit_series(&w, n, m, &so, &index, &gap, &valued);
         }
         *pst = (npy_int32)st;
         *pix = index;
         *pgap = gap;
-        if (st != TS_OK) {
+        if (!valued) {
             for (npy_intp j = 0; j < m; j++) {
                 if (is_f32)
                     *(float *)(py + j * sy) = NAN;

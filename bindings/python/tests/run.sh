@@ -2,8 +2,10 @@
 # The Python package's tests as a user gets the package: install it with pip
 # (no build isolation, warnings are errors) into a fresh venv made by Debian's
 # python3 with --system-site-packages (numpy, scipy, pytest from Debian), then
-# run pytest from outside the source tree.  test_install.py also installs it
-# a second time with plain `pip install` (build isolation, offline).
+# run pytest from outside the source tree (no index is reachable: Debian's
+# setuptools, wheel and numpy build it).  test_install.py also installs it a
+# second time with plain `pip install` (build isolation) into a venv without
+# system site-packages, from a local wheelhouse standing in for PyPI.
 #   bindings/python/tests/run.sh BUILD_DIR
 # BUILD_DIR: the CMake build whose libtrigspline.so test_clib.py compares
 # against; the venv goes to BUILD_DIR/python-venv.  Last line:

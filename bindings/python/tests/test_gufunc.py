@@ -182,8 +182,10 @@ def test_nan_series_and_gaps():
     xq = np.linspace(0, 29, 101)
     r = interp(x, f, xq, shape="positive", full=True)
     assert list(r.status) == [0, TS_ERR_NONFINITE, TS_ERR_NONFINITE, TS_ERR_NONFINITE]
-    assert r.index[1] == 10 and r.index[0] == -1
-    assert np.isnan(r.values[1:]).all() and not np.isnan(r.values[0]).any()
+    assert list(r.index) == [-1, 10, 0, 1]
+    # the gap stays local: NaN exactly in the two intervals touching point 10
+    np.testing.assert_array_equal(np.isnan(r.values[1]), (xq > 9) & (xq < 11))
+    assert np.isnan(r.values[2:]).all() and not np.isnan(r.values[0]).any()
     assert not r.all_certified
     assert "NaN" in status_message(TS_ERR_NONFINITE) or "finite" in status_message(TS_ERR_NONFINITE)
     g = interp(x, f, xq, shape="positive", skipna=True, full=True)

@@ -32,9 +32,10 @@ from .errors import TrigsplineError, strerror  # noqa: E402
 from .spline import Antiderivative, Derivative, Spline, estimate_slopes  # noqa: E402
 from .surface import Surface  # noqa: E402
 from .interp import interp  # noqa: E402
+from .histo import disaggregate  # noqa: E402
 
 __all__ = ["Spline", "Curve", "Surface", "Derivative", "Antiderivative", "TrigsplineError",
-           "interp", "estimate_slopes", "strerror", "defaults", "library_version",
+           "interp", "disaggregate", "estimate_slopes", "strerror", "defaults", "library_version",
            "__version__"]
 
 

@@ -40,8 +40,9 @@ _VALUE_ALIASES = {"slopes": {"pchip": "fritsch-carlson", "mean": "arithmetic"}}
 
 # ---- defaults that exist only in Python -------------------------------------
 #: errors: 'raise' as xarray's own errors= keywords (sel, drop_vars, ...);
-#: skipna: False as xarray's interp, which does not skip missing values (and
-#: so that dask chunks along the dimension stay independent, see xarray.py).
+#: skipna: False as xarray's interp, where a missing value makes NaN only the
+#: outputs next to it (and so that dask chunks along the dimension stay
+#: independent, see xarray.py); skipping across gaps is asked for.
 PYTHON = {"errors": "raise", "skipna": False}
 ERRORS = ("raise", "nan")
 

@@ -24,9 +24,10 @@ OPTION_LAYOUT = ("shape", "form", "slopes", "extrapolate", "alpha", "lower_m", "
                  "upper_m", "upper_c", "margin", "skipna", "certify", "want_gap",
                  "gap_first", "gap_end")
 
-# The ts_status codes a series gets when its data cannot be fitted at all
-# (NaN or too few points): its output is NaN, nothing is raised even with
-# errors="raise".
+# The ts_status codes of a series with data gaps: TS_ERR_NONFINITE (missing
+# values: the runs between them are fitted, the outputs next to them NaN) and
+# TS_ERR_TOO_FEW (fewer than two points: all NaN); nothing is raised even
+# with errors="raise".
 DATA_GAPS = (4, 5)  # TS_ERR_TOO_FEW, TS_ERR_NONFINITE
 # The codes whose index is an interval (include/trigspline.h); the others name a point.
 _INTERVAL_STATUSES = (_S.ALPHA, _S.BETA, _S.MARGIN, _S.INFEASIBLE, _S.VIOLATED, _S.GEOMETRIC,
@@ -142,9 +143,11 @@ def check_queries(x, xq):
 class InterpResult:
     """What ``interp(..., full=True)`` returns.
 
-    values  the interpolated array (NaN for series that failed)
-    status  int32 per series, 0 = fitted and certified; else a ts_status code
-            (``status_message(code)`` gives its text)
+    values  the interpolated array (NaN for series that failed, and next to
+            missing values)
+    status  int32 per series, 0 = fitted and certified; 5 (TS_ERR_NONFINITE)
+            = missing values, the runs between them fitted and certified;
+            else a ts_status code (``status_message(code)`` gives its text)
     index   int64 per series: the point (or interval) the status names, in
             the series' own numbering, -1 if none
     gap     float64 per series: the least certified gap over the series
@@ -221,12 +224,22 @@ def interp(x, f, xq, *, shape=None, lower=None, upper=None, alpha=None, form=Non
         library's policies.  With ``skipna``, a series is fitted on its
         finite points: queries beyond them but inside ``x`` give NaN.
     skipna : bool, default ${skipna}
-        Fit each series through its finite points only (gaps); otherwise a
-        series holding NaN gives NaN.
+        ``False``: a missing point (NaN or ±Inf in ``f`` or ``x``) stays
+        local, as in xarray's interp.  The series is split at its missing
+        points into runs of consecutive finite points; each run of two or
+        more points is fitted on its own (its own end slopes); a query in
+        a run's ``[first, last]`` knot gets that run's value, a query in an
+        interval touching a missing point (or at it, or at a lone finite
+        point between two missing ones) gets NaN.  Outside ``x`` only a run
+        reaching that end extrapolates.  The series' status is
+        TS_ERR_NONFINITE (5) with the index of its first missing point
+        (``full=True``).  ``True``: fit through the finite points only,
+        across the gaps.  No warning is given in either case.
     errors : {'raise', 'nan'}, default ${errors}
-        A series that cannot be fitted: ``'raise'`` raises ValueError naming
-        the series and point, ``'nan'`` gives NaN and its status.  A data
-        gap (NaN, too few points) gives NaN either way.
+        A series that cannot be fitted (one of its runs): ``'raise'``
+        raises ValueError naming the series and point, ``'nan'`` gives NaN
+        for the whole series and its status.  A series with fewer than two
+        finite points gives NaN either way.
     axis : int, default -1
         The axis of ``f`` (and ``x``) holding the series (numpy's gufunc
         convention).  The output has the queries on the same axis.

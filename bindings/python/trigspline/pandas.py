@@ -66,8 +66,11 @@ def interpolate(obj, index, *, shape=None, lower=None, upper=None, form=None, al
         ``TrigsplineError`` naming the first, ``'nan'`` gives NaN, or the
         library's policies.
     skipna : bool, default ${skipna}
-        Fit through the finite values only (gaps); otherwise a column
-        holding NaN is NaN.
+        ``False``: a NaN stays local (as in xarray's interp): each column
+        is split at its NaN values into runs, each run of two or more
+        values is fitted on its own, and new index values in an interval
+        touching a NaN get NaN.  ``True``: fit through the finite values
+        only, across the gaps (as pandas' own ``interpolate`` fills them).
     errors : {'raise', 'nan'}, default ${errors}
         Data the scheme refuses raise ValueError naming the column and the
         index value, or give a NaN column.

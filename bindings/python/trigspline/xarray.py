@@ -12,9 +12,10 @@ dimension through ``trigspline.interp`` (a numpy gufunc in C).
   that fall between its first knot and the next chunk's first knot.  The
   schemes are local (docs/method.md §3, §5, §6: interval i depends on knots
   i-1..i+2, Akima slopes on i-2..i+3), so this gives the unchunked values
-  bit for bit.  Options that are not local (the C¹ form, periodic or
-  monotone schemes, gaps skipped with ``skipna``) fall back to one chunk
-  along the dimension, with a warning.
+  bit for bit.  Missing values stay local too (each run of finite values
+  is a spline of its own, see ``trigspline.interp``).  Options that are not
+  local (the C¹ form, periodic or monotone schemes, gaps skipped with
+  ``skipna``) fall back to one chunk along the dimension, with a warning.
 
 Datetime coordinates are fitted as float seconds since the first
 coordinate value; queries are converted the same way.
@@ -200,9 +201,14 @@ def _combine_status(pieces):
 
 
 def _first_failure(a):
+    """A run that fails makes the series fail (its first such chunk); else a
+    data gap (missing values) is reported by the first chunk that sees one,
+    as the unchunked fit reports the first missing point."""
     status, index, gap = a[..., 0], a[..., 1], a[..., 2]
+    hard = (status != STATUS_OK) & ~np.isin(status, DATA_GAPS)
     failed = status != STATUS_OK
-    k = np.argmax(failed, axis=-1)[..., None]
+    k = np.where(hard.any(axis=-1), np.argmax(hard, axis=-1),
+                 np.argmax(failed, axis=-1))[..., None]
     out = np.empty(a.shape[:-2] + (3,))
     out[..., 0] = np.take_along_axis(status, k, -1)[..., 0]
     out[..., 1] = np.take_along_axis(index, k, -1)[..., 0]
@@ -267,10 +273,6 @@ def _interp_dataarray(da, dim, new, o, certificate):
             chunked = False
     if chunked:
         y, pieces = _interp_chunked(fm, xf, qf, opt, halo, errors, **common)
-        # a series with a non-finite value fails as a whole when unchunked
-        if not o["skipna"]:
-            finite = _all_finite(fm)
-            y = y.map_blocks(_mask_series, finite[..., None], dtype=y.dtype)
         if errors == "nan" or certificate:
             comb = _combine_status(pieces)
             if errors == "nan":
@@ -313,16 +315,10 @@ def _interp_dataarray(da, dim, new, o, certificate):
     return result, cds
 
 
-def _mask_series(y, finite):
-    return np.where(finite, y, np.array(np.nan, dtype=y.dtype))
-
-
 def _mask_failed(y, status):
-    return np.where(status == STATUS_OK, y, np.array(np.nan, dtype=y.dtype))
-
-
-def _all_finite(a):
-    return np.isfinite(a).all(axis=-1)
+    """errors='nan': a series whose fit failed is NaN (data gaps are local)."""
+    keep = (status == STATUS_OK) | np.isin(status, DATA_GAPS)
+    return np.where(keep, y, np.array(np.nan, dtype=y.dtype))
 
 
 def _is_dask(a):
@@ -373,15 +369,21 @@ _DOC = """Interpolate along one dimension with certified trigonometric splines.
         ``'nan'`` (``False``) gives NaN (as xarray's own interp), or the
         library's policies.
     skipna : bool, default ${skipna}
-        Fit each series through its finite points only (gaps); otherwise a
-        series holding NaN is NaN (as xarray's interp, which does not skip
-        missing values; skipped gaps make a dask chunking along the
-        dimension non-local).
+        ``False``: a missing value (NaN) stays local, as in xarray's own
+        interp: each series is split at its NaN points into runs of finite
+        values, each run of two or more points is a spline of its own, and
+        the new values in an interval touching a NaN point are NaN (the
+        others are the runs' values; beyond the data, the end runs
+        extrapolate only when they reach the ends).  ``True``: the spline
+        goes through the finite points, across the gaps (this makes a dask
+        chunking along the dimension non-local: one chunk).  No warning
+        either way; ``certificate=True`` reports a series with NaN as
+        status 5 (TS_ERR_NONFINITE) at its first NaN position.
     errors : {'raise', 'nan'}, default ${errors}
         Data the scheme refuses (negative values for lower=0, points
         outside the lines, ...) raise ValueError naming the series and the
         position ('raise') or give NaN for that series ('nan').  A series
-        holding NaN or fewer than two points is NaN either way.
+        with fewer than two points is NaN either way.
     certificate : bool, default False
         Also return a Dataset with per-series ``status`` (0 = certified),
         ``index`` and ``gap`` (the least certified gap), and, when computed
@@ -415,6 +417,10 @@ class TrigsplineAccessor:
         return _interp_dataarray(self._obj, dim, new, o, certificate)
 
     interp.__doc__ = _options.fill(_DOC)
+
+    def disaggregate(self, indexers=None, **kwargs):
+        from .histo_xarray import disaggregate_dataarray
+        return disaggregate_dataarray(self._obj, indexers, **kwargs)
 
 
 class TrigsplineDatasetAccessor:
@@ -452,6 +458,10 @@ class TrigsplineDatasetAccessor:
         return result
 
     interp.__doc__ = TrigsplineAccessor.interp.__doc__
+
+    def disaggregate(self, indexers=None, **kwargs):
+        from .histo_xarray import disaggregate_dataset
+        return disaggregate_dataset(self._obj, indexers, **kwargs)
 
 
 def _register():

@@ -3,7 +3,9 @@
 // wasm module, draw, fill the certificate table, write the state into the URL.
 /* global createTrigsplineCli */
 import { load, NAMES } from '../trigspline.js';
-import { exportState, cliArgs } from '../export.js';
+import { exportState, cliArgs, runCli, dataCsv, isoText } from '../export.js';
+import { numberTicks, dateTicks, niceStep } from './ticks.js';
+import { readTable } from './reader.js';
 
 const ts = await load();
 const $ = (id) => document.getElementById(id);
@@ -12,7 +14,7 @@ for (const [id, skip] of [['form', []], ['param', []], ['slopes', ['user', 'peri
   $(id).replaceChildren(...NAMES[id].filter((n) => !skip.includes(n)).map((n) => new Option(n)));
 }
 const svg = $('plot');
-const W = 760, H = 480, M = { l: 48, r: 14, t: 14, b: 30 };
+const W = 760, H = 480, M = { l: 58, r: 14, t: 14, b: 40 };
 const NS = 'http://www.w3.org/2000/svg';
 
 // The paper's Table 1 (data/paper/table1_positive.csv) as the first view.
@@ -24,6 +26,7 @@ const DEFAULT = {
   margin: ts.defaults.margin, lower: { m: 0, c: 1.45 }, upper: { m: 0, c: 2.2 },
   closed: false, param: 'centripetal', box: { on: true, xmin: -1, xmax: 31, ymin: 1.2, ymax: 2.4 },
   overlay: { cubic: true, pchip: false },
+  xTime: false, names: null, // x as dates (seconds since 1970, UTC); the data's column names
 };
 let state = readHash() ?? structuredClone(DEFAULT);
 let view = null; // {x0, x1, y0, y1}
@@ -124,6 +127,39 @@ function update() {
   timings.push({ fit: t1 - t0, plot: t2 - t1, side: t3 - t2, total: t3 - t0, n: state.points.length });
   if (timings.length > 2000) timings.splice(0, 1000);
   writeHash();
+  scheduleOvershoot();
+}
+
+// The command's overshoot warning for the current state, next to the
+// certificate: the same command line as the exports, run (after the state has
+// settled) by the command itself, its "warning:" line shown as it prints it.
+let ovSeq = 0, ovTimer = 0;
+function scheduleOvershoot() {
+  clearTimeout(ovTimer);
+  const seq = ++ovSeq, box = $('overshoot');
+  if (state.mode !== 'function' || !result.ok) {
+    box.textContent = '';
+    box.className = '';
+    box.dataset.state = 'done';
+    return;
+  }
+  // until the command has answered, the last warning is shown faded
+  box.dataset.state = 'pending';
+  box.className = 'stale';
+  const snap = structuredClone(state);
+  ovTimer = setTimeout(async () => {
+    let text = '';
+    try {
+      const r = await runCli(createTrigsplineCli, [...cliArgs(snap), '--json', '-o', 'out.json'], { 'data.csv': dataCsv(snap) });
+      const w = r.stderr.split('\n').find((l) => l.startsWith('trigspline: warning: '));
+      if (w) text = w.slice('trigspline: '.length);
+    } catch { /* the warning stays empty */ }
+    if (seq !== ovSeq) return;
+    box.textContent = text;
+    box.className = '';
+    box.dataset.state = 'done';
+    renderStatus();
+  }, dragging ? 400 : 60);
 }
 
 // ---- comparison curves (function mode) ----------------------------------------
@@ -156,6 +192,9 @@ function hermite(x, f, d, xs) {
 }
 
 // ---- drawing -------------------------------------------------------------------------
+const esc = (t) => String(t).replace(/[&<>"]/g, (c) => `&#${c.charCodeAt(0)};`);
+const timeAxis = () => state.mode === 'function' && !!state.xTime;
+const xText = (v) => (timeAxis() ? isoText(v) : fmt(v));
 const fmt = (v) => (v === null || Number.isNaN(v) ? '–' : Math.abs(v) >= 1e4 || (Math.abs(v) < 1e-3 && v !== 0) ? v.toExponential(3) : +v.toPrecision(5));
 function polyline(xs, ys) {
   let d = '';
@@ -172,7 +211,7 @@ function el(name, attrs, parent = layer) {
 // The data points are a layer of their own, rebuilt only when their number,
 // the mode or the view change (not on every frame of a drag).
 const layer = document.createElementNS(NS, 'g'), pointLayer = document.createElementNS(NS, 'g');
-let pointsKey = '';
+let pointsKey = '', focusPoint = 0, focusKey = '';
 svg.append(layer, pointLayer);
 function render() {
   drawPlot();
@@ -204,11 +243,22 @@ function drawPlot() {
   // axes
   el('line', { class: 'axis', x1: M.l, y1: H - M.b, x2: W - M.r, y2: H - M.b });
   el('line', { class: 'axis', x1: M.l, y1: M.t, x2: M.l, y2: H - M.b });
-  for (let k = 0; k <= 4; k++) {
-    const xv = view.x0 + (k / 4) * (view.x1 - view.x0), yv = view.y0 + (k / 4) * (view.y1 - view.y0);
-    el('text', { class: 'tick', x: sx(xv), y: H - M.b + 14, 'text-anchor': 'middle' }).textContent = fmt(xv);
-    el('text', { class: 'tick', x: M.l - 4, y: sy(yv) + 3, 'text-anchor': 'end' }).textContent = fmt(yv);
-  }
+  const xt = timeAxis() ? dateTicks(view.x0, view.x1, 5) : numberTicks(view.x0, view.x1, 8);
+  const yt = numberTicks(view.y0, view.y1, 8);
+  xt.values.forEach((v, k) => {
+    el('line', { class: 'grid', x1: sx(v), y1: M.t, x2: sx(v), y2: H - M.b });
+    el('line', { class: 'axis', x1: sx(v), y1: H - M.b, x2: sx(v), y2: H - M.b + 4 });
+    el('text', { class: 'tick xtick', x: sx(v), y: H - M.b + 15, 'text-anchor': 'middle', 'data-v': v }).textContent = xt.labels[k];
+  });
+  // axis titles: the data's column names
+  const names = state.mode === 'curve' ? ['x', 'y'] : state.names ?? ['x', 'f'];
+  el('text', { class: 'atitle', x: (M.l + W - M.r) / 2, y: H - 6, 'text-anchor': 'middle' }).textContent = names[0];
+  el('text', { class: 'atitle', x: 0, y: 0, 'text-anchor': 'middle', transform: `translate(13,${(M.t + H - M.b) / 2}) rotate(-90)` }).textContent = names[1];
+  yt.values.forEach((v, k) => {
+    el('line', { class: 'grid', x1: M.l, y1: sy(v), x2: W - M.r, y2: sy(v) });
+    el('line', { class: 'axis', x1: M.l - 4, y1: sy(v), x2: M.l, y2: sy(v) });
+    el('text', { class: 'tick ytick', x: M.l - 6, y: sy(v) + 3, 'text-anchor': 'end', 'data-v': v }).textContent = yt.labels[k];
+  });
   const P = state.points;
   // selected / refused interval bands
   const band = (i, cls, why) => {
@@ -260,15 +310,31 @@ function drawPlot() {
     pointsKey = key;
     pointLayer.replaceChildren();
     const r = P.length > 300 ? 2.5 : 5;
-    P.forEach((_, i) => el('circle', { class: 'pt', r, 'data-i': i }, pointLayer));
+    // one tab stop for the points (roving tabindex, keys below)
+    P.forEach((_, i) => el('circle', {
+      class: 'pt', r, 'data-i': i, tabindex: -1, role: 'button', 'aria-roledescription': 'data point', 'aria-describedby': 'kbhelp',
+    }, pointLayer));
+    focusPoint = Math.min(focusPoint, P.length - 1);
+    focusKey = '';
   }
   const circles = pointLayer.children;
+  const yName = state.mode === 'curve' ? 'y' : (state.names && state.names[1]) || 'f';
+  const xName = state.mode === 'curve' ? 'x' : (state.names && state.names[0]) || 'x';
+  const labelled = focusKey === key;
   P.forEach(([x, y], i) => {
     const c = circles[i], cx = sx(x).toFixed(2), cy = sy(y).toFixed(2), cls = i === badPoint ? 'pt bad' : 'pt';
     if (c.getAttribute('cx') !== cx) c.setAttribute('cx', cx);
     if (c.getAttribute('cy') !== cy) c.setAttribute('cy', cy);
     if (c.getAttribute('class') !== cls) c.setAttribute('class', cls);
+    const ti = i === focusPoint ? '0' : '-1';
+    if (c.getAttribute('tabindex') !== ti) c.setAttribute('tabindex', ti);
+    // labels: all when the points are new, else only those that moved
+    if (!labelled || c.dataset.at !== `${x},${y}`) {
+      c.dataset.at = `${x},${y}`;
+      c.setAttribute('aria-label', `point ${i + 1} of ${P.length}: ${xName} = ${xText(x)}, ${yName} = ${fmt(y)}${i === badPoint ? ' (refused)' : ''}`);
+    }
   });
+  focusKey = key;
 }
 
 function renderStatus() {
@@ -279,7 +345,7 @@ function renderStatus() {
     st.textContent = `Refused: ${e.message}`;
     return;
   }
-  st.className = 'ok';
+  st.className = state.mode === 'function' && $('overshoot').textContent ? 'ok warn' : 'ok';
   const n = result.rows.length, cert = result.rows.filter((r) => r.certified).length;
   st.textContent = state.mode === 'function'
     ? (state.scheme === 'none' ? `${n} intervals, no region (scheme none)` : `${cert} of ${n} intervals certified inside the region`)
@@ -295,7 +361,7 @@ function renderTable() {
   if (state.mode === 'function') {
     html = '<tr><th>i</th><th>x₀</th><th>x₁</th><th>α</th><th>β</th><th>term</th><th>gap lower</th><th>gap upper</th><th>✓</th></tr>';
     rows.slice(0, MAXROWS).forEach((r, i) => {
-      html += `<tr data-interval="${i}" class="${i === selected ? 'sel' : ''}${r.certified || state.scheme === 'none' ? '' : ' fail'}"><td>${i}</td><td>${fmt(r.x0)}</td><td>${fmt(r.x1)}</td><td>${fmt(r.alpha)}</td><td>${fmt(r.beta)}</td><td>${r.term}</td><td>${fmt(r.gapLower)}</td><td>${fmt(r.gapUpper)}</td><td>${state.scheme === 'none' ? '' : r.certified ? '✓' : '✗'}</td></tr>`;
+      html += `<tr data-interval="${i}" class="${i === selected ? 'sel' : ''}${r.certified || state.scheme === 'none' ? '' : ' fail'}"><td>${i}</td><td>${xText(r.x0)}</td><td>${xText(r.x1)}</td><td>${fmt(r.alpha)}</td><td>${fmt(r.beta)}</td><td>${r.term}</td><td>${fmt(r.gapLower)}</td><td>${fmt(r.gapUpper)}</td><td>${state.scheme === 'none' ? '' : r.certified ? '✓' : '✗'}</td></tr>`;
     });
   } else {
     html = '<tr><th>seg</th><th>coord</th><th>α</th><th>β</th><th>gap low</th><th>gap high</th><th>✓</th></tr>';
@@ -312,10 +378,12 @@ function renderData() {
   const P = state.points, key = `${state.mode}:${P.length}`;
   if (dragging && dataShown === key) return; // the table is rebuilt when the drag ends
   dataShown = key;
-  const head = state.mode === 'curve' ? ['x', 'y'] : ['x', 'f'];
+  const head = state.mode === 'curve' ? ['x', 'y'] : (state.names ?? ['x', 'f']);
+  const xin = timeAxis() ? (p, i) => `<input type="text" size="22" data-row="${i}" data-col="0" value="${isoText(p[0])}" aria-label="${esc(head[0])} of point ${i + 1}">`
+    : (p, i) => `<input type="number" step="any" data-row="${i}" data-col="0" value="${p[0]}" aria-label="${esc(head[0])} of point ${i + 1}">`;
   $('datatable').innerHTML = P.length > 200 ? `<tr><td>${P.length} points: edit them as CSV below</td></tr>`
-    : `<tr><th>#</th><th>${head[0]}</th><th>${head[1]}</th></tr>${P.map((p, i) => `<tr><td>${i}</td><td><input type="number" step="any" data-row="${i}" data-col="0" value="${p[0]}"></td><td><input type="number" step="any" data-row="${i}" data-col="1" value="${p[1]}"></td></tr>`).join('')}`;
-  if (document.activeElement !== $('csv')) $('csv').value = `${head.join(',')}\n${P.map((p) => p.join(',')).join('\n')}\n`;
+    : `<tr><th>#</th><th>${esc(head[0])}</th><th>${esc(head[1])}</th></tr>${P.map((p, i) => `<tr><td>${i}</td><td>${xin(p, i)}</td><td><input type="number" step="any" data-row="${i}" data-col="1" value="${p[1]}" aria-label="${esc(head[1])} of point ${i + 1}"></td></tr>`).join('')}`;
+  if (document.activeElement !== $('csv')) $('csv').value = dataCsv(state);
 }
 
 function syncControls() {
@@ -342,7 +410,10 @@ function syncControls() {
 let dragging = null;
 svg.addEventListener('pointerdown', (ev) => {
   const t = ev.target;
-  if (t.dataset.i !== undefined) dragging = { kind: 'point', i: +t.dataset.i };
+  if (t.dataset.i !== undefined) {
+    dragging = { kind: 'point', i: +t.dataset.i };
+    focusOn(+t.dataset.i, false);
+  }
   else if (t.dataset.line !== undefined) dragging = { kind: 'line', which: t.dataset.line, end: +t.dataset.end };
   else if (t.dataset.corner !== undefined) dragging = { kind: 'corner', which: t.dataset.corner };
   else if (t.dataset.interval !== undefined) { selected = +t.dataset.interval; render(); return; }
@@ -448,27 +519,152 @@ on('cert', 'click', (ev) => {
 });
 on('datatable', 'change', (ev) => {
   const t = ev.target;
-  if (t.dataset.row === undefined || !Number.isFinite(+t.value) || t.value === '') return;
-  state.points[+t.dataset.row][+t.dataset.col] = +t.value;
+  if (t.dataset.row === undefined) return;
+  // a date as the command reads it: no zone means UTC
+  const v = timeAxis() && t.dataset.col === '0'
+    ? Date.parse(/[zZ]|[+-]\d\d:?\d\d$/.test(t.value) || !t.value.includes('T') ? t.value : `${t.value}Z`) / 1000 : +t.value;
+  if (!Number.isFinite(v) || t.value === '') return;
+  state.points[+t.dataset.row][+t.dataset.col] = v;
   update();
 });
-// CSV: header and # comments skipped; separators comma, semicolon, tab or blanks
-export function parseCsv(text) {
-  const P = [];
-  for (const raw of text.split(/\r?\n/)) {
-    const line = raw.replace(/#.*/, '').trim();
-    if (!line) continue;
-    const v = line.split(/[,;\t ]+/).map(Number);
-    if (v.length >= 2 && v.slice(0, 2).every(Number.isFinite)) P.push([v[0], v[1]]);
-  }
-  return P;
+// ---- keyboard: the points (WCAG 2.1.1) -----------------------------------------------------
+// One tab stop (the last point focused); arrows move it by a tenth of a tick
+// step (Shift: a tick step), Page Up/Down and Home/End pick another point,
+// Delete removes it.
+function focusOn(k, focus = true) {
+  const C = pointLayer.children;
+  if (!C.length) return;
+  focusPoint = Math.max(0, Math.min(k, C.length - 1));
+  for (let j = 0; j < C.length; j++) C[j].setAttribute('tabindex', j === focusPoint ? '0' : '-1');
+  if (focus) C[focusPoint].focus();
 }
-on('apply', 'click', () => {
-  const P = parseCsv($('csv').value);
-  if (P.length < 2) { $('status').className = 'bad'; $('status').textContent = 'CSV: at least two rows of two numbers are needed'; return; }
-  state.points = P; state.alphas = null; selected = null;
-  fitView(); update();
+pointLayer.addEventListener('focusin', (ev) => {
+  if (ev.target.dataset.i !== undefined && +ev.target.dataset.i !== focusPoint) focusOn(+ev.target.dataset.i, false);
 });
+pointLayer.addEventListener('keydown', (ev) => {
+  const t = ev.target;
+  if (t.dataset.i === undefined || ev.altKey || ev.ctrlKey || ev.metaKey) return;
+  const i = +t.dataset.i, P = state.points, f = ev.shiftKey ? 10 : 1;
+  const dx = (f * niceStep(view.x0, view.x1, 8)) / 10, dy = (f * niceStep(view.y0, view.y1, 8)) / 10;
+  const round = (v) => +v.toPrecision(12);
+  const moves = { ArrowLeft: [-dx, 0], ArrowRight: [dx, 0], ArrowUp: [0, dy], ArrowDown: [0, -dy] };
+  const goes = { PageUp: i - 1, PageDown: i + 1, Home: 0, End: P.length - 1 };
+  if (moves[ev.key]) {
+    const [mx, my] = moves[ev.key];
+    moveTo({ kind: 'point', i }, round(P[i][0] + mx), round(P[i][1] + my));
+    dataShown = '';
+    renderData();
+  } else if (goes[ev.key] !== undefined) {
+    focusOn(goes[ev.key]);
+  } else if (ev.key === 'Delete' || ev.key === 'Backspace') {
+    if (P.length <= 2) return;
+    P.splice(i, 1);
+    state.alphas = null;
+    update();
+    focusOn(Math.min(i, P.length - 1));
+  } else {
+    return;
+  }
+  ev.preventDefault();
+});
+
+// ---- reading data: the command's own reader (reader.js) ---------------------------------------
+function readOptions() {
+  return {
+    delimiter: $('rdelim').value, decimal: $('rdecimal').value, na: $('rna').value.trim(),
+    missing: $('rmissing').value, columns: $('rcolumns').value.trim(), xTime: $('rxtime').checked,
+  };
+}
+let source = null; // {text, name}: what was read last (read again when an option changes)
+// Read text (the contents of a file called name) as `trigspline` does; when
+// it accepts it, it becomes the data.  The report names the rows skipped.
+let readPromise = Promise.resolve();
+function readData(text, name) {
+  readPromise = readInto(text, name);
+  return readPromise;
+}
+async function readInto(text, name) {
+  source = { text, name };
+  const rep = $('readreport');
+  rep.className = '';
+  rep.textContent = `reading ${name} …`;
+  let r;
+  try {
+    r = await readTable(createTrigsplineCli, text, name, readOptions(), state.mode);
+  } catch (e) {
+    r = { ok: false, message: String((e && e.message) || e), notes: [], command: '' };
+  }
+  const notes = r.notes.length ? `<ul>${r.notes.map((n) => `<li>${esc(n)}</li>`).join('')}</ul>` : '';
+  const cmd = r.command ? `<div id="readcmd">read as: ${esc(r.command)}</div>` : '';
+  if (!r.ok) {
+    rep.className = 'bad';
+    rep.innerHTML = `${esc(r.message)}${notes}${cmd}`;
+    const st = $('status');
+    st.className = 'bad';
+    st.textContent = `Not read: ${r.message.split('\n')[0]}`;
+    return;
+  }
+  $('overshoot').textContent = ''; // about other data
+  state.points = r.points;
+  state.xTime = r.xTime;
+  state.names = r.names;
+  state.alphas = null;
+  selected = null;
+  focusPoint = 0;
+  if (state.mode === 'curve' && state.box.on) {
+    // a box around the new points (10 % of their extent beyond them), which the user then drags
+    const X = r.points.map((q) => q[0]), Y = r.points.map((q) => q[1]);
+    const [x0, x1, y0, y1] = [Math.min(...X), Math.max(...X), Math.min(...Y), Math.max(...Y)];
+    const dx = 0.1 * (x1 - x0 || 1), dy = 0.1 * (y1 - y0 || 1);
+    state.box = { on: true, xmin: x0 - dx, xmax: x1 + dx, ymin: y0 - dy, ymax: y1 + dy };
+  }
+  const cols = r.names ? ` (columns ${r.names.map((n) => esc(JSON.stringify(n))).join(' and ')}${r.xTime ? '; x as dates' : ''})` : '';
+  const skipped = r.skipped ? `; ${r.skipped} row${r.skipped === 1 ? '' : 's'} with a missing value skipped` : '';
+  const lines = r.report.length ? `<ul>${r.report.map((l) => `<li>${esc(l)}</li>`).join('')}</ul>` : '';
+  rep.innerHTML = `Read ${r.points.length} points from ${esc(name)}${cols}${skipped}.${lines}${notes}${cmd}`;
+  fitView();
+  update();
+}
+on('apply', 'click', () => readData($('csv').value, 'pasted.csv'));
+function pasted(ev) {
+  const t = ev.clipboardData && ev.clipboardData.getData('text/plain');
+  if (!t) return;
+  ev.preventDefault();
+  $('csv').value = t;
+  readData(t, 'pasted.csv');
+}
+on('csv', 'paste', pasted);
+document.addEventListener('paste', (ev) => {
+  if (ev.target !== $('csv') && !(ev.target.closest && ev.target.closest('input, textarea, select'))) pasted(ev);
+});
+on('file', 'change', async () => {
+  const f = $('file').files[0];
+  if (!f) return;
+  const t = await f.text();
+  $('csv').value = t;
+  readData(t, f.name);
+});
+const carries = (ev) => ev.dataTransfer && [...ev.dataTransfer.types].some((k) => k === 'Files' || k === 'text/plain');
+document.addEventListener('dragover', (ev) => {
+  if (!carries(ev)) return;
+  ev.preventDefault();
+  document.body.classList.add('dragover');
+});
+document.addEventListener('dragleave', (ev) => { if (!ev.relatedTarget) document.body.classList.remove('dragover'); });
+document.addEventListener('drop', (ev) => {
+  document.body.classList.remove('dragover');
+  if (!carries(ev)) return;
+  ev.preventDefault();
+  const f = ev.dataTransfer.files[0];
+  if (f) {
+    f.text().then((t) => { $('csv').value = t; readData(t, f.name); });
+  } else {
+    const t = ev.dataTransfer.getData('text/plain');
+    $('csv').value = t;
+    readData(t, 'dropped.csv');
+  }
+});
+for (const id of ['rdelim', 'rdecimal', 'rmissing', 'rna', 'rcolumns', 'rxtime']) on(id, 'change', () => { if (source) readData(source.text, source.name); });
 document.querySelectorAll('button[data-export]').forEach((b) => b.addEventListener('click', async () => {
   try {
     const r = await exportState(createTrigsplineCli, state, b.dataset.export);
@@ -488,8 +684,9 @@ document.querySelectorAll('button[data-export]').forEach((b) => b.addEventListen
 window.explorer = {
   ts,
   get state() { return state; },
-  set(s) { state = { ...structuredClone(DEFAULT), ...s }; selected = null; fitView(); update(); },
+  set(s) { state = { ...structuredClone(DEFAULT), ...s }; selected = null; $('overshoot').textContent = ''; fitView(); update(); },
   get result() { return result; },
+  get reading() { return readPromise; }, // the last read of pasted or dropped data
   timings,
   toScreen: (x, y) => { const r = svg.getBoundingClientRect(); return [r.left + sx(x) * r.width / W, r.top + sy(y) * r.height / H]; },
   moveTo,

@@ -1,0 +1,2 @@
+# Empty dependencies file for gsl_eval.
+# This may be replaced when dependencies are built.

@@ -1,0 +1,2 @@
+# Empty dependencies file for test_gsl_steffen.
+# This may be replaced when dependencies are built.

@@ -1,0 +1,3 @@
+file(REMOVE_RECURSE
+  "libtrigspline_cli_lib.a"
+)

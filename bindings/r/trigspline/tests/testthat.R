@@ -1,0 +1,3 @@
+library(testthat)
+library(trigspline)
+test_check("trigspline")

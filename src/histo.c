@@ -1,0 +1,783 @@
+/* docs/method.md §12: a rate from bin totals.  Four cubic trigonometric
+ * pieces per bin (knots at the edges and the quarter points), C¹
+ * everywhere and C² where the bounds allow, each bin's integral its total,
+ * lo <= r <= hi proved by the control values (§12.3–§12.5). */
+#include "internal.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* §12.2: a piece's mean is W0 (B0 + B3) + W1 (B1 + B2) */
+#define HW1 0.33427249868113159128 /* 22/(3π) − 2 */
+#define HW0 0.16572750131886840872 /* 5/2 − 22/(3π) */
+/* §12.4: limits scaled by this keep every rounded control value inside */
+#define HSHRINK (1.0 - 8.0 * DBL_EPSILON)
+/* §12.6: the largest |mean − lo| accepted (control values stay below
+ * 6 times it, TS_VALUE_MAX) */
+#define HMEAN_MAX 0x1p1019
+#define HP 4          /* pieces per bin */
+#define HB (4 * HP)   /* control values per bin */
+
+struct ts_histo {
+    size_t n;
+    double lo, hi, H; /* H = hi − lo (+inf without an upper bound) */
+    double *e;        /* n + 1 edges */
+    double *B;        /* HB per bin: the HP pieces' control values minus lo */
+    double *tot;      /* n: ∫ r over the bin from the pieces (lo included) */
+};
+
+static void options_defaults(ts_histo_options *opt)
+{
+    memset(opt, 0, sizeof *opt);
+    opt->struct_size = sizeof *opt;
+    opt->alpha = TS_DEFAULT_ALPHA;
+    opt->lo = 0.0;
+    opt->hi = HUGE_VAL;
+}
+
+static void release(ts_histo *h);
+
+void ts_histo_options_init(ts_histo_options *opt)
+{
+    if (opt)
+        options_defaults(opt);
+}
+
+/* The bin's mean minus lo; within 4 ulps of a bound it is taken on it
+ * (totals formed as lo·w or hi·w, §12.6). */
+static double rho_of(const double *e, const double *T, size_t j, double lo, double hi)
+{
+    double m = T[j] / (e[j + 1] - e[j]), r = m - lo, H = hi - lo;
+    double tl = 4.0 * DBL_EPSILON * fmax(fabs(m), fabs(lo));
+    double th = 4.0 * DBL_EPSILON * fmax(fabs(m), fabs(hi));
+    r = (r < 0.0 && r >= -tl) ? 0.0 : r;
+    return (r > H && r <= H + th) ? H : r;
+}
+
+/* §12.4: the value at an inner edge between bins of means (minus lo) p, q,
+ * and whether the bounds leave it no room (*bad). */
+static double edge_value(double p, double q, double H, int *bad)
+{
+    double mn = p < q ? p : q, mx = p < q ? q : p;
+    double ub = 2.0 * mn, lb = 2.0 * mx - H;
+    ub = ub < H ? ub : H;
+    lb = lb > 0.0 ? lb : 0.0;
+    *bad = lb > ub;
+    double y = mn > 0.0 ? 2.0 * mn * (mx / (mn + mx)) : 0.0; /* harmonic mean */
+    y = y < lb ? lb : y;
+    return y > ub ? ub : y;
+}
+
+static void set_status(ts_status *st, size_t j, ts_status s)
+{
+    if (st && st[j] == TS_OK)
+        st[j] = s;
+}
+
+/* The checks of ts_histo_new in their order; st (may be NULL) per bin. */
+static ts_status analyse(const double *e, const double *T, size_t n, const ts_histo_options *o,
+                         ts_status *st, double *rho, ts_error *err)
+{
+    ts_status first = TS_OK;
+    size_t fi = TS_NO_INDEX;
+    ts_where fw = TS_WHERE_NONE;
+#define HFAIL(S, I, W)                                                                   \
+    do {                                                                                 \
+        if (first == TS_OK) {                                                            \
+            first = (S);                                                                 \
+            fi = (I);                                                                    \
+            fw = (W);                                                                    \
+        }                                                                                \
+    } while (0)
+    if (st)
+        for (size_t j = 0; j < n; j++)
+            st[j] = TS_OK;
+    int edges_ok = 1;
+    for (size_t i = 0; i <= n; i++) {
+        ts_status s = TS_OK;
+        if (!isfinite(e[i]))
+            s = TS_ERR_NONFINITE;
+        else if (i > 0 && isfinite(e[i - 1])) {
+            double w = e[i] - e[i - 1];
+            if (!(e[i] > e[i - 1]))
+                s = TS_ERR_UNSORTED;
+            else if (!(DBL_MIN <= w && w <= DBL_MAX))
+                s = TS_ERR_WIDTH;
+        }
+        if (s != TS_OK) {
+            edges_ok = 0;
+            HFAIL(s, i, TS_WHERE_POINT);
+            if (i > 0)
+                set_status(st, i - 1, s);
+            if (i < n)
+                set_status(st, i, s);
+        }
+    }
+    int plain = o->lo == 0.0 && o->hi == HUGE_VAL;
+    double H = o->hi - o->lo;
+    for (size_t j = 0; j < n && edges_ok; j++) {
+        ts_status s = TS_OK;
+        double r = isfinite(T[j]) ? rho_of(e, T, j, o->lo, o->hi) : (double)NAN;
+        if (rho)
+            rho[j] = r;
+        if (!isfinite(T[j]))
+            s = TS_ERR_NONFINITE;
+        else if (!(fabs(r) <= HMEAN_MAX))
+            s = TS_ERR_TOO_LARGE;
+        else if (!(0.0 <= r && r <= H))
+            s = plain ? TS_ERR_NEGATIVE : TS_ERR_INFEASIBLE;
+        if (s != TS_OK) {
+            HFAIL(s, j, TS_WHERE_INTERVAL);
+            set_status(st, j, s);
+        }
+    }
+    /* §12.4: neighbours the scheme cannot join (only with an upper bound) */
+    for (size_t j = 1; j < n && edges_ok && first == TS_OK && H < HUGE_VAL; j++) {
+        int bad;
+        (void)edge_value(rho_of(e, T, j - 1, o->lo, o->hi), rho_of(e, T, j, o->lo, o->hi), H, &bad);
+        if (bad) {
+            HFAIL(TS_ERR_INFEASIBLE, j - 1, TS_WHERE_INTERVAL);
+            set_status(st, j - 1, TS_ERR_INFEASIBLE);
+            set_status(st, j, TS_ERR_INFEASIBLE);
+        }
+    }
+    /* later bins' infeasible edges for the per-bin status as well */
+    for (size_t j = 1; j < n && edges_ok && st && first != TS_OK && H < HUGE_VAL; j++) {
+        double p = rho_of(e, T, j - 1, o->lo, o->hi), q = rho_of(e, T, j, o->lo, o->hi);
+        int bad;
+        if (!(0.0 <= p && p <= H && 0.0 <= q && q <= H))
+            continue;
+        (void)edge_value(p, q, H, &bad);
+        if (bad) {
+            set_status(st, j - 1, TS_ERR_INFEASIBLE);
+            set_status(st, j, TS_ERR_INFEASIBLE);
+        }
+    }
+#undef HFAIL
+    if (first != TS_OK)
+        return ts__fail(err, first, fi, fw);
+    return TS_OK;
+}
+
+/* Arguments and options, shared by ts_histo_new and ts_histo_check. */
+static ts_status check_args(const double *edges, const double *totals, size_t n_bins,
+                            const ts_histo_options *opt, ts_histo_options *o, ts_error *err)
+{
+    if (!edges || !totals)
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    if (opt && opt->struct_size != sizeof *opt)
+        return ts__fail(err, TS_ERR_VERSION, TS_NO_INDEX, TS_WHERE_NONE);
+    if (opt)
+        *o = *opt;
+    else
+        options_defaults(o);
+    if (n_bins == 0)
+        return ts__fail(err, TS_ERR_TOO_FEW, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!ts__alpha_ok(o->alpha))
+        return ts__fail(err, TS_ERR_ALPHA, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!(fabs(o->lo) <= HMEAN_MAX) || !(o->lo < o->hi) || !(o->hi - o->lo > 0.0))
+        return ts__fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
+    return TS_OK;
+}
+
+ts_status ts_histo_check(const double *edges, const double *totals, size_t n_bins,
+                         const ts_histo_options *opt, ts_status *status, ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    ts_histo_options o;
+    ts_status s = check_args(edges, totals, n_bins, opt, &o, err);
+    if (s != TS_OK)
+        return s;
+    return analyse(edges, totals, n_bins, &o, status, NULL, err);
+}
+
+/* §12.3: the inverse of the matrix of (12.3) times 2400 (exact: its
+ * determinant is −2400); rows Y1, Y2, Y3, E1, E2, E3, columns the
+ * right-hand sides (integral, C² at the three inner knots, r'' at the
+ * left and right edges). */
+static const double HINV[6][6] = {
+    {240, 280, -40, 40, 1100, -140},  {1920, -240, 0, 240, -960, -960},
+    {240, -40, 40, -280, -140, 1100}, {240, 280, -40, 40, -100, -140},
+    {0, -80, 320, -80, -160, 160},    {-240, 40, -40, 280, 140, 100}};
+
+/* The control values of a bin from its knot values Y[0..4] and scaled
+ * slopes E = K_q·slope (§12.3). */
+static void controls(const double *Y, const double *E, double *B)
+{
+    for (int k = 0; k < HP; k++) {
+        B[4 * k] = Y[k];
+        B[4 * k + 1] = Y[k] + E[k];
+        B[4 * k + 2] = Y[k + 1] - E[k + 1];
+        B[4 * k + 3] = Y[k + 1];
+    }
+}
+
+static int inside(const double *B, double H)
+{
+    int ok = 1;
+    for (int l = 0; l < HB; l++)
+        ok &= (0.0 <= B[l]) & (B[l] <= H);
+    return ok;
+}
+
+/* §12.3: bin j from its edge values y, edge slopes sg: the C² solution X
+ * of (12.3) blended with the flat solution Z by the largest λ in [0, 1]
+ * that keeps every control value in [0, H]; flat: λ = 0. */
+static int build_bin(ts_histo *h, size_t j, double rho, const double *y, const double *sg, int flat)
+{
+    double *B = h->B + HB * j;
+    if (rho == 0.0 && y[j] == 0.0 && y[j + 1] == 0.0 && sg[j] == 0.0 && sg[j + 1] == 0.0) {
+        for (int l = 0; l < HB; l++) /* a dry bin (§12.4): X = Z = 0 */
+            B[l] = 0.0;
+        return 1;
+    }
+    double w = h->e[j + 1] - h->e[j], Kq = w / (6.0 * TS_PI), H = h->H;
+    double Y0 = y[j], Y4 = y[j + 1], E0 = Kq * sg[j], E4 = Kq * sg[j + 1];
+    /* (12.3) with r'' = 0 at the edges */
+    double b[6] = {4.0 * rho - 0.5 * (Y0 + Y4) - HW1 * (E0 - E4), -Y0 - E0, 0.0, Y4 - E4,
+                   2.0 * Y0 + 8.0 * E0, 2.0 * Y4 - 8.0 * E4};
+    double zv = b[0] / 3.0;
+    zv = zv > 0.0 ? zv : 0.0;
+    zv = zv < H ? zv : H;
+    double YZ[5] = {Y0, zv, zv, zv, Y4}, EZ[5] = {E0, 0.0, 0.0, 0.0, E4};
+    double YX[5] = {Y0, 0, 0, 0, Y4}, EX[5] = {E0, 0, 0, 0, E4};
+    for (int i = 0; i < 3; i++) {
+        double sy = 0.0, se = 0.0;
+        for (int k = 0; k < 6; k++) {
+            sy += HINV[i][k] * b[k];
+            se += HINV[i + 3][k] * b[k];
+        }
+        YX[i + 1] = sy / 2400.0;
+        EX[i + 1] = se / 2400.0;
+    }
+    double BZ[HB], BX[HB];
+    controls(YZ, EZ, BZ);
+    controls(YX, EX, BX);
+    double lam = flat ? 0.0 : 1.0;
+    for (int l = 0; l < HB; l++) {
+        double z = BZ[l], x = BX[l];
+        if (!isfinite(x))
+            lam = 0.0;
+        else if (x < 0.0)
+            lam = fmin(lam, z / (z - x));
+        else if (x > H)
+            lam = fmin(lam, (H - z) / (x - z));
+    }
+    /* the control values are linear in the knot data: blend them directly
+     * (the edge ones are the same in X and Z, so they stay exact) */
+    if (lam == 1.0) {
+        memcpy(B, BX, sizeof BX);
+    } else {
+        lam = lam > 0.0 ? lam * HSHRINK : 0.0;
+        for (int l = 0; l < HB; l++)
+            B[l] = BZ[l] + lam * (BX[l] - BZ[l]);
+    }
+    if (inside(B, H))
+        return 1;
+    memcpy(B, BZ, sizeof BZ);
+    return inside(B, H);
+}
+
+static int bin_inside(const ts_histo *h, size_t j)
+{
+    return inside(h->B + HB * j, h->H);
+}
+
+/* §12.2: ∫ of a piece of width hh over its whole width */
+static double piece_total(const double *P, double hh)
+{
+    return hh * (HW0 * (P[0] + P[3]) + HW1 * (P[1] + P[2]));
+}
+
+ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
+                       const ts_histo_options *opt, ts_histo **out, ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (out)
+        *out = NULL;
+    if (!out)
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    ts_histo_options o;
+    ts_status st = check_args(edges, totals, n_bins, opt, &o, err);
+    if (st != TS_OK)
+        return st;
+    /* doubles: e (n+1), B (HB n), tot (n), y (n+1), sg (n+1), rho (n); flags n */
+    if (n_bins > (SIZE_MAX / sizeof(double) - 3) / (HB + 4))
+        return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
+    size_t n = n_bins;
+    ts_histo *h = ts__calloc(1, sizeof *h);
+    double *work = ts__malloc((3 * n + 2) * sizeof(double));
+    unsigned char *zs = ts__calloc(n, 1);
+    if (h)
+        h->e = ts__malloc(((HB + 2) * n + 1) * sizeof(double));
+    if (!h || !h->e || !work || !zs) {
+        free(work);
+        free(zs);
+        release(h);
+        return ts__fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
+    }
+    double *y = work, *sg = work + (n + 1), *rho = work + 2 * (n + 1);
+    st = analyse(edges, totals, n_bins, &o, NULL, rho, err);
+    if (st != TS_OK) {
+        free(work);
+        free(zs);
+        release(h);
+        return st;
+    }
+    h->n = n;
+    h->lo = o.lo;
+    h->hi = o.hi;
+    h->H = o.hi - o.lo;
+    h->B = h->e + (n + 1);
+    h->tot = h->B + HB * n;
+    memcpy(h->e, edges, (n + 1) * sizeof(double));
+    /* §12.4: edge values, then the room each bin leaves for its edge slopes */
+    y[0] = rho[0];
+    y[n] = rho[n - 1];
+    for (size_t j = 1; j < n; j++) {
+        int bad;
+        y[j] = edge_value(rho[j - 1], rho[j], h->H, &bad);
+    }
+    /* slack of bin j: min(2ρ − (yl + yr)/2, H − 2ρ + (yl + yr)/2) >= 0 */
+    sg[0] = sg[n] = 0.0;
+    for (size_t j = 1; j < n; j++) {
+        if (y[j] == 0.0 || y[j] == h->H) { /* the slope limit is 0 (§12.4) */
+            sg[j] = 0.0;
+            continue;
+        }
+        double wl = edges[j] - edges[j - 1], wr = edges[j + 1] - edges[j];
+        double Kl = wl / (3.0 * TS_PI), Kr = wr / (3.0 * TS_PI);
+        double room = y[j] < h->H - y[j] ? y[j] : h->H - y[j];
+        double L = room / (Kl > Kr ? Kl : Kr);
+        for (int side = 0; side < 2; side++) {
+            size_t b = j - 1 + (size_t)side;
+            double m = 0.5 * (y[b] + y[b + 1]);
+            double sl = 2.0 * rho[b] - m, sh = h->H - 2.0 * rho[b] + m;
+            double slack = sl < sh ? sl : sh;
+            double Lb = slack / (4.0 * HW1 * (side ? Kr : Kl));
+            L = Lb < L ? Lb : L;
+        }
+        L *= HSHRINK;
+        double d = (rho[j] - rho[j - 1]) / (0.5 * (wl + wr)) / o.alpha;
+        d = d < L ? d : L;
+        d = d > -L ? d : -L;
+        sg[j] = isfinite(d) ? d : 0.0;
+    }
+    int bad = 0;
+    for (size_t j = 0; j < n; j++)
+        bad |= !build_bin(h, j, rho[j], y, sg, 0);
+    /* rounding (subnormal widths) may leave a control value outside by an
+     * ulp: such a bin's slopes become 0, its neighbours rebuilt (§12.6) */
+    for (int changed = bad; changed;) {
+        changed = 0;
+        for (size_t j = 0; j < n; j++) {
+            if (bin_inside(h, j))
+                continue;
+            changed = !(sg[j] == 0.0 && sg[j + 1] == 0.0 && zs[j]);
+            sg[j] = sg[j + 1] = 0.0;
+            zs[j] = 1;
+            for (size_t k = j > 0 ? j - 1 : 0; k <= j + 1 && k < n; k++)
+                (void)build_bin(h, k, rho[k], y, sg, zs[k]);
+            if (changed)
+                break;
+        }
+    }
+    free(work);
+    free(zs);
+    for (size_t j = 0; j < n; j++) {
+        double q = 0.25 * (edges[j + 1] - edges[j]), t = 0.0;
+        for (int k = 0; k < HP; k++)
+            t += piece_total(h->B + HB * j + 4 * k, q);
+        h->tot[j] = t + o.lo * (edges[j + 1] - edges[j]);
+        if (!isfinite(h->tot[j])) {
+            release(h);
+            return ts__fail(err, TS_ERR_TOO_LARGE, j, TS_WHERE_INTERVAL);
+        }
+    }
+    *out = h;
+    return TS_OK;
+}
+
+static void release(ts_histo *h)
+{
+    if (!h)
+        return;
+    free(h->e);
+    free(h);
+}
+
+void ts_histo_free(ts_histo *h)
+{
+    release(h);
+}
+
+size_t ts_histo_bins(const ts_histo *h)
+{
+    return h ? h->n : 0;
+}
+
+/* The bin holding x (x in [e_0, e_n]); the last bin holds e_n. */
+static size_t find_bin(const ts_histo *h, double x)
+{
+    return ts__search(h->e, h->n, x, NULL);
+}
+
+/* The piece of bin j holding x, its distance from the piece's nearer end
+ * and whether that is its right end (§12.5). */
+static const double *locate_piece(const ts_histo *h, size_t j, double x, double *dist, int *rev)
+{
+    double e0 = h->e[j], e1 = h->e[j + 1], q = 0.25 * (e1 - e0);
+    double dl = x - e0, dre = e1 - x, dL, dR;
+    int k;
+    if (dl <= dre) {
+        k = dl > q ? 1 : 0;
+        dL = dl - k * q;
+        dR = (k + 1) * q - dl;
+    } else {
+        int kr = dre > q ? 1 : 0;
+        k = HP - 1 - kr;
+        dR = dre - kr * q;
+        dL = (kr + 1) * q - dre;
+    }
+    *rev = dL > dR;
+    double d = *rev ? dR : dL;
+    *dist = d > 0.0 ? d : 0.0;
+    return h->B + HB * j + 4 * k;
+}
+
+/* §12.5: r − lo and dr/dx at x in bin j. */
+static void eval_in(const ts_histo *h, size_t j, double x, double *r, double *dr)
+{
+    double q = 0.25 * (h->e[j + 1] - h->e[j]), dist;
+    int rev;
+    const double *P = locate_piece(h, j, x, &dist, &rev);
+    double Q[4];
+    for (int l = 0; l < 4; l++)
+        Q[l] = rev ? P[3 - l] : P[l];
+    double u = TS_HALF_PI * (dist / q), s, c, ms, mc;
+    ts__sincos_q(u, &s, &c, &ms, &mc);
+    /* every factor >= 0: the sum of non-negative terms is >= 0 exactly */
+    double A0 = ms * ms * ms, A1 = s * ms * (3.0 - s), A2 = c * mc * (3.0 - c), A3 = mc * mc * mc;
+    *r = A0 * Q[0] + A1 * Q[1] + A2 * Q[2] + A3 * Q[3];
+    if (dr) {
+        double d = 3.0 * ms * ms * c * (Q[1] - Q[0]) + 2.0 * s * c * (Q[2] - Q[1]) +
+                   3.0 * mc * mc * s * (Q[3] - Q[2]);
+        d *= TS_HALF_PI / q;
+        *dr = rev ? -d : d;
+    }
+}
+
+static double clamp_rate(const ts_histo *h, double rr)
+{
+    double v = h->lo + rr;
+    return v < h->hi ? v : h->hi;
+}
+
+ts_status ts_histo_eval(const ts_histo *h, double x, double *r, double *dr)
+{
+    if (r)
+        *r = (double)NAN;
+    if (dr)
+        *dr = (double)NAN;
+    if (!h || !r)
+        return TS_ERR_NULL;
+    if (!(h->e[0] <= x && x <= h->e[h->n]))
+        return TS_ERR_DOMAIN;
+    double rr;
+    eval_in(h, find_bin(h, x), x, &rr, dr);
+    *r = clamp_rate(h, rr);
+    return TS_OK;
+}
+
+ts_status ts_histo_eval_batch(const ts_histo *h, const double *x, size_t m, double *r, double *dr,
+                              ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    for (size_t k = 0; r && k < m; k++) {
+        r[k] = (double)NAN;
+        if (dr)
+            dr[k] = (double)NAN;
+    }
+    if (!h || (m > 0 && (!x || !r)))
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    ts_cursor cur = {0};
+    for (size_t k = 0; k < m; k++) {
+        if (!(h->e[0] <= x[k] && x[k] <= h->e[h->n]))
+            return ts__fail(err, TS_ERR_DOMAIN, k, TS_WHERE_QUERY);
+        double rr;
+        eval_in(h, ts__search(h->e, h->n, x[k], &cur), x[k], &rr, dr ? dr + k : NULL);
+        r[k] = clamp_rate(h, rr);
+    }
+    return TS_OK;
+}
+
+/* ∫_0^θ A_l for θ in [0, π/4] (ts__basis_int with the kernels' sine and
+ * cosine, ts__sincos_q: 1 − cos without cancellation). */
+static void basis_int_q(double th, double I[4])
+{
+    double s, c, ms, mc;
+    ts__sincos_q(th, &s, &c, &ms, &mc);
+    double sc = s * c, is2 = 0.5 * (th - sc), ic2 = 0.5 * (th + sc);
+    double is3 = mc * (2.0 - c - c * c) / 3.0, ic3 = s - s * s * s / 3.0;
+    I[0] = th - 3.0 * mc + 3.0 * is2 - is3;
+    I[1] = 3.0 * mc - 4.0 * is2 + is3;
+    I[2] = 3.0 * s - 4.0 * ic2 + ic3;
+    I[3] = th - 3.0 * s + 3.0 * ic2 - ic3;
+}
+
+/* §12.2: ∫ over [0, d] of the piece P of width hh, from the nearer end. */
+static double piece_partial(const double *P, double hh, double d)
+{
+    double th = TS_HALF_PI * (d / hh), I[4];
+    if (th <= 0.5 * TS_HALF_PI) {
+        basis_int_q(th, I);
+        return (hh / TS_HALF_PI) * (I[0] * P[0] + I[1] * P[1] + I[2] * P[2] + I[3] * P[3]);
+    }
+    double tm = TS_HALF_PI - th;
+    tm = tm > 0.0 ? tm : 0.0;
+    basis_int_q(tm, I);
+    return piece_total(P, hh) -
+           (hh / TS_HALF_PI) * (I[0] * P[3] + I[1] * P[2] + I[2] * P[1] + I[3] * P[0]);
+}
+
+/* ∫_{e_j}^x (r − lo) for x in bin j, from the nearer edge. */
+static double bin_partial(const ts_histo *h, size_t j, double x)
+{
+    double e0 = h->e[j], e1 = h->e[j + 1], q = 0.25 * (e1 - e0);
+    double dl = x - e0, dre = e1 - x, acc = 0.0;
+    const double *B = h->B + HB * j;
+    if (dl <= dre) {
+        int k = dl > q ? 1 : 0;
+        for (int i = 0; i < k; i++)
+            acc += piece_total(B + 4 * i, q);
+        return acc + piece_partial(B + 4 * k, q, dl - k * q);
+    }
+    int kr = dre > q ? 1 : 0;
+    for (int i = 0; i < kr; i++)
+        acc += piece_total(B + 4 * (HP - 1 - i), q);
+    const double *P = B + 4 * (HP - 1 - kr);
+    double Pr[4] = {P[3], P[2], P[1], P[0]};
+    acc += piece_partial(Pr, q, dre - kr * q);
+    return (h->tot[j] - h->lo * (e1 - e0)) - acc;
+}
+
+/* ∫_a^b r for e_0 <= a <= b <= e_n, bins ja, jb holding them. */
+static double integral_ab(const ts_histo *h, double a, size_t ja, double b, size_t jb)
+{
+    if (ja == jb)
+        return (bin_partial(h, ja, b) - bin_partial(h, ja, a)) + h->lo * (b - a);
+    double s = h->tot[ja] - (bin_partial(h, ja, a) + h->lo * (a - h->e[ja]));
+    for (size_t j = ja + 1; j < jb; j++)
+        s += h->tot[j];
+    return s + (bin_partial(h, jb, b) + h->lo * (b - h->e[jb]));
+}
+
+/* Within [lo, hi] times the width (rounding, §12.5). */
+static double clamp_total(const ts_histo *h, double v, double width)
+{
+    double lo = h->lo * width, hi = h->hi * width;
+    v = v > lo ? v : lo;
+    return v < hi ? v : hi;
+}
+
+ts_status ts_histo_integral(const ts_histo *h, double a, double b, double *out)
+{
+    if (out)
+        *out = (double)NAN;
+    if (!h || !out)
+        return TS_ERR_NULL;
+    double e0 = h->e[0], en = h->e[h->n];
+    if (!(e0 <= a && a <= en && e0 <= b && b <= en))
+        return TS_ERR_DOMAIN;
+    int neg = b < a;
+    double p = neg ? b : a, q = neg ? a : b;
+    double v = clamp_total(h, integral_ab(h, p, find_bin(h, p), q, find_bin(h, q)), q - p);
+    *out = neg ? -v : v;
+    return TS_OK;
+}
+
+ts_status ts_histo_totals(const ts_histo *h, const double *grid, size_t m, double *out,
+                          ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    for (size_t k = 0; out && k + 1 < m; k++)
+        out[k] = (double)NAN;
+    if (!h || (m >= 2 && (!grid || !out)))
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    if (m < 2)
+        return TS_OK;
+    double e0 = h->e[0], en = h->e[h->n];
+    for (size_t k = 0; k < m; k++) {
+        if (!(e0 <= grid[k] && grid[k] <= en))
+            return ts__fail(err, TS_ERR_DOMAIN, k, TS_WHERE_QUERY);
+        if (k > 0 && grid[k] < grid[k - 1])
+            return ts__fail(err, TS_ERR_UNSORTED, k, TS_WHERE_QUERY);
+    }
+    /* integral_ab's expressions, each point's partial integral formed once */
+    ts_cursor cur = {0};
+    size_t ja = ts__search(h->e, h->n, grid[0], &cur);
+    double Ga = bin_partial(h, ja, grid[0]);
+    for (size_t k = 0; k + 1 < m; k++) {
+        double a = grid[k], b = grid[k + 1];
+        size_t jb = ts__search(h->e, h->n, b, &cur);
+        double Gb = bin_partial(h, jb, b), v;
+        if (ja == jb) {
+            v = (Gb - Ga) + h->lo * (b - a);
+        } else {
+            v = h->tot[ja] - (Ga + h->lo * (a - h->e[ja]));
+            for (size_t j = ja + 1; j < jb; j++)
+                v += h->tot[j];
+            v += Gb + h->lo * (b - h->e[jb]);
+        }
+        out[k] = clamp_total(h, v, b - a);
+        ja = jb;
+        Ga = Gb;
+    }
+    return TS_OK;
+}
+
+
+/* §12.5: ∫_0^θ A_l dθ for θ in [0, π/2] from the nearer end (the far half
+ * as the whole integral minus the mirrored rest). */
+static void basis_int_near(double th, double I[4])
+{
+    static const double full[4] = {1.25 * TS_PI - 11.0 / 3.0, 11.0 / 3.0 - TS_PI,
+                                   11.0 / 3.0 - TS_PI, 1.25 * TS_PI - 11.0 / 3.0};
+    if (th <= 0.5 * TS_HALF_PI) {
+        ts__basis_int(th, sin(th), cos(th), I);
+        return;
+    }
+    double tm = TS_HALF_PI - th, J[4];
+    tm = tm > 0.0 ? tm : 0.0;
+    ts__basis_int(tm, sin(tm), cos(tm), J);
+    for (int l = 0; l < 4; l++)
+        I[l] = full[l] - J[3 - l];
+}
+
+ts_status ts_histo_subdivide(const ts_histo *h, size_t sub, double *out, ts_error *err)
+{
+    ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
+    if (!h || !out)
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    if (sub == 0)
+        return ts__fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
+    if (h->n > SIZE_MAX / sub)
+        return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
+    size_t n = h->n;
+    if (sub == 1) { /* the cell is the bin: its total (a cell below meets at most two pieces) */
+        for (size_t j = 0; j < n; j++)
+            out[j] = clamp_total(h, h->tot[j], h->e[j + 1] - h->e[j]);
+        return TS_OK;
+    }
+    /* cell k of every bin: the same weights on the control values (§12.5),
+     * c[p][l] = (1/(2π)) (I_l(θ_b) − I_l(θ_a)) over its overlap with piece p,
+     * times the width; a table of HSUB cells at a time (no allocation) */
+    enum { HSUB = 32 };
+    double c[HSUB][2][4];
+    int pk[HSUB][2];
+    for (size_t k0 = 0; k0 < sub; k0 += HSUB) {
+        size_t k1 = sub - k0 < HSUB ? sub : k0 + HSUB;
+        for (size_t k = k0; k < k1; k++) {
+            double a = (double)k / (double)sub, b = (double)(k + 1) / (double)sub;
+            int p0 = (int)(4.0 * a);
+            p0 = p0 < HP - 1 ? p0 : HP - 1;
+            for (int t = 0; t < 2; t++) {
+                int p = p0 + t < HP ? p0 + t : HP - 1;
+                double q0 = 0.25 * p, q1 = 0.25 * (p + 1);
+                double lo = a > q0 ? a : q0, hi = b < q1 ? b : q1;
+                pk[k - k0][t] = p;
+                for (int l = 0; l < 4; l++)
+                    c[k - k0][t][l] = 0.0;
+                if (!(lo < hi) || (t == 1 && p == p0))
+                    continue;
+                double Ia[4], Ib[4];
+                basis_int_near(TS_HALF_PI * 4.0 * (lo - q0), Ia);
+                basis_int_near(TS_HALF_PI * 4.0 * (hi - q0), Ib);
+                for (int l = 0; l < 4; l++)
+                    c[k - k0][t][l] = (Ib[l] - Ia[l]) / (2.0 * TS_PI);
+            }
+        }
+        const double lo = h->lo, hi = h->hi; /* locals: out may alias nothing of h */
+        for (size_t j = 0; j < n; j++) {
+            const double *B = h->B + HB * j;
+            double w = h->e[j + 1] - h->e[j], cw = w / (double)sub;
+            double lc = lo * cw, hc = hi * cw;
+            double *o = out + j * sub;
+            if (h->tot[j] == lo * w) { /* a bin at lo (dry): r ≡ lo */
+                for (size_t k = k0; k < k1; k++)
+                    o[k] = lc;
+                continue;
+            }
+            for (size_t k = k0; k < k1; k++) {
+                const double *P = B + 4 * pk[k - k0][0], *Q = B + 4 * pk[k - k0][1];
+                double(*ck)[4] = c[k - k0];
+                double v = (ck[0][0] * P[0] + ck[0][1] * P[1] + ck[0][2] * P[2] + ck[0][3] * P[3]) +
+                           (ck[1][0] * Q[0] + ck[1][1] * Q[1] + ck[1][2] * Q[2] + ck[1][3] * Q[3]);
+                double x = w * v + lc; /* within [lo, hi] times the width (rounding) */
+                x = x > lc ? x : lc;
+                o[k] = x < hc ? x : hc;
+            }
+        }
+    }
+    return TS_OK;
+}
+
+static void report_reset(ts_bin_report *rep)
+{
+    rep->struct_size = sizeof *rep;
+    rep->e0 = rep->e1 = rep->total = rep->mean = (double)NAN;
+    rep->r_min = rep->at_min = rep->r_max = rep->at_max = rep->guard = (double)NAN;
+    for (int l = 0; l < 16; l++)
+        rep->B[l] = (double)NAN;
+    rep->certified = 0;
+}
+
+void ts_bin_report_init(ts_bin_report *rep)
+{
+    if (rep)
+        report_reset(rep);
+}
+
+ts_status ts_histo_report(const ts_histo *h, size_t bin, ts_bin_report *rep)
+{
+    if (!rep)
+        return TS_ERR_NULL;
+    if (rep->struct_size != sizeof *rep)
+        return TS_ERR_VERSION;
+    report_reset(rep);
+    if (!h)
+        return TS_ERR_NULL;
+    if (bin >= h->n)
+        return TS_ERR_INDEX;
+    double e0 = h->e[bin], e1 = h->e[bin + 1], q = 0.25 * (e1 - e0);
+    rep->e0 = e0;
+    rep->e1 = e1;
+    rep->total = h->tot[bin];
+    rep->mean = h->tot[bin] / (e1 - e0);
+    memcpy(rep->B, h->B + HB * bin, sizeof rep->B);
+    rep->certified = bin_inside(h, bin);
+    double mn = HUGE_VAL, mx = -HUGE_VAL, g = 0.0;
+    for (int p = 0; p < HP; p++) {
+        const double *P = h->B + HB * bin + 4 * p;
+        double x0 = e0 + p * q, th, tb, eb;
+        double v = ts__trig_min_core(P[0], P[1], P[2], P[3], 0.0, &th, &tb, &eb);
+        g = eb > g ? eb : g;
+        if (v < mn) {
+            mn = v;
+            rep->at_min = x0 + (q / TS_HALF_PI) * th;
+        }
+        v = -ts__trig_min_core(-P[0], -P[1], -P[2], -P[3], 0.0, &th, &tb, &eb);
+        g = eb > g ? eb : g;
+        if (v > mx) {
+            mx = v;
+            rep->at_max = x0 + (q / TS_HALF_PI) * th;
+        }
+    }
+    rep->r_min = h->lo + mn;
+    rep->r_max = h->lo + mx;
+    rep->guard = g;
+    return TS_OK;
+}
