@@ -459,7 +459,7 @@ typedef struct ts_spline_options {
 
     /* Constraint records (see "Constraints" below): NULL / 0 by default.  With
      * n_constraints > 0 the spline is built by the constraint scheme of
-     * docs/method.md §12 (geometric form only; shape must be TS_SHAPE_NONE). */
+     * docs/method.md §13 (geometric form only; shape must be TS_SHAPE_NONE). */
     const struct ts_constraint *constraints;
     size_t n_constraints;
 } ts_spline_options;
@@ -650,7 +650,7 @@ TS_API ts_status ts_spline_certify(const ts_spline *s, const ts_line *lower, con
 /*
  * A list of constraint records, passed in ts_spline_options.constraints
  * (n_constraints of them), each certified exactly on every interval it
- * covers (docs/method.md §12 has the derivations and proofs).  The
+ * covers (docs/method.md §13 has the derivations and proofs).  The
  * geometric form only (TS_ERR_OPTION otherwise, and with a shape scheme).
  *
  *   TS_CONSTRAINT_CONVEX      S'' >= 0        CONCAVE  S'' <= 0
@@ -666,7 +666,7 @@ TS_API ts_status ts_spline_certify(const ts_spline *s, const ts_line *lower, con
  * Scope: intervals first .. first + count − 1 (count 0: first .. n − 1;
  * both 0 by ts_constraint_init: the whole range).
  *
- * The scheme (docs/method.md §12): slopes are estimated by opt->slopes and
+ * The scheme (docs/method.md §13): slopes are estimated by opt->slopes and
  * changed where a constraint needs it (convex/concave: the three-point
  * slope, strictly between the neighbouring secants; increasing, slope
  * bounds: clamped), then a_i = alpha_i + beta_i is raised to the largest

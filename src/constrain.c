@@ -1,4 +1,4 @@
-/* Constraint records (docs/method.md §12): validation, the data's necessary
+/* Constraint records (docs/method.md §13): validation, the data's necessary
  * conditions, slopes, the closed-form a_i of each constraint, the
  * certificates (exact signs of control-polygon quantities; polyline pieces:
  * the minimum with a guard), the repair, and the exact per-interval minima of
@@ -147,7 +147,7 @@ static int data_inside(const ts_constraint *c, double xj, double fj)
 {
     double sg = bound_sign(c), v[CON_EXACT];
     int k = 0;
-    if (c->bound == TS_BOUND_CONSTANT) /* may be touched (docs/method.md §12.1) */
+    if (c->bound == TS_BOUND_CONSTANT) /* may be touched (docs/method.md §13.1) */
         return sg * (fj - c->value) >= 0.0; /* the sign of a difference is exact */
     size_t m = c->n_poly;
     if (xj < c->px[0] || xj > c->px[m - 1])
@@ -166,7 +166,7 @@ static int data_inside(const ts_constraint *c, double xj, double fj)
     return exact_sign(v, k) > 0;
 }
 
-/* docs/method.md §12.1: the necessary conditions on the data. */
+/* docs/method.md §13.1: the necessary conditions on the data. */
 static ts_status data_checks(const double *x, const double *f, size_t n, const ts_constraint *cs,
                              size_t nc, ts_error *err, ts_constraint_failure *fail)
 {
@@ -246,7 +246,7 @@ static int must_be_line(const ts_constraint *cs, size_t nc, size_t n, const doub
     return 0;
 }
 
-/* docs/method.md §12.2: slopes.  d holds the estimates; by[j] the record that
+/* docs/method.md §13.2: slopes.  d holds the estimates; by[j] the record that
  * changed d_j last (−1: none). */
 static ts_status con_slopes(const double *x, const double *f, size_t n, const ts_constraint *cs,
                             size_t nc, double *d, int *by, ts_error *err,
@@ -300,7 +300,7 @@ static ts_status con_slopes(const double *x, const double *f, size_t n, const ts
         }
     }
     /* a constant bound the data touch: the slope there 0 (pointing into the
-     * region at the first and last knot of the scope), docs/method.md §5.1, §12.2 */
+     * region at the first and last knot of the scope), docs/method.md §5.1, §13.2 */
     for (size_t k = 0; k < nc; k++) {
         const ts_constraint *c = &cs[k];
         double bs = bound_sign(c);
@@ -354,7 +354,7 @@ static double piece_slope(const ts_constraint *c, size_t p)
     return (c->py[p + 1] - c->py[p]) / (c->px[p + 1] - c->px[p]);
 }
 
-/* docs/method.md §12.3: the smallest a the record needs on interval i
+/* docs/method.md §13.3: the smallest a the record needs on interval i
  * (closed form, a proof through the control polygon; 0 when none;
  * +Inf when no a does it with these slopes). */
 static double a_needed(const ts_constraint *c, double h, double fi, double fj, double xi, double di,
@@ -399,7 +399,7 @@ static double a_needed(const ts_constraint *c, double h, double fi, double fj, d
         double g0 = bs * (fi - (c->py[p] + m * (xi - c->px[p])));
         double g1 = bs * (fj - (c->py[p] + m * (xi + h - c->px[p])));
         if (!(g0 > 0.0 && g1 > 0.0))
-            continue; /* the search (§12.4) */
+            continue; /* the search (§13.4) */
         if (bs * (di - m) < 0.0)
             a = fmax(a, -K3 * h * bs * (di - m) / g0);
         if (bs * (dj - m) > 0.0)
@@ -408,7 +408,7 @@ static double a_needed(const ts_constraint *c, double h, double fi, double fj, d
     return a;
 }
 
-/* docs/method.md §12.3: beta_i = t_i + max(0, a_need − alpha_i), a_i at
+/* docs/method.md §13.3: beta_i = t_i + max(0, a_need − alpha_i), a_i at
  * least 4/(3π) + t_i (§4); bind[i] the record with the largest need. */
 void ts__con_betas(const double *x, const double *f, size_t n, const ts_spline_options *o,
                    const double *d, double *beta, int *bind)
@@ -448,7 +448,7 @@ ts_status ts__con_prepare(const double *x, const double *f, size_t n, const ts_s
     return st;
 }
 
-/* ---- certificates (docs/method.md §12.4) -------------------------------- */
+/* ---- certificates (docs/method.md §13.4) -------------------------------- */
 
 /* Local control polygon of interval i: Y = B, X̂ = (0, κ, 1 − κ, 1). */
 typedef struct seg {
@@ -546,7 +546,7 @@ static int line_polygon(const seg *g, double x0, double y0, double m, double bs)
     return 1;
 }
 
-/* ---- polynomials in t = tan(θ/2) (docs/method.md §12.5) ---------------- */
+/* ---- polynomials in t = tan(θ/2) (docs/method.md §13.5) ---------------- */
 
 #define PMAX 25 /* degree <= 24 */
 typedef struct poly {
@@ -818,7 +818,7 @@ static double min_on(const target *tg, const seg_poly *s, const seg *g, double l
 }
 
 /* Exact minimum (to rounding) of record c's gap on interval i and where;
- * *proven: the certificate (docs/method.md §12.4). */
+ * *proven: the certificate (docs/method.md §13.4). */
 static double con_gap(const ts_spline *sp, const ts_constraint *c, size_t i, double *at,
                       int *proven, int want)
 {
@@ -933,8 +933,8 @@ static int nudge(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i, si
     return 0;
 }
 
-/* docs/method.md §12.4: certify every interval; double a_i where a
- * certificate fails (every closed-form condition of §12.3 survives a larger
+/* docs/method.md §13.4: certify every interval; double a_i where a
+ * certificate fails (every closed-form condition of §13.3 survives a larger
  * a); TS_ERR_UNPROVEN after CON_DOUBLINGS doublings. */
 ts_status ts__con_certify(ts_spline *sp, const ts_constraint *cs, size_t nc, ts_error *err,
                           ts_constraint_failure *fail)
@@ -947,7 +947,7 @@ ts_status ts__con_certify(ts_spline *sp, const ts_constraint *cs, size_t nc, ts_
             /* first the inner control values moved by up to 2 ulps: a slope
              * set exactly to a bound, or a forced line, is met in exact
              * arithmetic only if B1, B2 round the right way (docs/method.md
-             * §12.4); evaluation reads the stored values */
+             * §13.4); evaluation reads the stored values */
             if (tries == 0 && nudge(sp, cs, nc, i, &bad))
                 break;
             /* a0 doubled CON_DOUBLINGS times, then (a polyline piece's gap

@@ -1,5 +1,5 @@
 /* The constraint records' public functions: initialisers and the
- * per-interval report (docs/method.md §12). */
+ * per-interval report (docs/method.md §13). */
 #include "internal.h"
 
 #include <math.h>

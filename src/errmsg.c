@@ -154,7 +154,7 @@ static double per_interval(const double *arr, size_t n_arr, double scalar, size_
 }
 
 /* TS_ERR_CONDITION: which record and which necessary condition
- * (docs/method.md §12.1), found again by the data checks alone. */
+ * (docs/method.md §13.1), found again by the data checks alone. */
 static int condition_sentence(out *o, const data *d, const ts_error *e)
 {
     const ts_spline_options *opt = d->opt;

@@ -107,7 +107,7 @@ struct ts_spline {
                           * (docs/method.md §4), the one expression every user of κ reads */
     unsigned char *term; /* n: ts_term */
     double *cum;         /* n+1: cum[i] = ∫_{x0}^{x_i} S dx (set last by spline.c) */
-    /* constraint records (docs/method.md §12), an owned copy (polyline points
+    /* constraint records (docs/method.md §13), an owned copy (polyline points
      * in con_pts); NULL / 0 when built without */
     size_t ncon;
     ts_constraint *con;
@@ -846,7 +846,7 @@ ts_status ts__certify_range(ts_spline *sp, const ts_spline_options *opt, size_t 
                             ts_error *err);
 void ts__certify_done(ts_spline *sp, const ts_spline_options *opt);
 
-/* ---- constrain.c (docs/method.md §12) ------------------------------------ */
+/* ---- constrain.c (docs/method.md §13) ------------------------------------ */
 /* Records of opt (n_constraints > 0) valid for n intervals: TS_ERR_NULL,
  * TS_ERR_OPTION (also a form other than geometric, a shape), TS_ERR_VERSION,
  * TS_ERR_NONFINITE, TS_ERR_UNSORTED, TS_ERR_LENGTH; fail (may be NULL) too. */

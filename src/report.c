@@ -52,7 +52,7 @@ ts_status ts_spline_report(const ts_spline *s, size_t i, ts_interval_report *rep
     if (i >= s->n)
         return TS_ERR_INDEX;
     report_base(s, i, rep);
-    rep->certified = s->ncon != 0; /* built with constraint records: each proven (§12) */
+    rep->certified = s->ncon != 0; /* built with constraint records: each proven (§13) */
     if (s->shape == TS_SHAPE_NONE)
         return TS_OK;
     double B[4], X[4];

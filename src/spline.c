@@ -253,7 +253,7 @@ static ts_status build(ts_spline *sp, const ts_spline_options *o, const double *
 }
 
 /* The constraint records' slopes, betas and their bookkeeping (docs/method.md
- * §12), made before the spline is allocated; freed by con_prep_free. */
+ * §13), made before the spline is allocated; freed by con_prep_free. */
 typedef struct con_prep {
     double *d, *beta;
     int *by, *bind;

@@ -79,7 +79,7 @@ static void put_row(const ts_interval_report *r, double *row)
     row[16] = (double)r->certified;
 }
 
-/* Constraint records for the next tsw_spline_new (docs/method.md §12): rec
+/* Constraint records for the next tsw_spline_new (docs/method.md §13): rec
  * holds 5 doubles per record (kind, value, first, count, n_poly), pts the
  * polylines' x then y, record after record; taken by that one call. */
 static const double *con_rec, *con_pts;

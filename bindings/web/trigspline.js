@@ -72,7 +72,7 @@ function numbersOf(a, what, dim = 1) {
   }
   return a;
 }
-// Constraint records (docs/method.md §12; the command line's --constraint
+// Constraint records (docs/method.md §13; the command line's --constraint
 // SPEC strings, or {kind, value, points: [[x, y], ...], first, count}) as
 // the two arrays glue.c's tsw_constraints reads: 5 doubles per record
 // (kind, value, first, count, n_poly) and the polylines' x then y.
@@ -294,7 +294,7 @@ class TrigSpline {
   // n_points user slopes), .alpha / .beta / .margin (a number, or an array with
   // one value per interval), .shape, .lower / .upper ({m, c}, or a number c
   // for a constant line), .line (for above/below), .certify, .extrapolate,
-  // .constraints (constraint records, docs/method.md §12: SPEC strings as the
+  // .constraints (constraint records, docs/method.md §13: SPEC strings as the
   // command line's --constraint, or {kind, value, points, first, count}).
   spline(x, f, options = {}) {
     const o = { ...this.defaults, ...options };
@@ -603,7 +603,7 @@ export class Spline extends Handle {
       return rowObject(ts.f64(p, ROW));
     } finally { ts.w.free(p); }
   }
-  // Constraint records (docs/method.md §12): per record, per interval, null
+  // Constraint records (docs/method.md §13): per record, per interval, null
   // outside its scope or {active, gap, at, certified}.
   constraintReport() {
     const ts = this.ts, nc = ts.w.ts_spline_constraints(this.live()), p = ts.alloc(40);

@@ -1,4 +1,4 @@
-/* Constraint records (docs/method.md §12): the closed-form a_i of each
+/* Constraint records (docs/method.md §13): the closed-form a_i of each
  * constraint, the exact minima of S'', S', S − bound per interval against
  * dense sampling, every refusal with its named condition, and a property
  * test of random combined-constraint problems (TS_CON_PROBLEMS problems,
@@ -70,7 +70,7 @@ static double sampled(const ts_spline *s, const ts_constraint *c, size_t i, int 
 /* ---- closed forms ------------------------------------------------------- */
 
 /* One interval, user slopes: a = max(alpha, 4/(3π), need) + t with the
- * need of docs/method.md §12.3 in closed form. */
+ * need of docs/method.md §13.3 in closed form. */
 static void test_closed_forms(void)
 {
     double x[2] = {0.0, 2.0}, f[2] = {1.0, 3.0}; /* Δ = 1 */

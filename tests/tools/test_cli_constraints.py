@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Constraint records on the command line (docs/cli.md, docs/method.md §12).
+"""Constraint records on the command line (docs/cli.md, docs/method.md §13).
 
 Usage: python3 tests/tools/test_cli_constraints.py BUILD_DIR     (standard library only)
 

@@ -1,5 +1,5 @@
 /* --constraint SPEC and --constraints FILE.json: constraint records
- * (docs/method.md §12, docs/cli.md), and their part of the JSON report. */
+ * (docs/method.md §13, docs/cli.md), and their part of the JSON report. */
 #define _POSIX_C_SOURCE 200809L
 #include "cli.h"
 

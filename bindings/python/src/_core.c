@@ -217,7 +217,7 @@ static PyObject *spline_new(PyObject *mod, PyObject *args, PyObject *kw)
     opt.certify = certify;
     opt.extrapolate = (ts_extrap)extrap;
     if (ocons != Py_None) {
-        /* docs/method.md §12: a sequence of (kind, value, px or None, py or None,
+        /* docs/method.md §13: a sequence of (kind, value, px or None, py or None,
          * first, count) */
         PyObject *seq = PySequence_Fast(ocons, "constraints must be a sequence");
         if (!seq)
@@ -582,7 +582,7 @@ static PyObject *spline_report(SplineHandle *self, PyObject *args)
     return report_tuple(&r);
 }
 
-/* constraint_report(k, i) -> (in_scope, active, gap, at, certified) (docs/method.md §12). */
+/* constraint_report(k, i) -> (in_scope, active, gap, at, certified) (docs/method.md §13). */
 static PyObject *spline_constraint_report(SplineHandle *self, PyObject *args)
 {
     Py_ssize_t k, i;

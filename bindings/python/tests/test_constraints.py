@@ -1,4 +1,4 @@
-"""Constraint records from Python (docs/method.md §12): Spline(constraints=[...]).
+"""Constraint records from Python (docs/method.md §13): Spline(constraints=[...]).
 
 A Black-Scholes call chain (closed form here, S0 = 100, sigma = 0.2, T = 1,
 r = 0) certified convex, decreasing, with S' >= -1 and S >= 0: its implied

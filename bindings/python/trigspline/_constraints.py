@@ -1,4 +1,4 @@
-"""Constraint records (docs/method.md §12): ``constraints=[...]`` of Spline.
+"""Constraint records (docs/method.md §13): ``constraints=[...]`` of Spline.
 
 Each item is a SPEC string, the command line's ``--constraint`` syntax
 (docs/cli.md): ``'convex'``, ``'concave'``, ``'increasing'``, ``'decreasing'``,

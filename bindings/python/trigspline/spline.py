@@ -183,7 +183,7 @@ class Spline:
         ``False`` skips the exact certificate where the scheme is a proof by
         itself.
     constraints : list, optional
-        Constraint records certified per interval (docs/method.md §12;
+        Constraint records certified per interval (docs/method.md §13;
         geometric form, no ``shape``): SPEC strings as the command line's
         ``--constraint`` (``'convex'``, ``'concave'``, ``'increasing'``,
         ``'decreasing'``, ``'lower=C'``, ``'upper=C'``,
@@ -318,7 +318,7 @@ class Spline:
             opts["slopes"] = SLOPES.index(sname)
             kwargs["slopes"] = sname
         if constraints is not None:
-            # docs/method.md §12: records certified per interval (geometric form)
+            # docs/method.md §13: records certified per interval (geometric form)
             opts["constraints"] = _constraints.records(constraints)
             kwargs["constraints"] = constraints
         self._kwargs = kwargs
@@ -706,7 +706,7 @@ class Spline:
         (the exact minimum over the interval of S'' for 'convex', −S''
         'concave', S' 'increasing', S − bound 'lower', bound − S 'upper',
         S' − V 'slope-min', V − S' 'slope-max', V − |S'| 'slope-abs'), ``at``
-        (where) and ``certified``; docs/method.md §12."""
+        (where) and ``certified``; docs/method.md §13."""
         h = self._h[0] if self._h else None
         out = []
         for k in range(h.n_constraints if h is not None else 0):

@@ -190,7 +190,7 @@ test('every status the library can return reaches JavaScript as a TrigSplineErro
   t(() => ts.spline(x, [1, 10.3, 21, 31], { ...P, shape: 'above', lower: { m: 10, c: 0 }, alpha: 10 }), 'TS_ERR_INFEASIBLE', 0, 'interval');
   t(() => ts.spline(x, f, { form: 'geometric', alpha: 0.1, beta: 0 }), 'TS_ERR_GEOMETRIC', 0, 'interval');
   t(() => ts.spline(x, [1, 0, 1, 2], { ...P, shape: 'positive', slopes: [0, -1, 0, 0] }), 'TS_ERR_ZERO_SLOPE', 1, 'point');
-  // constraint records (docs/method.md §12): data that are not convex at point 1;
+  // constraint records (docs/method.md §13): data that are not convex at point 1;
   // a polyline peak above flat data, which the search gives up on
   t(() => ts.spline(x, f, { constraints: ['convex'] }), 'TS_ERR_CONDITION', 1, 'point');
   t(() => ts.spline([0, 1], [1, 1], { constraints: ['lower=poly:0,0;0.5,1.2;1,0'] }),
