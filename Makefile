@@ -18,6 +18,7 @@
 #   make coverage   line and branch coverage of the library (gcovr)
 #   make test-r     the R package (bindings/r): R CMD build, install, smoke test and
 #                   R CMD check --as-cran (tests included)
+#   make test-constraints  the constraint records' property test, 10^6 problems
 #   make fuzz       the libFuzzer harnesses, FUZZ_SECONDS each (corpus replay is in make test)
 #   make dist       every package into dist/ (tools/dist/CHANNEL.sh build): Python wheel and
 #                   sdist, musl tarball, Debian packages, the conda recipe checked, ...
@@ -253,7 +254,7 @@ WEB_FUNCS := ts_version ts_strerror ts_status_name ts_vocab_name ts_vocab_count 
   ts_curve_dim ts_curve_closed ts_curve_knots ts_curve_control ts_curve_params ts_curve_eval \
   ts_curve_sample ts_curve_length tsw_spline_new tsw_curve_new tsw_defaults tsw_curve_defaults \
   tsw_report tsw_certify tsw_curve_certify tsw_error_constants tsw_heap_top ts_error_message \
-  tsw_message tsw_message_clear malloc free \
+  tsw_message tsw_message_clear tsw_constraints tsw_constraint_report ts_spline_constraints malloc free \
   tsw_disaggregate tsw_histo_defaults
 web_comma := ,
 web_space := $(web_empty) $(web_empty)
@@ -336,6 +337,13 @@ test-web-stack-full: web
 .PHONY: test-histo
 test-histo: build
 	TS_HISTO_SERIES=200000 build/tests/test_histo
+
+# ---- the constraint records' property test at full size ----
+# test_constraints runs 4000 random combined-constraint problems in make
+# test; this runs 10^6 (docs/method.md §13; about 15 minutes on one core).
+.PHONY: test-constraints
+test-constraints: build
+	TS_CON_PROBLEMS=1000000 build/tests/test_constraints
 
 # ---- trust at the edges: thread sanitizer, coverage, fuzzing ----
 .PHONY: tsan coverage fuzz

@@ -100,7 +100,11 @@ typedef enum ts_status {
     TS_ERR_VERSION = 30,          /* a struct's struct_size is not the sizeof of this library's
                                      struct: built against another version's header, or not
                                      initialised by its *_init function (see "Struct guards") */
-    TS_STATUS_COUNT_ = 31    /* not a status: number of codes */
+    TS_ERR_CONDITION = 31,        /* constraint records (ts_constraint): the data violate a necessary
+                                     condition of one (convex data, a secant beyond a slope bound, a
+                                     point on or across a bound); index = point or interval;
+                                     ts_constraints_diagnose names the constraint and the condition */
+    TS_STATUS_COUNT_ = 32    /* not a status: number of codes */
 } ts_status;
 
 /* The largest |f_i| and |B_l| a spline accepts (TS_ERR_TOO_LARGE beyond):
@@ -161,7 +165,12 @@ typedef enum ts_vocab {
     TS_VOCAB_SURFACE_SHAPE = 6,
     TS_VOCAB_TERM = 7,
     TS_VOCAB_WHERE = 8,
-    TS_VOCAB_COUNT_ = 9 /* not a vocabulary: their number */
+    TS_VOCAB_CONSTRAINT = 9, /* ts_constraint_kind: convex, concave, increasing, decreasing,
+                                lower, upper, slope-min, slope-max, slope-abs */
+    TS_VOCAB_BOUND = 10,     /* ts_bound: constant, polyline */
+    TS_VOCAB_CONDITION = 11, /* ts_condition: none, convex-data, concave-data, monotone-data,
+                                inside-bound, secant-slope, slope-conflict, unproven */
+    TS_VOCAB_COUNT_ = 12 /* not a vocabulary: their number */
 } ts_vocab;
 
 /* The canonical name of value in vocab; NULL when vocab or value is out of
@@ -447,6 +456,12 @@ typedef struct ts_spline_options {
                                   computes the exact gaps on demand. */
 
     ts_extrap extrapolate;     /* default TS_EXTRAP_ERROR */
+
+    /* Constraint records (see "Constraints" below): NULL / 0 by default.  With
+     * n_constraints > 0 the spline is built by the constraint scheme of
+     * docs/method.md §13 (geometric form only; shape must be TS_SHAPE_NONE). */
+    const struct ts_constraint *constraints;
+    size_t n_constraints;
 } ts_spline_options;
 
 /* The defaults: geometric form, Steffen's slopes, alpha = TS_DEFAULT_ALPHA,
@@ -556,7 +571,9 @@ typedef struct ts_interval_report {
     double at_lower;        /* the x where it is attained */
     double gap_upper;       /* exact min of upper(x) - S(x) (NaN if !has_upper) */
     double at_upper;
-    int certified;          /* every active gap > 0 (with the rounding guard of docs/method.md §5.6) */
+    int certified;          /* every active gap > 0 (with the rounding guard of docs/method.md §5.6);
+                               a spline built with constraint records: 1 (every record proven on
+                               the interval, ts_spline_constraint_report) */
     /* Range and overshoot of the interval (docs/method.md §5.9), for every
      * spline (shape scheme or not; also from ts_spline_certify, and per coordinate
      * from ts_curve_certify*, there in the parameter t).  Exact extrema of the
@@ -610,7 +627,8 @@ TS_API void ts_interval_report_init(ts_interval_report *reports, size_t n);
 TS_API ts_status ts_spline_report(const ts_spline *s, size_t i, ts_interval_report *rep);
 
 /* 1 when every interval of a shape-constrained spline is certified, 0 otherwise
- * (also 0 for TS_SHAPE_NONE: nothing was promised). */
+ * (also 0 for TS_SHAPE_NONE without constraint records: nothing was
+ * promised; 1 for a spline built with records, every one certified). */
 TS_API int ts_spline_certified(const ts_spline *s);
 
 /*
@@ -624,6 +642,150 @@ TS_API int ts_spline_certified(const ts_spline *s);
  */
 TS_API ts_status ts_spline_certify(const ts_spline *s, const ts_line *lower, const ts_line *upper,
                      ts_interval_report *reports, ts_error *err);
+
+/* ------------------------------------------------------------------ */
+/* Constraints: any shape a user can state, certified                  */
+/* ------------------------------------------------------------------ */
+
+/*
+ * A list of constraint records, passed in ts_spline_options.constraints
+ * (n_constraints of them), each certified exactly on every interval it
+ * covers (docs/method.md §13 has the derivations and proofs).  The
+ * geometric form only (TS_ERR_OPTION otherwise, and with a shape scheme).
+ *
+ *   TS_CONSTRAINT_CONVEX      S'' >= 0        CONCAVE  S'' <= 0
+ *   TS_CONSTRAINT_INCREASING  S' >= 0         DECREASING  S' <= 0
+ *   TS_CONSTRAINT_LOWER       S >= bound      UPPER    S <= bound
+ *   TS_CONSTRAINT_SLOPE_MIN   S' >= value     SLOPE_MAX  S' <= value
+ *   TS_CONSTRAINT_SLOPE_ABS   |S'| <= value (value >= 0)
+ *
+ * A bound (lower, upper) is TS_BOUND_CONSTANT (y = value) or
+ * TS_BOUND_POLYLINE: the piecewise-linear function through (px[j], py[j]),
+ * j < n_poly (n_poly >= 2, px strictly increasing), on [px[0],
+ * px[n_poly-1]] and no bound outside it; its breakpoints need not be knots.
+ * Scope: intervals first .. first + count − 1 (count 0: first .. n − 1;
+ * both 0 by ts_constraint_init: the whole range).
+ *
+ * The scheme (docs/method.md §13): slopes are estimated by opt->slopes and
+ * changed where a constraint needs it (convex/concave: the three-point
+ * slope, strictly between the neighbouring secants; increasing, slope
+ * bounds: clamped), then a_i = alpha_i + beta_i is raised to the largest
+ * closed-form requirement of the constraints on interval i (each a proof
+ * through the control polygon), then every interval and constraint is
+ * certified (exact signs of control-polygon quantities, or for a polyline
+ * bound the exact minimum on each piece with a rounding guard) and a_i
+ * doubled where a certificate fails.
+ *
+ * Failures of ts_spline_new with constraints (index as for other schemes):
+ *   TS_ERR_CONDITION   the data violate a necessary condition (index = point
+ *                      or interval): second divided differences of the wrong
+ *                      sign (convex/concave), a secant beyond a slope bound,
+ *                      data changing direction (increasing/decreasing), a
+ *                      data point across a bound, or on a polyline (a
+ *                      constant bound may be touched: the slope there is
+ *                      then 0, pointing into the region at the ends);
+ *   TS_ERR_INFEASIBLE  the slopes the constraints require at a knot
+ *                      exclude each other (a proof that no C¹ curve exists);
+ *   TS_ERR_UNPROVEN    no certified a_i up to 2^60 alpha_i was found, without
+ *                      a proof that none exists (polyline bounds);
+ *   TS_ERR_OPTION      an unknown kind or bound type, a scope beyond the
+ *                      intervals, a form other than geometric, a shape;
+ *   TS_ERR_NONFINITE   a non-finite value or polyline point;
+ *   TS_ERR_UNSORTED    polyline abscissae not strictly increasing;
+ *   TS_ERR_LENGTH      a polyline with fewer than 2 points;
+ *   TS_ERR_NULL        constraints NULL with n_constraints > 0, px/py NULL;
+ *   TS_ERR_VERSION     a record whose struct_size is not sizeof(ts_constraint).
+ * ts_constraints_diagnose says which constraint and which condition.
+ */
+typedef enum ts_constraint_kind {
+    TS_CONSTRAINT_CONVEX = 0,
+    TS_CONSTRAINT_CONCAVE = 1,
+    TS_CONSTRAINT_INCREASING = 2,
+    TS_CONSTRAINT_DECREASING = 3,
+    TS_CONSTRAINT_LOWER = 4,
+    TS_CONSTRAINT_UPPER = 5,
+    TS_CONSTRAINT_SLOPE_MIN = 6,
+    TS_CONSTRAINT_SLOPE_MAX = 7,
+    TS_CONSTRAINT_SLOPE_ABS = 8
+} ts_constraint_kind;
+#define TS_CONSTRAINT_COUNT_ 9
+
+typedef enum ts_bound {
+    TS_BOUND_CONSTANT = 0,
+    TS_BOUND_POLYLINE = 1
+} ts_bound;
+
+typedef struct ts_constraint {
+    size_t struct_size;        /* sizeof(ts_constraint), set by ts_constraint_init */
+    ts_constraint_kind kind;
+    ts_bound bound;            /* LOWER, UPPER: default TS_BOUND_CONSTANT */
+    double value;              /* constant bound, slope bound, |S'| cap; default 0 */
+    const double *px, *py;     /* TS_BOUND_POLYLINE: n_poly points */
+    size_t n_poly;
+    size_t first, count;       /* scope in intervals; default 0, 0: all */
+} ts_constraint;
+
+/* A record of kind with every other field at its default. */
+TS_API void ts_constraint_init(ts_constraint *c, ts_constraint_kind kind);
+
+/* Which necessary condition or search failed (ts_constraints_diagnose). */
+typedef enum ts_condition {
+    TS_CONDITION_NONE = 0,           /* nothing failed */
+    TS_CONDITION_CONVEX_DATA = 1,    /* Δ_{i-1} <= Δ_i (convex) violated at point i */
+    TS_CONDITION_CONCAVE_DATA = 2,   /* Δ_{i-1} >= Δ_i (concave) violated at point i */
+    TS_CONDITION_MONOTONE_DATA = 3,  /* data change direction at point i */
+    TS_CONDITION_INSIDE_BOUND = 4,   /* point i across the bound (or on a polyline) */
+    TS_CONDITION_SECANT_SLOPE = 5,   /* the secant of interval i beyond the slope bound
+                                        (S' = Δ_i somewhere in it: mean value theorem) */
+    TS_CONDITION_SLOPE_CONFLICT = 6, /* the slope ranges required at knot i are disjoint */
+    TS_CONDITION_UNPROVEN = 7        /* interval i: the search gave up, no proof of infeasibility */
+} ts_condition;
+
+typedef struct ts_constraint_failure {
+    size_t struct_size;   /* sizeof(ts_constraint_failure): ts_constraint_failure_init */
+    ts_status status;     /* what ts_spline_new returned */
+    size_t constraint;    /* index of the record; TS_NO_INDEX when none is to blame */
+    size_t index;         /* point or interval (where) */
+    ts_where where;
+    ts_condition condition;
+} ts_constraint_failure;
+TS_API void ts_constraint_failure_init(ts_constraint_failure *f);
+
+/*
+ * Build as ts_spline_new would and say why it fails: fills *fail (status,
+ * the constraint record, point or interval, the condition); TS_OK with
+ * fail->condition TS_CONDITION_NONE when ts_spline_new succeeds.  Returns
+ * what ts_spline_new returns; TS_ERR_NULL (fail NULL too), TS_ERR_VERSION
+ * (fail->struct_size; checked first).
+ */
+TS_API ts_status ts_constraints_diagnose(const double *x, const double *f, size_t n_points,
+                                         const ts_spline_options *opt,
+                                         ts_constraint_failure *fail);
+
+/* Per interval and constraint: was it active, its exact gap, its proof. */
+typedef struct ts_constraint_report {
+    size_t struct_size;   /* sizeof(ts_constraint_report): ts_constraint_report_init */
+    int in_scope;         /* the constraint covers interval i (else the rest is NaN / 0) */
+    int active;           /* it set a_i (its requirement was the largest) or changed a
+                             slope at one of the interval's knots */
+    double gap;           /* exact minimum over the interval (the part covered by a
+                             polyline) of: S'' (convex), −S'' (concave), S' (increasing),
+                             −S' (decreasing), S − bound (lower), bound − S (upper),
+                             S' − value (slope-min), value − S' (slope-max),
+                             value − |S'| (slope-abs); >= 0 where certified */
+    double at;            /* an x where it is attained */
+    int certified;        /* 1: proved (control polygon in exact arithmetic, or the
+                             minimum above its rounding guard) */
+} ts_constraint_report;
+TS_API void ts_constraint_report_init(ts_constraint_report *r);
+
+/* Number of constraint records the spline was built with (0 for none). */
+TS_API size_t ts_spline_constraints(const ts_spline *s);
+/* The report of record k on interval i.  TS_OK, TS_ERR_NULL, TS_ERR_INDEX
+ * (k or i out of range), TS_ERR_VERSION (rep->struct_size; checked first,
+ * rep untouched). */
+TS_API ts_status ts_spline_constraint_report(const ts_spline *s, size_t k, size_t i,
+                                             ts_constraint_report *rep);
 
 /* ---- evaluation ---------------------------------------------------- */
 

@@ -153,6 +153,57 @@ static double per_interval(const double *arr, size_t n_arr, double scalar, size_
     return arr && i < n_arr ? arr[i] : scalar;
 }
 
+/* TS_ERR_CONDITION: which record and which necessary condition
+ * (docs/method.md §13.1), found again by the data checks alone. */
+static int condition_sentence(out *o, const data *d, const ts_error *e)
+{
+    const ts_spline_options *opt = d->opt;
+    size_t i = e->index, n = d->n;
+    if (!opt->constraints || !opt->n_constraints || n < 2 || !d->c->x || !d->c->f)
+        return 0;
+    ts_constraint_failure fl;
+    memset(&fl, 0, sizeof fl);
+    if (ts__con_conditions(d->c->x, d->c->f, n - 1, opt, &fl) != TS_ERR_CONDITION ||
+        fl.index != i || fl.constraint >= opt->n_constraints)
+        return 0;
+    const ts_constraint *c = &opt->constraints[fl.constraint];
+    const char *kind = ts__vocab_name(TS_VOCAB_CONSTRAINT, (int)c->kind);
+    switch (fl.condition) {
+    case TS_CONDITION_CONVEX_DATA:
+    case TS_CONDITION_CONCAVE_DATA:
+        if (!(i > 0 && i + 1 < n))
+            return 0;
+        point_xf(o, d, i);
+        put(o, ": the data are not %s here: the secant before it is ", kind);
+        num(o, (d->c->f[i] - d->c->f[i - 1]) / (d->c->x[i] - d->c->x[i - 1]));
+        put(o, ", the secant after it ");
+        num(o, (d->c->f[i + 1] - d->c->f[i]) / (d->c->x[i + 1] - d->c->x[i]));
+        break;
+    case TS_CONDITION_MONOTONE_DATA:
+        point_xf(o, d, i);
+        put(o, ": the data change direction here; %s needs monotone data", kind);
+        break;
+    case TS_CONDITION_INSIDE_BOUND:
+        point_xf(o, d, i);
+        put(o, " is not %s the %s bound", c->kind == TS_CONSTRAINT_LOWER ? "above" : "below", kind);
+        break;
+    case TS_CONDITION_SECANT_SLOPE:
+        if (!(i + 1 < n))
+            return 0;
+        interval_text(o, d, i);
+        put(o, ": its secant ");
+        num(o, (d->c->f[i + 1] - d->c->f[i]) / (d->c->x[i + 1] - d->c->x[i]));
+        put(o, " is beyond the %s bound ", kind);
+        num(o, c->value);
+        put(o, " (the slope equals the secant somewhere in the interval)");
+        break;
+    default:
+        return 0;
+    }
+    put(o, " (constraint %zu, %s)", fl.constraint, kind);
+    return 1;
+}
+
 /* The sentence of a spline failure; 0 when the generic form applies. */
 static int spline_sentence(out *o, const data *d, const ts_error *e)
 {
@@ -351,7 +402,22 @@ static int spline_sentence(out *o, const data *d, const ts_error *e)
         }
         return 1;
     }
+    case TS_ERR_CONDITION:
+        return condition_sentence(o, d, e);
+    case TS_ERR_UNPROVEN:
+        if (!interval || !opt->n_constraints)
+            return 0;
+        interval_text(o, d, i);
+        put(o, ": no alpha + beta up to 2^60 times the first certifies the constraints here "
+               "(the search gave up; infeasibility is not proven)");
+        return 1;
     case TS_ERR_INFEASIBLE:
+        if (point && opt->n_constraints) {
+            point_x(o, d, i);
+            put(o, ": the constraints make both neighbouring intervals straight lines of "
+                   "different slopes; no curve with a continuous slope meets them");
+            return 1;
+        }
         if (!interval)
             return 0;
         interval_text(o, d, i);

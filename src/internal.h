@@ -20,9 +20,11 @@
  *       certificate.c  interval gaps, hull and control-value proofs (read-only)
  *       surface_net.c  surfaces: control nets, patch bases, control gaps
  *   L3  kernels.c   batch evaluation kernels
+ *       constrain.c constraint records: conditions, slopes, a_i, certificates
  *       repair.c    certification at build time: raise β until certified
  *       surface_cert.c  surfaces: the certificate of one patch (subdivision)
  *   L4  spline.c, curve.c, eval.c, report.c, accuracy.c: the public API
+ *       constraint.c: the constraint records' public functions
  *       find.c, solve.c: interval search, the roots of S − y
  *       surface.c, surface_eval.c: the public surface API
  *       histo.c: rates from bin totals (the public histogram API)
@@ -105,6 +107,13 @@ struct ts_spline {
                           * (docs/method.md §4), the one expression every user of κ reads */
     unsigned char *term; /* n: ts_term */
     double *cum;         /* n+1: cum[i] = ∫_{x0}^{x_i} S dx (set last by spline.c) */
+    /* constraint records (docs/method.md §13), an owned copy (polyline points
+     * in con_pts); NULL / 0 when built without */
+    size_t ncon;
+    ts_constraint *con;
+    double *con_pts;
+    int *con_bind;       /* n: the record whose a_i requirement was the largest, −1 none */
+    int *con_by;         /* n+1: the record that changed slope d_j last, −1 none */
 };
 
 /* docs/method.md §11.  Node (i, j) at j*(nx+1) + i; patch (i, j) at j*nx + i. */
@@ -836,6 +845,32 @@ ts_status ts__repair_search(const ts__repair_ops *o, size_t i, double al, double
 ts_status ts__certify_range(ts_spline *sp, const ts_spline_options *opt, size_t i0, size_t i1,
                             ts_error *err);
 void ts__certify_done(ts_spline *sp, const ts_spline_options *opt);
+
+/* ---- constrain.c (docs/method.md §13) ------------------------------------ */
+/* Records of opt (n_constraints > 0) valid for n intervals: TS_ERR_NULL,
+ * TS_ERR_OPTION (also a form other than geometric, a shape), TS_ERR_VERSION,
+ * TS_ERR_NONFINITE, TS_ERR_UNSORTED, TS_ERR_LENGTH; fail (may be NULL) too. */
+ts_status ts__con_validate(const ts_spline_options *o, size_t n, ts_error *err,
+                           ts_constraint_failure *fail);
+/* The data's necessary conditions (TS_ERR_CONDITION) and the slopes d[0..n]
+ * (estimates in, constrained out; by[j] the record that changed d_j, −1);
+ * TS_ERR_INFEASIBLE where the required slopes exclude each other. */
+ts_status ts__con_prepare(const double *x, const double *f, size_t n, const ts_spline_options *o,
+                          double *d, int *by, ts_error *err, ts_constraint_failure *fail);
+/* Validation and the necessary conditions alone (no slopes, no allocation):
+ * the sentence of TS_ERR_CONDITION (errmsg.c). */
+ts_status ts__con_conditions(const double *x, const double *f, size_t n,
+                             const ts_spline_options *o, ts_constraint_failure *fail);
+/* beta[0..n) from the closed-form requirements; bind[i] the record that set it. */
+void ts__con_betas(const double *x, const double *f, size_t n, const ts_spline_options *o,
+                   const double *d, double *beta, int *bind);
+/* Certify every interval against the records, doubling a_i where one
+ * fails (controls recomputed; the caller recomputes the integrals);
+ * TS_ERR_UNPROVEN. */
+ts_status ts__con_certify(ts_spline *sp, const ts_constraint *cs, size_t nc, ts_error *err,
+                          ts_constraint_failure *fail);
+/* The report of stored record k on interval i (struct_size checked by the caller). */
+void ts__con_report(const ts_spline *sp, size_t k, size_t i, ts_constraint_report *rep);
 
 /* ==== L4 ============================================================ */
 

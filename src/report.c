@@ -52,6 +52,7 @@ ts_status ts_spline_report(const ts_spline *s, size_t i, ts_interval_report *rep
     if (i >= s->n)
         return TS_ERR_INDEX;
     report_base(s, i, rep);
+    rep->certified = s->ncon != 0; /* built with constraint records: each proven (§13) */
     if (s->shape == TS_SHAPE_NONE)
         return TS_OK;
     double B[4], X[4];
@@ -82,7 +83,7 @@ int ts_spline_certified(const ts_spline *s)
 {
     /* construction of a shaped spline fails unless every interval is
      * certified (ts__certify_done) */
-    return s && s->shape != TS_SHAPE_NONE ? 1 : 0;
+    return s && (s->shape != TS_SHAPE_NONE || s->ncon) ? 1 : 0;
 }
 
 ts_status ts_spline_certify(const ts_spline *s, const ts_line *lower, const ts_line *upper,

@@ -22,6 +22,8 @@ void ts__options_defaults(ts_spline_options *opt)
     opt->margin = TS_DEFAULT_MARGIN;
     opt->certify = 1;
     opt->extrapolate = TS_EXTRAP_ERROR;
+    opt->constraints = NULL;
+    opt->n_constraints = 0;
 }
 
 /* Overflow-checked a * b, b > 0. */
@@ -250,8 +252,161 @@ static ts_status build(ts_spline *sp, const ts_spline_options *o, const double *
     return TS_OK;
 }
 
+/* The constraint records' slopes, betas and their bookkeeping (docs/method.md
+ * §13), made before the spline is allocated; freed by con_prep_free. */
+typedef struct con_prep {
+    double *d, *beta;
+    int *by, *bind;
+} con_prep;
+
+static void con_prep_free(con_prep *p)
+{
+    free(p->d);
+    free(p->beta);
+    free(p->by);
+    free(p->bind);
+}
+
+static ts_status con_begin(const double *x, const double *f, size_t np, const ts_spline_options *o,
+                           con_prep *p, ts_spline_options *o2, ts_error *err,
+                           ts_constraint_failure *fail)
+{
+    size_t n = np - 1;
+    ts_status st = ts__con_validate(o, n, err, fail);
+    if (st != TS_OK)
+        return st;
+    if ((o->alphas && o->n_alphas != n) || (o->margins && o->n_margins != n))
+        return ts__fail(err, TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
+    if (o->slopes == TS_SLOPES_USER && !o->user_slopes)
+        return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
+    if (o->slopes == TS_SLOPES_USER && o->n_user_slopes != np)
+        return ts__fail(err, TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
+    if (o->slopes == TS_SLOPES_PERIODIC && !(f[0] == f[n]))
+        return ts__fail(err, TS_ERR_PERIODIC, n, TS_WHERE_POINT);
+    for (size_t i = 0; i < n; i++)
+        if (!ts__margin_ok(o->margins ? o->margins[i] : o->margin))
+            return ts__fail(err, TS_ERR_MARGIN, i, TS_WHERE_INTERVAL);
+    size_t bd, bi;
+    if (!mul_ok(np, sizeof(double), &bd) || !mul_ok(np, sizeof(int), &bi))
+        return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
+    p->d = ts__malloc(bd);
+    p->beta = ts__malloc(bd);
+    p->by = ts__malloc(bi);
+    p->bind = ts__malloc(bi);
+    if (!p->d || !p->beta || !p->by || !p->bind)
+        return ts__fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
+    if (o->slopes == TS_SLOPES_USER)
+        memcpy(p->d, o->user_slopes, bd);
+    else
+        ts__slopes_range(o->slopes, x, f, np, p->d, 0, np);
+    for (size_t j = 0; j < np; j++)
+        if (!isfinite(p->d[j]))
+            return ts__fail(err, o->slopes == TS_SLOPES_USER ? TS_ERR_NONFINITE : TS_ERR_SLOPE_OVERFLOW,
+                            j, TS_WHERE_POINT);
+    if ((st = ts__con_prepare(x, f, n, o, p->d, p->by, err, fail)) != TS_OK)
+        return st;
+    ts__con_betas(x, f, n, o, p->d, p->beta, p->bind);
+    *o2 = *o;
+    o2->slopes = TS_SLOPES_USER;
+    o2->user_slopes = p->d;
+    o2->n_user_slopes = np;
+    o2->betas = p->beta;
+    o2->n_betas = n;
+    o2->constraints = NULL;
+    o2->n_constraints = 0;
+    return TS_OK;
+}
+
+/* After build: certify and repair, the integrals again, and the records
+ * copied into the spline (which owns them). */
+static ts_status con_finish(ts_spline *sp, const ts_spline_options *o, con_prep *p, ts_error *err,
+                            ts_constraint_failure *fail)
+{
+    ts_status st = ts__con_certify(sp, o->constraints, o->n_constraints, err, fail);
+    if (st != TS_OK)
+        return st;
+    (void)cumulate(sp, 0, sp->n, 0.0);
+    size_t nc = o->n_constraints, npts = 0, bytes, bp;
+    for (size_t k = 0; k < nc; k++)
+        if (o->constraints[k].bound == TS_BOUND_POLYLINE)
+            npts += 2 * o->constraints[k].n_poly; /* each <= the caller's arrays: no overflow */
+    if (!mul_ok(nc, sizeof(ts_constraint), &bytes) || !mul_ok(npts ? npts : 1, sizeof(double), &bp))
+        return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
+    sp->con = ts__malloc(bytes);
+    sp->con_pts = ts__malloc(bp);
+    if (!sp->con || !sp->con_pts)
+        return ts__fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
+    memcpy(sp->con, o->constraints, bytes);
+    double *q = sp->con_pts;
+    for (size_t k = 0; k < nc; k++) {
+        ts_constraint *c = &sp->con[k];
+        if (c->bound != TS_BOUND_POLYLINE) {
+            c->px = c->py = NULL;
+            continue;
+        }
+        memcpy(q, c->px, c->n_poly * sizeof *q);
+        memcpy(q + c->n_poly, c->py, c->n_poly * sizeof *q);
+        c->px = q;
+        c->py = q + c->n_poly;
+        q += 2 * c->n_poly;
+    }
+    sp->ncon = nc;
+    sp->con_by = p->by;
+    sp->con_bind = p->bind;
+    p->by = p->bind = NULL;
+    return TS_OK;
+}
+
+static ts_status spline_new(const double *x, const double *f, size_t n_points,
+                            const ts_spline_options *opt, ts_spline **out, ts_error *err,
+                            ts_constraint_failure *fail);
+
 ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
                         const ts_spline_options *opt, ts_spline **out, ts_error *err)
+{
+    return spline_new(x, f, n_points, opt, out, err, NULL);
+}
+
+static void failure_reset(ts_constraint_failure *f)
+{
+    memset(f, 0, sizeof *f);
+    f->struct_size = sizeof *f;
+    f->status = TS_OK;
+    f->constraint = TS_NO_INDEX;
+    f->index = TS_NO_INDEX;
+    f->where = TS_WHERE_NONE;
+    f->condition = TS_CONDITION_NONE;
+}
+
+void ts_constraint_failure_init(ts_constraint_failure *f)
+{
+    if (f)
+        failure_reset(f);
+}
+
+ts_status ts_constraints_diagnose(const double *x, const double *f, size_t n_points,
+                                  const ts_spline_options *opt, ts_constraint_failure *fail)
+{
+    if (!fail)
+        return TS_ERR_NULL;
+    if (fail->struct_size != sizeof *fail)
+        return TS_ERR_VERSION;
+    failure_reset(fail);
+    ts_error e;
+    ts_spline *s = NULL;
+    ts_status st = spline_new(x, f, n_points, opt, &s, &e, fail);
+    spline_release(s);
+    fail->status = st;
+    if (st != TS_OK && fail->index == TS_NO_INDEX) {
+        fail->index = e.index;
+        fail->where = e.where;
+    }
+    return st;
+}
+
+static ts_status spline_new(const double *x, const double *f, size_t n_points,
+                            const ts_spline_options *opt, ts_spline **out, ts_error *err,
+                            ts_constraint_failure *fail)
 {
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
     if (out)
@@ -293,10 +448,20 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
     if (st != TS_OK)
         return ts__fail(err, st, at, TS_WHERE_POINT);
 
+    con_prep prep = {NULL, NULL, NULL, NULL};
+    ts_spline_options o2;
+    if (opt->n_constraints) {
+        st = con_begin(x, f, n_points, opt, &prep, &o2, err, fail);
+        if (st != TS_OK) {
+            con_prep_free(&prep);
+            return st;
+        }
+    }
     ts_spline *sp = ts__calloc(1, sizeof *sp);
     double *blk = sp ? ts__alloc_block(bytes) : NULL;
     if (!blk) {
         free(sp);
+        con_prep_free(&prep);
         return ts__fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
     }
     sp->n = n;
@@ -316,7 +481,10 @@ ts_status ts_spline_new(const double *x, const double *f, size_t n_points,
     if (geo)
         sp->kappa = p, p += n;
     sp->term = (unsigned char *)p;
-    st = build(sp, opt, x, f, err);
+    st = build(sp, opt->n_constraints ? &o2 : opt, x, f, err);
+    if (st == TS_OK && opt->n_constraints)
+        st = con_finish(sp, opt, &prep, err, fail);
+    con_prep_free(&prep);
     if (st != TS_OK) {
         spline_release(sp);
         return st;
@@ -330,6 +498,10 @@ static void spline_release(ts_spline *s)
     if (!s)
         return;
     free(s->x);
+    free(s->con);
+    free(s->con_pts);
+    free(s->con_bind);
+    free(s->con_by);
     free(s);
 }
 

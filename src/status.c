@@ -46,6 +46,7 @@ static const char *const ts_messages[TS_STATUS_COUNT_] = {
     [TS_ERR_UNPROVEN] = "no certified beta found, and no proof that none exists (C1 search gave up)",
     [TS_ERR_WIDTH] = "an interval width overflows, or underflows below the smallest normal double",
     [TS_ERR_VERSION] = "a struct's struct_size does not match this library (use its *_init)",
+    [TS_ERR_CONDITION] = "the data violate a necessary condition of a constraint",
 };
 
 const char *ts_strerror(ts_status status)

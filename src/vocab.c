@@ -38,6 +38,7 @@ static const char *const status_names[] = {
     [TS_ERR_PRECISION] = "TS_ERR_PRECISION",
     [TS_ERR_UNPROVEN] = "TS_ERR_UNPROVEN",
     [TS_ERR_VERSION] = "TS_ERR_VERSION",
+    [TS_ERR_CONDITION] = "TS_ERR_CONDITION",
 };
 static const char *const form_names[] = {
     [TS_FORM_PAPER] = "paper", [TS_FORM_C1] = "c1", [TS_FORM_GEOMETRIC] = "geometric"};
@@ -74,6 +75,24 @@ static const char *const where_names[] = {
     [TS_WHERE_NONE] = "none", [TS_WHERE_POINT] = "point", [TS_WHERE_INTERVAL] = "interval",
     [TS_WHERE_QUERY] = "query"};
 
+static const char *const constraint_names[] = {
+    [TS_CONSTRAINT_CONVEX] = "convex",         [TS_CONSTRAINT_CONCAVE] = "concave",
+    [TS_CONSTRAINT_INCREASING] = "increasing", [TS_CONSTRAINT_DECREASING] = "decreasing",
+    [TS_CONSTRAINT_LOWER] = "lower",           [TS_CONSTRAINT_UPPER] = "upper",
+    [TS_CONSTRAINT_SLOPE_MIN] = "slope-min",   [TS_CONSTRAINT_SLOPE_MAX] = "slope-max",
+    [TS_CONSTRAINT_SLOPE_ABS] = "slope-abs"};
+static const char *const bound_names[] = {[TS_BOUND_CONSTANT] = "constant",
+                                          [TS_BOUND_POLYLINE] = "polyline"};
+static const char *const condition_names[] = {
+    [TS_CONDITION_NONE] = "none",
+    [TS_CONDITION_CONVEX_DATA] = "convex-data",
+    [TS_CONDITION_CONCAVE_DATA] = "concave-data",
+    [TS_CONDITION_MONOTONE_DATA] = "monotone-data",
+    [TS_CONDITION_INSIDE_BOUND] = "inside-bound",
+    [TS_CONDITION_SECANT_SLOPE] = "secant-slope",
+    [TS_CONDITION_SLOPE_CONFLICT] = "slope-conflict",
+    [TS_CONDITION_UNPROVEN] = "unproven"};
+
 /* A new enumerator without its name fails to compile here. */
 _Static_assert(TS_NELEM(status_names) == TS_STATUS_COUNT_, "a status without a name");
 _Static_assert(TS_NELEM(form_names) == TS_FORM_GEOMETRIC + 1, "a form without a name");
@@ -84,6 +103,9 @@ _Static_assert(TS_NELEM(param_names) == TS_PARAM_UNIFORM + 1, "a parameterisatio
 _Static_assert(TS_NELEM(surface_shape_names) == TS_SURFACE_RANGE + 1, "a surface shape without a name");
 _Static_assert(TS_NELEM(term_names) == TS_TERM_GEOMETRIC + 1, "a term without a name");
 _Static_assert(TS_NELEM(where_names) == TS_WHERE_QUERY + 1, "a where without a name");
+_Static_assert(TS_NELEM(constraint_names) == TS_CONSTRAINT_COUNT_, "a constraint without a name");
+_Static_assert(TS_NELEM(bound_names) == TS_BOUND_POLYLINE + 1, "a bound without a name");
+_Static_assert(TS_NELEM(condition_names) == TS_CONDITION_UNPROVEN + 1, "a condition without a name");
 
 typedef struct vocab_table {
     const char *const *name;
@@ -100,6 +122,9 @@ static const vocab_table tables[TS_VOCAB_COUNT_] = {
     [TS_VOCAB_SURFACE_SHAPE] = {surface_shape_names, (int)TS_NELEM(surface_shape_names)},
     [TS_VOCAB_TERM] = {term_names, (int)TS_NELEM(term_names)},
     [TS_VOCAB_WHERE] = {where_names, (int)TS_NELEM(where_names)},
+    [TS_VOCAB_CONSTRAINT] = {constraint_names, (int)TS_NELEM(constraint_names)},
+    [TS_VOCAB_BOUND] = {bound_names, (int)TS_NELEM(bound_names)},
+    [TS_VOCAB_CONDITION] = {condition_names, (int)TS_NELEM(condition_names)},
 };
 
 const char *ts__vocab_name(ts_vocab vocab, int value)

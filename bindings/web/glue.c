@@ -31,6 +31,8 @@ ts_status tsw_curve_new(const double *pts, size_t n, size_t dim, int param, int 
                         double margin, ts_curve **out, ts_error *err);
 void tsw_defaults(double *out);
 void tsw_curve_defaults(double *out);
+void tsw_constraints(const double *rec, size_t n, const double *pts);
+ts_status tsw_constraint_report(const ts_spline *s, size_t k, size_t i, double *out);
 ts_status tsw_report(const ts_spline *s, size_t i, double *row);
 ts_status tsw_certify(const ts_spline *s, int has_lower, double lm, double lc, int has_upper,
                       double um, double uc, double *rows, ts_error *err);
@@ -77,6 +79,33 @@ static void put_row(const ts_interval_report *r, double *row)
     row[16] = (double)r->certified;
 }
 
+/* Constraint records for the next tsw_spline_new (docs/method.md §13): rec
+ * holds 5 doubles per record (kind, value, first, count, n_poly), pts the
+ * polylines' x then y, record after record; taken by that one call. */
+static const double *con_rec, *con_pts;
+static size_t con_n;
+void tsw_constraints(const double *rec, size_t n, const double *pts)
+{
+    con_rec = rec;
+    con_n = n;
+    con_pts = pts;
+}
+
+/* The report of record k on interval i: out[5] = in_scope, active, gap, at,
+ * certified. */
+ts_status tsw_constraint_report(const ts_spline *s, size_t k, size_t i, double *out)
+{
+    ts_constraint_report r;
+    ts_constraint_report_init(&r);
+    ts_status st = ts_spline_constraint_report(s, k, i, &r);
+    out[0] = r.in_scope;
+    out[1] = r.active;
+    out[2] = r.gap;
+    out[3] = r.at;
+    out[4] = r.certified;
+    return st;
+}
+
 ts_status tsw_spline_new(const double *x, const double *f, size_t n, int form, int slopes,
                          const double *user_slopes, size_t n_user, double alpha,
                          const double *alphas, size_t n_alphas, double beta, const double *betas,
@@ -84,6 +113,24 @@ ts_status tsw_spline_new(const double *x, const double *f, size_t n, int form, i
                          double margin, const double *margins, size_t n_margins, int certify,
                          int extrap, ts_spline **out, ts_error *err)
 {
+    ts_constraint cons[64];
+    size_t nc = con_n < 64 ? con_n : 64;
+    const double *pts = con_pts;
+    for (size_t k = 0; k < nc; k++) {
+        const double *r = con_rec + 5 * k;
+        ts_constraint_init(&cons[k], (ts_constraint_kind)r[0]);
+        cons[k].value = r[1];
+        cons[k].first = (size_t)r[2];
+        cons[k].count = (size_t)r[3];
+        if (r[4] > 0) {
+            cons[k].bound = TS_BOUND_POLYLINE;
+            cons[k].n_poly = (size_t)r[4];
+            cons[k].px = pts;
+            cons[k].py = pts + cons[k].n_poly;
+            pts += 2 * cons[k].n_poly;
+        }
+    }
+    con_n = 0;
     ts_spline_options o;
     ts_spline_options_init(&o);
     o.form = (ts_form)form;
@@ -106,6 +153,8 @@ ts_status tsw_spline_new(const double *x, const double *f, size_t n, int form, i
     o.n_margins = n_margins;
     o.certify = certify;
     o.extrapolate = (ts_extrap)extrap;
+    o.constraints = nc ? cons : NULL;
+    o.n_constraints = nc;
     ts_status st = ts_spline_new(x, f, n, &o, out, err);
     if (st != TS_OK && err) {
         ts_error_context ctx;

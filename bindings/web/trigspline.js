@@ -29,13 +29,14 @@ const STATUS_NAMES = [];
 const WHERE = []; // null, 'point', 'interval', 'query'
 export const NAMES = {}; // form, slopes, shape, extrapolate, term, param
 // ts_vocab (include/trigspline.h)
-const VOCAB = { status: 0, form: 1, slopes: 2, shape: 3, extrapolate: 4, param: 5, term: 7, where: 8 };
+const VOCAB = { status: 0, form: 1, slopes: 2, shape: 3, extrapolate: 4, param: 5, term: 7, where: 8,
+  constraint: 9 };
 function readNames(w, cstring) {
   if (STATUS_NAMES.length) return;
   const list = (v) => Array.from({ length: w.ts_vocab_count(v) }, (_, i) => cstring(w.ts_vocab_name(v, i)));
   STATUS_NAMES.push(...list(VOCAB.status));
   WHERE.push(null, ...list(VOCAB.where).slice(1));
-  for (const kind of ['form', 'slopes', 'shape', 'extrapolate', 'term', 'param']) {
+  for (const kind of ['form', 'slopes', 'shape', 'extrapolate', 'term', 'param', 'constraint']) {
     NAMES[kind] = Object.freeze(list(VOCAB[kind]));
   }
   Object.freeze(STATUS_NAMES);
@@ -70,6 +71,62 @@ function numbersOf(a, what, dim = 1) {
     }
   }
   return a;
+}
+// Constraint records (docs/method.md §13; the command line's --constraint
+// SPEC strings, or {kind, value, points: [[x, y], ...], first, count}) as
+// the two arrays glue.c's tsw_constraints reads: 5 doubles per record
+// (kind, value, first, count, n_poly) and the polylines' x then y.
+const SPEC_OPS = [['slope>=', 'slope-min'], ['slope<=', 'slope-max'], ['abs-slope<=', 'slope-abs'],
+  ['|slope|<=', 'slope-abs'], ['slope-min=', 'slope-min'], ['slope-max=', 'slope-max'],
+  ['slope-abs=', 'slope-abs'], ['lower=', 'lower'], ['upper=', 'upper']];
+function constraintRecord(c) {
+  const bad = (why) => new TrigSplineError(11, `constraint ${JSON.stringify(c)}: ${why}`, null, null);
+  if (typeof c === 'object' && c !== null) {
+    const kind = NAMES.constraint.indexOf(c.kind);
+    if (kind < 0) throw bad(`kind must be one of ${NAMES.constraint.join(', ')}`);
+    return { kind, value: Number(c.value ?? 0), first: c.first ?? 0, count: c.count ?? 0, points: c.points ?? null };
+  }
+  if (typeof c !== 'string') throw bad('a SPEC string or an object');
+  const [spec, scope] = c.trim().split('@');
+  let first = 0, count = 0;
+  if (scope !== undefined) {
+    const m = /^(\d+)(-(\d*))?$/.exec(scope);
+    if (!m) throw bad('the scope is @I0-I1 (intervals)');
+    first = Number(m[1]);
+    count = m[2] === undefined ? 1 : m[3] === '' ? 0 : Number(m[3]) - first + 1;
+    if (count < 0) throw bad('the scope is @I0-I1 (intervals)');
+  }
+  const k = NAMES.constraint.indexOf(spec);
+  if (k >= 0 && k <= 3) return { kind: k, value: 0, first, count, points: null };
+  for (const [pre, name] of SPEC_OPS) {
+    if (!spec.startsWith(pre)) continue;
+    const val = spec.slice(pre.length), kind = NAMES.constraint.indexOf(name);
+    if ((name === 'lower' || name === 'upper') && val.startsWith('poly:')) {
+      const points = val.slice(5).split(';').map((p) => p.split(',').map(Number));
+      if (points.some((p) => p.length !== 2 || p.some(Number.isNaN))) throw bad('not a polyline X,Y;X,Y;...');
+      return { kind, value: 0, first, count, points };
+    }
+    const value = Number(val);
+    if (val.trim() === '' || Number.isNaN(value)) throw bad(`${JSON.stringify(val)} is not a number`);
+    return { kind, value, first, count, points: null };
+  }
+  throw bad('unknown constraint (convex, concave, increasing, decreasing, lower=C, upper=C, '
+    + 'lower=poly:X,Y;..., slope>=V, slope<=V, abs-slope<=V)');
+}
+function constraintArrays(list) {
+  if (list === undefined || list === null) return [null, null];
+  const recs = (Array.isArray(list) ? list : [list]).map(constraintRecord);
+  if (recs.length > 64) throw new TrigSplineError(10, 'at most 64 constraint records', null, null);
+  const rec = [], pts = [];
+  for (const r of recs) {
+    const np = r.points ? r.points.length : 0;
+    rec.push(r.kind, r.value, r.first, r.count, np);
+    if (np) {
+      for (const p of r.points) pts.push(Number(p[0]));
+      for (const p of r.points) pts.push(Number(p[1]));
+    }
+  }
+  return [rec, pts.length ? pts : null];
 }
 const dispose = Symbol.dispose ?? Symbol.for('Symbol.dispose');
 
@@ -236,7 +293,9 @@ class TrigSpline {
   // spline(x, f, options): options.form, .slopes (a name, or an array of
   // n_points user slopes), .alpha / .beta / .margin (a number, or an array with
   // one value per interval), .shape, .lower / .upper ({m, c}, or a number c
-  // for a constant line), .line (for above/below), .certify, .extrapolate.
+  // for a constant line), .line (for above/below), .certify, .extrapolate,
+  // .constraints (constraint records, docs/method.md §13: SPEC strings as the
+  // command line's --constraint, or {kind, value, points, first, count}).
   spline(x, f, options = {}) {
     const o = { ...this.defaults, ...options };
     numbersOf(x, 'x');
@@ -258,15 +317,16 @@ class TrigSpline {
       if (shape === 3) upper = line(o.line);
     }
     const alphas = arr(o.alpha), betas = arr(o.beta), margins = arr(o.margin);
+    const [rec, pts] = constraintArrays(o.constraints);
     const outP = this.alloc(4);
     this.resetError();
-    const st = this.withArrays([x, f, userSlopes, alphas, betas, margins], (px, pf, pu, pa, pb, pm) =>
-      this.w.tsw_spline_new(px, pf, n, this.enumValue('form', o.form), slopes, pu,
+    const st = this.withArrays([x, f, userSlopes, alphas, betas, margins, rec, pts], (px, pf, pu, pa, pb, pm, pr, pp) =>
+      (this.w.tsw_constraints(pr, rec ? rec.length / 5 : 0, pp), this.w.tsw_spline_new(px, pf, n, this.enumValue('form', o.form), slopes, pu,
         userSlopes ? userSlopes.length : 0, num(o.alpha, this.defaults.alpha), pa,
         alphas ? alphas.length : 0, num(o.beta, this.defaults.beta), pb, betas ? betas.length : 0,
         shape, lower[0], lower[1], upper[0], upper[1], num(o.margin, this.defaults.margin), pm,
         margins ? margins.length : 0, o.certify ? 1 : 0, this.enumValue('extrapolate', o.extrapolate),
-        outP, this.errPtr));
+        outP, this.errPtr)));
     const sp = this.u32(outP, 1)[0];
     this.w.free(outP);
     if (st !== 0) throw this.error(st);
@@ -541,6 +601,19 @@ export class Spline extends Handle {
       const st = ts.w.tsw_report(this.live(), i, p);
       if (st !== 0) { ts.resetError(); throw ts.error(st); }
       return rowObject(ts.f64(p, ROW));
+    } finally { ts.w.free(p); }
+  }
+  // Constraint records (docs/method.md §13): per record, per interval, null
+  // outside its scope or {active, gap, at, certified}.
+  constraintReport() {
+    const ts = this.ts, nc = ts.w.ts_spline_constraints(this.live()), p = ts.alloc(40);
+    try {
+      return Array.from({ length: nc }, (_, k) => Array.from({ length: this.n }, (_, i) => {
+        const st = ts.w.tsw_constraint_report(this.live(), k, i, p);
+        if (st !== 0) { ts.resetError(); throw ts.error(st); }
+        const v = ts.f64(p, 5);
+        return v[0] ? { active: !!v[1], gap: v[2], at: v[3], certified: !!v[4] } : null;
+      }));
     } finally { ts.w.free(p); }
   }
   // Certify against lines {lower, upper} ({m, c} or a constant): returns

@@ -48,7 +48,7 @@ int main(void)
         "TS_ERR_VIOLATED", "TS_ERR_GEOMETRIC", "TS_ERR_DIMENSION", "TS_ERR_INDEX",
         "TS_ERR_ZERO_SLOPE", "TS_ERR_SLOPE_OVERFLOW", "TS_ERR_TOO_LARGE",
         "TS_ERR_CONTROL_OVERFLOW", "TS_ERR_WIDTH", "TS_ERR_PRECISION", "TS_ERR_UNPROVEN",
-        "TS_ERR_VERSION"};
+        "TS_ERR_VERSION", "TS_ERR_CONDITION"};
     static const char *const form[] = {"paper", "c1", "geometric"};
     static const char *const slopes[] = {"arithmetic", "geometric", "harmonic", "fritsch-carlson",
                                          "akima", "makima", "user", "periodic", "steffen"};
@@ -61,6 +61,13 @@ int main(void)
                                        "upper-left", "upper-right", "monotone", "certify",
                                        "geometric"};
     static const char *const where[] = {"none", "point", "interval", "query"};
+    static const char *const constraint[] = {"convex", "concave", "increasing", "decreasing",
+                                             "lower", "upper", "slope-min", "slope-max",
+                                             "slope-abs"};
+    static const char *const bound[] = {"constant", "polyline"};
+    static const char *const condition[] = {"none", "convex-data", "concave-data",
+                                            "monotone-data", "inside-bound", "secant-slope",
+                                            "slope-conflict", "unproven"};
 #define LIST(v, a) check_list(v, a, (int)(sizeof(a) / sizeof((a)[0])), #v)
     LIST(TS_VOCAB_STATUS, status);
     LIST(TS_VOCAB_FORM, form);
@@ -71,6 +78,9 @@ int main(void)
     LIST(TS_VOCAB_SURFACE_SHAPE, sshape);
     LIST(TS_VOCAB_TERM, term);
     LIST(TS_VOCAB_WHERE, where);
+    LIST(TS_VOCAB_CONSTRAINT, constraint);
+    LIST(TS_VOCAB_BOUND, bound);
+    LIST(TS_VOCAB_CONDITION, condition);
 
     TH_CASE("enum values are the indices");
     int v = -1;

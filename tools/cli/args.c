@@ -16,6 +16,7 @@ void cli_opts_free(cli_opts *o)
     free(o->at_list);
     free(o->xcol);
     free(o->ycol);
+    cli_constraints_free(o);
     o->alphas = o->betas = NULL;
     o->at_list = NULL;
     o->xcol = o->ycol = NULL;

@@ -68,6 +68,8 @@ typedef struct cli_opts {
     ts_shape shape;
     int has_line, has_lower, has_upper;
     ts_line line, lower, upper;
+    ts_constraint *cons; /* --constraint, --constraints (owned; constraints.c) */
+    size_t n_cons;
 
     int alpha_set, beta_set, margin_set;
     double alpha, beta, margin;
@@ -558,6 +560,16 @@ void cli_curve_json(cli_json *j, const cli_opts *o, const cli_curve_run *cr);
 /* The plot of curve --svg into svg.  CLI_OK or CLI_IO (message printed). */
 int cli_curve_plot(const cli_opts *o, const cli_data *d, const cli_curve_run *cr,
                    tsu_plot_buf *svg);
+
+/* ---- constraints.c ----------------------------------------------------- */
+/* --constraint SPEC (docs/cli.md) appended to o->cons; CLI_OK or CLI_USAGE. */
+int cli_constraint_add(cli_opts *o, cli_cmd cmd, const char *name, const char *spec);
+/* --constraints FILE: a JSON array of SPEC strings or objects {"kind", "value",
+ * "points", "first", "count"}. */
+int cli_constraints_file(cli_opts *o, cli_cmd cmd, const char *name, const char *path);
+void cli_constraints_free(cli_opts *o);
+/* "constraints": per record, per interval {active, gap, at, certified} or null. */
+void cli_constraints_json(cli_json *j, const ts_spline *s);
 
 /* ---- surface_plot.c -------------------------------------------------- */
 /* The heatmap of surface s through the grid x, y, z (z[j*nx + i]) built with

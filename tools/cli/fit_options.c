@@ -146,8 +146,17 @@ int cli_fit_options(const cli_opts *o, ts_spline_options *opt)
         return cli_usage(o->cmd, "--beta/--betas only with --shape none: the %s scheme computes "
                                  "beta (use --alpha, --margin)",
                          cli_shape_name(sh));
-    if (sh == TS_SHAPE_NONE && o->margin_set)
+    if (sh == TS_SHAPE_NONE && o->margin_set && !o->n_cons)
         return cli_usage(o->cmd, "--margin only applies to a shape scheme (--shape ...)");
+    if (o->n_cons) {
+        if (sh != TS_SHAPE_NONE)
+            return cli_usage(o->cmd, "--constraint replaces --shape: give lower=, upper=, "
+                                     "increasing, ... as constraints");
+        if (o->form != TS_FORM_GEOMETRIC)
+            return cli_usage(o->cmd, "--constraint needs the geometric form");
+        opt->constraints = o->cons;
+        opt->n_constraints = o->n_cons;
+    }
     opt->shape = sh;
     opt->margin = o->margin;
     opt->beta = o->beta;

@@ -247,6 +247,18 @@ static int opt_line(const cli_optdef *d, cli_cmd cmd, const char *name, const ch
     return CLI_OK;
 }
 
+static int opt_constraint(const cli_optdef *d, cli_cmd cmd, const char *name, const char *s, void *o)
+{
+    (void)d;
+    return cli_constraint_add(OPTS(o), cmd, name, s);
+}
+static int opt_constraints(const cli_optdef *d, cli_cmd cmd, const char *name, const char *s,
+                           void *o)
+{
+    (void)d;
+    return cli_constraints_file(OPTS(o), cmd, name, s);
+}
+
 static int positive_list(cli_cmd cmd, const char *name, const char *s, int allow_zero,
                          double **out, size_t *n)
 {
@@ -665,6 +677,15 @@ const cli_optdef cli_optdefs[] = {
      PLAIN(opt_line, CLI_G_SHAPE, "lower line (alone: implies above)")},
     {ROW("--upper", NULL, "M,C", CLI_F | CLI_C, CLI_K_CUSTOM, OFF(upper), OFF(has_upper)),
      PLAIN(opt_line, CLI_G_SHAPE, "upper line (alone: implies below; with --lower: between)")},
+    {ROW("--constraint", NULL, "SPEC", CLI_F, CLI_K_CUSTOM, NOF, NOF),
+     PLAIN(opt_constraint, CLI_G_SHAPE,
+           "a constraint, certified per interval (repeatable): convex, concave, increasing, "
+           "decreasing, lower=C, upper=C, lower=poly:X,Y;X,Y;..., upper=poly:..., slope>=V, "
+           "slope<=V, abs-slope<=V; @I0-I1 limits it to those intervals")},
+    {ROW("--constraints", NULL, "FILE", CLI_F, CLI_K_CUSTOM, NOF, NOF),
+     PLAIN(opt_constraints, CLI_G_SHAPE,
+           "constraints from a JSON array of SPEC strings or {\"kind\", \"value\", "
+           "\"points\", \"first\", \"count\"} objects")},
     {ROW("--margin", NULL, "T", CLI_F, CLI_K_POS, OFF(margin), OFF(margin_set)),
      PLAIN(NULL, CLI_G_SHAPE, "margin t added to beta (default %D; shape schemes only)")},
     /* parameters */

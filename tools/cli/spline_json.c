@@ -75,6 +75,11 @@ void cli_spline_json(cli_json *j, const cli_opts *o, const ts_spline *s, ts_shap
     cli_json_end(j, ']');
     cli_json_nl(j);
 
+    if (ts_spline_constraints(s)) { /* docs/method.md §13: only with --constraint */
+        cli_constraints_json(j, s);
+        cli_json_nl(j);
+    }
+
     cli_json_key(j, "intervals");
     cli_json_begin(j, '[');
     for (size_t i = 0; i < n; i++) {

@@ -164,20 +164,22 @@ static PyObject *spline_new(PyObject *mod, PyObject *args, PyObject *kw)
     (void)mod;
     static char *kwlist[] = {"x", "f", "form", "slopes", "user_slopes", "alpha", "alphas",
                              "beta", "betas", "shape", "lower", "upper", "margin", "margins",
-                             "certify", "extrapolate", NULL};
+                             "certify", "extrapolate", "constraints", NULL};
     PyObject *ox, *of, *oform = Py_None, *oslopes = Py_None, *ous = Py_None, *oalpha = Py_None,
                        *oalphas = Py_None, *obeta = Py_None, *obetas = Py_None,
                        *olower = Py_None, *oupper = Py_None, *omargin = Py_None,
-                       *omargins = Py_None;
+                       *omargins = Py_None, *ocons = Py_None;
     int shape = 0, certify = 1, extrap = TS_EXTRAP_EXTEND;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|$OOOOOOOiOOOOii", kwlist, &ox, &of, &oform,
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "OO|$OOOOOOOiOOOOiiO", kwlist, &ox, &of, &oform,
                                      &oslopes, &ous, &oalpha, &oalphas, &obeta, &obetas, &shape,
-                                     &olower, &oupper, &omargin, &omargins, &certify, &extrap))
+                                     &olower, &oupper, &omargin, &omargins, &certify, &extrap,
+                                     &ocons))
         return NULL;
     ts_spline_options opt;
     ts_spline_options_init(&opt);
     PyArrayObject *ax = NULL, *af = NULL, *aus = NULL, *aal = NULL, *abe = NULL, *ama = NULL;
-    PyObject *result = NULL;
+    PyObject *result = NULL, *keep = NULL;
+    ts_constraint *cons = NULL;
     ax = as_vector(ox, "x");
     if (!ax)
         goto done;
@@ -214,6 +216,58 @@ static PyObject *spline_new(PyObject *mod, PyObject *args, PyObject *kw)
     opt.shape = (ts_shape)shape;
     opt.certify = certify;
     opt.extrapolate = (ts_extrap)extrap;
+    if (ocons != Py_None) {
+        /* docs/method.md §13: a sequence of (kind, value, px or None, py or None,
+         * first, count) */
+        PyObject *seq = PySequence_Fast(ocons, "constraints must be a sequence");
+        if (!seq)
+            goto done;
+        Py_ssize_t nc = PySequence_Fast_GET_SIZE(seq);
+        keep = PyList_New(0);
+        cons = PyMem_Calloc(nc ? (size_t)nc : 1, sizeof *cons);
+        if (!keep || !cons) {
+            Py_DECREF(seq);
+            if (!cons)
+                PyErr_NoMemory();
+            goto done;
+        }
+        for (Py_ssize_t k = 0; k < nc; k++) {
+            PyObject *opx, *opy;
+            int kind;
+            Py_ssize_t first, count;
+            ts_constraint_init(&cons[k], TS_CONSTRAINT_CONVEX);
+            if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(seq, k), "idOOnn", &kind,
+                                  &cons[k].value, &opx, &opy, &first, &count)) {
+                Py_DECREF(seq);
+                goto done;
+            }
+            cons[k].kind = (ts_constraint_kind)kind;
+            cons[k].first = (size_t)(first < 0 ? 0 : first);
+            cons[k].count = (size_t)(count < 0 ? 0 : count);
+            if (opx != Py_None) {
+                PyArrayObject *a = as_vector(opx, "constraint points x"), *b = NULL;
+                if (a)
+                    b = as_vector(opy, "constraint points y");
+                if (!a || !b || PyList_Append(keep, (PyObject *)a) < 0 ||
+                    PyList_Append(keep, (PyObject *)b) < 0) {
+                    Py_XDECREF(a);
+                    Py_XDECREF(b);
+                    Py_DECREF(seq);
+                    goto done;
+                }
+                cons[k].bound = TS_BOUND_POLYLINE;
+                cons[k].px = (const double *)PyArray_DATA(a);
+                cons[k].py = (const double *)PyArray_DATA(b);
+                cons[k].n_poly = (size_t)(PyArray_SIZE(a) < PyArray_SIZE(b) ? PyArray_SIZE(a)
+                                                                             : PyArray_SIZE(b));
+                Py_DECREF(a);
+                Py_DECREF(b);
+            }
+        }
+        Py_DECREF(seq);
+        opt.constraints = cons;
+        opt.n_constraints = (size_t)nc;
+    }
 
     const double *px = (const double *)PyArray_DATA(ax), *pf = (const double *)PyArray_DATA(af);
     size_t np_ = (size_t)PyArray_SIZE(ax);
@@ -245,6 +299,8 @@ done:
     Py_XDECREF(aal);
     Py_XDECREF(abe);
     Py_XDECREF(ama);
+    Py_XDECREF(keep);
+    PyMem_Free(cons);
     return result;
 }
 
@@ -526,6 +582,27 @@ static PyObject *spline_report(SplineHandle *self, PyObject *args)
     return report_tuple(&r);
 }
 
+/* constraint_report(k, i) -> (in_scope, active, gap, at, certified) (docs/method.md §13). */
+static PyObject *spline_constraint_report(SplineHandle *self, PyObject *args)
+{
+    Py_ssize_t k, i;
+    if (!PyArg_ParseTuple(args, "nn", &k, &i))
+        return NULL;
+    ts_constraint_report r;
+    ts_constraint_report_init(&r);
+    ts_status st = k < 0 || i < 0 ? TS_ERR_INDEX
+                                  : ts_spline_constraint_report(self->s, (size_t)k, (size_t)i, &r);
+    if (st != TS_OK)
+        return raise_status(st, (size_t)i, TS_WHERE_INTERVAL);
+    return Py_BuildValue("(iiddi)", r.in_scope, r.active, r.gap, r.at, r.certified);
+}
+
+static PyObject *spline_n_constraints(SplineHandle *self, void *closure)
+{
+    (void)closure;
+    return PyLong_FromSize_t(ts_spline_constraints(self->s));
+}
+
 /* certify(lower, upper) -> (ok, first violating interval or None, [report tuples]). */
 static PyObject *spline_certify(SplineHandle *self, PyObject *args)
 {
@@ -579,6 +656,8 @@ static PyMethodDef spline_methods[] = {
     {"solve", (PyCFunction)spline_solve, METH_VARARGS, "solve(y): x in [x0, xn] with S(x) = y"},
     {"control", (PyCFunction)spline_control, METH_NOARGS, "control() -> (B, X), shape (n, 4)"},
     {"report", (PyCFunction)spline_report, METH_VARARGS, "report(i) -> tuple"},
+    {"constraint_report", (PyCFunction)spline_constraint_report, METH_VARARGS,
+     "constraint_report(k, i) -> (in_scope, active, gap, at, certified)"},
     {"certify", (PyCFunction)spline_certify, METH_VARARGS, "certify(lower, upper)"},
     {"error_bound", (PyCFunction)spline_error_bound, METH_VARARGS,
      "error_bound(fprime_max, fsecond_max, exact_slopes)"},
@@ -593,6 +672,7 @@ static PyGetSetDef spline_getset[] = {
     {"intervals", (getter)spline_intervals, NULL, "number of intervals", NULL},
     {"form", (getter)spline_form, NULL, "ts_form", NULL},
     {"shape", (getter)spline_shape, NULL, "ts_shape", NULL},
+    {"n_constraints", (getter)spline_n_constraints, NULL, "constraint records", NULL},
     {"certified", (getter)spline_certified, NULL, "ts_spline_certified", NULL},
     {NULL, NULL, NULL, NULL, NULL}};
 
@@ -1624,6 +1704,7 @@ PyMODINIT_FUNC PyInit__core(void)
         PyModule_AddIntConstant(m, "VOCAB_SURFACE_SHAPE", TS_VOCAB_SURFACE_SHAPE) < 0 ||
         PyModule_AddIntConstant(m, "VOCAB_TERM", TS_VOCAB_TERM) < 0 ||
         PyModule_AddIntConstant(m, "VOCAB_WHERE", TS_VOCAB_WHERE) < 0 ||
+        PyModule_AddIntConstant(m, "VOCAB_CONSTRAINT", TS_VOCAB_CONSTRAINT) < 0 ||
         PyModule_AddIntConstant(m, "MODE_EXTEND", MODE_EXTEND) < 0 ||
         PyModule_AddIntConstant(m, "MODE_CLAMP", MODE_CLAMP) < 0 ||
         PyModule_AddIntConstant(m, "MODE_LINEAR", MODE_LINEAR) < 0 ||

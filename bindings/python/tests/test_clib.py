@@ -29,7 +29,8 @@ class Options(ctypes.Structure):  # ts_spline_options, field by field (include/t
                 ("betas", dp), ("n_betas", ctypes.c_size_t), ("shape", ctypes.c_int),
                 ("lower", Line), ("upper", Line), ("margin", ctypes.c_double),
                 ("margins", dp), ("n_margins", ctypes.c_size_t), ("certify", ctypes.c_int),
-                ("extrapolate", ctypes.c_int)]
+                ("extrapolate", ctypes.c_int), ("constraints", ctypes.c_void_p),
+                ("n_constraints", ctypes.c_size_t)]
 
 
 class Error(ctypes.Structure):

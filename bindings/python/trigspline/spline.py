@@ -5,7 +5,7 @@ from typing import Any, Optional, Tuple, Union
 
 import numpy as np
 
-from . import _core, _options
+from . import _constraints, _core, _options
 from ._options import FORMS, SHAPES, SLOPES, TERMS
 from ._util import float_array, is_scalar, num, to_float
 from .errors import (_S, TrigsplineError, domain_error, library_error, simple_error,
@@ -182,6 +182,15 @@ class Spline:
     certify : bool, default ${certify}
         ``False`` skips the exact certificate where the scheme is a proof by
         itself.
+    constraints : list, optional
+        Constraint records certified per interval (docs/method.md §13;
+        geometric form, no ``shape``): SPEC strings as the command line's
+        ``--constraint`` (``'convex'``, ``'concave'``, ``'increasing'``,
+        ``'decreasing'``, ``'lower=C'``, ``'upper=C'``,
+        ``'lower=poly:X,Y;X,Y;...'``, ``'slope>=V'``, ``'slope<=V'``,
+        ``'abs-slope<=V'``, with an optional scope ``'@I0-I1'``) or dicts
+        ``{"kind", "value", "points", "first", "count"}``.  See
+        ``constraint_report``.
     line, slopes_values
         Deprecated: ``line`` is ``lower`` (``'above'``) or ``upper``
         (``'below'``); ``slopes_values`` is ``slopes`` given an array.
@@ -204,7 +213,7 @@ class Spline:
                  lower: Any = None, upper: Any = None, alpha: Any = None, beta: Any = None,
                  margin: Any = None, slopes: Any = None, form: Optional[str] = None,
                  certify: Optional[bool] = None, line: Optional[Tuple[float, float]] = None,
-                 slopes_values: ArrayLike = None) -> None:
+                 slopes_values: ArrayLike = None, constraints: Any = None) -> None:
         if np.iscomplexobj(x):
             raise TrigsplineError(_S.OPTION, "x is complex; the abscissae must be real")
         # complex f (as SciPy): the real and imaginary parts are two real
@@ -308,6 +317,10 @@ class Spline:
                                  "(one per point)")
             opts["slopes"] = SLOPES.index(sname)
             kwargs["slopes"] = sname
+        if constraints is not None:
+            # docs/method.md §13: records certified per interval (geometric form)
+            opts["constraints"] = _constraints.records(constraints)
+            kwargs["constraints"] = constraints
         self._kwargs = kwargs
         self._axis = ax
         self._shape = shp
@@ -685,6 +698,25 @@ class Spline:
         of the interval's two data values; docs/method.md §5.9)."""
         h = self._h[0]
         return [_report_dict(h.report(i)) for i in range(self._n)]
+
+    def constraint_report(self):
+        """Per constraint record (in the order of ``constraints=``), per
+        interval (first series): ``None`` outside the record's scope, else a
+        dict with ``active`` (it set α + β or changed a slope there), ``gap``
+        (the exact minimum over the interval of S'' for 'convex', −S''
+        'concave', S' 'increasing', S − bound 'lower', bound − S 'upper',
+        S' − V 'slope-min', V − S' 'slope-max', V − |S'| 'slope-abs'), ``at``
+        (where) and ``certified``; docs/method.md §13."""
+        h = self._h[0] if self._h else None
+        out = []
+        for k in range(h.n_constraints if h is not None else 0):
+            row = []
+            for i in range(self._n):
+                scope, active, gap, at, cert = h.constraint_report(k, i)
+                row.append({"active": bool(active), "gap": gap, "at": at,
+                            "certified": bool(cert)} if scope else None)
+            out.append(row)
+        return out
 
     def certify(self, lower=None, upper=None, *, report: bool = False):
         """Exact check that lower < S < upper on every interval (``ts_spline_certify``).

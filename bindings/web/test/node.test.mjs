@@ -190,6 +190,11 @@ test('every status the library can return reaches JavaScript as a TrigSplineErro
   t(() => ts.spline(x, [1, 10.3, 21, 31], { ...P, shape: 'above', lower: { m: 10, c: 0 }, alpha: 10 }), 'TS_ERR_INFEASIBLE', 0, 'interval');
   t(() => ts.spline(x, f, { form: 'geometric', alpha: 0.1, beta: 0 }), 'TS_ERR_GEOMETRIC', 0, 'interval');
   t(() => ts.spline(x, [1, 0, 1, 2], { ...P, shape: 'positive', slopes: [0, -1, 0, 0] }), 'TS_ERR_ZERO_SLOPE', 1, 'point');
+  // constraint records (docs/method.md §13): data that are not convex at point 1;
+  // a polyline peak above flat data, which the search gives up on
+  t(() => ts.spline(x, f, { constraints: ['convex'] }), 'TS_ERR_CONDITION', 1, 'point');
+  t(() => ts.spline([0, 1], [1, 1], { constraints: ['lower=poly:0,0;0.5,1.2;1,0'] }),
+    'TS_ERR_UNPROVEN', 0, 'interval');
   const s = ts.spline(x, f, P);
   t(() => s.eval(5), 'TS_ERR_DOMAIN');
   t(() => s.evalBatch([0.5, 7, 1]), 'TS_ERR_DOMAIN', 1, 'query');
@@ -229,15 +234,50 @@ test('every status the library can return reaches JavaScript as a TrigSplineErro
   t(() => ts.spline([0, 1, 2], [1, 2, 1], { ...P, alpha: 1e-310, beta: 0 }),
     'TS_ERR_CONTROL_OVERFLOW', 0, 'interval');
   t(() => ts.spline([-1e308, 1e308], [1, 2], P), 'TS_ERR_WIDTH', 1, 'point');
-  // TS_ERR_PRECISION and TS_ERR_UNPROVEN come from the line schemes' search
-  // on data the C tests find by random search (tests/api/test_refusals.c,
-  // test_property.c); no fixed input is known to give them on every
-  // platform, so they are checked by name and message only (test above).
+  // TS_ERR_PRECISION comes from the line schemes' search on data the C tests
+  // find by random search (tests/api/test_refusals.c, test_property.c); no
+  // fixed input is known to give it on every platform, so it is checked by
+  // name and message only (test above).
   // TS_ERR_VERSION (a struct guard) cannot come from JavaScript: glue.c starts
   // every struct from its initialiser (tests/api/test_struct_guard.c checks it).
   const missing = ts.STATUS_NAMES.filter((n) => !seen.has(n));
-  assert.deepEqual(missing, ['TS_ERR_PRECISION', 'TS_ERR_UNPROVEN', 'TS_ERR_VERSION']);
+  assert.deepEqual(missing, ['TS_ERR_PRECISION', 'TS_ERR_VERSION']);
   assert.throws(() => s.eval(1), /used after free/);
+});
+
+test('constraint records: a call chain certified convex and decreasing', () => {
+  // Black-Scholes calls (S0 = 100, sigma = 0.2, T = 1, r = 0), closed form here
+  const ncdf = (z) => {
+    // erfc by its continued fraction is not in Math: integrate the density
+    // with Simpson's rule on [-8, z] (2000 steps: error far below 1e-9)
+    const n = 2000, a = -8, h = (z - a) / n, phi = (t) => Math.exp(-t * t / 2) / Math.sqrt(2 * Math.PI);
+    let sum = phi(a) + phi(z);
+    for (let i = 1; i < n; i++) sum += (i % 2 ? 4 : 2) * phi(a + i * h);
+    return sum * h / 3;
+  };
+  const K = [60, 70, 80, 90, 100, 105, 110, 120, 140];
+  const C = K.map((k) => {
+    const d1 = (Math.log(100 / k) + 0.02) / 0.2;
+    return 100 * ncdf(d1) - k * ncdf(d1 - 0.2);
+  });
+  const specs = ['convex', 'decreasing', 'slope>=-1', 'lower=0'];
+  const s = ts.spline(K, C, { constraints: specs });
+  assert.equal(s.certified, true);
+  const rep = s.constraintReport();
+  assert.equal(rep.length, 4);
+  // the exact minimum in floating point: >= 0 up to its rounding (1e-12)
+  for (const row of rep) for (const r of row) assert.ok(r.certified && r.gap >= -1e-12, JSON.stringify(r));
+  // S'' >= 0 on a dense grid (the exact minimum is >= 0; 1e-12: evaluation's rounding)
+  for (let i = 0; i <= 8000; i++) assert.ok(s.evalDeriv(60 + i / 100).d2y >= -1e-12);
+  // the same records as objects, and a scope: the same spline, null outside the scope
+  const o = ts.spline(K, C, { constraints: [{ kind: 'convex' }, { kind: 'decreasing' },
+    { kind: 'slope-min', value: -1 }, { kind: 'lower', value: 0 }, 'abs-slope<=1.5@2-4'] });
+  assert.deepEqual(Array.from(o.evalBatch([61, 77, 133])), Array.from(s.evalBatch([61, 77, 133])));
+  assert.deepEqual(o.constraintReport()[4].map((r) => r === null),
+    [true, true, false, false, false, true, true, true]);
+  assert.throws(() => ts.spline(K, C, { constraints: ['wiggly'] }), /unknown constraint/);
+  s.free();
+  o.free();
 });
 
 // ---- memory --------------------------------------------------------------------
