@@ -182,7 +182,7 @@ class Spline:
     certify : bool, default ${certify}
         ``False`` skips the exact certificate where the scheme is a proof by
         itself.
-    constraints : list, optional
+    constraints : list, default none
         Constraint records certified per interval (docs/method.md §13;
         geometric form, no ``shape``): SPEC strings as the command line's
         ``--constraint`` (``'convex'``, ``'concave'``, ``'increasing'``,
