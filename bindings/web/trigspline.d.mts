@@ -241,6 +241,9 @@ export interface ExplorerState {
   points: number[][];
   [option: string]: unknown;
 }
+/** x in seconds since 1970 (UTC) as ISO 8601: a date for a whole day, else a
+ * date-time in UTC with the fraction of a second to 1 ns. */
+export declare function isoText(t: number): string;
 export declare function dataCsv(state: ExplorerState): string;
 export declare function cliArgs(state: ExplorerState, dataPath?: string): string[];
 export declare const EXPORTS: Record<'csv' | 'json' | 'svg', { args: string[]; file: string; type: string }>;

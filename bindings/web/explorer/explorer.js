@@ -599,6 +599,10 @@ async function readInto(text, name) {
   if (!r.ok) {
     rep.className = 'bad';
     rep.innerHTML = `${esc(r.message)}${notes}${cmd}`;
+    // a warning still being computed for the data kept must not replace this
+    clearTimeout(ovTimer);
+    ovSeq++;
+    $('overshoot').dataset.state = 'done';
     const st = $('status');
     st.className = 'bad';
     st.textContent = `Not read: ${r.message.split('\n')[0]}`;

@@ -4,7 +4,7 @@
 import {
   load, getDefaultModule, NAMES, TrigSplineError, Spline, Curve, curveTrig, curveTrigPositive,
   curveTrigMonotone, curveTrigAbove, curveTrigBelow, curveTrigBetween, stackTrig, areaTrig,
-  fitThicknesses, stackPixels, chartjsTrigspline, installEChartsTrigspline, dataCsv, cliArgs,
+  fitThicknesses, stackPixels, chartjsTrigspline, installEChartsTrigspline, dataCsv, cliArgs, isoText,
   EXPORTS, runCli, exportState,
 } from 'trigspline';
 import type { SplineOptions, StackLayers, TrigSpline, Certificate } from 'trigspline';
@@ -37,7 +37,7 @@ export async function use(): Promise<number> {
   y += chartjsTrigspline.defaults.samples;
   installEChartsTrigspline({ registerPostUpdate() {} }, { module: ts });
   const state = { mode: 'function' as const, points: [[0, 1], [1, 2]] };
-  y += dataCsv(state).length + cliArgs(state).length + EXPORTS.csv.args.length;
+  y += dataCsv(state).length + cliArgs(state).length + EXPORTS.csv.args.length + isoText(0).length;
   const factory = async () => ({});
   y += (await runCli(factory, ['--help'], {})).status + (await exportState(factory, state, 'csv')).text.length;
   return y + (getDefaultModule() === ts ? 1 : 0) + ts.version.length;
