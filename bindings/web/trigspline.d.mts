@@ -45,6 +45,34 @@ export interface SplineOptions {
   line?: Line;
   certify?: boolean;
   extrapolate?: ExtrapolateName | number;
+  /** constraint records (docs/method.md §13, geometric form, no shape): the
+   * command line's --constraint SPEC strings ('convex', 'lower=0',
+   * 'slope<=5@0-3', ...) or records */
+  constraints?: (string | ConstraintRecord)[];
+}
+
+/** One constraint record: kind from NAMES.constraint; value for bounds and
+ * slopes; points for a polyline bound; intervals first .. first + count - 1
+ * (count 0: to the end). */
+export interface ConstraintRecord {
+  kind: string;
+  value?: number;
+  points?: number[][] | null;
+  first?: number;
+  count?: number;
+}
+
+/** Per interval of a constraint record: null outside its scope. */
+export type ConstraintReportEntry = { active: boolean; gap: number; at: number; certified: boolean } | null;
+
+export interface DisaggregateOptions {
+  /** what is returned: totals over the grid's cells (default), or the rate r or r' at its points */
+  kind?: 'totals' | 'rate' | 'derivative';
+  /** bounds of the rate (defaults 0 and Infinity) */
+  lo?: number;
+  hi?: number;
+  /** tension (default the library's) */
+  alpha?: number;
 }
 
 export interface CurveOptions {
@@ -98,6 +126,8 @@ export declare class Spline {
   report(): IntervalReport[];
   report(i: number): IntervalReport;
   certify(lines?: { lower?: Line | null; upper?: Line | null }): Certificate;
+  /** per record, per interval (docs/method.md §13) */
+  constraintReport(): ConstraintReportEntry[][];
   errorBound(fprimeMax: number, fsecondMax?: number, exactSlopes?: boolean): { bound: number; perInterval: Float64Array };
   free(): void;
   [Symbol.dispose](): void;
@@ -131,6 +161,9 @@ export interface TrigSpline {
   spline(x: Numbers, f: Numbers, options?: SplineOptions): Spline;
   curve(points: number[][] | Numbers, options?: CurveOptions): Curve;
   slopes(method: string | number, x: Numbers, f: Numbers): Float64Array;
+  /** bin totals (edges.length = totals.length + 1) to totals over the grid's
+   * cells, or the rate (docs/method.md §12: totals kept, lo <= r <= hi, C¹) */
+  disaggregate(edges: Numbers, totals: Numbers, grid: Numbers, options?: DisaggregateOptions): Float64Array;
   errorConstants(form: FormName | number, a: number): { first: number; line: number; second: number };
   strerror(code: number): string;
   heapTop(): number;

@@ -19,6 +19,11 @@ export async function use(): Promise<number> {
   y += c.reports[0].gapLower + s.report(0).a + s.report().length + s.errorBound(1).bound;
   if (s.certified && s.shape === NAMES.shape[1]) y += s.x[0] + s.intervals;
   s.free();
+  const k = ts.spline([0, 1, 2, 3], [0, 1, 4, 9], { constraints: ['convex', { kind: 'lower', value: 0 }] });
+  const rep = k.constraintReport()[0][0];
+  if (rep) y += rep.gap + rep.at + (rep.active ? 1 : 0) + (rep.certified ? 1 : 0);
+  k.free();
+  y += ts.disaggregate([0, 1, 2], [3, 0], [0, 0.5, 1, 1.5, 2], { kind: 'totals', lo: 0 })[0];
   const cv: Curve = ts.curve([[0, 0], [1, 1], [2, 0]], { param: 'centripetal', box: { ymin: 0 } });
   y += cv.sample(4)[1] + cv.length() + cv.eval(0.5).p[0] + cv.params(0).alpha + cv.control(0)[0][0];
   cv.free();
