@@ -29,7 +29,7 @@ build)
     (cd "$tmp" && R CMD build --no-build-vignettes stage/trigspline >build.log 2>&1) ||
         { cat "$tmp/build.log" >&2; exit 1; }
     mv "$tmp/trigspline_$version.tar.gz" "$tarball"
-    echo "$tarball ($(wc -c < "$tarball") bytes)"
+    echo "artifact: ${tarball#"$dist"/} $(wc -c < "$tarball")"
     ;;
 test)
     [ -f "$tarball" ] || { echo "$0: $tarball missing (r.sh build first)" >&2; exit 1; }
