@@ -21,6 +21,9 @@ a relative tolerance of 5e-4 for the printing, plus the page's sampling error):
   - our certificates (exact) against dense samples of our own curve from the
     CLI (the sampled least gap is >= the exact one minus rounding, and within
     the sampling bound of it);
+  - the shape-constraint section: the option chain's prices from the stated
+    Black–Scholes parameters, SciPy's least S'' (negative) and least gap to
+    the polyline floor, our commands' exit status and certificates;
   - the overshoot example's y_max against the largest of 2000 samples per
     interval of that curve.
 Also: every command shown names --form, no command is abbreviated, every
@@ -132,6 +135,108 @@ def check_claims(page):
                   "%s: the summary states our least gap, not %r" % (key, first))
 
 
+def section_commands(page, sid):
+    """The `trigspline fit` commands of section sid, as argument lists (from the repository)."""
+    body = re.search(r'<section id="%s">(.*?)</section>' % sid, page, re.S).group(1)
+    cmds = [shlex.split(html.unescape(c))
+            for c in re.findall(r"(?:^|<pre>)\$ (build/trigspline fit [^\n<]*)", body, re.M)]
+    return body, cmds
+
+
+def without_output(args):
+    """args without -o FILE, as a list for CLI (stdout instead)."""
+    out = []
+    skip = False
+    for a in args[1:]:
+        if skip:
+            skip = False
+        elif a == "-o":
+            skip = True
+        else:
+            out.append(a)
+    return [CLI] + out
+
+
+def check_constraints(page, vals):
+    """The shape-constraint section (docs/method.md §13), run while its data
+    files exist: the option chain re-derived from the parameters the page
+    states (SciPy's normal cdf, not the script's erf), our commands re-run."""
+    from scipy.stats import norm
+    body, cmds = section_commands(page, "constraints")
+    check(len(cmds) == 4, "constraints: four commands shown (%d)" % len(cmds))
+    if len(cmds) != 4:
+        return
+    # ---- the option chain: prices from the stated parameters
+    par = re.search(r"strikes (\d+)–(\d+) \(step (\d+)\), spot ([\d.]+), rate ([\d.]+), volatility ([\d.]+), "
+                    r"([\d.]+) years", body)
+    check(par is not None, "constraints: the Black–Scholes parameters are stated")
+    if par is None:
+        return
+    k0, k1, dk, S, r, sig, T = (float(v) for v in par.groups())
+    K = np.arange(k0, k1 + dk / 2, dk)
+    d1 = (np.log(S / K) + (r + sig * sig / 2) * T) / (sig * np.sqrt(T))
+    C = S * norm.cdf(d1) - K * np.exp(-r * T) * norm.cdf(d1 - sig * np.sqrt(T))
+    data = cmds[0][2]
+    x, f = cli_xy(open(os.path.join(REPO, data)).read()).values()
+    # the data the command read are the closed form (printed shortest round-trip by the script;
+    # two cdf implementations differ by a few ulps of the price: 1e-12 relative)
+    check(len(x) == len(K) and np.allclose(x, K, rtol=0, atol=0) and np.allclose(f, C, rtol=1e-12, atol=1e-12),
+          "constraints: the option data are the Black–Scholes prices stated")
+    q = subprocess.run(without_output(cmds[0]), cwd=REPO, capture_output=True, text=True)
+    check(q.returncode == 0, "convex: our command exits 0 (%d: %s)" % (q.returncode, q.stderr))
+    if q.returncode == 0:
+        js = json.loads(q.stdout)
+        recs = js["constraints"]
+        check(js["certified"] and all(iv["certified"] for rec in recs for iv in rec),
+              "convex: our command reports every interval certified")
+        exact = min(iv["gap"] for iv in recs[0])
+        check(exact >= 0, "convex: our least S'' >= 0 (%r)" % exact)
+        check(close(vals["convex/ours/d2_min"], exact), "convex: page states our certificate")
+        # our S'' sampled: never below the exact least value (up to rounding) and near it
+        d = cli_xy(subprocess.run(without_output(cmds[1])[:-2] + ["--samples", "2001"], cwd=REPO,
+                                  capture_output=True, text=True).stdout)
+        s2 = float(np.min(d["y"]))
+        check(s2 >= exact * (1 - 5e-4) - 1e-12, "convex: sampled S'' %r below the certificate %r" % (s2, exact))
+    for name, M in (("SciPy CubicSpline", CubicSpline), ("SciPy PCHIP", PchipInterpolator)):
+        # S'' is linear on each piece: ends of every piece, 1e-9 of the interval inside
+        # (the error is |S'''| 1e-9 h, < 1e-9 here)
+        sp = M(K, C)
+        h = np.diff(K)
+        ends = np.concatenate([sp(K[:-1] + 1e-9 * h, 2), sp(K[1:] - 1e-9 * h, 2)])
+        m = float(np.min(ends))
+        check(m < 0, "convex: %s's S'' goes negative (%r)" % (name, m))
+        check(close(vals.get("convex/%s/d2_min" % name, 1e300), m, 1e-8),
+              "convex: %s least S'': page %r, re-derived %r" % (name, vals.get("convex/%s/d2_min" % name), m))
+    # ---- above a polyline floor
+    spec = [a for a in cmds[2] if a.startswith("lower=poly:")]
+    check(len(spec) == 1, "floor: the polyline is on the command")
+    if len(spec) != 1:
+        return
+    fx, fy = np.array([[float(v) for v in p.split(",")] for p in spec[0][len("lower=poly:"):].split(";")]).T
+    x, f = cli_xy(open(os.path.join(REPO, cmds[2][2])).read()).values()
+    check(np.all(f > np.interp(x, fx, fy)), "floor: every data point above the floor")
+    q = subprocess.run(without_output(cmds[2]), cwd=REPO, capture_output=True, text=True)
+    check(q.returncode == 0, "floor: our command exits 0 (%d: %s)" % (q.returncode, q.stderr))
+    if q.returncode == 0:
+        js = json.loads(q.stdout)
+        (rec,) = js["constraints"]
+        check(js["certified"] and all(iv["certified"] for iv in rec if iv["gap"] is not None),
+              "floor: our command reports certified")
+        exact = min(iv["gap"] for iv in rec if iv["gap"] is not None)
+        check(exact > 0 and close(vals["polyfloor/ours/lower"], exact), "floor: page states our certificate")
+        d = cli_xy(subprocess.run(without_output(cmds[3])[:-2] + ["--samples", "2001"], cwd=REPO,
+                                  capture_output=True, text=True).stdout)
+        s = float(np.min(d["y"] - np.interp(d["x"], fx, fy)))
+        check(s >= exact * (1 - 5e-4) - 1e-12, "floor: sampled gap %r below the certificate %r" % (s, exact))
+    xs = dense(x, 20000)
+    for name, M in (("SciPy CubicSpline", CubicSpline), ("SciPy PCHIP", PchipInterpolator)):
+        g = float(np.min(M(x, f)(xs) - np.interp(xs, fx, fy)))
+        check(g < 0, "floor: %s dips below the floor (%r)" % (name, g))
+        # the page samples 2000 per interval: within 1/2 max|S''| (h/4000)^2 < 1e-5 of this
+        check(close(vals.get("polyfloor/%s/lower" % name, 1e300), g, 1e-5),
+              "floor: %s least gap: page %r, re-derived %r" % (name, vals.get("polyfloor/%s/lower" % name), g))
+
+
 def main():
     if not os.access(os.path.join(BUILD, "gsl_eval"), os.X_OK):
         print("test_why: %s/gsl_eval not built (GSL missing: make why-deps)" % BUILD)
@@ -148,6 +253,7 @@ def main():
         with open(os.path.join(out, "numbers.json")) as fh:
             numbers = json.load(fh)
         check_claims(page)
+        check_constraints(page, cell_values(page))
     vals = cell_values(page)
 
     # ---- structure
