@@ -873,11 +873,11 @@ static void test_histo(void)
                      "strictly increasing");
     }
     {
-        const double e[] = {0, 1, NAN, 3}, t[] = {1, 1, 1};
+        const double e[] = {0, 1, (double)NAN, 3}, t[] = {1, 1, 1};
         expect_histo(e, t, 3, NULL, "edge 2 (x = nan) is NaN or infinite");
     }
     {
-        const double e[] = {0, 1, 2}, t[] = {1, INFINITY};
+        const double e[] = {0, 1, 2}, t[] = {1, HUGE_VAL};
         expect_histo(e, t, 2, NULL, "bin 1 [1, 2]: total inf is NaN or infinite");
     }
     {
