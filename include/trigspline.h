@@ -1361,6 +1361,8 @@ typedef int (*ts_format_x_fn)(double x, char *buf, size_t len, void *user);
  * the index without values).  The library only reads through them, during
  * ts_error_message.
  */
+struct ts_histo_options;
+
 typedef struct ts_error_context {
     size_t struct_size;          /* sizeof(ts_error_context), set by ts_error_context_init */
     /* ---- the data */
@@ -1384,6 +1386,10 @@ typedef struct ts_error_context {
                                     printed (the data are a block of a longer series) */
     ts_format_x_fn format_x;     /* NULL: x printed as a number */
     void *format_x_user;
+    /* ---- histograms (ts_histo_new, ts_histo_check): set histo_options (the
+       options of the call, or ts_histo_options_init's defaults) to say so;
+       then x = the edges, n_points = n_bins + 1, f = the totals (n_bins) */
+    const struct ts_histo_options *histo_options;
 } ts_error_context;
 
 /* Defaults: struct_size set, everything else NULL / 0. */
@@ -1444,7 +1450,22 @@ TS_API void ts_error_context_init(ts_error_context *ctx);
  * Surfaces (ctx->surface_options or ctx->y given): a node is "node (I, J) (x = X,
  * y = Y, z = Z)", a patch "patch (I, J) [X0, X1] x [Y0, Y1]"; curves
  * (ctx->curve_options or ctx->points given): "point I (C1, C2[, C3])",
- * "segment I".  The wording names the library's options (alpha, beta, the
+ * "segment I".  Histograms (ctx->histo_options given; "B" = "bin I [X0, X1]"):
+ *   TS_ERR_TOO_FEW      "0 bins; at least 1 is needed"
+ *   TS_ERR_ALPHA        "alpha = A must be finite and > 0"
+ *   TS_ERR_OPTION       "the rate bounds lo = L, hi = H need lo finite and lo < hi"
+ *   TS_ERR_NONFINITE    "edge I (x = X) is NaN or infinite" / "B: total T is NaN or
+ *                        infinite"
+ *   TS_ERR_UNSORTED     "edge I (x = X) is not greater than the previous edge X'; edges
+ *                        must be strictly increasing"
+ *   TS_ERR_WIDTH        "B: the width W overflows a double" (or "is below the smallest
+ *                        normal double")
+ *   TS_ERR_TOO_LARGE    "B: total T gives the mean M, too large in magnitude"
+ *   TS_ERR_NEGATIVE     "B: total T is negative; totals must be >= 0"
+ *   TS_ERR_INFEASIBLE   "B: total T gives the mean M, outside the rate bounds [L, H]" /
+ *                        "B and bin I+1 [X1, X2]: the means M1 and M2 are too far apart
+ *                        to be joined inside the rate bounds [L, H]"
+ * The wording names the library's options (alpha, beta, the
  * positive shape, ...), never a front-end's flags.
  */
 TS_API size_t ts_error_message(const ts_error *err, const ts_error_context *ctx, char *buf,

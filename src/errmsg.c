@@ -563,6 +563,134 @@ static void curve_sentence(out *o, const ts_error_context *c, const ts_error *e)
     put(o, "%s", ts__strerror(e->status));
 }
 
+/* ---- histograms (docs/method.md §12) ------------------------------------ */
+
+static void bin_text(out *o, const ts_error_context *c, size_t j)
+{
+    put(o, "bin %zu [", c->first_index + j);
+    xval(o, c, c->x[j]);
+    put(o, ", ");
+    xval(o, c, c->x[j + 1]);
+    put(o, "]");
+}
+
+static void bounds_text(out *o, double lo, double hi)
+{
+    put(o, "the rate bounds [");
+    num(o, lo);
+    put(o, ", ");
+    num(o, hi);
+    put(o, "]");
+}
+
+/* 1 when a sentence was written. */
+static int histo_sentence(out *o, const ts_error_context *c, const ts_error *e)
+{
+    /* options of another version: not read (their sentences name no values) */
+    const ts_histo_options *opt =
+        c->histo_options->struct_size == sizeof *opt ? c->histo_options : NULL;
+    size_t ne = c->x ? c->n_points : 0, nb = ne > 0 ? ne - 1 : 0, i = e->index;
+    int have_t = c->f != NULL;
+    switch (e->status) {
+    case TS_ERR_TOO_FEW:
+        put(o, "0 bins; at least 1 is needed");
+        return 1;
+    case TS_ERR_ALPHA:
+        if (!opt)
+            return 0;
+        put(o, "alpha = ");
+        num(o, opt->alpha);
+        put(o, " must be finite and > 0");
+        return 1;
+    case TS_ERR_OPTION:
+        if (!opt)
+            return 0;
+        put(o, "the rate bounds lo = ");
+        num(o, opt->lo);
+        put(o, ", hi = ");
+        num(o, opt->hi);
+        put(o, " need lo finite and lo < hi");
+        return 1;
+    case TS_ERR_NONFINITE:
+        if (e->where == TS_WHERE_POINT && i < ne) {
+            put(o, "edge %zu (x = ", c->first_index + i);
+            xval(o, c, c->x[i]);
+            put(o, ") is NaN or infinite");
+            return 1;
+        }
+        if (e->where == TS_WHERE_INTERVAL && i < nb && have_t) {
+            bin_text(o, c, i);
+            put(o, ": total ");
+            num(o, c->f[i]);
+            put(o, " is NaN or infinite");
+            return 1;
+        }
+        return 0;
+    case TS_ERR_UNSORTED:
+        if (e->where != TS_WHERE_POINT || !(0 < i && i < ne))
+            return 0;
+        put(o, "edge %zu (x = ", c->first_index + i);
+        xval(o, c, c->x[i]);
+        put(o, ") is not greater than the previous edge ");
+        xval(o, c, c->x[i - 1]);
+        put(o, "; edges must be strictly increasing");
+        return 1;
+    case TS_ERR_WIDTH: {
+        if (e->where != TS_WHERE_POINT || !(0 < i && i < ne))
+            return 0;
+        double w = c->x[i] - c->x[i - 1];
+        bin_text(o, c, i - 1);
+        put(o, ": the width ");
+        num(o, w);
+        put(o, w > 1.0 ? " overflows a double" : " is below the smallest normal double");
+        return 1;
+    }
+    case TS_ERR_TOO_LARGE:
+    case TS_ERR_NEGATIVE:
+    case TS_ERR_INFEASIBLE: {
+        if (e->where != TS_WHERE_INTERVAL || i >= nb || !have_t ||
+            (e->status == TS_ERR_INFEASIBLE && !opt))
+            return 0;
+        double m = c->f[i] / (c->x[i + 1] - c->x[i]);
+        int pair = e->status == TS_ERR_INFEASIBLE && opt && opt->lo <= m && m <= opt->hi &&
+                   i + 1 < nb;
+        bin_text(o, c, i);
+        if (!pair) {
+            put(o, ": total ");
+            num(o, c->f[i]);
+        }
+        if (e->status == TS_ERR_NEGATIVE) {
+            put(o, " is negative; totals must be >= 0");
+            return 1;
+        }
+        if (e->status == TS_ERR_TOO_LARGE) {
+            put(o, " gives the mean ");
+            num(o, m);
+            put(o, ", too large in magnitude");
+            return 1;
+        }
+        if (!pair) {
+            put(o, " gives the mean ");
+            num(o, m);
+            put(o, ", outside ");
+            bounds_text(o, opt->lo, opt->hi);
+            return 1;
+        }
+        put(o, " and ");
+        bin_text(o, c, i + 1);
+        put(o, ": the means ");
+        num(o, m);
+        put(o, " and ");
+        num(o, c->f[i + 1] / (c->x[i + 2] - c->x[i + 1]));
+        put(o, " are too far apart to be joined inside ");
+        bounds_text(o, opt->lo, opt->hi);
+        return 1;
+    }
+    default:
+        return 0;
+    }
+}
+
 /* ---- the entry point ------------------------------------------------- */
 
 static void context_init(ts_error_context *ctx)
@@ -613,6 +741,13 @@ size_t ts_error_message(const ts_error *err, const ts_error_context *ctx, char *
 
     if (e->where == TS_WHERE_QUERY && query_sentence(&o, c, e, c->first_index)) {
         /* done */
+    } else if (c->histo_options) {
+        if (!histo_sentence(&o, c, e)) { /* index only: x, f are not points */
+            if (e->where == TS_WHERE_POINT || e->where == TS_WHERE_INTERVAL)
+                put(&o, "%s %zu: ", e->where == TS_WHERE_POINT ? "edge" : "bin",
+                    c->first_index + e->index);
+            put(&o, "%s", ts__strerror(e->status));
+        }
     } else if (c->surface_options || c->y) {
         surface_sentence(&o, c, e);
     } else if (c->curve_options || c->points) {

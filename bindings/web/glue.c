@@ -42,8 +42,8 @@ size_t tsw_heap_top(void);
 const char *tsw_message(void);
 void tsw_message_clear(void);
 
-/* The sentence (ts_error_message) of the last failed tsw_spline_new or
- * tsw_curve_new, written there with the call's data and options; "" after
+/* The sentence (ts_error_message) of the last failed tsw_spline_new,
+ * tsw_curve_new or tsw_disaggregate (its bins refused), written there with the call's data and options; "" after
  * tsw_message_clear.  Other failures have no context: the wrapper calls
  * ts_error_message itself. */
 static char message[1024];
@@ -340,8 +340,18 @@ ts_status tsw_disaggregate(const double *edges, const double *totals, size_t n, 
     o.hi = hi;
     ts_histo *h = NULL;
     ts_status st = ts_histo_new(edges, totals, n, &o, &h, err);
-    if (st != TS_OK)
+    if (st != TS_OK) {
+        if (err) {
+            ts_error_context ctx;
+            ts_error_context_init(&ctx);
+            ctx.x = edges;
+            ctx.f = totals;
+            ctx.n_points = n + 1;
+            ctx.histo_options = &o;
+            ts_error_message(err, &ctx, message, sizeof message);
+        }
         return st;
+    }
     if (kind == 0) {
         st = ts_histo_totals(h, grid, m, out, err);
     } else {

@@ -15,9 +15,10 @@
 // Errors: a TrigSplineError with .status ("TS_ERR_NEGATIVE"), .code (14),
 // .index (the point, interval or query; null when none), .where ("point",
 // "interval", "query" or null) and .message: the status name and the
-// library's sentence (ts_error_message; for spline() and curve() with the
-// data and options of the call, naming the point, its x and f).  Data that
-// are not arrays of numbers are refused before the library sees them, with a
+// library's sentence (ts_error_message; for spline(), curve() and
+// disaggregate() with the data and options of the call, naming the point,
+// its x and f, or the bin or edge and its values).  Data that are not
+// arrays of numbers are refused before the library sees them, with a
 // message naming the argument (TS_ERR_NULL) or the entry that is not a number
 // (TS_ERR_NONFINITE, .index = that point).
 

@@ -118,6 +118,12 @@ check("-o writes the file", rc == 0 and out == "" and open(out_path).read().star
 # errors
 rc, out, err = run(["--step", "0.5"], "0,1\n1,-2\n")
 check("negative: exit 2, names the line", rc == 2 and "<stdin>:2:" in err and out == "", err)
+check("negative: names the bin and its total",
+      "<stdin>:2: bin 1 [1, 2]: total -2 is negative; totals must be >= 0" in err, err)
+rc, out, err = run(["--step", "0.5", "--hi", "1"], "0,0\n1,1\n2,1\n")
+# means 0 and 1 under hi = 1: the edge value must be <= 0 and >= 1 (method.md 12.4)
+check("neighbours --hi refuses: exit 3, names both bins",
+      rc == 3 and "bin 0 [0, 1] and bin 1 [1, 2]: the means 0 and 1 are too far apart" in err, err)
 rc, out, err = run([], "0,1\n1,2\n")
 check("no --step: exit 1", rc == 1 and "--step" in err, err)
 rc, out, err = run([path, "--step", "1q"])
@@ -126,6 +132,8 @@ rc, out, err = run(["--step", "0.5"], "0,1,2\n2,3,4\n")
 check("gap between bins: exit 2", rc == 2 and "contiguous" in err, err)
 rc, out, err = run(["--step", "0.5", "--hi", "1"], "0,1\n1,3\n")
 check("mean above --hi: exit 3", rc == 3 and "<stdin>:2:" in err, err)
+check("mean above --hi: names the mean and the bounds",
+      "bin 1 [1, 2]: total 3 gives the mean 3, outside the rate bounds [0, 1]" in err, err)
 rc, out, err = run(["--step", "0.5", "--alpha", "0"], "0,1\n1,3\n")
 check("alpha 0: exit 1", rc == 1, err)
 rc, out, err = run(["--bogus"])

@@ -832,8 +832,123 @@ static void test_buffers(void)
     ts_error_context_init(NULL); /* no-op */
 }
 
+/* ts_histo_new's statuses, each provoked with small bins. */
+static ts_error histo_build(const double *e, const double *t, size_t n, const ts_histo_options *o)
+{
+    ts_error err;
+    ts_histo *h = NULL;
+    ts_status st = ts_histo_new(e, t, n, o, &h, &err);
+    ts_histo_free(h);
+    CHECK(st == err.status && st != TS_OK && h == NULL);
+    return err;
+}
+
+static void expect_histo(const double *e, const double *t, size_t n, const ts_histo_options *o,
+                         const char *want)
+{
+    ts_histo_options dflt;
+    ts_histo_options_init(&dflt);
+    ts_error err = histo_build(e, t, n, o);
+    ts_error_context c;
+    ts_error_context_init(&c);
+    c.x = e;
+    c.f = t;
+    c.n_points = n + 1;
+    c.histo_options = o ? o : &dflt;
+    EXPECT(&err, &c, want);
+}
+
+static void test_histo(void)
+{
+    TH_CASE("histogram bins and edges");
+    ts_histo_options o;
+    {
+        const double e[] = {0, 1, 2, 3, 4}, t[] = {1, 2, -2, 1};
+        expect_histo(e, t, 4, NULL, "bin 2 [2, 3]: total -2 is negative; totals must be >= 0");
+    }
+    {
+        const double e[] = {0, 1, 2, 2, 3}, t[] = {1, 1, 1, 1};
+        expect_histo(e, t, 4, NULL,
+                     "edge 3 (x = 2) is not greater than the previous edge 2; edges must be "
+                     "strictly increasing");
+    }
+    {
+        const double e[] = {0, 1, (double)NAN, 3}, t[] = {1, 1, 1};
+        expect_histo(e, t, 3, NULL, "edge 2 (x = nan) is NaN or infinite");
+    }
+    {
+        const double e[] = {0, 1, 2}, t[] = {1, HUGE_VAL};
+        expect_histo(e, t, 2, NULL, "bin 1 [1, 2]: total inf is NaN or infinite");
+    }
+    {
+        const double e[] = {0, 1e-310}, t[] = {0};
+        expect_histo(e, t, 1, NULL,
+                     "bin 0 [0, 1e-310]: the width 1e-310 is below the smallest normal double");
+    }
+    {
+        const double e[] = {-1e308, 1e308}, t[] = {0};
+        expect_histo(e, t, 1, NULL, "bin 0 [-1e+308, 1e+308]: the width inf overflows a double");
+    }
+    {
+        /* 1e308 over width 1: beyond the mean limit 2^1019 ~ 5.6e306 */
+        const double e[] = {0, 1}, t[] = {1e308};
+        expect_histo(e, t, 1, NULL,
+                     "bin 0 [0, 1]: total 1e+308 gives the mean 1e+308, too large in magnitude");
+    }
+    {
+        const double e[] = {0, 1, 2}, t[] = {0.5, 4};
+        ts_histo_options_init(&o);
+        o.hi = 1;
+        /* width 2: mean 2 */
+        const double e2[] = {0, 1, 3};
+        expect_histo(e2, t, 2, &o,
+                     "bin 1 [1, 3]: total 4 gives the mean 2, outside the rate bounds [0, 1]");
+        /* means 0 and 1 with H = 1: the edge value must be <= 2*0 and >= 2*1 - 1 (§12.4) */
+        const double t2[] = {0, 1};
+        expect_histo(e, t2, 2, &o,
+                     "bin 0 [0, 1] and bin 1 [1, 2]: the means 0 and 1 are too far apart to "
+                     "be joined inside the rate bounds [0, 1]");
+    }
+    {
+        const double e[] = {0, 1}, t[] = {1};
+        ts_histo_options_init(&o);
+        o.alpha = -1;
+        expect_histo(e, t, 1, &o, "alpha = -1 must be finite and > 0");
+        ts_histo_options_init(&o);
+        o.lo = 1;
+        o.hi = 0;
+        expect_histo(e, t, 1, &o, "the rate bounds lo = 1, hi = 0 need lo finite and lo < hi");
+        expect_histo(e, t, 0, NULL, "0 bins; at least 1 is needed");
+    }
+    {
+        /* first_index, and a status without a histogram sentence: the index only */
+        const double e[] = {0, 1, 2, 3, 4}, t[] = {1, 2, -2, 1};
+        ts_histo_options_init(&o);
+        ts_error err = histo_build(e, t, 4, NULL);
+        ts_error_context c;
+        ts_error_context_init(&c);
+        c.x = e;
+        c.f = t;
+        c.n_points = 5;
+        c.histo_options = &o;
+        c.first_index = 10;
+        EXPECT(&err, &c, "bin 12 [2, 3]: total -2 is negative; totals must be >= 0");
+        c.x = NULL;
+        EXPECT(&err, &c, "bin 12: negative data value for the positive scheme");
+        ts_error nomem = {TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE};
+        c.x = e;
+        EXPECT(&nomem, &c, "out of memory");
+        o.struct_size = 1; /* options of another version: their values are not read */
+        ts_error alpha = {TS_ERR_ALPHA, TS_NO_INDEX, TS_WHERE_NONE};
+        char want[256];
+        snprintf(want, sizeof want, "%s", ts_strerror(TS_ERR_ALPHA));
+        EXPECT(&alpha, &c, want);
+    }
+}
+
 int main(void)
 {
+    test_histo();
     test_numbers();
     test_spline_points();
     test_spline_intervals();

@@ -251,6 +251,13 @@ static const char *xtext(const dis_bins *b, double x, char buf[TSU_TIME_SIZE])
     return cli_num(x, buf);
 }
 
+/* ts_format_x_fn: an edge as the command writes it (a date or a number). */
+static int x_text(double x, char *buf, size_t len, void *user)
+{
+    char b[TSU_TIME_SIZE];
+    return snprintf(buf, len, "%s", xtext(user, x, b));
+}
+
 int cli_disaggregate(int argc, char **argv)
 {
     dis_opts o;
@@ -279,16 +286,22 @@ int cli_disaggregate(int argc, char **argv)
     ts_error err;
     ts_status st = ts_histo_new(b.e, b.T, b.n, &o.ho, &h, &err);
     if (st != TS_OK) {
-        char xb[TSU_TIME_SIZE];
+        char msg[1024];
+        ts_error_context ctx;
+        ts_error_context_init(&ctx);
+        ctx.x = b.e;
+        ctx.f = b.T;
+        ctx.n_points = b.n + 1;
+        ctx.histo_options = &o.ho;
+        ctx.format_x = x_text;
+        ctx.format_x_user = &b;
+        ts_error_message(&err, &ctx, msg, sizeof msg);
         if (err.where == TS_WHERE_INTERVAL && err.index < b.n)
-            cli_error("%s:%llu: bin %zu (from %s): %s", name, b.line[err.index], err.index,
-                      xtext(&b, b.e[err.index], xb), ts_strerror(st));
+            cli_error("%s:%llu: %s", name, b.line[err.index], msg);
         else if (err.where == TS_WHERE_POINT && err.index <= b.n)
-            cli_error("%s:%llu: edge %s: %s", name,
-                      b.line[err.index < b.n ? err.index : b.n - 1],
-                      xtext(&b, b.e[err.index], xb), ts_strerror(st));
+            cli_error("%s:%llu: %s", name, b.line[err.index < b.n ? err.index : b.n - 1], msg);
         else
-            cli_error("%s: %s", name, ts_strerror(st));
+            cli_error("%s: %s", name, msg);
         bins_free(&b);
         return st == TS_ERR_ALPHA || st == TS_ERR_OPTION ? CLI_USAGE
                : st == TS_ERR_INFEASIBLE                 ? CLI_INFEASIBLE

@@ -138,9 +138,63 @@ static void *funcs_data[] = {NULL};
 static char types[] = {NPY_DOUBLE, NPY_DOUBLE, NPY_DOUBLE, NPY_DOUBLE,
                        NPY_DOUBLE, NPY_INT32,  NPY_INT64};
 
+/* message(edges, totals, alpha, lo, hi): the library's sentence
+ * (ts_error_message) of why ts_histo_new refuses these bins, or None when it
+ * builds them. */
+static PyObject *py_message(PyObject *self, PyObject *args)
+{
+    (void)self;
+    PyObject *oe, *ot;
+    ts_histo_options ho;
+    ts_histo_options_init(&ho);
+    if (!PyArg_ParseTuple(args, "OOddd", &oe, &ot, &ho.alpha, &ho.lo, &ho.hi))
+        return NULL;
+    PyArrayObject *ae = (PyArrayObject *)PyArray_FROMANY(oe, NPY_DOUBLE, 1, 1, NPY_ARRAY_IN_ARRAY);
+    PyArrayObject *at = ae ? (PyArrayObject *)PyArray_FROMANY(ot, NPY_DOUBLE, 1, 1,
+                                                              NPY_ARRAY_IN_ARRAY)
+                           : NULL;
+    PyObject *result = NULL;
+    if (!at) {
+        /* exception set */
+    } else if (PyArray_SIZE(ae) != PyArray_SIZE(at) + 1) {
+        PyErr_SetString(PyExc_ValueError, "message: edges need one more value than totals");
+    } else {
+        const double *e = PyArray_DATA(ae), *t = PyArray_DATA(at);
+        size_t n = (size_t)PyArray_SIZE(at);
+        ts_histo *h = NULL;
+        ts_error err;
+        ts_status st = ts_histo_new(e, t, n, &ho, &h, &err);
+        ts_histo_free(h);
+        if (st == TS_OK) {
+            result = Py_None;
+            Py_INCREF(result);
+        } else {
+            ts_error_context ctx;
+            ts_error_context_init(&ctx);
+            ctx.x = e;
+            ctx.f = t;
+            ctx.n_points = n + 1;
+            ctx.histo_options = &ho;
+            char buf[1024];
+            ts_error_message(&err, &ctx, buf, sizeof buf);
+            result = PyUnicode_DecodeUTF8(buf, (Py_ssize_t)strlen(buf), "replace");
+        }
+    }
+    Py_XDECREF(ae);
+    Py_XDECREF(at);
+    return result;
+}
+
+static PyMethodDef methods[] = {
+    {"message", py_message, METH_VARARGS,
+     "message(edges, totals, alpha, lo, hi) -> the library's sentence of why the bins are "
+     "refused, or None."},
+    {NULL, NULL, 0, NULL},
+};
+
 static struct PyModuleDef moduledef = {
     PyModuleDef_HEAD_INIT, "_histo",
-    "numpy generalized ufunc of trigspline.disaggregate (rates from bin totals).", -1, NULL,
+    "numpy generalized ufunc of trigspline.disaggregate (rates from bin totals).", -1, methods,
     NULL, NULL, NULL, NULL,
 };
 

@@ -101,6 +101,16 @@ def test_errors():
     with pytest.raises(TrigsplineError) as ex:
         trigspline.disaggregate(e, [1.0, -1.0, 2.0], g)
     assert ex.value.name == "TS_ERR_NEGATIVE" and ex.value.index == 1
+    # the library's sentence, naming the bin and its values
+    assert "bin 1 [1, 2]: total -1 is negative; totals must be >= 0" in str(ex.value)
+    with pytest.raises(TrigsplineError) as ex:
+        trigspline.disaggregate(e, [[1.0, 2.0, 3.0], [1.0, 2.0, -3.0]], g)
+    assert "bin 2 [2, 3]: total -3 is negative" in str(ex.value)
+    assert ex.value.series == (1,)
+    with pytest.raises(TrigsplineError) as ex:
+        trigspline.disaggregate([0.0, 1.0, 1.0, 3.0], [1.0, 2.0, 3.0], g)
+    assert ex.value.name == "TS_ERR_UNSORTED"
+    assert "edge 2 (x = 1) is not greater than the previous edge 1" in str(ex.value)
     with pytest.raises(TrigsplineError) as ex:
         trigspline.disaggregate(e, [1.0, 2.0], g)
     assert ex.value.name == "TS_ERR_LENGTH"
@@ -110,6 +120,12 @@ def test_errors():
     with pytest.raises(TrigsplineError) as ex:
         trigspline.disaggregate(e, [1.0, 5.0, 1.0], g, hi=4.0)
     assert ex.value.name == "TS_ERR_INFEASIBLE"
+    assert "bin 1 [1, 2]: total 5 gives the mean 5, outside the rate bounds [0, 4]" in str(ex.value)
+    with pytest.raises(TrigsplineError) as ex:
+        # means 0 and 1 under hi = 1: no edge value joins them (docs/method.md §12.4)
+        trigspline.disaggregate(e, [0.0, 1.0, 1.0], g, hi=1.0)
+    assert ("bin 0 [0, 1] and bin 1 [1, 2]: the means 0 and 1 are too far apart"
+            in str(ex.value))
     with pytest.raises(ValueError):
         trigspline.disaggregate(e, [1.0, 2.0, 3.0], g, kind="median")
     out = trigspline.disaggregate(e, [[1.0, -1.0, 2.0], [1.0, 2.0, 3.0]], g, errors="nan")

@@ -26,8 +26,10 @@ def _options(kind, lo, hi, alpha):
     return np.array([_KINDS[kind], alpha, lo, hi], dtype=np.float64)
 
 
-def _raise_first(status, index):
-    """TrigsplineError for the first series whose status is not TS_OK."""
+def _raise_first(status, index, edges, totals, opt):
+    """TrigsplineError for the first series whose status is not TS_OK; the
+    message is the library's sentence naming the bin or edge with its values
+    where the bins themselves are refused."""
     flat = np.asarray(status).ravel()
     bad = np.flatnonzero(flat)
     if bad.size == 0:
@@ -37,9 +39,16 @@ def _raise_first(status, index):
     name = STATUS_NAMES[st] if 0 <= st < len(STATUS_NAMES) else ""
     where = "query" if name == "TS_ERR_DOMAIN" else None
     series = tuple(int(i) for i in np.unravel_index(k, np.shape(status)))
-    msg = strerror(st)
-    if ix >= 0:
-        msg += " (%s %d)" % ("grid point" if where else "bin or edge", ix)
+    msg = None
+    if not where and ix >= 0:
+        shape = np.shape(status)
+        e = np.broadcast_to(edges, shape + edges.shape[-1:])[series]
+        t = np.broadcast_to(totals, shape + totals.shape[-1:])[series]
+        msg = _histo.message(e, t, float(opt[1]), float(opt[2]), float(opt[3]))
+    if msg is None:
+        msg = strerror(st)
+        if ix >= 0:
+            msg += " (%s %d)" % ("grid point" if where else "bin or edge", ix)
     if series:
         msg += " in series %s" % (series,)
     raise TrigsplineError(st, msg, ix if ix >= 0 else None, where, series or None)
@@ -101,7 +110,7 @@ def disaggregate(edges, totals, grid=None, *, per_bin=None, kind="totals", lo=No
                                                          t.shape[-1]))
     out, status, index = _histo.disaggregate(e, t, g, opt)
     if errors == "raise":
-        _raise_first(status, index)
+        _raise_first(status, index, e, t, opt)
     if kind == "totals" and per_bin is None:
         out = out[..., 1:]
     return np.moveaxis(out, -1, axis)

@@ -59,6 +59,16 @@ test('disaggregate: refusals', () => {
   err(() => ts.disaggregate([0, 1, 2], [1, 1], [0, 2], { kind: 'mode' }), 'TS_ERR_OPTION');
   err(() => ts.disaggregate([0, 1, 2], [1, 5], [0, 2], { hi: 3 }), 'TS_ERR_INFEASIBLE');
   err(() => ts.disaggregate([0, 1, 2], [1, 'x'], [0, 2]), 'TS_ERR_NONFINITE');
+  // the library's sentence names the bin or edge with its values
+  const msg = (fn) => { try { fn(); } catch (e) { return e.message; } return ''; };
+  assert.match(msg(() => ts.disaggregate([0, 1, 2], [1, -1], [0, 2])),
+    /bin 1 \[1, 2\]: total -1 is negative; totals must be >= 0/);
+  assert.match(msg(() => ts.disaggregate([0, 1, 2], [1, 5], [0, 2], { hi: 3 })),
+    /bin 1 \[1, 2\]: total 5 gives the mean 5, outside the rate bounds \[0, 3\]/);
+  assert.match(msg(() => ts.disaggregate([0, 1, 1], [1, 1], [0, 1])),
+    /edge 2 \(x = 1\) is not greater than the previous edge 1/);
+  // a refusal after a good call: no stale sentence
+  assert.doesNotMatch(msg(() => ts.disaggregate([0, 1, 2], [1, 1], [0, 3])), /bin/);
   const top = ts.heapTop();
   for (let i = 0; i < 200; i++) ts.disaggregate(edges, totals, grid);
   assert.equal(ts.heapTop(), top); // no leak
