@@ -1,2 +1,0 @@
-# Empty dependencies file for test_eval_mode.
-# This may be replaced when dependencies are built.

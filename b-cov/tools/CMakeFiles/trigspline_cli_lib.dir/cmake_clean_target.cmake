@@ -1,3 +1,0 @@
-file(REMOVE_RECURSE
-  "libtrigspline_cli_lib.a"
-)
