@@ -9,29 +9,8 @@
 #include <math.h>
 #include <string.h>
 
-#define CON_EXACT 32 /* terms of the exact sums below */
+#define CON_EXACT TS_EXACT_TERMS /* terms of the exact sums below (ts__exact_sign) */
 #define CON_DOUBLINGS 60
-
-/* Sign of the exact sum of v[0..n), n <= CON_EXACT (Shewchuk's expansion sum,
- * as ts__exact_sign; terms |v| <= 2^1020). */
-static int exact_sign(const double *v, int n)
-{
-    double e[CON_EXACT];
-    int k = 0;
-    for (int j = 0; j < n; j++) {
-        double q = v[j];
-        for (int l = 0; l < k; l++) {
-            double s = q + e[l], z = s - q;
-            e[l] = (q - (s - z)) + (e[l] - z);
-            q = s;
-        }
-        e[k++] = q;
-    }
-    for (int l = k - 1; l >= 0; l--)
-        if (e[l] != 0.0)
-            return (e[l] > 0.0) - (e[l] < 0.0);
-    return 0;
-}
 
 /* a − b exactly as two terms (TwoSum). */
 static void two_diff(double a, double b, double r[2])
@@ -163,7 +142,7 @@ static int data_inside(const ts_constraint *c, double xj, double fj)
     two_diff(xj, c->px[p], g);
     prod_terms(a, 2, b, 2, sg, v, &k);
     prod_terms(e, 2, g, 2, -sg, v, &k);
-    return exact_sign(v, k) > 0;
+    return ts__exact_sign(v, k) > 0;
 }
 
 /* docs/method.md §13.1: the necessary conditions on the data. */
@@ -185,7 +164,7 @@ static ts_status data_checks(const double *x, const double *f, size_t n, const t
                 two_diff(x[j + 1], x[j], g);
                 prod_terms(a, 2, b, 2, sg, v, &m);
                 prod_terms(e, 2, g, 2, -sg, v, &m);
-                if (exact_sign(v, m) < 0)
+                if (ts__exact_sign(v, m) < 0)
                     return con_fail(err, fail, TS_ERR_CONDITION, k, j, TS_WHERE_POINT,
                                     sg > 0 ? TS_CONDITION_CONVEX_DATA : TS_CONDITION_CONCAVE_DATA);
             }
@@ -207,7 +186,7 @@ static ts_status data_checks(const double *x, const double *f, size_t n, const t
                     if (ts__exact_product(L, x[i], s, p) != 2)
                         p[0] = s * L * x[i], p[1] = 0.0;
                     v[m++] = p[0], v[m++] = p[1];
-                    if (exact_sign(v, m) < 0)
+                    if (ts__exact_sign(v, m) < 0)
                         return mono ? con_fail(err, fail, TS_ERR_CONDITION, k, i + 1, TS_WHERE_POINT,
                                                TS_CONDITION_MONOTONE_DATA)
                                     : con_fail(err, fail, TS_ERR_CONDITION, k, i,
@@ -483,7 +462,7 @@ static int convex_polygon(const seg *g, double sg)
             int k = 0;
             prod_terms(dx[a], 2, dB[b], 2, sg, v, &k);
             prod_terms(dB[a], 2, dx[b], 2, -sg, v, &k);
-            if (exact_sign(v, k) < 0)
+            if (ts__exact_sign(v, k) < 0)
                 return 0;
         }
     return 1;
@@ -505,7 +484,7 @@ static int slope_polygon(const seg *g, double L, double s)
         v[k++] = s * g->B[l + 1];
         v[k++] = -s * g->B[l];
         prod_terms(Lh, 2, dx[l], 2, -s, v, &k);
-        if (exact_sign(v, k) < 0)
+        if (ts__exact_sign(v, k) < 0)
             return 0;
     }
     return 1;
@@ -540,7 +519,7 @@ static int line_polygon(const seg *g, double x0, double y0, double m, double bs)
         prod_terms(mm, 1, tt, nt, -bs, v, &k);
         /* a constant bound: S − c = Σ A_l (B_l − c) >= 0 needs B_l >= c only
          * (the data may touch it); a sloped piece: strictly above */
-        if (exact_sign(v, k) < (m == 0.0 && x0 == g->xi ? 0 : 1))
+        if (ts__exact_sign(v, k) < (m == 0.0 && x0 == g->xi ? 0 : 1))
             return 0;
     }
     return 1;

@@ -674,8 +674,9 @@ ts_status ts__shape_range(ts_spline *sp, const ts_spline_options *opt, int dir, 
  * each |v_j| <= 2^1020 (so that no partial sum overflows): Shewchuk's
  * expansion sum (TwoSum keeps each rounding error; the largest nonzero
  * component of the nonoverlapping result has the sum's sign).  The data
- * checks' side of a line or plane (docs/method.md §5.8, §11.3). */
-#define TS_EXACT_TERMS 12
+ * checks' side of a line or plane (docs/method.md §5.8, §11.3) and the
+ * constraint records' certificates (§13.4, up to 32 terms). */
+#define TS_EXACT_TERMS 32
 int ts__exact_sign(const double *v, int n);
 /* sg times the two terms of a x = P + e (exact by fma) into v[0..2), for
  * ts__exact_sign: returns 2, or 0 where P is beyond its range or so small
