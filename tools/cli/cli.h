@@ -571,6 +571,19 @@ void cli_constraints_free(cli_opts *o);
 /* "constraints": per record, per interval {active, gap, at, certified} or null. */
 void cli_constraints_json(cli_json *j, const ts_spline *s);
 
+/* ---- text.c ----------------------------------------------------------- */
+/* Text appended to b until an append fails (bad set: the text is then
+ * incomplete and must not be written; report out of memory). */
+typedef struct cli_text {
+    tsu_plot_buf *b;
+    int bad;
+} cli_text;
+void cli_text_puts(cli_text *w, const char *s);
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+void cli_text_printf(cli_text *w, const char *fmt, ...);
+
 /* ---- surface_plot.c -------------------------------------------------- */
 /* The heatmap of surface s through the grid x, y, z (z[j*nx + i]) built with
  * so: viridis, or a diverging map centred on 0 when the values straddle 0;

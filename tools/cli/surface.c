@@ -6,7 +6,6 @@
 #include "cli.h"
 
 #include <errno.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -16,36 +15,6 @@ static int parse_num(const char *s, double *v)
     const char *stop;
     return tsu_parse_double(s, s + strlen(s), v, &stop) == TSU_NUM_OK && *stop == '\0' &&
            isfinite(*v);
-}
-
-/* ---- text built in memory ---------------------------------------------------- */
-/* Appends stop at the first failed allocation: the text is then incomplete,
- * is never written, and the run exits "out of memory". */
-typedef struct sbuf {
-    tsu_plot_buf *b;
-    int bad;
-} sbuf;
-
-static void sputs(sbuf *w, const char *s)
-{
-    if (!w->bad && tsu_plot_buf_puts(w->b, s) != TSU_PLOT_OK)
-        w->bad = 1;
-}
-
-#if defined(__GNUC__)
-__attribute__((format(printf, 2, 3)))
-#endif
-static void sprint(sbuf *w, const char *fmt, ...)
-{
-    char line[512]; /* the longest line here: 4 numbers of TSU_FMT_SIZE and markup */
-    va_list ap;
-    if (w->bad)
-        return;
-    va_start(ap, fmt);
-    int n = vsnprintf(line, sizeof line, fmt, ap);
-    va_end(ap);
-    if (n < 0 || (size_t)n >= sizeof line || tsu_plot_buf_append(w->b, line, (size_t)n) != TSU_PLOT_OK)
-        w->bad = 1;
 }
 
 /* ---- reading the grid ------------------------------------------------------ */
@@ -330,7 +299,7 @@ int cli_surface(int argc, char **argv)
     for (size_t k = 0; k < mx * my; k++)
         smin = fmin(smin, zq[k]), smax = fmax(smax, zq[k]);
     char nb[TSU_FMT_SIZE];
-    sbuf tw = {&text, 0};
+    cli_text tw = {&text, 0};
     if (o.json) {
         cli_json j;
         cli_json_init(&j);
@@ -387,22 +356,22 @@ int cli_surface(int argc, char **argv)
         }
         text = j.b;
     } else if (o.matrix_out) {
-        sputs(&tw, "y\\x");
+        cli_text_puts(&tw, "y\\x");
         for (size_t a = 0; a < mx; a++)
-            sprint(&tw, ",%s", cli_num(xq[a], nb));
-        sputs(&tw, "\n");
+            cli_text_printf(&tw, ",%s", cli_num(xq[a], nb));
+        cli_text_puts(&tw, "\n");
         for (size_t b = 0; b < my; b++) {
-            sputs(&tw, cli_num(yq[b], nb));
+            cli_text_puts(&tw, cli_num(yq[b], nb));
             for (size_t a = 0; a < mx; a++)
-                sprint(&tw, ",%s", cli_num(zq[b * mx + a], nb));
-            sputs(&tw, "\n");
+                cli_text_printf(&tw, ",%s", cli_num(zq[b * mx + a], nb));
+            cli_text_puts(&tw, "\n");
         }
     } else {
-        sputs(&tw, "x,y,z\n");
+        cli_text_puts(&tw, "x,y,z\n");
         for (size_t b = 0; b < my; b++)
             for (size_t a = 0; a < mx; a++) {
                 char n1[TSU_FMT_SIZE], n2[TSU_FMT_SIZE];
-                sprint(&tw, "%s,%s,%s\n", cli_num(xq[a], n1), cli_num(yq[b], n2),
+                cli_text_printf(&tw, "%s,%s,%s\n", cli_num(xq[a], n1), cli_num(yq[b], n2),
                        cli_num(zq[b * mx + a], nb));
             }
     }

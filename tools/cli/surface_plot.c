@@ -6,34 +6,12 @@
 
 #include <errno.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-typedef struct pbuf {
-    tsu_plot_buf *b;
-    int bad;
-} pbuf;
-
-#if defined(__GNUC__)
-__attribute__((format(printf, 2, 3)))
-#endif
-static void put(pbuf *w, const char *fmt, ...)
-{
-    char line[512];
-    va_list ap;
-    if (w->bad)
-        return;
-    va_start(ap, fmt);
-    int n = vsnprintf(line, sizeof line, fmt, ap);
-    va_end(ap);
-    if (n < 0 || (size_t)n >= sizeof line || tsu_plot_buf_append(w->b, line, (size_t)n) != TSU_PLOT_OK)
-        w->bad = 1;
-}
-
 /* A tick label with the sign (and an exponent's sign) as a real minus. */
-static void put_label(pbuf *w, const char *s)
+static void put_label(cli_text *w, const char *s)
 {
     char out[TSU_PLOT_LABEL_MAX * 8];
     size_t k = 0;
@@ -46,7 +24,7 @@ static void put_label(pbuf *w, const char *s)
         }
     }
     out[k] = 0;
-    put(w, "%s", out);
+    cli_text_printf(w, "%s", out);
 }
 
 /* viridis (matplotlib, van der Walt & Smith 2015) at 9 even stops */
@@ -164,7 +142,7 @@ int cli_surface_plot(const double *x, size_t nx, const double *y, size_t ny, con
         free(acted);
         return ENOMEM;
     }
-    pbuf w = {svg, 0};
+    cli_text w = {svg, 0};
     for (size_t a = 0; a < N; a++) {
         xs[a] = x0 + (x1 - x0) * ((double)a + 0.5) / (double)N;
         ys[a] = y0 + (y1 - y0) * ((double)a + 0.5) / (double)N;
@@ -182,10 +160,10 @@ int cli_surface_plot(const double *x, size_t nx, const double *y, size_t ny, con
 #define PX(xx) (L + W * ((xx) - x0) / (x1 - x0))
 #define PY(yy) (T + H * (1.0 - ((yy) - y0) / (y1 - y0)))
 #define U(val) (((val) - clo) / (chi - clo))
-    put(&w, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%g\" height=\"%g\" "
+    cli_text_printf(&w, "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%g\" height=\"%g\" "
             "viewBox=\"0 0 %g %g\" font-family=\"sans-serif\" font-size=\"12\">\n",
         L + W + R, T + H + B, L + W + R, T + H + B);
-    put(&w, "<rect width=\"100%%\" height=\"100%%\" fill=\"#fff\"/>\n");
+    cli_text_printf(&w, "<rect width=\"100%%\" height=\"100%%\" fill=\"#fff\"/>\n");
     /* the hatching's id: unique per data (plots inlined in one HTML page
      * share the id namespace), the same for the same data */
     unsigned long long hsh = 1469598103934665603ULL;
@@ -197,23 +175,23 @@ int cli_surface_plot(const double *x, size_t nx, const double *y, size_t ny, con
     }
     char pid[32];
     snprintf(pid, sizeof pid, "acted-%08llx", hsh & 0xffffffffULL);
-    put(&w, "<defs><pattern id=\"%s\" patternUnits=\"userSpaceOnUse\" width=\"8\" "
+    cli_text_printf(&w, "<defs><pattern id=\"%s\" patternUnits=\"userSpaceOnUse\" width=\"8\" "
             "height=\"8\"><path d=\"M-1 9L9 -1\" stroke=\"#fff\" stroke-width=\"0.9\" "
             "stroke-opacity=\"0.4\"/></pattern></defs>\n", pid);
-    put(&w, "<g shape-rendering=\"crispEdges\">\n");
+    cli_text_printf(&w, "<g shape-rendering=\"crispEdges\">\n");
     double cw = W / (double)N, ch = H / (double)N;
     for (size_t b = 0; b < N; b++)
         for (size_t a = 0; a < N; a++) {
             char col[8];
             colour(div, U(v[b * N + a]), col);
-            put(&w, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"%s\"/>\n",
+            cli_text_printf(&w, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\" fill=\"%s\"/>\n",
                 L + cw * (double)a, T + H - ch * (double)(b + 1), cw + 0.3, ch + 0.3, col);
         }
-    put(&w, "</g>\n");
+    cli_text_printf(&w, "</g>\n");
     /* contours at the colour bar's ticks (marching squares on the cell centres) */
     tsu_plot_ticks ct;
     int have_ct = tsu_plot_ticks_compute(lo, hi, TSU_PLOT_RANGE_FIXED, &ct) == TSU_PLOT_OK;
-    put(&w, "<g stroke=\"#000\" stroke-opacity=\"0.55\" stroke-width=\"0.7\" fill=\"none\">\n");
+    cli_text_printf(&w, "<g stroke=\"#000\" stroke-opacity=\"0.55\" stroke-width=\"0.7\" fill=\"none\">\n");
     for (size_t c = 0; have_ct && c < ct.n; c++) {
         double level = ct.value[c];
         if (!(lo < level && level < hi))
@@ -236,100 +214,100 @@ int cli_surface_plot(const double *x, size_t nx, const double *y, size_t ny, con
                     }
                 }
                 for (int mm = 0; mm + 1 < k; mm += 2)
-                    put(&w, "<path d=\"M%.2f %.2fL%.2f %.2f\"/>\n", PX(ex[mm]), PY(ey[mm]),
+                    cli_text_printf(&w, "<path d=\"M%.2f %.2fL%.2f %.2f\"/>\n", PX(ex[mm]), PY(ey[mm]),
                         PX(ex[mm + 1]), PY(ey[mm + 1]));
             }
     }
-    put(&w, "</g>\n");
+    cli_text_printf(&w, "</g>\n");
     /* where the scheme acts: hatched */
     size_t n_acted = 0;
     if (rep) {
         if (scheme_acted(x, nx, y, ny, z, so, acted) != 0)
             for (size_t c = 0; c < np; c++)
                 acted[c] = active[c];
-        put(&w, "<g fill=\"url(#%s)\" stroke=\"none\">\n", pid);
+        cli_text_printf(&w, "<g fill=\"url(#%s)\" stroke=\"none\">\n", pid);
         for (size_t c = 0; c < np; c++)
             if (acted[c]) {
                 n_acted++;
-                put(&w, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\"><title>patch "
+                cli_text_printf(&w, "<rect x=\"%.2f\" y=\"%.2f\" width=\"%.2f\" height=\"%.2f\"><title>patch "
                         "(%zu, %zu): the shape scheme acts here</title></rect>\n",
                     PX(rep[c].x0), PY(rep[c].y1), PX(rep[c].x1) - PX(rep[c].x0),
                     PY(rep[c].y0) - PY(rep[c].y1), rep[c].i, rep[c].j);
             }
-        put(&w, "</g>\n");
+        cli_text_printf(&w, "</g>\n");
     }
-    put(&w, "<g fill=\"#fff\" stroke=\"#000\" stroke-width=\"0.8\">\n");
+    cli_text_printf(&w, "<g fill=\"#fff\" stroke=\"#000\" stroke-width=\"0.8\">\n");
     for (size_t k = 0; k < nx * ny; k++)
-        put(&w, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"2.2\"/>\n", PX(x[k % nx]), PY(y[k / nx]));
-    put(&w, "</g>\n");
-    put(&w, "<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"none\" stroke=\"#000\"/>\n",
+        cli_text_printf(&w, "<circle cx=\"%.2f\" cy=\"%.2f\" r=\"2.2\"/>\n", PX(x[k % nx]), PY(y[k / nx]));
+    cli_text_printf(&w, "</g>\n");
+    cli_text_printf(&w, "<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"none\" stroke=\"#000\"/>\n",
         L, T, W, H);
     /* axis ticks */
     tsu_plot_ticks tx, ty;
-    put(&w, "<g stroke=\"#000\">\n");
+    cli_text_printf(&w, "<g stroke=\"#000\">\n");
     int have_tx = tsu_plot_ticks_compute(x0, x1, TSU_PLOT_RANGE_FIXED, &tx) == TSU_PLOT_OK;
     int have_ty = tsu_plot_ticks_compute(y0, y1, TSU_PLOT_RANGE_FIXED, &ty) == TSU_PLOT_OK;
     for (size_t k = 0; have_tx && k < tx.n; k++)
-        put(&w, "<path d=\"M%.2f %gv5\"/>\n", PX(tx.value[k]), T + H);
+        cli_text_printf(&w, "<path d=\"M%.2f %gv5\"/>\n", PX(tx.value[k]), T + H);
     for (size_t k = 0; have_ty && k < ty.n; k++)
-        put(&w, "<path d=\"M%g %.2fh-5\"/>\n", L, PY(ty.value[k]));
-    put(&w, "</g>\n<g fill=\"#000\">\n");
+        cli_text_printf(&w, "<path d=\"M%g %.2fh-5\"/>\n", L, PY(ty.value[k]));
+    cli_text_printf(&w, "</g>\n<g fill=\"#000\">\n");
     for (size_t k = 0; have_tx && k < tx.n; k++) {
-        put(&w, "<text x=\"%.2f\" y=\"%g\" text-anchor=\"middle\">", PX(tx.value[k]), T + H + 19);
+        cli_text_printf(&w, "<text x=\"%.2f\" y=\"%g\" text-anchor=\"middle\">", PX(tx.value[k]), T + H + 19);
         put_label(&w, tx.label[k]);
-        put(&w, "</text>\n");
+        cli_text_printf(&w, "</text>\n");
     }
     for (size_t k = 0; have_ty && k < ty.n; k++) {
-        put(&w, "<text x=\"%g\" y=\"%.2f\" text-anchor=\"end\">", L - 8, PY(ty.value[k]) + 4);
+        cli_text_printf(&w, "<text x=\"%g\" y=\"%.2f\" text-anchor=\"end\">", L - 8, PY(ty.value[k]) + 4);
         put_label(&w, ty.label[k]);
-        put(&w, "</text>\n");
+        cli_text_printf(&w, "</text>\n");
     }
-    put(&w, "<text x=\"%g\" y=\"%g\" text-anchor=\"middle\">x</text>\n", L + W / 2, T + H + 40);
+    cli_text_printf(&w, "<text x=\"%g\" y=\"%g\" text-anchor=\"middle\">x</text>\n", L + W / 2, T + H + 40);
     if (have_tx && tx.exponent)
-        put(&w, "<text x=\"%g\" y=\"%g\" text-anchor=\"end\">&#215;10<tspan dy=\"-5\" "
+        cli_text_printf(&w, "<text x=\"%g\" y=\"%g\" text-anchor=\"end\">&#215;10<tspan dy=\"-5\" "
                 "font-size=\"9\">%d</tspan></text>\n", L + W, T + H + 40, tx.exponent);
-    put(&w, "<text x=\"%g\" y=\"%g\" transform=\"rotate(-90 %g %g)\" text-anchor=\"middle\">y"
+    cli_text_printf(&w, "<text x=\"%g\" y=\"%g\" transform=\"rotate(-90 %g %g)\" text-anchor=\"middle\">y"
             "</text>\n", L - 50, T + H / 2, L - 50, T + H / 2);
     if (have_ty && ty.exponent)
-        put(&w, "<text x=\"%g\" y=\"%g\">&#215;10<tspan dy=\"-5\" font-size=\"9\">%d</tspan>"
+        cli_text_printf(&w, "<text x=\"%g\" y=\"%g\">&#215;10<tspan dy=\"-5\" font-size=\"9\">%d</tspan>"
                 "</text>\n", 4.0, T - 6 > 10 ? T - 6 : 12, ty.exponent);
-    put(&w, "</g>\n");
+    cli_text_printf(&w, "</g>\n");
     /* colour bar: the colour range, its round values labelled */
     double bx = L + W + 18, bw = 16;
 #define BY(val) (T + H * (1.0 - ((val) - clo) / (chi - clo)))
-    put(&w, "<g shape-rendering=\"crispEdges\">\n");
+    cli_text_printf(&w, "<g shape-rendering=\"crispEdges\">\n");
     for (int c = 0; c < 64; c++) {
         char col[8];
         colour(div, (c + 0.5) / 64.0, col);
-        put(&w, "<rect x=\"%g\" y=\"%.2f\" width=\"%g\" height=\"%.2f\" fill=\"%s\"/>\n", bx,
+        cli_text_printf(&w, "<rect x=\"%g\" y=\"%.2f\" width=\"%g\" height=\"%.2f\" fill=\"%s\"/>\n", bx,
             T + H - H * (c + 1) / 64.0, bw, H / 64.0 + 0.3, col);
     }
-    put(&w, "</g>\n<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"none\" "
+    cli_text_printf(&w, "</g>\n<rect x=\"%g\" y=\"%g\" width=\"%g\" height=\"%g\" fill=\"none\" "
             "stroke=\"#000\"/>\n", bx, T, bw, H);
     tsu_plot_ticks bt;
     if (tsu_plot_ticks_compute(clo, chi, TSU_PLOT_RANGE_FIXED, &bt) == TSU_PLOT_OK) {
         for (size_t k = 0; k < bt.n; k++) {
             double yy = BY(bt.value[k]);
-            put(&w, "<path d=\"M%g %.2fh4\" stroke=\"#000\"/>\n<text x=\"%g\" y=\"%.2f\">",
+            cli_text_printf(&w, "<path d=\"M%g %.2fh4\" stroke=\"#000\"/>\n<text x=\"%g\" y=\"%.2f\">",
                 bx + bw, yy, bx + bw + 7, yy + 4);
             put_label(&w, bt.label[k]);
-            put(&w, "</text>\n");
+            cli_text_printf(&w, "</text>\n");
         }
         if (bt.exponent)
-            put(&w, "<text x=\"%g\" y=\"%g\">&#215;10<tspan dy=\"-5\" font-size=\"9\">%d</tspan>"
+            cli_text_printf(&w, "<text x=\"%g\" y=\"%g\">&#215;10<tspan dy=\"-5\" font-size=\"9\">%d</tspan>"
                     "</text>\n", bx, T + H + 19, bt.exponent);
     }
 #undef BY
     if (n_acted) {
-        put(&w, "<rect x=\"%g\" y=\"%g\" width=\"14\" height=\"10\" fill=\"#3b518b\"/>"
+        cli_text_printf(&w, "<rect x=\"%g\" y=\"%g\" width=\"14\" height=\"10\" fill=\"#3b518b\"/>"
                 "<rect x=\"%g\" y=\"%g\" width=\"14\" height=\"10\" fill=\"url(#%s)\" "
                 "stroke=\"#000\" stroke-width=\"0.5\"/>\n",
             L, T + H + 48, L, T + H + 48, pid);
-        put(&w, "<text x=\"%g\" y=\"%g\" font-size=\"11\">patches where the shape scheme acts "
+        cli_text_printf(&w, "<text x=\"%g\" y=\"%g\" font-size=\"11\">patches where the shape scheme acts "
                 "(%zu of %zu: without it the surface leaves the bounds there)</text>\n",
             L + 20, T + H + 57, n_acted, np);
     }
-    put(&w, "</svg>\n");
+    cli_text_printf(&w, "</svg>\n");
 #undef PX
 #undef PY
 #undef U

@@ -113,15 +113,13 @@ tsu_plot_status tsu_plot_buf_puts(tsu_plot_buf *b, const char *s)
     return tsu_plot_buf_append(b, s, strlen(s));
 }
 
-tsu_plot_status tsu_plot_buf_printf(tsu_plot_buf *b, const char *fmt, ...)
+tsu_plot_status tsu_plot_buf_vprintf(tsu_plot_buf *b, const char *fmt, va_list ap)
 {
     if (!b || !fmt)
         return TSU_PLOT_ERR_NULL;
-    va_list ap, ap2;
-    va_start(ap, fmt);
+    va_list ap2;
     va_copy(ap2, ap);
     int n = vsnprintf(NULL, 0, fmt, ap);
-    va_end(ap);
     tsu_plot_status st = TSU_PLOT_ERR_ARG;
     if (n >= 0) {
         st = buf_reserve(b, (size_t)n);
@@ -131,6 +129,15 @@ tsu_plot_status tsu_plot_buf_printf(tsu_plot_buf *b, const char *fmt, ...)
         }
     }
     va_end(ap2);
+    return st;
+}
+
+tsu_plot_status tsu_plot_buf_printf(tsu_plot_buf *b, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    tsu_plot_status st = tsu_plot_buf_vprintf(b, fmt, ap);
+    va_end(ap);
     return st;
 }
 

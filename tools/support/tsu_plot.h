@@ -59,6 +59,7 @@
 #ifndef TSU_PLOT_H
 #define TSU_PLOT_H
 
+#include <stdarg.h>
 #include <stddef.h>
 #include <stdio.h>
 
@@ -106,6 +107,11 @@ tsu_plot_status tsu_plot_buf_puts(tsu_plot_buf *b, const char *s);
 __attribute__((format(printf, 2, 3)))
 #endif
 tsu_plot_status tsu_plot_buf_printf(tsu_plot_buf *b, const char *fmt, ...);
+/* The same with a va_list (ap is used up). */
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 0)))
+#endif
+tsu_plot_status tsu_plot_buf_vprintf(tsu_plot_buf *b, const char *fmt, va_list ap);
 /* Append UTF-8 text escaped for XML/HTML as described above (pure ASCII). */
 tsu_plot_status tsu_plot_buf_xml(tsu_plot_buf *b, const char *text);
 
