@@ -255,7 +255,7 @@ WEB_FUNCS := ts_version ts_strerror ts_status_name ts_vocab_name ts_vocab_count 
   ts_curve_sample ts_curve_length tsw_spline_new tsw_curve_new tsw_defaults tsw_curve_defaults \
   tsw_report tsw_certify tsw_curve_certify tsw_error_constants tsw_heap_top ts_error_message \
   tsw_message tsw_message_clear tsw_constraints tsw_constraint_report ts_spline_constraints malloc free \
-  tsw_disaggregate tsw_histo_defaults
+  tsw_disaggregate tsw_histo_defaults tsw_simd
 web_comma := ,
 web_space := $(web_empty) $(web_empty)
 WEB_EXPORTS := $(subst $(web_space),$(web_comma),$(patsubst %,'_%',$(WEB_FUNCS)))
@@ -266,14 +266,22 @@ $(WEB_VERSION_H): CMakeLists.txt cmake/trigspline_version.h.in scripts/version.p
 	python3 scripts/version.py --header $@
 
 # the library: a standalone wasm (imports only its memory), 2 MB initial
-# (trigspline.js creates the memory: keep the two in step)
-$(WEB_BUILD)/trigspline.wasm: $(WEB_LIB_SRC) src/internal.h include/trigspline.h bindings/web/glue.c \
-  $(WEB_VERSION_H)
+# (trigspline.js creates the memory: keep the two in step); twice from the
+# same sources: trigspline.wasm (scalar, MVP) and trigspline-simd.wasm
+# (-msimd128: the compiler vectorises the batch kernel's loops with 128-bit
+# vectors, src/kernels.c); trigspline.js loads the SIMD one where the engine
+# validates a SIMD probe.
+WEB_LIB_DEPS := $(WEB_LIB_SRC) src/internal.h include/trigspline.h bindings/web/glue.c $(WEB_VERSION_H)
+WEB_LIB_LINK := -sSTANDALONE_WASM --no-entry -sIMPORTED_MEMORY -sINITIAL_MEMORY=2MB -sTOTAL_STACK=1MB \
+  -sALLOW_MEMORY_GROWTH -sMAXIMUM_MEMORY=2GB -sFILESYSTEM=0 -sEXPORTED_FUNCTIONS="[$(WEB_EXPORTS)]"
+$(WEB_BUILD)/trigspline.wasm: $(WEB_LIB_DEPS)
 	$(call need,emcc:emscripten node:nodejs)
 	@mkdir -p $(WEB_BUILD)
-	$(WEB_EMCC) $(WEB_WARN) -Isrc $(WEB_LIB_SRC) bindings/web/glue.c -sSTANDALONE_WASM --no-entry \
-	  -sIMPORTED_MEMORY -sINITIAL_MEMORY=2MB -sTOTAL_STACK=1MB -sALLOW_MEMORY_GROWTH \
-	  -sMAXIMUM_MEMORY=2GB -sFILESYSTEM=0 -sEXPORTED_FUNCTIONS="[$(WEB_EXPORTS)]" -o $@
+	$(WEB_EMCC) $(WEB_WARN) -Isrc $(WEB_LIB_SRC) bindings/web/glue.c $(WEB_LIB_LINK) -o $@
+$(WEB_BUILD)/trigspline-simd.wasm: $(WEB_LIB_DEPS)
+	$(call need,emcc:emscripten node:nodejs)
+	@mkdir -p $(WEB_BUILD)
+	$(WEB_EMCC) -msimd128 $(WEB_WARN) -Isrc $(WEB_LIB_SRC) bindings/web/glue.c $(WEB_LIB_LINK) -o $@
 
 # the command-line tool with an in-memory file system, called by the explorer's exports
 $(WEB_BUILD)/trigspline-cli.js: $(WEB_LIB_SRC) $(WEB_CLI_SRC) tools/cli/cli.h tools/support/tsu_io.h \
@@ -285,7 +293,7 @@ $(WEB_BUILD)/trigspline-cli.js: $(WEB_LIB_SRC) $(WEB_CLI_SRC) tools/cli/cli.h to
 	  -sINVOKE_RUN=0 -sEXIT_RUNTIME=0 -sALLOW_MEMORY_GROWTH -sFORCE_FILESYSTEM \
 	  -sEXPORTED_RUNTIME_METHODS='["FS","callMain"]' -o $@
 
-$(WEB_OUT)/index.html: $(WEB_BUILD)/trigspline.wasm $(WEB_BUILD)/trigspline-cli.js \
+$(WEB_OUT)/index.html: $(WEB_BUILD)/trigspline.wasm $(WEB_BUILD)/trigspline-simd.wasm $(WEB_BUILD)/trigspline-cli.js \
   $(wildcard bindings/web/*.js bindings/web/*.mjs bindings/web/*.mts bindings/web/explorer/*)
 	node bindings/web/build.mjs $(WEB_BUILD) $(WEB_OUT)
 
