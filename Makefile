@@ -7,11 +7,13 @@
 #   make demo       the paper's numerical section (out/paper), the
 #                   "why trigspline" page (out/why), the Python gallery (out/gallery)
 #                   and the charts gallery (out/charts)
-#   make web        the WebAssembly module and the explorer page (out/web)
+#   make web        the WebAssembly modules (SIMD128 and scalar) and the explorer page (out/web)
 #   make test-web   Node and headless-Chromium tests of out/web, out/why and out/charts
 #   make test-web-stack-full  stacked-area crossings on 1e5 random data sets
 #   make bench      benchmark against GSL and the build decisions -> bench/RESULTS.md
 #   make bench-python  the Python package against SciPy (also run by make bench)
+#   make bench-web  the WebAssembly sorted batch (SIMD128 and scalar module) against the
+#                   native portable kernel, with goal and verdict (also run by make bench)
 #   make accuracy   convergence study -> docs/accuracy.md, docs/accuracy.svg
 #   make valgrind   memcheck of the test programs
 #   make tsan       ThreadSanitizer build of the threads and core tests
@@ -115,10 +117,27 @@ bench:
 	CC=gcc $(CMAKE) -S . -B build-bench -DCMAKE_BUILD_TYPE=Release \
 	  -DTS_BUILD_BENCH=ON -DTS_BUILD_TESTS=OFF -DTS_BUILD_EXAMPLES=OFF >/dev/null
 	$(CMAKE) --build build-bench -j $(JOBS) --target run_bench
+	$(MAKE) --no-print-directory bench-web BENCH_WEB_FLAGS="--out bench/RESULTS.md"
 	$(MAKE) --no-print-directory bench-python
 	$(call need,/usr/bin/time:time)
 	$(CMAKE) --build build-bench -j $(JOBS) --target trigspline_cli
 	bench/bench_stream.sh build-bench
+
+# WebAssembly rows (bench/web_bench.mjs, node): the sorted batch of out/web's
+# SIMD128 and scalar modules against the native library's portable C kernel
+# (bench/web_native.c, built in build-bench as make bench builds it), in one
+# run, rounds interleaved; prints the table and the goal rows (make bench
+# appends them to bench/RESULTS.md: BENCH_WEB_FLAGS="--out FILE"; --quick:
+# 1e5 knots, 1e6 queries).
+.PHONY: bench-web
+BENCH_WEB_FLAGS ?=
+bench-web: web
+	$(call need,$(BUILD_TOOLS) node:nodejs)
+	$(call need_file,/usr/include/gsl/gsl_interp.h,libgsl-dev)
+	CC=gcc $(CMAKE) -S . -B build-bench -DCMAKE_BUILD_TYPE=Release \
+	  -DTS_BUILD_BENCH=ON -DTS_BUILD_TESTS=OFF -DTS_BUILD_EXAMPLES=OFF >/dev/null
+	$(CMAKE) --build build-bench -j $(JOBS) --target web_native
+	node bench/web_bench.mjs $(WEB_OUT) build-bench/bench/web_native $(BENCH_WEB_FLAGS)
 
 # Convergence study (docs/accuracy.md): prints the tables, rewrites the
 # results section of docs/accuracy.md and docs/accuracy.svg.  Compares with GSL.
@@ -224,10 +243,11 @@ test-why-page: why-demo
 	  (cd tests/browser && npm install --no-audit --no-fund --loglevel=error)
 	node tests/browser/why_page.mjs out/why/index.html
 # ---- Web: the library as WebAssembly and the explorer page (bindings/web) ----
-#   make web       out/web: trigspline.mjs (ES module, wasm embedded), trigspline.wasm,
-#                  trigspline-cli.mjs (the CLI, for the explorer's exports),
+#   make web       out/web: trigspline.mjs (ES module, wasm embedded), trigspline.wasm
+#                  (scalar) and trigspline-simd.wasm (SIMD128; the one loaded where the
+#                  engine has it), trigspline-cli.mjs (the CLI, for the explorer's exports),
 #                  index.html (the explorer), example.html (curve factory), sizes.txt
-#   make test-web  Node tests (bit identity with a native build, every status, no leak,
+#   make test-web  Node tests (bit identity of both modules with a native build, every status, no leak,
 #                  exports = the CLI's bytes) and the browser test (Chromium driven by
 #                  playwright-core); screenshot and timings under out/web-test/;
 #                  and the why page's browser test (test-why-page).
