@@ -7,11 +7,13 @@
 #   make demo       the paper's numerical section (out/paper), the
 #                   "why trigspline" page (out/why), the Python gallery (out/gallery)
 #                   and the charts gallery (out/charts)
-#   make web        the WebAssembly module and the explorer page (out/web)
+#   make web        the WebAssembly modules (SIMD128 and scalar) and the explorer page (out/web)
 #   make test-web   Node and headless-Chromium tests of out/web, out/why and out/charts
 #   make test-web-stack-full  stacked-area crossings on 1e5 random data sets
 #   make bench      benchmark against GSL and the build decisions -> bench/RESULTS.md
 #   make bench-python  the Python package against SciPy (also run by make bench)
+#   make bench-web  the WebAssembly sorted batch (SIMD128 and scalar module) against the
+#                   native portable kernel, with goal and verdict (also run by make bench)
 #   make accuracy   convergence study -> docs/accuracy.md, docs/accuracy.svg
 #   make valgrind   memcheck of the test programs
 #   make tsan       ThreadSanitizer build of the threads and core tests
@@ -115,10 +117,27 @@ bench:
 	CC=gcc $(CMAKE) -S . -B build-bench -DCMAKE_BUILD_TYPE=Release \
 	  -DTS_BUILD_BENCH=ON -DTS_BUILD_TESTS=OFF -DTS_BUILD_EXAMPLES=OFF >/dev/null
 	$(CMAKE) --build build-bench -j $(JOBS) --target run_bench
+	$(MAKE) --no-print-directory bench-web BENCH_WEB_FLAGS="--out bench/RESULTS.md"
 	$(MAKE) --no-print-directory bench-python
 	$(call need,/usr/bin/time:time)
 	$(CMAKE) --build build-bench -j $(JOBS) --target trigspline_cli
 	bench/bench_stream.sh build-bench
+
+# WebAssembly rows (bench/web_bench.mjs, node): the sorted batch of out/web's
+# SIMD128 and scalar modules against the native library's portable C kernel
+# (bench/web_native.c, built in build-bench as make bench builds it), in one
+# run, rounds interleaved; prints the table and the goal rows (make bench
+# appends them to bench/RESULTS.md: BENCH_WEB_FLAGS="--out FILE"; --quick:
+# 1e5 knots, 1e6 queries).
+.PHONY: bench-web
+BENCH_WEB_FLAGS ?=
+bench-web: web
+	$(call need,$(BUILD_TOOLS) node:nodejs)
+	$(call need_file,/usr/include/gsl/gsl_interp.h,libgsl-dev)
+	CC=gcc $(CMAKE) -S . -B build-bench -DCMAKE_BUILD_TYPE=Release \
+	  -DTS_BUILD_BENCH=ON -DTS_BUILD_TESTS=OFF -DTS_BUILD_EXAMPLES=OFF >/dev/null
+	$(CMAKE) --build build-bench -j $(JOBS) --target web_native
+	node bench/web_bench.mjs $(WEB_OUT) build-bench/bench/web_native $(BENCH_WEB_FLAGS)
 
 # Convergence study (docs/accuracy.md): prints the tables, rewrites the
 # results section of docs/accuracy.md and docs/accuracy.svg.  Compares with GSL.
@@ -224,10 +243,11 @@ test-why-page: why-demo
 	  (cd tests/browser && npm install --no-audit --no-fund --loglevel=error)
 	node tests/browser/why_page.mjs out/why/index.html
 # ---- Web: the library as WebAssembly and the explorer page (bindings/web) ----
-#   make web       out/web: trigspline.mjs (ES module, wasm embedded), trigspline.wasm,
-#                  trigspline-cli.mjs (the CLI, for the explorer's exports),
+#   make web       out/web: trigspline.mjs (ES module, wasm embedded), trigspline.wasm
+#                  (scalar) and trigspline-simd.wasm (SIMD128; the one loaded where the
+#                  engine has it), trigspline-cli.mjs (the CLI, for the explorer's exports),
 #                  index.html (the explorer), example.html (curve factory), sizes.txt
-#   make test-web  Node tests (bit identity with a native build, every status, no leak,
+#   make test-web  Node tests (bit identity of both modules with a native build, every status, no leak,
 #                  exports = the CLI's bytes) and the browser test (Chromium driven by
 #                  playwright-core); screenshot and timings under out/web-test/;
 #                  and the why page's browser test (test-why-page).
@@ -255,7 +275,7 @@ WEB_FUNCS := ts_version ts_strerror ts_status_name ts_vocab_name ts_vocab_count 
   ts_curve_sample ts_curve_length tsw_spline_new tsw_curve_new tsw_defaults tsw_curve_defaults \
   tsw_report tsw_certify tsw_curve_certify tsw_error_constants tsw_heap_top ts_error_message \
   tsw_message tsw_message_clear tsw_constraints tsw_constraint_report ts_spline_constraints malloc free \
-  tsw_disaggregate tsw_histo_defaults
+  tsw_disaggregate tsw_histo_defaults tsw_simd
 web_comma := ,
 web_space := $(web_empty) $(web_empty)
 WEB_EXPORTS := $(subst $(web_space),$(web_comma),$(patsubst %,'_%',$(WEB_FUNCS)))
@@ -266,14 +286,22 @@ $(WEB_VERSION_H): CMakeLists.txt cmake/trigspline_version.h.in scripts/version.p
 	python3 scripts/version.py --header $@
 
 # the library: a standalone wasm (imports only its memory), 2 MB initial
-# (trigspline.js creates the memory: keep the two in step)
-$(WEB_BUILD)/trigspline.wasm: $(WEB_LIB_SRC) src/internal.h include/trigspline.h bindings/web/glue.c \
-  $(WEB_VERSION_H)
+# (trigspline.js creates the memory: keep the two in step); twice from the
+# same sources: trigspline.wasm (scalar, MVP) and trigspline-simd.wasm
+# (-msimd128: the compiler vectorises the batch kernel's loops with 128-bit
+# vectors, src/kernels.c); trigspline.js loads the SIMD one where the engine
+# validates a SIMD probe.
+WEB_LIB_DEPS := $(WEB_LIB_SRC) src/internal.h include/trigspline.h bindings/web/glue.c $(WEB_VERSION_H)
+WEB_LIB_LINK := -sSTANDALONE_WASM --no-entry -sIMPORTED_MEMORY -sINITIAL_MEMORY=2MB -sTOTAL_STACK=1MB \
+  -sALLOW_MEMORY_GROWTH -sMAXIMUM_MEMORY=2GB -sFILESYSTEM=0 -sEXPORTED_FUNCTIONS="[$(WEB_EXPORTS)]"
+$(WEB_BUILD)/trigspline.wasm: $(WEB_LIB_DEPS)
 	$(call need,emcc:emscripten node:nodejs)
 	@mkdir -p $(WEB_BUILD)
-	$(WEB_EMCC) $(WEB_WARN) -Isrc $(WEB_LIB_SRC) bindings/web/glue.c -sSTANDALONE_WASM --no-entry \
-	  -sIMPORTED_MEMORY -sINITIAL_MEMORY=2MB -sTOTAL_STACK=1MB -sALLOW_MEMORY_GROWTH \
-	  -sMAXIMUM_MEMORY=2GB -sFILESYSTEM=0 -sEXPORTED_FUNCTIONS="[$(WEB_EXPORTS)]" -o $@
+	$(WEB_EMCC) $(WEB_WARN) -Isrc $(WEB_LIB_SRC) bindings/web/glue.c $(WEB_LIB_LINK) -o $@
+$(WEB_BUILD)/trigspline-simd.wasm: $(WEB_LIB_DEPS)
+	$(call need,emcc:emscripten node:nodejs)
+	@mkdir -p $(WEB_BUILD)
+	$(WEB_EMCC) -msimd128 $(WEB_WARN) -Isrc $(WEB_LIB_SRC) bindings/web/glue.c $(WEB_LIB_LINK) -o $@
 
 # the command-line tool with an in-memory file system, called by the explorer's exports
 $(WEB_BUILD)/trigspline-cli.js: $(WEB_LIB_SRC) $(WEB_CLI_SRC) tools/cli/cli.h tools/support/tsu_io.h \
@@ -285,7 +313,7 @@ $(WEB_BUILD)/trigspline-cli.js: $(WEB_LIB_SRC) $(WEB_CLI_SRC) tools/cli/cli.h to
 	  -sINVOKE_RUN=0 -sEXIT_RUNTIME=0 -sALLOW_MEMORY_GROWTH -sFORCE_FILESYSTEM \
 	  -sEXPORTED_RUNTIME_METHODS='["FS","callMain"]' -o $@
 
-$(WEB_OUT)/index.html: $(WEB_BUILD)/trigspline.wasm $(WEB_BUILD)/trigspline-cli.js \
+$(WEB_OUT)/index.html: $(WEB_BUILD)/trigspline.wasm $(WEB_BUILD)/trigspline-simd.wasm $(WEB_BUILD)/trigspline-cli.js \
   $(wildcard bindings/web/*.js bindings/web/*.mjs bindings/web/*.mts bindings/web/explorer/*)
 	node bindings/web/build.mjs $(WEB_BUILD) $(WEB_OUT)
 

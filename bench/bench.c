@@ -1446,7 +1446,7 @@ static void issue_goals(const double *evS, const double *evR, const double *bd, 
     }
     add_goal("WebAssembly sorted batch: / the native portable build <= 1.3", (double)NAN, 1.3);
     snprintf(goals[ngoals - 1].note, sizeof goals[0].note,
-             "not measured by make bench (the module runs under node: bindings/web)");
+             "measured by bench/web_bench.mjs (make bench-web; the WebAssembly table below)");
     /* paired within each round, as the certified rows below: one round's
      * placement (fresh pages, 1e6 knots) weighs on both forms alike, while
      * the ratio of two medians can take them from different rounds (one

@@ -54,7 +54,11 @@
 #endif
 #else
 #define TS_FAST_X86 0
+#if defined(__GNUC__) && !defined(TS_COVERAGE) /* Clang for WebAssembly too: want_w, run and geo constant */
+#define TS_ALWAYS_INLINE static inline __attribute__((always_inline))
+#else
 #define TS_ALWAYS_INLINE static inline
+#endif
 #endif
 #if defined(__GNUC__)
 #define TS_NOINLINE __attribute__((noinline))
@@ -227,6 +231,7 @@ typedef struct geo_stage {
     double d0[TS_FAST_BLOCK + TS_FAST_RUN], d1[TS_FAST_BLOCK + TS_FAST_RUN];
     double phi[TS_FAST_BLOCK], u[TS_FAST_BLOCK];
     double s[TS_FAST_BLOCK], c[TS_FAST_BLOCK], ms[TS_FAST_BLOCK], mc[TS_FAST_BLOCK];
+    double more[TS_FAST_BLOCK]; /* 1: the query's step was not small (geo_any_more) */
 } geo_stage;
 
 typedef struct geo_iv {
@@ -465,11 +470,22 @@ TS_ALWAYS_INLINE void geo_side(const geo_stage *st, size_t j, int *right, double
     *u = (*right ? dr : dl) / st->h[j];
 }
 
+/* Whether a query of the block still moves (st->more).  The flag is
+ * gathered here, not in the step loops: Clang takes no select of a double
+ * as a reduction, so a step loop with it would stay scalar (WebAssembly
+ * SIMD128), and GCC has no SSE2 OR reduction of an integer flag as wide. */
+TS_ALWAYS_INLINE int geo_any_more(const geo_stage *st, size_t nb)
+{
+    double open = 0.0; /* a double flag: this loop vectorises with GCC */
+    for (size_t j = 0; j < nb; j++)
+        open = st->more[j] > 0.0 ? 1.0 : open;
+    return open != 0.0;
+}
+
 /* Passes p0 .. TS_GEO_PASSES − 1 from st->phi, st->u. */
 TS_ALWAYS_INLINE void geo_solve_block(geo_stage *st, size_t nb, int p0)
 {
     for (int pass = p0; pass < TS_GEO_PASSES; pass++) {
-        double open = 0.0; /* a double flag: this loop vectorises on every ISA */
         for (size_t j = 0; j < nb; j++) {
             /* A query stops at its own first small step (below 2^-20 φ)
              * from the second on, whatever the others of the block still need, so that its value
@@ -480,14 +496,14 @@ TS_ALWAYS_INLINE void geo_solve_block(geo_stage *st, size_t nb, int p0)
             double phi = st->phi[j], s, c, ms, mc;
             double next = ts__geo_halley(phi, st->kappa[j], st->u[j], &s, &c, &ms, &mc);
             double more = fabs(next - phi) <= 0x1p-20 * next ? 0.0 : 1.0; /* NaN: 1 */
-            open = more > 0.0 ? more : open;
+            st->more[j] = more;
             st->phi[j] = more > 0.0 ? next : phi;
             st->s[j] = s;
             st->c[j] = c;
             st->ms[j] = ms;
             st->mc[j] = mc;
         }
-        if (open == 0.0)
+        if (!geo_any_more(st, nb))
             return;
     }
 }
@@ -499,8 +515,9 @@ TS_ALWAYS_INLINE double geo_value(int deriv, const geo_stage *st, size_t j, doub
                                    double ms, double mc)
 {
     int right = st->dr[j] < st->dl[j];
-    double F0 = right ? st->f1[j] : st->f0[j], F1 = right ? st->f0[j] : st->f1[j];
-    double D0 = right ? -st->d1[j] : st->d0[j], D1 = right ? -st->d0[j] : st->d1[j];
+    double f0 = st->f0[j], f1 = st->f1[j], d0 = st->d0[j], d1 = st->d1[j]; /* loads, then selects */
+    double F0 = right ? f1 : f0, F1 = right ? f0 : f1;
+    double D0 = right ? -d1 : d0, D1 = right ? -d0 : d1;
     return ts__geo_y(deriv, F0, F1, D0, D1, st->h[j], st->kappa[j], right, s, c, ms, mc);
 }
 
@@ -533,16 +550,15 @@ TS_ALWAYS_INLINE void geo_fused(int deriv, geo_stage *st, size_t nb, double *y)
         double s, c, ms, mc;
         st->phi[j] = ts__geo_halley(st->phi[j], st->kappa[j], st->u[j], &s, &c, &ms, &mc);
     }
-    double open = 0.0; /* a double flag: this loop vectorises on every ISA */
     for (size_t j = 0; j < nb; j++) {
         double k = st->kappa[j], s, c, ms, mc, phi1 = st->phi[j];
         double phi2 = ts__geo_halley(phi1, k, st->u[j], &s, &c, &ms, &mc);
         double more = fabs(phi2 - phi1) <= 0x1p-20 * phi2 ? 0.0 : 1.0; /* NaN: 1 */
-        open = more > 0.0 ? more : open;
+        st->more[j] = more;
         st->phi[j] = more > 0.0 ? phi2 : phi1;
         y[j] = geo_value(deriv, st, j, s, c, ms, mc);
     }
-    if (open == 0.0)
+    if (!geo_any_more(st, nb))
         return;
     geo_solve_block(st, nb, 2);
     geo_values(deriv, st, nb, y);

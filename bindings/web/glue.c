@@ -39,6 +39,7 @@ ts_status tsw_certify(const ts_spline *s, int has_lower, double lm, double lc, i
 ts_status tsw_curve_certify(const ts_curve *c, const double *box, double *rows, ts_error *err);
 ts_status tsw_error_constants(int form, double a, double *out);
 size_t tsw_heap_top(void);
+int tsw_simd(void);
 const char *tsw_message(void);
 void tsw_message_clear(void);
 
@@ -308,6 +309,17 @@ ts_status tsw_error_constants(int form, double a, double *out)
 size_t tsw_heap_top(void)
 {
     return (size_t)(uintptr_t)sbrk(0);
+}
+
+/* 1 in the module compiled with -msimd128 (trigspline-simd.wasm), 0 in the
+ * scalar one (Makefile, target web). */
+int tsw_simd(void)
+{
+#if defined(__wasm_simd128__)
+    return 1;
+#else
+    return 0;
+#endif
 }
 
 /* ---- rates from bin totals (docs/method.md §12) ---------------------- */

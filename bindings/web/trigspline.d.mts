@@ -152,6 +152,8 @@ export declare class Curve {
 /** A loaded module (load()). */
 export interface TrigSpline {
   readonly version: string;
+  /** true: the SIMD128 module (trigspline-simd.wasm) was loaded; false: the scalar one */
+  readonly simd: boolean;
   readonly NAMES: typeof NAMES;
   readonly STATUS_NAMES: readonly string[];
   readonly TrigSplineError: typeof TrigSplineError;
@@ -170,12 +172,18 @@ export interface TrigSpline {
 }
 
 export interface LoadOptions {
-  /** the wasm bytes or a compiled module (default: trigspline.wasm next to trigspline.mjs) */
+  /** the wasm bytes or a compiled module (default: trigspline-simd.wasm where the engine
+   * has WebAssembly SIMD128, else trigspline.wasm, next to trigspline.mjs) */
   wasm?: BufferSource | WebAssembly.Module;
+  /** false: the scalar module even where SIMD128 exists (default: SIMD128 where
+   * supported; in Node the environment TRIGSPLINE_SIMD=0 means false); both give the same bits */
+  simd?: boolean;
   /** cap of the module's heap in MB (default 2048) */
   maxMemoryMB?: number;
 }
 export declare function load(options?: LoadOptions): Promise<TrigSpline>;
+/** Whether this engine validates WebAssembly SIMD128 (what load() chooses by). */
+export declare function simdSupported(): boolean;
 /** The first module load() made (what the curve factories and plugins use by default). */
 export declare function getDefaultModule(): TrigSpline | null;
 

@@ -22,7 +22,7 @@
 // message naming the argument (TS_ERR_NULL) or the entry that is not a number
 // (TS_ERR_NONFINITE, .index = that point).
 
-/* global WASM_BASE64 */
+/* global WASM_BASE64, WASM_SIMD_BASE64 */
 // Names, index = the C enum value: the library's vocabulary (ts_vocab_name,
 // ts_status_name; the command line's names too), read when the first module
 // loads (readNames); the tables are not restated here.
@@ -152,15 +152,40 @@ function decodeBase64(b64) {
   return out;
 }
 
+// A module of one function using a SIMD128 instruction (i32.const 0;
+// i8x16.splat; i8x16.popcnt): WebAssembly.validate accepts it exactly where
+// the engine runs SIMD128.
+const SIMD_PROBE = [0, 97, 115, 109, 1, 0, 0, 0, 1, 5, 1, 96, 0, 1, 123, 3, 2, 1, 0, 10, 10, 1, 8, 0, 65, 0,
+  253, 15, 253, 98, 11];
+export function simdSupported() {
+  try { return WebAssembly.validate(new Uint8Array(SIMD_PROBE)); } catch { return false; }
+}
+// Whether load() takes the SIMD128 module: options.simd (true, false) or, when
+// that is not given, Node's environment TRIGSPLINE_SIMD=0 (the scalar one, for
+// tests), else where the engine validates SIMD_PROBE.
+function wantSimd(options) {
+  if (options.simd !== undefined && options.simd !== null) return Boolean(options.simd) && simdSupported();
+  const env = typeof process === 'object' ? process.env?.TRIGSPLINE_SIMD : undefined;
+  if (env === '0') return false;
+  return simdSupported();
+}
+
 // load(options): instantiate the module.  options.wasm: the wasm bytes or a
-// WebAssembly.Module (default: trigspline.wasm next to this file, or the copy
-// inlined in a page, WASM_BASE64);
+// WebAssembly.Module (default: trigspline-simd.wasm or trigspline.wasm next to
+// this file, or the copy inlined in a page, WASM_SIMD_BASE64 or WASM_BASE64;
+// the two modules are built from the same sources and give the same bits,
+// the SIMD128 one where the engine has it: wantSimd);
+// options.simd: false for the scalar module where SIMD128 exists too;
 // options.maxMemoryMB: cap of the module's heap (default 2048).
 export async function load(options = {}) {
   let wasm = options.wasm;
-  if (wasm === undefined && typeof WASM_BASE64 === 'string') wasm = decodeBase64(WASM_BASE64); // a page with it inlined
-  if (wasm === undefined) { // trigspline.wasm next to this file
-    const url = new URL('trigspline.wasm', import.meta.url);
+  let simd = wasm === undefined && wantSimd(options);
+  if (wasm === undefined && typeof WASM_BASE64 === 'string') { // a page with it inlined
+    simd &&= typeof WASM_SIMD_BASE64 === 'string';
+    wasm = decodeBase64(simd ? WASM_SIMD_BASE64 : WASM_BASE64);
+  }
+  if (wasm === undefined) { // next to this file
+    const url = new URL(simd ? 'trigspline-simd.wasm' : 'trigspline.wasm', import.meta.url);
     if (url.protocol === 'file:' && typeof process === 'object' && process.versions?.node) {
       const { readFile } = await import('node:fs/promises');
       wasm = await readFile(url);
@@ -203,6 +228,7 @@ class TrigSpline {
     this.STATUS_NAMES = STATUS_NAMES;
     this.TrigSplineError = TrigSplineError;
     this.version = this.cstring(w.ts_version());
+    this.simd = w.tsw_simd() === 1; // the SIMD128 module (load(), wantSimd)
     const d = this.withScratch(8, (p) => { w.tsw_defaults(p); return Array.from(this.f64(p, 8)); });
     this.defaults = {
       form: NAMES.form[d[0]], slopes: NAMES.slopes[d[1]], alpha: d[2], beta: d[3],

@@ -4,7 +4,8 @@
 # `npm pack` as DISTDIR/trigspline-VERSION.tgz.
 #   build: `make web` into DISTDIR/work/npm (its own WEB_BUILD and WEB_OUT),
 #          the package staged there (package.json without devDependencies,
-#          the version of CMakeLists.txt's project(); trigspline.mjs, .wasm,
+#          the version of CMakeLists.txt's project(); trigspline.mjs, the two
+#          modules trigspline.wasm (scalar) and trigspline-simd.wasm (SIMD128),
 #          .d.mts, README, LICENSE) and packed.
 #   test:  the tarball installed (npm install --offline) into a fresh
 #          directory; the smoke test imported in Node (smoke/smoke_npm.mjs);
@@ -48,7 +49,8 @@ build)
         p.version = process.argv[2];
         fs.writeFileSync(process.argv[3], JSON.stringify(p, null, 2) + "\n");
     ' "$TS_ROOT/bindings/web/package.json" "$TS_VERSION" "$stage/package.json"
-    cp "$WORK/web/trigspline.mjs" "$WORK/web/trigspline.wasm" "$WORK/web/trigspline.d.mts" "$stage/"
+    cp "$WORK/web/trigspline.mjs" "$WORK/web/trigspline.wasm" "$WORK/web/trigspline-simd.wasm" \
+        "$WORK/web/trigspline.d.mts" "$stage/"
     cp "$TS_ROOT/bindings/web/README.npm.md" "$stage/README.md"
     cp "$TS_ROOT/LICENSE" "$stage/LICENSE"
     (cd "$stage" && npm pack --pack-destination "$DIST" --loglevel=error >/dev/null)
@@ -66,7 +68,7 @@ test)
     # the package's own files, no more
     listed=$(cd "$app/node_modules/trigspline" && find . -type f | sort | tr '\n' ' ')
     echo "installed files: $listed"
-    [ "$listed" = "./LICENSE ./README.md ./package.json ./trigspline.d.mts ./trigspline.mjs ./trigspline.wasm " ] || ok=1
+    [ "$listed" = "./LICENSE ./README.md ./package.json ./trigspline-simd.wasm ./trigspline.d.mts ./trigspline.mjs ./trigspline.wasm " ] || ok=1
     cp "$TS_ROOT/tools/dist/smoke/smoke_npm.mjs" "$app/"
     (cd "$app" && node smoke_npm.mjs) || ok=1
     cp "$TS_ROOT/bindings/web/test/types/use.mts" "$app/"

@@ -20,7 +20,10 @@ const env = (k) => {
 const OUT = env('TS_WEB_OUT');
 const lib = await import(join(OUT, 'trigspline.mjs'));
 const cliFactory = (await import(join(OUT, 'trigspline-cli.mjs'))).default;
+// load() takes the SIMD128 module here (Node has SIMD128); the bit identity
+// below is checked for it and for the scalar one (load({ simd: false }))
 const ts = await lib.load();
+const tsScalar = await lib.load({ simd: false });
 
 // ---- bit identity with the native library ---------------------------------
 
@@ -50,15 +53,41 @@ function diffBits(got, want) {
 const ROWKEYS = (r) => [r.x0, r.x1, r.alpha, r.beta, r.a, ...r.B, lib.NAMES.term.indexOf(r.term),
   r.hasLower ? 1 : 0, r.hasUpper ? 1 : 0, r.gapLower, r.atLower, r.gapUpper, r.atUpper, r.certified ? 1 : 0];
 
-test('bit-identical to the native library on >= 1e6 evaluations', () => {
+// test/reference.c's sorted_query
+const sortedQuery = (spread, j, m, x0, x1) => {
+  const t = (j + 0.5) / m;
+  return x0 + (spread ? t * t * t : t) * (x1 - x0);
+};
+
+for (const [name, mod] of [['SIMD128', ts], ['scalar', tsScalar]]) test(`${name} module: bit-identical to the native library on >= 1e6 evaluations, >= 6e5 sorted batch queries`, () => {
+  const ts = mod;
+  assert.equal(ts.simd, name === 'SIMD128');
   const R = reader(readFileSync(env('TS_WEB_REF')));
   R.skip(8);
   const count = R.u32();
-  let evaluations = 0, values = 0, cases = 0, refused = 0;
+  let evaluations = 0, values = 0, cases = 0, refused = 0, sortedQueries = 0;
   const bad = [];
   for (let c = 0; c < count; c++) {
     const kind = R.u32();
-    if (kind === 0) {
+    if (kind === 2) { // the sorted batch path, every form
+      const form = R.u32(), n = R.u32(), x = R.f64s(n), f = R.f64s(n), status = R.u32();
+      assert.equal(status, 0, `sorted case ${c}: native status ${status}`);
+      const s = ts.spline(x, f, { form, shape: 'positive' });
+      const sets = R.u32();
+      for (let k = 0; k < sets; k++) {
+        const spread = R.u32(), m = R.u32(), want = R.f64s(3 * m);
+        const xq = new Float64Array(m);
+        for (let j = 0; j < m; j++) xq[j] = sortedQuery(spread, j, m, x[0], x[n - 1]);
+        const got = new Float64Array(3 * m);
+        for (let d = 0; d < 3; d++) s.evalBatch(xq, d, got.subarray(d * m, (d + 1) * m));
+        const dd = diffBits(got, want);
+        if (dd.n) bad.push(`sorted case ${c} (form ${form}, spread ${spread}, ${m} queries): ${dd.n} differ, first at ${dd.first}: ${got[dd.first]} vs ${want[dd.first]}`);
+        sortedQueries += m;
+        values += 3 * m;
+      }
+      s.free();
+      cases++;
+    } else if (kind === 0) {
       const [form, slopes, shape, extrap, n] = [R.u32(), R.u32(), R.u32(), R.u32(), R.u32()];
       const [alpha, beta, margin, lm, lc, um, uc] = R.f64s(7);
       const x = R.f64s(n), f = R.f64s(n);
@@ -130,9 +159,10 @@ test('bit-identical to the native library on >= 1e6 evaluations', () => {
       cases++;
     }
   }
-  console.log(`# bit identity: ${cases} fitted cases, ${refused} refused alike, ${evaluations} evaluations, ${values} values compared, ${bad.length} cases with differences`);
+  console.log(`# bit identity, ${name} module: ${cases} fitted cases, ${refused} refused alike, ${evaluations} evaluations, ${sortedQueries} sorted batch queries (value, S', S''), ${values} values compared, ${bad.length} cases with differences`);
   assert.deepEqual(bad, []);
   assert.ok(evaluations >= 1e6, `${evaluations} evaluations`);
+  assert.ok(sortedQueries >= 6e5, `${sortedQueries} sorted batch queries`);
 });
 
 // ---- statuses and messages ----------------------------------------------------

@@ -14,6 +14,12 @@
  *   curve  = u32 1, u32 param closed slopes, u32 n, f64 alpha beta margin,
  *            f64 box[12] (glue.c's order), f64 pts[2n], u32 status index, and when
  *            status is 0: u32 m, f64 t[m], f64 eval[6m] (p, dp, d2p)
+ *   sorted = u32 2, u32 form, u32 n, f64 x[n] f[n] (the positive scheme, other
+ *            options the defaults), u32 status, then u32 sets and per set: u32
+ *            spread m, f64 batch[3m] (ts_spline_eval_batch deriv 0, 1, 2) of the m
+ *            sorted queries sorted_query(spread, j, m) (computed, not stored:
+ *            the same operations in node.test.mjs), the batch kernel's sorted
+ *            path, dense and sparse blocks
  * Usage: reference OUT.bin
  *        reference --strerror   (code TAB ts_strerror(code), one line per code and
  *                               one unknown code) */
@@ -145,6 +151,46 @@ static void curve_case(int param, int closed, int slopes, size_t n, double alpha
     ts_curve_free(c);
 }
 
+/* Sorted queries over [x0, x1]: spread 0 evenly, (j + 1/2)/m of the way;
+ * spread 1 crowded at x0, the cube of that fraction (dense blocks there,
+ * sparse ones towards x1). */
+static double sorted_query(int spread, size_t j, size_t m, double x0, double x1)
+{
+    double t = ((double)j + 0.5) / (double)m;
+    return x0 + (spread ? t * t * t : t) * (x1 - x0);
+}
+
+#define NSORTED 4000 /* knots of a sorted case */
+static void sorted_case(int form, const double *x, const double *f)
+{
+    static const size_t sizes[][2] = {{0, 200000}, {0, 10000}, {1, 100000}};
+    ts_spline_options o;
+    ts_spline_options_init(&o);
+    o.form = (ts_form)form;
+    o.shape = TS_SHAPE_POSITIVE;
+    ts_spline *s = NULL;
+    ts_status st = ts_spline_new(x, f, NSORTED, &o, &s, NULL);
+    u32(2), u32((uint32_t)form), u32(NSORTED);
+    f64s(x, NSORTED);
+    f64s(f, NSORTED);
+    u32((uint32_t)st);
+    if (st != TS_OK)
+        return;
+    u32(3);
+    static double xq[200000], y[3 * 200000];
+    for (size_t k = 0; k < 3; k++) {
+        int spread = (int)sizes[k][0];
+        size_t m = sizes[k][1];
+        for (size_t j = 0; j < m; j++)
+            xq[j] = sorted_query(spread, j, m, x[0], x[NSORTED - 1]);
+        for (int d = 0; d < 3; d++)
+            (void)ts_spline_eval_batch(s, d, xq, m, y + (size_t)d * m, NULL, NULL);
+        u32((uint32_t)spread), u32((uint32_t)m);
+        f64s(y, 3 * m);
+    }
+    ts_spline_free(s);
+}
+
 /* Random data suited to a scheme: lo/hi lines given for above/below/between. */
 static void make_data(int shape, size_t n, double *x, double *f, ts_line lo, ts_line hi)
 {
@@ -239,6 +285,16 @@ int main(int argc, char **argv)
         double box[12] = {1, 1, 0, 0, 0, 0, 1, 1, 0, 1, 1, 0};
         curve_case(k % 3, 0, k % 6, n, 0.2 + uniform(), 0.0, k % 2 ? box : nobox, pts);
         count++;
+    }
+    /* the sorted batch path of every form, on one positive data set */
+    {
+        static double xs[NSORTED], fs[NSORTED];
+        ts_line none = {0, 0};
+        make_data(TS_SHAPE_POSITIVE, NSORTED, xs, fs, none, none);
+        for (int form = 0; form < 3; form++) {
+            sorted_case(form, xs, fs);
+            count++;
+        }
     }
     fseek(out, count_at, SEEK_SET);
     u32(count);

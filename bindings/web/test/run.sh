@@ -21,7 +21,7 @@ export TS_HEADER=$root/include/trigspline.h
 charts_test=()
 if [ -n "${5:-}" ]; then export TS_CHARTS_PAGE=$(abs "$5")/index.html; charts_test=("$here/charts.test.mjs"); fi
 "$TS_WEB_REFBIN" "$TS_WEB_REF" || { echo "reference values not written"; echo "0 passed, 1 failed"; exit 1; }
-out=$(node --test --test-reporter=tap "$here/node.test.mjs" "$here/stack.test.mjs" "$here/types.test.mjs" "$here/browser.test.mjs" "$here/explorer_data.test.mjs" "$here/readme_size.test.mjs" "$here/histo.test.mjs" "${charts_test[@]}" 2>&1); rc=$?
+out=$(node --test --test-reporter=tap "$here/node.test.mjs" "$here/stack.test.mjs" "$here/types.test.mjs" "$here/browser.test.mjs" "$here/explorer_data.test.mjs" "$here/readme_size.test.mjs" "$here/histo.test.mjs" "$here/simd.test.mjs" "${charts_test[@]}" 2>&1); rc=$?
 printf '%s\n' "$out" | grep -E '^(not )?ok |^# [^\\]|^# \\#|# [a-z ]+:' | grep -v '^# Subtest'
 pass=$(printf '%s\n' "$out" | sed -n 's/^# pass \([0-9]*\)$/\1/p' | tail -n 1)
 fail=$(printf '%s\n' "$out" | sed -n 's/^# fail \([0-9]*\)$/\1/p' | tail -n 1)

@@ -1,7 +1,7 @@
 // The npm package imported in a page in Chromium: DIR (where the tarball was
 // installed) is served on the loopback, a page imports
-// /node_modules/trigspline/trigspline.mjs (which fetches trigspline.wasm next
-// to itself) and runs the smoke test; every request off the loopback is
+// /node_modules/trigspline/trigspline.mjs (which fetches trigspline-simd.wasm,
+// Chromium having SIMD128, next to itself) and runs the smoke test; every request off the loopback is
 // refused and counted.  Prints "smoke: page ..." lines; exit 0 when it passed.
 //   node npm_page.mjs DIR PLAYWRIGHT_PACKAGE_JSON
 import { createServer } from 'node:http';
@@ -18,7 +18,7 @@ import { load } from '/node_modules/trigspline/trigspline.mjs';
 const ts = await load();
 const x = [0, 2, 3, 5, 15, 25, 27, 28, 30], f = [2, 1.58, 1.55, 1.54, 1.8, 1.54, 1.55, 1.58, 2];
 const s = ts.spline(x, f, { shape: 'positive', alpha: 0.15 });
-const r = { y: s.eval(4.2), certified: s.certified, version: ts.version };
+const r = { y: s.eval(4.2), certified: s.certified, version: ts.version, simd: ts.simd };
 s.free();
 try { ts.spline(x, f.map((v, i) => (i === 3 ? -1 : v)), { shape: 'positive' }); } catch (e) { r.error = [e.status, e.index]; }
 window.result = r;
@@ -54,9 +54,9 @@ try {
   await p.goto(`${base}/`);
   await p.waitForFunction(() => window.result, null, { timeout: 30000 });
   const r = await p.evaluate(() => window.result);
-  console.log(`smoke: page y(4.2) = ${r.y} certified ${r.certified ? 1 : 0}, error ${r.error}, version ${r.version}`);
+  console.log(`smoke: page y(4.2) = ${r.y} certified ${r.certified ? 1 : 0}, error ${r.error}, version ${r.version}, module ${r.simd ? 'SIMD128' : 'scalar'}`);
   console.log(`smoke: page requests off the loopback: ${external.length}, page errors: ${errors.length}`);
-  ok = r.certified && r.y > 0 && r.error && r.error[0] === 'TS_ERR_NEGATIVE' && r.error[1] === 3
+  ok = r.simd && r.certified && r.y > 0 && r.error && r.error[0] === 'TS_ERR_NEGATIVE' && r.error[1] === 3
     && external.length === 0 && errors.length === 0;
 } finally {
   await context.close();

@@ -5,10 +5,14 @@
 // both behave as documented.
 import { load, TrigSplineError } from 'trigspline';
 
+let ok = true;
 const ts = await load();
+// both modules are installed: Node has SIMD128, so load() takes that one
+const scalar = await load({ simd: false });
+console.log(`smoke: modules simd ${ts.simd ? 1 : 0} scalar ${scalar.simd ? 1 : 0}`);
+if (!ts.simd || scalar.simd) ok = false;
 const x = [0, 2, 3, 5, 15, 25, 27, 28, 30];
 const f = [2, 1.58, 1.55, 1.54, 1.8, 1.54, 1.55, 1.58, 2];
-let ok = true;
 console.log(`smoke: version ${ts.version}`);
 const s = ts.spline(x, f, { shape: 'positive', alpha: 0.15 });
 const y = s.eval(4.2), c = s.certified && s.certify({ lower: 0 }).ok ? 1 : 0;

@@ -2,7 +2,7 @@
 // (types.test.mjs against out/web; tools/dist/npm.sh against the installed
 // package).  Never run: only type-checked.
 import {
-  load, getDefaultModule, NAMES, TrigSplineError, Spline, Curve, curveTrig, curveTrigPositive,
+  load, simdSupported, getDefaultModule, NAMES, TrigSplineError, Spline, Curve, curveTrig, curveTrigPositive,
   curveTrigMonotone, curveTrigAbove, curveTrigBelow, curveTrigBetween, stackTrig, areaTrig,
   fitThicknesses, stackPixels, chartjsTrigspline, installEChartsTrigspline, dataCsv, cliArgs, isoText,
   EXPORTS, runCli, exportState,
@@ -10,7 +10,8 @@ import {
 import type { SplineOptions, StackLayers, TrigSpline, Certificate } from 'trigspline';
 
 export async function use(): Promise<number> {
-  const ts: TrigSpline = await load({ maxMemoryMB: 64 });
+  const ts: TrigSpline = await load({ maxMemoryMB: 64, simd: simdSupported() });
+  if (ts.simd !== (await load({ simd: false })).simd) getDefaultModule();
   const opts: SplineOptions = { shape: 'positive', form: 'c1', lower: { m: 0, c: 0 }, certify: true };
   const s: Spline = ts.spline([0, 1, 2, 3], new Float64Array([1, 0, 0, 2]), opts);
   let y = s.eval(1.5) + s.evalDeriv(0.5).dy + s.evalBatch([0.5, 1])[0] + s.derivative(2)(1, 'clamp');
