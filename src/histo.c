@@ -64,18 +64,35 @@ static inline double rho_of(const double *e, const double *T, size_t j, double l
     return (0.0 <= r && r <= H) ? r : rho_near(m, r, lo, hi, H);
 }
 
-/* §12.4: the value at an inner edge between bins of means (minus lo) p, q,
- * and whether the bounds leave it no room (*bad). */
-static inline double edge_value(double p, double q, double H, int *bad)
+/* §12.4: the value at an inner edge between bins of means (minus lo) p, q */
+TS_INLINE double edge_y(double p, double q, double H)
+{
+    double mn = p < q ? p : q, mx = p < q ? q : p;
+    double ub = 2.0 * mn, lb = 2.0 * mx - H;
+    ub = ub < H ? ub : H;
+    lb = lb > 0.0 ? lb : 0.0;
+    double y = mn > 0.0 ? 2.0 * mn * (mx / (mn + mx)) : 0.0; /* harmonic mean */
+    y = y < lb ? lb : y;
+    return y > ub ? ub : y;
+}
+
+/* edge_y, and whether the bounds leave it no room (*bad) */
+static double edge_value(double p, double q, double H, int *bad)
 {
     double mn = p < q ? p : q, mx = p < q ? q : p;
     double ub = 2.0 * mn, lb = 2.0 * mx - H;
     ub = ub < H ? ub : H;
     lb = lb > 0.0 ? lb : 0.0;
     *bad = lb > ub;
-    double y = mn > 0.0 ? 2.0 * mn * (mx / (mn + mx)) : 0.0; /* harmonic mean */
-    y = y < lb ? lb : y;
-    return y > ub ? ub : y;
+    return edge_y(p, q, H);
+}
+
+/* edge_y at the inner edges 1 .. n − 1 (a vector loop: no branch on the data) */
+TS_VECTOR_LOOP static void edge_values(const double *restrict rho, double *restrict y, size_t n,
+                                       double H)
+{
+    for (size_t j = 1; j < n; j++)
+        y[j] = edge_y(rho[j - 1], rho[j], H);
 }
 
 static void set_status(ts_status *st, size_t j, ts_status s)
@@ -357,6 +374,15 @@ static double edge_slope(const double *edges, const double *rho, const double *y
     return isfinite(d) ? d : 0.0;
 }
 
+/* ∫ r over a bin of width w and control values B (lo included) */
+static inline double bin_total(const double *B, double w, double lo)
+{
+    double q = 0.25 * w, t = 0.0;
+    for (int k = 0; k < HP; k++)
+        t += piece_total(B + 4 * k, q);
+    return t + lo * w;
+}
+
 ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
                        const ts_histo_options *opt, ts_histo **out, ts_error *err)
 {
@@ -402,10 +428,7 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
     /* §12.4: edge values, then the room each bin leaves for its edge slopes */
     y[0] = rho[0];
     y[n] = rho[n - 1];
-    for (size_t j = 1; j < n; j++) {
-        int bad;
-        y[j] = edge_value(rho[j - 1], rho[j], h->H, &bad);
-    }
+    edge_values(rho, y, n, h->H);
     /* slack of bin j: min(2ρ − (yl + yr)/2, H − 2ρ + (yl + yr)/2) >= 0 */
     sg[0] = sg[n] = 0.0;
     /* inner edges in chunks: those whose slope limit is not 0 listed first
@@ -420,17 +443,22 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
         for (size_t i = 0; i < m; i++)
             sg[list[i]] = edge_slope(edges, rho, y, h->H, o.alpha, list[i]);
     }
-    /* bins in chunks: every control value 0, then the wet bins built */
+    /* bins in chunks: every control value 0 (a dry bin's total lo w), then
+     * the wet bins built and their totals formed */
     int bad = 0;
     for (size_t j0 = 0; j0 < n; j0 += HCHUNK) {
         size_t j1 = n - j0 < HCHUNK ? n : j0 + HCHUNK, list[HCHUNK], m = 0;
         memset(h->B + HB * j0, 0, (j1 - j0) * HB * sizeof(double)); /* +0 */
         for (size_t j = j0; j < j1; j++) {
+            h->tot[j] = 0.0 + o.lo * (edges[j + 1] - edges[j]); /* bin_total of +0s */
             list[m] = j;
             m += (size_t)!dry(rho[j], y, sg, j);
         }
-        for (size_t i = 0; i < m; i++)
-            bad |= !build_wet(h, list[i], rho[list[i]], y, sg, 0);
+        for (size_t i = 0; i < m; i++) {
+            size_t j = list[i];
+            bad |= !build_wet(h, j, rho[j], y, sg, 0);
+            h->tot[j] = bin_total(h->B + HB * j, edges[j + 1] - edges[j], o.lo);
+        }
     }
     /* rounding (subnormal widths) may leave a control value outside by an
      * ulp: such a bin's slopes become 0, its neighbours rebuilt (§12.6) */
@@ -448,11 +476,9 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
                 break;
         }
     }
+    for (size_t j = 0; j < n && bad; j++) /* after a repair, every bin's again */
+        h->tot[j] = bin_total(h->B + HB * j, edges[j + 1] - edges[j], o.lo);
     for (size_t j = 0; j < n; j++) {
-        double q = 0.25 * (edges[j + 1] - edges[j]), t = 0.0;
-        for (int k = 0; k < HP; k++)
-            t += piece_total(h->B + HB * j + 4 * k, q);
-        h->tot[j] = t + o.lo * (edges[j + 1] - edges[j]);
         if (!isfinite(h->tot[j])) {
             free(work);
             free(zs);
