@@ -228,7 +228,7 @@ static const double HINV[6][6] = {
     {0, -80, 320, -80, -160, 160},    {-240, 40, -40, 280, 140, 100}};
 
 /* Σ_k R[k] b[k] from 0, in order (one row of HINV times b) */
-static inline double hrow(const double R[6], const double b[6])
+TS_INLINE double hrow(const double R[6], const double b[6])
 {
     double s = 0.0;
     s += R[0] * b[0];
@@ -321,6 +321,52 @@ static int build_wet(ts_histo *h, size_t j, double rho, const double *y, const d
         return 1;
     memcpy(B, BZ, sizeof BZ);
     return inside(B, H);
+}
+
+/* The fast path of build_wet for m wet bins at once (a vector loop): from
+ * each bin's mean r, edge values Y0, Y4, edge slopes s0, s4 and width w, X
+ * of (12.3), its control values (Bt[l HCHUNK + i]), whether they are all
+ * finite and in [0, H] (ok: then they are the bin's, as build_wet's) and
+ * the bin's total (bin_total's sums; lo added). */
+TS_VECTOR_LOOP static void wet_fast(size_t m, const double *restrict r, const double *restrict Y0a,
+                                    const double *restrict Y4a, const double *restrict s0a,
+                                    const double *restrict s4a, const double *restrict wa,
+                                    double H, double lo, double *restrict Bt,
+                                    double *restrict tt, int *restrict ok)
+{
+    for (size_t i = 0; i < m; i++) {
+        double w = wa[i], Kq = w / (6.0 * TS_PI);
+        double Y0 = Y0a[i], Y4 = Y4a[i], E0 = Kq * s0a[i], E4 = Kq * s4a[i];
+        double b[6] = {4.0 * r[i] - 0.5 * (Y0 + Y4) - HW1 * (E0 - E4), -Y0 - E0, 0.0, Y4 - E4,
+                       2.0 * Y0 + 8.0 * E0, 2.0 * Y4 - 8.0 * E4};
+        double Y1 = hrow(HINV[0], b) / 2400.0, Y2 = hrow(HINV[1], b) / 2400.0,
+               Y3 = hrow(HINV[2], b) / 2400.0;
+        double E1 = hrow(HINV[3], b) / 2400.0, E2 = hrow(HINV[4], b) / 2400.0,
+               E3 = hrow(HINV[5], b) / 2400.0;
+        double sf = Y1 + Y2 + Y3 + E1 + E2 + E3;
+        /* the control values (controls) piece by piece: Y_k, Y_k + E_k,
+         * Y_{k+1} − E_{k+1}, Y_{k+1} */
+        double P01 = Y0 + E0, P02 = Y1 - E1, P11 = Y1 + E1, P12 = Y2 - E2;
+        double P21 = Y2 + E2, P22 = Y3 - E3, P31 = Y3 + E3, P32 = Y4 - E4;
+        double mn = Y0 < Y1 ? Y0 : Y1, mx = Y0 > Y1 ? Y0 : Y1;
+#define HMINMAX(v) (mn = (v) < mn ? (v) : mn, mx = (v) > mx ? (v) : mx)
+        HMINMAX(Y2), HMINMAX(Y3), HMINMAX(Y4), HMINMAX(P01), HMINMAX(P02), HMINMAX(P11);
+        HMINMAX(P12), HMINMAX(P21), HMINMAX(P22), HMINMAX(P31), HMINMAX(P32);
+#undef HMINMAX
+        ok[i] = (sf - sf == 0.0) & (0.0 <= mn) & (mx <= H) & (mx <= DBL_MAX);
+        double *o = Bt + i;
+        o[0] = Y0, o[HCHUNK] = P01, o[2 * HCHUNK] = P02, o[3 * HCHUNK] = Y1;
+        o[4 * HCHUNK] = Y1, o[5 * HCHUNK] = P11, o[6 * HCHUNK] = P12, o[7 * HCHUNK] = Y2;
+        o[8 * HCHUNK] = Y2, o[9 * HCHUNK] = P21, o[10 * HCHUNK] = P22, o[11 * HCHUNK] = Y3;
+        o[12 * HCHUNK] = Y3, o[13 * HCHUNK] = P31, o[14 * HCHUNK] = P32, o[15 * HCHUNK] = Y4;
+        /* bin_total's sums */
+        double q = 0.25 * w, t = 0.0;
+        t += q * (HW0 * (Y0 + Y1) + HW1 * (P01 + P02));
+        t += q * (HW0 * (Y1 + Y2) + HW1 * (P11 + P12));
+        t += q * (HW0 * (Y2 + Y3) + HW1 * (P21 + P22));
+        t += q * (HW0 * (Y3 + Y4) + HW1 * (P31 + P32));
+        tt[i] = t + lo * w;
+    }
 }
 
 /* A dry bin (§12.4): X = Z = 0 */
@@ -454,10 +500,30 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
             list[m] = j;
             m += (size_t)!dry(rho[j], y, sg, j);
         }
+        double r[HCHUNK], Y0[HCHUNK], Y4[HCHUNK], s0[HCHUNK], s4[HCHUNK], w[HCHUNK];
+        double Bt[HB * HCHUNK], tt[HCHUNK];
+        int ok[HCHUNK];
         for (size_t i = 0; i < m; i++) {
             size_t j = list[i];
+            r[i] = rho[j];
+            Y0[i] = y[j];
+            Y4[i] = y[j + 1];
+            s0[i] = sg[j];
+            s4[i] = sg[j + 1];
+            w[i] = h->e[j + 1] - h->e[j];
+        }
+        wet_fast(m, r, Y0, Y4, s0, s4, w, h->H, o.lo, Bt, tt, ok);
+        for (size_t i = 0; i < m; i++) {
+            size_t j = list[i];
+            double *B = h->B + HB * j;
+            if (ok[i]) {
+                for (int l = 0; l < HB; l++)
+                    B[l] = Bt[(size_t)l * HCHUNK + i];
+                h->tot[j] = tt[i];
+                continue;
+            }
             bad |= !build_wet(h, j, rho[j], y, sg, 0);
-            h->tot[j] = bin_total(h->B + HB * j, edges[j + 1] - edges[j], o.lo);
+            h->tot[j] = bin_total(B, edges[j + 1] - edges[j], o.lo);
         }
     }
     /* rounding (subnormal widths) may leave a control value outside by an
