@@ -837,8 +837,9 @@ static void basis_int_near(double th, double I[4])
  * (out: their first cell) from the table (c: weight l of term t of cell k
  * at [(4 t + l) HSUB + k]; pk: the piece of each term; one: a cell inside
  * one piece; run: where the runs of cells inside the same piece start).
- * The bins at lo (dry: r ≡ lo) are filled, the others listed (no branch on
- * the data) and their runs evaluated with the piece's control values held. */
+ * Every cell is first filled with lo's total (in order: the writes stream),
+ * the bins not at lo (dry: r ≡ lo) listed without a branch on the data and
+ * their runs evaluated with the piece's control values held. */
 TS_VECTOR_LOOP static void cells_chunk(const double *restrict B, const double *restrict e,
                                        const double *restrict tot, size_t j0, size_t j1,
                                        size_t sub, size_t nk, const size_t *restrict run,
@@ -911,6 +912,7 @@ ts_status ts_histo_subdivide(const ts_histo *h, size_t sub, double *out, ts_erro
      * that ±0 changes no value once clamped to [lo, hi] times the width). */
     double c[2 * 4 * HSUB]; /* [term][l][cell] */
     int pk0[HSUB], pk1[HSUB], one[HSUB];
+    double tprev = -1.0, Iprev[4] = {0.0, 0.0, 0.0, 0.0};
     for (size_t k0 = 0; k0 < sub; k0 += HSUB) {
         size_t k1 = sub - k0 < HSUB ? sub : k0 + HSUB;
         for (size_t k = k0; k < k1; k++) {
@@ -928,9 +930,14 @@ ts_status ts_histo_subdivide(const ts_histo *h, size_t sub, double *out, ts_erro
                 if (!(lo < hi) || (t == 1 && p == p0))
                     continue;
                 one[k - k0] = t == 0;
-                double Ia[4], Ib[4];
-                basis_int_near(TS_HALF_PI * 4.0 * (lo - q0), Ia);
-                basis_int_near(TS_HALF_PI * 4.0 * (hi - q0), Ib);
+                double Ia[4], Ib[4], ta = TS_HALF_PI * 4.0 * (lo - q0);
+                if (ta == tprev) /* the previous cell's right end */
+                    memcpy(Ia, Iprev, sizeof Ia);
+                else
+                    basis_int_near(ta, Ia);
+                tprev = TS_HALF_PI * 4.0 * (hi - q0);
+                basis_int_near(tprev, Ib);
+                memcpy(Iprev, Ib, sizeof Ib);
                 for (int l = 0; l < 4; l++)
                     c[(size_t)(4 * t + l) * HSUB + (k - k0)] = (Ib[l] - Ia[l]) / (2.0 * TS_PI);
             }
