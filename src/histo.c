@@ -468,7 +468,7 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
     double *work = ts__malloc((3 * n + 2) * sizeof(double));
     unsigned char *zs = ts__calloc(n, 1);
     if (h)
-        h->e = ts__malloc(((HB + 2) * n + 1) * sizeof(double));
+        h->e = ts__calloc((HB + 2) * n + 1, sizeof(double)); /* B +0: the dry bins' */
     if (!h || !h->e || !work || !zs) {
         free(work);
         free(zs);
@@ -508,22 +508,18 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
         for (size_t i = 0; i < m; i++)
             sg[list[i]] = edge_slope(edges, rho, y, h->H, o.alpha, list[i]);
     }
-    /* bins in chunks: the dry and the wet ones listed (no branch on the
-     * data), every total lo w (a dry bin's: bin_total of +0s), the dry bins'
-     * control values 0, the wet ones built together (wet_fast) and written,
-     * the scalar build where one of theirs falls outside */
+    /* bins in chunks: the wet ones listed (no branch on the data), every
+     * total lo w (a dry bin's: bin_total of +0s; its control values are the
+     * +0s of calloc), the wet ones built together (wet_fast) and written, the
+     * scalar build where one of theirs falls outside */
     int bad = 0;
     for (size_t j0 = 0; j0 < n; j0 += HCHUNK) {
-        size_t j1 = n - j0 < HCHUNK ? n : j0 + HCHUNK, list[HCHUNK], dl[HCHUNK], m = 0, md = 0;
+        size_t j1 = n - j0 < HCHUNK ? n : j0 + HCHUNK, list[HCHUNK], m = 0;
         for (size_t j = j0; j < j1; j++) {
             h->tot[j] = 0.0 + o.lo * (edges[j + 1] - edges[j]); /* bin_total of +0s */
-            int d = dry(rho[j], y, sg, j);
-            list[m] = dl[md] = j;
-            m += (size_t)!d;
-            md += (size_t)d;
+            list[m] = j;
+            m += (size_t)!dry(rho[j], y, sg, j);
         }
-        for (size_t i = 0; i < md; i++)
-            memset(h->B + HB * dl[i], 0, HB * sizeof(double)); /* +0 */
         double r[HCHUNK], Y0[HCHUNK], Y4[HCHUNK], s0[HCHUNK], s4[HCHUNK], w[HCHUNK];
         double Bt[HB * HCHUNK], tt[HCHUNK];
         int ok[HCHUNK];
