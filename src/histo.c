@@ -90,7 +90,11 @@ TS_INLINE double edge_y(double p, double q, double H)
     double ub = 2.0 * mn, lb = 2.0 * mx - H;
     ub = ub < H ? ub : H;
     lb = lb > 0.0 ? lb : 0.0;
-    double y = mn > 0.0 ? 2.0 * mn * (mx / (mn + mx)) : 0.0; /* harmonic mean */
+    /* harmonic mean; a vector loop forms the quotient in every lane, so a
+       zero denominator (mn = mx = 0, result unused) is replaced by 1: no
+       0/0 and no flag on valid input */
+    double d = mn + mx > 0.0 ? mn + mx : 1.0;
+    double y = mn > 0.0 ? 2.0 * mn * (mx / d) : 0.0;
     y = y < lb ? lb : y;
     return y > ub ? ub : y;
 }
