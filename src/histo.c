@@ -20,6 +20,8 @@
 #define HMEAN_MAX 0x1p1019
 #define HP 4          /* pieces per bin */
 #define HB (4 * HP)   /* control values per bin */
+#define HCHUNK 64     /* bins listed at a time (no branch on the data) */
+#define HSUB 32       /* cells of ts_histo_subdivide's table */
 
 struct ts_histo {
     size_t n;
@@ -48,17 +50,56 @@ void ts_histo_options_init(ts_histo_options *opt)
 
 /* The bin's mean minus lo; within 4 ulps of a bound it is taken on it
  * (totals formed as lo·w or hi·w, §12.6). */
-static double rho_of(const double *e, const double *T, size_t j, double lo, double hi)
+TS_INLINE double rho_of(const double *e, const double *T, size_t j, double lo, double hi)
 {
     double m = T[j] / (e[j + 1] - e[j]), r = m - lo, H = hi - lo;
-    double tl = 4.0 * DBL_EPSILON * fmax(fabs(m), fabs(lo));
-    double th = 4.0 * DBL_EPSILON * fmax(fabs(m), fabs(hi));
+    if (0.0 <= r && r <= H)
+        return r;
+    /* the larger magnitude of m and lo (hi): fmax, lo and hi being numbers */
+    double am = fabs(m), al = fabs(lo), ah = fabs(hi);
+    double tl = 4.0 * DBL_EPSILON * (am > al ? am : al);
+    double th = 4.0 * DBL_EPSILON * (am > ah ? am : ah);
     r = (r < 0.0 && r >= -tl) ? 0.0 : r;
     return (r > H && r <= H + th) ? H : r;
 }
 
-/* §12.4: the value at an inner edge between bins of means (minus lo) p, q,
- * and whether the bounds leave it no room (*bad). */
+/* The checks of analyse's first two loops at once (a vector loop), and
+ * rho: 1 when every edge and bin passes them (then rho is analyse's). */
+TS_VECTOR_LOOP static int scan_bins(const double *restrict e, const double *restrict T, size_t n,
+                                    double lo, double hi, double *restrict rho)
+{
+    /* increasing between finite ends: every edge finite */
+    int ok = (fabs(e[0]) <= DBL_MAX) & (fabs(e[n]) <= DBL_MAX);
+    for (size_t i = 1; i <= n; i++) {
+        double w = e[i] - e[i - 1];
+        ok &= (e[i] > e[i - 1]) & (DBL_MIN <= w) & (w <= DBL_MAX);
+    }
+    double H = hi - lo;
+    for (size_t j = 0; j < n; j++) {
+        double r = rho_of(e, T, j, lo, hi);
+        rho[j] = r;
+        ok &= (fabs(T[j]) <= DBL_MAX) & (fabs(r) <= HMEAN_MAX) & (0.0 <= r) & (r <= H);
+    }
+    return ok;
+}
+
+/* §12.4: the value at an inner edge between bins of means (minus lo) p, q */
+TS_INLINE double edge_y(double p, double q, double H)
+{
+    double mn = p < q ? p : q, mx = p < q ? q : p;
+    double ub = 2.0 * mn, lb = 2.0 * mx - H;
+    ub = ub < H ? ub : H;
+    lb = lb > 0.0 ? lb : 0.0;
+    /* harmonic mean; a vector loop forms the quotient in every lane, so a
+       zero denominator (mn = mx = 0, result unused) is replaced by 1: no
+       0/0 and no flag on valid input */
+    double d = mn + mx > 0.0 ? mn + mx : 1.0;
+    double y = mn > 0.0 ? 2.0 * mn * (mx / d) : 0.0;
+    y = y < lb ? lb : y;
+    return y > ub ? ub : y;
+}
+
+/* edge_y, and whether the bounds leave it no room (*bad) */
 static double edge_value(double p, double q, double H, int *bad)
 {
     double mn = p < q ? p : q, mx = p < q ? q : p;
@@ -66,9 +107,15 @@ static double edge_value(double p, double q, double H, int *bad)
     ub = ub < H ? ub : H;
     lb = lb > 0.0 ? lb : 0.0;
     *bad = lb > ub;
-    double y = mn > 0.0 ? 2.0 * mn * (mx / (mn + mx)) : 0.0; /* harmonic mean */
-    y = y < lb ? lb : y;
-    return y > ub ? ub : y;
+    return edge_y(p, q, H);
+}
+
+/* edge_y at the inner edges 1 .. n − 1 (a vector loop: no branch on the data) */
+TS_VECTOR_LOOP static void edge_values(const double *restrict rho, double *restrict y, size_t n,
+                                       double H)
+{
+    for (size_t j = 1; j < n; j++)
+        y[j] = edge_y(rho[j - 1], rho[j], H);
 }
 
 static void set_status(ts_status *st, size_t j, ts_status s)
@@ -95,8 +142,8 @@ static ts_status analyse(const double *e, const double *T, size_t n, const ts_hi
     if (st)
         for (size_t j = 0; j < n; j++)
             st[j] = TS_OK;
-    int edges_ok = 1;
-    for (size_t i = 0; i <= n; i++) {
+    int fast = rho && scan_bins(e, T, n, o->lo, o->hi, rho), edges_ok = 1;
+    for (size_t i = 0; i <= n && !fast; i++) {
         ts_status s = TS_OK;
         if (!isfinite(e[i]))
             s = TS_ERR_NONFINITE;
@@ -118,7 +165,7 @@ static ts_status analyse(const double *e, const double *T, size_t n, const ts_hi
     }
     int plain = o->lo == 0.0 && o->hi == HUGE_VAL;
     double H = o->hi - o->lo;
-    for (size_t j = 0; j < n && edges_ok; j++) {
+    for (size_t j = 0; j < n && edges_ok && !fast; j++) {
         ts_status s = TS_OK;
         double r = isfinite(T[j]) ? rho_of(e, T, j, o->lo, o->hi) : (double)NAN;
         if (rho)
@@ -203,6 +250,19 @@ static const double HINV[6][6] = {
     {240, -40, 40, -280, -140, 1100}, {240, 280, -40, 40, -100, -140},
     {0, -80, 320, -80, -160, 160},    {-240, 40, -40, 280, 140, 100}};
 
+/* Σ_k R[k] b[k] from 0, in order (one row of HINV times b) */
+TS_INLINE double hrow(const double R[6], const double b[6])
+{
+    double s = 0.0;
+    s += R[0] * b[0];
+    s += R[1] * b[1];
+    s += R[2] * b[2];
+    s += R[3] * b[3];
+    s += R[4] * b[4];
+    s += R[5] * b[5];
+    return s;
+}
+
 /* The control values of a bin from its knot values Y[0..4] and scaled
  * slopes E = K_q·slope (§12.3). */
 static void controls(const double *Y, const double *E, double *B)
@@ -226,33 +286,38 @@ static int inside(const double *B, double H)
 /* §12.3: bin j from its edge values y, edge slopes sg: the C² solution X
  * of (12.3) blended with the flat solution Z by the largest λ in [0, 1]
  * that keeps every control value in [0, H]; flat: λ = 0. */
-static int build_bin(ts_histo *h, size_t j, double rho, const double *y, const double *sg, int flat)
+static int build_wet(ts_histo *h, size_t j, double rho, const double *y, const double *sg, int flat)
 {
     double *B = h->B + HB * j;
-    if (rho == 0.0 && y[j] == 0.0 && y[j + 1] == 0.0 && sg[j] == 0.0 && sg[j + 1] == 0.0) {
-        for (int l = 0; l < HB; l++) /* a dry bin (§12.4): X = Z = 0 */
-            B[l] = 0.0;
-        return 1;
-    }
     double w = h->e[j + 1] - h->e[j], Kq = w / (6.0 * TS_PI), H = h->H;
     double Y0 = y[j], Y4 = y[j + 1], E0 = Kq * sg[j], E4 = Kq * sg[j + 1];
     /* (12.3) with r'' = 0 at the edges */
     double b[6] = {4.0 * rho - 0.5 * (Y0 + Y4) - HW1 * (E0 - E4), -Y0 - E0, 0.0, Y4 - E4,
                    2.0 * Y0 + 8.0 * E0, 2.0 * Y4 - 8.0 * E4};
+    double YX[5] = {Y0, hrow(HINV[0], b) / 2400.0, hrow(HINV[1], b) / 2400.0,
+                    hrow(HINV[2], b) / 2400.0, Y4};
+    double EX[5] = {E0, hrow(HINV[3], b) / 2400.0, hrow(HINV[4], b) / 2400.0,
+                    hrow(HINV[5], b) / 2400.0, E4};
+    /* X itself when every control value is finite and in [0, H]: the inner
+     * knots' data finite (their sum is; the edge ones are), then the least
+     * and largest control value */
+    double sf = YX[1] + YX[2] + YX[3] + EX[1] + EX[2] + EX[3];
+    if (!flat && sf - sf == 0.0) {
+        controls(YX, EX, B);
+        double m0 = B[0], m1 = B[1], M0 = B[0], M1 = B[1];
+        for (int l = 2; l < HB; l += 2) {
+            m0 = B[l] < m0 ? B[l] : m0;
+            m1 = B[l + 1] < m1 ? B[l + 1] : m1;
+            M0 = B[l] > M0 ? B[l] : M0;
+            M1 = B[l + 1] > M1 ? B[l + 1] : M1;
+        }
+        if (0.0 <= m0 && 0.0 <= m1 && M0 <= H && M1 <= H && M0 <= DBL_MAX && M1 <= DBL_MAX)
+            return 1;
+    }
     double zv = b[0] / 3.0;
     zv = zv > 0.0 ? zv : 0.0;
     zv = zv < H ? zv : H;
     double YZ[5] = {Y0, zv, zv, zv, Y4}, EZ[5] = {E0, 0.0, 0.0, 0.0, E4};
-    double YX[5] = {Y0, 0, 0, 0, Y4}, EX[5] = {E0, 0, 0, 0, E4};
-    for (int i = 0; i < 3; i++) {
-        double sy = 0.0, se = 0.0;
-        for (int k = 0; k < 6; k++) {
-            sy += HINV[i][k] * b[k];
-            se += HINV[i + 3][k] * b[k];
-        }
-        YX[i + 1] = sy / 2400.0;
-        EX[i + 1] = se / 2400.0;
-    }
     double BZ[HB], BX[HB];
     controls(YZ, EZ, BZ);
     controls(YX, EX, BX);
@@ -281,6 +346,68 @@ static int build_bin(ts_histo *h, size_t j, double rho, const double *y, const d
     return inside(B, H);
 }
 
+/* The fast path of build_wet for m wet bins at once (a vector loop): from
+ * each bin's mean r, edge values Y0, Y4, edge slopes s0, s4 and width w, X
+ * of (12.3), its control values (Bt[l HCHUNK + i]), whether they are all
+ * finite and in [0, H] (ok: then they are the bin's, as build_wet's) and
+ * the bin's total (bin_total's sums; lo added). */
+TS_VECTOR_LOOP static void wet_fast(size_t m, const double *restrict r, const double *restrict Y0a,
+                                    const double *restrict Y4a, const double *restrict s0a,
+                                    const double *restrict s4a, const double *restrict wa,
+                                    double H, double lo, double *restrict Bt,
+                                    double *restrict tt, int *restrict ok)
+{
+    for (size_t i = 0; i < m; i++) {
+        double w = wa[i], Kq = w / (6.0 * TS_PI);
+        double Y0 = Y0a[i], Y4 = Y4a[i], E0 = Kq * s0a[i], E4 = Kq * s4a[i];
+        double b[6] = {4.0 * r[i] - 0.5 * (Y0 + Y4) - HW1 * (E0 - E4), -Y0 - E0, 0.0, Y4 - E4,
+                       2.0 * Y0 + 8.0 * E0, 2.0 * Y4 - 8.0 * E4};
+        double Y1 = hrow(HINV[0], b) / 2400.0, Y2 = hrow(HINV[1], b) / 2400.0,
+               Y3 = hrow(HINV[2], b) / 2400.0;
+        double E1 = hrow(HINV[3], b) / 2400.0, E2 = hrow(HINV[4], b) / 2400.0,
+               E3 = hrow(HINV[5], b) / 2400.0;
+        double sf = Y1 + Y2 + Y3 + E1 + E2 + E3;
+        /* the control values (controls) piece by piece: Y_k, Y_k + E_k,
+         * Y_{k+1} − E_{k+1}, Y_{k+1} */
+        double P01 = Y0 + E0, P02 = Y1 - E1, P11 = Y1 + E1, P12 = Y2 - E2;
+        double P21 = Y2 + E2, P22 = Y3 - E3, P31 = Y3 + E3, P32 = Y4 - E4;
+        double mn = Y0 < Y1 ? Y0 : Y1, mx = Y0 > Y1 ? Y0 : Y1;
+#define HMINMAX(v) (mn = (v) < mn ? (v) : mn, mx = (v) > mx ? (v) : mx)
+        HMINMAX(Y2), HMINMAX(Y3), HMINMAX(Y4), HMINMAX(P01), HMINMAX(P02), HMINMAX(P11);
+        HMINMAX(P12), HMINMAX(P21), HMINMAX(P22), HMINMAX(P31), HMINMAX(P32);
+#undef HMINMAX
+        ok[i] = (sf - sf == 0.0) & (0.0 <= mn) & (mx <= H) & (mx <= DBL_MAX);
+        double *o = Bt + i;
+        o[0] = Y0, o[HCHUNK] = P01, o[2 * HCHUNK] = P02, o[3 * HCHUNK] = Y1;
+        o[4 * HCHUNK] = Y1, o[5 * HCHUNK] = P11, o[6 * HCHUNK] = P12, o[7 * HCHUNK] = Y2;
+        o[8 * HCHUNK] = Y2, o[9 * HCHUNK] = P21, o[10 * HCHUNK] = P22, o[11 * HCHUNK] = Y3;
+        o[12 * HCHUNK] = Y3, o[13 * HCHUNK] = P31, o[14 * HCHUNK] = P32, o[15 * HCHUNK] = Y4;
+        /* bin_total's sums */
+        double q = 0.25 * w, t = 0.0;
+        t += q * (HW0 * (Y0 + Y1) + HW1 * (P01 + P02));
+        t += q * (HW0 * (Y1 + Y2) + HW1 * (P11 + P12));
+        t += q * (HW0 * (Y2 + Y3) + HW1 * (P21 + P22));
+        t += q * (HW0 * (Y3 + Y4) + HW1 * (P31 + P32));
+        tt[i] = t + lo * w;
+    }
+}
+
+/* A dry bin (§12.4): X = Z = 0 */
+static inline int dry(double rho, const double *y, const double *sg, size_t j)
+{
+    return (rho == 0.0) & (y[j] == 0.0) & (y[j + 1] == 0.0) & (sg[j] == 0.0) & (sg[j + 1] == 0.0);
+}
+
+static inline int build_bin(ts_histo *h, size_t j, double rho, const double *y, const double *sg,
+                            int flat)
+{
+    if (dry(rho, y, sg, j)) {
+        memset(h->B + HB * j, 0, HB * sizeof(double)); /* +0 */
+        return 1;
+    }
+    return build_wet(h, j, rho, y, sg, flat);
+}
+
 static int bin_inside(const ts_histo *h, size_t j)
 {
     return inside(h->B + HB * j, h->H);
@@ -290,6 +417,39 @@ static int bin_inside(const ts_histo *h, size_t j)
 static double piece_total(const double *P, double hh)
 {
     return hh * (HW0 * (P[0] + P[3]) + HW1 * (P[1] + P[2]));
+}
+
+/* §12.4: the slope at inner edge j, limited by the room its value and
+ * both bins leave (y[j] neither 0 nor H) */
+static double edge_slope(const double *edges, const double *rho, const double *y, double H,
+                         double alpha, size_t j)
+{
+    double wl = edges[j] - edges[j - 1], wr = edges[j + 1] - edges[j];
+    double Kl = wl / (3.0 * TS_PI), Kr = wr / (3.0 * TS_PI);
+    double room = y[j] < H - y[j] ? y[j] : H - y[j];
+    double L = room / (Kl > Kr ? Kl : Kr);
+    for (int side = 0; side < 2; side++) {
+        size_t b = j - 1 + (size_t)side;
+        double m = 0.5 * (y[b] + y[b + 1]);
+        double sl = 2.0 * rho[b] - m, sh = H - 2.0 * rho[b] + m;
+        double slack = sl < sh ? sl : sh;
+        double Lb = slack / (4.0 * HW1 * (side ? Kr : Kl));
+        L = Lb < L ? Lb : L;
+    }
+    L *= HSHRINK;
+    double d = (rho[j] - rho[j - 1]) / (0.5 * (wl + wr)) / alpha;
+    d = d < L ? d : L;
+    d = d > -L ? d : -L;
+    return isfinite(d) ? d : 0.0;
+}
+
+/* ∫ r over a bin of width w and control values B (lo included) */
+static inline double bin_total(const double *B, double w, double lo)
+{
+    double q = 0.25 * w, t = 0.0;
+    for (int k = 0; k < HP; k++)
+        t += piece_total(B + 4 * k, q);
+    return t + lo * w;
 }
 
 ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
@@ -312,7 +472,7 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
     double *work = ts__malloc((3 * n + 2) * sizeof(double));
     unsigned char *zs = ts__calloc(n, 1);
     if (h)
-        h->e = ts__malloc(((HB + 2) * n + 1) * sizeof(double));
+        h->e = ts__calloc((HB + 2) * n + 1, sizeof(double)); /* B +0: the dry bins' */
     if (!h || !h->e || !work || !zs) {
         free(work);
         free(zs);
@@ -337,38 +497,59 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
     /* §12.4: edge values, then the room each bin leaves for its edge slopes */
     y[0] = rho[0];
     y[n] = rho[n - 1];
-    for (size_t j = 1; j < n; j++) {
-        int bad;
-        y[j] = edge_value(rho[j - 1], rho[j], h->H, &bad);
-    }
+    edge_values(rho, y, n, h->H);
     /* slack of bin j: min(2ρ − (yl + yr)/2, H − 2ρ + (yl + yr)/2) >= 0 */
     sg[0] = sg[n] = 0.0;
-    for (size_t j = 1; j < n; j++) {
-        if (y[j] == 0.0 || y[j] == h->H) { /* the slope limit is 0 (§12.4) */
+    /* inner edges in chunks: those whose slope limit is not 0 listed first
+     * (without a branch on the data), then their slopes (§12.4) */
+    for (size_t j0 = 1; j0 < n; j0 += HCHUNK) {
+        size_t j1 = n - j0 < HCHUNK ? n : j0 + HCHUNK, list[HCHUNK], m = 0;
+        for (size_t j = j0; j < j1; j++) {
             sg[j] = 0.0;
-            continue;
+            list[m] = j;
+            m += (size_t)((y[j] != 0.0) & (y[j] != h->H));
         }
-        double wl = edges[j] - edges[j - 1], wr = edges[j + 1] - edges[j];
-        double Kl = wl / (3.0 * TS_PI), Kr = wr / (3.0 * TS_PI);
-        double room = y[j] < h->H - y[j] ? y[j] : h->H - y[j];
-        double L = room / (Kl > Kr ? Kl : Kr);
-        for (int side = 0; side < 2; side++) {
-            size_t b = j - 1 + (size_t)side;
-            double m = 0.5 * (y[b] + y[b + 1]);
-            double sl = 2.0 * rho[b] - m, sh = h->H - 2.0 * rho[b] + m;
-            double slack = sl < sh ? sl : sh;
-            double Lb = slack / (4.0 * HW1 * (side ? Kr : Kl));
-            L = Lb < L ? Lb : L;
-        }
-        L *= HSHRINK;
-        double d = (rho[j] - rho[j - 1]) / (0.5 * (wl + wr)) / o.alpha;
-        d = d < L ? d : L;
-        d = d > -L ? d : -L;
-        sg[j] = isfinite(d) ? d : 0.0;
+        for (size_t i = 0; i < m; i++)
+            sg[list[i]] = edge_slope(edges, rho, y, h->H, o.alpha, list[i]);
     }
+    /* bins in chunks: the wet ones listed (no branch on the data), every
+     * total lo w (a dry bin's: bin_total of +0s; its control values are the
+     * +0s of calloc), the wet ones built together (wet_fast) and written, the
+     * scalar build where one of theirs falls outside */
     int bad = 0;
-    for (size_t j = 0; j < n; j++)
-        bad |= !build_bin(h, j, rho[j], y, sg, 0);
+    for (size_t j0 = 0; j0 < n; j0 += HCHUNK) {
+        size_t j1 = n - j0 < HCHUNK ? n : j0 + HCHUNK, list[HCHUNK], m = 0;
+        for (size_t j = j0; j < j1; j++) {
+            h->tot[j] = 0.0 + o.lo * (edges[j + 1] - edges[j]); /* bin_total of +0s */
+            list[m] = j;
+            m += (size_t)!dry(rho[j], y, sg, j);
+        }
+        double r[HCHUNK], Y0[HCHUNK], Y4[HCHUNK], s0[HCHUNK], s4[HCHUNK], w[HCHUNK];
+        double Bt[HB * HCHUNK], tt[HCHUNK];
+        int ok[HCHUNK];
+        for (size_t i = 0; i < m; i++) {
+            size_t j = list[i];
+            r[i] = rho[j];
+            Y0[i] = y[j];
+            Y4[i] = y[j + 1];
+            s0[i] = sg[j];
+            s4[i] = sg[j + 1];
+            w[i] = h->e[j + 1] - h->e[j];
+        }
+        wet_fast(m, r, Y0, Y4, s0, s4, w, h->H, o.lo, Bt, tt, ok);
+        for (size_t i = 0; i < m; i++) {
+            size_t j = list[i];
+            double *B = h->B + HB * j;
+            if (ok[i]) {
+                for (int l = 0; l < HB; l++)
+                    B[l] = Bt[(size_t)l * HCHUNK + i];
+                h->tot[j] = tt[i];
+                continue;
+            }
+            bad |= !build_wet(h, j, rho[j], y, sg, 0);
+            h->tot[j] = bin_total(B, edges[j + 1] - edges[j], o.lo);
+        }
+    }
     /* rounding (subnormal widths) may leave a control value outside by an
      * ulp: such a bin's slopes become 0, its neighbours rebuilt (§12.6) */
     for (int changed = bad; changed;) {
@@ -385,18 +566,18 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
                 break;
         }
     }
-    free(work);
-    free(zs);
+    for (size_t j = 0; j < n && bad; j++) /* after a repair, every bin's again */
+        h->tot[j] = bin_total(h->B + HB * j, edges[j + 1] - edges[j], o.lo);
     for (size_t j = 0; j < n; j++) {
-        double q = 0.25 * (edges[j + 1] - edges[j]), t = 0.0;
-        for (int k = 0; k < HP; k++)
-            t += piece_total(h->B + HB * j + 4 * k, q);
-        h->tot[j] = t + o.lo * (edges[j + 1] - edges[j]);
         if (!isfinite(h->tot[j])) {
+            free(work);
+            free(zs);
             release(h);
             return ts__fail(err, TS_ERR_TOO_LARGE, j, TS_WHERE_INTERVAL);
         }
     }
+    free(work);
+    free(zs);
     *out = h;
     return TS_OK;
 }
@@ -657,6 +838,63 @@ static void basis_int_near(double th, double I[4])
         I[l] = full[l] - J[3 - l];
 }
 
+/* §12.5: ts_histo_subdivide's cells k0 .. k0 + nk − 1 of bins j0 .. j1 − 1
+ * (out: their first cell) from the table (c: weight l of term t of cell k
+ * at [(4 t + l) HSUB + k]; pk: the piece of each term; one: a cell inside
+ * one piece; run: where the runs of cells inside the same piece start).
+ * Every cell is first filled with lo's total (in order: the writes stream),
+ * the bins not at lo (dry: r ≡ lo) listed without a branch on the data and
+ * their runs evaluated with the piece's control values held. */
+TS_VECTOR_LOOP static void cells_chunk(const double *restrict B, const double *restrict e,
+                                       const double *restrict tot, size_t j0, size_t j1,
+                                       size_t sub, size_t nk, const size_t *restrict run,
+                                       int nrun, const int *restrict one,
+                                       const int *restrict pk0, const int *restrict pk1,
+                                       const double *restrict c, double lo, double hi,
+                                       double *restrict out)
+{
+    size_t list[HCHUNK], m = 0;
+    for (size_t j = j0; j < j1; j++) {
+        double w = e[j + 1] - e[j], lc = lo * (w / (double)sub);
+        int at_lo = tot[j] == lo * w;
+        double *o = out + j * sub;
+        for (size_t k = 0; k < nk; k++)
+            o[k] = lc;
+        list[m] = j;
+        m += (size_t)!at_lo;
+    }
+    for (size_t i = 0; i < m; i++) {
+        size_t j = list[i];
+        const double *Bj = B + HB * j;
+        double w = e[j + 1] - e[j], cw = w / (double)sub;
+        double lc = lo * cw, hc = hi * cw; /* within [lo, hi] times the width */
+        double *o = out + j * sub;
+        for (int r = 0; r < nrun; r++) {
+            size_t ka = run[r], kb = run[r + 1];
+            const double *P = Bj + 4 * pk0[ka];
+            if (one[ka]) {
+                double P0 = P[0], P1 = P[1], P2 = P[2], P3 = P[3];
+                for (size_t k = ka; k < kb; k++) {
+                    double v = c[k] * P0 + c[HSUB + k] * P1 + c[2 * HSUB + k] * P2 +
+                               c[3 * HSUB + k] * P3;
+                    double x = w * v + lc;
+                    x = x > lc ? x : lc;
+                    o[k] = x < hc ? x : hc;
+                }
+                continue;
+            }
+            const double *Q = Bj + 4 * pk1[ka], *d = c + 4 * HSUB;
+            double v = (c[ka] * P[0] + c[HSUB + ka] * P[1] + c[2 * HSUB + ka] * P[2] +
+                        c[3 * HSUB + ka] * P[3]) +
+                       (d[ka] * Q[0] + d[HSUB + ka] * Q[1] + d[2 * HSUB + ka] * Q[2] +
+                        d[3 * HSUB + ka] * Q[3]);
+            double x = w * v + lc;
+            x = x > lc ? x : lc;
+            o[ka] = x < hc ? x : hc;
+        }
+    }
+}
+
 ts_status ts_histo_subdivide(const ts_histo *h, size_t sub, double *out, ts_error *err)
 {
     ts__error_set(err, TS_OK, TS_NO_INDEX, TS_WHERE_NONE);
@@ -674,53 +912,51 @@ ts_status ts_histo_subdivide(const ts_histo *h, size_t sub, double *out, ts_erro
     }
     /* cell k of every bin: the same weights on the control values (§12.5),
      * c[p][l] = (1/(2π)) (I_l(θ_b) − I_l(θ_a)) over its overlap with piece p,
-     * times the width; a table of HSUB cells at a time (no allocation) */
-    enum { HSUB = 32 };
-    double c[HSUB][2][4];
-    int pk[HSUB][2];
+     * times the width; a table of HSUB cells at a time (no allocation).  A
+     * cell inside one piece has no second term (its weights are +0: adding
+     * that ±0 changes no value once clamped to [lo, hi] times the width). */
+    double c[2 * 4 * HSUB]; /* [term][l][cell] */
+    int pk0[HSUB], pk1[HSUB], one[HSUB];
+    double tprev = -1.0, Iprev[4] = {0.0, 0.0, 0.0, 0.0};
     for (size_t k0 = 0; k0 < sub; k0 += HSUB) {
         size_t k1 = sub - k0 < HSUB ? sub : k0 + HSUB;
         for (size_t k = k0; k < k1; k++) {
             double a = (double)k / (double)sub, b = (double)(k + 1) / (double)sub;
             int p0 = (int)(4.0 * a);
             p0 = p0 < HP - 1 ? p0 : HP - 1;
+            one[k - k0] = 1;
             for (int t = 0; t < 2; t++) {
                 int p = p0 + t < HP ? p0 + t : HP - 1;
                 double q0 = 0.25 * p, q1 = 0.25 * (p + 1);
                 double lo = a > q0 ? a : q0, hi = b < q1 ? b : q1;
-                pk[k - k0][t] = p;
+                (t ? pk1 : pk0)[k - k0] = p;
                 for (int l = 0; l < 4; l++)
-                    c[k - k0][t][l] = 0.0;
+                    c[(size_t)(4 * t + l) * HSUB + (k - k0)] = 0.0;
                 if (!(lo < hi) || (t == 1 && p == p0))
                     continue;
-                double Ia[4], Ib[4];
-                basis_int_near(TS_HALF_PI * 4.0 * (lo - q0), Ia);
-                basis_int_near(TS_HALF_PI * 4.0 * (hi - q0), Ib);
+                one[k - k0] = t == 0;
+                double Ia[4], Ib[4], ta = TS_HALF_PI * 4.0 * (lo - q0);
+                if (ta == tprev) /* the previous cell's right end */
+                    memcpy(Ia, Iprev, sizeof Ia);
+                else
+                    basis_int_near(ta, Ia);
+                tprev = TS_HALF_PI * 4.0 * (hi - q0);
+                basis_int_near(tprev, Ib);
+                memcpy(Iprev, Ib, sizeof Ib);
                 for (int l = 0; l < 4; l++)
-                    c[k - k0][t][l] = (Ib[l] - Ia[l]) / (2.0 * TS_PI);
+                    c[(size_t)(4 * t + l) * HSUB + (k - k0)] = (Ib[l] - Ia[l]) / (2.0 * TS_PI);
             }
         }
-        const double lo = h->lo, hi = h->hi; /* locals: out may alias nothing of h */
-        for (size_t j = 0; j < n; j++) {
-            const double *B = h->B + HB * j;
-            double w = h->e[j + 1] - h->e[j], cw = w / (double)sub;
-            double lc = lo * cw, hc = hi * cw;
-            double *o = out + j * sub;
-            if (h->tot[j] == lo * w) { /* a bin at lo (dry): r ≡ lo */
-                for (size_t k = k0; k < k1; k++)
-                    o[k] = lc;
-                continue;
-            }
-            for (size_t k = k0; k < k1; k++) {
-                const double *P = B + 4 * pk[k - k0][0], *Q = B + 4 * pk[k - k0][1];
-                double(*ck)[4] = c[k - k0];
-                double v = (ck[0][0] * P[0] + ck[0][1] * P[1] + ck[0][2] * P[2] + ck[0][3] * P[3]) +
-                           (ck[1][0] * Q[0] + ck[1][1] * Q[1] + ck[1][2] * Q[2] + ck[1][3] * Q[3]);
-                double x = w * v + lc; /* within [lo, hi] times the width (rounding) */
-                x = x > lc ? x : lc;
-                o[k] = x < hc ? x : hc;
-            }
-        }
+        /* runs of cells in the same single piece */
+        size_t run[HSUB + 1];
+        int nrun = 0;
+        for (size_t k = k0; k < k1; k++)
+            if (k == k0 || !one[k - k0] || !one[k - 1 - k0] || pk0[k - k0] != pk0[k - 1 - k0])
+                run[nrun++] = k - k0;
+        run[nrun] = k1 - k0;
+        for (size_t j0 = 0; j0 < n; j0 += HCHUNK)
+            cells_chunk(h->B, h->e, h->tot, j0, n - j0 < HCHUNK ? n : j0 + HCHUNK, sub, k1 - k0,
+                        run, nrun, one, pk0, pk1, c, h->lo, h->hi, out + k0);
     }
     return TS_OK;
 }

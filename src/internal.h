@@ -54,8 +54,10 @@
  * also at -O2, and without trapping-math so that loops with selects
  * vectorise.  Every version gives
  * the same values (bitwise: no contraction into FMA, fp-contract=off; no
- * reassociation); no floating-point exception flag is part of the library's
- * behaviour.  Loops meant to vectorise take their arrays as restrict
+ * reassociation).  A vector loop forms every lane's operations, also those
+ * a select then discards, so those must not divide 0 by 0 or by 0 either:
+ * no FE_INVALID or FE_DIVBYZERO may be raised on valid input (the header's
+ * promise; tests/api/test_fenv.c, test_histo.c).  Loops meant to vectorise take their arrays as restrict
  * parameters (GCC 12 does not vectorise through pointers in a struct).
  * Not under ThreadSanitizer: the ifunc resolvers run before TSan is
  * initialised and crash (docs/design.md).  Only with glibc, whose loader

@@ -1,4 +1,5 @@
-/* test_isa_<variant>: tests/api/test_core.c (renamed test_core_main) linked
+/* test_isa_<variant>: tests/api/test_core.c (renamed test_core_main;
+ * test_isa_histo_<variant>: tests/api/test_histo.c, TS_ISA_MAIN) linked
  * against a library whose TS_VECTOR_LOOP functions are compiled for one
  * instruction set only (tests/isa/CMakeLists.txt), so that every clone the
  * shipped build dispatches at run time is tested on any CPU that can run it,
@@ -6,7 +7,11 @@
  * the CPU lacks the instruction set. */
 #include <stdio.h>
 
-int test_core_main(void);
+#if !defined(TS_ISA_MAIN)
+#define TS_ISA_MAIN test_core_main
+#endif
+
+int TS_ISA_MAIN(void);
 
 int main(void)
 {
@@ -18,5 +23,5 @@ int main(void)
         return 0;
     }
 #endif
-    return test_core_main();
+    return TS_ISA_MAIN();
 }
