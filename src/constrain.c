@@ -1011,40 +1011,104 @@ static int nudge(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i, si
     return 0;
 }
 
-/* docs/method.md §13.4: certify every interval; double a_i where a
- * certificate fails (every closed-form condition of §13.3 survives a larger
- * a); TS_ERR_UNPROVEN after CON_DOUBLINGS doublings. */
+/* docs/method.md §13.4: certify interval i; double a_i where a certificate
+ * fails (every closed-form condition of §13.3 survives a larger a); 0 after
+ * CON_DOUBLINGS doublings and the downward values, *bad the record. */
+static int certify_interval(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i,
+                            size_t *bad)
+{
+    int tries = 0;
+    double a0 = sp->alpha[i] + sp->beta[i], lo = TS_GEOMETRIC_A_RAISE;
+    while (!interval_ok(sp, cs, nc, i, bad)) {
+        /* first the inner control values moved by up to 2 ulps: a slope
+         * set exactly to a bound, or a forced line, is met in exact
+         * arithmetic only if B1, B2 round the right way (docs/method.md
+         * §13.4); evaluation reads the stored values */
+        if (tries == 0 && nudge(sp, cs, nc, i, bad))
+            return 1;
+        /* a0 doubled CON_DOUBLINGS times, then (a polyline piece's gap
+         * is not monotone in a) 16 values from 4/(3π) up to a0 */
+        double a;
+        if (tries < CON_DOUBLINGS && 2.0 * (sp->alpha[i] + sp->beta[i]) < 1e300)
+            a = 2.0 * (sp->alpha[i] + sp->beta[i]);
+        else if (tries < CON_DOUBLINGS + 16 && a0 > lo)
+            a = lo * pow(a0 / lo, (tries - CON_DOUBLINGS) / 16.0) * (1.0 + 0x1p-40);
+        else
+            return 0;
+        if (tries < CON_DOUBLINGS && !(2.0 * (sp->alpha[i] + sp->beta[i]) < 1e300))
+            tries = CON_DOUBLINGS;
+        tries++;
+        sp->beta[i] = a > sp->alpha[i] ? a - sp->alpha[i] : 0.0;
+        sp->term[i] = (unsigned char)TS_TERM_CERTIFY;
+        ts__controls_geo(sp, i, i + 1);
+    }
+    return 1;
+}
+
+/* Is interval k's a_k, raised first to the closed-form need of the records
+ * with the current slopes (§13.3), at most RESLOPE_A_MAX after the search? */
+#define RESLOPE_A_MAX (0x1p14 * 4.0 / (3.0 * TS_PI))
+static int resloped_ok(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t k)
+{
+    double need = 0.0;
+    for (size_t r = 0; r < nc; r++)
+        if (in_scope(&cs[r], k, sp->n))
+            need = fmax(need, a_needed(&cs[r], sp->h[k], sp->f[k], sp->f[k + 1], sp->x[k],
+                                       sp->d[k], sp->d[k + 1]));
+    if (!(need <= RESLOPE_A_MAX))
+        return 0;
+    if (need > sp->alpha[k] + sp->beta[k]) {
+        sp->beta[k] = need - sp->alpha[k];
+        ts__controls_geo(sp, k, k + 1);
+    }
+    size_t bad;
+    return certify_interval(sp, cs, nc, k, &bad) && sp->alpha[k] + sp->beta[k] <= RESLOPE_A_MAX;
+}
+
+/* docs/method.md §13.4: interval i has no certified a_i with its slopes;
+ * try the slopes of its knots scaled (both, then each alone) by the factors
+ * below (those of the brute-force comparison in the tests), each with a
+ * fresh search on the intervals they touch (i − 1, i, i + 1), each a_k
+ * kept at most RESLOPE_A_MAX (beyond, evaluation loses S'' to
+ * rounding near the knots).  Sound whatever the slopes: only certificates
+ * accept.  1 when one is certified, else everything as it was. */
+static int reslope(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i)
+{
+    static const double scale[] = {0.5, 0.25, 0.0, 1.5};
+    size_t i0 = i > 0 ? i - 1 : i, i1 = i + 2 <= sp->n ? i + 2 : sp->n; /* intervals [i0, i1) */
+    double d0[2] = {sp->d[i], sp->d[i + 1]}, be[3], b1[3], b2[3], ka[3];
+    unsigned char te[3];
+    for (size_t k = i0; k < i1; k++)
+        be[k - i0] = sp->beta[k], b1[k - i0] = sp->b1[k], b2[k - i0] = sp->b2[k],
+        ka[k - i0] = sp->kappa[k], te[k - i0] = sp->term[k];
+    for (int which = 0; which < 3; which++)       /* both knots, the left, the right */
+        for (int m = 0; m < 4; m++) {
+            if (which != 2)
+                sp->d[i] = scale[m] * d0[0];
+            if (which != 1)
+                sp->d[i + 1] = scale[m] * d0[1];
+            ts__controls_geo(sp, i0, i1);
+            if ((i0 == i || resloped_ok(sp, cs, nc, i0)) && resloped_ok(sp, cs, nc, i) &&
+                (i + 1 == i1 || resloped_ok(sp, cs, nc, i + 1)))
+                return 1;
+            sp->d[i] = d0[0], sp->d[i + 1] = d0[1];
+            for (size_t k = i0; k < i1; k++)
+                sp->beta[k] = be[k - i0], sp->b1[k] = b1[k - i0], sp->b2[k] = b2[k - i0],
+                sp->kappa[k] = ka[k - i0], sp->term[k] = te[k - i0];
+        }
+    return 0;
+}
+
+/* docs/method.md §13.4: certify every interval (certify_interval, then
+ * reslope); TS_ERR_UNPROVEN when neither finds a certificate. */
 ts_status ts__con_certify(ts_spline *sp, const ts_constraint *cs, size_t nc, ts_error *err,
                           ts_constraint_failure *fail)
 {
     for (size_t i = 0; i < sp->n; i++) {
         size_t bad = 0;
-        int tries = 0;
-        double a0 = sp->alpha[i] + sp->beta[i], lo = TS_GEOMETRIC_A_RAISE;
-        while (!interval_ok(sp, cs, nc, i, &bad)) {
-            /* first the inner control values moved by up to 2 ulps: a slope
-             * set exactly to a bound, or a forced line, is met in exact
-             * arithmetic only if B1, B2 round the right way (docs/method.md
-             * §13.4); evaluation reads the stored values */
-            if (tries == 0 && nudge(sp, cs, nc, i, &bad))
-                break;
-            /* a0 doubled CON_DOUBLINGS times, then (a polyline piece's gap
-             * is not monotone in a) 16 values from 4/(3π) up to a0 */
-            double a;
-            if (tries < CON_DOUBLINGS && 2.0 * (sp->alpha[i] + sp->beta[i]) < 1e300)
-                a = 2.0 * (sp->alpha[i] + sp->beta[i]);
-            else if (tries < CON_DOUBLINGS + 16 && a0 > lo)
-                a = lo * pow(a0 / lo, (tries - CON_DOUBLINGS) / 16.0) * (1.0 + 0x1p-40);
-            else
-                return con_fail(err, fail, TS_ERR_UNPROVEN, bad, i, TS_WHERE_INTERVAL,
-                                TS_CONDITION_UNPROVEN);
-            if (tries < CON_DOUBLINGS && !(2.0 * (sp->alpha[i] + sp->beta[i]) < 1e300))
-                tries = CON_DOUBLINGS;
-            tries++;
-            sp->beta[i] = a > sp->alpha[i] ? a - sp->alpha[i] : 0.0;
-            sp->term[i] = (unsigned char)TS_TERM_CERTIFY;
-            ts__controls_geo(sp, i, i + 1);
-        }
+        if (!certify_interval(sp, cs, nc, i, &bad) && !reslope(sp, cs, nc, i))
+            return con_fail(err, fail, TS_ERR_UNPROVEN, bad, i, TS_WHERE_INTERVAL,
+                            TS_CONDITION_UNPROVEN);
     }
     sp->certified = 1;
     return TS_OK;
