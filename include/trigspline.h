@@ -102,7 +102,8 @@ typedef enum ts_status {
                                      initialised by its *_init function (see "Struct guards") */
     TS_ERR_CONDITION = 31,        /* constraint records (ts_constraint): the data violate a necessary
                                      condition of one (convex data, a secant beyond a slope bound, a
-                                     point on or across a bound); index = point or interval;
+                                     point across a bound or on a polyline's corner that turns into
+                                     the region); index = point or interval;
                                      ts_constraints_diagnose names the constraint and the condition */
     TS_STATUS_COUNT_ = 32    /* not a status: number of codes */
 } ts_status;
@@ -169,7 +170,8 @@ typedef enum ts_vocab {
                                 lower, upper, slope-min, slope-max, slope-abs */
     TS_VOCAB_BOUND = 10,     /* ts_bound: constant, polyline */
     TS_VOCAB_CONDITION = 11, /* ts_condition: none, convex-data, concave-data, monotone-data,
-                                inside-bound, secant-slope, slope-conflict, unproven */
+                                inside-bound, secant-slope, slope-conflict, unproven,
+                                touch-corner */
     TS_VOCAB_COUNT_ = 12 /* not a vocabulary: their number */
 } ts_vocab;
 
@@ -681,9 +683,13 @@ TS_API ts_status ts_spline_certify(const ts_spline *s, const ts_line *lower, con
  *                      or interval): second divided differences of the wrong
  *                      sign (convex/concave), a secant beyond a slope bound,
  *                      data changing direction (increasing/decreasing), a
- *                      data point across a bound, or on a polyline (a
- *                      constant bound may be touched: the slope there is
- *                      then 0, pointing into the region at the ends);
+ *                      data point across a bound, or on a polyline's inner
+ *                      breakpoint that turns into the region (lower: the
+ *                      slope rises there; touch-corner).  A bound may be
+ *                      touched: a constant one with slope 0 there (pointing
+ *                      into the region at the ends), a polyline with the
+ *                      slope between those of its two pieces
+ *                      (docs/method.md §13.6);
  *   TS_ERR_INFEASIBLE  the slopes the constraints require at a knot
  *                      exclude each other (a proof that no C¹ curve exists);
  *   TS_ERR_UNPROVEN    no certified a_i up to 2^60 alpha_i was found, without
@@ -734,11 +740,14 @@ typedef enum ts_condition {
     TS_CONDITION_CONVEX_DATA = 1,    /* Δ_{i-1} <= Δ_i (convex) violated at point i */
     TS_CONDITION_CONCAVE_DATA = 2,   /* Δ_{i-1} >= Δ_i (concave) violated at point i */
     TS_CONDITION_MONOTONE_DATA = 3,  /* data change direction at point i */
-    TS_CONDITION_INSIDE_BOUND = 4,   /* point i across the bound (or on a polyline) */
+    TS_CONDITION_INSIDE_BOUND = 4,   /* point i across the bound */
     TS_CONDITION_SECANT_SLOPE = 5,   /* the secant of interval i beyond the slope bound
                                         (S' = Δ_i somewhere in it: mean value theorem) */
     TS_CONDITION_SLOPE_CONFLICT = 6, /* the slope ranges required at knot i are disjoint */
-    TS_CONDITION_UNPROVEN = 7        /* interval i: the search gave up, no proof of infeasibility */
+    TS_CONDITION_UNPROVEN = 7,       /* interval i: the search gave up, no proof of infeasibility */
+    TS_CONDITION_TOUCH_CORNER = 8    /* point i lies on a polyline bound at a breakpoint that
+                                        turns towards the region (lower: the slope rises there):
+                                        no C¹ curve on the bound's side passes through it */
 } ts_condition;
 
 typedef struct ts_constraint_failure {

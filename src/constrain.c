@@ -121,16 +121,25 @@ static double bound_sign(const ts_constraint *c)
     return c->kind == TS_CONSTRAINT_LOWER ? 1.0 : c->kind == TS_CONSTRAINT_UPPER ? -1.0 : 0.0;
 }
 
-/* sg (f_j − bound(x_j)) > 0 exactly?  1 yes, 0 no, −1 x_j outside the polyline. */
-static int data_inside(const ts_constraint *c, double xj, double fj)
+/* The polyline's piece p as the line y = py_p + m (x − px_p). */
+static double piece_slope(const ts_constraint *c, size_t p)
+{
+    return (c->py[p + 1] - c->py[p]) / (c->px[p + 1] - c->px[p]);
+}
+
+/* The exact sign (−1, 0, 1) of sg (f_j − bound(x_j)); 2 when x_j is outside
+ * the polyline. */
+static int data_side(const ts_constraint *c, double xj, double fj)
 {
     double sg = bound_sign(c), v[CON_EXACT];
     int k = 0;
-    if (c->bound == TS_BOUND_CONSTANT) /* may be touched (docs/method.md §13.1) */
-        return sg * (fj - c->value) >= 0.0; /* the sign of a difference is exact */
+    if (c->bound == TS_BOUND_CONSTANT) { /* the sign of a difference is exact */
+        double g = sg * (fj - c->value);
+        return (g > 0.0) - (g < 0.0);
+    }
     size_t m = c->n_poly;
     if (xj < c->px[0] || xj > c->px[m - 1])
-        return -1;
+        return 2;
     size_t p = 0;
     while (p + 2 < m && c->px[p + 1] <= xj)
         p++;
@@ -142,7 +151,53 @@ static int data_inside(const ts_constraint *c, double xj, double fj)
     two_diff(xj, c->px[p], g);
     prod_terms(a, 2, b, 2, sg, v, &k);
     prod_terms(e, 2, g, 2, -sg, v, &k);
-    return ts__exact_sign(v, k) > 0;
+    return ts__exact_sign(v, k);
+}
+
+/* On the bound's side (or on it) at x_j?  1 yes, 0 no, −1 outside the
+ * polyline (docs/method.md §13.1: a bound may be touched, §13.6). */
+static int data_inside(const ts_constraint *c, double xj, double fj)
+{
+    int sd = data_side(c, xj, fj);
+    return sd == 2 ? -1 : sd >= 0;
+}
+
+/* Knot j of scope [i0, i1] on the polyline of record c (docs/method.md
+ * §13.6): the slope range [*lo, *hi] a C¹ curve on c's side needs there
+ * (the pieces left and right of x_j, where the scope and the polyline
+ * reach); *corner: x_j is an inner breakpoint whose turn (the exact sign of
+ * the slope change, times the bound's sign) is negative, so that no slope
+ * fits.  0 when x_j does not touch the polyline. */
+static int touch_range(const ts_constraint *c, const double *x, const double *f, size_t j,
+                       size_t i0, size_t i1, double *lo, double *hi, int *corner)
+{
+    *lo = -HUGE_VAL, *hi = HUGE_VAL, *corner = 0;
+    if (c->bound != TS_BOUND_POLYLINE || bound_sign(c) == 0.0 || data_side(c, x[j], f[j]) != 0)
+        return 0;
+    size_t m = c->n_poly, pr = 0;
+    while (pr + 2 < m && c->px[pr + 1] <= x[j])
+        pr++;                                       /* px[pr] <= x_j < px[pr + 1] */
+    size_t pl = pr > 0 && c->px[pr] == x[j] ? pr - 1 : pr; /* px[pl] < x_j <= px[pl + 1] */
+    int left = j > i0 && x[j] > c->px[0], right = j < i1 && x[j] < c->px[m - 1];
+    double ml = piece_slope(c, pl), mr = piece_slope(c, pr), bs = bound_sign(c);
+    /* lower: S − L >= 0 on both sides of a zero: S' <= m_l, S' >= m_r */
+    if (left)
+        *(bs > 0.0 ? hi : lo) = ml;
+    if (right)
+        *(bs > 0.0 ? lo : hi) = mr;
+    if (left && right && pl != pr) {
+        /* bs [(y_{p+1} − y_p)(x_p − x_{p−1}) − (y_p − y_{p−1})(x_{p+1} − x_p)] < 0 */
+        double a[2], b[2], e[2], g[2], v[CON_EXACT];
+        int k = 0;
+        two_diff(c->py[pr + 1], c->py[pr], a);
+        two_diff(c->px[pr], c->px[pl], b);
+        two_diff(c->py[pr], c->py[pl], e);
+        two_diff(c->px[pr + 1], c->px[pr], g);
+        prod_terms(a, 2, b, 2, -bs, v, &k);
+        prod_terms(e, 2, g, 2, bs, v, &k);
+        *corner = ts__exact_sign(v, k) < 0;
+    }
+    return 1;
 }
 
 /* docs/method.md §13.1: the necessary conditions on the data. */
@@ -194,10 +249,16 @@ static ts_status data_checks(const double *x, const double *f, size_t n, const t
                 }
         }
         if (bound_sign(c) != 0.0)
-            for (size_t j = i0; j <= i1; j++)
+            for (size_t j = i0; j <= i1; j++) {
+                double tl, th;
+                int corner;
                 if (data_inside(c, x[j], f[j]) == 0)
                     return con_fail(err, fail, TS_ERR_CONDITION, k, j, TS_WHERE_POINT,
                                     TS_CONDITION_INSIDE_BOUND);
+                if (touch_range(c, x, f, j, i0, i1, &tl, &th, &corner) && corner)
+                    return con_fail(err, fail, TS_ERR_CONDITION, k, j, TS_WHERE_POINT,
+                                    TS_CONDITION_TOUCH_CORNER);
+            }
     }
     return TS_OK;
 }
@@ -298,6 +359,20 @@ static ts_status con_slopes(const double *x, const double *f, size_t n, const ts
                 d[j] = v, by[j] = (int)k;
         }
     }
+    /* a polyline the data touch: the slope there inside the range the pieces
+     * on both sides allow (docs/method.md §13.6) */
+    for (size_t k = 0; k < nc; k++) {
+        size_t i0 = cs[k].first, i1 = scope_end(&cs[k], n);
+        for (size_t j = i0; j <= i1; j++) {
+            double lo, hi;
+            int corner;
+            if (!touch_range(&cs[k], x, f, j, i0, i1, &lo, &hi, &corner))
+                continue;
+            double v = d[j] < lo ? lo : d[j] > hi ? hi : d[j];
+            if (v != d[j])
+                d[j] = v, by[j] = (int)k;
+        }
+    }
     /* intervals that must be lines; a knot between two such with different
      * secants has no admissible slope (S' continuous) */
     for (size_t pass = 0; pass <= n + 1; pass++) {
@@ -325,12 +400,6 @@ static ts_status con_slopes(const double *x, const double *f, size_t n, const ts
     }
     return con_fail(err, fail, TS_ERR_INFEASIBLE, TS_NO_INDEX, 0, TS_WHERE_POINT,
                     TS_CONDITION_SLOPE_CONFLICT);
-}
-
-/* The polyline's piece p as the line y = py_p + m (x − px_p). */
-static double piece_slope(const ts_constraint *c, size_t p)
-{
-    return (c->py[p + 1] - c->py[p]) / (c->px[p + 1] - c->px[p]);
 }
 
 /* docs/method.md §13.3: the smallest a the record needs on interval i
@@ -377,11 +446,12 @@ static double a_needed(const ts_constraint *c, double h, double fi, double fj, d
         double m = piece_slope(c, p);
         double g0 = bs * (fi - (c->py[p] + m * (xi - c->px[p])));
         double g1 = bs * (fj - (c->py[p] + m * (xi + h - c->px[p])));
-        if (!(g0 > 0.0 && g1 > 0.0))
+        if (!(g0 >= 0.0 && g1 >= 0.0))
             continue; /* the search (§13.4) */
-        if (bs * (di - m) < 0.0)
+        /* a knot on the line (g = 0, §13.6): its slope rule, no a needed */
+        if (bs * (di - m) < 0.0 && g0 > 0.0)
             a = fmax(a, -K3 * h * bs * (di - m) / g0);
-        if (bs * (dj - m) > 0.0)
+        if (bs * (dj - m) > 0.0 && g1 > 0.0)
             a = fmax(a, K3 * h * bs * (dj - m) / g1);
     }
     return a;
@@ -520,6 +590,35 @@ static int line_polygon(const seg *g, double x0, double y0, double m, double bs)
         /* a constant bound: S − c = Σ A_l (B_l − c) >= 0 needs B_l >= c only
          * (the data may touch it); a sloped piece: strictly above */
         if (ts__exact_sign(v, k) < (m == 0.0 && x0 == g->xi ? 0 : 1))
+            return 0;
+    }
+    return 1;
+}
+
+/* bs [(B_l − py_p)(px_{p+1} − px_p) − (py_{p+1} − py_p)(X_l − px_p)] >= 0 for
+ * every l: the curve on the bound's side of piece p's line (through its
+ * points, not a rounded slope) over the whole interval, touching allowed
+ * (docs/method.md §13.6); exact. */
+static int piece_polygon(const seg *g, const ts_constraint *c, size_t p, double bs)
+{
+    double off[2], hk[2], dx[2], dy[2];
+    two_diff(g->xi, c->px[p], off);
+    if (ts__exact_product(g->h, g->kap, 1.0, hk) != 2)
+        return 0;
+    two_diff(c->px[p + 1], c->px[p], dx);
+    two_diff(c->py[p + 1], c->py[p], dy);
+    /* X_l − px_p: X̂_1 h = hκ, X̂_2 h = h − hκ, X̂_3 h = h */
+    double t0[2] = {off[0], off[1]}, t1[4] = {off[0], off[1], hk[0], hk[1]};
+    double t2[5] = {off[0], off[1], g->h, -hk[0], -hk[1]}, t3[3] = {off[0], off[1], g->h};
+    const double *tt[4] = {t0, t1, t2, t3};
+    const int nt[4] = {2, 4, 5, 3};
+    for (int l = 0; l < 4; l++) {
+        double v[CON_EXACT], gb[2];
+        int k = 0;
+        two_diff(g->B[l], c->py[p], gb);
+        prod_terms(gb, 2, dx, 2, bs, v, &k);
+        prod_terms(dy, 2, tt[l], nt[l], -bs, v, &k);
+        if (ts__exact_sign(v, k) < 0)
             return 0;
     }
     return 1;
@@ -843,7 +942,7 @@ static double con_gap(const ts_spline *sp, const ts_constraint *c, size_t i, dou
             double v = want ? min_on(&tg, &s, &g, ta, tb, &tm) : best;
             if (v < best)
                 best = v, tmin = tm;
-            if (!line_polygon(&g, c->px[p], c->py[p], m, bs)) {
+            if (!piece_polygon(&g, c, p, bs)) {
                 /* the minimum over the piece, widened by 2^-40 in t, above a guard */
                 double wa = fmax(0.0, ta - 0x1p-40), wb = fmin(1.0, tb + 0x1p-40), tw;
                 double vw = min_on(&tg, &s, &g, wa, wb, &tw);
@@ -912,40 +1011,104 @@ static int nudge(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i, si
     return 0;
 }
 
-/* docs/method.md §13.4: certify every interval; double a_i where a
- * certificate fails (every closed-form condition of §13.3 survives a larger
- * a); TS_ERR_UNPROVEN after CON_DOUBLINGS doublings. */
+/* docs/method.md §13.4: certify interval i; double a_i where a certificate
+ * fails (every closed-form condition of §13.3 survives a larger a); 0 after
+ * CON_DOUBLINGS doublings and the downward values, *bad the record. */
+static int certify_interval(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i,
+                            size_t *bad)
+{
+    int tries = 0;
+    double a0 = sp->alpha[i] + sp->beta[i], lo = TS_GEOMETRIC_A_RAISE;
+    while (!interval_ok(sp, cs, nc, i, bad)) {
+        /* first the inner control values moved by up to 2 ulps: a slope
+         * set exactly to a bound, or a forced line, is met in exact
+         * arithmetic only if B1, B2 round the right way (docs/method.md
+         * §13.4); evaluation reads the stored values */
+        if (tries == 0 && nudge(sp, cs, nc, i, bad))
+            return 1;
+        /* a0 doubled CON_DOUBLINGS times, then (a polyline piece's gap
+         * is not monotone in a) 16 values from 4/(3π) up to a0 */
+        double a;
+        if (tries < CON_DOUBLINGS && 2.0 * (sp->alpha[i] + sp->beta[i]) < 1e300)
+            a = 2.0 * (sp->alpha[i] + sp->beta[i]);
+        else if (tries < CON_DOUBLINGS + 16 && a0 > lo)
+            a = lo * pow(a0 / lo, (tries - CON_DOUBLINGS) / 16.0) * (1.0 + 0x1p-40);
+        else
+            return 0;
+        if (tries < CON_DOUBLINGS && !(2.0 * (sp->alpha[i] + sp->beta[i]) < 1e300))
+            tries = CON_DOUBLINGS;
+        tries++;
+        sp->beta[i] = a > sp->alpha[i] ? a - sp->alpha[i] : 0.0;
+        sp->term[i] = (unsigned char)TS_TERM_CERTIFY;
+        ts__controls_geo(sp, i, i + 1);
+    }
+    return 1;
+}
+
+/* Is interval k's a_k, raised first to the closed-form need of the records
+ * with the current slopes (§13.3), at most RESLOPE_A_MAX after the search? */
+#define RESLOPE_A_MAX (0x1p14 * 4.0 / (3.0 * TS_PI))
+static int resloped_ok(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t k)
+{
+    double need = 0.0;
+    for (size_t r = 0; r < nc; r++)
+        if (in_scope(&cs[r], k, sp->n))
+            need = fmax(need, a_needed(&cs[r], sp->h[k], sp->f[k], sp->f[k + 1], sp->x[k],
+                                       sp->d[k], sp->d[k + 1]));
+    if (!(need <= RESLOPE_A_MAX))
+        return 0;
+    if (need > sp->alpha[k] + sp->beta[k]) {
+        sp->beta[k] = need - sp->alpha[k];
+        ts__controls_geo(sp, k, k + 1);
+    }
+    size_t bad;
+    return certify_interval(sp, cs, nc, k, &bad) && sp->alpha[k] + sp->beta[k] <= RESLOPE_A_MAX;
+}
+
+/* docs/method.md §13.4: interval i has no certified a_i with its slopes;
+ * try the slopes of its knots scaled (both, then each alone) by the factors
+ * below (those of the brute-force comparison in the tests), each with a
+ * fresh search on the intervals they touch (i − 1, i, i + 1), each a_k
+ * kept at most RESLOPE_A_MAX (beyond, evaluation loses S'' to
+ * rounding near the knots).  Sound whatever the slopes: only certificates
+ * accept.  1 when one is certified, else everything as it was. */
+static int reslope(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i)
+{
+    static const double scale[] = {0.5, 0.25, 0.0, 1.5};
+    size_t i0 = i > 0 ? i - 1 : i, i1 = i + 2 <= sp->n ? i + 2 : sp->n; /* intervals [i0, i1) */
+    double d0[2] = {sp->d[i], sp->d[i + 1]}, be[3], b1[3], b2[3], ka[3];
+    unsigned char te[3];
+    for (size_t k = i0; k < i1; k++)
+        be[k - i0] = sp->beta[k], b1[k - i0] = sp->b1[k], b2[k - i0] = sp->b2[k],
+        ka[k - i0] = sp->kappa[k], te[k - i0] = sp->term[k];
+    for (int which = 0; which < 3; which++)       /* both knots, the left, the right */
+        for (int m = 0; m < 4; m++) {
+            if (which != 2)
+                sp->d[i] = scale[m] * d0[0];
+            if (which != 1)
+                sp->d[i + 1] = scale[m] * d0[1];
+            ts__controls_geo(sp, i0, i1);
+            if ((i0 == i || resloped_ok(sp, cs, nc, i0)) && resloped_ok(sp, cs, nc, i) &&
+                (i + 1 == i1 || resloped_ok(sp, cs, nc, i + 1)))
+                return 1;
+            sp->d[i] = d0[0], sp->d[i + 1] = d0[1];
+            for (size_t k = i0; k < i1; k++)
+                sp->beta[k] = be[k - i0], sp->b1[k] = b1[k - i0], sp->b2[k] = b2[k - i0],
+                sp->kappa[k] = ka[k - i0], sp->term[k] = te[k - i0];
+        }
+    return 0;
+}
+
+/* docs/method.md §13.4: certify every interval (certify_interval, then
+ * reslope); TS_ERR_UNPROVEN when neither finds a certificate. */
 ts_status ts__con_certify(ts_spline *sp, const ts_constraint *cs, size_t nc, ts_error *err,
                           ts_constraint_failure *fail)
 {
     for (size_t i = 0; i < sp->n; i++) {
         size_t bad = 0;
-        int tries = 0;
-        double a0 = sp->alpha[i] + sp->beta[i], lo = TS_GEOMETRIC_A_RAISE;
-        while (!interval_ok(sp, cs, nc, i, &bad)) {
-            /* first the inner control values moved by up to 2 ulps: a slope
-             * set exactly to a bound, or a forced line, is met in exact
-             * arithmetic only if B1, B2 round the right way (docs/method.md
-             * §13.4); evaluation reads the stored values */
-            if (tries == 0 && nudge(sp, cs, nc, i, &bad))
-                break;
-            /* a0 doubled CON_DOUBLINGS times, then (a polyline piece's gap
-             * is not monotone in a) 16 values from 4/(3π) up to a0 */
-            double a;
-            if (tries < CON_DOUBLINGS && 2.0 * (sp->alpha[i] + sp->beta[i]) < 1e300)
-                a = 2.0 * (sp->alpha[i] + sp->beta[i]);
-            else if (tries < CON_DOUBLINGS + 16 && a0 > lo)
-                a = lo * pow(a0 / lo, (tries - CON_DOUBLINGS) / 16.0) * (1.0 + 0x1p-40);
-            else
-                return con_fail(err, fail, TS_ERR_UNPROVEN, bad, i, TS_WHERE_INTERVAL,
-                                TS_CONDITION_UNPROVEN);
-            if (tries < CON_DOUBLINGS && !(2.0 * (sp->alpha[i] + sp->beta[i]) < 1e300))
-                tries = CON_DOUBLINGS;
-            tries++;
-            sp->beta[i] = a > sp->alpha[i] ? a - sp->alpha[i] : 0.0;
-            sp->term[i] = (unsigned char)TS_TERM_CERTIFY;
-            ts__controls_geo(sp, i, i + 1);
-        }
+        if (!certify_interval(sp, cs, nc, i, &bad) && !reslope(sp, cs, nc, i))
+            return con_fail(err, fail, TS_ERR_UNPROVEN, bad, i, TS_WHERE_INTERVAL,
+                            TS_CONDITION_UNPROVEN);
     }
     sp->certified = 1;
     return TS_OK;

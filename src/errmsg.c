@@ -187,6 +187,22 @@ static int condition_sentence(out *o, const data *d, const ts_error *e)
         point_xf(o, d, i);
         put(o, " is not %s the %s bound", c->kind == TS_CONSTRAINT_LOWER ? "above" : "below", kind);
         break;
+    case TS_CONDITION_TOUCH_CORNER: {
+        size_t p = 1;
+        while (p + 1 < c->n_poly && c->px[p] != d->c->x[i])
+            p++;
+        if (!(p + 1 < c->n_poly))
+            return 0;
+        point_xf(o, d, i);
+        put(o, " lies on the %s bound at its breakpoint, where the polyline's slope goes from ",
+            kind);
+        num(o, (c->py[p] - c->py[p - 1]) / (c->px[p] - c->px[p - 1]));
+        put(o, " to ");
+        num(o, (c->py[p + 1] - c->py[p]) / (c->px[p + 1] - c->px[p]));
+        put(o, ": no curve with a continuous slope stays %s it through this point",
+            c->kind == TS_CONSTRAINT_LOWER ? "above" : "below");
+        break;
+    }
     case TS_CONDITION_SECANT_SLOPE:
         if (!(i + 1 < n))
             return 0;

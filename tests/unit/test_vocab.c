@@ -67,7 +67,7 @@ int main(void)
     static const char *const bound[] = {"constant", "polyline"};
     static const char *const condition[] = {"none", "convex-data", "concave-data",
                                             "monotone-data", "inside-bound", "secant-slope",
-                                            "slope-conflict", "unproven"};
+                                            "slope-conflict", "unproven", "touch-corner"};
 #define LIST(v, a) check_list(v, a, (int)(sizeof(a) / sizeof((a)[0])), #v)
     LIST(TS_VOCAB_STATUS, status);
     LIST(TS_VOCAB_FORM, form);

@@ -31,7 +31,15 @@
  *   shape, form, slopes, extrapolate (-1: NaN outside), alpha,
  *   lower.m, lower.c, upper.m, upper.c, margin, skipna, certify, want_gap,
  *   gap_first, gap_end (the least gap is taken over intervals
- *   [gap_first, gap_end) of the fitted series; gap_end < 0: to the last).
+ *   [gap_first, gap_end) of the fitted series; gap_end < 0: to the last);
+ * then, when the vector is longer, constraint records (docs/method.md §13):
+ *   n_records, and per record kind, value, first, count, n_poly,
+ *   px[n_poly], py[n_poly] (n_poly 0: a constant bound).  A scope counts
+ *   the series' intervals; a run of fit_runs gets each record cut to its own
+ *   intervals (a record outside the run is left out), so a scope means the
+ *   same intervals with or without missing points.  The least gap of a
+ *   series with records is that of its lower and upper records (exact
+ *   minima, ts_spline_constraint_report).
  *
  * float32 output keeps the bound (docs/method.md §5): each value is rounded
  * to nearest, then moved one float32 step back inside where rounding crossed
@@ -82,10 +90,85 @@ typedef struct {
     double gap_first, gap_end;
 } series_options;
 
-/* The option vector -> ts_spline_options; 0 if a value is not a valid enum. */
-static int read_options(const char *p, npy_intp step, npy_intp k, series_options *so)
+/* Room for the records of an option vector of k values: the vector's copy
+ * (polyline points point into it), the records, and the records of a run. */
+typedef struct {
+    double *v;
+    ts_constraint *cons, *run;
+    size_t cap;
+} record_buf;
+
+static int records_new(record_buf *rb, npy_intp k)
 {
-    if (k != OPT_LEN)
+    memset(rb, 0, sizeof *rb);
+    size_t uk = (size_t)(k > 0 ? k : 0) + 1, cap = uk / 5 + 1;
+    if (uk > SIZE_MAX / sizeof(double) || cap > SIZE_MAX / sizeof(ts_constraint))
+        return 0;
+    rb->v = malloc(uk * sizeof(double));
+    rb->cons = malloc(cap * sizeof(ts_constraint));
+    rb->run = malloc(cap * sizeof(ts_constraint));
+    rb->cap = cap;
+    return rb->v && rb->cons && rb->run;
+}
+
+static void records_free(record_buf *rb)
+{
+    free(rb->v);
+    free(rb->cons);
+    free(rb->run);
+}
+
+/* A count in a double: a whole number in [0, max]. */
+static int whole(double v, double max, size_t *out)
+{
+    if (!(0 <= v && v <= max) || v != floor(v))
+        return 0;
+    *out = (size_t)v;
+    return 1;
+}
+
+/* The records after the first OPT_LEN values of rb->v (k values in all);
+ * 0 when the layout is broken.  Kinds, values and points are checked by the
+ * library (ts_spline_new). */
+static int read_records(record_buf *rb, npy_intp k, series_options *so)
+{
+    const double *v = rb->v;
+    size_t at = OPT_LEN, end = (size_t)k, nc;
+    if (!whole(v[at++], (double)rb->cap, &nc) || nc > rb->cap)
+        return 0;
+    for (size_t r = 0; r < nc; r++) {
+        ts_constraint *c = &rb->cons[r];
+        size_t kind, np_;
+        if (end - at < 5 || !whole(v[at], 255.0, &kind))
+            return 0;
+        ts_constraint_init(c, (ts_constraint_kind)kind);
+        c->kind = (ts_constraint_kind)kind;
+        c->value = v[at + 1];
+        if (!whole(v[at + 2], 0x1p52, &c->first) || !whole(v[at + 3], 0x1p52, &c->count) ||
+            !whole(v[at + 4], (double)(end - at - 5) / 2, &np_))
+            return 0;
+        at += 5;
+        if (np_) {
+            c->bound = TS_BOUND_POLYLINE;
+            c->px = v + at;
+            c->py = v + at + np_;
+            c->n_poly = np_;
+            at += 2 * np_;
+        }
+    }
+    if (at != end)
+        return 0;
+    so->opt.constraints = rb->cons;
+    so->opt.n_constraints = nc;
+    return 1;
+}
+
+/* The option vector -> ts_spline_options; 0 if a value is not a valid enum
+ * or the records' layout is broken (rb: room for them, NULL: none allowed). */
+static int read_options(const char *p, npy_intp step, npy_intp k, series_options *so,
+                        record_buf *rb)
+{
+    if (k != OPT_LEN && !(k > OPT_LEN && rb))
         return 0;
     double v[OPT_LEN];
     for (int i = 0; i < OPT_LEN; i++)
@@ -114,18 +197,69 @@ static int read_options(const char *p, npy_intp step, npy_intp k, series_options
     so->gap_end = v[OPT_GAP_END];
     if (!(so->gap_first >= 0) || isnan(so->gap_end))
         return 0;
-    return 1;
+    if (k == OPT_LEN)
+        return 1;
+    for (npy_intp i = 0; i < k; i++)
+        rb->v[i] = *(const double *)(p + i * step);
+    return read_records(rb, k, so);
+}
+
+/* The records of so cut to a run's intervals [p0, p0 + nint) of the series
+ * (n_series_int intervals) into rb->run (see the top of the file). */
+static void run_records(const series_options *so, record_buf *rb, size_t p0, size_t nint,
+                        size_t n_series_int, ts_spline_options *out)
+{
+    *out = so->opt;
+    if (!so->opt.n_constraints)
+        return;
+    size_t m = 0;
+    for (size_t r = 0; r < so->opt.n_constraints; r++) {
+        ts_constraint c = so->opt.constraints[r];
+        if (c.first >= n_series_int || c.count > n_series_int - c.first) {
+            c.first = nint; /* a scope beyond the series: refused as without gaps */
+            rb->run[m++] = c;
+            continue;
+        }
+        size_t a = c.first, b = c.count ? c.first + c.count : n_series_int;
+        if (a < p0)
+            a = p0;
+        if (b > p0 + nint)
+            b = p0 + nint;
+        if (!(a < b))
+            continue;
+        c.first = a - p0;
+        c.count = b - a;
+        rb->run[m++] = c;
+    }
+    out->constraints = rb->run;
+    out->n_constraints = m;
 }
 
 /* Least certified gap over intervals [first, end) (end < 0: to the last) and
- * their active boundaries (NaN when the scheme has none, e.g. monotone). */
-static double least_gap(const ts_spline *s, double first, double end)
+ * their active boundaries (NaN when the scheme has none, e.g. monotone);
+ * with constraint records, the least exact gap of its lower and upper
+ * records. */
+static double least_gap(const ts_spline *s, const ts_spline_options *o, double first, double end)
 {
     double g = (double)NAN;
     size_t n = ts_spline_intervals(s);
     size_t i0 = first < (double)n ? (size_t)first : n;
     size_t i1 = end < 0 || end > (double)n ? n : (size_t)end;
     for (size_t i = i0; i < i1; i++) {
+        if (o->n_constraints) {
+            for (size_t k = 0; k < o->n_constraints; k++) {
+                ts_constraint_kind kind = o->constraints[k].kind;
+                ts_constraint_report r;
+                ts_constraint_report_init(&r);
+                if ((kind != TS_CONSTRAINT_LOWER && kind != TS_CONSTRAINT_UPPER) ||
+                    ts_spline_constraint_report(s, k, i, &r) != TS_OK || !r.in_scope ||
+                    isnan(r.gap))
+                    continue;
+                if (!(g <= r.gap))
+                    g = r.gap;
+            }
+            continue;
+        }
         ts_interval_report r = TS_INTERVAL_REPORT_INIT;
         if (ts_spline_report(s, i, &r) != TS_OK)
             return (double)NAN;
@@ -218,7 +352,7 @@ static npy_intp query_run(const scratch *w, npy_intp nn, npy_intp n, double q)
 
 /* A series with missing points (not skipna): each run fitted on its own. */
 static ts_status fit_runs(scratch *w, npy_intp n, npy_intp m, const series_options *so,
-                          npy_int64 *index, double *gap)
+                          record_buf *rb, npy_int64 *index, double *gap)
 {
     npy_intp nn = 0, nrun = 0, first_missing = -1;
     for (npy_intp i = 0; i < n; i++) {
@@ -264,8 +398,11 @@ static ts_status fit_runs(scratch *w, npy_intp n, npy_intp m, const series_optio
             continue;
         ts_spline *s = NULL;
         ts_error err;
-        st = ts_spline_new(w->x + a, w->f + a, (size_t)len, &so->opt, &s, &err);
-        if (st == TS_OK && so->opt.shape != TS_SHAPE_NONE && !ts_spline_certified(s)) {
+        ts_spline_options ro;
+        run_records(so, rb, (size_t)w->keep[a], (size_t)len - 1, (size_t)n - 1, &ro);
+        st = ts_spline_new(w->x + a, w->f + a, (size_t)len, &ro, &s, &err);
+        if (st == TS_OK && (ro.shape != TS_SHAPE_NONE || ro.n_constraints) &&
+            !ts_spline_certified(s)) {
             st = TS_ERR_VIOLATED;
             err.index = TS_NO_INDEX;
         }
@@ -289,7 +426,8 @@ static ts_status fit_runs(scratch *w, npy_intp n, npy_intp m, const series_optio
             double first = so->gap_first - (double)w->keep[a];
             double end = so->gap_end < 0 ? -1.0 : so->gap_end - (double)w->keep[a];
             double g = so->gap_end >= 0 && end <= 0 ? (double)NAN
-                                                    : least_gap(s, first > 0 ? first : 0, end);
+                                                    : least_gap(s, &ro, first > 0 ? first : 0,
+                                                                end);
             if (!isnan(g) && !(*gap <= g))
                 *gap = g;
         }
@@ -309,7 +447,7 @@ static ts_status fit_runs(scratch *w, npy_intp n, npy_intp m, const series_optio
  * w->y; returns the status, *index in the caller's numbering, *gap, and
  * *valued = 1 when w->y holds the values (always for TS_OK). */
 static ts_status fit_series(scratch *w, npy_intp n, npy_intp m, const series_options *so,
-                            npy_int64 *index, double *gap, int *valued)
+                            record_buf *rb, npy_int64 *index, double *gap, int *valued)
 {
     *index = -1;
     *gap = (double)NAN;
@@ -317,7 +455,7 @@ static ts_status fit_series(scratch *w, npy_intp n, npy_intp m, const series_opt
     if (!so->skipna) {
         for (npy_intp i = 0; i < n; i++) {
             if (!(isfinite(w->x[i]) && isfinite(w->f[i]))) {
-                ts_status st = fit_runs(w, n, m, so, index, gap);
+                ts_status st = fit_runs(w, n, m, so, rb, index, gap);
                 *valued = st == TS_ERR_NONFINITE; /* NaN where no run gives a value */
                 return st;
             }
@@ -337,7 +475,8 @@ static ts_status fit_series(scratch *w, npy_intp n, npy_intp m, const series_opt
     ts_spline *s = NULL;
     ts_error err;
     ts_status st = ts_spline_new(w->x, w->f, (size_t)nn, &so->opt, &s, &err);
-    if (st == TS_OK && so->opt.shape != TS_SHAPE_NONE && !ts_spline_certified(s)) {
+    if (st == TS_OK && (so->opt.shape != TS_SHAPE_NONE || so->opt.n_constraints) &&
+        !ts_spline_certified(s)) {
         st = TS_ERR_VIOLATED;
         err.index = TS_NO_INDEX;
     }
@@ -353,7 +492,7 @@ static ts_status fit_series(scratch *w, npy_intp n, npy_intp m, const series_opt
     /* TS_ERR_DOMAIN only: those queries are NaN, the others evaluated */
     (void)ts_spline_eval_batch(s, 0, w->xq, (size_t)m, w->y, &cur, NULL);
     if (so->want_gap)
-        *gap = least_gap(s, so->gap_first, so->gap_end);
+        *gap = least_gap(s, &so->opt, so->gap_first, so->gap_end);
     ts_spline_free(s);
     *valued = 1;
     return TS_OK;
@@ -415,7 +554,9 @@ static void interp_loop(char **args, npy_intp const *dims, npy_intp const *steps
     npy_intp N = dims[0], n = dims[1], m = dims[2], k = dims[3];
     npy_intp sx = steps[8], sf = steps[9], sq = steps[10], so_ = steps[11], sy = steps[12];
     scratch w;
+    record_buf rb;
     int ok = scratch_new(&w, n, m);
+    ok &= records_new(&rb, k);
     /* Floating-point flags raised in here carry no information: the library's
      * vectorised construction loops compute lanes they then discard (see
      * src/internal.h, TS_VECTOR_LOOP), and float32 rounding underflows by
@@ -438,13 +579,13 @@ static void interp_loop(char **args, npy_intp const *dims, npy_intp const *steps
         int valued = 0;
         if (!ok) {
             st = TS_ERR_NOMEM;
-        } else if (!read_options(po, so_, k, &so)) {
+        } else if (!read_options(po, so_, k, &so, &rb)) {
             st = TS_ERR_OPTION;
         } else {
             load(w.x, px, sx, n, x_f32);
             load(w.f, pf, sf, n, is_f32);
             load(w.xq, pq, sq, m, x_f32);
-            st = fit_series(&w, n, m, &so, &index, &gap, &valued);
+            st = fit_series(&w, n, m, &so, &rb, &index, &gap, &valued);
         }
         *pst = (npy_int32)st;
         *pix = index;
@@ -466,6 +607,7 @@ static void interp_loop(char **args, npy_intp const *dims, npy_intp const *steps
     }
     fesetexceptflag(&flags, FE_ALL_EXCEPT);
     scratch_free(&w);
+    records_free(&rb);
 }
 
 static void loop_f64(char **args, npy_intp const *dims, npy_intp const *steps, void *data)
@@ -527,10 +669,15 @@ static PyObject *py_message(PyObject *self, PyObject *args)
                            : NULL;
     PyObject *result = NULL;
     series_options so;
+    record_buf rb;
+    int have_rb = ao != NULL && records_new(&rb, PyArray_SIZE(ao));
     if (!ao) {
         /* exception set */
+    } else if (!have_rb) {
+        PyErr_NoMemory();
     } else if (PyArray_SIZE(ax) != PyArray_SIZE(af) ||
-               !read_options(PyArray_DATA(ao), (npy_intp)sizeof(double), PyArray_SIZE(ao), &so)) {
+               !read_options(PyArray_DATA(ao), (npy_intp)sizeof(double), PyArray_SIZE(ao), &so,
+                             &rb)) {
         PyErr_SetString(PyExc_ValueError, "message: x and f differ in length, or a bad option vector");
     } else {
         ts_error e = {(ts_status)code, index < 0 ? TS_NO_INDEX : (size_t)index,
@@ -545,6 +692,8 @@ static PyObject *py_message(PyObject *self, PyObject *args)
         ts_error_message(&e, &ctx, buf, sizeof buf);
         result = PyUnicode_DecodeUTF8(buf, (Py_ssize_t)strlen(buf), "replace");
     }
+    if (have_rb)
+        records_free(&rb);
     Py_XDECREF(ax);
     Py_XDECREF(af);
     Py_XDECREF(ao);

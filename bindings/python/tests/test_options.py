@@ -98,10 +98,9 @@ def test_same_keywords_same_defaults_in_every_entry_point():
     for name in BATCH:
         assert sets[name] == sets["interp"], name
     assert sets["interp"] == {"shape", "lower", "upper", "alpha", "form", "slopes", "margin",
-                              "certify", "extrapolate", "skipna", "errors"}
+                              "certify", "extrapolate", "skipna", "errors", "constraints"}
     # Spline: the same but for the batch-only ones, plus beta
-    # (and the constraint records, docs/method.md §13, Spline only so far)
-    assert sets["Spline"] == sets["interp"] - {"skipna", "errors"} | {"beta", "constraints"}
+    assert sets["Spline"] == sets["interp"] - {"skipna", "errors"} | {"beta"}
     assert sets["Surface"] == {"shape", "lower", "upper", "alpha", "beta", "form", "slopes",
                                "margin", "zero_twist", "extrapolate"}
     assert sets["Curve"] == {"closed", "param", "alpha", "beta", "box", "slopes", "margin",

@@ -1,4 +1,5 @@
-"""Constraint records (docs/method.md §13): ``constraints=[...]`` of Spline.
+"""Constraint records (docs/method.md §13): ``constraints=[...]`` of Spline,
+``interp``, the xarray accessors and ``pandas.interpolate``.
 
 Each item is a SPEC string, the command line's ``--constraint`` syntax
 (docs/cli.md): ``'convex'``, ``'concave'``, ``'increasing'``, ``'decreasing'``,
@@ -87,3 +88,18 @@ def records(items):
     if isinstance(items, (str, dict)):
         items = [items]
     return [record(it) for it in items]
+
+
+def pack(recs):
+    """The records (``records``) as the float64 tail of the gufunc's option
+    vector: n, then per record kind, value, first, count, n_poly, px, py
+    (bindings/python/src/_gufunc.c)."""
+    out = [float(len(recs))]
+    for kind, value, px, py, first, count in recs:
+        if first < 0 or count < 0:
+            raise ValueError("constraint scope: first and count must be >= 0")
+        npts = 0 if px is None else min(len(px), len(py))
+        out += [float(kind), float(value), float(first), float(count), float(npts)]
+        if npts:
+            out += [float(v) for v in px[:npts]] + [float(v) for v in py[:npts]]
+    return out

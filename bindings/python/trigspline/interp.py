@@ -8,12 +8,13 @@ runs without the GIL.  Each series gives the values of
 """
 import numpy as np
 
-from . import _gufunc, _options
+from . import _constraints, _gufunc, _options
 from ._options import FORMS, SHAPES, SLOPES
 from ._util import num
 from .errors import _S, TrigsplineError
 
-__all__ = ["interp", "InterpResult", "status_message", "STATUS_OK", "OPTION_LAYOUT"]
+__all__ = ["interp", "InterpResult", "status_message", "constraint_message", "STATUS_OK",
+           "OPTION_LAYOUT"]
 
 STATUS_OK = 0
 
@@ -32,6 +33,35 @@ DATA_GAPS = (4, 5)  # TS_ERR_TOO_FEW, TS_ERR_NONFINITE
 # The codes whose index is an interval (include/trigspline.h); the others name a point.
 _INTERVAL_STATUSES = (_S.ALPHA, _S.BETA, _S.MARGIN, _S.INFEASIBLE, _S.VIOLATED, _S.GEOMETRIC,
                       _S.CONTROL_OVERFLOW, _S.PRECISION, _S.UNPROVEN)
+
+
+def where_of(code, o):
+    """'interval' or 'point': what a series' index names for status code
+    (with constraint records, TS_ERR_INFEASIBLE names the knot of a slope
+    conflict)."""
+    if code == _S.INFEASIBLE and o.get("constraints") is not None:
+        return "point"
+    return "interval" if code in _INTERVAL_STATUSES else "point"
+
+
+def sentence(code, index, x, f, opt):
+    """The library's sentence of one series' failure under the option
+    vector opt (``pack``), x and f that series' data."""
+    cons = len(opt) > _gufunc.OPT_LEN
+    where = where_of(code, {"constraints": [] if cons else None})
+    return _gufunc.message(int(code), int(index), 2 if where == "interval" else 1,
+                           np.asarray(x, dtype=np.float64), np.asarray(f, dtype=np.float64),
+                           opt)
+
+
+def constraint_message(x, f, status, index, **options):
+    """The library's sentence for one series' status and index (as
+    ``interp(..., full=True)`` gives them) under the options of that call:
+    for a constraint refusal it names the record and the necessary
+    condition the data break (docs/method.md §13.1)."""
+    o = resolve(options.pop("shape", None), options.pop("lower", None),
+                options.pop("upper", None), **options)
+    return sentence(status, index, x, f, pack(o))
 
 
 def status_message(code):
@@ -70,10 +100,12 @@ def resolve_shape(shape, lower, upper):
 
 
 def resolve(shape=None, lower=None, upper=None, *, alpha=None, form=None, slopes=None,
-            extrapolate=None, margin=None, skipna=None, certify=None, errors=None):
+            extrapolate=None, margin=None, skipna=None, certify=None, errors=None,
+            constraints=None):
     """The options of the batch entry points (interp, the xarray accessor,
     pandas.interpolate) with every None replaced by its default: a dict of
-    canonical values (docs/options.md)."""
+    canonical values (docs/options.md); constraints: the records
+    (``_constraints.records``) or None."""
     shape, lo, hi = resolve_shape(shape, lower, upper)
     sl = _options.enum("spline", "slopes", slopes, SLOPES)
     if sl == "user":
@@ -90,7 +122,8 @@ def resolve(shape=None, lower=None, upper=None, *, alpha=None, form=None, slopes
             "extrapolate": _options.extrapolate(extrapolate), "margin": margin,
             "skipna": _options.flag("spline", "skipna", skipna),
             "certify": _options.flag("spline", "certify", certify),
-            "errors": _options.errors(errors)}
+            "errors": _options.errors(errors),
+            "constraints": _constraints.records(constraints)}
 
 
 def pack(o, want_gap=False, gap_intervals=(0, -1)):
@@ -98,22 +131,28 @@ def pack(o, want_gap=False, gap_intervals=(0, -1)):
     resolved options (``resolve``)."""
     lo = o["lower"] or (0.0, 0.0)
     hi = o["upper"] or (0.0, 0.0)
-    return np.array([SHAPES.index(o["shape"]), FORMS.index(o["form"]), SLOPES.index(o["slopes"]),
-                     _EXTRAP_CODES[o["extrapolate"]], o["alpha"], lo[0], lo[1], hi[0], hi[1],
-                     o["margin"], bool(o["skipna"]), bool(o["certify"]), bool(want_gap),
-                     gap_intervals[0], gap_intervals[1]], dtype=np.float64)
+    head = [SHAPES.index(o["shape"]), FORMS.index(o["form"]), SLOPES.index(o["slopes"]),
+            _EXTRAP_CODES[o["extrapolate"]], o["alpha"], lo[0], lo[1], hi[0], hi[1],
+            o["margin"], bool(o["skipna"]), bool(o["certify"]), bool(want_gap),
+            gap_intervals[0], gap_intervals[1]]
+    if o.get("constraints") is not None:
+        # docs/method.md §13: the records after the options (an empty list
+        # too: the scheme of records, with none to meet)
+        head += _constraints.pack(o["constraints"])
+    return np.array(head, dtype=np.float64)
 
 
 def pack_options(shape=None, lower=None, upper=None, *, alpha=None, form=None, slopes=None,
                  extrapolate=None, margin=None, skipna=None, certify=None, want_gap=False,
-                 gap_intervals=(0, -1)):
+                 gap_intervals=(0, -1), constraints=None):
     """The float64 option vector of the gufunc (layout OPTION_LAYOUT); the
     options as for ``interp``.  gap_intervals: the least gap is taken over
     intervals [first, end) of each fitted series (end -1: to the last).
     extrapolate='error' travels as NaN outside: the caller checks the
     queries (``check_queries``)."""
     o = resolve(shape, lower, upper, alpha=alpha, form=form, slopes=slopes,
-                extrapolate=extrapolate, margin=margin, skipna=skipna, certify=certify)
+                extrapolate=extrapolate, margin=margin, skipna=skipna, certify=certify,
+                constraints=constraints)
     return pack(o, want_gap, gap_intervals)
 
 
@@ -151,7 +190,9 @@ class InterpResult:
     index   int64 per series: the point (or interval) the status names, in
             the series' own numbering, -1 if none
     gap     float64 per series: the least certified gap over the series
-            (S - lower or upper - S; NaN without a boundary or when not fitted)
+            (S - lower or upper - S; with constraints=, the least exact gap
+            of its lower= and upper= records; NaN without a boundary or
+            when not fitted)
     """
 
     __slots__ = ("values", "status", "index", "gap")
@@ -188,7 +229,7 @@ def _coerce(a, name):
 
 def interp(x, f, xq, *, shape=None, lower=None, upper=None, alpha=None, form=None,
            slopes=None, extrapolate=None, margin=None, skipna=None, certify=None,
-           errors=None, axis=-1, full=False, gap=False):
+           errors=None, constraints=None, axis=-1, full=False, gap=False):
     """Interpolate every series of ``f`` along ``axis`` at ``xq``, certified.
 
     The option keywords and their defaults are the package's one vocabulary
@@ -240,6 +281,19 @@ def interp(x, f, xq, *, shape=None, lower=None, upper=None, alpha=None, form=Non
         raises ValueError naming the series and point, ``'nan'`` gives NaN
         for the whole series and its status.  A series with fewer than two
         finite points gives NaN either way.
+    constraints : list, default none
+        Constraint records certified on every interval of every series
+        (docs/method.md §13), as for :class:`Spline`: SPEC strings
+        (``'convex'``, ``'decreasing'``, ``'lower=0'``,
+        ``'upper=poly:X,Y;X,Y'``, ``'slope<=5@2-4'``, ...) or dicts; the
+        geometric form with ``shape='none'``.  A series the records refuse
+        has the library's status (TS_ERR_CONDITION 31: the data break a
+        necessary condition; TS_ERR_INFEASIBLE, TS_ERR_UNPROVEN), and
+        ``errors='raise'`` raises the library's sentence naming the record
+        and the condition (``constraint_message``).  A scope ``@I0-I1``
+        counts the series' intervals (with ``skipna=True``, those between
+        the points kept); a run between missing points meets the records
+        on its own intervals.
     axis : int, default -1
         The axis of ``f`` (and ``x``) holding the series (numpy's gufunc
         convention).  The output has the queries on the same axis.
@@ -255,15 +309,16 @@ def interp(x, f, xq, *, shape=None, lower=None, upper=None, alpha=None, form=Non
     """
     o = resolve(shape, lower, upper, alpha=alpha, form=form, slopes=slopes,
                 extrapolate=extrapolate, margin=margin, skipna=skipna, certify=certify,
-                errors=errors)
+                errors=errors, constraints=constraints)
     if np.iscomplexobj(x) or np.iscomplexobj(xq):
         raise TrigsplineError(_S.OPTION, "x and xq must be real, not complex")
     if np.iscomplexobj(f):
         # as SciPy: the real and imaginary parts are two real splines with the
         # same options; the shape schemes bound real data only
-        if o["shape"] != "none":
-            raise TrigsplineError(_S.OPTION, "f is complex: the shape schemes keep real "
-                                  "data inside bounds; use shape='none'")
+        if o["shape"] != "none" or o["constraints"] is not None:
+            raise TrigsplineError(_S.OPTION, "f is complex: the shape schemes and constraints "
+                                  "keep real data inside bounds; use shape='none' and no "
+                                  "constraints")
         if full or gap:
             raise ValueError("full= and gap= take real f; interpolate f.real and f.imag")
         kw = dict(shape=shape, lower=lower, upper=upper, alpha=alpha, form=form, slopes=slopes,
@@ -293,7 +348,7 @@ def interp(x, f, xq, *, shape=None, lower=None, upper=None, alpha=None, form=Non
             # the first failing series; () for a single series (0-d status)
             where = tuple(int(i) for i in np.unravel_index(int(np.argmax(bad)), bad.shape))
             code, at = int(status[where]), int(index[where])
-            what = "interval" if code in _INTERVAL_STATUSES else "point"
+            what = where_of(code, o)
             lead = bad.shape + xm.shape[-1:]
             msg = _gufunc.message(code, at, 2 if what == "interval" else 1,
                                   np.broadcast_to(xm, lead)[where],

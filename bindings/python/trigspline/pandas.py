@@ -10,7 +10,8 @@ import pandas as pd
 
 from . import _options
 from .errors import _S, TrigsplineError
-from .interp import DATA_GAPS, STATUS_OK, interp, resolve, status_message
+from .interp import DATA_GAPS, STATUS_OK, interp, resolve, sentence, status_message
+from .interp import pack as interp_pack
 
 __all__ = ["interpolate"]
 
@@ -36,7 +37,7 @@ def _check_index(index, xf):
 
 def interpolate(obj, index, *, shape=None, lower=None, upper=None, form=None, alpha=None,
                 slopes=None, margin=None, extrapolate=None, skipna=None, certify=None,
-                errors=None, bounds=None):
+                errors=None, constraints=None, bounds=None):
     """Interpolate a Series or DataFrame at ``index``.
 
     The option keywords and their defaults are the package's one vocabulary
@@ -74,6 +75,10 @@ def interpolate(obj, index, *, shape=None, lower=None, upper=None, form=None, al
     errors : {'raise', 'nan'}, default ${errors}
         Data the scheme refuses raise ValueError naming the column and the
         index value, or give a NaN column.
+    constraints : list, default none
+        Constraint records certified per interval of every column
+        (docs/method.md §13), as for ``trigspline.interp``; a refusal
+        raises the library's sentence naming the record and the condition.
     bounds : (lower, upper)
         Deprecated: give ``lower=`` and ``upper=``.
 
@@ -84,7 +89,7 @@ def interpolate(obj, index, *, shape=None, lower=None, upper=None, form=None, al
     lower, upper = _options.split_bounds(bounds, lower, upper)
     o = resolve(shape, lower, upper, alpha=alpha, form=form, slopes=slopes,
                 extrapolate=extrapolate, margin=margin, skipna=skipna, certify=certify,
-                errors=errors)
+                errors=errors, constraints=constraints)
     if not isinstance(obj, (pd.Series, pd.DataFrame)):
         raise TypeError("interpolate takes a pandas Series or DataFrame, not %s"
                         % type(obj).__name__)
@@ -122,13 +127,16 @@ def interpolate(obj, index, *, shape=None, lower=None, upper=None, form=None, al
                    alpha=o["alpha"], form=o["form"], slopes=o["slopes"],
                    extrapolate="nan" if o["extrapolate"] == "error" else o["extrapolate"],
                    margin=o["margin"], skipna=o["skipna"], certify=o["certify"],
-                   errors="nan", full=True)
+                   errors="nan", full=True, constraints=constraints)
         if o["errors"] == "raise":
             bad = (r.status != STATUS_OK) & ~np.isin(r.status, DATA_GAPS)
             if bad.any():
                 j = int(np.argmax(bad))
                 i = int(r.index[j])
                 at = " at %s (position %d)" % (old[i], i) if 0 <= i < len(old) else ""
+                if o["constraints"] is not None:  # the library's sentence: record, condition
+                    raise ValueError("column %r: %s" % (group[j], sentence(
+                        r.status[j], i, xf, data[j], interp_pack(o))))
                 raise ValueError("column %r: %s%s" % (group[j], status_message(r.status[j]), at))
         for j, c in enumerate(group):
             out[c] = r.values[j]

@@ -15,7 +15,9 @@ dimension through ``trigspline.interp`` (a numpy gufunc in C).
   bit for bit.  Missing values stay local too (each run of finite values
   is a spline of its own, see ``trigspline.interp``).  Options that are not
   local (the C¹ form, periodic or monotone schemes, gaps skipped with
-  ``skipna``) fall back to one chunk along the dimension, with a warning.
+  ``skipna``, constraint records: their slope rules and scopes reach
+  along the series, docs/method.md §13.2) fall back to one chunk along the
+  dimension, with a warning.
 
 Datetime coordinates are fitted as float seconds since the first
 coordinate value; queries are converted the same way.
@@ -27,7 +29,7 @@ import xarray as xr
 
 from . import _gufunc, _options
 from .errors import _S, TrigsplineError
-from .interp import DATA_GAPS, STATUS_OK, pack, resolve, status_message
+from .interp import DATA_GAPS, STATUS_OK, pack, resolve, sentence, status_message
 
 __all__ = ["TrigsplineAccessor", "TrigsplineDatasetAccessor", "halo_knots", "summary"]
 
@@ -84,15 +86,25 @@ def _series_label(da_dims, other_coords, where):
     return ", ".join(parts) if parts else "the series"
 
 
-def _raise_status(status, index, dims, coords, dim, dim_values, offset=None, values_from=0):
+def _raise_status(status, index, dims, coords, dim, dim_values, offset=None, values_from=0,
+                  explain=None):
     """ValueError for the first series whose status is a data fault.
     offset: (positions of the block along the other dims, its first knot);
-    dim_values: the coordinate from position values_from on."""
+    dim_values: the coordinate from position values_from on; explain:
+    (x, f, opt) of the block when it has constraint records, whose refusals
+    get the library's sentence (the record and the condition)."""
     bad = (status != STATUS_OK) & ~np.isin(status, DATA_GAPS)
     if not bad.any():
         return
     where = tuple(int(i[0]) for i in np.nonzero(bad))
     code, i = int(status[where]), int(index[where])
+    if explain is not None:
+        x, f, opt = explain
+        why = sentence(code, i, x, np.broadcast_to(f, status.shape + x.shape)[where], opt)
+        if offset is not None:
+            where = tuple(w + o for w, o in zip(where, offset[0]))
+        raise ValueError("trigspline.interp along %r, series %s: %s"
+                         % (dim, _series_label(dims, coords, where), why))
     if offset is not None:
         where = tuple(w + o for w, o in zip(where, offset[0]))
         i = i + offset[1] if i >= 0 else i
@@ -181,7 +193,8 @@ def _chunk_task(f, x, q, opt, lo, errors, dims, coords, dim, dim_values, block_i
         if block_info is not None and 0 in block_info:
             loc = block_info[0]["array-location"]
             off = ([a for a, _ in loc[:-1]], lo)
-        _raise_status(st, ix, dims, coords, dim, dim_values, off, values_from=lo)
+        _raise_status(st, ix, dims, coords, dim, dim_values, off, values_from=lo,
+                      explain=(x, f, opt) if len(opt) > _gufunc.OPT_LEN else None)
     return y
 
 
@@ -263,12 +276,15 @@ def _interp_dataarray(da, dim, new, o, certificate):
     if chunked:
         halo = halo_knots(o["slopes"])
         local = (halo is not None and o["form"] in _LOCAL_FORMS
-                 and not o["skipna"] and o["shape"] != "monotone")
+                 and not o["skipna"] and o["shape"] != "monotone"
+                 and o.get("constraints") is None)
         if not local:
             warnings.warn("trigspline.interp along %r: these options (form=%r, slopes=%r, "
-                          "shape=%r, skipna=%r) are not local; the dimension is rechunked "
+                          "shape=%r, skipna=%r%s) are not local; the dimension is rechunked "
                           "into one chunk" % (dim, o["form"], o["slopes"], o["shape"],
-                                              o["skipna"]), RuntimeWarning, stacklevel=4)
+                                              o["skipna"], ", constraints" if
+                                              o.get("constraints") is not None else ""),
+                          RuntimeWarning, stacklevel=4)
             fm = fm.rechunk({fm.ndim - 1: -1})
             chunked = False
     if chunked:
@@ -291,7 +307,8 @@ def _interp_dataarray(da, dim, new, o, certificate):
         fm = np.asarray(fm)
         y, st, ix, gap = _gufunc.interp(xf, fm, qf, opt)
         if errors == "raise":
-            _raise_status(st, ix, other, coords, dim, old)
+            _raise_status(st, ix, other, coords, dim, old,
+                          explain=(xf, fm, opt) if len(opt) > _gufunc.OPT_LEN else None)
         if certificate:
             cert = np.stack([st.astype(np.float64), ix.astype(np.float64), gap], axis=-1)
     if axis != f.ndim - 1:
@@ -384,6 +401,16 @@ _DOC = """Interpolate along one dimension with certified trigonometric splines.
         outside the lines, ...) raise ValueError naming the series and the
         position ('raise') or give NaN for that series ('nan').  A series
         with fewer than two points is NaN either way.
+    constraints : list, default none
+        Constraint records certified per interval of every series
+        (docs/method.md §13), as for trigspline.Spline and
+        trigspline.interp: ``['convex', 'decreasing', 'lower=0']``,
+        ``'upper=poly:X,Y;X,Y'``, ``'slope<=5'``, ...  A refusal raises the
+        library's sentence naming the record and the condition the data
+        break (``errors='raise'``) or gives that series' status
+        (``certificate=True``: 31 TS_ERR_CONDITION, 29 TS_ERR_UNPROVEN, ...).
+        A dask array chunked along the dimension is fitted in one chunk
+        (the records are not local).
     certificate : bool, default False
         Also return a Dataset with per-series ``status`` (0 = certified),
         ``index`` and ``gap`` (the least certified gap), and, when computed
@@ -395,11 +422,11 @@ _DOC = """Interpolate along one dimension with certified trigonometric splines.
 
 
 def _resolve(bounds, lower, upper, shape, form, alpha, slopes, margin, extrapolate, skipna,
-             certify, errors):
+             certify, errors, constraints=None):
     lower, upper = _options.split_bounds(bounds, lower, upper)
     return resolve(shape, lower, upper, alpha=alpha, form=form, slopes=slopes,
                    extrapolate=extrapolate, margin=margin, skipna=skipna, certify=certify,
-                   errors=errors)
+                   errors=errors, constraints=constraints)
 
 
 class TrigsplineAccessor:
@@ -410,10 +437,11 @@ class TrigsplineAccessor:
 
     def interp(self, indexers=None, *, shape=None, lower=None, upper=None, form=None,
                alpha=None, slopes=None, margin=None, extrapolate=None, skipna=None,
-               certify=None, errors=None, certificate=False, bounds=None, **kwargs):
+               certify=None, errors=None, constraints=None, certificate=False, bounds=None,
+               **kwargs):
         dim, new = _split_kwargs(indexers, kwargs)
         o = _resolve(bounds, lower, upper, shape, form, alpha, slopes, margin, extrapolate,
-                     skipna, certify, errors)
+                     skipna, certify, errors, constraints)
         return _interp_dataarray(self._obj, dim, new, o, certificate)
 
     interp.__doc__ = _options.fill(_DOC)
@@ -432,14 +460,15 @@ class TrigsplineDatasetAccessor:
 
     def interp(self, indexers=None, *, shape=None, lower=None, upper=None, form=None,
                alpha=None, slopes=None, margin=None, extrapolate=None, skipna=None,
-               certify=None, errors=None, certificate=False, bounds=None, **kwargs):
+               certify=None, errors=None, constraints=None, certificate=False, bounds=None,
+               **kwargs):
         dim, new = _split_kwargs(indexers, kwargs)
         ds = self._obj
         if dim not in ds.dims:
             raise ValueError("%r is not a dimension of this Dataset (dims %s)"
                              % (dim, tuple(ds.dims)))
         o = _resolve(bounds, lower, upper, shape, form, alpha, slopes, margin, extrapolate,
-                     skipna, certify, errors)
+                     skipna, certify, errors, constraints)
         out, certs = {}, {}
         for name, var in ds.data_vars.items():
             if dim in var.dims and var.dtype.kind in "fiu":
