@@ -427,7 +427,10 @@ static void test_property(int problems, int aligned)
 
 int main(int argc, char **argv)
 {
-    int problems = argc > 1 ? atoi(argv[1]) : (TH_ASAN ? 60 : 300);
+    /* make test: 300 per kind (60 under ASan); make test-surface-grids:
+     * TS_GRID_PROBLEMS */
+    const char *env = getenv("TS_GRID_PROBLEMS");
+    int problems = env ? atoi(env) : argc > 1 ? atoi(argv[1]) : (TH_ASAN ? 60 : 300);
     test_closed_form();
     test_refusals();
     test_property(problems, 0);
