@@ -1502,7 +1502,16 @@ TS_API void ts_error_context_init(ts_error_context *ctx);
  * Surfaces (ctx->surface_options or ctx->y given): a node is "node (I, J) (x = X,
  * y = Y, z = Z)", a patch "patch (I, J) [X0, X1] x [Y0, Y1]"; curves
  * (ctx->curve_options or ctx->points given): "point I (C1, C2[, C3])",
- * "segment I".  Histograms (ctx->histo_options given; "B" = "bin I [X0, X1]"):
+ * "segment I".  Surfaces between gridded fields (surface_options->shape
+ * TS_SURFACE_GRIDS): TS_ERR_BOUND_GRID says which field and what ("the lower
+ * field's grid [A, B] x [C, D] does not cover the surface's grid [..] x [..];
+ * a field is not extended beyond its grid", "the upper field's x[1] = 0 is
+ * not finite, or not greater than ...", ...); TS_ERR_SIDE "node (I, J) (...)
+ * is not above the lower field, whose value there is V; ..."; TS_ERR_LINES
+ * "at (x = X, y = Y) the upper field (value U) is not above the lower field
+ * (value L) by more than their rounding bound R"; TS_ERR_UNPROVEN "patch
+ * (I, J) [..]: not proven strictly between the gridded fields, ...".
+ * Histograms (ctx->histo_options given; "B" = "bin I [X0, X1]"):
  *   TS_ERR_TOO_FEW      "0 bins; at least 1 is needed"
  *   TS_ERR_ALPHA        "alpha = A must be finite and > 0"
  *   TS_ERR_OPTION       "the rate bounds lo = L, hi = H need lo finite and lo < hi"

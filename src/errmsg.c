@@ -576,6 +576,12 @@ static int field_sentence(out *o, const ts_error_context *c, const ts_error *e)
             return 1;
         }
     }
+    if (e->status == TS_ERR_UNPROVEN && e->where == TS_WHERE_INTERVAL) {
+        surface_where(o, c, e);
+        put(o, ": not proven strictly between the gridded fields, even with a^x and a^y "
+               "raised tenfold 12 times (a field may bulge past the data between their nodes)");
+        return 1;
+    }
     ts__gbound lo, up;
     int hl = so->has_lower && field_view(&so->lower_grid, &lo);
     int hu = so->has_upper && field_view(&so->upper_grid, &up);

@@ -264,7 +264,8 @@ static void test_refusals(void)
         o.lower_grid = (ts_grid_bound){bx, 3, bx, 3, bz};
         CHECK(ts_surface_new(x2, 2, x2, 2, z2, &o, &s, &e) == TS_ERR_UNPROVEN &&
               e.index == 0 && e.where == TS_WHERE_INTERVAL && !s);
-        message_has(TS_ERR_UNPROVEN, &e, x2, 2, x2, 2, z2, &o, "patch (0, 0)");
+        message_has(TS_ERR_UNPROVEN, &e, x2, 2, x2, 2, z2, &o,
+                    "patch (0, 0) [0, 2] x [0, 2]: not proven strictly between the gridded fields");
         o.has_upper = 1;
         o.lower_grid = (ts_grid_bound){gx, 2, gy, 2, lo};
     }

@@ -261,13 +261,19 @@ class Plane(ctypes.Structure):
     _fields_ = [("p", ctypes.c_double), ("q", ctypes.c_double), ("c", ctypes.c_double)]
 
 
+class GridBound(ctypes.Structure):  # ts_grid_bound
+    _fields_ = [("x", dp), ("nx_points", ctypes.c_size_t), ("y", dp),
+                ("ny_points", ctypes.c_size_t), ("z", dp)]
+
+
 class SurfaceOptions(ctypes.Structure):  # ts_surface_options (include/trigspline.h)
     _fields_ = [("struct_size", ctypes.c_size_t),
                 ("form", ctypes.c_int), ("slopes", ctypes.c_int), ("zero_twist", ctypes.c_int),
                 ("alpha", ctypes.c_double), ("beta", ctypes.c_double),
                 ("margin", ctypes.c_double), ("shape", ctypes.c_int),
                 ("has_lower", ctypes.c_int), ("has_upper", ctypes.c_int),
-                ("lower", Plane), ("upper", Plane)]
+                ("lower", Plane), ("upper", Plane),
+                ("lower_grid", GridBound), ("upper_grid", GridBound)]
 
 
 class Error(ctypes.Structure):
@@ -291,6 +297,7 @@ def test_bit_identical_to_the_c_library(form):
     x, y, z = grid_data(12, 9, seed=form)
     opt = SurfaceOptions()
     L.ts_surface_options_init(ctypes.byref(opt))
+    assert opt.struct_size == ctypes.sizeof(SurfaceOptions)  # the mirror is the header's
     default_form = opt.form
     opt.form, opt.shape, opt.alpha = form, 1, 0.6
     zt = np.ascontiguousarray(z.T)
@@ -778,3 +785,15 @@ def test_grids_errors():
         Surface(x, y, z, shape="bounds", lower=lo)
     with pytest.raises(TrigsplineError):
         Surface(x, y, z, lower=(lo[0], lo[1], lo[2].T[:2]))
+
+
+def test_grids_unproven_names_the_patch():
+    # flat data under a tent-shaped lower field: every node above it, but the
+    # field bulges past the data between them (docs/method.md §11.7)
+    t = np.array([0.0, 1.0, 2.0])
+    tent = np.full((3, 3), -1.0)
+    tent[1, 1] = 0.5
+    with pytest.raises(TrigsplineError) as e:
+        Surface([0.0, 2.0], [0.0, 2.0], np.zeros((2, 2)), lower=(t, t, tent))
+    assert e.value.name == "TS_ERR_UNPROVEN" and e.value.patch == (0, 0)
+    assert "gridded fields" in str(e.value)

@@ -440,6 +440,10 @@ class Surface:
             if st == _S.NONFINITE:
                 msg = "%s: a control value overflows (values too large for the shape " \
                       "parameter)" % loc
+            elif st == _S.UNPROVEN and self._shape == "grids":
+                msg = "%s: not proven strictly between the gridded fields, even with the " \
+                      "shape parameters raised tenfold 12 times (a field may bulge past the " \
+                      "data between their nodes)" % loc
             else:
                 msg = "%s: %s" % (loc, base)
             return TrigsplineError(st, msg, (i, j), "patch", patch=(i, j))
