@@ -321,12 +321,15 @@ int ts__surf_certify_grid(const ts_surface *s, size_t i, size_t j, const ts__gbo
     c.i = i;
     c.j = j;
     c.sg = sign;
-    /* where evaluation places a point: a few ε of the coordinates, and the
-     * rounding of the width when measured from the far end (§11.3 item 3) */
-    c.dx = 64.0 * DBL_EPSILON * (fabs(s->x[i]) + fabs(s->x[i + 1])) +
-           ts__width_error(s->x[i], s->x[i + 1], s->x[i + 1] - s->x[i]) + 4.0 * DBL_TRUE_MIN;
-    c.dy = 64.0 * DBL_EPSILON * (fabs(s->y[j]) + fabs(s->y[j + 1])) +
-           ts__width_error(s->y[j], s->y[j + 1], s->y[j + 1] - s->y[j]) + 4.0 * DBL_TRUE_MIN;
+    /* where evaluation places a point and the rounding of a piece's image:
+     * a few ε of the width (local coordinates), one rounding of the
+     * coordinate, and the rounding of the width when measured from the far
+     * end (§11.3 item 3) */
+    double hx = s->x[i + 1] - s->x[i], hy = s->y[j + 1] - s->y[j];
+    c.dx = 64.0 * DBL_EPSILON * hx + 2.0 * DBL_EPSILON * (fabs(s->x[i]) + fabs(s->x[i + 1])) +
+           ts__width_error(s->x[i], s->x[i + 1], hx) + 4.0 * DBL_TRUE_MIN;
+    c.dy = 64.0 * DBL_EPSILON * hy + 2.0 * DBL_EPSILON * (fabs(s->y[j]) + fabs(s->y[j + 1])) +
+           ts__width_error(s->y[j], s->y[j + 1], hy) + 4.0 * DBL_TRUE_MIN;
     double gx, gy;
     if (s->form == TS_FORM_GEOMETRIC &&
         ts__gb_cell(g, s->x[i], s->x[i + 1], s->y[j], s->y[j + 1], &gx, &gy))
