@@ -740,6 +740,7 @@ def test_grids_values_strictly_between_exact_fields(form):
         assert e.name == "TS_ERR_UNPROVEN" and form != "geometric", str(e)
         return
     assert s.shape == "grids" and s.certify()
+    assert all(np.array_equal(a, b) for a, b in zip(s.bounds[0], lo))
     xs, ys = np.linspace(0, 2, 41), np.linspace(0, 3, 41)
     v = s(xs, ys, grid=True)
     for a, xv in enumerate(xs):
@@ -797,3 +798,10 @@ def test_grids_unproven_names_the_patch():
         Surface([0.0, 2.0], [0.0, 2.0], np.zeros((2, 2)), lower=(t, t, tent))
     assert e.value.name == "TS_ERR_UNPROVEN" and e.value.patch == (0, 0)
     assert "gridded fields" in str(e.value)
+
+
+def test_grids_other_errors_keep_their_sentences():
+    x, y, z, lo, up = _fields_case()
+    with pytest.raises(TrigsplineError) as e:
+        Surface(x, y, z, lower=lo, upper=up, alpha=-1.0)
+    assert e.value.name == "TS_ERR_ALPHA" and "alpha = -1" in str(e.value)

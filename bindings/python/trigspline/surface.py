@@ -361,6 +361,8 @@ class Surface:
             self._bounds = ((0.0, 0.0, 0.0), None)
         elif shp == "range":
             self._bounds = ((0.0, 0.0, float(np.min(za))), (0.0, 0.0, float(np.max(za))))
+        elif shp == "grids":
+            self._bounds = (glo, gup)
         else:
             self._bounds = (lo, up)
         zt = za.T if za.T.flags.c_contiguous else np.ascontiguousarray(za.T)
@@ -376,7 +378,7 @@ class Surface:
         st, index, w = e.args
         where = WHERE_NAMES[w] if 0 <= w < len(WHERE_NAMES) else None
         base = strerror(st)
-        lo, up = self._bounds
+        lo, up = self._bounds if self._shape != "grids" else (None, None)
         if st == _S.TOO_FEW:
             return TrigsplineError(st, "too few grid values: %d x values and %d y values; a "
                                    "surface needs at least 2 of each" % (x.size, y.size))
@@ -746,7 +748,9 @@ class Surface:
 
     @property
     def bounds(self):
-        """(lower, upper) of the scheme as planes (p, q, c), or None."""
+        """(lower, upper) of the scheme as planes (p, q, c), or None; for
+        ``shape='grids'`` the fields as arrays (x, y, z), z[i, j] at
+        (x[i], y[j])."""
         return self._bounds
 
     @property
