@@ -21,6 +21,7 @@
 #   make test-r     the R package (bindings/r): R CMD build, install, smoke test and
 #                   R CMD check --as-cran (tests included)
 #   make test-constraints  the constraint records' property test, 10^6 problems
+#   make test-surface-grids  surfaces between random gridded fields, 2 x 20000 problems
 #   make fuzz       the libFuzzer harnesses, FUZZ_SECONDS each (corpus replay is in make test)
 #   make dist       every package into dist/ (tools/dist/CHANNEL.sh build): Python wheel and
 #                   sdist, musl tarball, Debian packages, the conda recipe checked, ...
@@ -372,6 +373,12 @@ test-histo: build
 .PHONY: test-constraints
 test-constraints: build
 	TS_CON_PROBLEMS=1000000 build/tests/test_constraints
+
+# ---- surfaces between gridded fields at full size (make test runs 300 of each
+# kind; docs/method.md §11.7) ----
+.PHONY: test-surface-grids
+test-surface-grids: build
+	TS_GRID_PROBLEMS=20000 build/tests/test_surface_grids
 
 # ---- trust at the edges: thread sanitizer, coverage, fuzzing ----
 .PHONY: tsan coverage fuzz

@@ -96,7 +96,9 @@ typedef enum ts_status {
                                      gap stays below the rounding bound of the certificate: cannot
                                      be certified in double precision; index = interval */
     TS_ERR_UNPROVEN = 29,         /* C¹ form: no beta was found that certifies the interval, and
-                                     the search did not prove that none exists; index = interval */
+                                     the search did not prove that none exists; index = interval
+                                     (surfaces with gridded bounds: no a^x, a^y certified the
+                                     patch; index = patch) */
     TS_ERR_VERSION = 30,          /* a struct's struct_size is not the sizeof of this library's
                                      struct: built against another version's header, or not
                                      initialised by its *_init function (see "Struct guards") */
@@ -105,7 +107,10 @@ typedef enum ts_status {
                                      point across a bound or on a polyline's corner that turns into
                                      the region); index = point or interval;
                                      ts_constraints_diagnose names the constraint and the condition */
-    TS_STATUS_COUNT_ = 32    /* not a status: number of codes */
+    TS_ERR_BOUND_GRID = 32,       /* a gridded surface bound (TS_SURFACE_GRIDS) is malformed or does
+                                     not cover the surface's grid; index = 0 (the lower bound's
+                                     grid) or 1 (the upper's), where = TS_WHERE_NONE */
+    TS_STATUS_COUNT_ = 33    /* not a status: number of codes */
 } ts_status;
 
 /* The largest |f_i| and |B_l| a spline accepts (TS_ERR_TOO_LARGE beyond):
@@ -149,7 +154,7 @@ typedef struct ts_error {
  *   TS_VOCAB_SHAPE          ts_shape: none, positive, above, below, between, monotone
  *   TS_VOCAB_EXTRAP         ts_extrap: error, clamp, extend, linear
  *   TS_VOCAB_PARAM          ts_param: centripetal, chord, uniform
- *   TS_VOCAB_SURFACE_SHAPE  ts_surface_shape: none, positive, bounds, planes, range
+ *   TS_VOCAB_SURFACE_SHAPE  ts_surface_shape: none, positive, bounds, planes, range, grids
  *   TS_VOCAB_TERM           ts_term: user, margin, lower-left, lower-right,
  *                           upper-left, upper-right, monotone, certify, geometric
  *   TS_VOCAB_WHERE          ts_where: none, point, interval, query
@@ -1181,8 +1186,31 @@ typedef enum ts_surface_shape {
                                 every node strictly between).  Sloped planes need
                                 TS_FORM_GEOMETRIC, where they are exact (TS_ERR_OPTION
                                 otherwise); constant planes work in every form. */
-    TS_SURFACE_RANGE = 4     /* min z <= S <= max z: no overshoot beyond the data */
+    TS_SURFACE_RANGE = 4,    /* min z <= S <= max z: no overshoot beyond the data */
+    TS_SURFACE_GRIDS = 5     /* lower(x, y) < S and/or S < upper(x, y), each bound a gridded
+                                field bilinear between its nodes (lower_grid / upper_grid,
+                                has_lower / has_upper; every node strictly between; every
+                                form; docs/method.md §11.7) */
 } ts_surface_shape;
+
+/*
+ * A bound given as a gridded field (TS_SURFACE_GRIDS, docs/method.md §11.7):
+ * values z on its own rectilinear grid x_0 < ... < x_{nx_points-1},
+ * y_0 < ... < y_{ny_points-1} (finite, at least 2 nodes each way; values
+ * finite with |z| <= TS_VALUE_MAX), z[j * nx_points + i] at (x[i], y[j]) as
+ * the data of ts_surface_new.  Between its nodes the bound is bilinear on
+ * each cell: a + b x + c y + d x y.  It is not extended: its grid must cover
+ * the surface's grid [x_0, x_nx] × [y_0, y_ny] (TS_ERR_BOUND_GRID
+ * otherwise).  ts_surface_new copies the arrays; the caller's may be freed
+ * after it returns.
+ */
+typedef struct ts_grid_bound {
+    const double *x;
+    size_t nx_points;
+    const double *y;
+    size_t ny_points;
+    const double *z;
+} ts_grid_bound;
 
 /* Start from ts_surface_options_init(), then set fields. */
 typedef struct ts_surface_options {
@@ -1196,8 +1224,10 @@ typedef struct ts_surface_options {
     double beta;             /* default 0; TS_SURFACE_NONE only: a = alpha + beta */
     double margin;           /* t of docs/method.md §5, default TS_DEFAULT_MARGIN; > 0 */
     ts_surface_shape shape;  /* default TS_SURFACE_NONE */
-    int has_lower, has_upper;/* TS_SURFACE_BOUNDS, TS_SURFACE_PLANES */
+    int has_lower, has_upper;/* TS_SURFACE_BOUNDS, TS_SURFACE_PLANES, TS_SURFACE_GRIDS */
     ts_plane lower, upper;
+    ts_grid_bound lower_grid, upper_grid; /* TS_SURFACE_GRIDS (default: all NULL / 0);
+                                             read only by ts_surface_new (copied) */
 } ts_surface_options;
 
 TS_API void ts_surface_options_init(ts_surface_options *opt);
@@ -1219,11 +1249,23 @@ TS_API void ts_surface_options_init(ts_surface_options *opt);
  *   TS_ERR_ALPHA, TS_ERR_BETA, TS_ERR_MARGIN   (no index)
  *   TS_ERR_GEOMETRIC   TS_SURFACE_NONE in the geometric form with
  *                      alpha + beta < TS_GEOMETRIC_A_MIN
+ *   TS_ERR_BOUND_GRID  GRIDS: a side's ts_grid_bound with a NULL array, fewer
+ *                      than 2 nodes in a direction, coordinates not finite and
+ *                      strictly increasing, a value not finite or beyond
+ *                      TS_VALUE_MAX, or a grid that does not cover the
+ *                      surface's grid; index = 0 (lower) or 1 (upper), the
+ *                      lower checked first (ts_error_message says what)
  *   TS_ERR_NEGATIVE    POSITIVE: a node with z < 0
  *   TS_ERR_LINES       BOUNDS: lower.c >= upper.c; PLANES: lower not strictly
- *                      below upper at a node
+ *                      below upper at a node; GRIDS: the upper field not above
+ *                      the lower by more than 5 times their rounding bounds
+ *                      (docs/method.md §11.7) at a node of the union of the
+ *                      two grids and the surface's border (where =
+ *                      TS_WHERE_NONE; ts_error_message names the place)
  *   TS_ERR_SIDE        BOUNDS: a node outside [lower.c, upper.c]; PLANES: a node on
- *                      or across a plane
+ *                      or across a plane; GRIDS: a node on or across a field
+ *                      (decided exactly; ts_error_message gives the field's
+ *                      value there)
  *   TS_ERR_INFEASIBLE  a patch whose control values, as rounded, leave the region
  *                      even after a^x, a^y of its column and row were raised
  *                      tenfold up to 12 times (docs/method.md §11.6; the rule
@@ -1231,6 +1273,11 @@ TS_API void ts_surface_options_init(ts_surface_options *opt);
  *                      rounding, e.g. a node 1e-16 relative from a plane),
  *                      or whose a would exceed 1e300 (a node gap near the
  *                      underflow threshold next to a slope); index = the patch
+ *   TS_ERR_UNPROVEN    GRIDS: a patch that the certificate of docs/method.md
+ *                      §11.7 did not prove inside the fields after the repair
+ *                      of §11.6 (12 tenfold raises of its a^x, a^y): e.g. a
+ *                      field that bulges past the data between their nodes;
+ *                      index = the patch
  *   TS_ERR_NOMEM
  *   TS_ERR_VERSION     opt->struct_size (checked right after TS_ERR_NULL)
  */
@@ -1262,7 +1309,10 @@ TS_API ts_surface_shape ts_surface_shape_of(const ts_surface *s);
  * strictly beyond it (decided exactly); the move is at most the value's
  * rounding error (plus one ulp of the plane's value for planes), as the
  * exact surface is inside (docs/method.md §11.5 "Values inside the
- * region").  Partial derivatives are not moved. */
+ * region").  Gridded fields (grids): a value not strictly inside the exact
+ * bilinear field (decided exactly) is set to the field's rounded value
+ * moved outward by twice its rounding bound and one ulp (§11.7).  Partial
+ * derivatives are not moved. */
 TS_API int ts_surface_certified(const ts_surface *s);
 
 /* Caller-owned lookup hint: zero-initialise (TS_SURFACE_CURSOR_INIT) or NULL. */
@@ -1336,7 +1386,9 @@ typedef struct ts_patch_report {
 TS_API void ts_patch_report_init(ts_patch_report *reports, size_t n);
 
 /* Report of patch (i, j) against the scheme's bounds (NONE: no bound,
- * certified 0).  TS_OK, TS_ERR_NULL (rep NULL checked first, then s),
+ * certified 0; GRIDS: against the fields, with the certificate of
+ * docs/method.md §11.7, whose proven bound is within a factor 2 of the
+ * sampled gap where it succeeds).  TS_OK, TS_ERR_NULL (rep NULL checked first, then s),
  * TS_ERR_INDEX, TS_ERR_VERSION (rep->struct_size; rep then untouched). */
 TS_API ts_status ts_surface_report(const ts_surface *s, size_t i, size_t j,
                                    ts_patch_report *rep);
@@ -1459,7 +1511,16 @@ TS_API void ts_error_context_init(ts_error_context *ctx);
  * Surfaces (ctx->surface_options or ctx->y given): a node is "node (I, J) (x = X,
  * y = Y, z = Z)", a patch "patch (I, J) [X0, X1] x [Y0, Y1]"; curves
  * (ctx->curve_options or ctx->points given): "point I (C1, C2[, C3])",
- * "segment I".  Histograms (ctx->histo_options given; "B" = "bin I [X0, X1]"):
+ * "segment I".  Surfaces between gridded fields (surface_options->shape
+ * TS_SURFACE_GRIDS): TS_ERR_BOUND_GRID says which field and what ("the lower
+ * field's grid [A, B] x [C, D] does not cover the surface's grid [..] x [..];
+ * a field is not extended beyond its grid", "the upper field's x[1] = 0 is
+ * not finite, or not greater than ...", ...); TS_ERR_SIDE "node (I, J) (...)
+ * is not above the lower field, whose value there is V; ..."; TS_ERR_LINES
+ * "at (x = X, y = Y) the upper field (value U) is not above the lower field
+ * (value L) by more than their rounding bound R"; TS_ERR_UNPROVEN "patch
+ * (I, J) [..]: not proven strictly between the gridded fields, ...".
+ * Histograms (ctx->histo_options given; "B" = "bin I [X0, X1]"):
  *   TS_ERR_TOO_FEW      "0 bins; at least 1 is needed"
  *   TS_ERR_ALPHA        "alpha = A must be finite and > 0"
  *   TS_ERR_OPTION       "the rate bounds lo = L, hi = H need lo finite and lo < hi"

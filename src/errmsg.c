@@ -512,8 +512,133 @@ static void surface_where(out *o, const ts_error_context *c, const ts_error *e)
     }
 }
 
+/* A caller's field as the library's view of it (docs/method.md §11.7);
+ * 0 when it is malformed. */
+static int field_view(const ts_grid_bound *g, ts__gbound *v)
+{
+    size_t at;
+    double inf = (double)INFINITY;
+    if (ts__gb_check(g, inf, -inf, inf, -inf, &at) != TS__GB_OK)
+        return 0;
+    v->nx = g->nx_points;
+    v->ny = g->ny_points;
+    v->x = g->x;
+    v->y = g->y;
+    v->z = g->z;
+    double m = 0.0;
+    for (size_t n = 0; n < v->nx * v->ny; n++)
+        m = fabs(v->z[n]) > m ? fabs(v->z[n]) : m;
+    v->err = 32.0 * DBL_EPSILON * m + 8.0 * DBL_TRUE_MIN;
+    return 1;
+}
+
+/* The sentences of the gridded fields' statuses; 0 when not one. */
+static int field_sentence(out *o, const ts_error_context *c, const ts_error *e)
+{
+    const ts_surface_options *so = c->surface_options;
+    if (!so || so->struct_size != sizeof *so || so->shape != TS_SURFACE_GRIDS)
+        return 0;
+    int have_grid = c->x && c->y && c->n_points >= 2 && c->ny_points >= 2;
+    double x0 = have_grid ? c->x[0] : (double)INFINITY, y0 = have_grid ? c->y[0] : (double)INFINITY;
+    double x1 = have_grid ? c->x[c->n_points - 1] : -(double)INFINITY;
+    double y1 = have_grid ? c->y[c->ny_points - 1] : -(double)INFINITY;
+    if (e->status == TS_ERR_BOUND_GRID && (e->index == 0 || e->index == 1)) {
+        const ts_grid_bound *g = e->index ? &so->upper_grid : &so->lower_grid;
+        const char *side = e->index ? "upper" : "lower";
+        size_t at;
+        switch (ts__gb_check(g, x0, x1, y0, y1, &at)) {
+        case TS__GB_NULL:
+            put(o, "the %s field's x, y or z is NULL", side);
+            return 1;
+        case TS__GB_TOO_FEW:
+            put(o, "the %s field has %zu x %zu nodes; at least 2 in each direction are needed",
+                side, g->nx_points, g->ny_points);
+            return 1;
+        case TS__GB_AXIS: {
+            int isy = at >= g->nx_points;
+            size_t k = isy ? at - g->nx_points : at;
+            put(o, "the %s field's %s[%zu] = ", side, isy ? "y" : "x", k);
+            num(o, (isy ? g->y : g->x)[k]);
+            put(o, " is not finite, or not greater than the previous one by a finite step");
+            return 1;
+        }
+        case TS__GB_VALUE:
+            put(o, "the %s field's value at its node (%zu, %zu) is ", side, at % g->nx_points,
+                at / g->nx_points);
+            num(o, g->z[at]);
+            put(o, ", not finite or beyond 2^1022 in magnitude");
+            return 1;
+        case TS__GB_COVER:
+            put(o, "the %s field's grid [", side);
+            num(o, g->x[0]);
+            put(o, ", ");
+            num(o, g->x[g->nx_points - 1]);
+            put(o, "] x [");
+            num(o, g->y[0]);
+            put(o, ", ");
+            num(o, g->y[g->ny_points - 1]);
+            put(o, "] does not cover the surface's grid [");
+            num(o, x0);
+            put(o, ", ");
+            num(o, x1);
+            put(o, "] x [");
+            num(o, y0);
+            put(o, ", ");
+            num(o, y1);
+            put(o, "]; a field is not extended beyond its grid");
+            return 1;
+        default:
+            put(o, "the %s field: %s", side, ts__strerror(e->status));
+            return 1;
+        }
+    }
+    if (e->status == TS_ERR_UNPROVEN && e->where == TS_WHERE_INTERVAL) {
+        surface_where(o, c, e);
+        put(o, ": not proven strictly between the gridded fields, even with a^x and a^y "
+               "raised tenfold 12 times (a field may bulge past the data between their nodes)");
+        return 1;
+    }
+    ts__gbound lo, up;
+    int hl = so->has_lower && field_view(&so->lower_grid, &lo);
+    int hu = so->has_upper && field_view(&so->upper_grid, &up);
+    if (e->status == TS_ERR_SIDE && e->where == TS_WHERE_POINT && have_grid && c->f &&
+        e->index < c->n_points * c->ny_points) {
+        double xv = c->x[e->index % c->n_points], yv = c->y[e->index / c->n_points];
+        double z = c->f[e->index];
+        int below = hl && ts__gb_side(&lo, xv, yv, z) != 1;
+        if (!(below ? hl : hu))
+            return 0;
+        surface_where(o, c, e);
+        put(o, below ? " is not above the lower field, whose value there is "
+                     : " is not below the upper field, whose value there is ");
+        num(o, ts__gb_value(below ? &lo : &up, xv, yv));
+        put(o, "; every node must be strictly between the fields");
+        return 1;
+    }
+    if (e->status == TS_ERR_LINES && hl && hu && have_grid) {
+        double px = 0.0, py = 0.0;
+        ts_error e2;
+        if (ts__surf_grids_order(&lo, &up, x0, x1, y0, y1, &px, &py, &e2) == TS_ERR_LINES) {
+            put(o, "at (x = ");
+            xval(o, c, px);
+            put(o, ", y = ");
+            num(o, py);
+            put(o, ") the upper field (value ");
+            num(o, ts__gb_value(&up, px, py));
+            put(o, ") is not above the lower field (value ");
+            num(o, ts__gb_value(&lo, px, py));
+            put(o, ") by more than their rounding bound ");
+            num(o, 5.0 * (lo.err + up.err));
+            return 1;
+        }
+    }
+    return 0;
+}
+
 static void surface_sentence(out *o, const ts_error_context *c, const ts_error *e)
 {
+    if (field_sentence(o, c, e))
+        return;
     if (e->status == TS_ERR_NEGATIVE && e->where == TS_WHERE_POINT && c->f) {
         surface_where(o, c, e);
         put(o, " is negative; the positive shape needs z >= 0");

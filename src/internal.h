@@ -13,6 +13,7 @@
  *   L1  slopes.c    slope estimates
  *       controls.c  control values of every form
  *       geometric.c the geometric form: X(θ) = x, value, integral, bound
+ *       gridbound.c gridded surface bounds: bilinear value, exact side, maxima
  *   L2  interval.c  one interval of any form: value, derivatives, integral;
  *                   the per-form table (ts__form)
  *       deriv.c     derivatives of every order of one interval (paper, C¹)
@@ -118,6 +119,15 @@ struct ts_spline {
     int *con_by;         /* n+1: the record that changed slope d_j last, −1 none */
 };
 
+/* A gridded bound (docs/method.md §11.7), an owned copy: nx × ny nodes
+ * (points, not cells), z[j*nx + i]; err = 32 ε max|z| + 8·2⁻¹⁰⁷⁴ bounds the
+ * error of ts__gb_value anywhere on it. */
+typedef struct ts__gbound {
+    size_t nx, ny;
+    const double *x, *y, *z;
+    double err;
+} ts__gbound;
+
 /* docs/method.md §11.  Node (i, j) at j*(nx+1) + i; patch (i, j) at j*nx + i. */
 struct ts_surface {
     size_t nx, ny;                   /* patches along x, y */
@@ -130,6 +140,8 @@ struct ts_surface {
     double *z, *p, *q, *r;           /* nodes: value, ∂z/∂x, ∂z/∂y, twist */
     double *ax, *ay;                 /* nx, ny */
     double *B;                       /* 16 per patch: B[16*patch + 4*k + l] */
+    ts__gbound glo, gup;             /* TS_SURFACE_GRIDS: the fields (glo.x NULL when absent) */
+    double *gblk;                    /* their owned arrays */
 };
 
 /* ==== L0 ============================================================ */
@@ -518,6 +530,31 @@ double ts__theta_of(double t);
 
 /* ==== L1 ============================================================ */
 
+/* ---- gridbound.c (docs/method.md §11.7) ------------------------------- */
+/* The field's value at (x, y) inside its grid, bilinear on the cell found by
+ * ts__search; |value − exact| < g->err. */
+double ts__gb_value(const ts__gbound *g, double x, double y);
+/* Sign (−1, 0, 1) of v − field(x, y), exact (expansion arithmetic); 2 where
+ * undecidable (an input nonzero and outside [2^-300, 2^300] in magnitude
+ * while the rounded value does not decide). */
+int ts__gb_side(const ts__gbound *g, double x, double y, double v);
+/* An upper bound of sg · field over [xa, xb] × [ya, yb] (inside its grid):
+ * the largest of its values at the rectangle's corners, where its edges
+ * cross grid lines and at the grid nodes inside, plus g->err. */
+double ts__gb_max(const ts__gbound *g, double sg, double xa, double xb, double ya, double yb);
+/* 1 when [xa, xb] × [ya, yb] (inside the grid) lies in one cell, with upper
+ * bounds of |∂field/∂x|, |∂field/∂y| there; else 0. */
+int ts__gb_cell(const ts__gbound *g, double xa, double xb, double ya, double yb, double *gx,
+                double *gy);
+/* What is wrong with a caller's field for a surface on [x0, x1] × [y0, y1]
+ * (TS__GB_SIZE: 4 nx_points ny_points doubles overflow size_t): *at the
+ * index of the coordinate (x: i, y: nx_points + j) or node (j*nx_points + i). */
+enum {
+    TS__GB_OK, TS__GB_NULL, TS__GB_TOO_FEW, TS__GB_SIZE, TS__GB_AXIS, TS__GB_VALUE,
+    TS__GB_COVER
+};
+int ts__gb_check(const ts_grid_bound *g, double x0, double x1, double y0, double y1, size_t *at);
+
 /* ---- slopes.c (docs/method.md §6) ---------------------------------------------- */
 /* Unchecked: x strictly increasing and finite, np >= 2, method valid and not
  * TS_SLOPES_USER (every caller checks its options first). */
@@ -793,6 +830,12 @@ int ts__surf_gaps_inside(const double G[16], double guard);
 /* ==== L3 ============================================================ */
 
 /* ---- surface_cert.c (docs/method.md §11.4) -------------------------------------- */
+/* Certificate of patch (i, j) against a gridded field (§11.7; sign +1: S −
+ * field, −1: field − S): *proven a proven lower bound of the gap, *sampled
+ * the least gap found at a point (*ax, *ay); returns 1 when certified
+ * (*proven > 0). */
+int ts__surf_certify_grid(const ts_surface *s, size_t i, size_t j, const ts__gbound *g,
+                          int sign, double *proven, double *sampled, double *ax, double *ay);
 /* Certificate of patch (i, j) against one plane (sign +1: S − plane,
  * −1: plane − S): *proven a proven lower bound of the gap, *sampled the
  * least gap found at a point (*ax, *ay); returns 1 when certified. */
@@ -876,6 +919,14 @@ ts_status ts__con_certify(ts_spline *sp, const ts_constraint *cs, size_t nc, ts_
 void ts__con_report(const ts_spline *sp, size_t k, size_t i, ts_constraint_report *rep);
 
 /* ==== L4 ============================================================ */
+
+/* ---- surface.c (docs/method.md §11.7) ---------------------------------------- */
+/* TS_ERR_LINES (where none) unless the upper field exceeds the lower one by
+ * more than 5 (lo->err + up->err) at every node of the union of their grids
+ * and the lines x0, x1, y0, y1 within [x0, x1] × [y0, y1]; the first node
+ * that does not into *px, *py (may be NULL); TS_ERR_NOMEM. */
+ts_status ts__surf_grids_order(const ts__gbound *lo, const ts__gbound *up, double x0, double x1,
+                               double y0, double y1, double *px, double *py, ts_error *err);
 
 /* ---- spline.c --------------------------------------------------------- */
 /* The defaults of ts_spline_options (ts_spline_options_init), for the library's own files. */

@@ -47,6 +47,7 @@ static const char *const ts_messages[TS_STATUS_COUNT_] = {
     [TS_ERR_WIDTH] = "an interval width overflows, or underflows below the smallest normal double",
     [TS_ERR_VERSION] = "a struct's struct_size does not match this library (use its *_init)",
     [TS_ERR_CONDITION] = "the data violate a necessary condition of a constraint",
+    [TS_ERR_BOUND_GRID] = "a gridded bound is malformed or does not cover the surface's grid",
 };
 
 const char *ts_strerror(ts_status status)

@@ -85,9 +85,10 @@ static ts_status check_options(const ts_surface_options *o, ts_error *err)
 {
     if ((unsigned)o->form > TS_FORM_GEOMETRIC || (unsigned)o->slopes >= TS_SLOPES_COUNT_ ||
         o->slopes == TS_SLOPES_USER || o->slopes == TS_SLOPES_PERIODIC ||
-        (unsigned)o->shape > TS_SURFACE_RANGE)
+        (unsigned)o->shape > TS_SURFACE_GRIDS)
         return ts__fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
-    int sides = o->shape == TS_SURFACE_BOUNDS || o->shape == TS_SURFACE_PLANES;
+    int sides = o->shape == TS_SURFACE_BOUNDS || o->shape == TS_SURFACE_PLANES ||
+                o->shape == TS_SURFACE_GRIDS;
     if (sides && !o->has_lower && !o->has_upper)
         return ts__fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
     if (o->shape == TS_SURFACE_PLANES && o->form != TS_FORM_GEOMETRIC &&
@@ -102,7 +103,7 @@ static ts_status check_options(const ts_surface_options *o, ts_error *err)
     if (o->form == TS_FORM_GEOMETRIC && o->shape == TS_SURFACE_NONE &&
         !(o->alpha + o->beta >= TS_GEOMETRIC_A_MIN))
         return ts__fail(err, TS_ERR_GEOMETRIC, TS_NO_INDEX, TS_WHERE_NONE);
-    if (sides && ((o->has_lower && !finite_plane(&o->lower)) ||
+    if (sides && o->shape != TS_SURFACE_GRIDS && ((o->has_lower && !finite_plane(&o->lower)) ||
                   (o->has_upper && !finite_plane(&o->upper))))
         return ts__fail(err, TS_ERR_NONFINITE, TS_NO_INDEX, TS_WHERE_NONE);
     if (o->shape == TS_SURFACE_BOUNDS && o->has_lower && o->has_upper &&
@@ -119,6 +120,91 @@ static ts_status check_axis(const double *t, size_t np, ts_error *err)
     size_t at;
     ts_status st = ts__check_knots(t, t, np, DBL_MAX, 0.0, (double)INFINITY, &at);
     return st == TS_OK ? TS_OK : ts__fail(err, st, at, TS_WHERE_POINT);
+}
+
+/* docs/method.md §11.7: each side's field covers the surface's grid. */
+static ts_status check_grids(const ts_surface_options *o, const double *x, size_t nxp,
+                             const double *y, size_t nyp, ts_error *err)
+{
+    for (int side = 0; side < 2; side++) {
+        size_t at;
+        if (!(side ? o->has_upper : o->has_lower))
+            continue;
+        int w = ts__gb_check(side ? &o->upper_grid : &o->lower_grid, x[0], x[nxp - 1], y[0],
+                             y[nyp - 1], &at);
+        if (w == TS__GB_SIZE)
+            return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
+        if (w != TS__GB_OK)
+            return ts__fail(err, TS_ERR_BOUND_GRID, (size_t)side, TS_WHERE_NONE);
+    }
+    return TS_OK;
+}
+
+static size_t grid_doubles(const ts_grid_bound *g)
+{
+    return g->nx_points + g->ny_points + g->nx_points * g->ny_points;
+}
+
+/* The owned copy of a field into blk (grid_doubles of it). */
+static void copy_grid(ts__gbound *d, const ts_grid_bound *g, double *blk)
+{
+    size_t nn = g->nx_points * g->ny_points;
+    memcpy(blk, g->x, g->nx_points * sizeof(double));
+    memcpy(blk + g->nx_points, g->y, g->ny_points * sizeof(double));
+    memcpy(blk + g->nx_points + g->ny_points, g->z, nn * sizeof(double));
+    d->nx = g->nx_points;
+    d->ny = g->ny_points;
+    d->x = blk;
+    d->y = blk + g->nx_points;
+    d->z = blk + g->nx_points + g->ny_points;
+    double m = 0.0;
+    for (size_t n = 0; n < nn; n++)
+        m = fabs(d->z[n]) > m ? fabs(d->z[n]) : m;
+    d->err = 32.0 * DBL_EPSILON * m + 8.0 * DBL_TRUE_MIN;
+}
+
+/* The grid lines of a and b strictly inside (lo, hi), with lo and hi, in
+ * increasing order into out (na + nb + 2 room); their number. */
+static size_t merge_lines(const double *a, size_t na, const double *b, size_t nb, double lo,
+                          double hi, double *out)
+{
+    size_t k = 0, i = 0, j = 0;
+    out[k++] = lo;
+    while (i < na || j < nb) {
+        double v = j >= nb || (i < na && a[i] <= b[j]) ? a[i++] : b[j++];
+        if (lo < v && v < hi && v > out[k - 1])
+            out[k++] = v;
+    }
+    out[k++] = hi;
+    return k;
+}
+
+/* docs/method.md §11.7: the upper field above the lower one by more than
+ * 5 (err_lo + err_up) at every node of the union of their grids and the
+ * surface's border (both are bilinear on each cell of it, so is their
+ * difference: then everywhere). */
+ts_status ts__surf_grids_order(const ts__gbound *lo, const ts__gbound *up, double x0, double x1,
+                               double y0, double y1, double *px, double *py, ts_error *err)
+{
+    size_t nx = lo->nx + up->nx + 2, ny = lo->ny + up->ny + 2;
+    double *xs = ts__malloc((nx + ny) * sizeof(double));
+    if (!xs)
+        return ts__fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
+    double *ys = xs + nx, need = 5.0 * (lo->err + up->err);
+    nx = merge_lines(lo->x, lo->nx, up->x, up->nx, x0, x1, xs);
+    ny = merge_lines(lo->y, lo->ny, up->y, up->ny, y0, y1, ys);
+    ts_status st = TS_OK;
+    for (size_t b = 0; b < ny && st == TS_OK; b++)
+        for (size_t a = 0; a < nx && st == TS_OK; a++)
+            if (!(ts__gb_value(up, xs[a], ys[b]) - ts__gb_value(lo, xs[a], ys[b]) > need)) {
+                if (px)
+                    *px = xs[a];
+                if (py)
+                    *py = ys[b];
+                st = ts__fail(err, TS_ERR_LINES, TS_NO_INDEX, TS_WHERE_NONE);
+            }
+    free(xs);
+    return st;
 }
 
 /* The scheme's bounds into s (docs/method.md §11.3), then the nodes. */
@@ -157,8 +243,27 @@ static ts_status check_nodes(ts_surface *s, const ts_surface_options *o, const d
         s->lower.c = zmin;
         s->upper.c = zmax;
         break;
+    case TS_SURFACE_GRIDS:
+        s->has_lower = o->has_lower != 0;
+        s->has_upper = o->has_upper != 0;
+        break;
     default:
         break;
+    }
+    if (o->shape == TS_SURFACE_GRIDS) {
+        ts_status st;
+        if (s->has_lower && s->has_upper &&
+            (st = ts__surf_grids_order(&s->glo, &s->gup, s->x[0], s->x[s->nx], s->y[0],
+                                       s->y[s->ny], NULL, NULL, err)) != TS_OK)
+            return st;
+        /* every node strictly between, decided exactly (2: undecidable) */
+        for (size_t n = 0; n < nn; n++) {
+            double xv = s->x[n % np], yv = s->y[n / np];
+            if ((s->has_lower && ts__gb_side(&s->glo, xv, yv, z[n]) != 1) ||
+                (s->has_upper && ts__gb_side(&s->gup, xv, yv, z[n]) != -1))
+                return ts__fail(err, TS_ERR_SIDE, n, TS_WHERE_POINT);
+        }
+        return TS_OK;
     }
     int strict = o->shape == TS_SURFACE_PLANES;
     for (size_t n = 0; n < nn; n++) {
@@ -228,6 +333,8 @@ static double clamp_touch(double d, size_t idx, size_t n, double into)
 static void touch_slopes(ts_surface *s)
 {
     size_t np = s->nx + 1, nn = np * (s->ny + 1);
+    if (s->shape == TS_SURFACE_GRIDS) /* nodes strictly inside */
+        return;
     for (size_t n = 0; n < nn; n++) {
         size_t i = n % np, j = n / np;
         for (int side = 0; side < 2; side++) {
@@ -243,12 +350,27 @@ static void touch_slopes(ts_surface *s)
 }
 
 /* The gap of node n to side (0 lower, 1 upper) and the slopes relative to
- * the plane, all with the sign that makes "inside" positive. */
-static void node_gap(const ts_surface *s, size_t n, int side, double *g, double *pp, double *qq)
+ * the plane, all with the sign that makes "inside" positive.  A field
+ * (docs/method.md §11.7): its rounded value, and its secants along the
+ * edges of patch (pi, pj) through the node as its slopes. */
+static void node_gap(const ts_surface *s, size_t n, int side, size_t pi, size_t pj, double *g,
+                     double *pp, double *qq)
 {
     size_t np = s->nx + 1;
     const ts_plane *pl = side ? &s->upper : &s->lower;
     double sg = side ? -1.0 : 1.0;
+    if (s->shape == TS_SURFACE_GRIDS) {
+        const ts__gbound *f = side ? &s->gup : &s->glo;
+        double xv = s->x[n % np], yv = s->y[n / np];
+        double bx = (ts__gb_value(f, s->x[pi + 1], yv) - ts__gb_value(f, s->x[pi], yv)) /
+                    (s->x[pi + 1] - s->x[pi]);
+        double by = (ts__gb_value(f, xv, s->y[pj + 1]) - ts__gb_value(f, xv, s->y[pj])) /
+                    (s->y[pj + 1] - s->y[pj]);
+        *g = sg * (s->z[n] - ts__gb_value(f, xv, yv));
+        *pp = sg * (s->p[n] - bx);
+        *qq = sg * (s->q[n] - by);
+        return;
+    }
     *g = sg * (s->z[n] - plane_at(pl, s->x[n % np], s->y[n / np]));
     *pp = sg * (s->p[n] - pl->p);
     *qq = sg * (s->q[n] - pl->q);
@@ -269,14 +391,14 @@ static ts_status scheme_a(ts_surface *s, const ts_surface_options *o, int dir, t
                     if (!(side ? s->has_upper : s->has_lower))
                         continue;
                     double g, pp, qq;
-                    node_gap(s, node, side, &g, &pp, &qq);
+                    size_t pl = L < lines - 1 ? L : lines - 2;
+                    node_gap(s, node, side, dir ? pl : i, dir ? i : pl, &g, &pp, &qq);
                     /* the inward edge term ±k d' must keep at least half the gap */
                     double d = (end ? -1.0 : 1.0) * (dir ? qq : pp);
                     if (d < 0.0) {
                         /* an a beyond 1e300 is refused (as in 1-D, docs/method.md
                          * §5.7): a gap near the underflow threshold */
                         if (2.0 * K * -d > 1e300 * g) {
-                            size_t pl = L < lines - 1 ? L : lines - 2;
                             return ts__fail(err, TS_ERR_INFEASIBLE,
                                             dir ? i * s->nx + pl : pl * s->nx + i,
                                             TS_WHERE_INTERVAL);
@@ -319,7 +441,7 @@ static void clamp_twists(ts_surface *s)
                     if (!(side ? s->has_upper : s->has_lower))
                         continue;
                     double g, pp, qq;
-                    node_gap(s, n, side, &g, &pp, &qq);
+                    node_gap(s, n, side, pi, pj, &g, &pp, &qq);
                     double F = g + sx * ux * pp + sy * uy * qq;
                     double c = (side ? -1.0 : 1.0) * sx * sy * ux * uy; /* c r >= -F/2 */
                     if (c > 0.0)
@@ -339,6 +461,13 @@ static int patch_inside(const ts_surface *s, size_t c)
     for (int side = 0; side < 2; side++) {
         if (!(side ? s->has_upper : s->has_lower))
             continue;
+        if (s->shape == TS_SURFACE_GRIDS) { /* docs/method.md §11.7 */
+            double pv, sv, ax, ay;
+            if (!ts__surf_certify_grid(s, c % s->nx, c / s->nx, side ? &s->gup : &s->glo,
+                                       1 - 2 * side, &pv, &sv, &ax, &ay))
+                return 0;
+            continue;
+        }
         double G[16], guard;
         ts__surf_gaps(s, c % s->nx, c / s->nx, side ? &s->upper : &s->lower, 1 - 2 * side, G,
                       &guard);
@@ -357,6 +486,8 @@ static int patch_inside(const ts_surface *s, size_t c)
 static ts_status repair(ts_surface *s, double *flag, ts_error *err)
 {
     size_t nx = s->nx, ny = s->ny;
+    /* fields: the certificate of §11.7 failing is no proof of infeasibility */
+    ts_status fail = s->shape == TS_SURFACE_GRIDS ? TS_ERR_UNPROVEN : TS_ERR_INFEASIBLE;
     for (int round = 0;; round++) {
         size_t bad = SIZE_MAX;
         for (size_t k = 0; k < nx + ny; k++)
@@ -369,12 +500,12 @@ static ts_status repair(ts_surface *s, double *flag, ts_error *err)
         if (bad == SIZE_MAX)
             return TS_OK;
         if (round == REPAIR_ROUNDS)
-            return ts__fail(err, TS_ERR_INFEASIBLE, bad, TS_WHERE_INTERVAL);
+            return ts__fail(err, fail, bad, TS_WHERE_INTERVAL);
         for (size_t k = 0; k < nx + ny; k++) {
             double *a = k < nx ? s->ax + k : s->ay + (k - nx);
             if (flag[k] != 0.0) {
                 if (!(*a * 10.0 <= 1e300))
-                    return ts__fail(err, TS_ERR_INFEASIBLE, bad, TS_WHERE_INTERVAL);
+                    return ts__fail(err, fail, bad, TS_WHERE_INTERVAL);
                 *a *= 10.0;
             }
         }
@@ -392,6 +523,7 @@ static void release(ts_surface *s)
     if (!s)
         return;
     free(s->x);
+    free(s->gblk);
     free(s);
 }
 
@@ -420,6 +552,9 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
     if ((st = check_axis(x, nx_points, err)) != TS_OK ||
         (st = check_axis(y, ny_points, err)) != TS_OK)
         return st;
+    int grids = o->shape == TS_SURFACE_GRIDS;
+    if (grids && (st = check_grids(o, x, nx_points, y, ny_points, err)) != TS_OK)
+        return st;
     size_t nx = nx_points - 1, ny = ny_points - 1, nn = nx_points * ny_points;
     size_t len = nx_points > ny_points ? nx_points : ny_points;
     size_t total = nx_points + ny_points + 4 * nn + nx + ny + 16 * nx * ny + 2 * len + nn;
@@ -428,6 +563,20 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
     if (!blk) {
         free(s);
         return ts__fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
+    }
+    if (grids) {
+        size_t gl = o->has_lower ? grid_doubles(&o->lower_grid) : 0;
+        size_t gu = o->has_upper ? grid_doubles(&o->upper_grid) : 0;
+        s->gblk = ts__malloc((gl + gu) * sizeof(double));
+        if (!s->gblk) {
+            free(blk);
+            release(s);
+            return ts__fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
+        }
+        if (o->has_lower)
+            copy_grid(&s->glo, &o->lower_grid, s->gblk);
+        if (o->has_upper)
+            copy_grid(&s->gup, &o->upper_grid, s->gblk + gl);
     }
     s->nx = nx;
     s->ny = ny;
@@ -528,6 +677,19 @@ static void report_patch(const ts_surface *s, size_t i, size_t j, const ts_plane
     rep->has_lower = lower != NULL;
     rep->has_upper = upper != NULL;
     int ok = lower || upper;
+    if (s->shape == TS_SURFACE_GRIDS && lower == &s->lower && upper == &s->upper) {
+        rep->has_lower = s->has_lower;
+        rep->has_upper = s->has_upper;
+        ok = 1;
+        if (s->has_lower)
+            ok &= ts__surf_certify_grid(s, i, j, &s->glo, 1, &rep->proven_lower,
+                                        &rep->sampled_lower, &rep->at_lower[0], &rep->at_lower[1]);
+        if (s->has_upper)
+            ok &= ts__surf_certify_grid(s, i, j, &s->gup, -1, &rep->proven_upper,
+                                        &rep->sampled_upper, &rep->at_upper[0], &rep->at_upper[1]);
+        rep->certified = ok;
+        return;
+    }
     if (lower)
         ok &= ts__surf_certify_patch(s, i, j, lower, 1, &rep->proven_lower, &rep->sampled_lower,
                                      &rep->at_lower[0], &rep->at_lower[1]);
@@ -565,8 +727,11 @@ ts_status ts_surface_report(const ts_surface *s, size_t i, size_t j, ts_patch_re
         return TS_ERR_NULL;
     if (i >= s->nx || j >= s->ny)
         return TS_ERR_INDEX;
-    report_patch(s, i, j, s->has_lower ? &s->lower : NULL, s->has_upper ? &s->upper : NULL,
-                 rep);
+    if (s->shape == TS_SURFACE_GRIDS) /* the fields: has_lower / has_upper say which */
+        report_patch(s, i, j, &s->lower, &s->upper, rep);
+    else
+        report_patch(s, i, j, s->has_lower ? &s->lower : NULL, s->has_upper ? &s->upper : NULL,
+                     rep);
     return TS_OK;
 }
 

@@ -52,6 +52,20 @@ static double beyond_plane(const ts_plane *pl, double x, double y, double v, dou
     return strictly_beyond(pl, x, y, r, sg) == 1 ? r : v;
 }
 
+/* v strictly beyond a field (sg = +1: above the lower, −1: below the
+ * upper), docs/method.md §11.7: kept where it is beyond the field's rounded
+ * value by more than its error bound, or exactly beyond it (decided
+ * exactly); else the rounded value moved by its error bound and one ulp. */
+static double beyond_grid(const ts__gbound *g, double x, double y, double v, double sg)
+{
+    double b = ts__gb_value(g, x, y);
+    double t = nextafter(b + sg * g->err, sg * (double)INFINITY); /* sg (t − field) > 0 */
+    if (sg * (v - t) >= 0.0)
+        return v;
+    int side = ts__gb_side(g, x, y, v);
+    return side != 2 && sg * side > 0.0 ? v : t;
+}
+
 /* A value of a certified surface in its region (docs/method.md §11.5):
  * the exact surface at the point evaluated is inside, so a value outside
  * is rounding and the side (constant bounds, closed) or the nearest double
@@ -60,6 +74,13 @@ static double into_region(const ts_surface *s, double x, double y, double v)
 {
     if (s->shape == TS_SURFACE_NONE)
         return v;
+    if (s->shape == TS_SURFACE_GRIDS) {
+        if (s->has_lower)
+            v = beyond_grid(&s->glo, x, y, v, 1.0);
+        if (s->has_upper)
+            v = beyond_grid(&s->gup, x, y, v, -1.0);
+        return v;
+    }
     if (s->shape != TS_SURFACE_PLANES) {
         if (s->has_lower && v < s->lower.c)
             v = s->lower.c;

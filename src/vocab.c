@@ -39,6 +39,7 @@ static const char *const status_names[] = {
     [TS_ERR_UNPROVEN] = "TS_ERR_UNPROVEN",
     [TS_ERR_VERSION] = "TS_ERR_VERSION",
     [TS_ERR_CONDITION] = "TS_ERR_CONDITION",
+    [TS_ERR_BOUND_GRID] = "TS_ERR_BOUND_GRID",
 };
 static const char *const form_names[] = {
     [TS_FORM_PAPER] = "paper", [TS_FORM_C1] = "c1", [TS_FORM_GEOMETRIC] = "geometric"};
@@ -60,7 +61,7 @@ static const char *const param_names[] = {
 static const char *const surface_shape_names[] = {
     [TS_SURFACE_NONE] = "none",     [TS_SURFACE_POSITIVE] = "positive",
     [TS_SURFACE_BOUNDS] = "bounds", [TS_SURFACE_PLANES] = "planes",
-    [TS_SURFACE_RANGE] = "range"};
+    [TS_SURFACE_RANGE] = "range",   [TS_SURFACE_GRIDS] = "grids"};
 static const char *const term_names[] = {
     [TS_TERM_USER] = "user",
     [TS_TERM_MARGIN] = "margin",
@@ -101,7 +102,7 @@ _Static_assert(TS_NELEM(slopes_names) == TS_SLOPES_COUNT_, "a slope method witho
 _Static_assert(TS_NELEM(shape_names) == TS_SHAPE_MONOTONE + 1, "a shape without a name");
 _Static_assert(TS_NELEM(extrap_names) == TS_EXTRAP_LINEAR + 1, "an extrapolation without a name");
 _Static_assert(TS_NELEM(param_names) == TS_PARAM_UNIFORM + 1, "a parameterisation without a name");
-_Static_assert(TS_NELEM(surface_shape_names) == TS_SURFACE_RANGE + 1, "a surface shape without a name");
+_Static_assert(TS_NELEM(surface_shape_names) == TS_SURFACE_GRIDS + 1, "a surface shape without a name");
 _Static_assert(TS_NELEM(term_names) == TS_TERM_GEOMETRIC + 1, "a term without a name");
 _Static_assert(TS_NELEM(where_names) == TS_WHERE_QUERY + 1, "a where without a name");
 _Static_assert(TS_NELEM(constraint_names) == TS_CONSTRAINT_COUNT_, "a constraint without a name");

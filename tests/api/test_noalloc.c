@@ -164,6 +164,46 @@ int main(void)
         CHECKF(allocations == 0, "curve closed=%d: %ld allocations while evaluating", closed, (long)allocations);
         ts_curve_free(c);
     }
+    TH_CASE("surfaces between gridded fields");
+    for (int form = TS_FORM_PAPER; form <= TS_FORM_GEOMETRIC; form++) {
+        static const double sx[4] = {0, 1, 2, 3}, fx[3] = {-1, 1.5, 4};
+        double sz[16], lz[9], uz[9];
+        for (int k = 0; k < 16; k++)
+            sz[k] = 1.0 + 0.25 * ((k * 7) % 5);
+        for (int k = 0; k < 9; k++) {
+            lz[k] = -0.5 - 0.125 * (k % 3);
+            uz[k] = 3.5 + 0.25 * (k % 2);
+        }
+        ts_surface_options so;
+        ts_surface_options_init(&so);
+        so.form = (ts_form)form;
+        so.shape = TS_SURFACE_GRIDS;
+        so.has_lower = so.has_upper = 1;
+        so.lower_grid = (ts_grid_bound){fx, 3, fx, 3, lz};
+        so.upper_grid = (ts_grid_bound){fx, 3, fx, 3, uz};
+        ts_surface *sf = NULL;
+        ts_status st = ts_surface_new(sx, 4, sx, 4, sz, &so, &sf, NULL);
+        CHECKF(st == TS_OK, "form %d: %s", form, ts_strerror(st));
+        if (st != TS_OK)
+            continue;
+        static double gq[64], gout[64 * 64];
+        for (int k = 0; k < 64; k++)
+            gq[k] = 3.0 * k / 63;
+        double v, vx, vy;
+        ts_error err;
+        ts_patch_report prep = TS_PATCH_REPORT_INIT;
+        allocations = 0;
+        counting = 1;
+        for (int k = 0; k < 64; k++)
+            (void)ts_surface_eval(sf, gq[k], gq[63 - k], NULL, &v, &vx, &vy);
+        (void)ts_surface_eval_batch(sf, gq, gq, 64, gout, NULL, NULL, &err);
+        (void)ts_surface_eval_grid(sf, gq, 64, gq, 64, gout, &err);
+        (void)ts_surface_report(sf, 1, 1, &prep);
+        counting = 0;
+        CHECKF(allocations == 0, "surface form %d: %ld allocations while evaluating", form,
+               (long)allocations);
+        ts_surface_free(sf);
+    }
     TH_CASE("rates from bin totals");
     {
         static const double e[7] = {0, 1, 2, 3, 4.5, 5, 6}, T[6] = {0, 3, 0, 1, 2, 0.5};

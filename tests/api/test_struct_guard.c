@@ -215,6 +215,7 @@ int main(void)
     TH_CASE("status");
     CHECK(strcmp(ts_status_name(TS_ERR_VERSION), "TS_ERR_VERSION") == 0);
     CHECK(strstr(ts_strerror(TS_ERR_VERSION), "struct_size") != NULL);
-    CHECK(TS_ERR_VERSION == 30 && TS_ERR_CONDITION == 31 && TS_ERR_CONDITION + 1 == TS_STATUS_COUNT_);
+    CHECK(TS_ERR_VERSION == 30 && TS_ERR_CONDITION == 31 && TS_ERR_BOUND_GRID == 32 &&
+          TS_ERR_BOUND_GRID + 1 == TS_STATUS_COUNT_);
     return th_report("struct_guard");
 }

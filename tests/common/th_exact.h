@@ -14,7 +14,8 @@
  * plus carries of at most TH_EXACT_TERMS terms */
 #define TH_EXACT_LIMBS 68
 
-/* sign of v[0] + ... + v[n-1] exactly, n <= TH_EXACT_TERMS, every |v| <= 2^1020 */
+/* sign of v[0] + ... + v[n-1] exactly, every |v| <= 2^1020; n <= 2^20 (the
+ * limbs' headroom: each term adds below 2^33 to a limb) */
 static inline int th_exact_sign(const double *v, int n)
 {
     long long L[TH_EXACT_LIMBS] = {0};
@@ -80,5 +81,58 @@ static inline int th_plane_side(double z, double p, double q, double c, double x
     t[4] = -c;
     t[5] = z;
     return th_exact_sign(t, 6);
+}
+/* zero, or 2^-300 <= |v| <= 2^300: products of three such values and of
+ * their rounding errors neither overflow nor underflow */
+static inline int th_exact_tame(double v)
+{
+    double a = fabs(v);
+    return a == 0.0 || (0x1p-300 <= a && a <= 0x1p300);
+}
+
+/* the sign of v − F(x, y), F bilinear on the cell [X0, X1] × [Y0, Y1] with
+ * corner values z00 (X0, Y0), z10, z01, z11, exact: hx hy (v − F) =
+ * Σ_c (v − z_c) wx_c wy_c with wx the distances to the opposite lines, each
+ * factor an exact sum of two doubles (TwoSum), each triple product split
+ * into four doubles (fma), summed by th_exact_sign; 2 where undecidable (an
+ * input outside th_exact_tame) */
+static inline int th_bilinear_side(double v, double x, double y, double X0, double X1, double Y0,
+                                   double Y1, double z00, double z10, double z01, double z11)
+{
+    double in[11] = {v, x, y, X0, X1, Y0, Y1, z00, z10, z01, z11};
+    for (int k = 0; k < 11; k++)
+        if (!th_exact_tame(in[k]))
+            return 2;
+    double w[2][2][2], d[2]; /* w[axis][side] = two terms */
+    double ax[2][2] = {{X1, x}, {x, X0}}, ay[2][2] = {{Y1, y}, {y, Y0}};
+    for (int s = 0; s < 2; s++) {
+        double a = ax[s][0], b = -ax[s][1], t = a + b, z = t - a;
+        w[0][s][0] = t;
+        w[0][s][1] = (a - (t - z)) + (b - z);
+        a = ay[s][0], b = -ay[s][1], t = a + b, z = t - a;
+        w[1][s][0] = t;
+        w[1][s][1] = (a - (t - z)) + (b - z);
+    }
+    double zc[2][2] = {{z00, z01}, {z10, z11}}; /* [cx][cy] */
+    double terms[128];
+    int n = 0;
+    for (int cx = 0; cx < 2; cx++)
+        for (int cy = 0; cy < 2; cy++) {
+            double a = v, b = -zc[cx][cy], t = a + b, z = t - a;
+            d[0] = t;
+            d[1] = (a - (t - z)) + (b - z);
+            for (int i = 0; i < 2; i++)
+                for (int j = 0; j < 2; j++)
+                    for (int k = 0; k < 2; k++) {
+                        double p = d[i], q = w[0][cx][j], r = w[1][cy][k];
+                        double P = p * q, e = fma(p, q, -P);
+                        double P1 = P * r, e1 = fma(P, r, -P1), P2 = e * r, e2 = fma(e, r, -P2);
+                        terms[n++] = P1;
+                        terms[n++] = e1;
+                        terms[n++] = P2;
+                        terms[n++] = e2;
+                    }
+        }
+    return th_exact_sign(terms, n);
 }
 #endif

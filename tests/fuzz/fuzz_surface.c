@@ -9,7 +9,9 @@
  *    with ZERO tolerance: positive S >= 0, bounds and range lower.c <= S <=
  *    upper.c (doubles: compared exactly), planes strictly beyond each plane,
  *    decided exactly (tests/common/th_exact.h; a product beyond 2^1020 is
- *    left undecided, as the library leaves it); never NaN. */
+ *    left undecided, as the library leaves it), gridded fields (the planes
+ *    sampled on a 2 × 2 or 3 × 3 grid, docs/method.md §11.7) strictly
+ *    beyond each field, decided exactly; never NaN. */
 #include "fuzz.h"
 #include "../common/th_exact.h"
 #include "trigspline.h"
@@ -27,11 +29,25 @@ static int documented(ts_status st)
     case TS_OK: case TS_ERR_TOO_FEW: case TS_ERR_OPTION: case TS_ERR_OVERFLOW:
     case TS_ERR_NONFINITE: case TS_ERR_UNSORTED: case TS_ERR_ALPHA: case TS_ERR_BETA:
     case TS_ERR_MARGIN: case TS_ERR_GEOMETRIC: case TS_ERR_NEGATIVE: case TS_ERR_LINES:
-    case TS_ERR_SIDE: case TS_ERR_INFEASIBLE: case TS_ERR_NOMEM:
+    case TS_ERR_SIDE: case TS_ERR_INFEASIBLE: case TS_ERR_NOMEM: case TS_ERR_BOUND_GRID:
+    case TS_ERR_UNPROVEN:
         return 1;
     default:
         return 0;
     }
+}
+
+/* sign of z − field g at (x, y) (inside its grid), exact; 2 undecidable */
+static int field_side(const ts_grid_bound *g, double z, double x, double y)
+{
+    size_t i = 0, j = 0;
+    while (i + 2 < g->nx_points && g->x[i + 1] <= x)
+        i++;
+    while (j + 2 < g->ny_points && g->y[j + 1] <= y)
+        j++;
+    const double *z0 = g->z + j * g->nx_points + i, *z1 = z0 + g->nx_points;
+    return th_bilinear_side(z, x, y, g->x[i], g->x[i + 1], g->y[j], g->y[j + 1], z0[0], z0[1],
+                            z1[0], z1[1]);
 }
 
 /* z at (x, y) in the region of s built with options o (ZERO tolerance) */
@@ -52,6 +68,18 @@ static void in_region(const ts_surface_options *o, double zmin, double zmax, dou
     case TS_SURFACE_RANGE:
         FUZZ_CHECK(zmin <= z && z <= zmax, "%s: S(%.17g, %.17g) = %.17g outside [%.17g, %.17g]",
                    how, x, y, z, zmin, zmax);
+        break;
+    case TS_SURFACE_GRIDS:
+        if (o->has_lower) {
+            int sd = field_side(&o->lower_grid, z, x, y);
+            FUZZ_CHECK(sd == 1 || sd == 2, "%s: S(%.17g, %.17g) = %.17g not above the lower field",
+                       how, x, y, z);
+        }
+        if (o->has_upper) {
+            int sd = field_side(&o->upper_grid, z, x, y);
+            FUZZ_CHECK(sd == -1 || sd == 2,
+                       "%s: S(%.17g, %.17g) = %.17g not below the upper field", how, x, y, z);
+        }
         break;
     case TS_SURFACE_PLANES:
         if (o->has_lower) {
@@ -129,6 +157,30 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     plane(&in, &o.upper);
     if (sides & 4) /* a band above the lower bound */
         o.upper.c = o.lower.c + fabs(o.upper.c);
+    /* gridded fields (docs/method.md §11.7): the planes sampled on a grid
+     * of 2 or 3 lines each way over the data's rectangle */
+    static double fx[3], fy[3], flo[9], fup[9];
+    if ((sides & 8) && (o.shape == TS_SURFACE_BOUNDS || o.shape == TS_SURFACE_PLANES)) {
+        size_t m = 2;
+        fx[0] = x[0];
+        fy[0] = y[0];
+        double mx = 0.5 * (x[0] + x[nx - 1]), my = 0.5 * (y[0] + y[ny - 1]);
+        if ((sides & 16) && x[0] < mx && mx < x[nx - 1] && y[0] < my && my < y[ny - 1]) {
+            fx[1] = mx;
+            fy[1] = my;
+            m = 3;
+        }
+        fx[m - 1] = x[nx - 1];
+        fy[m - 1] = y[ny - 1];
+        for (size_t b = 0; b < m; b++)
+            for (size_t a = 0; a < m; a++) {
+                flo[b * m + a] = o.lower.p * fx[a] + o.lower.q * fy[b] + o.lower.c;
+                fup[b * m + a] = o.upper.p * fx[a] + o.upper.q * fy[b] + o.upper.c;
+            }
+        o.shape = TS_SURFACE_GRIDS;
+        o.lower_grid = (ts_grid_bound){fx, m, fy, m, flo};
+        o.upper_grid = (ts_grid_bound){fx, m, fy, m, fup};
+    }
     /* values: fuzzed, on a bound (or a plane's value at the node), or between */
     for (size_t j = 0; j < ny; j++)
         for (size_t i = 0; i < nx; i++) {

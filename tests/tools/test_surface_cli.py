@@ -207,6 +207,71 @@ check("help", rc == 0 and "--matrix" in o)
 rc, _, e = run(LONG, "--form", "geometric", "--alpha", "0.1")
 check("geometric bound", rc == 1 and "geometric" in e, e)
 
+# ---- gridded fields (docs/method.md §11.7): --lower-grid / --upper-grid --------
+# the spiky field between a floor 1 below and a ceiling 2 above its own
+# range, both on grids of their own (matrix and long layouts); the sides of
+# the samples are checked against the exact bilinear fields (fractions)
+from fractions import Fraction as Fr  # noqa: E402
+
+
+def exact_field(fx, fy, fz, x, y):
+    i = max(k for k in range(len(fx) - 1) if fx[k] <= x)
+    j = max(k for k in range(len(fy) - 1) if fy[k] <= y)
+    X0, X1, Y0, Y1 = (Fr(v) for v in (fx[i], fx[i + 1], fy[j], fy[j + 1]))
+    X, Y = Fr(x), Fr(y)
+    return (Fr(fz[j][i]) * (X1 - X) * (Y1 - Y) + Fr(fz[j][i + 1]) * (X - X0) * (Y1 - Y) +
+            Fr(fz[j + 1][i]) * (X1 - X) * (Y - Y0) + Fr(fz[j + 1][i + 1]) * (X - X0) * (Y - Y0)) \
+        / ((X1 - X0) * (Y1 - Y0))
+
+
+FX, FY = [-1.0, 2.0, 5.0], [-2.0, 1.0, 3.0]
+FLO = [[-1.5, -1.0, -1.25], [-1.0, -2.0, -1.0], [-1.0, -1.5, -1.0]]   # rows of constant y
+FUP = [[14.0, 15.0, 14.5], [15.0, 14.0, 15.0], [14.0, 14.5, 15.0]]
+LOG = write("floor.csv", "y\\x," + ",".join(map(repr, FX)) + "\n" +
+            "".join(repr(y) + "," + ",".join(map(repr, FLO[j])) + "\n" for j, y in enumerate(FY)))
+UPG = write("ceiling_long.csv", "x,y,z\n" + "".join("%r,%r,%r\n" % (x, y, FUP[j][i])
+                                                    for j, y in enumerate(FY)
+                                                    for i, x in enumerate(FX)))
+UPM = write("ceiling.csv", "y\\x," + ",".join(map(repr, FX)) + "\n" +
+            "".join(repr(y) + "," + ",".join(map(repr, FUP[j])) + "\n" for j, y in enumerate(FY)))
+for form in ("paper", "c1", "geometric"):
+    rc, o, e = run(MAT, "--matrix", "--lower-grid", LOG, "--upper-grid", UPM, "--form", form,
+                   "--samples", "6")
+    check("grids %s rc" % form, rc in (0, 3), e)
+    if rc == 0:
+        pts = parse_long(o)
+        bad = [p for p in pts if not (exact_field(FX, FY, FLO, p[0], p[1]) < Fr(p[2]) <
+                                      exact_field(FX, FY, FUP, p[0], p[1]))]
+        check("grids %s strictly between the fields" % form, not bad, str(bad[:3]))
+    else:
+        check("grids %s unproven names a patch" % form, "patch (" in e, e)
+rc, o1, _ = run(LONG, "--lower-grid", write("floor_long.csv", "x,y,z\n" + "".join(
+    "%r,%r,%r\n" % (x, y, FLO[j][i]) for j, y in enumerate(FY) for i, x in enumerate(FX))),
+    "--form", "geometric", "--json")
+doc = json.loads(o1) if rc == 0 else {}
+check("grids json", rc == 0 and doc.get("shape") == "grids" and doc.get("certified") is True and
+      all(p["certified"] and 0 < p["proven_lower"] <= p["sampled_lower"]
+          for p in doc.get("patches", [])), o1[:300])
+SHORT = write("short_field.csv", "x,y,z\n0,-1,0\n4.2,-1,0\n0,2,0\n4.2,2,0\n")
+err_case("grid not covering", LONG, ["--lower-grid", SHORT], 2,
+         ["short_field.csv", "lower field's grid [0, 4.2] x [-1, 2] does not cover",
+          "[0, 4.2] x [-1, 2.5]"])
+ONF = write("on_field.csv", "x,y,z\n-1,-2,0\n5,-2,0\n-1,3,0\n5,3,0\n")
+err_case("node on a field", LONG, ["--lower-grid", ONF], 2,
+         ["line 2", "node (0, 0)", "not above the lower field, whose value there is 0"])
+err_case("fields meet", LONG, ["--lower-grid", ONF, "--upper-grid", ONF], 2,
+         ["the upper field (value 0) is not above the lower field (value 0)"])
+TENT = write("tent.csv", "x,y,z\n0,0,-1\n1,0,-1\n2,0,-1\n0,1,-1\n1,1,0.5\n2,1,-1\n"
+             "0,2,-1\n1,2,-1\n2,2,-1\n")
+FLAT = write("flat.csv", "x,y,z\n0,0,0\n2,0,0\n0,2,0\n2,2,0\n")
+err_case("field bulging past the data", FLAT, ["--lower-grid", TENT], 3, ["patch (0, 0)"])
+rc, _, e = run(LONG, "--shape", "bounds", "--lower", "0", "--lower-grid", LOG)
+check("grids with another shape: usage", rc == 1 and "--shape grids" in e, e)
+rc, _, e = run(LONG, "--shape", "grids")
+check("grids without a field: usage", rc == 1 and "--lower-grid" in e, e)
+rc, _, e = run(LONG, "--lower-grid", os.path.join(TMP, "absent_field.csv"))
+check("absent field: I/O", rc == 5 and "absent_field.csv" in e, e)
+
 # ---- PNG and PDF plots (converted from the SVG, as for fit), and the format
 # given by the option: a plot extension that says another format is refused
 if shutil.which("rsvg-convert"):

@@ -48,7 +48,7 @@ int main(void)
         "TS_ERR_VIOLATED", "TS_ERR_GEOMETRIC", "TS_ERR_DIMENSION", "TS_ERR_INDEX",
         "TS_ERR_ZERO_SLOPE", "TS_ERR_SLOPE_OVERFLOW", "TS_ERR_TOO_LARGE",
         "TS_ERR_CONTROL_OVERFLOW", "TS_ERR_WIDTH", "TS_ERR_PRECISION", "TS_ERR_UNPROVEN",
-        "TS_ERR_VERSION", "TS_ERR_CONDITION"};
+        "TS_ERR_VERSION", "TS_ERR_CONDITION", "TS_ERR_BOUND_GRID"};
     static const char *const form[] = {"paper", "c1", "geometric"};
     static const char *const slopes[] = {"arithmetic", "geometric", "harmonic", "fritsch-carlson",
                                          "akima", "makima", "user", "periodic", "steffen"};
@@ -56,7 +56,7 @@ int main(void)
                                         "monotone"};
     static const char *const extrap[] = {"error", "clamp", "extend", "linear"};
     static const char *const param[] = {"centripetal", "chord", "uniform"};
-    static const char *const sshape[] = {"none", "positive", "bounds", "planes", "range"};
+    static const char *const sshape[] = {"none", "positive", "bounds", "planes", "range", "grids"};
     static const char *const term[] = {"user", "margin", "lower-left", "lower-right",
                                        "upper-left", "upper-right", "monotone", "certify",
                                        "geometric"};

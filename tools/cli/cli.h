@@ -451,6 +451,7 @@ void cli_overshoot_json(cli_json *j, const cli_overshoot *w);
 /* The surface command's options (docs/cli.md). */
 typedef struct cli_surface_opts {
     const char *data, *out, *svg; /* svg: the plot's file, in format fmt */
+    const char *lower_grid, *upper_grid; /* gridded fields (shape grids), in DATA's layout */
     cli_plot_format fmt;
     int matrix_in, matrix_out, json;
     ts_surface_options so;

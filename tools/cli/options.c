@@ -836,6 +836,12 @@ const cli_optdef cli_optdefs[] = {
      PLAIN(opt_plane, CLI_G_SHAPE, "lower bound: constant C or plane z = P x + Q y + C")},
     {ROW("--upper", NULL, "C|P,Q,C", CLI_S, CLI_K_CUSTOM, SOFF(so.upper), SOFF(so.has_upper)),
      PLAIN(opt_plane, CLI_G_SHAPE, "upper bound (bounds: constants; planes: planes)")},
+    {ROW("--lower-grid", NULL, "FILE", CLI_S, CLI_K_FILE, SOFF(lower_grid), SOFF(so.has_lower)),
+     PLAIN(NULL, CLI_G_SHAPE,
+           "lower field: a grid of its own in DATA's layout, bilinear between its nodes, "
+           "covering DATA's grid (shape grids, the default with it; nodes strictly above)")},
+    {ROW("--upper-grid", NULL, "FILE", CLI_S, CLI_K_FILE, SOFF(upper_grid), SOFF(so.has_upper)),
+     PLAIN(NULL, CLI_G_SHAPE, "upper field, as --lower-grid (nodes strictly below)")},
     {ROW("--form", NULL, NULL, CLI_S, CLI_K_ENUM, SOFF(so.form), NOF),
      ENUM(TS_VOCAB_FORM, 0, CLI_G_PARAM, "spline form (default %D)")},
     {ROW("--slopes", NULL, NULL, CLI_S, CLI_K_ENUM, SOFF(so.slopes), NOF),

@@ -68,21 +68,22 @@ static size_t find(const double *v, size_t n, double key)
     return lo;
 }
 
-static int read_grid(const cli_surface_opts *o, surf_grid *g)
+/* path in the long format, or the matrix layout (matrix) */
+static int read_grid(const char *path, int matrix, surf_grid *g)
 {
     memset(g, 0, sizeof *g);
-    g->name = strcmp(o->data, "-") == 0 ? "<stdin>" : o->data;
+    g->name = strcmp(path, "-") == 0 ? "<stdin>" : path;
     tsu_read_options ro;
     tsu_read_options_init(&ro);
-    ro.header_corner = o->matrix_in; /* ",x1,x2,...": pandas' empty corner cell */
+    ro.header_corner = matrix; /* ",x1,x2,...": pandas' empty corner cell */
     tsu_table t;
     tsu_io_error e;
-    tsu_io_status st = tsu_read_table_path(o->data, &ro, &t, &e);
+    tsu_io_status st = tsu_read_table_path(path, &ro, &t, &e);
     if (st != TSU_IO_OK)
         return cli_report_io(&e);
     char nb[TSU_FMT_SIZE], nb2[TSU_FMT_SIZE];
     int rc = CLI_DATA;
-    if (!o->matrix_in) {
+    if (!matrix) {
         if (t.ncols != 3) {
             cli_error("%s: the long format needs 3 columns x,y,z (found %zu)", g->name, t.ncols);
             goto done;
@@ -178,8 +179,8 @@ done:
 }
 
 /* ---- building ---------------------------------------------------------------- */
-static int report_error(const surf_grid *g, const ts_surface_options *so, ts_status st,
-                        const ts_error *e)
+static int report_error(const surf_grid *g, const surf_grid *fields, const ts_surface_options *so,
+                        ts_status st, const ts_error *e)
 {
     char msg[1024];
     ts_error_context ctx;
@@ -197,9 +198,11 @@ static int report_error(const surf_grid *g, const ts_surface_options *so, ts_sta
         cli_error("%s: line %llu: %s", g->name, g->line[e->index], msg);
         return CLI_DATA;
     }
-    cli_error("%s: %s", g->name, msg);
+    /* a malformed field: named by its file */
+    const char *name = st == TS_ERR_BOUND_GRID && e->index < 2 ? fields[e->index].name : g->name;
+    cli_error("%s: %s", name, msg);
     if (e->where == TS_WHERE_INTERVAL)
-        return st == TS_ERR_INFEASIBLE ? CLI_INFEASIBLE : CLI_DATA;
+        return st == TS_ERR_INFEASIBLE || st == TS_ERR_UNPROVEN ? CLI_INFEASIBLE : CLI_DATA;
     return st == TS_ERR_NOMEM ? CLI_IO : (st == TS_ERR_OPTION || st == TS_ERR_ALPHA ||
                                           st == TS_ERR_BETA || st == TS_ERR_MARGIN ||
                                           st == TS_ERR_GEOMETRIC)
@@ -239,9 +242,31 @@ int cli_surface(int argc, char **argv)
     }
     if (rc != CLI_OK)
         return rc;
-    surf_grid g;
-    if ((rc = read_grid(&o, &g)) != CLI_OK)
+    /* gridded fields: shape grids (the default with them; no other shape) */
+    if (o.lower_grid || o.upper_grid) {
+        if (o.so.shape == TS_SURFACE_NONE)
+            o.so.shape = TS_SURFACE_GRIDS;
+        else if (o.so.shape != TS_SURFACE_GRIDS)
+            return cli_usage(CLI_SURFACE, "--lower-grid and --upper-grid need --shape grids");
+    }
+    if (o.so.shape == TS_SURFACE_GRIDS && !o.lower_grid && !o.upper_grid)
+        return cli_usage(CLI_SURFACE, "--shape grids needs --lower-grid FILE or --upper-grid FILE");
+    surf_grid g, fields[2];
+    memset(fields, 0, sizeof fields);
+    if ((rc = read_grid(o.data, o.matrix_in, &g)) != CLI_OK)
         return rc;
+    for (int k = 0; k < 2; k++) {
+        const char *path = k ? o.upper_grid : o.lower_grid;
+        if (!path)
+            continue;
+        if ((rc = read_grid(path, o.matrix_in, &fields[k])) != CLI_OK) {
+            grid_free(&fields[0]);
+            grid_free(&g);
+            return rc;
+        }
+        ts_grid_bound *b = k ? &o.so.upper_grid : &o.so.lower_grid;
+        *b = (ts_grid_bound){fields[k].x, fields[k].nx, fields[k].y, fields[k].ny, fields[k].z};
+    }
     /* every sample is held in memory (text, JSON range, plot): a documented limit */
     double px = o.grid_x ? (double)o.grid_x : (double)(g.nx - 1) * (double)o.samples + 1.0;
     double py = o.grid_y ? (double)o.grid_y : (double)(g.ny - 1) * (double)o.samples + 1.0;
@@ -250,14 +275,18 @@ int cli_surface(int argc, char **argv)
                   "memory; lower --samples or --grid",
                   g.name, px, py, CLI_MAX_HELD_SAMPLES);
         grid_free(&g);
+        grid_free(&fields[0]);
+        grid_free(&fields[1]);
         return CLI_USAGE;
     }
     ts_surface *s = NULL;
     ts_error e;
     ts_status st = ts_surface_new(g.x, g.nx, g.y, g.ny, g.z, &o.so, &s, &e);
     if (st != TS_OK) {
-        rc = report_error(&g, &o.so, st, &e);
+        rc = report_error(&g, fields, &o.so, st, &e);
         grid_free(&g);
+        grid_free(&fields[0]);
+        grid_free(&fields[1]);
         return rc;
     }
     size_t np = (g.nx - 1) * (g.ny - 1);
@@ -394,5 +423,7 @@ out:
     free(zq);
     ts_surface_free(s);
     grid_free(&g);
+    grid_free(&fields[0]);
+    grid_free(&fields[1]);
     return rc;
 }

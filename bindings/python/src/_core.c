@@ -1049,26 +1049,54 @@ static int opt_plane(PyObject *obj, int *has, ts_plane *pl)
     return PyArg_ParseTuple(obj, "ddd", &pl->p, &pl->q, &pl->c) ? 0 : -1;
 }
 
+/* A gridded field (x, y, zt) (zt in the library's layout) into *g; the
+ * three arrays into arr[0..3) (released by the caller); None: nothing. */
+static int opt_grid(PyObject *obj, int *has, ts_grid_bound *g, PyArrayObject **arr)
+{
+    PyObject *ox, *oy, *oz;
+    if (obj == Py_None)
+        return 0;
+    if (!PyArg_ParseTuple(obj, "OOO", &ox, &oy, &oz))
+        return -1;
+    if (!(arr[0] = as_vector(ox, "x")) || !(arr[1] = as_vector(oy, "y")))
+        return -1;
+    arr[2] = (PyArrayObject *)PyArray_FROMANY(oz, NPY_DOUBLE, 2, 2, NPY_ARRAY_IN_ARRAY);
+    if (!arr[2])
+        return -1;
+    if (PyArray_DIM(arr[2], 0) != PyArray_SIZE(arr[1]) ||
+        PyArray_DIM(arr[2], 1) != PyArray_SIZE(arr[0])) {
+        raise_status(TS_ERR_LENGTH, TS_NO_INDEX, TS_WHERE_NONE);
+        return -1;
+    }
+    *has = 1;
+    *g = (ts_grid_bound){PyArray_DATA(arr[0]), (size_t)PyArray_SIZE(arr[0]), PyArray_DATA(arr[1]),
+                         (size_t)PyArray_SIZE(arr[1]), PyArray_DATA(arr[2])};
+    return 0;
+}
+
 /* surface_new(x, y, zt, *, form=None, slopes=None, zero_twist=0, alpha=None,
- * beta=None, margin=None, shape=0, lower=None, upper=None); zt the values in
- * the library's layout (ny+1, nx+1); lower/upper (p, q, c) or None.  None
- * keeps the ts_surface_options_init default. */
+ * beta=None, margin=None, shape=0, lower=None, upper=None, lower_grid=None,
+ * upper_grid=None); zt the values in the library's layout (ny+1, nx+1);
+ * lower/upper (p, q, c) or None; lower_grid/upper_grid (x, y, zt) of a
+ * gridded field (shape grids) or None.  None keeps the
+ * ts_surface_options_init default. */
 static PyObject *surface_new(PyObject *mod, PyObject *args, PyObject *kw)
 {
     (void)mod;
     static char *kwlist[] = {"x", "y", "zt", "form", "slopes", "zero_twist", "alpha", "beta",
-                             "margin", "shape", "lower", "upper", NULL};
+                             "margin", "shape", "lower", "upper", "lower_grid", "upper_grid",
+                             NULL};
     PyObject *ox, *oy, *oz, *oform = Py_None, *oslopes = Py_None, *oalpha = Py_None,
                             *obeta = Py_None, *omargin = Py_None, *olower = Py_None,
-                            *oupper = Py_None;
+                            *oupper = Py_None, *olgrid = Py_None, *ougrid = Py_None;
     int zero_twist = 0, shape = 0;
-    if (!PyArg_ParseTupleAndKeywords(args, kw, "OOO|$OOpOOOiOO", kwlist, &ox, &oy, &oz, &oform,
+    if (!PyArg_ParseTupleAndKeywords(args, kw, "OOO|$OOpOOOiOOOO", kwlist, &ox, &oy, &oz, &oform,
                                      &oslopes, &zero_twist, &oalpha, &obeta, &omargin, &shape,
-                                     &olower, &oupper))
+                                     &olower, &oupper, &olgrid, &ougrid))
         return NULL;
     ts_surface_options opt;
     ts_surface_options_init(&opt);
-    PyArrayObject *ax = NULL, *ay = NULL, *az = NULL;
+    PyArrayObject *ax = NULL, *ay = NULL, *az = NULL, *garr[6] = {NULL};
     PyObject *result = NULL;
     if (!(ax = as_vector(ox, "x")) || !(ay = as_vector(oy, "y")))
         goto done;
@@ -1092,6 +1120,9 @@ static PyObject *surface_new(PyObject *mod, PyObject *args, PyObject *kw)
         goto done;
     if (opt_plane(olower, &opt.has_lower, &opt.lower) < 0 ||
         opt_plane(oupper, &opt.has_upper, &opt.upper) < 0)
+        goto done;
+    if (opt_grid(olgrid, &opt.has_lower, &opt.lower_grid, garr) < 0 ||
+        opt_grid(ougrid, &opt.has_upper, &opt.upper_grid, garr + 3) < 0)
         goto done;
     opt.zero_twist = zero_twist;
     opt.shape = (ts_surface_shape)shape;
@@ -1124,6 +1155,8 @@ done:
     Py_XDECREF(ax);
     Py_XDECREF(ay);
     Py_XDECREF(az);
+    for (int k = 0; k < 6; k++)
+        Py_XDECREF(garr[k]);
     return result;
 }
 

@@ -261,13 +261,19 @@ class Plane(ctypes.Structure):
     _fields_ = [("p", ctypes.c_double), ("q", ctypes.c_double), ("c", ctypes.c_double)]
 
 
+class GridBound(ctypes.Structure):  # ts_grid_bound
+    _fields_ = [("x", dp), ("nx_points", ctypes.c_size_t), ("y", dp),
+                ("ny_points", ctypes.c_size_t), ("z", dp)]
+
+
 class SurfaceOptions(ctypes.Structure):  # ts_surface_options (include/trigspline.h)
     _fields_ = [("struct_size", ctypes.c_size_t),
                 ("form", ctypes.c_int), ("slopes", ctypes.c_int), ("zero_twist", ctypes.c_int),
                 ("alpha", ctypes.c_double), ("beta", ctypes.c_double),
                 ("margin", ctypes.c_double), ("shape", ctypes.c_int),
                 ("has_lower", ctypes.c_int), ("has_upper", ctypes.c_int),
-                ("lower", Plane), ("upper", Plane)]
+                ("lower", Plane), ("upper", Plane),
+                ("lower_grid", GridBound), ("upper_grid", GridBound)]
 
 
 class Error(ctypes.Structure):
@@ -291,6 +297,7 @@ def test_bit_identical_to_the_c_library(form):
     x, y, z = grid_data(12, 9, seed=form)
     opt = SurfaceOptions()
     L.ts_surface_options_init(ctypes.byref(opt))
+    assert opt.struct_size == ctypes.sizeof(SurfaceOptions)  # the mirror is the header's
     default_form = opt.form
     opt.form, opt.shape, opt.alpha = form, 1, 0.6
     zt = np.ascontiguousarray(z.T)
@@ -690,3 +697,111 @@ def test_smallest_grid_and_empty_queries():
     assert s(np.empty((0, 2))).shape == (0,)
     assert s(np.empty(0), np.empty(0)).shape == (0, 0)
     assert all(a.shape == (0, 3) for a in s.partials(np.empty((0, 3, 2))))
+
+
+# ---- gridded fields (docs/method.md §11.7) -------------------------------------
+def _exact_field(g, x, y):
+    """The field g = (xf, yf, zf) at (x, y) in exact rational arithmetic
+    (fractions), bilinear on its cell: the reference for the sides."""
+    from fractions import Fraction as Fr
+    xf, yf, zf = g
+    i = min(max(int(np.searchsorted(xf, x, side="right")) - 1, 0), len(xf) - 2)
+    j = min(max(int(np.searchsorted(yf, y, side="right")) - 1, 0), len(yf) - 2)
+    X0, X1, Y0, Y1 = (Fr(float(v)) for v in (xf[i], xf[i + 1], yf[j], yf[j + 1]))
+    X, Y = Fr(float(x)), Fr(float(y))
+    z = [[Fr(float(zf[i + a, j + b])) for b in (0, 1)] for a in (0, 1)]
+    return (z[0][0] * (X1 - X) * (Y1 - Y) + z[1][0] * (X - X0) * (Y1 - Y) +
+            z[0][1] * (X1 - X) * (Y - Y0) + z[1][1] * (X - X0) * (Y - Y0)) / ((X1 - X0) * (Y1 - Y0))
+
+
+def _fields_case():
+    x = np.array([0.0, 0.5, 1.25, 2.0])
+    y = np.array([0.0, 1.0, 1.5, 3.0])
+    rng = np.random.default_rng(7)
+    lo = (np.array([-0.5, 0.75, 2.5]), np.array([-1.0, 1.2, 3.5]),
+          rng.uniform(-1.0, 0.0, (3, 3)))
+    up = (np.array([-0.25, 1.0, 2.25]), np.array([0.0, 2.0, 3.0]),
+          rng.uniform(2.0, 3.0, (3, 3)))
+    z = np.empty((x.size, y.size))
+    for i, xv in enumerate(x):
+        for j, yv in enumerate(y):
+            a, b = float(_exact_field(lo, xv, yv)), float(_exact_field(up, xv, yv))
+            z[i, j] = a + 0.01 if (i + j) % 3 == 0 else (b - 0.01 if (i + j) % 3 == 1
+                                                         else 0.5 * (a + b))
+    return x, y, z, lo, up
+
+
+@pytest.mark.parametrize("form", FORMS)
+def test_grids_values_strictly_between_exact_fields(form):
+    x, y, z, lo, up = _fields_case()
+    try:
+        s = Surface(x, y, z, lower=lo, upper=up, form=form)
+    except TrigsplineError as e:  # the paper and C1 forms may not prove it
+        assert e.name == "TS_ERR_UNPROVEN" and form != "geometric", str(e)
+        return
+    assert s.shape == "grids" and s.certify()
+    assert all(np.array_equal(a, b) for a, b in zip(s.bounds[0], lo))
+    xs, ys = np.linspace(0, 2, 41), np.linspace(0, 3, 41)
+    v = s(xs, ys, grid=True)
+    for a, xv in enumerate(xs):
+        for b, yv in enumerate(ys):
+            w = v[a, b]
+            assert _exact_field(lo, xv, yv) < w < _exact_field(up, xv, yv), (xv, yv, w)
+    # nodes reproduced, pickling rebuilds the same surface
+    assert np.array_equal(s(x, y, grid=True), z)
+    t = pickle.loads(pickle.dumps(s))
+    assert np.array_equal(t(xs, ys, grid=True), v)
+
+
+def test_grids_xarray_field():
+    xr = pytest.importorskip("xarray")
+    x, y, z, lo, up = _fields_case()
+    # dims named y, x (the usual raster order): taken by name
+    da = xr.DataArray(up[2].T, dims=("y", "x"), coords={"x": up[0], "y": up[1]})
+    s1 = Surface(x, y, z, lower=lo, upper=da, form="geometric")
+    s2 = Surface(x, y, z, lower=lo, upper=up, form="geometric")
+    q = np.linspace(0, 2, 9)
+    assert np.array_equal(s1(q, q, grid=True), s2(q, q, grid=True))
+
+
+def test_grids_errors():
+    x, y, z, lo, up = _fields_case()
+    short = (up[0], np.array([0.0, 2.0, 2.5]), up[2])
+    with pytest.raises(TrigsplineError) as e:
+        Surface(x, y, z, lower=lo, upper=short, form="geometric")
+    assert e.value.name == "TS_ERR_BOUND_GRID" and "upper field" in str(e.value)
+    assert "does not cover" in str(e.value)
+    zz = z.copy()
+    zz[1, 1] = float(_exact_field(lo, x[1], y[1]))  # exactly on the lower field
+    if zz[1, 1] == _exact_field(lo, x[1], y[1]):
+        with pytest.raises(TrigsplineError) as e:
+            Surface(x, y, zz, lower=lo, upper=up, form="geometric")
+        assert e.value.name == "TS_ERR_SIDE" and "lower field" in str(e.value)
+        assert e.value.node == (1, 1)
+    with pytest.raises(ValueError):
+        Surface(x, y, z, lower=lo, upper=5.0)
+    with pytest.raises(ValueError):
+        Surface(x, y, z, shape="grids")
+    with pytest.raises(ValueError):
+        Surface(x, y, z, shape="bounds", lower=lo)
+    with pytest.raises(TrigsplineError):
+        Surface(x, y, z, lower=(lo[0], lo[1], lo[2].T[:2]))
+
+
+def test_grids_unproven_names_the_patch():
+    # flat data under a tent-shaped lower field: every node above it, but the
+    # field bulges past the data between them (docs/method.md §11.7)
+    t = np.array([0.0, 1.0, 2.0])
+    tent = np.full((3, 3), -1.0)
+    tent[1, 1] = 0.5
+    with pytest.raises(TrigsplineError) as e:
+        Surface([0.0, 2.0], [0.0, 2.0], np.zeros((2, 2)), lower=(t, t, tent))
+    assert e.value.name == "TS_ERR_UNPROVEN" and e.value.patch == (0, 0)
+    assert "gridded fields" in str(e.value)
+
+
+def test_grids_other_errors_keep_their_sentences():
+    x, y, z, lo, up = _fields_case()
+    with pytest.raises(TrigsplineError) as e:
+        Surface(x, y, z, lower=lo, upper=up, alpha=-1.0)
+    assert e.value.name == "TS_ERR_ALPHA" and "alpha = -1" in str(e.value)

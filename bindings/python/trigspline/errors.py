@@ -29,9 +29,10 @@ class TrigsplineError(ValueError):
         The text (also ``str(err)``), naming the point, interval or query.
     index : int or None
         The point, interval or query it concerns.
-    where : {"point", "interval", "query", "node", "patch", "x", "y", None}
+    where : {"point", "interval", "query", "node", "patch", "x", "y", "lower", "upper", None}
         What ``index`` counts (``"node"``, ``"patch"``, ``"x"``, ``"y"``:
-        surfaces).
+        surfaces; ``"lower"``, ``"upper"``: a surface's gridded field, index
+        0 or 1).
     series : tuple of int or None
         For vector-valued data: the index of the series (``f`` without the
         interpolation axis) that failed.

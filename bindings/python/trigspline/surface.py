@@ -55,6 +55,37 @@ def _plane(value, what):
     return tuple(to_float(v, "%s[%d]" % (what, k)) for k, v in enumerate(items))
 
 
+def _grid(value, what):
+    """(x, y, z) of a gridded field (docs/method.md §11.7), z[i, j] at
+    (x[i], y[j]) as Surface's own z: an xarray DataArray with two coordinate
+    dimensions (named x and y in any order, else the first is x), or a tuple
+    (x, y, z) with z 2-D.  None when value is not grid-like (a number or a
+    plane)."""
+    if value is None or is_scalar(value):
+        return None
+    if hasattr(value, "dims") and hasattr(value, "coords"):
+        if len(value.dims) != 2:
+            raise ValueError("%s: a gridded field needs 2 dimensions, got %d %r"
+                             % (what, len(value.dims), tuple(value.dims)))
+        dims = tuple(value.dims)
+        dx, dy = ("x", "y") if set(dims) == {"x", "y"} else dims
+        for d in (dx, dy):
+            if d not in value.coords:
+                raise ValueError("%s: the dimension %r has no coordinate" % (what, d))
+        x, y, z = value.coords[dx].values, value.coords[dy].values, value.transpose(dx, dy).values
+    elif isinstance(value, (tuple, list)) and len(value) == 3 and np.ndim(value[2]) == 2:
+        x, y, z = value
+    else:
+        return None
+    xa, ya = float_array(x, what + " x", 1), float_array(y, what + " y", 1)
+    za = float_array(z, what + " z")
+    if za.shape != (xa.size, ya.size):
+        raise TrigsplineError(_S.LENGTH, "%s: z has shape %r; a field on %d x values and %d y "
+                              "values needs shape (%d, %d) (z[i, j] at (x[i], y[j]))" % (
+                                  what, za.shape, xa.size, ya.size, xa.size, ya.size))
+    return xa, ya, za
+
+
 def _plane_text(pl):
     p, q, c = pl
     if p == 0 and q == 0:
@@ -70,6 +101,18 @@ def _plane_text(pl):
 
 def _plane_at(pl, x, y):
     return pl[0] * x + pl[1] * y + pl[2]
+
+
+def _field_at(g, x, y):
+    """The bilinear value of field g = (x, y, z) at (x, y) (rounded; for
+    messages)."""
+    gx, gy, gz = g
+    i = min(max(int(np.searchsorted(gx, x, side="right")) - 1, 0), gx.size - 2)
+    j = min(max(int(np.searchsorted(gy, y, side="right")) - 1, 0), gy.size - 2)
+    tx = (x - gx[i]) / (gx[i + 1] - gx[i])
+    ty = (y - gy[j]) / (gy[j + 1] - gy[j])
+    return ((1 - ty) * ((1 - tx) * gz[i, j] + tx * gz[i + 1, j]) +
+            ty * ((1 - tx) * gz[i, j + 1] + tx * gz[i + 1, j + 1]))
 
 
 def _axis_fault(t):
@@ -142,19 +185,26 @@ class Surface:
     (docs/options.md); the defaults are the library's
     (``ts_surface_options_init``).
 
-    shape : {'none', 'positive', 'bounds', 'planes', 'range'}, default inferred
+    shape : {'none', 'positive', 'bounds', 'planes', 'range', 'grids'}, default inferred
         The region (docs/method.md §11.3): ``'positive'`` S >= 0 (zeros in
         the data allowed); ``'bounds'`` constant ``lower <= S <= upper`` (either
         side; the data may touch them, e.g. 0 and 100 for percentages);
         ``'planes'`` ``lower < S < upper`` for planes (sloped planes need
         ``form='geometric'``, where they are exact); ``'range'``
-        ``min(z) <= S <= max(z)`` (no overshoot); ``'none'``: no promise.
+        ``min(z) <= S <= max(z)`` (no overshoot); ``'grids'``
+        ``lower(x, y) < S < upper(x, y)`` for gridded fields (docs/method.md
+        §11.7); ``'none'``: no promise.
         Left out, it follows from the bounds: ``lower=0`` alone
         ``'positive'``, other constants ``'bounds'``, a sloped plane
         ``'planes'``, neither ${shape}.
-    lower, upper : float or (p, q, c), default none
+    lower, upper : float, (p, q, c) or a gridded field, default none
         The bounds of ``'bounds'`` (numbers) and ``'planes'`` (a number c or
-        the plane z = p x + q y + c).
+        the plane z = p x + q y + c); for ``'grids'`` (inferred) a field on
+        a grid of its own, bilinear between its nodes: ``(xf, yf, zf)`` with
+        ``zf[i, j]`` at ``(xf[i], yf[j])``, or an xarray ``DataArray`` with
+        two coordinate dimensions (named ``x`` and ``y``, else the first is
+        x).  Its grid must cover the surface's (it is not extended); every
+        node must be strictly between the fields (decided exactly).
     form : {'paper', 'c1', 'geometric'}, default ${form}
         docs/method.md §11.2: the paper form is continuous; ``'c1'`` and
         ``'geometric'`` are C¹, the geometric form reproduces planes (and
@@ -231,7 +281,17 @@ class Surface:
             ext = "error" if bounds_error else "nan"
         zero_twist = _options.flag("surface", "zero_twist", zero_twist)
         form = _options.enum("surface", "form", form, FORMS)
-        lo, up = _plane(lower, "lower"), _plane(upper, "upper")
+        glo, gup = _grid(lower, "lower"), _grid(upper, "upper")
+        if glo is not None or gup is not None:
+            for what, g, v in (("lower", glo, lower), ("upper", gup, upper)):
+                if g is None and v is not None:
+                    raise ValueError("%s: with a gridded field on the other side, give a field "
+                                     "here too (or None)" % what)
+            if shape is None:
+                shape = "grids"
+            lo = up = None
+        else:
+            lo, up = _plane(lower, "lower"), _plane(upper, "upper")
         shp = _options.name(SURFACE_SHAPES, _options.infer_shape(shape, lo, up, "surface"),
                             "shape")
         if shape is None and shp == "positive":
@@ -254,7 +314,18 @@ class Surface:
                                  "and set alpha and margin instead" % shp)
             v = to_float(_options.option("surface", name, value), name)
             opts[name] = kwargs[name] = v
-        if shp in ("bounds", "planes"):
+        if shp == "grids":
+            if glo is None and gup is None:
+                raise ValueError("shape='grids' needs lower= and/or upper= as gridded fields: "
+                                 "(x, y, z) or an xarray DataArray")
+            for key, g in (("lower", glo), ("upper", gup)):
+                if g is not None:
+                    zt = g[2].T if g[2].T.flags.c_contiguous else np.ascontiguousarray(g[2].T)
+                    opts[key + "_grid"] = (g[0], g[1], zt)
+                    kwargs[key] = (g[0], g[1], g[2])
+        elif glo is not None or gup is not None:
+            raise ValueError("gridded fields go with shape='grids', not %r" % shp)
+        elif shp in ("bounds", "planes"):
             if lo is None and up is None:
                 raise ValueError("shape=%r needs lower= and/or upper=" % shp)
             for what, pl in (("lower", lo), ("upper", up)):
@@ -285,10 +356,13 @@ class Surface:
         self._mode = _core.SURF_ERROR if ext == "error" else _core.SURF_FILL
         self._kwargs = kwargs
         self._shape = shp
+        self._fields = (glo, gup)
         if shp == "positive":
             self._bounds = ((0.0, 0.0, 0.0), None)
         elif shp == "range":
             self._bounds = ((0.0, 0.0, float(np.min(za))), (0.0, 0.0, float(np.max(za))))
+        elif shp == "grids":
+            self._bounds = (glo, gup)
         else:
             self._bounds = (lo, up)
         zt = za.T if za.T.flags.c_contiguous else np.ascontiguousarray(za.T)
@@ -304,7 +378,7 @@ class Surface:
         st, index, w = e.args
         where = WHERE_NAMES[w] if 0 <= w < len(WHERE_NAMES) else None
         base = strerror(st)
-        lo, up = self._bounds
+        lo, up = self._bounds if self._shape != "grids" else (None, None)
         if st == _S.TOO_FEW:
             return TrigsplineError(st, "too few grid values: %d x values and %d y values; a "
                                    "surface needs at least 2 of each" % (x.size, y.size))
@@ -332,6 +406,13 @@ class Surface:
                           "for the spacing)" % (loc, num(v))
             elif st == _S.NEGATIVE:
                 msg = "%s has z = %s < 0: the positive scheme needs z >= 0" % (loc, num(v))
+            elif st == _S.SIDE and self._shape == "grids":
+                glo, gup = self._fields
+                side = "lower" if glo is not None and (gup is None or v <= _field_at(glo, xi, yj)) \
+                    else "upper"
+                msg = "%s (z = %s) is not strictly %s the %s field, whose value there is %s" % (
+                    loc, num(v), "above" if side == "lower" else "below", side,
+                    num(_field_at(glo if side == "lower" else gup, xi, yj)))
             elif st == _S.SIDE:
                 if lo is not None and (v < _plane_at(lo, xi, yj) or
                                        (self._shape == "planes" and
@@ -361,9 +442,34 @@ class Surface:
             if st == _S.NONFINITE:
                 msg = "%s: a control value overflows (values too large for the shape " \
                       "parameter)" % loc
+            elif st == _S.UNPROVEN and self._shape == "grids":
+                msg = "%s: not proven strictly between the gridded fields, even with the " \
+                      "shape parameters raised tenfold 12 times (a field may bulge past the " \
+                      "data between their nodes)" % loc
             else:
                 msg = "%s: %s" % (loc, base)
             return TrigsplineError(st, msg, (i, j), "patch", patch=(i, j))
+        if st == _S.BOUND_GRID:
+            side = "upper" if index == 1 else "lower"
+            g = self._fields[1 if index == 1 else 0]
+            if g is not None:
+                gx, gy, _ = g
+                msg = "the %s field on [%s, %s] x [%s, %s]" % (
+                    side, num(gx[0]), num(gx[-1]), num(gy[0]), num(gy[-1])) \
+                    if gx.size and gy.size else "the %s field" % side
+                if gx.size >= 2 and gy.size >= 2 and _axis_fault(gx) is None and \
+                        _axis_fault(gy) is None and not (gx[0] <= x[0] and x[-1] <= gx[-1] and
+                                                         gy[0] <= y[0] and y[-1] <= gy[-1]):
+                    msg += " does not cover the surface's grid [%s, %s] x [%s, %s] (a field " \
+                           "is not extended)" % (num(x[0]), num(x[-1]), num(y[0]), num(y[-1]))
+                else:
+                    msg += ": at least 2 x 2 nodes, finite strictly increasing coordinates and " \
+                           "finite values of at most 2**1022 in magnitude are needed"
+                return TrigsplineError(st, "%s: %s" % (msg, base), index, side)
+        if st == _S.LINES and self._shape == "grids":
+            return TrigsplineError(st, "the upper field is not above the lower field everywhere "
+                                   "on the surface's grid (by more than their rounding): %s"
+                                   % base)
         detail = {_S.ALPHA: "alpha = %s must be > 0" % num(opts.get("alpha")),
                   _S.BETA: "beta = %s must be >= 0" % num(opts.get("beta")),
                   _S.MARGIN: "margin = %s must be > 0" % num(opts.get("margin")),
@@ -559,6 +665,10 @@ class Surface:
         bool, or (bool, ndarray)
         """
         lo, up = _plane(lower, "lower"), _plane(upper, "upper")
+        if lo is None and up is None and self._shape == "grids":
+            rep = self.report()  # against the surface's own fields (§11.7)
+            ok = bool(rep["certified"].all())
+            return (ok, rep) if report else ok
         if lo is None and up is None:
             lo, up = self._bounds
             if lo is None and up is None:
@@ -638,7 +748,9 @@ class Surface:
 
     @property
     def bounds(self):
-        """(lower, upper) of the scheme as planes (p, q, c), or None."""
+        """(lower, upper) of the scheme as planes (p, q, c), or None; for
+        ``shape='grids'`` the fields as arrays (x, y, z), z[i, j] at
+        (x[i], y[j])."""
         return self._bounds
 
     @property
