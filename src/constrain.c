@@ -442,7 +442,7 @@ static void seg_of(const ts_spline *sp, size_t i, seg *g)
     g->i = i;
     ts__B(sp, i, g->B);
     g->kap = sp->kappa[i];
-    g->h = sp->h[i];
+    g->h = ts__h(sp, i);
     g->xi = sp->x[i];
 }
 
