@@ -133,7 +133,7 @@ struct ts_surface {
     double *x, *y;                   /* nx+1, ny+1 */
     double *z, *p, *q, *r;           /* nodes: value, ∂z/∂x, ∂z/∂y, twist */
     double *ax, *ay;                 /* nx, ny */
-    double *B;                       /* 16 per patch: B[16*patch + 4*k + l] */
+    /* the control nets are derived per patch (ts__surf_patch), not stored */
 };
 
 /* ==== L0 ============================================================ */
@@ -807,18 +807,26 @@ void ts__surf_basis_int(const double *t, const double *a, size_t i, ts_form form
  * node's intervals) in the C¹ form (docs/method.md §11.2). */
 double ts__surf_k(const double *t, const double *a, size_t n, size_t i, size_t node,
                   ts_form form);
-/* Control nets of every patch from z, p, q, r, ax, ay (docs/method.md §11.1). */
-void ts__surf_net(ts_surface *s);
+/* The control net of patch (i, j) from z, p, q, r, ax, ay (docs/method.md
+ * §11.1): B[4k + l]. */
+void ts__surf_patch(const ts_surface *s, size_t i, size_t j, double B[16]);
+/* Its parts: u[0], u[1] the k (ts__surf_k) of interval i along x (dir 0)
+ * or y (dir 1) at its two end nodes; the net from those of i and j (so
+ * that a caller evaluating many patches of one row or column forms them
+ * once). */
+void ts__surf_ks(const ts_surface *s, int dir, size_t i, double u[2]);
+void ts__surf_patch_k(const ts_surface *s, size_t i, size_t j, const double ux[2],
+                      const double uy[2], double B[16]);
 /* p x + q y + c to about one rounding of the result (error-free products
  * and sums, docs/method.md §11.3); *err (if not NULL) bounds its error. */
 double ts__surf_plane_at(const ts_plane *pl, double x, double y, double *err);
-/* Control gaps of patch (i, j) to a plane in local coordinates: G[16] =
+/* Control gaps of patch (i, j) with net B to a plane in local coordinates: G[16] =
  * sign (B − plane at the control abscissae), the plane taken at the patch's
  * corner and its rise to the abscissae; *guard the rounding of forming them
  * and of where evaluation places a point (0 for a constant plane: then the
  * signs are exact). */
-void ts__surf_gaps(const ts_surface *s, size_t i, size_t j, const ts_plane *pl, int sign,
-                   double G[16], double *guard);
+void ts__surf_gaps(const ts_surface *s, size_t i, size_t j, const double B[16], const ts_plane *pl,
+                   int sign, double G[16], double *guard);
 /* Are all 16 gaps >= guard (nonzero corners: > guard)?  Proves the patch on
  * the plane's side (docs/method.md §11.3). */
 int ts__surf_gaps_inside(const double G[16], double guard);

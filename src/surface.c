@@ -197,9 +197,10 @@ static ts_status line_slopes(const ts_surface *s, ts_slopes method, int dir, con
     return TS_OK;
 }
 
-/* The same without the check (twists: their sum is checked). */
+/* The same without the check (twists: their sum is checked); mean: d
+ * becomes the mean 0.5 (d + slope) of what it holds and the slopes. */
 static void line_slopes_raw(const ts_surface *s, ts_slopes method, int dir, const double *v,
-                            double *d, double *tmp)
+                            double *d, double *tmp, int mean)
 {
     size_t np = s->nx + 1, nq = s->ny + 1;
     size_t lines = dir ? np : nq, len = dir ? nq : np;
@@ -209,8 +210,10 @@ static void line_slopes_raw(const ts_surface *s, ts_slopes method, int dir, cons
         for (size_t k = 0; k < len; k++)
             f[k] = v[dir ? k * np + L : L * np + k];
         ts__slopes_range(method, t, f, len, g, 0, len);
-        for (size_t k = 0; k < len; k++)
-            d[dir ? k * np + L : L * np + k] = g[k];
+        for (size_t k = 0; k < len; k++) {
+            double *o = &d[dir ? k * np + L : L * np + k];
+            *o = mean ? 0.5 * (*o + g[k]) : g[k];
+        }
     }
 }
 
@@ -333,14 +336,15 @@ static void clamp_twists(ts_surface *s)
     }
 }
 
-/* Are the control gaps of patch c inside every side (docs/method.md §11.3)? */
-static int patch_inside(const ts_surface *s, size_t c)
+/* Are the control gaps of patch c with net B inside every side
+ * (docs/method.md §11.3)? */
+static int patch_inside(const ts_surface *s, size_t c, const double B[16])
 {
     for (int side = 0; side < 2; side++) {
         if (!(side ? s->has_upper : s->has_lower))
             continue;
         double G[16], guard;
-        ts__surf_gaps(s, c % s->nx, c / s->nx, side ? &s->upper : &s->lower, 1 - 2 * side, G,
+        ts__surf_gaps(s, c % s->nx, c / s->nx, B, side ? &s->upper : &s->lower, 1 - 2 * side, G,
                       &guard);
         if (!ts__surf_gaps_inside(G, guard))
             return 0;
@@ -348,11 +352,13 @@ static int patch_inside(const ts_surface *s, size_t c)
     return 1;
 }
 
-/* docs/method.md §11.6: where rounding leaves a patch's control values on or
- * across a side, raise a^x and a^y of its column and row tenfold (at most
- * REPAIR_ROUNDS times, a <= 1e300), clamp the twists again and rebuild the
- * net, until every patch is proven; else TS_ERR_INFEASIBLE at the first
- * patch that is not.  flag: nx + ny scratch doubles. */
+/* docs/method.md §11.6: every patch's net must be finite (TS_ERR_NONFINITE
+ * at the first that is not); where rounding leaves a patch's control values
+ * on or across a side, raise a^x and a^y of its column and row tenfold (at
+ * most REPAIR_ROUNDS times, a <= 1e300) and clamp the twists again, until
+ * every patch is proven; else TS_ERR_INFEASIBLE at the first patch that is
+ * not.  Each net is formed once per round (ts__surf_patch).  flag: nx + ny
+ * scratch doubles. */
 #define REPAIR_ROUNDS 12
 static ts_status repair(ts_surface *s, double *flag, ts_error *err)
 {
@@ -361,11 +367,19 @@ static ts_status repair(ts_surface *s, double *flag, ts_error *err)
         size_t bad = SIZE_MAX;
         for (size_t k = 0; k < nx + ny; k++)
             flag[k] = 0.0;
-        for (size_t c = 0; c < nx * ny; c++)
-            if (!patch_inside(s, c)) {
-                bad = bad == SIZE_MAX ? c : bad;
-                flag[c % nx] = flag[nx + c / nx] = 1.0;
+        for (size_t c = 0; c < nx * ny; c++) {
+            double B[16];
+            ts__surf_patch(s, c % nx, c / nx, B);
+            for (size_t k = 0; k < 16; k++)
+                if (!isfinite(B[k]))
+                    return ts__fail(err, TS_ERR_NONFINITE, c, TS_WHERE_INTERVAL);
+            if (bad == SIZE_MAX || flag[c % nx] == 0.0 || flag[nx + c / nx] == 0.0) {
+                if (!patch_inside(s, c, B)) {
+                    bad = bad == SIZE_MAX ? c : bad;
+                    flag[c % nx] = flag[nx + c / nx] = 1.0;
+                }
             }
+        }
         if (bad == SIZE_MAX)
             return TS_OK;
         if (round == REPAIR_ROUNDS)
@@ -379,11 +393,6 @@ static ts_status repair(ts_surface *s, double *flag, ts_error *err)
             }
         }
         clamp_twists(s);
-        ts__surf_net(s);
-        for (size_t c = 0; c < nx * ny; c++)
-            for (size_t k = 0; k < 16; k++)
-                if (!isfinite(s->B[16 * c + k]))
-                    return ts__fail(err, TS_ERR_NONFINITE, c, TS_WHERE_INTERVAL);
     }
 }
 
@@ -414,7 +423,7 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
     ts_status st = check_options(o, err);
     if (st != TS_OK)
         return st;
-    /* 24 (nx+1)(ny+1) + 4 (nx + ny + 2) doubles <= 32 (nx+1)(ny+1) */
+    /* 4 (nx+1)(ny+1) + 6 max(nx+1, ny+1) doubles <= 32 (nx+1)(ny+1) */
     if (ny_points > SIZE_MAX / 32 / sizeof(double) / nx_points)
         return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
     if ((st = check_axis(x, nx_points, err)) != TS_OK ||
@@ -422,7 +431,7 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
         return st;
     size_t nx = nx_points - 1, ny = ny_points - 1, nn = nx_points * ny_points;
     size_t len = nx_points > ny_points ? nx_points : ny_points;
-    size_t total = nx_points + ny_points + 4 * nn + nx + ny + 16 * nx * ny + 2 * len + nn;
+    size_t total = nx_points + ny_points + 4 * nn + nx + ny + 2 * len;
     ts_surface *s = ts__calloc(1, sizeof *s);
     double *blk = s ? ts__alloc_block(total * sizeof(double)) : NULL;
     if (!blk) {
@@ -441,8 +450,7 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
     s->r = s->q + nn;
     s->ax = s->r + nn;
     s->ay = s->ax + nx;
-    s->B = s->ay + ny;
-    double *tmp = s->B + 16 * nx * ny, *tmp2 = tmp + 2 * len;
+    double *tmp = s->ay + ny;
     memcpy(s->x, x, nx_points * sizeof(double));
     memcpy(s->y, y, ny_points * sizeof(double));
     if ((st = check_nodes(s, o, z, err)) != TS_OK)
@@ -456,10 +464,9 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
             s->r[n] = 0.0;
     } else {
         /* r = (∂q/∂x + ∂p/∂y)/2: symmetric under transposition */
-        line_slopes_raw(s, o->slopes, 0, s->q, s->r, tmp);
-        line_slopes_raw(s, o->slopes, 1, s->p, tmp2, tmp);
+        line_slopes_raw(s, o->slopes, 0, s->q, s->r, tmp, 0);
+        line_slopes_raw(s, o->slopes, 1, s->p, s->r, tmp, 1);
         for (size_t n = 0; n < nn; n++) {
-            s->r[n] = 0.5 * (s->r[n] + tmp2[n]);
             if (!isfinite(s->r[n])) {
                 st = ts__fail(err, TS_ERR_NONFINITE, n, TS_WHERE_POINT);
                 goto fail;
@@ -477,13 +484,6 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
             goto fail;
         clamp_twists(s);
     }
-    ts__surf_net(s);
-    for (size_t c = 0; c < nx * ny; c++)
-        for (size_t k = 0; k < 16; k++)
-            if (!isfinite(s->B[16 * c + k])) {
-                st = ts__fail(err, TS_ERR_NONFINITE, c, TS_WHERE_INTERVAL);
-                goto fail;
-            }
     if ((st = repair(s, tmp, err)) != TS_OK)
         goto fail;
     s->certified = o->shape != TS_SURFACE_NONE;
@@ -524,7 +524,7 @@ static void report_patch(const ts_surface *s, size_t i, size_t j, const ts_plane
     rep->y1 = s->y[j + 1];
     rep->ax = s->ax[i];
     rep->ay = s->ay[j];
-    memcpy(rep->B, s->B + 16 * (j * s->nx + i), sizeof rep->B);
+    ts__surf_patch(s, i, j, rep->B);
     rep->has_lower = lower != NULL;
     rep->has_upper = upper != NULL;
     int ok = lower || upper;

@@ -121,8 +121,9 @@ static double place(const double *knots, const double *a, size_t i, ts_form form
 int ts__surf_certify_patch(const ts_surface *s, size_t i, size_t j, const ts_plane *pl,
                            int sign, double *proven, double *sampled, double *ax, double *ay)
 {
-    double G[16], guard;
-    ts__surf_gaps(s, i, j, pl, sign, G, &guard);
+    double B[16], G[16], guard;
+    ts__surf_patch(s, i, j, B);
+    ts__surf_gaps(s, i, j, B, pl, sign, G, &guard);
     int lin = s->form != TS_FORM_GEOMETRIC && (pl->p != 0.0 || pl->q != 0.0);
     bb_ctx c;
     c.kx = lin ? sign * pl->p * (s->x[i + 1] - s->x[i]) / TS_HALF_PI : 0.0;
