@@ -301,13 +301,23 @@ static ts_status scheme_a(ts_surface *s, const ts_surface_options *o, int dir, t
 }
 
 /* docs/method.md §11.3: clamp every twist so that on each of its patches the
- * inner control gap keeps at least half of what the edges leave. */
-static void clamp_twists(ts_surface *s)
+ * inner control gap keeps at least half of what the edges leave.  k: nx + ny
+ * scratch doubles (each interval's k, formed once). */
+static void clamp_twists(ts_surface *s, double *k)
 {
     size_t np = s->nx + 1, nn = np * (s->ny + 1);
+    double *kx = k, *ky = k + s->nx;
+    for (size_t i = 0; i < s->nx; i++)
+        kx[i] = ts__geo_k(s->x[i + 1] - s->x[i], s->ax[i]);
+    for (size_t j = 0; j < s->ny; j++)
+        ky[j] = ts__geo_k(s->y[j + 1] - s->y[j], s->ay[j]);
     for (size_t n = 0; n < nn; n++) {
         size_t i = n % np, j = n / np;
         double lo = -(double)INFINITY, hi = (double)INFINITY;
+        double g[2] = {0.0, 0.0}, pp[2] = {0.0, 0.0}, qq[2] = {0.0, 0.0};
+        for (int side = 0; side < 2; side++) /* the node's gaps, the same for its patches */
+            if (side ? s->has_upper : s->has_lower)
+                node_gap(s, n, side, &g[side], &pp[side], &qq[side]);
         for (int cx = 0; cx < 2; cx++) {
             for (int cy = 0; cy < 2; cy++) {
                 /* patch (i - cx, j - cy); the node is its corner (cx, cy) */
@@ -315,15 +325,12 @@ static void clamp_twists(ts_surface *s)
                     (!cy && j == s->ny))
                     continue;
                 size_t pi = i - (size_t)cx, pj = j - (size_t)cy;
-                double ux = ts__geo_k(s->x[pi + 1] - s->x[pi], s->ax[pi]);
-                double uy = ts__geo_k(s->y[pj + 1] - s->y[pj], s->ay[pj]);
+                double ux = kx[pi], uy = ky[pj];
                 double sx = cx ? -1.0 : 1.0, sy = cy ? -1.0 : 1.0;
                 for (int side = 0; side < 2; side++) {
                     if (!(side ? s->has_upper : s->has_lower))
                         continue;
-                    double g, pp, qq;
-                    node_gap(s, n, side, &g, &pp, &qq);
-                    double F = g + sx * ux * pp + sy * uy * qq;
+                    double F = g[side] + sx * ux * pp[side] + sy * uy * qq[side];
                     double c = (side ? -1.0 : 1.0) * sx * sy * ux * uy; /* c r >= -F/2 */
                     if (c > 0.0)
                         lo = fmax(lo, -0.5 * F / c);
@@ -392,7 +399,7 @@ static ts_status repair(ts_surface *s, double *flag, ts_error *err)
                 *a *= 10.0;
             }
         }
-        clamp_twists(s);
+        clamp_twists(s, flag); /* the flags are spent */
     }
 }
 
@@ -482,7 +489,7 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
         touch_slopes(s);
         if ((st = scheme_a(s, o, 0, err)) != TS_OK || (st = scheme_a(s, o, 1, err)) != TS_OK)
             goto fail;
-        clamp_twists(s);
+        clamp_twists(s, tmp);
     }
     if ((st = repair(s, tmp, err)) != TS_OK)
         goto fail;
