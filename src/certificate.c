@@ -473,22 +473,23 @@ TS_INLINE int geo_proven(const double *restrict x, const double *restrict f,
 }
 
 /* 1 if geo_proven passes every interval of [i0, i1) (a flag, so that it
- * vectorises; one loop per kind, a constant in each). */
-#define TS_GEO_ALL_PROVEN(name, kind)                                                            \
+ * vectorises; one loop per kind and set of lines, constants in each). */
+#define TS_GEO_ALL_PROVEN(name, kind, hl, hu)                                                    \
     TS_VECTOR_LOOP static int name(const double *restrict x, const double *restrict f,          \
                                    const double *restrict d, const double *restrict al,         \
                                    const double *restrict be, const double *restrict kappa,     \
-                                   size_t i0, size_t i1, const double *restrict lc, int hl,     \
-                                   int hu)                                                      \
+                                   size_t i0, size_t i1, const double *restrict lc)             \
     {                                                                                            \
         int ok = 1;                                                                              \
         for (size_t i = i0; i < i1; i++)                                                         \
             ok &= geo_proven(x, f, d, al, be, kappa, i, kind, lc, hl, hu);                       \
         return ok;                                                                               \
     }
-TS_GEO_ALL_PROVEN(geo_all_positive, 0)
-TS_GEO_ALL_PROVEN(geo_all_monotone, 1)
-TS_GEO_ALL_PROVEN(geo_all_lines, 2)
+TS_GEO_ALL_PROVEN(geo_all_positive, 0, 0, 0)
+TS_GEO_ALL_PROVEN(geo_all_monotone, 1, 0, 0)
+TS_GEO_ALL_PROVEN(geo_all_lower, 2, 1, 0)
+TS_GEO_ALL_PROVEN(geo_all_upper, 2, 0, 1)
+TS_GEO_ALL_PROVEN(geo_all_lines, 2, 1, 1)
 
 /* ts__skip_proven in the geometric form (kind as geo_proven): blocks of
  * TS_BOUND_BLOCK at once, as skip_lines. */
@@ -496,13 +497,17 @@ static size_t skip_geo(const ts_spline *sp, size_t i, size_t i1, int kind)
 {
     const double lc[4] = {sp->lower.m, sp->lower.c, sp->upper.m, sp->upper.c};
     int hl = sp->has_lower != 0, hu = sp->has_upper != 0;
+    int (*all)(const double *restrict, const double *restrict, const double *restrict,
+               const double *restrict, const double *restrict, const double *restrict, size_t,
+               size_t, const double *restrict) =
+        kind == 0 ? geo_all_positive
+        : kind == 1 ? geo_all_monotone
+        : hl && hu  ? geo_all_lines
+        : hl        ? geo_all_lower
+                    : geo_all_upper;
     while (i < i1) {
         size_t k1 = i1 - i > TS_BOUND_BLOCK ? i + TS_BOUND_BLOCK : i1;
-        int (*all)(const double *restrict, const double *restrict, const double *restrict,
-                   const double *restrict, const double *restrict, const double *restrict, size_t,
-                   size_t, const double *restrict, int, int) =
-            kind == 0 ? geo_all_positive : kind == 1 ? geo_all_monotone : geo_all_lines;
-        if (!all(sp->x, sp->f, sp->d, sp->alpha, sp->beta, sp->kappa, i, k1, lc, hl, hu)) {
+        if (!all(sp->x, sp->f, sp->d, sp->alpha, sp->beta, sp->kappa, i, k1, lc)) {
             while (i + 1 < k1 &&
                    geo_proven(sp->x, sp->f, sp->d, sp->alpha, sp->beta, sp->kappa, i, kind, lc, hl, hu))
                 i++;
