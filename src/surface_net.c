@@ -134,7 +134,8 @@ void ts__surf_ks(const ts_surface *s, int dir, size_t i, double u[2])
     const double *t = dir ? s->y : s->x, *a = dir ? s->ay : s->ax;
     size_t n = dir ? s->ny : s->nx;
     u[0] = ts__surf_k(t, a, n, i, i, s->form);
-    u[1] = ts__surf_k(t, a, n, i, i + 1, s->form);
+    /* the same at both ends but in the C¹ form (its neighbours' a) */
+    u[1] = s->form == TS_FORM_C1 ? ts__surf_k(t, a, n, i, i + 1, s->form) : u[0];
 }
 
 void ts__surf_patch_k(const ts_surface *s, size_t i, size_t j, const double ux[2],

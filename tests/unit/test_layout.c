@@ -109,7 +109,7 @@ static void test_geo_controls(void)
         CHECK(s->form == TS_FORM_GEOMETRIC && s->b1 == NULL && s->b2 == NULL);
         long bad = 0;
         for (size_t i = 0; i < s->n; i++) {
-            double B[4], X[4], a;
+            double B[4], X[4], a = 0.0;
             CHECK(ts_spline_control(s, i, B, X) == TS_OK && ts_spline_a(s, i, &a) == TS_OK);
             double h = s->x[i + 1] - s->x[i], kk = 2.0 / (3.0 * TH_PI) * h / a;
             const double *d = ts_spline_slopes(s);
