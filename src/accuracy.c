@@ -154,7 +154,7 @@ ts_status ts_spline_error_bound(const ts_spline *s, double fprime_max, double fs
     int geo = form->geometric;
     double worst = 0.0, prev_key[3] = {(double)NAN, (double)NAN, (double)NAN}, prev2 = 0.0;
     for (size_t i = 0; i < n; i++) {
-        double h = s->h[i], aL, aR;
+        double h = ts__h(s, i), aL, aR;
         form->ends_a(s, i, &aL, &aR); /* C¹: d̂ = d / max(a_{j−1}, a_j), docs/method.md §3 */
         double kl = ts__geo_k(1.0, aL), kr = ts__geo_k(1.0, aR); /* κ: k_i per unit width */
         bound_fn f1 = {geo, 1, kl, kr, fprime_max, fabs(s->d[i]), fabs(s->d[i + 1])};

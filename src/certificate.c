@@ -52,7 +52,7 @@ TS_INLINE double local_guard(double eb, double bmax, double Li, double am, doubl
  * ≤ u(1+u)(2(|e1| + |e2| + |e|) + |v|) < ε(...) (u = ε/2); *err is twice
  * that, plus 4·2^-1074 for a subnormal e.  Overflow gives NaN/Inf: never
  * above *err. */
-static double ctl_gap(double Y, double X, double m, double c, double sg, double *err)
+TS_INLINE double ctl_gap(double Y, double X, double m, double c, double sg, double *err)
 {
     double p = m * X, e = fma(m, X, -p);
     double s1 = Y - p, z1 = s1 - Y, e1 = (Y - (s1 - z1)) + (-p - z1);
@@ -78,12 +78,12 @@ static double ctl_gap(double Y, double X, double m, double c, double sg, double 
  *    rounding of h = fl(x_{i+1} − x_i) from all G_l;
  *  - Y's own rounding (a few ulps of |Y|) is not covered: as before, knot
  *    gaps of a few ulps are certified. */
-static void geo_local_gaps(const ts_spline *sp, size_t i, const double B[4], const double X[4],
-                           const ts_line *ln, int sign, double G[4], double err[4])
+TS_INLINE void geo_gaps_core(const double B[4], const double X[4], double x0, double x1, double m,
+                             double c, double sg, double G[4], double err[4])
 {
-    double sg = sign > 0 ? 1.0 : -1.0, m = ln->m, h = sp->h[i], mh = m * h;
+    double h = x1 - x0, mh = m * h;
     for (int l = 0; l < 4; l++) {
-        double e0, g0 = ctl_gap(B[l], sp->x[i], m, ln->c, sg, &e0);
+        double e0, g0 = ctl_gap(B[l], x0, m, c, sg, &e0);
         double t = mh * X[l];
         G[l] = g0 - sg * t;
         err[l] = e0 + 4.0 * TM_EPS * fabs(mh) + TM_EPS * fabs(G[l]);
@@ -91,11 +91,32 @@ static void geo_local_gaps(const ts_spline *sp, size_t i, const double B[4], con
     /* h = fl(x_{i+1} − x_i) may differ from the true width (rarely: the
      * difference is exact when the knots are within a factor 2): measured
      * from the right end the curve sits that much aside */
-    double eh = ts__width_error(sp->x[i], sp->x[i + 1], h);
+    double eh = ts__width_error(x0, x1, h);
     for (int l = 0; l < 4; l++)
         G[l] -= fabs(m) * eh * (1.0 + 2.0 * TM_EPS);
     G[1] -= 12.0 * TM_EPS * fabs(mh);
     G[2] -= 12.0 * TM_EPS * fabs(mh);
+}
+
+static void geo_local_gaps(const ts_spline *sp, size_t i, const double B[4], const double X[4],
+                           const ts_line *ln, int sign, double G[4], double err[4])
+{
+    geo_gaps_core(B, X, sp->x[i], sp->x[i + 1], ln->m, ln->c, sign > 0 ? 1.0 : -1.0, G, err);
+}
+
+/* The geometric form's hull proof against one line (m, c; sg = +1 lower,
+ * −1 upper): every control gap above its rounding, or >= 0 where an end
+ * touches a constant line (docs/method.md §5.8).  Branch-free. */
+TS_INLINE int geo_hull(const double B[4], const double X[4], double x0, double x1, double m,
+                       double c, double sg)
+{
+    int touch = (m == 0.0) & ((B[0] == c) | (B[3] == c));
+    double G[4], err[4];
+    geo_gaps_core(B, X, x0, x1, m, c, sg, G, err);
+    int ok = 1;
+    for (int l = 0; l < 4; l++) /* m = 0: G_l = ±fl(B_l − c), its sign exact */
+        ok &= (G[l] > err[l]) | (touch & (G[l] >= 0.0));
+    return ok;
 }
 
 /* docs/method.md §5.6 item 8, paper and C¹ forms: S >= min B_l (§2) and the
@@ -143,17 +164,10 @@ int ts__hull_inside(const ts_spline *sp, size_t i, const double B[4], const doub
         for (int l = 0; l < 4; l++)
             C[l] = sign > 0 ? B[l] - ln->c : ln->c - B[l];
         return ((ln->m == 0.0) & const_line_proof(C)) |
-               line_bound(B[0], B[1], B[2], B[3], sp->x[i], sp->x[i + 1], sp->h[i], ln->m, ln->c,
+               line_bound(B[0], B[1], B[2], B[3], sp->x[i], sp->x[i + 1], ts__h(sp, i), ln->m, ln->c,
                           sign > 0 ? 1.0 : -1.0);
     }
-    /* a constant line that an end touches (docs/method.md §5.8) */
-    int touch = ln->m == 0.0 && (B[0] == ln->c || B[3] == ln->c);
-    double G[4], err[4];
-    geo_local_gaps(sp, i, B, X, ln, sign, G, err);
-    int ok = 1;
-    for (int l = 0; l < 4; l++) /* m = 0: G_l = ±fl(B_l − c), its sign exact */
-        ok = ok && (G[l] > err[l] || (touch && G[l] >= 0.0));
-    return ok;
+    return geo_hull(B, X, sp->x[i], sp->x[i + 1], ln->m, ln->c, sign > 0 ? 1.0 : -1.0);
 }
 
 double ts__gap_segment(const double B[4], double xi, double h, const ts_line *ln, int sign,
@@ -187,7 +201,7 @@ double ts__gap_segment(const double B[4], double xi, double h, const ts_line *ln
 double ts__gap_ctl(const ts_spline *sp, size_t i, const double B[4], const double *X,
                    const ts_line *ln, int sign, double *at, double *guard)
 {
-    double xi = sp->x[i], h = sp->h[i];
+    double xi = sp->x[i], h = ts__h(sp, i);
     if (!X) {
         double theta, t;
         double g = ts__gap_segment(B, xi, h, ln, sign, &theta, &t, guard, NULL);
@@ -388,24 +402,24 @@ TS_VECTOR_LOOP static int all_proven_positive(const double *restrict f,
  * paper and C¹ forms): ts__check_ctl's hull proof of every line, which
  * passes the interval without a gap. */
 TS_INLINE int lines_bound(const double *restrict f, const double *restrict b1,
-                          const double *restrict b2, const double *restrict x,
-                          const double *restrict h, size_t i, const double lc[4], int hl, int hu)
+                          const double *restrict b2, const double *restrict x, size_t i,
+                          const double lc[4], int hl, int hu)
 {
-    double B0 = f[i], B1 = b1[i], B2 = b2[i], B3 = f[i + 1];
-    return ((1 - hl) | line_bound(B0, B1, B2, B3, x[i], x[i + 1], h[i], lc[0], lc[1], 1.0)) &
-           ((1 - hu) | line_bound(B0, B1, B2, B3, x[i], x[i + 1], h[i], lc[2], lc[3], -1.0));
+    double B0 = f[i], B1 = b1[i], B2 = b2[i], B3 = f[i + 1], h = x[i + 1] - x[i];
+    return ((1 - hl) | line_bound(B0, B1, B2, B3, x[i], x[i + 1], h, lc[0], lc[1], 1.0)) &
+           ((1 - hu) | line_bound(B0, B1, B2, B3, x[i], x[i + 1], h, lc[2], lc[3], -1.0));
 }
 
 /* 1 if lines_bound passes every interval of [i0, i1) (a flag, so that it
  * vectorises). */
 TS_VECTOR_LOOP static int all_bound(const double *restrict f, const double *restrict b1,
                                     const double *restrict b2, const double *restrict x,
-                                    const double *restrict h, size_t i0, size_t i1,
-                                    const double *restrict lc, int hl, int hu)
+                                    size_t i0, size_t i1, const double *restrict lc, int hl,
+                                    int hu)
 {
     int ok = 1;
     for (size_t i = i0; i < i1; i++)
-        ok &= lines_bound(f, b1, b2, x, h, i, lc, hl, hu);
+        ok &= lines_bound(f, b1, b2, x, i, lc, hl, hu);
     return ok;
 }
 
@@ -418,10 +432,84 @@ static size_t skip_lines(const ts_spline *sp, size_t i, size_t i1)
     int hl = sp->has_lower != 0, hu = sp->has_upper != 0;
     while (i < i1) {
         size_t k1 = i1 - i > TS_BOUND_BLOCK ? i + TS_BOUND_BLOCK : i1;
-        if (!all_bound(sp->f, sp->b1, sp->b2, sp->x, sp->h, i, k1, lc, hl, hu)) {
+        if (!all_bound(sp->f, sp->b1, sp->b2, sp->x, i, k1, lc, hl, hu)) {
             /* the same operations fail one of [i, k1); the last is left to
              * the caller's check in any case */
-            while (i + 1 < k1 && lines_bound(sp->f, sp->b1, sp->b2, sp->x, sp->h, i, lc, hl, hu))
+            while (i + 1 < k1 && lines_bound(sp->f, sp->b1, sp->b2, sp->x, i, lc, hl, hu))
+                i++;
+            return i;
+        }
+        i = k1;
+    }
+    return i;
+}
+
+/* The geometric form's control-value proof of interval i as ts__check_ctl
+ * (not exact) makes it, B from the knots (ts__B) and X̂ = (0, κ, 1 − κ, 1)
+ * (ts__controls_of): finite B and, kind 0, positive_proof; 1, a monotone
+ * polygon with X' > 0; 2, the hull proof of each line sp has (lc: lower m,
+ * c, upper m, c; hl, hu).  Branch-free (used in vector loops). */
+TS_INLINE int geo_proven(const double *restrict x, const double *restrict f,
+                         const double *restrict d, const double *restrict al,
+                         const double *restrict be, const double *restrict kappa, size_t i,
+                         int kind, const double *restrict lc, int hl, int hu)
+{
+    double x0 = x[i], x1 = x[i + 1], a = al[i] + be[i], k = kappa[i];
+    double B[4] = {f[i], 0.0, 0.0, f[i + 1]};
+    B[1] = ts__geo_b1(x0, x1, B[0], d[i], a);
+    B[2] = ts__geo_b2(x0, x1, B[3], d[i + 1], a);
+    int finite = (fabs(B[0]) <= TS_VALUE_MAX) & (fabs(B[1]) <= TS_VALUE_MAX) &
+                 (fabs(B[2]) <= TS_VALUE_MAX) & (fabs(B[3]) <= TS_VALUE_MAX);
+    if (kind == 0)
+        return finite & positive_proof(B[0], B[1], B[2], B[3]);
+    double X[4] = {0.0, k, 1.0 - k, 1.0};
+    if (kind == 1) {
+        double D0 = X[1] - X[0], D1 = X[2] - X[1], D2 = X[3] - X[2];
+        double dm = D0 < D2 ? D0 : D2;
+        return finite & monotone_proof(B[0], B[1], B[2], B[3]) & (D1 >= -0.25 * dm);
+    }
+    return finite & ((1 - hl) | geo_hull(B, X, x0, x1, lc[0], lc[1], 1.0)) &
+           ((1 - hu) | geo_hull(B, X, x0, x1, lc[2], lc[3], -1.0));
+}
+
+/* 1 if geo_proven passes every interval of [i0, i1) (a flag, so that it
+ * vectorises; one loop per kind and set of lines, constants in each). */
+#define TS_GEO_ALL_PROVEN(name, kind, hl, hu)                                                    \
+    TS_VECTOR_LOOP static int name(const double *restrict x, const double *restrict f,          \
+                                   const double *restrict d, const double *restrict al,         \
+                                   const double *restrict be, const double *restrict kappa,     \
+                                   size_t i0, size_t i1, const double *restrict lc)             \
+    {                                                                                            \
+        int ok = 1;                                                                              \
+        for (size_t i = i0; i < i1; i++)                                                         \
+            ok &= geo_proven(x, f, d, al, be, kappa, i, kind, lc, hl, hu);                       \
+        return ok;                                                                               \
+    }
+TS_GEO_ALL_PROVEN(geo_all_positive, 0, 0, 0)
+TS_GEO_ALL_PROVEN(geo_all_monotone, 1, 0, 0)
+TS_GEO_ALL_PROVEN(geo_all_lower, 2, 1, 0)
+TS_GEO_ALL_PROVEN(geo_all_upper, 2, 0, 1)
+TS_GEO_ALL_PROVEN(geo_all_lines, 2, 1, 1)
+
+/* ts__skip_proven in the geometric form (kind as geo_proven): blocks of
+ * TS_BOUND_BLOCK at once, as skip_lines. */
+static size_t skip_geo(const ts_spline *sp, size_t i, size_t i1, int kind)
+{
+    const double lc[4] = {sp->lower.m, sp->lower.c, sp->upper.m, sp->upper.c};
+    int hl = sp->has_lower != 0, hu = sp->has_upper != 0;
+    int (*all)(const double *restrict, const double *restrict, const double *restrict,
+               const double *restrict, const double *restrict, const double *restrict, size_t,
+               size_t, const double *restrict) =
+        kind == 0 ? geo_all_positive
+        : kind == 1 ? geo_all_monotone
+        : hl && hu  ? geo_all_lines
+        : hl        ? geo_all_lower
+                    : geo_all_upper;
+    while (i < i1) {
+        size_t k1 = i1 - i > TS_BOUND_BLOCK ? i + TS_BOUND_BLOCK : i1;
+        if (!all(sp->x, sp->f, sp->d, sp->alpha, sp->beta, sp->kappa, i, k1, lc)) {
+            while (i + 1 < k1 &&
+                   geo_proven(sp->x, sp->f, sp->d, sp->alpha, sp->beta, sp->kappa, i, kind, lc, hl, hu))
                 i++;
             return i;
         }
@@ -431,13 +519,18 @@ static size_t skip_lines(const ts_spline *sp, size_t i, size_t i1)
 }
 
 /* First interval in [i, i1) that ts__check_ctl would not pass by its
- * control-value proof alone (which passes it also when exact), for the
- * schemes whose proof is a bare sign test of B (positive, every form: the
- * geometric form's X̂ are finite as a_i >= 4/(3π); monotone, paper and C¹
- * forms; the lines' bound, paper and C¹ forms; else i). */
+ * control-value proof alone (which passes it also when exact): positive
+ * and monotone, every form (the geometric form's X̂ are finite as
+ * a_i >= 4/(3π)); lines, the bound in the paper and C¹ forms, the control
+ * gaps in the geometric form; else i. */
 size_t ts__skip_proven(const ts_spline *sp, size_t i, size_t i1)
 {
     int positive = sp->shape == TS_SHAPE_POSITIVE;
+    if (sp->form == TS_FORM_GEOMETRIC) {
+        if (!(positive || sp->shape == TS_SHAPE_MONOTONE || sp->has_lower || sp->has_upper))
+            return i;
+        return skip_geo(sp, i, i1, positive ? 0 : sp->shape == TS_SHAPE_MONOTONE ? 1 : 2);
+    }
     if ((sp->has_lower | sp->has_upper) && !positive && sp->form != TS_FORM_GEOMETRIC) {
         return skip_lines(sp, i, i1);
     }
@@ -461,14 +554,14 @@ size_t ts__skip_proven(const ts_spline *sp, size_t i, size_t i1)
  * branch-free, so that it vectorises. */
 TS_VECTOR_LOOP static void mono_certify(const double *restrict f, const double *restrict b1,
                                         const double *restrict b2, const double *restrict x,
-                                        const double *restrict h, size_t i0, size_t i1,
+                                        size_t i0, size_t i1,
                                         double m, double c, double sg, int positive,
                                         unsigned char *restrict ok)
 {
     const double am = fabs(m);
     for (size_t i = i0; i < i1; i++) {
         double B0 = f[i], B1 = b1[i], B2 = b2[i], B3 = f[i + 1];
-        double xi = x[i], hi = h[i], bmax = 0.0;
+        double xi = x[i], hi = x[i + 1] - x[i], bmax = 0.0;
         bmax = fabs(B0) > bmax ? fabs(B0) : bmax;
         bmax = fabs(B1) > bmax ? fabs(B1) : bmax;
         bmax = fabs(B2) > bmax ? fabs(B2) : bmax;
@@ -515,9 +608,8 @@ TS_VECTOR_LOOP static void mono_certify(const double *restrict f, const double *
 /* The external entry is a plain function: the ifunc resolver of a
  * TS_VECTOR_LOOP function with external linkage would be exported. */
 void ts__mono_certify(const double *restrict f, const double *restrict b1,
-                      const double *restrict b2, const double *restrict x,
-                      const double *restrict h, size_t i0, size_t i1, double m, double c,
-                      double sg, int positive, unsigned char *restrict ok)
+                      const double *restrict b2, const double *restrict x, size_t i0, size_t i1,
+                      double m, double c, double sg, int positive, unsigned char *restrict ok)
 {
-    mono_certify(f, b1, b2, x, h, i0, i1, m, c, sg, positive, ok);
+    mono_certify(f, b1, b2, x, i0, i1, m, c, sg, positive, ok);
 }

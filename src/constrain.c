@@ -512,7 +512,7 @@ static void seg_of(const ts_spline *sp, size_t i, seg *g)
     g->i = i;
     ts__B(sp, i, g->B);
     g->kap = sp->kappa[i];
-    g->h = sp->h[i];
+    g->h = ts__h(sp, i);
     g->xi = sp->x[i];
 }
 
@@ -1053,7 +1053,7 @@ static int resloped_ok(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t
     double need = 0.0;
     for (size_t r = 0; r < nc; r++)
         if (in_scope(&cs[r], k, sp->n))
-            need = fmax(need, a_needed(&cs[r], sp->h[k], sp->f[k], sp->f[k + 1], sp->x[k],
+            need = fmax(need, a_needed(&cs[r], ts__h(sp, k), sp->f[k], sp->f[k + 1], sp->x[k],
                                        sp->d[k], sp->d[k + 1]));
     if (!(need <= RESLOPE_A_MAX))
         return 0;

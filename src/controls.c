@@ -5,40 +5,35 @@
 /* docs/method.md §3 (paper, C¹) and §4 (geometric) control values, one loop per form
  * with the arrays as restrict parameters, so that they vectorise. */
 TS_VECTOR_LOOP static void controls_paper(const double *restrict f, const double *restrict d,
-                                          const double *restrict h, const double *restrict al,
+                                          const double *restrict x, const double *restrict al,
                                           const double *restrict be, double *restrict b1,
                                           double *restrict b2, size_t i0, size_t i1)
 {
     for (size_t i = i0; i < i1; i++) {
-        double k = ts__geo_k(h[i], al[i] + be[i]);
+        double k = ts__geo_k(x[i + 1] - x[i], al[i] + be[i]);
         b1[i] = f[i] + k * d[i];
         b2[i] = f[i + 1] - k * d[i + 1];
     }
 }
 
-TS_VECTOR_LOOP static void controls_geo(const double *restrict f,
-                                        const double *restrict d, const double *restrict h,
-                                        const double *restrict al, const double *restrict be,
-                                        double *restrict b1, double *restrict b2,
+/* The geometric form: κ; B1, B2 are derived (ts__B) unless stored (b1 not
+ * NULL: constraint records, which may nudge them). */
+TS_VECTOR_LOOP static void controls_geo(const double *restrict al, const double *restrict be,
                                         double *restrict kappa, size_t i0, size_t i1)
 {
-    for (size_t i = i0; i < i1; i++) {
-        double a = al[i] + be[i], k = ts__geo_k(h[i], a);
-        b1[i] = f[i] + k * d[i];
-        b2[i] = f[i + 1] - k * d[i + 1];
-        kappa[i] = ts__kappa(a);
-    }
+    for (size_t i = i0; i < i1; i++)
+        kappa[i] = ts__kappa(al[i] + be[i]);
 }
 
 /* docs/method.md §3 C¹ option: d̂_j = d_j / max(a_{j-1}, a_j), one-sided at the ends;
  * intervals [i0, i1) with both neighbours (0 < i0, i1 < n). */
 TS_VECTOR_LOOP static void controls_c1(const double *restrict f, const double *restrict d,
-                                       const double *restrict h, const double *restrict al,
+                                       const double *restrict x, const double *restrict al,
                                        const double *restrict be, double *restrict b1,
                                        double *restrict b2, size_t i0, size_t i1)
 {
     for (size_t i = i0; i < i1; i++) {
-        double K = ts__geo_K(h[i]);
+        double K = ts__geo_K(x[i + 1] - x[i]);
         double a = al[i] + be[i], ap = al[i - 1] + be[i - 1], an = al[i + 1] + be[i + 1];
         double aL = ap > a ? ap : a, aR = an > a ? an : a;
         b1[i] = f[i] + K * (d[i] / aL);
@@ -69,7 +64,7 @@ void ts__ends_a_c1(const ts_spline *sp, size_t i, double *aL, double *aR)
 /* The same for one interval, also at an end. */
 static void controls_c1_one(ts_spline *sp, size_t i)
 {
-    double K = ts__geo_K(sp->h[i]), aL, aR;
+    double K = ts__geo_K(ts__h(sp, i)), aL, aR;
     ts__ends_a_c1(sp, i, &aL, &aR);
     sp->b1[i] = sp->f[i] + K * (sp->d[i] / aL);
     sp->b2[i] = sp->f[i + 1] - K * (sp->d[i + 1] / aR);
@@ -82,18 +77,20 @@ void ts__controls_c1(ts_spline *sp, size_t i0, size_t i1)
     if (i0 == 0)
         controls_c1_one(sp, 0);
     if (m0 < m1)
-        controls_c1(sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, m0, m1);
+        controls_c1(sp->f, sp->d, sp->x, sp->alpha, sp->beta, sp->b1, sp->b2, m0, m1);
     if (i1 == n && n - 1 > 0)
         controls_c1_one(sp, n - 1);
 }
 
 void ts__controls_geo(ts_spline *sp, size_t i0, size_t i1)
 {
-    controls_geo(sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, sp->kappa, i0, i1);
+    controls_geo(sp->alpha, sp->beta, sp->kappa, i0, i1);
+    if (sp->b1)
+        controls_paper(sp->f, sp->d, sp->x, sp->alpha, sp->beta, sp->b1, sp->b2, i0, i1);
 }
 
 void ts__controls_paper(ts_spline *sp, size_t i0, size_t i1)
 {
-    controls_paper(sp->f, sp->d, sp->h, sp->alpha, sp->beta, sp->b1, sp->b2, i0, i1);
+    controls_paper(sp->f, sp->d, sp->x, sp->alpha, sp->beta, sp->b1, sp->b2, i0, i1);
 }
 

@@ -369,7 +369,7 @@ ts_status ts_spline_integral(const ts_spline *s, double a, double b, double *out
     if (ia == ib)
         r = ts__interval_integral_scaled(s, ia, a, b, 0);
     else
-        r = (s->cum[ib] - s->cum[ia + 1]) +
+        r = (ts__cum(s, ib) - ts__cum(s, ia + 1)) +
             ts__interval_integral_scaled(s, ia, a, s->x[ia + 1], 0) +
             ts__interval_integral_scaled(s, ib, s->x[ib], b, 0);
     if (!isfinite(r)) {

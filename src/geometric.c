@@ -17,7 +17,7 @@ typedef struct geo_side {
 
 static void geo_side_init(const ts_spline *sp, size_t i, int right, geo_side *g)
 {
-    g->h = sp->h[i];
+    g->h = ts__h(sp, i);
     g->kappa = sp->kappa[i];
     g->k = g->kappa * g->h;
     if (!right) {
@@ -123,29 +123,29 @@ static double geo_side_int(const geo_side *g, double phi, int k)
 static double geo_whole(const ts_spline *sp, size_t i, int k)
 {
     const double Q0 = 56.0 / 5.0 - 111.0 * TS_PI / 32.0;
-    double h = sp->h[i], kk = sp->kappa[i] * h;
+    double h = ts__h(sp, i), kk = sp->kappa[i] * h;
     double hs = ldexp(h, -k), ks = ldexp(kk, -k);
     return 0.5 * hs * (sp->f[i] + sp->f[i + 1]) +
            (kk * sp->d[i] - kk * sp->d[i + 1]) * (0.4 * hs - Q0 * ks);
 }
 
 /* geo_whole at k = 0 (ldexp by 0 is the identity) for i in [i0, i1), into
- * cum[i + 1]: the same operations, in a loop that vectorises. */
-TS_VECTOR_LOOP static void geo_wholes(const double *restrict kappa, const double *restrict h,
+ * wh[i − i0]: the same operations, in a loop that vectorises. */
+TS_VECTOR_LOOP static void geo_wholes(const double *restrict kappa, const double *restrict x,
                                       const double *restrict f,
-                                      const double *restrict d, double *restrict cum, size_t i0,
+                                      const double *restrict d, double *restrict wh, size_t i0,
                                       size_t i1)
 {
     const double Q0 = 56.0 / 5.0 - 111.0 * TS_PI / 32.0;
     for (size_t i = i0; i < i1; i++) {
-        double kk = kappa[i] * h[i];
-        cum[i + 1] = 0.5 * h[i] * (f[i] + f[i + 1]) + (kk * d[i] - kk * d[i + 1]) * (0.4 * h[i] - Q0 * kk);
+        double h = x[i + 1] - x[i], kk = kappa[i] * h;
+        wh[i - i0] = 0.5 * h * (f[i] + f[i + 1]) + (kk * d[i] - kk * d[i + 1]) * (0.4 * h - Q0 * kk);
     }
 }
 
-void ts__geo_wholes(const ts_spline *sp, size_t i0, size_t i1, double *cum)
+void ts__geo_wholes(const ts_spline *sp, size_t i0, size_t i1, double *wh)
 {
-    geo_wholes(sp->kappa, sp->h, sp->f, sp->d, cum, i0, i1);
+    geo_wholes(sp->kappa, sp->x, sp->f, sp->d, wh, i0, i1);
 }
 
 double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k)

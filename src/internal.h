@@ -102,14 +102,20 @@ struct ts_spline {
     int have_certs;      /* built with exact certificates (ts__certify_exact); not stored:
                           * ts_spline_report recomputes them, the same computation */
 
+    /* Stored is what cannot be derived cheaply: the width h_i is
+     * x[i+1] − x[i] (ts__h), bitwise what was once stored; the geometric
+     * form's B1, B2 are f_i ± k_i d_i (ts__B, as controls.c forms them)
+     * unless constraint records nudged them (then stored); the running
+     * integral is kept at every TS_CUM_STEP-th knot (ts__cum). */
     double *x, *f, *d;   /* n+1: knots, values, slopes d_i (after shape adjustment) */
-    double *h;           /* n: x[i+1] - x[i] */
     double *alpha, *beta;/* n */
-    double *b1, *b2;     /* n: control values B1, B2 (B0 = f[i], B3 = f[i+1]) */
+    double *b1, *b2;     /* n: control values B1, B2 (B0 = f[i], B3 = f[i+1]); NULL in
+                          * the geometric form without constraint records (derived) */
     double *kappa;       /* n: geometric form only (NULL otherwise), κ_i = 2/(3π(α_i + β_i))
                           * (docs/method.md §4), the one expression every user of κ reads */
     unsigned char *term; /* n: ts_term */
-    double *cum;         /* n+1: cum[i] = ∫_{x0}^{x_i} S dx (set last by spline.c) */
+    double *cum;         /* n/TS_CUM_STEP + 1: cum[j] = ∫_{x0}^{x_{j·TS_CUM_STEP}} S dx,
+                          * the running sum of the wholes (set last by spline.c) */
     /* constraint records (docs/method.md §13), an owned copy (polyline points
      * in con_pts); NULL / 0 when built without */
     size_t ncon;
@@ -139,7 +145,7 @@ struct ts_surface {
     double *x, *y;                   /* nx+1, ny+1 */
     double *z, *p, *q, *r;           /* nodes: value, ∂z/∂x, ∂z/∂y, twist */
     double *ax, *ay;                 /* nx, ny */
-    double *B;                       /* 16 per patch: B[16*patch + 4*k + l] */
+    /* the control nets are derived per patch (ts__surf_patch), not stored */
     ts__gbound glo, gup;             /* TS_SURFACE_GRIDS: the fields (glo.x NULL when absent) */
     double *gblk;                    /* their owned arrays */
 };
@@ -245,6 +251,9 @@ TS_INLINE void ts__beta_line(double al, double K, double g0, double g1, double d
     *b = take1 ? v1 : *b;
     *t = take1 ? t0 + 1 : *t;
 }
+
+/* Knots per stored running integral (struct ts_spline's cum). */
+#define TS_CUM_STEP 8
 
 /* ---- basis.c (docs/method.md §2) ----------------------------------------------- */
 /* Basis A0..A3 at (s, c) = (sin θ, cos θ). */
@@ -597,13 +606,35 @@ TS_INLINE double ts__kappa(double a)
 {
     return 2.0 / (3.0 * TS_PI * a);
 }
+/* The width of interval i: bitwise spline.c's former stored h_i. */
+static inline double ts__h(const ts_spline *sp, size_t i)
+{
+    return sp->x[i + 1] - sp->x[i];
+}
+/* docs/method.md §4 B1, B2 of the geometric form from the knots (x_i,
+ * x_{i+1}: h), f, d and a = α + β: the operations of controls.c, so the
+ * bits it once stored (also in vector loops: no contraction there). */
+TS_INLINE double ts__geo_b1(double x0, double x1, double f0, double d0, double a)
+{
+    return f0 + ts__geo_k(x1 - x0, a) * d0;
+}
+TS_INLINE double ts__geo_b2(double x0, double x1, double f1, double d1, double a)
+{
+    return f1 - ts__geo_k(x1 - x0, a) * d1;
+}
 /* The four control values of interval i. */
 static inline void ts__B(const ts_spline *sp, size_t i, double B[4])
 {
     B[0] = sp->f[i];
-    B[1] = sp->b1[i];
-    B[2] = sp->b2[i];
     B[3] = sp->f[i + 1];
+    if (sp->b1) {
+        B[1] = sp->b1[i];
+        B[2] = sp->b2[i];
+    } else {
+        double a = sp->alpha[i] + sp->beta[i], x0 = sp->x[i], x1 = sp->x[i + 1];
+        B[1] = ts__geo_b1(x0, x1, B[0], sp->d[i], a);
+        B[2] = ts__geo_b2(x0, x1, B[3], sp->d[i + 1], a);
+    }
 }
 
 /* ---- geometric.c (docs/method.md §4) ------------------------------------------- */
@@ -615,8 +646,8 @@ void ts__geo_eval(const ts_spline *sp, size_t i, double x, int want, double out[
 /* φ in [0, π/4] with X̂(φ) = u, u in [0, 1/2], κ = 2/(3π a) (the solve of
  * ts__geo_eval; used by the surfaces of docs/method.md §11). */
 double ts__geo_solve(double kappa, double u);
-/* cum[i + 1] = ∫ over interval i, i in [i0, i1) (ts__geo_integral_scaled at x_{i+1}, k = 0). */
-void ts__geo_wholes(const ts_spline *sp, size_t i0, size_t i1, double *cum);
+/* w[i − i0] = ∫ over interval i, i in [i0, i1) (ts__geo_integral_scaled at x_{i+1}, k = 0). */
+void ts__geo_wholes(const ts_spline *sp, size_t i0, size_t i1, double *w);
 /* The same times 2^-k, finite where that is (|f|, |B| <= TS_VALUE_MAX). */
 double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k);
 /* S, S', S'' (out[0..want]) of interval i of a geometric-form spline at x
@@ -624,7 +655,7 @@ double ts__geo_integral_scaled(const ts_spline *sp, size_t i, double x, int k);
  * ts__geo_root, then ts__geo_y.  Inline: ts_spline_eval's path. */
 TS_INLINE void ts__geo_in(const ts_spline *sp, size_t i, double x, int want, double o[3])
 {
-    double h = sp->h[i], kappa = sp->kappa[i], dl = x - sp->x[i], dr = sp->x[i + 1] - x, sc[4];
+    double h = ts__h(sp, i), kappa = sp->kappa[i], dl = x - sp->x[i], dr = sp->x[i + 1] - x, sc[4];
     int right = dr < dl;
     (void)ts__geo_root((right ? dr : dl) / h, kappa, sc);
     size_t i0 = right ? i + 1 : i, i1 = right ? i : i + 1;
@@ -647,8 +678,8 @@ typedef struct ts__form_ops {
     int kernel;     /* the batch kernels' family (kernels.c): 0 θ linear in x, 1 geometric */
     /* b1, b2 (κ) of intervals [i0, i1) (controls.c) */
     void (*controls)(ts_spline *sp, size_t i0, size_t i1);
-    /* cum[i + 1] = ∫ over interval i, i in [i0, i1) */
-    void (*wholes)(const ts_spline *sp, size_t i0, size_t i1, double *cum);
+    /* w[i − i0] = ∫ over interval i, i in [i0, i1) */
+    void (*wholes)(const ts_spline *sp, size_t i0, size_t i1, double *w);
     /* value and derivatives of interval i at any x (ts__interval_eval) */
     void (*eval)(const ts_spline *sp, size_t i, double x, int want, double o[3]);
     /* 2^-k ∫_a^b S on interval i, the closed form (b − a > h/16) */
@@ -660,6 +691,10 @@ typedef struct ts__form_ops {
 } ts__form_ops;
 /* The entry of form (a valid ts_form). */
 const ts__form_ops *ts__form(ts_form form);
+/* ∫_{x0}^{x_i} S dx, i <= n: the stored running sum at the TS_CUM_STEP-th
+ * knot below i plus the wholes after it, added in the order spline.c's
+ * running sum added them (so its bits). */
+double ts__cum(const ts_spline *sp, size_t i);
 /* Value and derivatives (in x; out[1], out[2] only if want > 0, > 1) of
  * interval i at x, any form; x may lie outside the interval (extension). */
 void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double o[3]);
@@ -669,7 +704,7 @@ void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double
  * interpolated exactly).  Inline: ts_spline_eval's path. */
 TS_INLINE void ts__trig_eval_in(const ts_spline *sp, size_t i, double x, int want, double o[3])
 {
-    double w = TS_HALF_PI / sp->h[i]; /* dθ/dx */
+    double w = TS_HALF_PI / ts__h(sp, i); /* dθ/dx */
     double tu = (x - sp->x[i]) * w, tv = (sp->x[i + 1] - x) * w;
     /* from the right end as the kernels (the same test, on the products):
      * ϑ = π/2 − θ, the control values reversed (docs/method.md §2),
@@ -783,15 +818,15 @@ int ts__check_interval(const ts_spline *sp, size_t i, int exact);
  * certificates?  (Only meaningful for opt->shape != TS_SHAPE_NONE.) */
 int ts__certify_exact(const ts_spline_options *opt);
 /* First interval in [i, i1) that ts__check_ctl (not exact) would not pass;
- * line schemes, paper and C¹ forms: that it would not pass by the line
- * bound (docs/method.md §5.6 item 8), exact or not. */
+ * line schemes: that it would not pass by the line bound (paper and C¹
+ * forms, docs/method.md §5.6 item 8) or the control gaps (geometric form,
+ * §4), exact or not. */
 size_t ts__skip_proven(const ts_spline *sp, size_t i, size_t i1);
 /* ok[i - i0] = 1 where ts__check_ctl (exact, paper form, one boundary
  * m x + c with sign sg) passes interval i by an end minimum, else 0. */
 void ts__mono_certify(const double *restrict f, const double *restrict b1,
-                      const double *restrict b2, const double *restrict x,
-                      const double *restrict h, size_t i0, size_t i1, double m, double c,
-                      double sg, int positive, unsigned char *restrict ok);
+                      const double *restrict b2, const double *restrict x, size_t i0, size_t i1,
+                      double m, double c, double sg, int positive, unsigned char *restrict ok);
 
 /* ---- surface_net.c (docs/method.md §11) ---------------------------------------- */
 /* The basis of one direction at a query: knots t[0..n], shape parameters
@@ -811,18 +846,26 @@ void ts__surf_basis_int(const double *t, const double *a, size_t i, ts_form form
  * node's intervals) in the C¹ form (docs/method.md §11.2). */
 double ts__surf_k(const double *t, const double *a, size_t n, size_t i, size_t node,
                   ts_form form);
-/* Control nets of every patch from z, p, q, r, ax, ay (docs/method.md §11.1). */
-void ts__surf_net(ts_surface *s);
+/* The control net of patch (i, j) from z, p, q, r, ax, ay (docs/method.md
+ * §11.1): B[4k + l]. */
+void ts__surf_patch(const ts_surface *s, size_t i, size_t j, double B[16]);
+/* Its parts: u[0], u[1] the k (ts__surf_k) of interval i along x (dir 0)
+ * or y (dir 1) at its two end nodes; the net from those of i and j (so
+ * that a caller evaluating many patches of one row or column forms them
+ * once). */
+void ts__surf_ks(const ts_surface *s, int dir, size_t i, double u[2]);
+void ts__surf_patch_k(const ts_surface *s, size_t i, size_t j, const double ux[2],
+                      const double uy[2], double B[16]);
 /* p x + q y + c to about one rounding of the result (error-free products
  * and sums, docs/method.md §11.3); *err (if not NULL) bounds its error. */
 double ts__surf_plane_at(const ts_plane *pl, double x, double y, double *err);
-/* Control gaps of patch (i, j) to a plane in local coordinates: G[16] =
+/* Control gaps of patch (i, j) with net B to a plane in local coordinates: G[16] =
  * sign (B − plane at the control abscissae), the plane taken at the patch's
  * corner and its rise to the abscissae; *guard the rounding of forming them
  * and of where evaluation places a point (0 for a constant plane: then the
  * signs are exact). */
-void ts__surf_gaps(const ts_surface *s, size_t i, size_t j, const ts_plane *pl, int sign,
-                   double G[16], double *guard);
+void ts__surf_gaps(const ts_surface *s, size_t i, size_t j, const double B[16], const ts_plane *pl,
+                   int sign, double G[16], double *guard);
 /* Are all 16 gaps >= guard (nonzero corners: > guard)?  Proves the patch on
  * the plane's side (docs/method.md §11.3). */
 int ts__surf_gaps_inside(const double G[16], double guard);

@@ -15,7 +15,7 @@ static void trig_eval(const ts_spline *sp, size_t i, double x, int want, double 
         return;
     }
     /* outside (TS_EXTRAP_EXTEND): θ from the nearer end, libm */
-    double h = sp->h[i], B[4];
+    double h = ts__h(sp, i), B[4];
     ts__B(sp, i, B);
     double w = TS_HALF_PI / h; /* dθ/dx */
     if (u <= v) {
@@ -38,7 +38,7 @@ static double width_factor(double h)
  * quarter, exactly, so that Σ I_l B_l <= (π/2) max|B| cannot overflow). */
 static double theta_antiderivative(const ts_spline *sp, size_t i, double x)
 {
-    double h = sp->h[i], B[4], I[4];
+    double h = ts__h(sp, i), B[4], I[4];
     double u = x - sp->x[i], theta = TS_HALF_PI * u / h;
     if (!(theta <= TS_PI)) /* (π/2) u overflowed (u near DBL_MAX) */
         theta = TS_HALF_PI * (u / h);
@@ -80,7 +80,7 @@ static double short_piece(const ts_spline *sp, size_t i, double a, double b, int
  * in θ), geometric (geometric.c). */
 static double trig_integral(const ts_spline *sp, size_t i, double a, double b, int k)
 {
-    double w = ldexp(width_factor(sp->h[i]), 2 - k);
+    double w = ldexp(width_factor(ts__h(sp, i)), 2 - k);
     return w * (theta_antiderivative(sp, i, b) - theta_antiderivative(sp, i, a));
 }
 
@@ -91,39 +91,40 @@ static double geo_integral(const ts_spline *sp, size_t i, double a, double b, in
 
 double ts__interval_integral_scaled(const ts_spline *sp, size_t i, double a, double b, int k)
 {
-    if (b - a <= 0.0625 * sp->h[i])
+    if (b - a <= 0.0625 * ts__h(sp, i))
         return short_piece(sp, i, a, b, k);
     return ts__form(sp->form)->integral(sp, i, a, b, k);
 }
 
-/* ∫ of interval i, i in [i0, i1) (paper and C¹ forms). */
-TS_VECTOR_LOOP static void trig_wholes_loop(const double *restrict h, const double *restrict f,
+/* ∫ of interval i into wh[i − i0], i in [i0, i1) (paper and C¹ forms). */
+TS_VECTOR_LOOP static void trig_wholes_loop(const double *restrict x, const double *restrict f,
                                             const double *restrict b1, const double *restrict b2,
-                                            double *restrict cum, size_t i0, size_t i1)
+                                            double *restrict wh, size_t i0, size_t i1)
 {
     /* ∫ A_l over [0, π/2]: 5π/4 - 11/3 (l = 0, 3), 11/3 - π (l = 1, 2) */
     const double e = 1.25 * TS_PI - 11.0 / 3.0, m = 11.0 / 3.0 - TS_PI;
     for (size_t i = i0; i < i1; i++) {
-        double w = 2.0 * h[i] / TS_PI; /* dx/dθ, also where 2h overflows */
-        w = w <= DBL_MAX ? w : h[i] * (2.0 / TS_PI);
-        cum[i + 1] = w * (e * (f[i] + f[i + 1]) + m * (b1[i] + b2[i]));
+        double h = x[i + 1] - x[i];
+        double w = 2.0 * h / TS_PI; /* dx/dθ, also where 2h overflows */
+        w = w <= DBL_MAX ? w : h * (2.0 / TS_PI);
+        wh[i - i0] = w * (e * (f[i] + f[i + 1]) + m * (b1[i] + b2[i]));
     }
 }
 
-static void trig_wholes(const ts_spline *sp, size_t i0, size_t i1, double *cum)
+static void trig_wholes(const ts_spline *sp, size_t i0, size_t i1, double *wh)
 {
-    trig_wholes_loop(sp->h, sp->f, sp->b1, sp->b2, cum, i0, i1);
+    trig_wholes_loop(sp->x, sp->f, sp->b1, sp->b2, wh, i0, i1);
 }
 
 /* docs/method.md §3: θ linear in x, X1 = x_i + K_i; §4: X1 = x_i + k_i. */
 static double trig_k(const ts_spline *sp, size_t i)
 {
-    return ts__geo_K(sp->h[i]);
+    return ts__geo_K(ts__h(sp, i));
 }
 
 static double geo_k(const ts_spline *sp, size_t i)
 {
-    return ts__geo_k(sp->h[i], sp->alpha[i] + sp->beta[i]);
+    return ts__geo_k(ts__h(sp, i), sp->alpha[i] + sp->beta[i]);
 }
 
 _Static_assert(TS_FORM_PAPER == 0 && TS_FORM_C1 == 1 && TS_FORM_GEOMETRIC == 2,
@@ -140,6 +141,18 @@ static const ts__form_ops forms[3] = {
 const ts__form_ops *ts__form(ts_form form)
 {
     return &forms[form];
+}
+
+double ts__cum(const ts_spline *sp, size_t i)
+{
+    size_t j0 = i / TS_CUM_STEP * TS_CUM_STEP;
+    double sum = sp->cum[i / TS_CUM_STEP], wh[TS_CUM_STEP];
+    if (i > j0) {
+        forms[sp->form].wholes(sp, j0, i, wh);
+        for (size_t j = j0; j < i; j++)
+            sum += wh[j - j0];
+    }
+    return sum;
 }
 
 void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double o[3])

@@ -115,8 +115,8 @@ typedef struct fast_iv {
     double x0, x1, w, b0, b1, b2, b3;
 } fast_iv;
 
-/* h_i = x_{i+1} − x_i from the knots at hand, bitwise sp->h[i] (spline.c's
- * widths): a random query reads one cache line fewer. */
+/* h_i = x_{i+1} − x_i from the knots at hand, bitwise ts__h (internal.h):
+ * a random query reads one cache line fewer. */
 TS_ALWAYS_INLINE fast_iv fast_interval(const ts_spline *sp, size_t i)
 {
     double x0 = sp->x[i], x1 = sp->x[i + 1];

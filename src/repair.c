@@ -297,7 +297,7 @@ static int c1_uniform(ts_spline *sp, double t, int exact)
  * gap + guard (above the true gap). */
 static double c1_margin(const ts_spline *sp, size_t i, double uL, double uR, double *gap)
 {
-    double K = ts__geo_K(sp->h[i]), r = (double)INFINITY, g = r, guard, at;
+    double K = ts__geo_K(ts__h(sp, i)), r = (double)INFINITY, g = r, guard, at;
     double B[4] = {sp->f[i], sp->f[i] + K * (sp->d[i] * uL), sp->f[i + 1] - K * (sp->d[i + 1] * uR),
                    sp->f[i + 1]};
     for (int side = 0; side < 2; side++) {
@@ -407,7 +407,7 @@ static ts_status certify_loop(ts_spline *sp, const ts_spline_options *opt, size_
             const ts_line *ln = sp->has_lower ? &sp->lower : &sp->upper;
             k0 = i;
             k1 = i1 - i > TS_CERT_BLOCK ? i + TS_CERT_BLOCK : i1;
-            ts__mono_certify(sp->f, sp->b1, sp->b2, sp->x, sp->h, k0, k1, ln->m, ln->c,
+            ts__mono_certify(sp->f, sp->b1, sp->b2, sp->x, k0, k1, ln->m, ln->c,
                          sp->has_lower ? 1.0 : -1.0, sp->shape == TS_SHAPE_POSITIVE, ok);
         }
         if ((batch && ok[i - k0]) || ts__check_interval(sp, i, exact)) {

@@ -117,6 +117,22 @@ TS_VECTOR_LOOP static int all_nonnegative(const double *restrict f, size_t p0, s
     return ok;
 }
 
+/* 1 if every point of [p0, p1) is strictly inside the lines (lc: lower m,
+ * c, upper m, c; hl, hu which there are) by its rounded line values, and
+ * the lines are strictly ordered there: then check_data's exact tests
+ * (side_of, order_of) pass each without their rounding terms.  A flag, so
+ * that it vectorises. */
+TS_VECTOR_LOOP static int all_inside(const double *restrict x, const double *restrict f, size_t p0,
+                                     size_t p1, const double *restrict lc, int hl, int hu)
+{
+    int ok = 1;
+    for (size_t i = p0; i < p1; i++) {
+        double Ll = fma(lc[0], x[i], lc[1]), Lu = fma(lc[2], x[i], lc[3]);
+        ok &= ((1 - hl) | (f[i] > Ll)) & ((1 - hu) | (f[i] < Lu)) & ((1 - (hl & hu)) | (Lu > Ll));
+    }
+    return ok;
+}
+
 /* Check points [p0, p1) against the scheme; first offending point.  dir:
  * data_dir (monotone only). */
 static ts_status check_data(const ts_spline *sp, ts_shape shape, int dir, size_t p0, size_t p1,
@@ -141,6 +157,9 @@ static ts_status check_data(const ts_spline *sp, ts_shape shape, int dir, size_t
         }
         return TS_OK;
     }
+    const double lc[4] = {sp->lower.m, sp->lower.c, sp->upper.m, sp->upper.c};
+    if (all_inside(x, f, p0, p1, lc, sp->has_lower != 0, sp->has_upper != 0))
+        return TS_OK;
     for (size_t i = p0; i < p1; i++) {
         const ts_line *lo = &sp->lower, *up = &sp->upper;
         double Ll = sp->has_lower ? line_at(lo, x[i]) : 0.0;
@@ -271,9 +290,9 @@ static ts_status boundaries(ts_spline *sp, const ts_spline_options *opt, ts_erro
  * does not see that they do not alias, and does not vectorise). */
 #define TS_BETA_ARRAYS                                                         \
     const double *restrict x, const double *restrict f, const double *restrict d, \
-        const double *restrict h, const double *restrict alpha, double *restrict best, \
+        const double *restrict alpha, double *restrict best,                   \
         unsigned char *restrict term
-#define TS_BETA_PASS(sp) (sp)->x, (sp)->f, (sp)->d, (sp)->h, (sp)->alpha, (sp)->beta, (sp)->term
+#define TS_BETA_PASS(sp) (sp)->x, (sp)->f, (sp)->d, (sp)->alpha, (sp)->beta, (sp)->term
 
 /* The divisor where the term is taken, else 1: a term is computed before
  * it is selected (so the loops vectorise), and 0/0 or x/0 there would raise
@@ -296,7 +315,7 @@ TS_VECTOR_LOOP static void consider_lower(TS_BETA_ARRAYS, size_t i0, size_t i1, 
         double g0 = f[i] - fma(m, x[i], c), g1 = f[i + 1] - fma(m, x[i + 1], c);
         double b = best[i];
         int t = term[i];
-        ts__beta_line(alpha[i], ts__geo_K(h[i]), g0, g1, d[i] - ml, d[i + 1] - ml, 1.0,
+        ts__beta_line(alpha[i], ts__geo_K(x[i + 1] - x[i]), g0, g1, d[i] - ml, d[i + 1] - ml, 1.0,
                       TS_TERM_LOWER_LEFT, &b, &t);
         best[i] = b;
         term[i] = (unsigned char)t;
@@ -311,7 +330,7 @@ TS_VECTOR_LOOP static void consider_upper(TS_BETA_ARRAYS, size_t i0, size_t i1, 
         double G0 = fma(m, x[i], c) - f[i], G1 = fma(m, x[i + 1], c) - f[i + 1];
         double b = best[i];
         int t = term[i];
-        ts__beta_line(alpha[i], ts__geo_K(h[i]), G0, G1, d[i] - mu, d[i + 1] - mu, -1.0,
+        ts__beta_line(alpha[i], ts__geo_K(x[i + 1] - x[i]), G0, G1, d[i] - mu, d[i + 1] - mu, -1.0,
                       TS_TERM_UPPER_LEFT, &b, &t);
         best[i] = b;
         term[i] = (unsigned char)t;
@@ -323,7 +342,7 @@ TS_VECTOR_LOOP static void consider_monotone(TS_BETA_ARRAYS, size_t i0, size_t i
 {
     (void)x;
     for (size_t i = i0; i < i1; i++) {
-        double al = alpha[i], K = ts__geo_K(h[i]), df = f[i + 1] - f[i];
+        double al = alpha[i], K = ts__geo_K(x[i + 1] - x[i]), df = f[i + 1] - f[i];
         double b = best[i];
         int t = term[i];
         TS_CONSIDER(df != 0.0, K * (d[i] + d[i + 1]) / TS_SAFE(df != 0.0, df) - al, TS_TERM_MONOTONE);

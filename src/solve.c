@@ -153,7 +153,7 @@ static double x_of_t(const ts_spline *sp, size_t i, double t)
 {
     double x0 = sp->x[i], x1 = sp->x[i + 1], v;
     if (sp->form == TS_FORM_GEOMETRIC) {
-        double k = ts__geo_k(sp->h[i], sp->alpha[i] + sp->beta[i]);
+        double k = ts__geo_k(ts__h(sp, i), sp->alpha[i] + sp->beta[i]);
         double X[4] = {x0, x0 + k, x1 - k, x1};
         double t2 = t * t, q = 1.0 + t2, q3 = q * q * q, omt = 1.0 - t;
         double A0 = omt * omt * omt * omt * omt * omt / q3;

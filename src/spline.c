@@ -65,15 +65,7 @@ TS_VECTOR_LOOP static int alpha_ok(const double *restrict al, size_t i0, size_t 
     return ok;
 }
 
-/* h_i = x_{i+1} - x_i, i in [i0, i1). */
-TS_VECTOR_LOOP static void widths(const double *restrict x, double *restrict h, size_t i0,
-                                  size_t i1)
-{
-    for (size_t i = i0; i < i1; i++)
-        h[i] = x[i + 1] - x[i];
-}
-
-/* Points [*done, upto) of x, f into sp, and the widths that completes. */
+/* Points [*done, upto) of x, f into sp. */
 static void copy_points(ts_spline *sp, const double *x, const double *f, size_t *done, size_t upto)
 {
     size_t p0 = *done;
@@ -81,7 +73,6 @@ static void copy_points(ts_spline *sp, const double *x, const double *f, size_t 
         return;
     memcpy(sp->x + p0, x + p0, (upto - p0) * sizeof *x);
     memcpy(sp->f + p0, f + p0, (upto - p0) * sizeof *f);
-    widths(x, sp->h, p0 ? p0 - 1 : 0, upto - 1);
     *done = upto;
 }
 
@@ -127,24 +118,31 @@ static ts_status check_beta(ts_spline *sp, size_t i0, size_t i1, ts_error *err)
                     TS_WHERE_INTERVAL);
 }
 
-/* Cumulative integrals cum[i0+1..i1] for ts_spline_integral from the running sum
- * (cum[i0]), which it returns: the same additions in the same order. */
+/* Intervals per block of the construction: its dozen arrays stay in the L2
+ * cache (~100 KiB) from the slopes to the integrals (docs/design.md). */
+#define TS_BLOCK 1024
+
+/* The running integral over intervals [i0, i1) (i0 a multiple of
+ * TS_CUM_STEP) from sum (the integral up to x_{i0}), which it returns,
+ * kept at every TS_CUM_STEP-th knot (ts__cum adds the wholes after it in
+ * the same order). */
 static double cumulate(ts_spline *sp, size_t i0, size_t i1, double sum)
 {
-    double *cum = sp->cum;
-    ts__form(sp->form)->wholes(sp, i0, i1, cum);
-    for (size_t i = i0; i < i1; i++) {
-        sum += cum[i + 1];
-        cum[i + 1] = sum;
+    double wh[TS_BLOCK];
+    for (size_t j0 = i0; j0 < i1; j0 += TS_BLOCK) {
+        size_t j1 = i1 - j0 > TS_BLOCK ? j0 + TS_BLOCK : i1;
+        ts__form(sp->form)->wholes(sp, j0, j1, wh);
+        for (size_t i = j0; i < j1; i++) {
+            sum += wh[i - j0];
+            if ((i + 1) % TS_CUM_STEP == 0)
+                sp->cum[(i + 1) / TS_CUM_STEP] = sum;
+        }
     }
     return sum;
 }
 
 static void spline_release(ts_spline *s);
 
-/* Intervals per block of the construction: its dozen arrays stay in the L2
- * cache (~100 KiB) from the slopes to the integrals (docs/design.md). */
-#define TS_BLOCK 1024
 
 /* 1 if every |b1[i]|, |b2[i]| <= TS_VALUE_MAX, i < n (NaN-safe). */
 TS_VECTOR_LOOP static int values_ok(const double *restrict b1, const double *restrict b2,
@@ -153,6 +151,21 @@ TS_VECTOR_LOOP static int values_ok(const double *restrict b1, const double *res
     int ok = 1;
     for (size_t i = 0; i < n; i++)
         ok &= (fabs(b1[i]) <= TS_VALUE_MAX) & (fabs(b2[i]) <= TS_VALUE_MAX);
+    return ok;
+}
+
+/* values_ok of the geometric form's derived B1, B2 (ts__B). */
+TS_VECTOR_LOOP static int geo_values_ok(const double *restrict x, const double *restrict f,
+                                        const double *restrict d, const double *restrict al,
+                                        const double *restrict be, size_t n)
+{
+    int ok = 1;
+    for (size_t i = 0; i < n; i++) {
+        double a = al[i] + be[i];
+        double b1 = ts__geo_b1(x[i], x[i + 1], f[i], d[i], a);
+        double b2 = ts__geo_b2(x[i], x[i + 1], f[i + 1], d[i + 1], a);
+        ok &= (fabs(b1) <= TS_VALUE_MAX) & (fabs(b2) <= TS_VALUE_MAX);
+    }
     return ok;
 }
 
@@ -241,12 +254,17 @@ static ts_status build(ts_spline *sp, const ts_spline_options *o, const double *
      * overflow B1, B2 with no scheme to catch it) and at most TS_VALUE_MAX
      * (so S between the knots cannot overflow); an integral that overflows
      * is not an error: ts_spline_integral then returns ±Inf */
-    if (!values_ok(sp->b1, sp->b2, n)) {
+    if (!(sp->b1 ? values_ok(sp->b1, sp->b2, n)
+                 : geo_values_ok(sp->x, sp->f, sp->d, sp->alpha, sp->beta, n))) {
         size_t i = 0; /* the first offender (there is one) */
-        while (i + 1 < n && fabs(sp->b1[i]) <= TS_VALUE_MAX && fabs(sp->b2[i]) <= TS_VALUE_MAX)
-            i++;
-        return ts__fail(err, isfinite(sp->b1[i]) && isfinite(sp->b2[i]) ? TS_ERR_TOO_LARGE
-                                                                         : TS_ERR_CONTROL_OVERFLOW,
+        double B[4];
+        for (;; i++) {
+            ts__B(sp, i, B);
+            if (i + 1 == n || !(fabs(B[1]) <= TS_VALUE_MAX && fabs(B[2]) <= TS_VALUE_MAX))
+                break;
+        }
+        return ts__fail(err, isfinite(B[1]) && isfinite(B[2]) ? TS_ERR_TOO_LARGE
+                                                              : TS_ERR_CONTROL_OVERFLOW,
                         i, TS_WHERE_INTERVAL);
     }
     return TS_OK;
@@ -428,16 +446,22 @@ static ts_status spline_new(const double *x, const double *f, size_t n_points,
         (unsigned)opt->extrapolate > (unsigned)TS_EXTRAP_LINEAR)
         return ts__fail(err, TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE);
 
-    /* layout: 4 arrays of n+1 (x, f, d, cum), 5 of n (h, alpha, beta, b1, b2),
-     * 1 of n for the geometric form's κ, term bytes.  Only what is used:
-     * every byte per knot costs construction time. */
+    /* layout: 3 arrays of n+1 (x, f, d), n/TS_CUM_STEP + 1 running integrals,
+     * alpha and beta (n each), the control values b1, b2 (n each; the
+     * geometric form derives them unless constraint records may nudge
+     * them), the geometric form's κ (n), term bytes.  Only what cannot be
+     * derived cheaply: every byte per knot costs construction time. */
     int geo = ts__form(opt->form)->geometric;
-    size_t per_interval_arrays = 5 + (size_t)geo;
+    int keep_b = !geo || opt->n_constraints;
+    size_t per_interval_arrays = 2 + 2 * (size_t)keep_b + (size_t)geo;
     size_t n = n_points - 1, a, b, c, total, bytes;
-    if (!mul_ok(n_points, 4, &a) || !mul_ok(n, per_interval_arrays, &b))
+    if (!mul_ok(n_points, 3, &a) || !mul_ok(n, per_interval_arrays, &b))
         return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
     total = a + b;
-    if (total < a || !mul_ok(total, sizeof(double), &c) || c + n < c)
+    if (total < a || total + (n / TS_CUM_STEP + 1) < total)
+        return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
+    total += n / TS_CUM_STEP + 1;
+    if (!mul_ok(total, sizeof(double), &c) || c + n < c)
         return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
     bytes = c + n;
 
@@ -472,12 +496,13 @@ static ts_status spline_new(const double *x, const double *f, size_t n_points,
     sp->x = p, p += n_points;
     sp->f = p, p += n_points;
     sp->d = p, p += n_points;
-    sp->cum = p, p += n_points;
-    sp->h = p, p += n;
+    sp->cum = p, p += n / TS_CUM_STEP + 1;
     sp->alpha = p, p += n;
     sp->beta = p, p += n;
-    sp->b1 = p, p += n;
-    sp->b2 = p, p += n;
+    if (keep_b) {
+        sp->b1 = p, p += n;
+        sp->b2 = p, p += n;
+    }
     if (geo)
         sp->kappa = p, p += n;
     sp->term = (unsigned char *)p;

@@ -302,9 +302,10 @@ static ts_status line_slopes(const ts_surface *s, ts_slopes method, int dir, con
     return TS_OK;
 }
 
-/* The same without the check (twists: their sum is checked). */
+/* The same without the check (twists: their sum is checked); mean: d
+ * becomes the mean 0.5 (d + slope) of what it holds and the slopes. */
 static void line_slopes_raw(const ts_surface *s, ts_slopes method, int dir, const double *v,
-                            double *d, double *tmp)
+                            double *d, double *tmp, int mean)
 {
     size_t np = s->nx + 1, nq = s->ny + 1;
     size_t lines = dir ? np : nq, len = dir ? nq : np;
@@ -314,8 +315,10 @@ static void line_slopes_raw(const ts_surface *s, ts_slopes method, int dir, cons
         for (size_t k = 0; k < len; k++)
             f[k] = v[dir ? k * np + L : L * np + k];
         ts__slopes_range(method, t, f, len, g, 0, len);
-        for (size_t k = 0; k < len; k++)
-            d[dir ? k * np + L : L * np + k] = g[k];
+        for (size_t k = 0; k < len; k++) {
+            double *o = &d[dir ? k * np + L : L * np + k];
+            *o = mean ? 0.5 * (*o + g[k]) : g[k];
+        }
     }
 }
 
@@ -420,13 +423,24 @@ static ts_status scheme_a(ts_surface *s, const ts_surface_options *o, int dir, t
 }
 
 /* docs/method.md §11.3: clamp every twist so that on each of its patches the
- * inner control gap keeps at least half of what the edges leave. */
-static void clamp_twists(ts_surface *s)
+ * inner control gap keeps at least half of what the edges leave.  k: nx + ny
+ * scratch doubles (each interval's k, formed once). */
+static void clamp_twists(ts_surface *s, double *k)
 {
     size_t np = s->nx + 1, nn = np * (s->ny + 1);
+    double *kx = k, *ky = k + s->nx;
+    for (size_t i = 0; i < s->nx; i++)
+        kx[i] = ts__geo_k(s->x[i + 1] - s->x[i], s->ax[i]);
+    for (size_t j = 0; j < s->ny; j++)
+        ky[j] = ts__geo_k(s->y[j + 1] - s->y[j], s->ay[j]);
     for (size_t n = 0; n < nn; n++) {
         size_t i = n % np, j = n / np;
         double lo = -(double)INFINITY, hi = (double)INFINITY;
+        double g[2] = {0.0, 0.0}, pp[2] = {0.0, 0.0}, qq[2] = {0.0, 0.0};
+        int per_patch = s->shape == TS_SURFACE_GRIDS;
+        for (int side = 0; side < 2 && !per_patch; side++) /* the node's gaps, the same for its patches */
+            if (side ? s->has_upper : s->has_lower)
+                node_gap(s, n, side, 0, 0, &g[side], &pp[side], &qq[side]);
         for (int cx = 0; cx < 2; cx++) {
             for (int cy = 0; cy < 2; cy++) {
                 /* patch (i - cx, j - cy); the node is its corner (cx, cy) */
@@ -434,15 +448,14 @@ static void clamp_twists(ts_surface *s)
                     (!cy && j == s->ny))
                     continue;
                 size_t pi = i - (size_t)cx, pj = j - (size_t)cy;
-                double ux = ts__geo_k(s->x[pi + 1] - s->x[pi], s->ax[pi]);
-                double uy = ts__geo_k(s->y[pj + 1] - s->y[pj], s->ay[pj]);
+                double ux = kx[pi], uy = ky[pj];
                 double sx = cx ? -1.0 : 1.0, sy = cy ? -1.0 : 1.0;
                 for (int side = 0; side < 2; side++) {
                     if (!(side ? s->has_upper : s->has_lower))
                         continue;
-                    double g, pp, qq;
-                    node_gap(s, n, side, pi, pj, &g, &pp, &qq);
-                    double F = g + sx * ux * pp + sy * uy * qq;
+                    if (per_patch) /* a field's slopes depend on the patch (§11.7) */
+                        node_gap(s, n, side, pi, pj, &g[side], &pp[side], &qq[side]);
+                    double F = g[side] + sx * ux * pp[side] + sy * uy * qq[side];
                     double c = (side ? -1.0 : 1.0) * sx * sy * ux * uy; /* c r >= -F/2 */
                     if (c > 0.0)
                         lo = fmax(lo, -0.5 * F / c);
@@ -455,8 +468,9 @@ static void clamp_twists(ts_surface *s)
     }
 }
 
-/* Are the control gaps of patch c inside every side (docs/method.md §11.3)? */
-static int patch_inside(const ts_surface *s, size_t c)
+/* Are the control gaps of patch c with net B inside every side
+ * (docs/method.md §11.3)? */
+static int patch_inside(const ts_surface *s, size_t c, const double B[16])
 {
     for (int side = 0; side < 2; side++) {
         if (!(side ? s->has_upper : s->has_lower))
@@ -469,7 +483,7 @@ static int patch_inside(const ts_surface *s, size_t c)
             continue;
         }
         double G[16], guard;
-        ts__surf_gaps(s, c % s->nx, c / s->nx, side ? &s->upper : &s->lower, 1 - 2 * side, G,
+        ts__surf_gaps(s, c % s->nx, c / s->nx, B, side ? &s->upper : &s->lower, 1 - 2 * side, G,
                       &guard);
         if (!ts__surf_gaps_inside(G, guard))
             return 0;
@@ -477,11 +491,13 @@ static int patch_inside(const ts_surface *s, size_t c)
     return 1;
 }
 
-/* docs/method.md §11.6: where rounding leaves a patch's control values on or
- * across a side, raise a^x and a^y of its column and row tenfold (at most
- * REPAIR_ROUNDS times, a <= 1e300), clamp the twists again and rebuild the
- * net, until every patch is proven; else TS_ERR_INFEASIBLE at the first
- * patch that is not.  flag: nx + ny scratch doubles. */
+/* docs/method.md §11.6: every patch's net must be finite (TS_ERR_NONFINITE
+ * at the first that is not); where rounding leaves a patch's control values
+ * on or across a side, raise a^x and a^y of its column and row tenfold (at
+ * most REPAIR_ROUNDS times, a <= 1e300) and clamp the twists again, until
+ * every patch is proven; else TS_ERR_INFEASIBLE at the first patch that is
+ * not.  Each net is formed once per round (ts__surf_patch).  flag: nx + ny
+ * scratch doubles. */
 #define REPAIR_ROUNDS 12
 static ts_status repair(ts_surface *s, double *flag, ts_error *err)
 {
@@ -492,11 +508,19 @@ static ts_status repair(ts_surface *s, double *flag, ts_error *err)
         size_t bad = SIZE_MAX;
         for (size_t k = 0; k < nx + ny; k++)
             flag[k] = 0.0;
-        for (size_t c = 0; c < nx * ny; c++)
-            if (!patch_inside(s, c)) {
-                bad = bad == SIZE_MAX ? c : bad;
-                flag[c % nx] = flag[nx + c / nx] = 1.0;
+        for (size_t c = 0; c < nx * ny; c++) {
+            double B[16];
+            ts__surf_patch(s, c % nx, c / nx, B);
+            for (size_t k = 0; k < 16; k++)
+                if (!isfinite(B[k]))
+                    return ts__fail(err, TS_ERR_NONFINITE, c, TS_WHERE_INTERVAL);
+            if (bad == SIZE_MAX || flag[c % nx] == 0.0 || flag[nx + c / nx] == 0.0) {
+                if (!patch_inside(s, c, B)) {
+                    bad = bad == SIZE_MAX ? c : bad;
+                    flag[c % nx] = flag[nx + c / nx] = 1.0;
+                }
             }
+        }
         if (bad == SIZE_MAX)
             return TS_OK;
         if (round == REPAIR_ROUNDS)
@@ -509,12 +533,7 @@ static ts_status repair(ts_surface *s, double *flag, ts_error *err)
                 *a *= 10.0;
             }
         }
-        clamp_twists(s);
-        ts__surf_net(s);
-        for (size_t c = 0; c < nx * ny; c++)
-            for (size_t k = 0; k < 16; k++)
-                if (!isfinite(s->B[16 * c + k]))
-                    return ts__fail(err, TS_ERR_NONFINITE, c, TS_WHERE_INTERVAL);
+        clamp_twists(s, flag); /* the flags are spent */
     }
 }
 
@@ -546,7 +565,7 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
     ts_status st = check_options(o, err);
     if (st != TS_OK)
         return st;
-    /* 24 (nx+1)(ny+1) + 4 (nx + ny + 2) doubles <= 32 (nx+1)(ny+1) */
+    /* 4 (nx+1)(ny+1) + 6 max(nx+1, ny+1) doubles <= 32 (nx+1)(ny+1) */
     if (ny_points > SIZE_MAX / 32 / sizeof(double) / nx_points)
         return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
     if ((st = check_axis(x, nx_points, err)) != TS_OK ||
@@ -557,7 +576,7 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
         return st;
     size_t nx = nx_points - 1, ny = ny_points - 1, nn = nx_points * ny_points;
     size_t len = nx_points > ny_points ? nx_points : ny_points;
-    size_t total = nx_points + ny_points + 4 * nn + nx + ny + 16 * nx * ny + 2 * len + nn;
+    size_t total = nx_points + ny_points + 4 * nn + nx + ny + 2 * len;
     ts_surface *s = ts__calloc(1, sizeof *s);
     double *blk = s ? ts__alloc_block(total * sizeof(double)) : NULL;
     if (!blk) {
@@ -590,8 +609,7 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
     s->r = s->q + nn;
     s->ax = s->r + nn;
     s->ay = s->ax + nx;
-    s->B = s->ay + ny;
-    double *tmp = s->B + 16 * nx * ny, *tmp2 = tmp + 2 * len;
+    double *tmp = s->ay + ny;
     memcpy(s->x, x, nx_points * sizeof(double));
     memcpy(s->y, y, ny_points * sizeof(double));
     if ((st = check_nodes(s, o, z, err)) != TS_OK)
@@ -605,10 +623,9 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
             s->r[n] = 0.0;
     } else {
         /* r = (∂q/∂x + ∂p/∂y)/2: symmetric under transposition */
-        line_slopes_raw(s, o->slopes, 0, s->q, s->r, tmp);
-        line_slopes_raw(s, o->slopes, 1, s->p, tmp2, tmp);
+        line_slopes_raw(s, o->slopes, 0, s->q, s->r, tmp, 0);
+        line_slopes_raw(s, o->slopes, 1, s->p, s->r, tmp, 1);
         for (size_t n = 0; n < nn; n++) {
-            s->r[n] = 0.5 * (s->r[n] + tmp2[n]);
             if (!isfinite(s->r[n])) {
                 st = ts__fail(err, TS_ERR_NONFINITE, n, TS_WHERE_POINT);
                 goto fail;
@@ -624,15 +641,8 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
         touch_slopes(s);
         if ((st = scheme_a(s, o, 0, err)) != TS_OK || (st = scheme_a(s, o, 1, err)) != TS_OK)
             goto fail;
-        clamp_twists(s);
+        clamp_twists(s, tmp);
     }
-    ts__surf_net(s);
-    for (size_t c = 0; c < nx * ny; c++)
-        for (size_t k = 0; k < 16; k++)
-            if (!isfinite(s->B[16 * c + k])) {
-                st = ts__fail(err, TS_ERR_NONFINITE, c, TS_WHERE_INTERVAL);
-                goto fail;
-            }
     if ((st = repair(s, tmp, err)) != TS_OK)
         goto fail;
     s->certified = o->shape != TS_SURFACE_NONE;
@@ -673,7 +683,7 @@ static void report_patch(const ts_surface *s, size_t i, size_t j, const ts_plane
     rep->y1 = s->y[j + 1];
     rep->ax = s->ax[i];
     rep->ay = s->ay[j];
-    memcpy(rep->B, s->B + 16 * (j * s->nx + i), sizeof rep->B);
+    ts__surf_patch(s, i, j, rep->B);
     rep->has_lower = lower != NULL;
     rep->has_upper = upper != NULL;
     int ok = lower || upper;

@@ -121,8 +121,9 @@ static double place(const double *knots, const double *a, size_t i, ts_form form
 int ts__surf_certify_patch(const ts_surface *s, size_t i, size_t j, const ts_plane *pl,
                            int sign, double *proven, double *sampled, double *ax, double *ay)
 {
-    double G[16], guard;
-    ts__surf_gaps(s, i, j, pl, sign, G, &guard);
+    double B[16], G[16], guard;
+    ts__surf_patch(s, i, j, B);
+    ts__surf_gaps(s, i, j, B, pl, sign, G, &guard);
     int lin = s->form != TS_FORM_GEOMETRIC && (pl->p != 0.0 || pl->q != 0.0);
     bb_ctx c;
     c.kx = lin ? sign * pl->p * (s->x[i + 1] - s->x[i]) / TS_HALF_PI : 0.0;
@@ -258,7 +259,8 @@ static int certify_cell(const ts_surface *s, size_t i, size_t j, const ts__gboun
                         double dx, double dy, double gx, double gy, double *proven,
                         double *sampled, double *ax, double *ay)
 {
-    const double *B = s->B + 16 * (j * s->nx + i);
+    double B[16];
+    ts__surf_patch(s, i, j, B);
     double X[4], Y[4], G[16], hx = s->x[i + 1] - s->x[i], hy = s->y[j + 1] - s->y[j];
     ts__surf_xhat(s->ax, i, s->form, X);
     ts__surf_xhat(s->ay, j, s->form, Y);
@@ -314,7 +316,8 @@ static int certify_cell(const ts_surface *s, size_t i, size_t j, const ts__gboun
 int ts__surf_certify_grid(const ts_surface *s, size_t i, size_t j, const ts__gbound *g,
                           int sign, double *proven, double *sampled, double *ax, double *ay)
 {
-    const double *B = s->B + 16 * (j * s->nx + i);
+    double B[16];
+    ts__surf_patch(s, i, j, B);
     gb_ctx c;
     c.s = s;
     c.g = g;

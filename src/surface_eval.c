@@ -4,7 +4,6 @@
 
 #include <math.h>
 #include <stdint.h>
-#include <string.h>
 
 static int inside(const double *t, size_t n, double v)
 {
@@ -105,7 +104,8 @@ static void eval_at(const ts_surface *s, double x, double y, ts_surface_cursor *
     int want = zx || zy;
     ts__surf_basis(s->x, s->ax, i, s->form, x, Ax, want ? dAx : NULL);
     ts__surf_basis(s->y, s->ay, j, s->form, y, Ay, want ? dAy : NULL);
-    const double *B = s->B + 16 * (j * s->nx + i);
+    double B[16];
+    ts__surf_patch(s, i, j, B);
     double v = 0.0, vx = 0.0, vy = 0.0;
     for (int k = 0; k < 4; k++) {
         double c = 0.0, cy = 0.0;
@@ -185,7 +185,7 @@ ts_status ts_surface_eval_grid(const ts_surface *s, const double *xq, size_t mx,
     ts_cursor cx = TS_CURSOR_INIT, cy = TS_CURSOR_INIT;
     for (size_t a0 = 0; a0 < mx; a0 += GRID_BLOCK) {
         size_t na = mx - a0 < GRID_BLOCK ? mx - a0 : GRID_BLOCK;
-        double Ax[GRID_BLOCK][4];
+        double Ax[GRID_BLOCK][4], kx[GRID_BLOCK][2];
         size_t ia[GRID_BLOCK];
         for (size_t a = 0; a < na; a++) {
             double v = xq[a0 + a];
@@ -193,6 +193,12 @@ ts_status ts_surface_eval_grid(const ts_surface *s, const double *xq, size_t mx,
             if (inside(s->x, s->nx, v)) {
                 ia[a] = ts__search(s->x, s->nx, v, &cx);
                 ts__surf_basis(s->x, s->ax, ia[a], s->form, v, Ax[a], NULL);
+                if (a > 0 && ia[a] == ia[a - 1]) {
+                    kx[a][0] = kx[a - 1][0];
+                    kx[a][1] = kx[a - 1][1];
+                } else {
+                    ts__surf_ks(s, 0, ia[a], kx[a]);
+                }
             }
         }
         for (size_t b = 0; b < my; b++) {
@@ -203,8 +209,9 @@ ts_status ts_surface_eval_grid(const ts_surface *s, const double *xq, size_t mx,
                 continue;
             }
             size_t j = ts__search(s->y, s->ny, v, &cy), ic = SIZE_MAX;
-            double Ay[4], C[4] = {0.0, 0.0, 0.0, 0.0};
+            double Ay[4], C[4] = {0.0, 0.0, 0.0, 0.0}, B[16], ky[2];
             ts__surf_basis(s->y, s->ay, j, s->form, v, Ay, NULL);
+            ts__surf_ks(s, 1, j, ky);
             for (size_t a = 0; a < na; a++) {
                 if (ia[a] == SIZE_MAX) {
                     row[a] = (double)NAN;
@@ -212,7 +219,7 @@ ts_status ts_surface_eval_grid(const ts_surface *s, const double *xq, size_t mx,
                 }
                 if (ia[a] != ic) { /* the patch's four curves in x at this y */
                     ic = ia[a];
-                    const double *B = s->B + 16 * (j * s->nx + ic);
+                    ts__surf_patch_k(s, ic, j, kx[a], ky, B);
                     for (int k = 0; k < 4; k++)
                         C[k] = Ay[0] * B[4 * k] + Ay[1] * B[4 * k + 1] + Ay[2] * B[4 * k + 2] +
                                Ay[3] * B[4 * k + 3];
@@ -259,7 +266,8 @@ ts_status ts_surface_integral(const ts_surface *s, double xa, double xb, double 
             double Wy[4];
             ts__surf_basis_int(s->y, s->ay, j, s->form, fmax(ya, s->y[j]),
                                fmin(yb, s->y[j + 1]), Wy);
-            const double *B = s->B + 16 * (j * s->nx + i);
+            double B[16];
+            ts__surf_patch(s, i, j, B);
             for (int k = 0; k < 4; k++)
                 for (int l = 0; l < 4; l++)
                     sum += Wx[k] * Wy[l] * B[4 * k + l];
@@ -276,7 +284,7 @@ ts_status ts_surface_control(const ts_surface *s, size_t i, size_t j, double B[1
         return TS_ERR_NULL;
     if (i >= s->nx || j >= s->ny)
         return TS_ERR_INDEX;
-    memcpy(B, s->B + 16 * (j * s->nx + i), 16 * sizeof(double));
+    ts__surf_patch(s, i, j, B);
     double hx = s->x[i + 1] - s->x[i], hy = s->y[j + 1] - s->y[j];
     if (X) {
         ts__surf_xhat(s->ax, i, s->form, X);

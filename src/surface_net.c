@@ -129,33 +129,53 @@ double ts__surf_k(const double *t, const double *a, size_t n, size_t i, size_t n
     return ts__geo_k(t[i + 1] - t[i], am);
 }
 
-void ts__surf_net(ts_surface *s)
+void ts__surf_ks(const ts_surface *s, int dir, size_t i, double u[2])
 {
-    size_t nx = s->nx, ny = s->ny, np = nx + 1;
-    for (size_t j = 0; j < ny; j++) {
-        for (size_t i = 0; i < nx; i++) {
-            double *B = s->B + 16 * (j * nx + i);
-            /* the four corners: (k, l) of the corner, σ the inward signs */
-            for (int cy = 0; cy < 2; cy++) {
-                for (int cx = 0; cx < 2; cx++) {
-                    size_t ni = i + (size_t)cx, nj = j + (size_t)cy, n = nj * np + ni;
-                    double ux = ts__surf_k(s->x, s->ax, nx, i, ni, s->form);
-                    double uy = ts__surf_k(s->y, s->ay, ny, j, nj, s->form);
-                    double sx = cx ? -1.0 : 1.0, sy = cy ? -1.0 : 1.0;
-                    double ex = sx * ux * s->p[n], ey = sy * uy * s->q[n];
-                    int k0 = cx ? 3 : 0, l0 = cy ? 3 : 0, k1 = cx ? 2 : 1, l1 = cy ? 2 : 1;
-                    B[4 * k0 + l0] = s->z[n];
-                    B[4 * k1 + l0] = s->z[n] + ex;
-                    B[4 * k0 + l1] = s->z[n] + ey;
-                    B[4 * k1 + l1] = s->z[n] + ex + ey + sx * sy * ux * uy * s->r[n];
-                }
-            }
+    const double *t = dir ? s->y : s->x, *a = dir ? s->ay : s->ax;
+    size_t n = dir ? s->ny : s->nx;
+    u[0] = ts__surf_k(t, a, n, i, i, s->form);
+    /* the same at both ends but in the C¹ form (its neighbours' a) */
+    u[1] = s->form == TS_FORM_C1 ? ts__surf_k(t, a, n, i, i + 1, s->form) : u[0];
+}
+
+void ts__surf_patch_k(const ts_surface *s, size_t i, size_t j, const double ux[2],
+                      const double uy[2], double B[16])
+{
+    size_t np = s->nx + 1;
+    /* the four corners: (k, l) of the corner, σ the inward signs */
+    for (int cy = 0; cy < 2; cy++) {
+        for (int cx = 0; cx < 2; cx++) {
+            size_t n = (j + (size_t)cy) * np + i + (size_t)cx;
+            double sx = cx ? -1.0 : 1.0, sy = cy ? -1.0 : 1.0;
+            double ex = sx * ux[cx] * s->p[n], ey = sy * uy[cy] * s->q[n];
+            int k0 = cx ? 3 : 0, l0 = cy ? 3 : 0, k1 = cx ? 2 : 1, l1 = cy ? 2 : 1;
+            B[4 * k0 + l0] = s->z[n];
+            B[4 * k1 + l0] = s->z[n] + ex;
+            B[4 * k0 + l1] = s->z[n] + ey;
+            B[4 * k1 + l1] = s->z[n] + ex + ey + sx * sy * ux[cx] * uy[cy] * s->r[n];
         }
     }
 }
 
+void ts__surf_patch(const ts_surface *s, size_t i, size_t j, double B[16])
+{
+    double ux[2], uy[2];
+    ts__surf_ks(s, 0, i, ux);
+    ts__surf_ks(s, 1, j, uy);
+    ts__surf_patch_k(s, i, j, ux, uy, B);
+}
+
 double ts__surf_plane_at(const ts_plane *pl, double x, double y, double *err)
 {
+    /* a constant plane at a finite point: every term below but s2 is ±0
+     * and their sum +0, so v = c + 0 (c, or +0 for c = ±0) and the error
+     * bound 2ε|v| + 4·2^-1074: the same bits without the products */
+    if (pl->p == 0.0 && pl->q == 0.0 && fabs(x) <= DBL_MAX && fabs(y) <= DBL_MAX) {
+        double v = pl->c + 0.0;
+        if (err)
+            *err = 2.0 * DBL_EPSILON * fabs(v) + 4.0 * DBL_TRUE_MIN;
+        return v;
+    }
     /* docs/method.md §11.3: p x = P + e, q y = Q + f exactly (fma); P + Q =
      * s1 + e1, s1 + c = s2 + e2 exactly (TwoSum); the small terms summed */
     double P = pl->p * x, e = fma(pl->p, x, -P), Q = pl->q * y, f = fma(pl->q, y, -Q);
@@ -168,14 +188,16 @@ double ts__surf_plane_at(const ts_plane *pl, double x, double y, double *err)
     return v;
 }
 
-void ts__surf_gaps(const ts_surface *s, size_t i, size_t j, const ts_plane *pl, int sign,
-                   double G[16], double *guard)
+void ts__surf_gaps(const ts_surface *s, size_t i, size_t j, const double B[16], const ts_plane *pl,
+                   int sign, double G[16], double *guard)
 {
-    double X[4], Y[4], hx = s->x[i + 1] - s->x[i], hy = s->y[j + 1] - s->y[j];
-    const double *B = s->B + 16 * (j * s->nx + i);
-    ts__surf_xhat(s->ax, i, s->form, X);
-    ts__surf_xhat(s->ay, j, s->form, Y);
+    double X[4] = {0.0, 0.0, 0.0, 0.0}, Y[4] = {0.0, 0.0, 0.0, 0.0};
+    double hx = s->x[i + 1] - s->x[i], hy = s->y[j + 1] - s->y[j];
     int geo = s->form == TS_FORM_GEOMETRIC;
+    if (geo) { /* the abscissae: the geometric form's rise only */
+        ts__surf_xhat(s->ax, i, s->form, X);
+        ts__surf_xhat(s->ay, j, s->form, Y);
+    }
     /* docs/method.md §11.3, local coordinates: the plane at the patch's
      * corner (rounded about once) plus its rise p hx X̂_k + q hy Ŷ_l to the
      * control abscissae (geometric form; in the paper and C¹ forms the

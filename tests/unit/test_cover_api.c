@@ -57,33 +57,43 @@ static void test_null_accessors(void)
     CHECK(ts_curve_params(NULL, 0, &a, NULL) == TS_ERR_NULL && isnan(a));
 }
 
-/* n_points so large that one product of the block's size overflows; the
+/* n_points so large that one step of the block's size overflows; the
  * arrays are not read (ASan would see it): x and f have 2 points.
- * Paper form: 4 arrays of n+1 doubles, 5 of n, n term bytes (spline.c). */
+ * The layout of spline.c: 3 arrays of np = n + 1 doubles, per of n (alpha,
+ * beta, and b1, b2 in the paper form, κ in the geometric form), n/8 + 1
+ * running integrals (TS_CUM_STEP), n term bytes. */
+static size_t layout_doubles(size_t n, size_t per)
+{
+    return 3 * (n + 1) + per * n + n / TS_CUM_STEP + 1;
+}
+
 static void test_size_overflow(void)
 {
-    /* the layout of spline.c: 4 arrays of np = n + 1 doubles, 5 of n (6 in
-     * the geometric form, the default), n term bytes */
     static const double x[2] = {0, 1}, f[2] = {0, 1};
     const size_t M = SIZE_MAX;
     for (int geo = 0; geo <= 1; geo++) {
         ts_spline_options o;
         ts_spline_options_init(&o);
         o.form = geo ? TS_FORM_GEOMETRIC : TS_FORM_PAPER;
-        size_t per = 5 + (size_t)geo, np[4];
-        np[0] = M / 4;      /* 4 np fits, per n does not */
-        np[1] = M / 6;      /* 4 np and per n fit, their sum does not */
-        np[2] = M / 16;     /* the sum (4 + per) n + 4 fits, times 8 bytes it does not */
-        np[3] = (M - 32) / (8 * (4 + per)) + 1; /* 8 ((4 + per) n + 4) fits, plus n bytes does not */
+        size_t per = geo ? 3 : 4, q = 3 + per, np[4];
+        np[0] = M / 2;  /* 3 np does not fit */
+        np[1] = M / 5;  /* 3 np and per n fit, their sum does not */
+        np[2] = M / 16; /* the doubles fit, times 8 bytes they do not */
+        /* case 3: the largest n whose doubles times 8 fit; plus n bytes they do not */
+        size_t n3 = (M / 8 - 4) / (8 * q + 1) * 8;
+        CHECK(layout_doubles(n3, per) <= M / 8);
+        while (layout_doubles(n3 + 1, per) <= M / 8)
+            n3++;
+        np[3] = n3 + 1;
         for (int k = 0; k < 4; k++) {
             ts_spline *s = (ts_spline *)(uintptr_t)1;
             ts_error e;
             CHECKF(ts_spline_new(x, f, np[k], &o, &s, &e) == TS_ERR_OVERFLOW && s == NULL &&
                        e.status == TS_ERR_OVERFLOW, "form %d, case %d", geo, k);
         }
-        /* the check of case 3 is tight: n + c > SIZE_MAX, c = 8 (4 + per) n + 32 <= SIZE_MAX */
-        size_t n3 = np[3] - 1, c3 = 8 * (4 + per) * n3 + 32;
-        CHECKF(c3 / (8 * (4 + per)) == n3 && n3 > M - c3, "form %d", geo);
+        /* case 3 is tight: the bytes of the doubles fit, with n more they do not */
+        size_t c3 = 8 * layout_doubles(n3, per);
+        CHECKF(c3 / 8 == layout_doubles(n3, per) && n3 > M - c3, "form %d", geo);
     }
 }
 
@@ -156,14 +166,14 @@ static void test_block_edge(void)
     ts_spline_free(s);
 }
 
-/* A block of >= 8 MiB (status.c ts__alloc_block): 120,000 points in the
- * paper form need 8 (4 np + 5 n) + n = 8.76 MB.  Then: the allocation
+/* A block of >= 8 MiB (status.c ts__alloc_block): 180,000 points in the
+ * default (geometric) form need 8 (3 np + 3 n + n/8 + 1) + n = 9.0 MB.  Then: the allocation
  * refused by the test hook (TS_ERR_NOMEM: the handle is allocation 1, the
  * block 2), and aligned_alloc refused (the fallback to malloc builds the
  * same spline). */
 static void test_large_block(void)
 {
-    const size_t np = 120000;
+    const size_t np = 180000;
     ts_error e;
     long before = aligned_calls;
     ts_spline *s = flat_spline(np, &e);
