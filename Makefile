@@ -200,6 +200,7 @@ bench-python: python-deps
 	  --no-build-isolation ./bindings/python
 	cd build-bench && python-venv/bin/python ../bench/bench_python.py
 	cd build-bench && python-venv/bin/python ../bench/bench_xarray.py
+	cd build-bench && python-venv/bin/python ../bench/bench_histo.py 400 && python-venv/bin/python ../bench/bench_histo.py 2000
 
 # The gallery (out/gallery/index.html): figures of trigspline.plot, each with
 # the code that made it (scripts/gallery.py, a few seconds).  The package is

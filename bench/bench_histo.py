@@ -10,9 +10,13 @@ same seeded intermittent daily series (62 % dry days, spikes x1000):
 trigspline as one gufunc call (per_bin=24, the path the xarray accessor
 takes for whole steps per bin; also the general grid path); SciPy as one vectorised PchipInterpolator
 over the series axis, evaluated on the hourly grid and differenced.  CPU
-seconds (time.process_time), best of 3.  Prints output values per CPU-second
-for each and their ratio, with the largest relative total error and the
-number of negative hours of each.
+seconds (time.process_time), median of ROUNDS interleaved rounds (ours,
+grid, PCHIP, in an order that turns each round); each call starts with the
+previous result of the same method released, so both meet the allocator in
+the same state (a result kept alive while the next is made puts one of them
+in fresh pages).  Prints output values per CPU-second for each and their
+ratio with the goal (>= 3x) and its verdict, with the largest relative total
+error and the number of negative hours of each.
 """
 import sys
 import time
@@ -44,13 +48,23 @@ def pchip():
     return np.diff(PchipInterpolator(e, c, axis=1)(g), axis=1)
 
 
-def best(fn):
-    b = np.inf
-    for _ in range(3):
-        c0 = time.process_time()
-        out = fn()
-        b = min(b, time.process_time() - c0)
-    return b, out
+ROUNDS = 7
+
+
+def timed(fns):
+    """Median CPU time of each of fns over ROUNDS interleaved rounds, and
+    each one's last output."""
+    times = [[] for _ in fns]
+    outs = [None] * len(fns)
+    for r in range(ROUNDS):
+        order = list(range(len(fns)))
+        order = order[r % len(order):] + order[:r % len(order)]
+        for k in order:
+            outs[k] = None  # release the previous result first
+            c0 = time.process_time()
+            outs[k] = fns[k]()
+            times[k].append(time.process_time() - c0)
+    return [float(np.median(ts)) for ts in times], outs
 
 
 def quality(out):
@@ -60,9 +74,7 @@ def quality(out):
     return err.max(), int((out < 0).sum())
 
 
-to, oo = best(ours)
-tg, og = best(ours_grid)
-tp, op = best(pchip)
+(to, tg, tp), (oo, og, op) = timed([ours, ours_grid, pchip])
 n = S * D * 24
 eo, no = quality(oo)
 ep, np_ = quality(op)
@@ -72,4 +84,5 @@ print("trigspline.disaggregate: %.3g values per CPU-second (%.3f s); total error
 print("trigspline on the grid:  %.3g values per CPU-second (%.3f s)" % (n / tg, tg))
 print("PCHIP on the cumulative: %.3g values per CPU-second (%.3f s); total error %.2g, %d negative"
       % (n / tp, tp, ep, np_))
-print("ratio (trigspline / PCHIP): %.2f" % (tp / to))
+ratio = tp / to
+print("ratio (trigspline / PCHIP): %.2f   goal >= 3: %s" % (ratio, "holds" if ratio >= 3 else "NOT HELD"))
