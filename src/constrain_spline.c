@@ -245,6 +245,25 @@ int ts__bcurve_side(const ts_spline *b, double sg, double x, double f)
     return sg > 0.0 ? f > hi : f < lo;
 }
 
+/* sg (S − B) at S's parameter t of interval i, both evaluated in floating
+ * point (no proof: only to stop a certificate that cannot succeed). */
+static double gap_t(const ts_spline *sp, size_t i, const ts_spline *b, double sg, double t)
+{
+    double A[4], B[4], k = sp->kappa[i], o[3];
+    ts__basis_t(t, A);
+    ts__B(sp, i, B);
+    double x = sp->x[i] + sp->h[i] * (A[1] * k + A[2] * (1.0 - k) + A[3]);
+    double y = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
+    if (!(b->x[0] <= x && x <= b->x[b->n]))
+        return HUGE_VAL;
+    size_t j = locate(b, x);
+    if (geo(b))
+        ts__geo_eval(b, j, x, 0, o);
+    else
+        ts__trig_eval_in(b, j, x, 0, o);
+    return sg * (y - o[0]);
+}
+
 int ts__bcurve_certify(const ts_spline *sp, size_t i, const ts_spline *b, double sg)
 {
     double st0[DEPTH + 2], st1[DEPTH + 2];
@@ -271,9 +290,10 @@ int ts__bcurve_certify(const ts_spline *sp, size_t i, const ts_spline *b, double
         }
         if (ok)
             continue;
-        if (d >= DEPTH)
-            return 0;
         double tm = 0.5 * (t0 + t1);
+        /* S on the wrong side of B at the cell's middle: no proof to find */
+        if (d >= DEPTH || gap_t(sp, i, b, sg, tm) < 0.0)
+            return 0;
         st0[top] = tm, st1[top] = t1, sd[top] = d + 1, top++;
         st0[top] = t0, st1[top] = tm, sd[top] = d + 1, top++;
     }

@@ -4,7 +4,7 @@
  * test of random combined-constraint problems (TS_CON_PROBLEMS problems,
  * default 4000; `make test-constraints` runs 10^6) with the false-refusal
  * rate against a brute-force search, and its slice with a bound given by
- * another spline (TS_CON_SPLINE_PROBLEMS, default 300; docs/method.md
+ * another spline (TS_CON_SPLINE_PROBLEMS, default 1000; docs/method.md
  * §13.6). */
 #include "trigspline.h"
 #include "th.h"
@@ -915,6 +915,6 @@ int main(void)
     const char *env = getenv("TS_CON_PROBLEMS");
     test_property(env ? atol(env) : 4000, getenv("TS_CON_GAPS_ONLY") != NULL);
     const char *envs = getenv("TS_CON_SPLINE_PROBLEMS");
-    test_property_spline(envs ? atol(envs) : 300);
+    test_property_spline(envs ? atol(envs) : 1000);
     return th_report("test_constraints");
 }
