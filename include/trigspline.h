@@ -690,9 +690,10 @@ TS_API ts_status ts_spline_certify(const ts_spline *s, const ts_line *lower, con
  *                      or interval): second divided differences of the wrong
  *                      sign (convex/concave), a secant beyond a slope bound,
  *                      data changing direction (increasing/decreasing), a
- *                      data point across a bound, or on a polyline (a
- *                      constant bound may be touched: the slope there is
- *                      then 0, pointing into the region at the ends);
+ *                      data point across a bound, or on a polyline or a
+ *                      bound spline (a constant bound may be touched: the
+ *                      slope there is then 0, pointing into the region at
+ *                      the ends);
  *   TS_ERR_INFEASIBLE  the slopes the constraints require at a knot
  *                      exclude each other (a proof that no C¹ curve exists);
  *   TS_ERR_UNPROVEN    no certified a_i up to 2^60 alpha_i was found, without
