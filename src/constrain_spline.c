@@ -175,6 +175,12 @@ static double geo_t(const ts_spline *b, size_t j, double x, int dir)
     return dir < 0 ? 0.0 : 1.0;
 }
 
+/* tan(θ/2) for θ in [0, π/2], without cancellation (1 + cos θ >= 1). */
+static double t_of(double th)
+{
+    return sin(th) / (1.0 + cos(th));
+}
+
 /* [*t0, *t1]: every parameter of interval j of b whose x lies in [xa, xb]
  * (xa <= xb); 0 when the interval does not meet [xa, xb]. */
 static int b_trange(const ts_spline *b, size_t j, double xa, double xb, double *t0, double *t1)
@@ -186,11 +192,11 @@ static int b_trange(const ts_spline *b, size_t j, double xa, double xb, double *
         *t0 = xa <= xj ? 0.0 : geo_t(b, j, xa, -1);
         *t1 = xb >= xk ? 1.0 : geo_t(b, j, xb, 1);
     } else {
-        /* θ = (π/2)(x − x_j)/h_j, t = tan(θ/2); rounding of θ and tan far
-         * below TMARGIN (docs/method.md §13.6) */
+        /* θ = (π/2)(x − x_j)/h_j, t = tan(θ/2) = sin θ/(1 + cos θ); their
+         * rounding far below TMARGIN (docs/method.md §13.6) */
         double h = b->h[j];
-        *t0 = xa <= xj ? 0.0 : fmax(0.0, tan(0.25 * TS_PI * ((xa - xj) / h)) - TMARGIN);
-        *t1 = xb >= xk ? 1.0 : fmin(1.0, tan(0.25 * TS_PI * ((xb - xj) / h)) + TMARGIN);
+        *t0 = xa <= xj ? 0.0 : fmax(0.0, t_of(TS_HALF_PI * ((xa - xj) / h)) - TMARGIN);
+        *t1 = xb >= xk ? 1.0 : fmin(1.0, t_of(TS_HALF_PI * ((xb - xj) / h)) + TMARGIN);
     }
     if (*t1 < *t0) /* cannot happen for xa <= xb; kept safe */
         *t0 = 0.0, *t1 = 1.0;
@@ -245,6 +251,8 @@ int ts__bcurve_side(const ts_spline *b, double sg, double x, double f)
     return sg > 0.0 ? f > hi : f < lo;
 }
 
+static void b_eval(const ts_spline *b, size_t j, double x, int want, double o[3]);
+
 /* sg (S − B) at S's parameter t of interval i, both evaluated in floating
  * point (no proof: only to stop a certificate that cannot succeed). */
 static double gap_t(const ts_spline *sp, size_t i, const ts_spline *b, double sg, double t)
@@ -256,11 +264,7 @@ static double gap_t(const ts_spline *sp, size_t i, const ts_spline *b, double sg
     double y = A[0] * B[0] + A[1] * B[1] + A[2] * B[2] + A[3] * B[3];
     if (!(b->x[0] <= x && x <= b->x[b->n]))
         return HUGE_VAL;
-    size_t j = locate(b, x);
-    if (geo(b))
-        ts__geo_eval(b, j, x, 0, o);
-    else
-        ts__trig_eval_in(b, j, x, 0, o);
+    b_eval(b, locate(b, x), x, 0, o);
     return sg * (y - o[0]);
 }
 
@@ -300,16 +304,22 @@ int ts__bcurve_certify(const ts_spline *sp, size_t i, const ts_spline *b, double
     return 1;
 }
 
+/* B and B' (want 1) at x in interval j of b. */
+static void b_eval(const ts_spline *b, size_t j, double x, int want, double o[3])
+{
+    if (geo(b))
+        ts__geo_eval(b, j, x, want, o);
+    else
+        ts__trig_eval_in(b, j, x, want, o);
+}
+
 /* sg (S − B) and its derivative at x in interval i of sp and j of b. */
 static void gap_at(const ts_spline *sp, size_t i, const ts_spline *b, size_t j, double sg,
                    double x, double g[2])
 {
     double s[3], o[3];
     ts__geo_eval(sp, i, x, 1, s);
-    if (geo(b))
-        ts__geo_eval(b, j, x, 1, o);
-    else
-        ts__trig_eval_in(b, j, x, 1, o);
+    b_eval(b, j, x, 1, o);
     g[0] = sg * (s[0] - o[0]);
     g[1] = sg * (s[1] - o[1]);
 }
