@@ -324,6 +324,34 @@ static void gap_at(const ts_spline *sp, size_t i, const ts_spline *b, size_t j, 
     g[1] = sg * (s[1] - o[1]);
 }
 
+/* The scan points of piece [u0, u1] (of interval i of sp and j of b): the
+ * ends, and the x of SCAN + 1 parameters equally spaced in θ of each curve
+ * (a geometric curve turns near its knots, within κh, where equal steps in
+ * x would not see it), sorted; returns their number. */
+static int scan_points(const ts_spline *sp, size_t i, const ts_spline *b, size_t j, double u0,
+                       double u1, double *xs)
+{
+    int m = 0;
+    xs[m++] = u0;
+    xs[m++] = u1;
+    for (int k = 1; k < SCAN; k++) {
+        double t = t_of(TS_HALF_PI * k / SCAN);
+        double c[2] = {sp->x[i] + sp->h[i] * xhat_at(sp, i, t),
+                       geo(b) ? b->x[j] + b->h[j] * xhat_at(b, j, t)
+                              : b->x[j] + b->h[j] * k / SCAN};
+        for (int l = 0; l < 2; l++)
+            if (u0 < c[l] && c[l] < u1)
+                xs[m++] = c[l];
+    }
+    for (int k = 1; k < m; k++) /* insertion sort */
+        for (int l = k; l > 0 && xs[l - 1] > xs[l]; l--) {
+            double v = xs[l];
+            xs[l] = xs[l - 1];
+            xs[l - 1] = v;
+        }
+    return m;
+}
+
 double ts__bcurve_gap(const ts_spline *sp, size_t i, const ts_spline *b, double sg, double *at)
 {
     double a = fmax(sp->x[i], b->x[0]), e = fmin(sp->x[i + 1], b->x[b->n]);
@@ -333,15 +361,15 @@ double ts__bcurve_gap(const ts_spline *sp, size_t i, const ts_spline *b, double 
         return best;
     for (size_t j = locate(b, a); j < b->n && b->x[j] < e; j++) {
         double u0 = fmax(a, b->x[j]), u1 = fmin(e, b->x[j + 1]);
-        double xs[SCAN + 1], gs[SCAN + 1][2];
-        for (int k = 0; k <= SCAN; k++) {
-            xs[k] = k == SCAN ? u1 : u0 + (u1 - u0) * k / SCAN;
+        double xs[2 * SCAN + 2], gs[2 * SCAN + 2][2];
+        int m = scan_points(sp, i, b, j, u0, u1, xs);
+        for (int k = 0; k < m; k++) {
             gap_at(sp, i, b, j, sg, xs[k], gs[k]);
             if (!(gs[k][0] >= best)) /* best NaN at first */
                 best = gs[k][0], *at = xs[k];
         }
         /* the minima inside: S' − B' from − to + between two scan points */
-        for (int k = 0; k < SCAN; k++) {
+        for (int k = 0; k + 1 < m; k++) {
             if (!(gs[k][1] < 0.0 && gs[k + 1][1] >= 0.0))
                 continue;
             double lo = xs[k], hi = xs[k + 1], g[2];
