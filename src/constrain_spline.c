@@ -163,8 +163,8 @@ static double geo_t(const ts_spline *b, size_t j, double x, int dir)
         else
             hi = mid;
     }
-    static const double step[3] = {0x1p-30, 0x1p-20, 0x1p-10};
-    for (int k = 0; k < 3; k++) {
+    static const double step[5] = {0x1p-44, 0x1p-36, 0x1p-28, 0x1p-20, 0x1p-10};
+    for (int k = 0; k < 5; k++) {
         double t = dir < 0 ? lo - step[k] : hi + step[k], xa, xb;
         if (!(0.0 < t && t < 1.0))
             break;
