@@ -314,8 +314,8 @@ static void b_eval(const ts_spline *b, size_t j, double x, int want, double o[3]
 }
 
 /* sg (S − B) and its derivative at x in interval i of sp and j of b. */
-static void gap_at(const ts_spline *sp, size_t i, const ts_spline *b, size_t j, double sg,
-                   double x, double g[2])
+static void gap_at(const ts_spline *sp, size_t i, const ts_spline *b, size_t j, double sg, double x,
+                   double g[2])
 {
     double s[3], o[3];
     ts__geo_eval(sp, i, x, 1, s);

@@ -12,7 +12,7 @@
 void cli_constraints_free(cli_opts *o)
 {
     for (size_t k = 0; k < o->n_cons; k++) {
-        free((double *)o->cons[k].px); /* px and py: one block */
+        free((double *)o->cons[k].px);                  /* px and py: one block */
         ts_spline_free((ts_spline *)o->cons[k].spline); /* spline:FILE (read_spline) */
     }
     free(o->cons);
