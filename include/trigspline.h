@@ -173,7 +173,7 @@ typedef enum ts_vocab {
     TS_VOCAB_WHERE = 8,
     TS_VOCAB_CONSTRAINT = 9, /* ts_constraint_kind: convex, concave, increasing, decreasing,
                                 lower, upper, slope-min, slope-max, slope-abs */
-    TS_VOCAB_BOUND = 10,     /* ts_bound: constant, polyline */
+    TS_VOCAB_BOUND = 10,     /* ts_bound: constant, polyline, spline */
     TS_VOCAB_CONDITION = 11, /* ts_condition: none, convex-data, concave-data, monotone-data,
                                 inside-bound, secant-slope, slope-conflict, unproven,
                                 touch-corner */
@@ -669,7 +669,16 @@ TS_API ts_status ts_spline_certify(const ts_spline *s, const ts_line *lower, con
  * A bound (lower, upper) is TS_BOUND_CONSTANT (y = value) or
  * TS_BOUND_POLYLINE: the piecewise-linear function through (px[j], py[j]),
  * j < n_poly (n_poly >= 2, px strictly increasing), on [px[0],
- * px[n_poly-1]] and no bound outside it; its breakpoints need not be knots.
+ * px[n_poly-1]] and no bound outside it; its breakpoints need not be knots;
+ * or TS_BOUND_SPLINE: another spline B (any form, its own knots, built by
+ * ts_spline_new), the bound on [x_0, x_m] of B and none outside it.  The
+ * fitted spline copies B's knots and control values (ts_spline_free frees
+ * them): B may be freed once ts_spline_new has returned, and
+ * ts_spline_constraint_report still reports S − B.  Data must lie strictly
+ * on their side of B (a point touching B, or within the rounding enclosure
+ * of B(x_j), is refused: TS_ERR_CONDITION, inside-bound); S − B is
+ * certified by subdivision with the convex hull of rational Bernstein
+ * coefficients in rigorous enclosures (docs/method.md §13.7).
  * Scope: intervals first .. first + count − 1 (count 0: first .. n − 1;
  * both 0 by ts_constraint_init: the whole range).
  *
@@ -690,21 +699,23 @@ TS_API ts_status ts_spline_certify(const ts_spline *s, const ts_line *lower, con
  *                      data changing direction (increasing/decreasing), a
  *                      data point across a bound, or on a polyline's inner
  *                      breakpoint that turns into the region (lower: the
- *                      slope rises there; touch-corner).  A bound may be
- *                      touched: a constant one with slope 0 there (pointing
- *                      into the region at the ends), a polyline with the
- *                      slope between those of its two pieces
- *                      (docs/method.md §13.6);
+ *                      slope rises there; touch-corner), or on or within
+ *                      rounding of a bound spline (not certified there).
+ *                      A bound may be touched: a constant one with slope 0
+ *                      there (pointing into the region at the ends), a
+ *                      polyline with the slope between those of its two
+ *                      pieces (docs/method.md §13.6);
  *   TS_ERR_INFEASIBLE  the slopes the constraints require at a knot
  *                      exclude each other (a proof that no C¹ curve exists);
  *   TS_ERR_UNPROVEN    no certified a_i up to 2^60 alpha_i was found, without
- *                      a proof that none exists (polyline bounds);
+ *                      a proof that none exists (polyline and spline bounds);
  *   TS_ERR_OPTION      an unknown kind or bound type, a scope beyond the
  *                      intervals, a form other than geometric, a shape;
  *   TS_ERR_NONFINITE   a non-finite value or polyline point;
  *   TS_ERR_UNSORTED    polyline abscissae not strictly increasing;
  *   TS_ERR_LENGTH      a polyline with fewer than 2 points;
- *   TS_ERR_NULL        constraints NULL with n_constraints > 0, px/py NULL;
+ *   TS_ERR_NULL        constraints NULL with n_constraints > 0, px/py NULL,
+ *                      spline NULL (TS_BOUND_SPLINE);
  *   TS_ERR_VERSION     a record whose struct_size is not sizeof(ts_constraint).
  * ts_constraints_diagnose says which constraint and which condition.
  */
@@ -723,7 +734,8 @@ typedef enum ts_constraint_kind {
 
 typedef enum ts_bound {
     TS_BOUND_CONSTANT = 0,
-    TS_BOUND_POLYLINE = 1
+    TS_BOUND_POLYLINE = 1,
+    TS_BOUND_SPLINE = 2
 } ts_bound;
 
 typedef struct ts_constraint {
@@ -734,6 +746,9 @@ typedef struct ts_constraint {
     const double *px, *py;     /* TS_BOUND_POLYLINE: n_poly points */
     size_t n_poly;
     size_t first, count;       /* scope in intervals; default 0, 0: all */
+    const ts_spline *spline;   /* TS_BOUND_SPLINE: the bound curve B (kept alive by the
+                                  caller during ts_spline_new only; the fitted spline
+                                  keeps its own copy of what it needs) */
 } ts_constraint;
 
 /* A record of kind with every other field at its default. */
@@ -783,13 +798,14 @@ typedef struct ts_constraint_report {
     int active;           /* it set a_i (its requirement was the largest) or changed a
                              slope at one of the interval's knots */
     double gap;           /* exact minimum over the interval (the part covered by a
-                             polyline) of: S'' (convex), −S'' (concave), S' (increasing),
+                             polyline or a bound spline) of: S'' (convex), −S'' (concave), S' (increasing),
                              −S' (decreasing), S − bound (lower), bound − S (upper),
                              S' − value (slope-min), value − S' (slope-max),
                              value − |S'| (slope-abs); >= 0 where certified */
     double at;            /* an x where it is attained */
-    int certified;        /* 1: proved (control polygon in exact arithmetic, or the
-                             minimum above its rounding guard) */
+    int certified;        /* 1: proved (control polygon in exact arithmetic, the
+                             minimum above its rounding guard, or for a bound
+                             spline the subdivision of docs/method.md §13.7) */
 } ts_constraint_report;
 TS_API void ts_constraint_report_init(ts_constraint_report *r);
 

@@ -71,12 +71,15 @@ ts_status ts__con_validate(const ts_spline_options *o, size_t n, ts_error *err,
         if (c->struct_size != sizeof *c)
             st = TS_ERR_VERSION;
         else if ((unsigned)c->kind >= (unsigned)TS_CONSTRAINT_COUNT_ ||
-                 (unsigned)c->bound > (unsigned)TS_BOUND_POLYLINE || c->first >= n ||
+                 (unsigned)c->bound > (unsigned)TS_BOUND_SPLINE || c->first >= n ||
                  c->count > n - c->first)
             st = TS_ERR_OPTION;
         else if (!isfinite(c->value) ||
                  (c->kind == TS_CONSTRAINT_SLOPE_ABS && !(c->value >= 0.0)))
             st = isfinite(c->value) ? TS_ERR_OPTION : TS_ERR_NONFINITE;
+        else if ((c->kind == TS_CONSTRAINT_LOWER || c->kind == TS_CONSTRAINT_UPPER) &&
+                 c->bound == TS_BOUND_SPLINE && !c->spline)
+            st = TS_ERR_NULL;
         else if ((c->kind == TS_CONSTRAINT_LOWER || c->kind == TS_CONSTRAINT_UPPER) &&
                  c->bound == TS_BOUND_POLYLINE) {
             if (!c->px || !c->py)
@@ -128,7 +131,9 @@ static double piece_slope(const ts_constraint *c, size_t p)
 }
 
 /* The exact sign (−1, 0, 1) of sg (f_j − bound(x_j)); 2 when x_j is outside
- * the polyline. */
+ * the polyline or the bound spline.  A bound spline's side is decided by an
+ * enclosure (docs/method.md §13.7): 1 where proved, else −1 (touching data
+ * are refused there, not certified). */
 static int data_side(const ts_constraint *c, double xj, double fj)
 {
     double sg = bound_sign(c), v[CON_EXACT];
@@ -136,6 +141,10 @@ static int data_side(const ts_constraint *c, double xj, double fj)
     if (c->bound == TS_BOUND_CONSTANT) { /* the sign of a difference is exact */
         double g = sg * (fj - c->value);
         return (g > 0.0) - (g < 0.0);
+    }
+    if (c->bound == TS_BOUND_SPLINE) {
+        int side = ts__bcurve_side(c->spline, sg, xj, fj);
+        return side < 0 ? 2 : (side ? 1 : -1);
     }
     size_t m = c->n_poly;
     if (xj < c->px[0] || xj > c->px[m - 1])
@@ -431,8 +440,15 @@ static double a_needed(const ts_constraint *c, double h, double fi, double fj, d
     double bs = bound_sign(c);
     if (bs == 0.0)
         return 0.0;
-    if (c->bound == TS_BOUND_CONSTANT) {
-        double g0 = bs * (fi - c->value), g1 = bs * (fj - c->value);
+    double cv = c->value, blo, bhi;
+    if (c->bound == TS_BOUND_SPLINE) {
+        /* the constant rule against B's range over the interval (§13.7) */
+        if (!ts__bcurve_range(c->spline, xi, xi + h, &blo, &bhi))
+            return 0.0;
+        cv = bs > 0.0 ? bhi : blo;
+    }
+    if (c->bound != TS_BOUND_POLYLINE) {
+        double g0 = bs * (fi - cv), g1 = bs * (fj - cv);
         if (bs * di < 0.0 && g0 > 0.0)
             a = fmax(a, -K3 * h * bs * di / g0);
         if (bs * dj > 0.0 && g1 > 0.0)
@@ -900,6 +916,11 @@ static double min_on(const target *tg, const seg_poly *s, const seg *g, double l
 static double con_gap(const ts_spline *sp, const ts_constraint *c, size_t i, double *at,
                       int *proven, int want)
 {
+    if (c->bound == TS_BOUND_SPLINE && bound_sign(c) != 0.0) { /* §13.7 */
+        *proven = ts__bcurve_certify(sp, i, c->spline, bound_sign(c));
+        *at = (double)NAN;
+        return want ? ts__bcurve_gap(sp, i, c->spline, bound_sign(c), at) : (double)NAN;
+    }
     seg g;
     seg_poly s;
     seg_of(sp, i, &g);
@@ -971,6 +992,9 @@ static int covers(const ts_constraint *c, const ts_spline *sp, size_t i)
     if ((c->kind == TS_CONSTRAINT_LOWER || c->kind == TS_CONSTRAINT_UPPER) &&
         c->bound == TS_BOUND_POLYLINE)
         return c->px[0] < sp->x[i + 1] && c->px[c->n_poly - 1] > sp->x[i];
+    if ((c->kind == TS_CONSTRAINT_LOWER || c->kind == TS_CONSTRAINT_UPPER) &&
+        c->bound == TS_BOUND_SPLINE)
+        return c->spline->x[0] < sp->x[i + 1] && c->spline->x[c->spline->n] > sp->x[i];
     return 1;
 }
 

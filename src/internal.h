@@ -20,6 +20,8 @@
  *       shape.c     the schemes' β rules and data checks
  *       certificate.c  interval gaps, hull and control-value proofs (read-only)
  *       surface_net.c  surfaces: control nets, patch bases, control gaps
+ *       constrain_spline.c  a bound given by another spline: its copy, the
+ *                   data's side, the certificate by subdivision, the minimum
  *   L3  kernels.c   batch evaluation kernels
  *       constrain.c constraint records: conditions, slopes, a_i, certificates
  *       repair.c    certification at build time: raise β until certified
@@ -123,6 +125,8 @@ struct ts_spline {
     double *con_pts;
     int *con_bind;       /* n: the record whose a_i requirement was the largest, −1 none */
     int *con_by;         /* n+1: the record that changed slope d_j last, −1 none */
+    ts_spline *con_spl;  /* ncon: copies of the bound splines (TS_BOUND_SPLINE; their
+                          * arrays in con_pts), the stored records point to them */
 };
 
 /* A gridded bound (docs/method.md §11.7), an owned copy: nx × ny nodes
@@ -869,6 +873,24 @@ void ts__surf_gaps(const ts_surface *s, size_t i, size_t j, const double B[16], 
 /* Are all 16 gaps >= guard (nonzero corners: > guard)?  Proves the patch on
  * the plane's side (docs/method.md §11.3). */
 int ts__surf_gaps_inside(const double G[16], double guard);
+
+/* ---- constrain_spline.c (docs/method.md §13.7) ------------------------- */
+/* b: a bound spline (any form), sg +1 lower, −1 upper.  sg (f − B(x)) > 0
+ * proved (1), not proved (0: across, touching, or within B(x)'s enclosure),
+ * x outside B's knots (−1). */
+int ts__bcurve_side(const ts_spline *b, double sg, double x, double f);
+/* [*lo, *hi] contains B over [xa, xb] ∩ [x_0, x_m] of b; 0 when empty. */
+int ts__bcurve_range(const ts_spline *b, double xa, double xb, double *lo, double *hi);
+/* sg (S − B) > 0 proved on interval i of the geometric spline sp (where B
+ * is defined), by subdivision and rigorous hulls: 1; 0 not proved. */
+int ts__bcurve_certify(const ts_spline *sp, size_t i, const ts_spline *b, double sg);
+/* The minimum of sg (S − B) over interval i where B is defined, *at its x;
+ * NaN (and *at) when B does not cover an open part of it. */
+double ts__bcurve_gap(const ts_spline *sp, size_t i, const ts_spline *b, double sg, double *at);
+/* Doubles of a copy of b (knots, values, slopes, widths, controls, κ);
+ * ts__bcurve_copy fills dst (zeroed first) with arrays in q. */
+size_t ts__bcurve_doubles(const ts_spline *b);
+void ts__bcurve_copy(const ts_spline *b, ts_spline *dst, double *q);
 
 /* ==== L3 ============================================================ */
 

@@ -344,20 +344,32 @@ static ts_status con_finish(ts_spline *sp, const ts_spline_options *o, con_prep 
     if (st != TS_OK)
         return st;
     (void)cumulate(sp, 0, sp->n, 0.0);
-    size_t nc = o->n_constraints, npts = 0, bytes, bp;
+    size_t nc = o->n_constraints, npts = 0, bytes, bp, bs;
     for (size_t k = 0; k < nc; k++)
         if (o->constraints[k].bound == TS_BOUND_POLYLINE)
             npts += 2 * o->constraints[k].n_poly; /* each <= the caller's arrays: no overflow */
-    if (!mul_ok(nc, sizeof(ts_constraint), &bytes) || !mul_ok(npts ? npts : 1, sizeof(double), &bp))
+        else if (o->constraints[k].bound == TS_BOUND_SPLINE && o->constraints[k].spline)
+            npts += ts__bcurve_doubles(o->constraints[k].spline); /* <= its arrays */
+    if (!mul_ok(nc, sizeof(ts_constraint), &bytes) || !mul_ok(npts ? npts : 1, sizeof(double), &bp) ||
+        !mul_ok(nc, sizeof(ts_spline), &bs))
         return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
     sp->con = ts__malloc(bytes);
     sp->con_pts = ts__malloc(bp);
-    if (!sp->con || !sp->con_pts)
+    sp->con_spl = ts__malloc(bs);
+    if (!sp->con || !sp->con_pts || !sp->con_spl)
         return ts__fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
     memcpy(sp->con, o->constraints, bytes);
     double *q = sp->con_pts;
     for (size_t k = 0; k < nc; k++) {
         ts_constraint *c = &sp->con[k];
+        if (c->bound == TS_BOUND_SPLINE && c->spline) {
+            /* the fitted spline keeps its own copy of B (docs/method.md §13.7) */
+            ts__bcurve_copy(c->spline, &sp->con_spl[k], q);
+            q += ts__bcurve_doubles(c->spline);
+            c->spline = &sp->con_spl[k];
+        } else {
+            c->spline = NULL;
+        }
         if (c->bound != TS_BOUND_POLYLINE) {
             c->px = c->py = NULL;
             continue;
@@ -525,6 +537,7 @@ static void spline_release(ts_spline *s)
     free(s->x);
     free(s->con);
     free(s->con_pts);
+    free(s->con_spl);
     free(s->con_bind);
     free(s->con_by);
     free(s);

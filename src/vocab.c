@@ -83,7 +83,8 @@ static const char *const constraint_names[] = {
     [TS_CONSTRAINT_SLOPE_MIN] = "slope-min",   [TS_CONSTRAINT_SLOPE_MAX] = "slope-max",
     [TS_CONSTRAINT_SLOPE_ABS] = "slope-abs"};
 static const char *const bound_names[] = {[TS_BOUND_CONSTANT] = "constant",
-                                          [TS_BOUND_POLYLINE] = "polyline"};
+                                          [TS_BOUND_POLYLINE] = "polyline",
+                                          [TS_BOUND_SPLINE] = "spline"};
 static const char *const condition_names[] = {
     [TS_CONDITION_NONE] = "none",
     [TS_CONDITION_CONVEX_DATA] = "convex-data",
@@ -106,7 +107,7 @@ _Static_assert(TS_NELEM(surface_shape_names) == TS_SURFACE_GRIDS + 1, "a surface
 _Static_assert(TS_NELEM(term_names) == TS_TERM_GEOMETRIC + 1, "a term without a name");
 _Static_assert(TS_NELEM(where_names) == TS_WHERE_QUERY + 1, "a where without a name");
 _Static_assert(TS_NELEM(constraint_names) == TS_CONSTRAINT_COUNT_, "a constraint without a name");
-_Static_assert(TS_NELEM(bound_names) == TS_BOUND_POLYLINE + 1, "a bound without a name");
+_Static_assert(TS_NELEM(bound_names) == TS_BOUND_SPLINE + 1, "a bound without a name");
 _Static_assert(TS_NELEM(condition_names) == TS_CONDITION_TOUCH_CORNER + 1, "a condition without a name");
 
 typedef struct vocab_table {

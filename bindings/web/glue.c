@@ -82,7 +82,9 @@ static void put_row(const ts_interval_report *r, double *row)
 
 /* Constraint records for the next tsw_spline_new (docs/method.md §13): rec
  * holds 5 doubles per record (kind, value, first, count, n_poly), pts the
- * polylines' x then y, record after record; taken by that one call. */
+ * polylines' x then y, record after record; taken by that one call.  n_poly
+ * −1: a bound spline (§13.7), value its ts_spline pointer (a wasm32
+ * address, exact in a double). */
 static const double *con_rec, *con_pts;
 static size_t con_n;
 void tsw_constraints(const double *rec, size_t n, const double *pts)
@@ -123,7 +125,11 @@ ts_status tsw_spline_new(const double *x, const double *f, size_t n, int form, i
         cons[k].value = r[1];
         cons[k].first = (size_t)r[2];
         cons[k].count = (size_t)r[3];
-        if (r[4] > 0) {
+        if (r[4] < 0) {
+            cons[k].bound = TS_BOUND_SPLINE;
+            cons[k].spline = (const ts_spline *)(uintptr_t)r[1];
+            cons[k].value = 0.0;
+        } else if (r[4] > 0) {
             cons[k].bound = TS_BOUND_POLYLINE;
             cons[k].n_poly = (size_t)r[4];
             cons[k].px = pts;

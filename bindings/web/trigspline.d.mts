@@ -52,12 +52,15 @@ export interface SplineOptions {
 }
 
 /** One constraint record: kind from NAMES.constraint; value for bounds and
- * slopes; points for a polyline bound; intervals first .. first + count - 1
- * (count 0: to the end). */
+ * slopes; points for a polyline bound; spline for a bound given by another
+ * Spline of the same module (lower, upper; docs/method.md §13.7: the fitted
+ * spline keeps its own copy); intervals first .. first + count - 1 (count 0:
+ * to the end). */
 export interface ConstraintRecord {
   kind: string;
   value?: number;
   points?: number[][] | null;
+  spline?: Spline | null;
   first?: number;
   count?: number;
 }

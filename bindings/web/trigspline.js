@@ -74,9 +74,11 @@ function numbersOf(a, what, dim = 1) {
   return a;
 }
 // Constraint records (docs/method.md §13; the command line's --constraint
-// SPEC strings, or {kind, value, points: [[x, y], ...], first, count}) as
-// the two arrays glue.c's tsw_constraints reads: 5 doubles per record
-// (kind, value, first, count, n_poly) and the polylines' x then y.
+// SPEC strings, or {kind, value, points: [[x, y], ...], spline, first,
+// count}) as the two arrays glue.c's tsw_constraints reads: 5 doubles per
+// record (kind, value, first, count, n_poly) and the polylines' x then y; a
+// bound given by another Spline of the same module (§13.7): value its
+// address, n_poly -1.
 const SPEC_OPS = [['slope>=', 'slope-min'], ['slope<=', 'slope-max'], ['abs-slope<=', 'slope-abs'],
   ['|slope|<=', 'slope-abs'], ['slope-min=', 'slope-min'], ['slope-max=', 'slope-max'],
   ['slope-abs=', 'slope-abs'], ['lower=', 'lower'], ['upper=', 'upper']];
@@ -85,7 +87,11 @@ function constraintRecord(c) {
   if (typeof c === 'object' && c !== null) {
     const kind = NAMES.constraint.indexOf(c.kind);
     if (kind < 0) throw bad(`kind must be one of ${NAMES.constraint.join(', ')}`);
-    return { kind, value: Number(c.value ?? 0), first: c.first ?? 0, count: c.count ?? 0, points: c.points ?? null };
+    const spline = c.spline ?? null;
+    if (spline !== null && ((c.kind !== 'lower' && c.kind !== 'upper') || c.points)) {
+      throw bad('spline is a bound (lower or upper), without points');
+    }
+    return { kind, value: Number(c.value ?? 0), first: c.first ?? 0, count: c.count ?? 0, points: c.points ?? null, spline };
   }
   if (typeof c !== 'string') throw bad('a SPEC string or an object');
   const [spec, scope] = c.trim().split('@');
@@ -114,12 +120,19 @@ function constraintRecord(c) {
   throw bad('unknown constraint (convex, concave, increasing, decreasing, lower=C, upper=C, '
     + 'lower=poly:X,Y;..., slope>=V, slope<=V, abs-slope<=V)');
 }
-function constraintArrays(list) {
+function constraintArrays(list, ts) {
   if (list === undefined || list === null) return [null, null];
   const recs = (Array.isArray(list) ? list : [list]).map(constraintRecord);
   if (recs.length > 64) throw new TrigSplineError(10, 'at most 64 constraint records', null, null);
   const rec = [], pts = [];
   for (const r of recs) {
+    if (r.spline !== null && r.spline !== undefined) {
+      if (!(r.spline instanceof Spline) || r.spline.ts !== ts) {
+        throw new TrigSplineError(11, `constraint ${r.kind}: spline must be a Spline of this module`, null, null);
+      }
+      rec.push(r.kind, r.spline.live(), r.first, r.count, -1);
+      continue;
+    }
     const np = r.points ? r.points.length : 0;
     rec.push(r.kind, r.value, r.first, r.count, np);
     if (np) {
@@ -322,7 +335,9 @@ class TrigSpline {
   // one value per interval), .shape, .lower / .upper ({m, c}, or a number c
   // for a constant line), .line (for above/below), .certify, .extrapolate,
   // .constraints (constraint records, docs/method.md §13: SPEC strings as the
-  // command line's --constraint, or {kind, value, points, first, count}).
+  // command line's --constraint, or {kind, value, points, first, count}; a
+  // bound given by another Spline: {kind: 'lower', spline}, §13.7, which may
+  // be freed after this call: the fitted spline keeps its own copy).
   spline(x, f, options = {}) {
     const o = { ...this.defaults, ...options };
     numbersOf(x, 'x');
@@ -344,7 +359,7 @@ class TrigSpline {
       if (shape === 3) upper = line(o.line);
     }
     const alphas = arr(o.alpha), betas = arr(o.beta), margins = arr(o.margin);
-    const [rec, pts] = constraintArrays(o.constraints);
+    const [rec, pts] = constraintArrays(o.constraints, this);
     const outP = this.alloc(4);
     this.resetError();
     const st = this.withArrays([x, f, userSlopes, alphas, betas, margins, rec, pts], (px, pf, pu, pa, pb, pm, pr, pp) =>

@@ -2,8 +2,10 @@
  * constraint, the exact minima of S'', S', S − bound per interval against
  * dense sampling, every refusal with its named condition, and a property
  * test of random combined-constraint problems (TS_CON_PROBLEMS problems,
- * default 1500; `make test-constraints` runs 10^6) with the false-refusal
- * rate against a brute-force search. */
+ * default 4000; `make test-constraints` runs 10^6) with the false-refusal
+ * rate against a brute-force search, and its slice with a bound given by
+ * another spline (TS_CON_SPLINE_PROBLEMS, default 1000; docs/method.md
+ * §13.7). */
 #include "trigspline.h"
 #include "th.h"
 
@@ -50,6 +52,11 @@ static double sampled(const ts_spline *s, const ts_constraint *c, size_t i, int 
             double b;
             if (c->bound == TS_BOUND_CONSTANT) {
                 b = c->value;
+            } else if (c->bound == TS_BOUND_SPLINE) {
+                const double *bx = ts_spline_x(c->spline);
+                if (xx < bx[0] || xx > bx[ts_spline_intervals(c->spline)])
+                    continue;
+                CHECK(ts_spline_eval(c->spline, xx, NULL, &b) == TS_OK);
             } else {
                 if (xx < c->px[0] || xx > c->px[c->n_poly - 1])
                     continue;
@@ -942,6 +949,135 @@ static void test_property(long problems, int gaps_only)
     CHECK(built > problems / 2);
 }
 
+/* A bound spline B (random form, 3 to 8 knots of its own over the data's
+ * range or a part of it) below (sg = 1) or above (−1) every datum of p by at
+ * least 1e-6 of the data's range (else the data would break the necessary
+ * condition), added to p's records; NULL when it could not be placed. */
+static ts_spline *add_spline_bound(prob *p, double sg)
+{
+    size_t np = p->np, m = 3 + (size_t)(urand() * 6);
+    double bx[8], by[8], flo = HUGE_VAL, fhi = -HUGE_VAL, x0 = p->x[0], x1 = p->x[np - 1];
+    for (size_t j = 0; j < np; j++)
+        flo = fmin(flo, p->f[j]), fhi = fmax(fhi, p->f[j]);
+    double span = fhi - flo + 0.1, a = x0, b = x1;
+    if (urand() < 0.3)
+        a = x0 + (x1 - x0) * 0.4 * urand();
+    else if (urand() < 0.5)
+        a = x0 - 0.5 * urand();
+    if (urand() < 0.3)
+        b = x1 - (x1 - x0) * 0.4 * urand();
+    else if (urand() < 0.5)
+        b = x1 + 0.5 * urand();
+    int tight = urand() < 0.5;
+    for (size_t k = 0; k < m; k++) {
+        bx[k] = a + (b - a) * ((double)k + (k && k + 1 < m ? urand() - 0.5 : 0.0)) / (double)(m - 1);
+        /* the data's broken line there (clamped), moved off by up to a
+         * tenth (tight) or half of the range */
+        size_t i = 0;
+        while (i + 2 < np && p->x[i + 1] <= bx[k])
+            i++;
+        double u = fmin(1.0, fmax(0.0, (bx[k] - p->x[i]) / (p->x[i + 1] - p->x[i])));
+        by[k] = p->f[i] + u * (p->f[i + 1] - p->f[i]) -
+                sg * span * (tight ? 0.1 * urand() : 0.5 * urand());
+    }
+    static const ts_form forms[3] = {TS_FORM_GEOMETRIC, TS_FORM_PAPER, TS_FORM_C1};
+    ts_spline_options o;
+    ts_spline_options_init(&o);
+    o.form = forms[(int)(urand() * 3)];
+    for (int pass = 0; pass < 40; pass++) {
+        ts_spline *B = NULL;
+        if (ts_spline_new(bx, by, m, &o, &B, NULL) != TS_OK)
+            return NULL;
+        double worst = 0.0; /* how far the data are inside by less than the margin */
+        for (size_t j = 0; j < np; j++) {
+            double v;
+            if (p->x[j] < bx[0] || p->x[j] > bx[m - 1])
+                continue;
+            CHECK(ts_spline_eval(B, p->x[j], NULL, &v) == TS_OK);
+            worst = fmax(worst, sg * (v - p->f[j]) + 1e-6 * span);
+        }
+        if (worst == 0.0) {
+            ts_constraint *c = &p->c[p->nc++];
+            ts_constraint_init(c, sg > 0.0 ? TS_CONSTRAINT_LOWER : TS_CONSTRAINT_UPPER);
+            c->bound = TS_BOUND_SPLINE;
+            c->spline = B;
+            return B;
+        }
+        ts_spline_free(B);
+        for (size_t k = 0; k < m; k++)
+            by[k] -= sg * 2.0 * worst;
+    }
+    return NULL;
+}
+
+/* The slice of the property test with bound splines: each problem of
+ * make_problem with a lower (three in four) or upper bound spline added
+ * (gaps_only: no brute-force search of the refusals). */
+static void test_property_spline(long problems, int gaps_only)
+{
+    long built = 0, refused[TS_STATUS_COUNT_] = {0}, bad = 0, gaps_bad = 0, false_refusals = 0,
+         reports = 0;
+    for (long t = 0; t < problems; t++) {
+        prob p;
+        make_problem(&p, 0);
+        ts_spline *B = add_spline_bound(&p, urand() < 0.75 ? 1.0 : -1.0);
+        if (!B)
+            continue;
+        ts_spline_options o;
+        ts_spline_options_init(&o);
+        ts_status st;
+        ts_error e;
+        ts_spline *s = build(p.x, p.f, p.np, &o, p.c, p.nc, &st, &e);
+        if (st != TS_OK) {
+            refused[st]++;
+            if (!gaps_only && st != TS_ERR_CONDITION && brute_feasible(&p))
+                false_refusals++;
+            ts_spline_free(B);
+            continue;
+        }
+        built++;
+        if (violates(s, &p, 64))
+            bad++;
+        size_t k = p.nc - 1;
+        double fr = 0.0;
+        for (size_t j = 0; j < p.np; j++)
+            fr = fmax(fr, fabs(p.f[j]));
+        for (size_t i = 0; i + 1 < p.np; i++) {
+            ts_constraint_report r;
+            ts_constraint_report_init(&r);
+            CHECK(ts_spline_constraint_report(s, k, i, &r) == TS_OK);
+            if (!r.in_scope)
+                continue;
+            reports++;
+            /* certified, and the minimum (of values: 1e-12 of their scale,
+             * violates()) not below 0 nor above the sampled minimum */
+            double dense = sampled(s, &p.c[k], i, 64), tol = 1e-12 * (fr + 1.0);
+            if (!r.certified || !(r.gap >= -tol) || !(r.gap <= dense + tol)) {
+                gaps_bad++;
+                printf("bound-spline problem %ld interval %zu: certified %d, gap %.17g at %.17g, "
+                       "sampled %.17g (tolerance %.3g)\n",
+                       t, i, r.certified, r.gap, r.at, dense, tol);
+            }
+        }
+        ts_spline_free(s);
+        ts_spline_free(B);
+    }
+    long ref = 0;
+    for (int k = 0; k < TS_STATUS_COUNT_; k++)
+        ref += refused[k];
+    printf("constraints property, bound splines: %ld problems, %ld built and certified, %ld with a "
+           "sample outside a constraint, %ld of %ld reports not certified or with a minimum "
+           "outside [0, sampled]; %ld refused (condition %ld, unproven %ld, other %ld); false "
+           "refusals against the brute-force search: %ld\n",
+           problems, built, bad, gaps_bad, reports, ref, refused[TS_ERR_CONDITION],
+           refused[TS_ERR_UNPROVEN], ref - refused[TS_ERR_CONDITION] - refused[TS_ERR_UNPROVEN],
+           false_refusals);
+    CHECK(bad == 0);
+    CHECK(gaps_bad == 0);
+    CHECK(refused[TS_ERR_CONDITION] == 0); /* the data are inside B by construction */
+    CHECK(built > problems / 2);
+}
+
 int main(void)
 {
     test_closed_forms();
@@ -953,5 +1089,7 @@ int main(void)
     test_refusals();
     const char *env = getenv("TS_CON_PROBLEMS");
     test_property(env ? atol(env) : 4000, getenv("TS_CON_GAPS_ONLY") != NULL);
+    const char *envs = getenv("TS_CON_SPLINE_PROBLEMS");
+    test_property_spline(envs ? atol(envs) : 1000, getenv("TS_CON_GAPS_ONLY") != NULL);
     return th_report("test_constraints");
 }

@@ -19,7 +19,11 @@ Checks:
   - a scope @I0-I1 reports null outside it;
   - refusals: unknown SPEC (usage, exit 1), non-concave data and a secant
     beyond a slope cap (exit 2, the sentence naming the record), a search
-    that gave up and a proven slope conflict (exit 3).
+    that gave up and a proven slope conflict (exit 3);
+  - a bound given by another spline (lower=spline:FILE.csv and the JSON
+    object's "spline"): the calls above their intrinsic value 100 - K, a
+    spline through points of that line (exactly the line, docs/method.md
+    §4), its gaps against samples of y - (100 - x); its refusals.
 Prints "test_cli_constraints: N passed, M failed" last.
 """
 import json
@@ -168,6 +172,55 @@ tent = write("tent.csv", "0,0\n1,1\n2,0\n")
 r = run("fit", tent, "--constraint", "abs-slope<=1")
 check("conflict exit 3", r.returncode == 3 and "straight lines of different slopes" in r.stderr,
       r.stderr)
+
+# a bound given by another spline (docs/method.md §13.7): the calls above
+# their intrinsic value 100 - K, as a spline through points of that line on
+# [40, 99] (default form, geometric: collinear points give slopes -1 and the
+# line itself, §4); the gaps against y - (100 - x) sampled here on [40, 99]
+intr = write("intrinsic.csv", "k,v\n" + "".join("%r,%r\n" % (k, 100.0 - k)
+                                                for k in (40.0, 55.0, 70.0, 85.0, 99.0)))
+r5 = run("fit", chain, "--json", "--constraint", "convex", "--constraint", "lower=spline:" + intr)
+check("spline bound fit", r5.returncode == 0, r5.stderr)
+if r5.returncode == 0:
+    rep5 = json.loads(r5.stdout)
+    check("spline bound certified", rep5["certified"] is True)
+    for i, iv in enumerate(rep5["intervals"]):
+        cr = rep5["constraints"][1][i]
+        check("spline scope %d" % i, (cr is None) == (iv["x0"] >= 99.0), cr)
+        if cr is None:
+            continue
+        check("spline certified %d" % i, cr["certified"] is True)
+        vals = []
+        for j in range(2001):
+            x, y, sp, spp = quantities(iv["X"], iv["B"], (math.pi / 2) * j / 2000)
+            if 40.0 <= x <= 99.0:
+                vals.append(y - (100.0 - x))
+        lo = min(vals)
+        scale = 1.0 + abs(lo)
+        check("spline gap below samples %d" % i, cr["gap"] <= lo + 1e-7 * scale,
+              "gap %r min sample %r" % (cr["gap"], lo))
+        check("spline gap near samples %d" % i, lo - cr["gap"] <= 1e-4 * scale and cr["gap"] > 0,
+              "gap %r min sample %r" % (cr["gap"], lo))
+    sj = write("spline.json", json.dumps(["convex", {"kind": "lower", "spline": intr}]))
+    r6 = run("fit", chain, "--json", "--constraints", sj)
+    check("spline file same", r6.returncode == 0 and r6.stdout == r5.stdout, r6.stderr)
+# refusals: a datum across the bound curve (exit 2, the point named), the
+# curve's own file bad (its line named) or missing (exit 5), no file, a
+# spline with points or on a kind that is not a bound (usage, exit 1)
+r = run("fit", chain, "--constraint", "upper=spline:" + intr)
+check("spline across", r.returncode == 2 and "is not below the upper bound (constraint 0, upper)"
+      in r.stderr, r.stderr)
+dup = write("dup.csv", "x,y\n1,2\n1,3\n")
+r = run("fit", chain, "--constraint", "lower=spline:" + dup)
+check("spline bad file", r.returncode == 2 and "dup.csv:3:" in r.stderr, r.stderr)
+r = run("fit", chain, "--constraint", "lower=spline:" + os.path.join(TMP, "none.csv"))
+check("spline missing file", r.returncode == 5 and "cannot open" in r.stderr, r.stderr)
+r = run("fit", chain, "--constraint", "lower=spline:")
+check("spline no file", r.returncode == 1 and "needs a file" in r.stderr, r.stderr)
+for bad in ({"kind": "convex", "spline": intr},
+            {"kind": "lower", "spline": intr, "points": [[0, 0], [1, 1]]}):
+    r = run("fit", chain, "--constraints", write("bad.json", json.dumps([bad])))
+    check("spline bad object", r.returncode == 1 and "\"spline\"" in r.stderr, r.stderr)
 
 print("test_cli_constraints: %d passed, %d failed" % (passed, failed))
 sys.exit(1 if failed else 0)

@@ -64,7 +64,7 @@ int main(void)
     static const char *const constraint[] = {"convex", "concave", "increasing", "decreasing",
                                              "lower", "upper", "slope-min", "slope-max",
                                              "slope-abs"};
-    static const char *const bound[] = {"constant", "polyline"};
+    static const char *const bound[] = {"constant", "polyline", "spline"};
     static const char *const condition[] = {"none", "convex-data", "concave-data",
                                             "monotone-data", "inside-bound", "secant-slope",
                                             "slope-conflict", "unproven", "touch-corner"};

@@ -11,8 +11,10 @@
 
 void cli_constraints_free(cli_opts *o)
 {
-    for (size_t k = 0; k < o->n_cons; k++)
-        free((double *)o->cons[k].px); /* px and py: one block */
+    for (size_t k = 0; k < o->n_cons; k++) {
+        free((double *)o->cons[k].px);                  /* px and py: one block */
+        ts_spline_free((ts_spline *)o->cons[k].spline); /* spline:FILE (read_spline) */
+    }
     free(o->cons);
     o->cons = NULL;
     o->n_cons = 0;
@@ -37,6 +39,7 @@ static int append(cli_opts *o, const ts_constraint *c)
     ts_constraint *n = realloc(o->cons, (o->n_cons + 1) * sizeof *n);
     if (!n) {
         free((double *)c->px);
+        ts_spline_free((ts_spline *)c->spline);
         return 0;
     }
     o->cons = n;
@@ -68,6 +71,27 @@ static int read_points(const char *s, ts_constraint *c)
     c->py = b + m;
     c->n_poly = m;
     return 1;
+}
+
+/* "spline:FILE": the bound curve B (docs/method.md §13.7), the points of
+ * FILE (x, y columns) fitted with the library's defaults, as `trigspline
+ * fit FILE` would; a read or fit failure is reported with FILE's lines. */
+static int read_spline(const char *path, ts_constraint *c)
+{
+    cli_opts bo;
+    cli_data d;
+    ts_spline_options opt;
+    ts_spline *b = NULL;
+    cli_opts_defaults(CLI_FIT, &bo);
+    bo.data = path;
+    ts_spline_options_init(&opt);
+    int rc = cli_read_and_fit(&bo, &opt, &d, &b);
+    if (rc != CLI_OK)
+        return rc;
+    cli_data_free(&d);
+    c->bound = TS_BOUND_SPLINE;
+    c->spline = b;
+    return CLI_OK;
 }
 
 int cli_constraint_add(cli_opts *o, cli_cmd cmd, const char *name, const char *spec)
@@ -125,6 +149,13 @@ int cli_constraint_add(cli_opts *o, cli_cmd cmd, const char *name, const char *s
             strncmp(val, "poly:", 5) == 0) {
             if (!read_points(val + 5, &c))
                 return cli_usage(cmd, "%s: \"%s\" is not a polyline X,Y;X,Y;...", name, val + 5);
+        } else if ((c.kind == TS_CONSTRAINT_LOWER || c.kind == TS_CONSTRAINT_UPPER) &&
+                   strncmp(val, "spline:", 7) == 0) {
+            if (!val[7])
+                return cli_usage(cmd, "%s: \"spline:\" needs a file (spline:FILE.csv)", name);
+            int rc = read_spline(val + 7, &c);
+            if (rc != CLI_OK)
+                return rc;
         } else {
             double x;
             const char *p = val;
@@ -136,7 +167,8 @@ int cli_constraint_add(cli_opts *o, cli_cmd cmd, const char *name, const char *s
     }
     return cli_usage(cmd,
                      "%s: unknown constraint \"%s\" (convex, concave, increasing, decreasing, "
-                     "lower=C, upper=C, lower=poly:X,Y;..., upper=poly:..., slope>=V, slope<=V, "
+                     "lower=C, upper=C, lower=poly:X,Y;..., upper=poly:..., lower=spline:FILE.csv, "
+                     "upper=spline:FILE.csv, slope>=V, slope<=V, "
                      "abs-slope<=V; a scope @I0-I1 may follow)",
                      name, spec);
 }
@@ -186,13 +218,15 @@ static int jnum(jin *j, double *v)
     return num_at(&j->s, v);
 }
 
-/* {"kind": K, "value": V, "points": [[x, y], ...], "first": I, "count": N} */
+/* {"kind": K, "value": V, "points": [[x, y], ...], "spline": "FILE.csv",
+ *  "first": I, "count": N} */
 static int jobject(jin *j, cli_opts *o, cli_cmd cmd, const char *name)
 {
     ts_constraint c;
     ts_constraint_init(&c, TS_CONSTRAINT_CONVEX);
     int have_kind = 0;
     double *pts = NULL;
+    char spl[4096] = "";
     size_t m = 0;
     if (eat(j, '}'))
         return cli_usage(cmd, "%s: an empty constraint object", name);
@@ -216,6 +250,9 @@ static int jobject(jin *j, cli_opts *o, cli_cmd cmd, const char *name)
             if (!jnum(j, &v) || !(v >= 0.0 && v < 1e15) || v != floor(v))
                 goto bad;
             *(key[0] == 'f' ? &c.first : &c.count) = (size_t)v;
+        } else if (strcmp(key, "spline") == 0) {
+            if (!jstr(j, spl, sizeof spl) || !spl[0])
+                goto bad;
         } else if (strcmp(key, "points") == 0) {
             if (!eat(j, '['))
                 goto bad;
@@ -239,8 +276,15 @@ static int jobject(jin *j, cli_opts *o, cli_cmd cmd, const char *name)
             return cli_usage(cmd, "%s: unknown key \"%s\" in a constraint", name, key);
         }
     } while (eat(j, ','));
-    if (!eat(j, '}') || !have_kind)
+    if (!eat(j, '}') || !have_kind || (pts && spl[0]))
         goto bad;
+    if (spl[0]) {
+        if (c.kind != TS_CONSTRAINT_LOWER && c.kind != TS_CONSTRAINT_UPPER)
+            goto bad;
+        int rc = read_spline(spl, &c);
+        if (rc != CLI_OK)
+            return rc;
+    }
     if (pts) {
         double *b = malloc(2 * m * sizeof *b);
         if (!b)
@@ -257,7 +301,8 @@ static int jobject(jin *j, cli_opts *o, cli_cmd cmd, const char *name)
 bad:
     free(pts);
     return cli_usage(cmd, "%s: not a constraint object {\"kind\": ..., \"value\": ..., "
-                          "\"points\": [[x, y], ...], \"first\": I, \"count\": N}",
+                          "\"points\": [[x, y], ...] or \"spline\": \"FILE.csv\" (lower, upper), "
+                          "\"first\": I, \"count\": N}",
                      name);
 }
 

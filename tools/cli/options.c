@@ -680,12 +680,13 @@ const cli_optdef cli_optdefs[] = {
     {ROW("--constraint", NULL, "SPEC", CLI_F, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_constraint, CLI_G_SHAPE,
            "a constraint, certified per interval (repeatable): convex, concave, increasing, "
-           "decreasing, lower=C, upper=C, lower=poly:X,Y;X,Y;..., upper=poly:..., slope>=V, "
-           "slope<=V, abs-slope<=V; @I0-I1 limits it to those intervals")},
+           "decreasing, lower=C, upper=C, lower=poly:X,Y;X,Y;..., upper=poly:..., "
+           "lower=spline:FILE.csv, upper=spline:FILE.csv (the points of FILE fitted with the "
+           "defaults), slope>=V, slope<=V, abs-slope<=V; @I0-I1 limits it to those intervals")},
     {ROW("--constraints", NULL, "FILE", CLI_F, CLI_K_CUSTOM, NOF, NOF),
      PLAIN(opt_constraints, CLI_G_SHAPE,
            "constraints from a JSON array of SPEC strings or {\"kind\", \"value\", "
-           "\"points\", \"first\", \"count\"} objects")},
+           "\"points\", \"spline\", \"first\", \"count\"} objects")},
     {ROW("--margin", NULL, "T", CLI_F, CLI_K_POS, OFF(margin), OFF(margin_set)),
      PLAIN(NULL, CLI_G_SHAPE, "margin t added to beta (default %D; shape schemes only)")},
     /* parameters */

@@ -218,7 +218,7 @@ static PyObject *spline_new(PyObject *mod, PyObject *args, PyObject *kw)
     opt.extrapolate = (ts_extrap)extrap;
     if (ocons != Py_None) {
         /* docs/method.md §13: a sequence of (kind, value, px or None, py or None,
-         * first, count) */
+         * first, count); px a SplineHandle (py None): a bound spline (§13.7) */
         PyObject *seq = PySequence_Fast(ocons, "constraints must be a sequence");
         if (!seq)
             goto done;
@@ -244,7 +244,12 @@ static PyObject *spline_new(PyObject *mod, PyObject *args, PyObject *kw)
             cons[k].kind = (ts_constraint_kind)kind;
             cons[k].first = (size_t)(first < 0 ? 0 : first);
             cons[k].count = (size_t)(count < 0 ? 0 : count);
-            if (opx != Py_None) {
+            if (PyObject_TypeCheck(opx, &SplineHandleType)) {
+                /* the record keeps opx alive during ts_spline_new; the
+                 * fitted spline copies it */
+                cons[k].bound = TS_BOUND_SPLINE;
+                cons[k].spline = ((SplineHandle *)opx)->s;
+            } else if (opx != Py_None) {
                 PyArrayObject *a = as_vector(opx, "constraint points x"), *b = NULL;
                 if (a)
                     b = as_vector(opy, "constraint points y");

@@ -107,3 +107,55 @@ def test_hagan_west_forwards_positive_where_cubic_spline_goes_negative():
     scipy_interp = pytest.importorskip("scipy.interpolate")
     assert scipy_interp.CubicSpline(t, y)(xs, 1).min() < 0.0
 
+
+
+def test_bound_given_by_another_spline():
+    """docs/method.md §13.7: the calls above their intrinsic value 100 - K,
+    given as a Spline through points of that line on [40, 99] (default
+    geometric form: collinear points give the line itself, §4), and below
+    a paper-form spline 5 above the calls; every report certified, its
+    minimum against dense samples of S - B; the bound may be dropped after
+    the fit (the fitted spline keeps its own copy) and the fit pickles."""
+    kb = np.array([40.0, 55.0, 70.0, 85.0, 99.0])
+    floor = Spline(kb, 100.0 - kb)
+    ceil = Spline(K, C + 5.0, form="paper")
+    s = Spline(K, C, constraints=["convex", {"kind": "lower", "spline": floor},
+                                  {"kind": "upper", "spline": ceil}])
+    assert s.certified
+    rep = s.constraint_report()
+    for k, (b, sg) in ((1, (floor, 1.0)), (2, (ceil, -1.0))):
+        for i in range(len(K) - 1):
+            r = rep[k][i]
+            if k == 1 and K[i] >= 99.0:
+                assert r is None  # beyond the bound curve's last knot
+                continue
+            assert r is not None and r["certified"] and r["gap"] > 0.0
+            hi = min(K[i + 1], 99.0) if k == 1 else K[i + 1]
+            xs = np.linspace(K[i], hi, 2001)
+            q = sg * (s(xs) - b(xs))
+            # below every sample (both evaluations' rounding, 1e-9 relative)
+            # and near the smallest (grid resolution)
+            assert r["gap"] <= q.min() + 1e-9 * (1 + abs(q.min()))
+            assert q.min() - r["gap"] <= 1e-4 * (1 + abs(q.min()))
+    xs = np.linspace(K[0], K[-1], 777)
+    del floor, ceil
+    c = pickle.loads(pickle.dumps(s))
+    assert np.array_equal(c(xs), s(xs))
+    assert c.constraint_report()[1][0]["gap"] == rep[1][0]["gap"]
+
+
+def test_bound_spline_refusals():
+    kb = np.array([40.0, 55.0, 70.0, 85.0, 99.0])
+    floor = Spline(kb, 100.0 - kb)
+    # the calls are above their intrinsic value: as an upper bound, point 0 is across
+    with pytest.raises(TrigsplineError, match=r"point 0 .*not below the upper bound"):
+        Spline(K, C, constraints=[{"kind": "upper", "spline": floor}])
+    with pytest.raises(ValueError, match="is a bound"):
+        Spline(K, C, constraints=[{"kind": "convex", "spline": floor}])
+    with pytest.raises(ValueError, match="is a bound"):
+        Spline(K, C, constraints=[{"kind": "lower", "spline": floor, "points": [(0, 0), (1, 1)]}])
+    with pytest.raises(TypeError, match="must be a trigspline Spline"):
+        Spline(K, C, constraints=[{"kind": "lower", "spline": [1, 2, 3]}])
+    two = Spline(kb, np.stack([100.0 - kb, 90.0 - kb]), axis=-1)
+    with pytest.raises(TypeError, match="one series"):
+        Spline(K, C, constraints=[{"kind": "lower", "spline": two}])

@@ -7,7 +7,10 @@ Each item is a SPEC string, the command line's ``--constraint`` syntax
 ``'slope<=V'``, ``'abs-slope<=V'`` (also ``'slope-min=V'``, ``'slope-max=V'``,
 ``'slope-abs=V'``), optionally followed by ``'@I0-I1'`` (intervals); or a dict
 ``{"kind": K, "value": V, "points": [(x, y), ...], "first": I, "count": N}``
-with K a name of the library's vocabulary ``constraint``.
+with K a name of the library's vocabulary ``constraint``; a lower or upper
+bound given by another spline (docs/method.md §13.7) is the dict
+``{"kind": "lower", "spline": B}`` with B a one-dimensional ``Spline`` (any
+form, its own knots; the fitted spline keeps its own copy of B).
 """
 import numpy as np
 
@@ -43,10 +46,20 @@ def _points(pts, what):
     return np.ascontiguousarray(arr[:, 0]), np.ascontiguousarray(arr[:, 1])
 
 
+def _bound_handle(b, kind):
+    """The library spline of a bound Spline B (one series, one dimension)."""
+    hs = getattr(b, "_h", None)
+    if not isinstance(hs, list) or len(hs) != 1 or getattr(b, "_pre", None) != () or \
+            getattr(b, "_trail", None) != ():
+        raise TypeError("constraint %r: \"spline\" must be a trigspline Spline of one series "
+                        "(1-D f), not %r" % (kind, type(b).__name__))
+    return hs[0]
+
+
 def record(item):
     """One item as the tuple _core.spline_new takes: (kind, value, px, py, first, count)."""
     if isinstance(item, dict):
-        unknown = set(item) - {"kind", "value", "points", "first", "count"}
+        unknown = set(item) - {"kind", "value", "points", "spline", "first", "count"}
         if unknown:
             raise ValueError("unknown constraint keys %s" % sorted(unknown))
         kind = item.get("kind")
@@ -55,6 +68,11 @@ def record(item):
         px = py = None
         if item.get("points") is not None:
             px, py = _points(item["points"], "constraint %r" % kind)
+        if item.get("spline") is not None:
+            if kind not in ("lower", "upper") or px is not None:
+                raise ValueError("constraint %r: \"spline\" is a bound (lower or upper), "
+                                 "without \"points\"" % kind)
+            px = _bound_handle(item["spline"], kind)
         return (KINDS.index(kind), float(item.get("value", 0.0)), px, py,
                 int(item.get("first", 0)), int(item.get("count", 0)))
     if not isinstance(item, str):

@@ -189,7 +189,9 @@ class Spline:
         ``'decreasing'``, ``'lower=C'``, ``'upper=C'``,
         ``'lower=poly:X,Y;X,Y;...'``, ``'slope>=V'``, ``'slope<=V'``,
         ``'abs-slope<=V'``, with an optional scope ``'@I0-I1'``) or dicts
-        ``{"kind", "value", "points", "first", "count"}``.  See
+        ``{"kind", "value", "points", "first", "count"}``; a bound given by
+        another one-dimensional Spline B: ``{"kind": "lower", "spline": B}``
+        (docs/method.md §13.7; data strictly on their side of B).  See
         ``constraint_report``.
     line, slopes_values
         Deprecated: ``line`` is ``lower`` (``'above'``) or ``upper``

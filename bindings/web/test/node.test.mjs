@@ -310,6 +310,35 @@ test('constraint records: a call chain certified convex and decreasing', () => {
   o.free();
 });
 
+test('constraint records: a bound given by another spline (docs/method.md §13.7)', () => {
+  // data above the line y = x/2 + 1 given as a spline through its points on
+  // its own knots (geometric form: collinear points give the line itself)
+  const kb = [-1, 1, 3, 5, 7];
+  const floor = ts.spline(kb, kb.map((v) => 0.5 * v + 1));
+  const x = [0, 1.25, 2, 3.25, 4, 5.25, 6];
+  const f = x.map((v) => 0.5 * v + 1 + 0.25 * (v - 3) * (v - 3) + 0.125);
+  const s = ts.spline(x, f, { constraints: [{ kind: 'lower', spline: floor }] });
+  assert.equal(s.certified, true);
+  floor.free(); // the fitted spline keeps its own copy
+  const rep = s.constraintReport()[0];
+  for (let i = 0; i < 6; i++) {
+    const r = rep[i];
+    assert.ok(r && r.certified && r.gap > 0, JSON.stringify(r));
+    // below every sample of S - line (1e-12: rounding) and near the least (grid)
+    const xs = Array.from({ length: 2001 }, (_, j) => x[i] + (x[i + 1] - x[i]) * j / 2000);
+    const ys = s.evalBatch(xs);
+    const lo = Math.min(...xs.map((v, j) => ys[j] - (0.5 * v + 1)));
+    assert.ok(r.gap <= lo + 1e-12 && lo - r.gap <= 1e-6, `${r.gap} vs ${lo}`);
+  }
+  const up = ts.spline(kb, kb.map((v) => 0.5 * v + 1));
+  assert.throws(() => ts.spline(x, f, { constraints: [{ kind: 'upper', spline: up }] }),
+    (e) => e.status === 'TS_ERR_CONDITION' && e.index === 0 && /not below the upper bound/.test(e.message));
+  assert.throws(() => ts.spline(x, f, { constraints: [{ kind: 'convex', spline: up }] }), /is a bound/);
+  assert.throws(() => ts.spline(x, f, { constraints: [{ kind: 'lower', spline: {} }] }), /Spline of this module/);
+  up.free();
+  s.free();
+});
+
 // ---- memory --------------------------------------------------------------------
 
 test('1e5 create/free cycles do not grow the heap', () => {
