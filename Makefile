@@ -95,9 +95,12 @@ test: why-deps python-deps r-deps build build-asan build-clang
 # test_kernel_bits compares the kernels' bits with a table of native runs;
 # valgrind's emulation of FMA flips the sign of some zero results, so it is
 # left out here (its memory use is the batch kernels', which test_batch covers).
-valgrind: build
+# VALGRIND_BUILD: the build directory whose programs are checked (the default
+# `build` is configured and built first; another one must be built already).
+VALGRIND_BUILD ?= build
+valgrind: $(if $(filter build,$(VALGRIND_BUILD)),build)
 	$(call need,valgrind:valgrind)
-	@failed=""; for t in build/tests/test_*; do \
+	@failed=""; for t in $(VALGRIND_BUILD)/tests/test_*; do \
 	  case $$t in *test_property|*test_fast|*test_random_inputs|*test_random_tool_inputs|*test_package|*test_kernel_bits) continue;; esac; \
 	  [ -x $$t ] || continue; \
 	  if valgrind -q --leak-check=full --errors-for-leak-kinds=all --error-exitcode=9 $$t >$$t.valgrind.log 2>&1; \

@@ -752,8 +752,7 @@ static double gl_seg(const ts_curve *c, size_t i, double a, double b, int e)
     return r * sum;
 }
 
-#define LEN_DEPTH 48
-#define LEN_BUDGET 20000
+#define LEN_DEPTH TS_LIMIT_DEFAULT_curve_len_depth
 
 ts_status ts_curve_length(const ts_curve *c, double tol, double *len)
 {
@@ -788,7 +787,8 @@ ts_status ts_curve_length(const ts_curve *c, double tol, double *len)
             double fine = L + R, dif = fabs(fine - I);
             double scale = fmax(fine, whole * (b - a) / TS_HALF_PI);
             pieces++;
-            if (dif <= tol * scale || depth >= LEN_DEPTH || pieces >= LEN_BUDGET) {
+            if (dif <= tol * scale || depth >= TS_LIMIT(curve_len_depth) ||
+                pieces >= TS_LIMIT(curve_len_pieces)) {
                 seg += fine;
                 continue;
             }
