@@ -122,7 +122,7 @@ static ts_status build_check(const double *x, const double *f, size_t np, ts_for
 static void spline_repair(void)
 {
     TH_CASE("spline repair limits");
-    enum { NP = 12, PROBLEMS = 60 };
+    enum { NP = 12, PROBLEMS = 240 };
     double x[NP], f[NP];
     ts_line ln;
     int certified[5] = {0}, refused[5] = {0};
@@ -139,8 +139,8 @@ static void spline_repair(void)
             reset();
             ts__test_limits.repair_relax_steps = 0;
             refused[1] += build_check(x, f, NP, fm, &ln, 1e-3, &certified[1]) != TS_OK;
-            if (fm != TS_FORM_C1)
-                continue; /* the paper form moves on after every repair */
+            if (fm != TS_FORM_C1 || p % 4)
+                continue; /* the paper form moves on after every repair; C¹: 60 problems */
             /* no repair allowed: the first one goes to the uniform family */
             reset();
             ts__test_limits.repair_budget_per = 0;
@@ -148,6 +148,31 @@ static void spline_repair(void)
             refused[2] += build_check(x, f, NP, fm, &ln, 1e-9, &certified[2]) != TS_OK;
             refused[3] += build_check(x, f, NP, fm, &ln, 1e-3, &certified[3]) != TS_OK;
         }
+    }
+    /* more intervals than one block of the exact paper form's batch
+     * certificate (TS_CERT_BLOCK = 256, repair.c), with a repair before the
+     * last block: the default limits, the same checks */
+    enum { NB = 700 };
+    static double xb[NB], fb[NB];
+    ts_line zero = {0.0, 0.0};
+    for (int p = 0; p < 4; p++) {
+        for (size_t k = 0; k < NB; k++) {
+            xb[k] = (double)k;
+            fb[k] = th_rng_logu(&rng, 1e-4, 1.0); /* positive data, steep steps */
+        }
+        ts_spline_options o;
+        th_options_paper(&o);
+        o.shape = TS_SHAPE_POSITIVE;
+        ts_spline *s = NULL;
+        ts_error e;
+        reset();
+        ts_status st = ts_spline_new(xb, fb, NB, &o, &s, &e);
+        CHECKF(st == TS_OK, "%s", ts_strerror(st));
+        if (st == TS_OK) {
+            st = ts_spline_certify(s, &zero, NULL, NULL, &e);
+            CHECKF(st == TS_OK, "positive: %s at %zu", ts_strerror(st), e.index);
+        }
+        ts_spline_free(s);
     }
     reset();
     /* some certified under every lowered limit (the checks above apply) */
@@ -312,6 +337,25 @@ static void solve_limits(void)
     CHECK(ts_spline_eval(s, r[1] - 1e-6, NULL, &ya) == TS_OK &&
           ts_spline_eval(s, r[1] + 1e-6, NULL, &yb) == TS_OK && ya * yb < 0.0);
     ts_spline_free(s);
+
+    /* B = (−12, −11, 7, −1): q³S(1/2) = (−12 − 484 + 504 − 8)/64 = 0, exact
+     * in the factored form, while the de Casteljau middle rounds to 6 ε:
+     * the right half starts at a root its coefficient does not show, and
+     * the search takes the coefficient's sign.  Every returned x must be a
+     * root: the bisection ends within 4 ε in t, and |dS/dt| < 250 here
+     * (q³S has Bernstein coefficients of size <= 12·1.6, degree 6, q³ >= 1,
+     * and |d(q⁻³)/dt| <= 2), so |S| < 1e3 ε */
+    s = two_point(-12.0, -1.0, -11.0, 7.0);
+    CHECK(s != NULL);
+    if (!s)
+        return;
+    CHECK(ts_spline_solve(s, 0.0, r, 4, &cnt) == TS_OK && cnt >= 1 && cnt <= 4);
+    for (size_t k = 0; k < cnt && k < 4; k++) {
+        CHECK(0.0 < r[k] && r[k] < 1.0);
+        CHECKF(ts_spline_eval(s, r[k], NULL, &v) == TS_OK && fabs(v) <= 1e3 * DBL_EPSILON,
+               "root %zu at %.17g: S = %g", k, r[k], v);
+    }
+    ts_spline_free(s);
 }
 
 /* ---- the integral's scale search ----------------------------------------- */
@@ -338,6 +382,35 @@ static void integral_limit(void)
     ts_spline_free(s);
 }
 
+/* ---- a short piece's Gauss–Legendre node rounded past its right end ----- */
+
+static void short_piece_end(void)
+{
+    TH_CASE("integral short piece at a binade");
+    /* [a, b] = [−2 − 2^-51, −2]: the middle a + (b − a)/2 rounds onto the
+     * coarser grid below −2, and the node a + (b − a)/2 + 0.77·(b − a)/2
+     * (and others) then rounds to −2 + 2^-52, beyond b (found by a search
+     * over the ulps around ±1, ±2, ±4; none beyond b for positive ends,
+     * where the middle is on b's grid or a finer one); interval.c moves it
+     * back onto b */
+    double x[2] = {-3.0, -1.0}, f[2] = {1.0, 2.0}, a = -2.0000000000000004, b = -2.0;
+    ts_spline_options o;
+    th_options_paper(&o);
+    ts_spline *s = NULL;
+    ts_error e;
+    CHECK(ts_spline_new(x, f, 2, &o, &s, &e) == TS_OK);
+    if (!s)
+        return;
+    double I = TH_NAN, J = TH_NAN, S2 = TH_NAN;
+    CHECK(ts_spline_integral(s, a, b, &I) == TS_OK && ts_spline_integral(s, b, a, &J) == TS_OK);
+    CHECK(ts_spline_eval(s, b, NULL, &S2) == TS_OK);
+    /* (b − a)·S(−2) up to S's change over 2^-51 (|S'| <= 10 here: far
+     * below) and the rule's rounding: 16 ε relative */
+    CHECK_CLOSE(I, (b - a) * S2, 16.0 * DBL_EPSILON * fabs((b - a) * S2));
+    CHECK(J == -I);
+    ts_spline_free(s);
+}
+
 int main(void)
 {
     curve_length();
@@ -346,6 +419,7 @@ int main(void)
     surface_cert_limits();
     solve_limits();
     integral_limit();
+    short_piece_end();
     reset();
     return th_report("test_safeguards");
 }
