@@ -1,0 +1,86 @@
+/* The argument checks of the histogram rate's evaluation calls (statuses as
+ * listed next to each in include/trigspline.h: NULL outputs, queries and
+ * grid points outside [e_0, e_n] on either side or NaN, with the query
+ * index), and ts_histo_subdivide with more cells per bin than its weight
+ * table holds at once (sub = 40 > 32 cells: two tables per bin), checked
+ * against its own promise: the cells of a bin add up to the bin's total
+ * (docs/method.md §12.5; tolerance: 40 sums of rounded cells, 64 ε of the
+ * total), each cell inside [lo, hi] times its width, and equal to
+ * ts_histo_totals on the same grid up to 64 ε of the bin's total.  A check
+ * that let a bad argument through would return TS_OK (or write through a
+ * NULL pointer, which the ASan build reports). */
+#include "th.h"
+#include "trigspline.h"
+
+#include <float.h>
+#include <math.h>
+#include <stdio.h>
+
+enum { NB = 4, SUB = 40 };
+
+int main(void)
+{
+    const double e[NB + 1] = {0.0, 1.0, 3.0, 4.0, 7.0};
+    const double tot[NB] = {2.0, 1.0, 5.0, 0.5};
+    ts_histo *h = NULL;
+    ts_error err;
+    TH_CASE("build");
+    CHECK(ts_histo_new(e, tot, NB, NULL, &h, &err) == TS_OK && h);
+    if (!h)
+        return th_report("test_histo_args");
+
+    TH_CASE("eval_batch arguments");
+    double x[3] = {0.5, 2.0, 6.0}, r[3], dr[3];
+    CHECK(ts_histo_eval_batch(h, x, 3, NULL, dr, &err) == TS_ERR_NULL);
+    CHECK(ts_histo_eval_batch(h, NULL, 3, r, dr, &err) == TS_ERR_NULL);
+    CHECK(ts_histo_eval_batch(NULL, x, 3, r, dr, &err) == TS_ERR_NULL);
+    CHECK(ts_histo_eval_batch(h, x, 0, NULL, NULL, &err) == TS_OK);
+    CHECK(ts_histo_eval_batch(h, x, 3, r, dr, &err) == TS_OK);
+    x[1] = 7.5; /* above e_n */
+    CHECK(ts_histo_eval_batch(h, x, 3, r, NULL, &err) == TS_ERR_DOMAIN && err.index == 1 &&
+          err.where == TS_WHERE_QUERY && isnan(r[1]) && isnan(r[2]));
+    x[1] = -0.5; /* below e_0 */
+    CHECK(ts_histo_eval_batch(h, x, 3, r, NULL, &err) == TS_ERR_DOMAIN && err.index == 1);
+    x[1] = (double)NAN;
+    CHECK(ts_histo_eval_batch(h, x, 3, r, NULL, &err) == TS_ERR_DOMAIN && err.index == 1);
+
+    TH_CASE("integral arguments");
+    double v = 0.0;
+    CHECK(ts_histo_integral(h, 0.0, 7.0, &v) == TS_OK);
+    CHECK_CLOSE(v, 8.5, 16.0 * DBL_EPSILON * 8.5); /* the totals' sum */
+    CHECK(ts_histo_integral(h, 0.0, 7.0, NULL) == TS_ERR_NULL);
+    CHECK(ts_histo_integral(h, -1.0, 7.0, &v) == TS_ERR_DOMAIN && isnan(v));
+    CHECK(ts_histo_integral(h, 8.0, 7.0, &v) == TS_ERR_DOMAIN);
+    CHECK(ts_histo_integral(h, 0.0, -1.0, &v) == TS_ERR_DOMAIN);
+    CHECK(ts_histo_integral(h, 0.0, 7.5, &v) == TS_ERR_DOMAIN);
+    CHECK(ts_histo_integral(h, 0.0, (double)NAN, &v) == TS_ERR_DOMAIN);
+
+    TH_CASE("totals arguments");
+    double g[3] = {0.0, 2.0, 7.0}, out[2];
+    CHECK(ts_histo_totals(h, g, 3, NULL, &err) == TS_ERR_NULL);
+    CHECK(ts_histo_totals(h, NULL, 3, out, &err) == TS_ERR_NULL);
+    CHECK(ts_histo_totals(NULL, g, 3, out, &err) == TS_ERR_NULL);
+    g[2] = 7.5; /* above e_n */
+    CHECK(ts_histo_totals(h, g, 3, out, &err) == TS_ERR_DOMAIN && err.index == 2 &&
+          err.where == TS_WHERE_QUERY);
+    g[2] = 1.0; /* below its predecessor */
+    CHECK(ts_histo_totals(h, g, 3, out, &err) == TS_ERR_UNSORTED && err.index == 2);
+
+    TH_CASE("subdivide beyond one weight table");
+    static double cells[NB * SUB];
+    CHECK(ts_histo_subdivide(h, SUB, cells, &err) == TS_OK);
+    for (int j = 0; j < NB; j++) {
+        double sum = 0.0, w = (e[j + 1] - e[j]) / SUB;
+        for (int k = 0; k < SUB; k++) {
+            double c = cells[j * SUB + k];
+            CHECK(c >= 0.0 && isfinite(c)); /* lo = 0, hi = +inf */
+            sum += c;
+            double gg[2] = {e[j] + k * w, k + 1 == SUB ? e[j + 1] : e[j] + (k + 1) * w}, t;
+            CHECK(ts_histo_totals(h, gg, 2, &t, &err) == TS_OK);
+            CHECK_CLOSE(c, t, 64.0 * DBL_EPSILON * tot[j]);
+        }
+        CHECK_CLOSE(sum, tot[j], 64.0 * DBL_EPSILON * tot[j]);
+    }
+    ts_histo_free(h);
+    return th_report("test_histo_args");
+}

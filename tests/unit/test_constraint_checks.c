@@ -1,0 +1,194 @@
+/* The checks of a spline built with constraint records (ts_spline_new with
+ * opt->constraints, docs/method.md §13) before any arithmetic: each bad
+ * field of the options and of a record gives the status the header lists
+ * for it (include/trigspline.h, "Failures of ts_spline_new with
+ * constraints" and ts_spline_new's list), with the index it names; every
+ * allocation of the construction failing in turn gives TS_ERR_NOMEM and
+ * leaks nothing (ASan and valgrind builds); ts_spline_constraint_report's
+ * argument checks.  A check that let a bad field through would build a
+ * spline (TS_OK) and fail the status comparison. */
+#include "th.h"
+#include "trigspline.h"
+#include "internal.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+enum { NP = 5, N = NP - 1 };
+static const double X[NP] = {0.0, 1.0, 2.0, 3.0, 4.0};
+static const double F[NP] = {0.0, 1.0, 4.0, 9.0, 16.0}; /* convex, increasing */
+
+static void base(ts_spline_options *o, ts_constraint *c, ts_constraint_kind kind)
+{
+    ts_spline_options_init(o); /* geometric form: the constraint scheme's */
+    ts_constraint_init(c, kind);
+    o->constraints = c;
+    o->n_constraints = 1;
+}
+
+/* ts_spline_new's status, and (TS_OK) the spline freed; err->index into *index */
+static ts_status build(const ts_spline_options *o, const double *f, size_t *index)
+{
+    ts_spline *s = NULL;
+    ts_error e;
+    e.index = TS_NO_INDEX;
+    ts_status st = ts_spline_new(X, f ? f : F, NP, o, &s, &e);
+    CHECK((st == TS_OK) == (s != NULL));
+    ts_spline_free(s);
+    if (index)
+        *index = e.index;
+    return st;
+}
+
+static void option_checks(void)
+{
+    TH_CASE("options with constraints");
+    ts_spline_options o;
+    ts_constraint c;
+    size_t at;
+    base(&o, &c, TS_CONSTRAINT_CONVEX);
+    CHECK(build(&o, NULL, NULL) == TS_OK); /* the base problem is valid */
+
+    double three[3] = {1.0, 1.0, 1.0}, margins[N] = {1e-3, 1e-3, 0.0, 1e-3};
+    base(&o, &c, TS_CONSTRAINT_CONVEX);
+    o.alphas = three, o.n_alphas = 3; /* n = 4 needed */
+    CHECK(build(&o, NULL, NULL) == TS_ERR_LENGTH);
+    base(&o, &c, TS_CONSTRAINT_CONVEX);
+    o.margins = three, o.n_margins = 3;
+    CHECK(build(&o, NULL, NULL) == TS_ERR_LENGTH);
+    base(&o, &c, TS_CONSTRAINT_CONVEX);
+    o.margins = margins, o.n_margins = N; /* margin 0 at interval 2 */
+    CHECK(build(&o, NULL, &at) == TS_ERR_MARGIN && at == 2);
+    base(&o, &c, TS_CONSTRAINT_CONVEX);
+    o.margin = (double)NAN;
+    CHECK(build(&o, NULL, &at) == TS_ERR_MARGIN && at == 0);
+
+    base(&o, &c, TS_CONSTRAINT_CONVEX);
+    o.slopes = TS_SLOPES_USER; /* no slopes given */
+    CHECK(build(&o, NULL, NULL) == TS_ERR_NULL);
+    double d[NP] = {0.5, 2.0, 4.0, 6.0, (double)NAN};
+    o.user_slopes = d, o.n_user_slopes = N;
+    CHECK(build(&o, NULL, NULL) == TS_ERR_LENGTH);
+    o.n_user_slopes = NP; /* a NaN slope at point 4 */
+    CHECK(build(&o, NULL, &at) == TS_ERR_NONFINITE && at == 4);
+    d[4] = 8.0;
+    CHECK(build(&o, NULL, NULL) == TS_OK);
+
+    base(&o, &c, TS_CONSTRAINT_CONVEX);
+    o.slopes = TS_SLOPES_PERIODIC; /* f_0 != f_n */
+    CHECK(build(&o, NULL, &at) == TS_ERR_PERIODIC && at == N);
+
+    /* computed slopes beyond the double range: secants of ±1e300 over 1e-10 */
+    static const double fo[NP] = {0.0, 1e300, 2e300, 3e300, 4e300};
+    double xs[NP] = {0.0, 1e-10, 2e-10, 3e-10, 4e-10};
+    base(&o, &c, TS_CONSTRAINT_INCREASING);
+    ts_spline *s = NULL;
+    ts_error e;
+    ts_status st = ts_spline_new(xs, fo, NP, &o, &s, &e);
+    CHECKF(st == TS_ERR_SLOPE_OVERFLOW && s == NULL, "%s", ts_strerror(st));
+    ts_spline_free(s);
+}
+
+static void record_checks(void)
+{
+    TH_CASE("constraint records");
+    ts_spline_options o;
+    ts_constraint c;
+    base(&o, &c, TS_CONSTRAINT_CONVEX);
+    c.bound = (ts_bound)2; /* no such bound type */
+    CHECK(build(&o, NULL, NULL) == TS_ERR_OPTION);
+    base(&o, &c, TS_CONSTRAINT_CONVEX);
+    c.first = N; /* scope beyond the intervals */
+    CHECK(build(&o, NULL, NULL) == TS_ERR_OPTION);
+    base(&o, &c, TS_CONSTRAINT_CONVEX);
+    c.first = 1, c.count = N; /* 1 .. 4: one too many */
+    CHECK(build(&o, NULL, NULL) == TS_ERR_OPTION);
+    c.count = N - 1;
+    CHECK(build(&o, NULL, NULL) == TS_OK);
+    base(&o, &c, TS_CONSTRAINT_LOWER);
+    c.value = (double)INFINITY;
+    CHECK(build(&o, NULL, NULL) == TS_ERR_NONFINITE);
+    base(&o, &c, TS_CONSTRAINT_SLOPE_ABS);
+    c.value = -1.0; /* |S'| <= −1 */
+    CHECK(build(&o, NULL, NULL) == TS_ERR_OPTION);
+
+    /* polyline bounds */
+    double px[3] = {0.0, 2.0, 4.0}, py[3] = {-1.0, -1.0, -1.0};
+    base(&o, &c, TS_CONSTRAINT_LOWER);
+    c.bound = TS_BOUND_POLYLINE;
+    c.px = px, c.py = py, c.n_poly = 3;
+    CHECK(build(&o, NULL, NULL) == TS_OK);
+    c.px = NULL;
+    CHECK(build(&o, NULL, NULL) == TS_ERR_NULL);
+    c.px = px, c.py = NULL;
+    CHECK(build(&o, NULL, NULL) == TS_ERR_NULL);
+    c.py = py, c.n_poly = 1;
+    CHECK(build(&o, NULL, NULL) == TS_ERR_LENGTH);
+    c.n_poly = 3;
+    px[1] = (double)NAN;
+    CHECK(build(&o, NULL, NULL) == TS_ERR_NONFINITE);
+    px[1] = 2.0, py[2] = (double)INFINITY;
+    CHECK(build(&o, NULL, NULL) == TS_ERR_NONFINITE);
+    py[2] = 0x1p1023; /* finite, beyond TS_VALUE_MAX */
+    CHECK(build(&o, NULL, NULL) == TS_ERR_NONFINITE);
+    py[2] = -1.0, px[2] = 2.0; /* not strictly increasing */
+    CHECK(build(&o, NULL, NULL) == TS_ERR_UNSORTED);
+}
+
+static void allocation_failures(void)
+{
+    TH_CASE("allocation failures with constraints");
+    ts_spline_options o;
+    ts_constraint c[2];
+    double px[2] = {0.0, 4.0}, py[2] = {-1.0, -1.0};
+    ts_spline_options_init(&o);
+    ts_constraint_init(&c[0], TS_CONSTRAINT_CONVEX);
+    ts_constraint_init(&c[1], TS_CONSTRAINT_LOWER);
+    c[1].bound = TS_BOUND_POLYLINE;
+    c[1].px = px, c[1].py = py, c[1].n_poly = 2;
+    o.constraints = c;
+    o.n_constraints = 2;
+    int nomem = 0, ok = 0;
+    /* the k-th allocation fails, k = 1, 2, ...: NOMEM until k passes the
+     * last one, then the spline is built */
+    for (long k = 1; k < 64 && !ok; k++) {
+        ts__test_fail_alloc = k;
+        ts_status st = build(&o, NULL, NULL);
+        ts__test_fail_alloc = 0;
+        CHECKF(st == TS_ERR_NOMEM || st == TS_OK, "allocation %ld: %s", k, ts_strerror(st));
+        nomem += st == TS_ERR_NOMEM;
+        ok = st == TS_OK;
+    }
+    CHECK(ok && nomem >= 6); /* con_begin: 4 arrays; con_finish: 2; the spline's */
+}
+
+static void report_checks(void)
+{
+    TH_CASE("constraint report arguments");
+    ts_spline_options o;
+    ts_constraint c;
+    base(&o, &c, TS_CONSTRAINT_CONVEX);
+    ts_spline *s = NULL;
+    ts_error e;
+    CHECK(ts_spline_new(X, F, NP, &o, &s, &e) == TS_OK);
+    ts_constraint_report r;
+    ts_constraint_report_init(&r);
+    CHECK(ts_spline_constraint_report(s, 0, 0, &r) == TS_OK && r.in_scope && r.certified);
+    CHECK(ts_spline_constraint_report(NULL, 0, 0, &r) == TS_ERR_NULL);
+    CHECK(ts_spline_constraint_report(s, 0, 0, NULL) == TS_ERR_NULL);
+    CHECK(ts_spline_constraint_report(s, 1, 0, &r) == TS_ERR_INDEX);
+    CHECK(ts_spline_constraint_report(s, 0, N, &r) == TS_ERR_INDEX);
+    r.struct_size = 1;
+    CHECK(ts_spline_constraint_report(s, 0, 0, &r) == TS_ERR_VERSION && r.struct_size == 1);
+    ts_spline_free(s);
+}
+
+int main(void)
+{
+    option_checks();
+    record_checks();
+    allocation_failures();
+    report_checks();
+    return th_report("test_constraint_checks");
+}
