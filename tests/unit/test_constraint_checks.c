@@ -75,6 +75,26 @@ static void option_checks(void)
     d[4] = 8.0;
     CHECK(build(&o, NULL, NULL) == TS_OK);
 
+    /* per-interval alphas and margins of the right length: built, and every
+     * interval certified convex, with a_i >= alpha_i */
+    double al[N] = {1.0, 2.0, 0.5, 4.0}, mg[N] = {1e-3, 1e-2, 1e-3, 1e-1};
+    base(&o, &c, TS_CONSTRAINT_CONVEX);
+    o.alphas = al, o.n_alphas = N;
+    o.margins = mg, o.n_margins = N;
+    {
+        ts_spline *s = NULL;
+        ts_error e;
+        CHECK(ts_spline_new(X, F, NP, &o, &s, &e) == TS_OK);
+        for (size_t i = 0; s && i < N; i++) {
+            ts_constraint_report r;
+            ts_constraint_report_init(&r);
+            double a = 0.0;
+            CHECK(ts_spline_constraint_report(s, 0, i, &r) == TS_OK && r.certified && r.gap >= 0.0);
+            CHECK(ts_spline_a(s, i, &a) == TS_OK && a >= al[i]);
+        }
+        ts_spline_free(s);
+    }
+
     base(&o, &c, TS_CONSTRAINT_CONVEX);
     o.slopes = TS_SLOPES_PERIODIC; /* f_0 != f_n */
     CHECK(build(&o, NULL, &at) == TS_ERR_PERIODIC && at == N);
