@@ -84,6 +84,10 @@ static void constraint_sentences(void)
     ts_error_context np = sctx(x, f, 4, &plain);
     HAS(msg(e.status, 1, e.where, &np), cond);
     LACKS(buf, "change direction");
+    c[0].struct_size = 1; /* a record of another version: the checks fail first */
+    HAS(msg(e.status, 2, e.where, &ctx), cond);
+    LACKS(buf, "change direction");
+    ts_constraint_init(&c[0], TS_CONSTRAINT_INCREASING);
     o.n_constraints = 0;
     HAS(msg(e.status, 1, e.where, &ctx), cond);
     LACKS(buf, "change direction");

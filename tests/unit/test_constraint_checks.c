@@ -202,6 +202,24 @@ static void report_checks(void)
     r.struct_size = 1;
     CHECK(ts_spline_constraint_report(s, 0, 0, &r) == TS_ERR_VERSION && r.struct_size == 1);
     ts_spline_free(s);
+
+    /* a polyline lower bound on [0, 1] only: no bound on intervals 1 .. 3,
+     * whose reports are out of scope (the rest NaN / 0, as the header says) */
+    double px[2] = {0.0, 1.0}, py[2] = {-1.0, -0.5};
+    base(&o, &c, TS_CONSTRAINT_LOWER);
+    c.bound = TS_BOUND_POLYLINE;
+    c.px = px, c.py = py, c.n_poly = 2;
+    s = NULL;
+    CHECK(ts_spline_new(X, F, NP, &o, &s, &e) == TS_OK);
+    for (size_t i = 0; s && i < N; i++) {
+        ts_constraint_report_init(&r);
+        CHECK(ts_spline_constraint_report(s, 0, i, &r) == TS_OK);
+        if (i == 0)
+            CHECK(r.in_scope && r.certified && r.gap > 0.0);
+        else
+            CHECK(!r.in_scope && !r.certified && !r.active && isnan(r.gap) && isnan(r.at));
+    }
+    ts_spline_free(s);
 }
 
 int main(void)
