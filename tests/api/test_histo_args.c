@@ -15,6 +15,9 @@
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
+#if defined(__SSE2__)
+#include <xmmintrin.h>
+#endif
 
 enum { NB = 4, SUB = 40 };
 
@@ -82,5 +85,25 @@ int main(void)
         CHECK_CLOSE(sum, tot[j], 64.0 * DBL_EPSILON * tot[j]);
     }
     ts_histo_free(h);
+
+#if defined(__SSE2__)
+    /* rate bounds one ulp apart at DBL_MIN: hi − lo is subnormal, 0 when
+     * the caller runs with flush-to-zero; the options check refuses the
+     * empty range there (TS_ERR_OPTION) rather than divide by it, and
+     * accepts it with the default rounding */
+    TH_CASE("rate bounds flushed to zero");
+    ts_histo_options ho;
+    ts_histo_options_init(&ho);
+    ho.lo = DBL_MIN;
+    ho.hi = nextafter(DBL_MIN, 1.0);
+    double tt[NB] = {DBL_MIN, DBL_MIN * 2.0, DBL_MIN * 1.0, DBL_MIN * 3.0};
+    ts_status st1 = ts_histo_check(e, tt, NB, &ho, NULL, &err);
+    unsigned csr = _mm_getcsr();
+    _mm_setcsr(csr | 0x8000u); /* FTZ */
+    ts_status st2 = ts_histo_check(e, tt, NB, &ho, NULL, &err);
+    _mm_setcsr(csr);
+    CHECKF(st1 != TS_ERR_OPTION, "%s", ts_strerror(st1));
+    CHECKF(st2 == TS_ERR_OPTION, "%s", ts_strerror(st2));
+#endif
     return th_report("test_histo_args");
 }
