@@ -86,6 +86,38 @@ int main(void)
     }
     ts_histo_free(h);
 
+    /* ts_histo_check's per-bin statuses (include/trigspline.h: an edge
+     * failing names both of its bins, an edge the scheme cannot join marks
+     * both; the return value is the first failure) */
+    TH_CASE("per-bin statuses");
+    {
+        ts_status sb[5];
+        double e5[6] = {(double)NAN, 1.0, 1.0, 3.0, 4.0, 5.0}, t5[5] = {1, 1, 1, 1, 1};
+        /* edge 0 NaN (bin 0), edge 2 not increasing (bins 1, 2); edge 1
+         * follows a non-finite edge and is not judged */
+        CHECK(ts_histo_check(e5, t5, 5, NULL, sb, &err) == TS_ERR_NONFINITE && err.index == 0 &&
+              err.where == TS_WHERE_POINT);
+        CHECK(sb[0] == TS_ERR_NONFINITE && sb[1] == TS_ERR_UNSORTED && sb[2] == TS_ERR_UNSORTED &&
+              sb[3] == TS_OK && sb[4] == TS_OK);
+        double e6[6] = {0, 1, 2, 3, 4, 5}, t6[5] = {1, (double)INFINITY, -1.0, (double)NAN, 1};
+        /* default bounds [0, inf): two non-finite totals and a negative one */
+        CHECK(ts_histo_check(e6, t6, 5, NULL, sb, &err) == TS_ERR_NONFINITE && err.index == 1 &&
+              err.where == TS_WHERE_INTERVAL);
+        CHECK(sb[0] == TS_OK && sb[1] == TS_ERR_NONFINITE && sb[2] == TS_ERR_NEGATIVE &&
+              sb[3] == TS_ERR_NONFINITE && sb[4] == TS_OK);
+        /* bounds [0, 2]: means 3, 1, −1, 1.9, 0.01: bins 0 and 2 outside;
+         * bins 3 and 4 cannot be joined (the edge value must be >= 2·1.9 − 2
+         * = 1.8 and <= 2·0.01, docs/method.md §12.4); the pairs with an
+         * outside bin are not judged, so bin 1 stays TS_OK */
+        ts_histo_options hb;
+        ts_histo_options_init(&hb);
+        hb.hi = 2.0;
+        double t7[5] = {3.0, 1.0, -1.0, 1.9, 0.01};
+        CHECK(ts_histo_check(e6, t7, 5, &hb, sb, &err) == TS_ERR_INFEASIBLE && err.index == 0);
+        CHECK(sb[0] == TS_ERR_INFEASIBLE && sb[1] == TS_OK && sb[2] == TS_ERR_INFEASIBLE &&
+              sb[3] == TS_ERR_INFEASIBLE && sb[4] == TS_ERR_INFEASIBLE);
+    }
+
 #if defined(__SSE2__)
     /* rate bounds one ulp apart at DBL_MIN: hi − lo is subnormal, 0 when
      * the caller runs with flush-to-zero; the options check refuses the
