@@ -156,6 +156,8 @@ static void histo_sentences(void)
     SAME(msg(TS_ERR_INFEASIBLE, 1, TS_WHERE_INTERVAL, &c), want);
     snprintf(want, sizeof want, "%s", ts_strerror(TS_ERR_OPTION));
     SAME(msg(TS_ERR_OPTION, TS_NO_INDEX, TS_WHERE_NONE, &c), want);
+    snprintf(want, sizeof want, "%s", ts_strerror(TS_ERR_ALPHA));
+    SAME(msg(TS_ERR_ALPHA, TS_NO_INDEX, TS_WHERE_NONE, &c), want);
     c.histo_options = &ho;
     /* the wrong kind of index, an index past the bins, no totals */
     snprintf(want, sizeof want, "edge 1: %s", ts_strerror(TS_ERR_NEGATIVE));
