@@ -222,11 +222,38 @@ static void report_checks(void)
     ts_spline_free(s);
 }
 
+static void diagnose_indices(void)
+{
+    TH_CASE("diagnose: the index of each failure");
+    ts_spline_options o;
+    ts_constraint c;
+    ts_constraint_failure fl;
+    /* a condition: the record's own index and point */
+    static const double fd[NP] = {0.0, 1.0, 4.0, 3.0, 16.0}; /* not convex at points 2, 3 */
+    base(&o, &c, TS_CONSTRAINT_CONVEX);
+    ts_constraint_failure_init(&fl);
+    CHECK(ts_constraints_diagnose(X, fd, NP, &o, &fl) == TS_ERR_CONDITION && fl.constraint == 0 &&
+          fl.where == TS_WHERE_POINT && fl.index == 2 && fl.condition == TS_CONDITION_CONVEX_DATA);
+    /* a failure of the spline itself (x not increasing: point 2): from its
+     * error, no record to blame */
+    static const double xd[NP] = {0.0, 1.0, 1.0, 3.0, 4.0};
+    ts_constraint_failure_init(&fl);
+    CHECK(ts_constraints_diagnose(xd, F, NP, &o, &fl) == TS_ERR_UNSORTED && fl.index == 2 &&
+          fl.where == TS_WHERE_POINT && fl.constraint == TS_NO_INDEX &&
+          fl.condition == TS_CONDITION_NONE);
+    /* an option error: no index */
+    o.form = TS_FORM_PAPER;
+    ts_constraint_failure_init(&fl);
+    CHECK(ts_constraints_diagnose(X, F, NP, &o, &fl) == TS_ERR_OPTION && fl.index == TS_NO_INDEX &&
+          fl.status == TS_ERR_OPTION);
+}
+
 int main(void)
 {
     option_checks();
     record_checks();
     allocation_failures();
     report_checks();
+    diagnose_indices();
     return th_report("test_constraint_checks");
 }
