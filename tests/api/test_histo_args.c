@@ -132,10 +132,15 @@ int main(void)
     ts_status st1 = ts_histo_check(e, tt, NB, &ho, NULL, &err);
     unsigned csr = _mm_getcsr();
     _mm_setcsr(csr | 0x8000u); /* FTZ */
+    volatile double tiny = DBL_MIN;
+    double flushed = tiny * 0.5; /* 0 where FTZ is in effect (not under valgrind) */
     ts_status st2 = ts_histo_check(e, tt, NB, &ho, NULL, &err);
     _mm_setcsr(csr);
     CHECKF(st1 != TS_ERR_OPTION, "%s", ts_strerror(st1));
-    CHECKF(st2 == TS_ERR_OPTION, "%s", ts_strerror(st2));
+    if (flushed == 0.0)
+        CHECKF(st2 == TS_ERR_OPTION, "%s", ts_strerror(st2));
+    else
+        printf("test_histo_args: flush-to-zero not in effect here; its case skipped\n");
 #endif
     return th_report("test_histo_args");
 }
