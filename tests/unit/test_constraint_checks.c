@@ -222,6 +222,63 @@ static void report_checks(void)
     ts_spline_free(s);
 }
 
+/* Slope bounds at the ends of the double range: the data checks and the
+ * polygon certificate form L (x_{i+1} − x_i) and L h exactly; there L x or
+ * L h leaves the exact products' range (beyond 2^1020, below 2^-960).  The
+ * answers are those of docs/method.md §13.1 and §13.3 in exact arithmetic:
+ * a secant of 1 (or 1e-10) is below a slope-min of 1e300 (a necessary
+ * condition fails, at interval 0), inside a slope-max of 1e300, above a
+ * slope-min of 1e-300 (and straight data have S' = secant, so each interval
+ * is certified).  Before, L x overflowed and the condition was missed
+ * (TS_ERR_UNPROVEN), and the certificate refused L h beyond the range. */
+static void extreme_slope_bounds(void)
+{
+    TH_CASE("slope bounds at extreme magnitudes");
+    static const double xo[3] = {1e10, 1e10 + 1.0, 1e10 + 2.0}, fo[3] = {0.0, 1.0, 2.0};
+    static const double xw[3] = {1e10, 2e10, 3e10}; /* h = 1e10: secant 1e-10 */
+    struct {
+        const double *x;
+        ts_constraint_kind kind;
+        double value;
+        ts_status want;
+    } t[] = {
+        {xo, TS_CONSTRAINT_SLOPE_MIN, 1e300, TS_ERR_CONDITION},
+        {xo, TS_CONSTRAINT_SLOPE_MAX, -1e300, TS_ERR_CONDITION},
+        {xw, TS_CONSTRAINT_SLOPE_MIN, 1e300, TS_ERR_CONDITION},
+        {xo, TS_CONSTRAINT_SLOPE_MIN, 1e-300, TS_OK},
+        {xw, TS_CONSTRAINT_SLOPE_MIN, 1e-320, TS_OK},
+        {xw, TS_CONSTRAINT_SLOPE_MAX, 1e300, TS_OK},
+        {xw, TS_CONSTRAINT_SLOPE_ABS, 1e300, TS_OK},
+        {xw, TS_CONSTRAINT_SLOPE_MIN, -1e300, TS_OK},
+    };
+    for (size_t k = 0; k < sizeof t / sizeof t[0]; k++) {
+        ts_spline_options o;
+        ts_constraint c;
+        ts_spline_options_init(&o);
+        ts_constraint_init(&c, t[k].kind);
+        c.value = t[k].value;
+        o.constraints = &c;
+        o.n_constraints = 1;
+        ts_spline *s = NULL;
+        ts_error e;
+        ts_status st = ts_spline_new(t[k].x, fo, 3, &o, &s, &e);
+        CHECKF(st == t[k].want, "case %zu: %s", k, ts_strerror(st));
+        if (st == TS_ERR_CONDITION) {
+            ts_constraint_failure fl;
+            ts_constraint_failure_init(&fl);
+            CHECK(ts_constraints_diagnose(t[k].x, fo, 3, &o, &fl) == TS_ERR_CONDITION &&
+                  fl.condition == TS_CONDITION_SECANT_SLOPE && fl.index == 0);
+        }
+        for (size_t i = 0; s && i < 2; i++) {
+            ts_constraint_report r;
+            ts_constraint_report_init(&r);
+            CHECKF(ts_spline_constraint_report(s, 0, i, &r) == TS_OK && r.certified && r.gap >= 0.0,
+                   "case %zu interval %zu: gap %g", k, i, r.gap);
+        }
+        ts_spline_free(s);
+    }
+}
+
 static void diagnose_indices(void)
 {
     TH_CASE("diagnose: the index of each failure");
@@ -255,5 +312,6 @@ int main(void)
     allocation_failures();
     report_checks();
     diagnose_indices();
+    extreme_slope_bounds();
     return th_report("test_constraint_checks");
 }
