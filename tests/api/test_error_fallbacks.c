@@ -102,6 +102,15 @@ static void constraint_sentences(void)
     CHECK(e.status == TS_ERR_CONDITION && e.index == 2);
     HAS(msg(e.status, e.index, e.where, &ctx), "is not below the upper bound");
 
+    /* a point below a constant lower bound */
+    ts_constraint_init(&c[0], TS_CONSTRAINT_LOWER);
+    c[0].value = 0.5;
+    double lw[4] = {1, 2, 0.25, 3};
+    ctx = sctx(x, lw, 4, &o);
+    e = fail_of(x, lw, 4, &o);
+    CHECK(e.status == TS_ERR_CONDITION && e.index == 2);
+    HAS(msg(e.status, e.index, e.where, &ctx), "is not above the lower bound");
+
     /* a secant beyond a slope bound, in the second record */
     ts_constraint_init(&c[0], TS_CONSTRAINT_INCREASING);
     ts_constraint_init(&c[1], TS_CONSTRAINT_SLOPE_MAX);
@@ -179,6 +188,10 @@ static void histo_sentences(void)
     SAME(msg(TS_ERR_UNSORTED, 0, TS_WHERE_POINT, &c), want);
     snprintf(want, sizeof want, "bin 1: %s", ts_strerror(TS_ERR_UNSORTED));
     SAME(msg(TS_ERR_UNSORTED, 1, TS_WHERE_INTERVAL, &c), want);
+    snprintf(want, sizeof want, "edge 9: %s", ts_strerror(TS_ERR_UNSORTED));
+    SAME(msg(TS_ERR_UNSORTED, 9, TS_WHERE_POINT, &c), want);
+    snprintf(want, sizeof want, "edge 9: %s", ts_strerror(TS_ERR_WIDTH));
+    SAME(msg(TS_ERR_WIDTH, 9, TS_WHERE_POINT, &c), want);
     snprintf(want, sizeof want, "edge 4: %s", ts_strerror(TS_ERR_WIDTH));
     SAME(msg(TS_ERR_WIDTH, 4, TS_WHERE_POINT, &c), want);
     snprintf(want, sizeof want, "bin 1: %s", ts_strerror(TS_ERR_WIDTH));

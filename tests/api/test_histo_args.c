@@ -66,6 +66,9 @@ int main(void)
     g[2] = 7.5; /* above e_n */
     CHECK(ts_histo_totals(h, g, 3, out, &err) == TS_ERR_DOMAIN && err.index == 2 &&
           err.where == TS_WHERE_QUERY);
+    g[0] = -0.5; /* below e_0 */
+    CHECK(ts_histo_totals(h, g, 3, out, &err) == TS_ERR_DOMAIN && err.index == 0);
+    g[0] = 0.0;
     g[2] = 1.0; /* below its predecessor */
     CHECK(ts_histo_totals(h, g, 3, out, &err) == TS_ERR_UNSORTED && err.index == 2);
 
@@ -116,6 +119,24 @@ int main(void)
         CHECK(ts_histo_check(e6, t7, 5, &hb, sb, &err) == TS_ERR_INFEASIBLE && err.index == 0);
         CHECK(sb[0] == TS_ERR_INFEASIBLE && sb[1] == TS_OK && sb[2] == TS_ERR_INFEASIBLE &&
               sb[3] == TS_ERR_INFEASIBLE && sb[4] == TS_ERR_INFEASIBLE);
+    }
+
+    /* a mean one ulp above hi: within the rounding of total / width (4 ε,
+     * docs/method.md §12.6), so it is taken as hi, built, and the rate and
+     * the totals stay within [lo, hi] */
+    TH_CASE("mean at hi within rounding");
+    {
+        ts_histo_options hb;
+        ts_histo_options_init(&hb);
+        hb.hi = 2.0;
+        double e2[3] = {0.0, 1.0, 2.0}, t2[2] = {nextafter(2.0, 3.0), 1.0};
+        ts_histo *h2 = NULL;
+        CHECK(ts_histo_new(e2, t2, 2, &hb, &h2, &err) == TS_OK && h2);
+        for (int k = 0; h2 && k <= 40; k++) {
+            double rv = TH_NAN;
+            CHECK(ts_histo_eval(h2, k / 20.0, &rv, NULL) == TS_OK && 0.0 <= rv && rv <= 2.0);
+        }
+        ts_histo_free(h2);
     }
 
 #if defined(__SSE2__)

@@ -95,6 +95,23 @@ static void option_checks(void)
         ts_spline_free(s);
     }
 
+    /* periodic slopes with f_0 = f_n: built, every interval above the bound */
+    {
+        static const double fp[NP] = {1.0, 2.0, 1.5, 3.0, 1.0};
+        base(&o, &c, TS_CONSTRAINT_LOWER);
+        c.value = 0.0;
+        o.slopes = TS_SLOPES_PERIODIC;
+        ts_spline *s = NULL;
+        ts_error e;
+        CHECK(ts_spline_new(X, fp, NP, &o, &s, &e) == TS_OK);
+        for (size_t i = 0; s && i < N; i++) {
+            ts_constraint_report r;
+            ts_constraint_report_init(&r);
+            CHECK(ts_spline_constraint_report(s, 0, i, &r) == TS_OK && r.certified && r.gap >= 0.0);
+        }
+        ts_spline_free(s);
+    }
+
     base(&o, &c, TS_CONSTRAINT_CONVEX);
     o.slopes = TS_SLOPES_PERIODIC; /* f_0 != f_n */
     CHECK(build(&o, NULL, &at) == TS_ERR_PERIODIC && at == N);
