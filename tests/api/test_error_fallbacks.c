@@ -190,6 +190,8 @@ static void histo_sentences(void)
     SAME(msg(TS_ERR_UNSORTED, 1, TS_WHERE_INTERVAL, &c), want);
     snprintf(want, sizeof want, "edge 9: %s", ts_strerror(TS_ERR_UNSORTED));
     SAME(msg(TS_ERR_UNSORTED, 9, TS_WHERE_POINT, &c), want);
+    snprintf(want, sizeof want, "edge 0: %s", ts_strerror(TS_ERR_WIDTH));
+    SAME(msg(TS_ERR_WIDTH, 0, TS_WHERE_POINT, &c), want);
     snprintf(want, sizeof want, "edge 9: %s", ts_strerror(TS_ERR_WIDTH));
     SAME(msg(TS_ERR_WIDTH, 9, TS_WHERE_POINT, &c), want);
     snprintf(want, sizeof want, "edge 4: %s", ts_strerror(TS_ERR_WIDTH));
