@@ -240,16 +240,27 @@ static ts_status data_checks(const double *x, const double *f, size_t n, const t
                     double L = side ? hi : lo, s = side ? -1.0 : 1.0, v[8], p[2];
                     if (isinf(L))
                         continue;
-                    /* s [f_{i+1} − f_i − L (x_{i+1} − x_i)] >= 0 */
-                    int m = 0;
-                    v[m++] = s * f[i + 1];
-                    v[m++] = -s * f[i];
-                    if (ts__exact_product(L, x[i + 1], -s, p) != 2)
-                        p[0] = -s * L * x[i + 1], p[1] = 0.0;
-                    v[m++] = p[0], v[m++] = p[1];
-                    if (ts__exact_product(L, x[i], s, p) != 2)
-                        p[0] = s * L * x[i], p[1] = 0.0;
-                    v[m++] = p[0], v[m++] = p[1];
+                    /* s [f_{i+1} − f_i − L (x_{i+1} − x_i)] >= 0, with
+                     * x_{i+1} − x_i = h0 + h1 exactly (two_diff): L x_{i+1}
+                     * may overflow where L h does not.  Where L h0 is beyond
+                     * the exact products' range (|L h| > 2^1020), every
+                     * term is scaled by 2^-k first, |L h| 2^-k near 2^1010:
+                     * |f| <= TS_VALUE_MAX = 2^1022, so an f term loses bits
+                     * only far below L h, whose sign then decides */
+                    int m = 0, ke;
+                    double hd[2], sc = 1.0;
+                    two_diff(x[i + 1], x[i], hd);
+                    if (!(fabs(L * hd[0]) <= 0x1p1020) && isfinite(L * 0x1p-64 * hd[0])) {
+                        (void)frexp(L * 0x1p-64 * hd[0], &ke);
+                        sc = ldexp(1.0, -(ke + 64 - 1010));
+                    }
+                    v[m++] = s * (sc * f[i + 1]);
+                    v[m++] = -s * (sc * f[i]);
+                    for (int e = 0; e < 2; e++) {
+                        if (ts__exact_product(sc * L, hd[e], -s, p) != 2)
+                            p[0] = -s * (sc * L) * hd[e], p[1] = 0.0;
+                        v[m++] = p[0], v[m++] = p[1];
+                    }
                     if (ts__exact_sign(v, m) < 0)
                         return mono ? con_fail(err, fail, TS_ERR_CONDITION, k, i + 1, TS_WHERE_POINT,
                                                TS_CONDITION_MONOTONE_DATA)
@@ -558,17 +569,40 @@ static int convex_polygon(const seg *g, double sg)
  * S' <= L (s = −1) through the polygon of Y − L X; exact. */
 static int slope_polygon(const seg *g, double L, double s)
 {
-    double Lh[2], dx[3][2];
-    if (ts__exact_product(L, g->h, 1.0, Lh) != 2)
-        return 0;
+    double Lh[2], dx[3][2], sc = 1.0;
+    /* |L h| beyond 2^1020: every term times 2^-k, |L h| 2^-k near 2^1010
+     * (the inequalities are homogeneous); not proven if a B loses bits */
+    if (fabs(L) > 0x1p1020 / g->h) {
+        int k;
+        (void)frexp(L * 0x1p-64 * g->h, &k);
+        sc = ldexp(1.0, -(k + 64 - 1010));
+        for (int l = 0; l < 4; l++)
+            if ((sc * g->B[l]) / sc != g->B[l])
+                return 0;
+    }
+    if (ts__exact_product(sc * L, g->h, 1.0, Lh) != 2) {
+        if (!(fabs(L * g->h) < 0x1p-960))
+            return 0;
+        /* |L h| below 2^-960, where its product's error is not exact: then
+         * |L h dX̂_l| < 2^-960 (0 <= dX̂_l <= 1), so the difference
+         * B_{l+1} − B_l = d0 + d1 (two_diff, exact; |d1| <= ulp(d0)/2) with
+         * s d0 >= 2^-958 decides each sign; a smaller one is not proven */
+        for (int l = 0; l < 3; l++) {
+            double d[2];
+            two_diff(g->B[l + 1], g->B[l], d);
+            if (!(s * d[0] >= 0x1p-958))
+                return 0;
+        }
+        return 1;
+    }
     dx[0][0] = g->kap, dx[0][1] = 0.0;
     two_diff(1.0, 2.0 * g->kap, dx[1]);
     dx[2][0] = g->kap, dx[2][1] = 0.0;
     for (int l = 0; l < 3; l++) {
         double v[CON_EXACT];
         int k = 0;
-        v[k++] = s * g->B[l + 1];
-        v[k++] = -s * g->B[l];
+        v[k++] = s * (sc * g->B[l + 1]);
+        v[k++] = -s * (sc * g->B[l]);
         prod_terms(Lh, 2, dx[l], 2, -s, v, &k);
         if (ts__exact_sign(v, k) < 0)
             return 0;

@@ -752,8 +752,7 @@ static double gl_seg(const ts_curve *c, size_t i, double a, double b, int e)
     return r * sum;
 }
 
-#define LEN_DEPTH 48
-#define LEN_BUDGET 20000
+#define LEN_DEPTH TS_LIMIT_DEFAULT_curve_len_depth
 
 ts_status ts_curve_length(const ts_curve *c, double tol, double *len)
 {
@@ -766,6 +765,7 @@ ts_status ts_curve_length(const ts_curve *c, double tol, double *len)
     if (tol < 1e-14)
         tol = 1e-14;
     double total = 0.0;
+    const int max_depth = TS_LIMIT(curve_len_depth), max_pieces = TS_LIMIT(curve_len_pieces);
     for (size_t i = 0; i < c->n; i++) {
         struct { double a, b, I; int depth; } stk[LEN_DEPTH + 2];
         int sp = 0, pieces = 0, e = 0;
@@ -788,7 +788,7 @@ ts_status ts_curve_length(const ts_curve *c, double tol, double *len)
             double fine = L + R, dif = fabs(fine - I);
             double scale = fmax(fine, whole * (b - a) / TS_HALF_PI);
             pieces++;
-            if (dif <= tol * scale || depth >= LEN_DEPTH || pieces >= LEN_BUDGET) {
+            if (dif <= tol * scale || depth >= max_depth || pieces >= max_pieces) {
                 seg += fine;
                 continue;
             }

@@ -336,7 +336,7 @@ static double scaled_piece(const ts_spline *s, size_t i, double a, double b, int
 {
     double lim = ldexp(1.0, 1023 - k), p;
     int kk = k;
-    while (!(fabs(p = ts__interval_integral_scaled(s, i, a, b, kk)) <= lim) && kk < k + 1152)
+    while (!(fabs(p = ts__interval_integral_scaled(s, i, a, b, kk)) <= lim) && kk < k + TS_LIMIT(integral_steps))
         kk += 128;
     *ki = kk;
     return p;

@@ -180,6 +180,51 @@ ts_status ts__fail(ts_error *err, ts_status st, size_t index, ts_where where);
 #ifdef TS_TEST_HOOKS
 extern long ts__test_fail_alloc;
 #endif
+/* The termination limits of the library's searches, each a safeguard the
+ * tested inputs do not reach (docs/design.md, "Coverage").  The product
+ * reads the constants TS_LIMIT_DEFAULT_<name>; with TS_TEST_HOOKS
+ * (trigspline_internal, tests only) it reads ts__test_limits, which starts
+ * at the same values and which tests/unit/test_safeguards.c lowers to
+ * provoke each safeguard.  A lowered limit only ends a search sooner: the
+ * buffers stay sized by the defaults.  Not thread-safe. */
+#define TS_LIMIT_DEFAULT_curve_len_depth 48       /* curve.c, length bisection depth */
+#define TS_LIMIT_DEFAULT_curve_len_pieces 20000   /* curve.c, pieces per segment */
+#define TS_LIMIT_DEFAULT_repair_width 1e-12       /* repair.c, bisection's relative width */
+#define TS_LIMIT_DEFAULT_repair_relax_steps 100   /* repair.c, relax_neighbours' bisection */
+#define TS_LIMIT_DEFAULT_repair_budget_per 16     /* repair.c, repairs per interval ... */
+#define TS_LIMIT_DEFAULT_repair_budget_base 64    /* ... plus these before the C¹ fallback */
+#define TS_LIMIT_DEFAULT_trigmin_steps 200        /* trigmin.c, refine's iterations */
+#define TS_LIMIT_DEFAULT_trigmin_depth 46         /* trigmin.c, subdivision depth */
+#define TS_LIMIT_DEFAULT_surface_cert_depth 40    /* surface_cert.c, branch and bound depth */
+#define TS_LIMIT_DEFAULT_surface_cert_nodes 200000 /* surface_cert.c, nodes */
+#define TS_LIMIT_DEFAULT_solve_cap 64             /* solve.c, roots stored per interval */
+#define TS_LIMIT_DEFAULT_solve_depth 52           /* solve.c, subdivision depth */
+#define TS_LIMIT_DEFAULT_integral_steps 1152      /* eval.c, the integral's scale search */
+#ifdef TS_TEST_HOOKS
+typedef struct ts__limits {
+    int curve_len_depth, curve_len_pieces;
+    double repair_width;
+    int repair_relax_steps;
+    size_t repair_budget_per, repair_budget_base;
+    int trigmin_steps, trigmin_depth;
+    int surface_cert_depth;
+    long surface_cert_nodes;
+    size_t solve_cap;
+    int solve_depth;
+    int integral_steps;
+} ts__limits;
+#define TS_LIMITS_DEFAULT                                                                        \
+    {TS_LIMIT_DEFAULT_curve_len_depth, TS_LIMIT_DEFAULT_curve_len_pieces,                        \
+     TS_LIMIT_DEFAULT_repair_width, TS_LIMIT_DEFAULT_repair_relax_steps,                         \
+     TS_LIMIT_DEFAULT_repair_budget_per, TS_LIMIT_DEFAULT_repair_budget_base,                    \
+     TS_LIMIT_DEFAULT_trigmin_steps, TS_LIMIT_DEFAULT_trigmin_depth,                             \
+     TS_LIMIT_DEFAULT_surface_cert_depth, TS_LIMIT_DEFAULT_surface_cert_nodes,                   \
+     TS_LIMIT_DEFAULT_solve_cap, TS_LIMIT_DEFAULT_solve_depth, TS_LIMIT_DEFAULT_integral_steps}
+extern ts__limits ts__test_limits;
+#define TS_LIMIT(name) (ts__test_limits.name)
+#else
+#define TS_LIMIT(name) (TS_LIMIT_DEFAULT_##name)
+#endif
 void *ts__malloc(size_t bytes);
 void *ts__calloc(size_t count, size_t size);
 /* A large block (the spline's arrays); freed with free(). */

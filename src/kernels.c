@@ -200,7 +200,10 @@ TS_ALWAYS_INLINE size_t stage_sorted_dense(const ts_spline *sp, const double *q,
 {
     const double *xs = sp->x;
     size_t n = sp->n, j0 = 0;
-    double next = i + 1 < n ? xs[i + 1] : (double)INFINITY; /* the last interval never advances */
+    /* dense (stage_block): every query is below xs[probe] with probe < n, so
+     * the walk stays in intervals below probe and i + 1 <= probe < n: the
+     * next knot always exists and the last interval is never reached */
+    double next = xs[i + 1];
     for (size_t j = 0; j < nb; j++) {
         double x = q[j];
         if (x >= next) {
@@ -210,9 +213,9 @@ TS_ALWAYS_INLINE size_t stage_sorted_dense(const ts_spline *sp, const double *q,
             }
             j0 = j;
             i++;
-            if (i + 1 < n && xs[i + 1] <= x)
+            if (xs[i + 1] <= x)
                 i = gallop(xs, n, i, x);
-            next = i + 1 < n ? xs[i + 1] : (double)INFINITY;
+            next = xs[i + 1];
         }
     }
     fast_iv v = fast_interval(sp, i);
@@ -314,7 +317,7 @@ TS_ALWAYS_INLINE size_t geo_stage_sorted_dense(const ts_spline *sp, const double
 {
     const double *xs = sp->x;
     size_t n = sp->n, j0 = 0;
-    double next = i + 1 < n ? xs[i + 1] : (double)INFINITY;
+    double next = xs[i + 1]; /* i + 1 <= probe < n, as in stage_sorted_dense */
     for (size_t j = 0; j < nb; j++) {
         double x = q[j];
         if (x >= next) {
@@ -324,9 +327,9 @@ TS_ALWAYS_INLINE size_t geo_stage_sorted_dense(const ts_spline *sp, const double
             }
             j0 = j;
             i++;
-            if (i + 1 < n && xs[i + 1] <= x)
+            if (xs[i + 1] <= x)
                 i = gallop(xs, n, i, x);
-            next = i + 1 < n ? xs[i + 1] : (double)INFINITY;
+            next = xs[i + 1];
         }
     }
     geo_iv g = geo_interval(sp, i);

@@ -92,7 +92,7 @@ ts_status ts__repair_search(const ts__repair_ops *o, size_t i, double al, double
     /* bisection: lo fails, hi is certified; each step halves hi − lo, so it
      * ends by the relative width (at most ~2100 steps from 1e307 down to a
      * subnormal a) or, for subnormal a, at adjacent doubles */
-    while (lo != hi && fabs(hi - lo) > 1e-12 * hi) {
+    while (lo != hi && fabs(hi - lo) > TS_LIMIT(repair_width) * hi) {
         double mid = lo + 0.5 * (hi - lo);
         if (mid == lo || mid == hi)
             break;
@@ -225,7 +225,7 @@ static int relax_neighbours(ts_spline *sp, size_t i, int exact)
         if (TS_J_OK(lo)) {
             hi = lo;
         } else {
-            for (int it = 0; it < 100 && hi - lo > 1e-12 * hi; it++) {
+            for (int it = 0; it < TS_LIMIT(repair_relax_steps) && hi - lo > 1e-12 * hi; it++) {
                 double mid = lo + 0.5 * (hi - lo);
                 if (TS_J_OK(mid))
                     hi = mid;
@@ -390,7 +390,7 @@ static ts_status certify_loop(ts_spline *sp, const ts_spline_options *opt, size_
 {
     int exact = ts__certify_exact(opt), neighbours = ts__form(sp->form)->neighbours;
     /* every repair moves on (paper, geometric) or may step back once (C¹) */
-    size_t budget = 16 * sp->n + 64;
+    size_t budget = TS_LIMIT(repair_budget_per) * sp->n + TS_LIMIT(repair_budget_base);
     size_t i = i0;
     /* exact, paper form: mono_certify decides most intervals a block at a
      * time (a repair there changes only its own interval) */

@@ -72,7 +72,7 @@ static int sgn(double v)
 /* The roots found in one interval, in increasing t: at most 12 (at most 6
  * from the leaves, as subdivision never adds a sign change, and at most 6
  * subdivision points that are roots); counted past the end, not stored. */
-#define TS_SOLVE_CAP 64
+#define TS_SOLVE_CAP TS_LIMIT_DEFAULT_solve_cap
 typedef struct troots {
     double t[TS_SOLVE_CAP];
     size_t n;
@@ -80,7 +80,7 @@ typedef struct troots {
 
 static void add_t(troots *L, double t)
 {
-    if (L->n < TS_SOLVE_CAP)
+    if (L->n < TS_LIMIT(solve_cap))
         L->t[L->n] = t;
     L->n++;
 }
@@ -125,7 +125,7 @@ static void isolate(const double C[4], const double b[7], double lo, double hi, 
         add_t(L, 0.5 * (a + c));
         return;
     }
-    if (depth >= 52) {
+    if (depth >= TS_LIMIT(solve_depth)) {
         add_t(L, mid);
         return;
     }
@@ -211,7 +211,7 @@ ts_status ts_spline_solve(const ts_spline *s, double y, double *roots, size_t ca
         /* every t is inside (0, 1): a bisection's middle of [a, c] with
          * c − a > 4ε in [0, 1], or an interval's middle; the knots are added
          * exactly, above and below */
-        for (size_t k = 0; k < L.n && k < TS_SOLVE_CAP; k++)
+        for (size_t k = 0; k < L.n && k < TS_LIMIT(solve_cap); k++)
             put(roots, cap, count, x_of_t(s, i, L.t[k]));
         if (i + 1 == n && C[3] == 0.0)
             put(roots, cap, count, s->x[n]);

@@ -74,6 +74,7 @@ void ts__error_set(ts_error *err, ts_status st, size_t index, ts_where where)
 
 #ifdef TS_TEST_HOOKS
 long ts__test_fail_alloc;
+ts__limits ts__test_limits = TS_LIMITS_DEFAULT;
 #endif
 
 /* One definition for both builds (coverage tools merge the two by line). */

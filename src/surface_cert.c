@@ -22,8 +22,6 @@ static const double bern[7][4] = {
 /* the row sums: Bernstein coefficients of (1 + t²)³ */
 static const double wgt[7] = {1.0, 1.0, 1.2, 1.6, 2.4, 4.0, 8.0};
 
-#define MAX_DEPTH 40
-#define MAX_NODES 200000
 
 typedef struct bb_ctx {
     double kx, ky;          /* linear rest −kx θ − ky φ (paper, C¹ with a sloped plane) */
@@ -82,7 +80,8 @@ static void bb(bb_ctx *c, const double H[49], const double wx[7], const double w
     sample(c, H[6] / (wx[0] * wy[6]), t0, u1);
     sample(c, H[42] / (wx[6] * wy[0]), t1, u0);
     sample(c, H[48] / (wx[6] * wy[6]), t1, u1);
-    if (lo >= c->best - c->tol || depth == MAX_DEPTH || c->nodes >= MAX_NODES) {
+    if (lo >= c->best - c->tol || depth >= TS_LIMIT(surface_cert_depth) ||
+        c->nodes >= TS_LIMIT(surface_cert_nodes)) {
         c->lower = lo < c->lower ? lo : c->lower;
         return;
     }
@@ -227,7 +226,7 @@ static void gbb(gb_ctx *c, const double H[49], const double wx[7], const double 
     gsample(c, H[48] / (wx[6] * wy[6]), t1, u1);
     if (!(c->best > 0.0))
         c->stop = 1; /* a sampled point on or across the field: not certified */
-    if (c->stop || (lo > 0.0 && lo >= 0.5 * c->best) || depth == MAX_DEPTH ||
+    if (c->stop || (lo > 0.0 && lo >= 0.5 * c->best) || depth >= TS_LIMIT(surface_cert_depth) ||
         c->nodes >= GRID_NODES) {
         c->lower = lo < c->lower ? lo : c->lower;
         return;

@@ -44,7 +44,6 @@
 #include <stdint.h>
 #include <string.h>
 
-#define TM_DEPTH 46  /* subdivision depth limit: width 2^-46 in t */
 
 typedef struct tm_ctx {
     double D0, D1, D2, k; /* scaled differences and κ */
@@ -133,7 +132,7 @@ static void refine(tm_ctx *z, const double b[7], double lo, double hi, int s)
             break;
         }
     }
-    for (int it = 0; it < 200 && hi - lo > w; it++) {
+    for (int it = 0; it < TS_LIMIT(trigmin_steps) && hi - lo > w; it++) {
         double dp, f = p_eval_d(z, t, &dp);
         int sf = sgn(f);
         if (sf == 0) {
@@ -206,7 +205,7 @@ static void isolate(tm_ctx *z, const double b[7], double lo, double hi, int dept
         return;
     }
     double mid = 0.5 * (lo + hi);
-    if (depth >= TM_DEPTH) {
+    if (depth >= TS_LIMIT(trigmin_depth)) {
         add_cand(z, mid);
         return;
     }
