@@ -757,11 +757,19 @@ static double integral_ab(const ts_histo *h, double a, size_t ja, double b, size
 }
 
 /* Within [lo, hi] times the width (rounding, §12.5). */
+TS_INLINE double clamp_w(double lo, double hi, double v, double width)
+{
+    /* without an upper bound none (+inf times a zero width is no bound) */
+    int bounded = hi < HUGE_VAL;
+    double hf = bounded ? hi : 0.0, lw = lo * width, hw = hf * width;
+    hw = bounded ? hw : HUGE_VAL;
+    v = v > lw ? v : lw;
+    return v < hw ? v : hw;
+}
+
 static double clamp_total(const ts_histo *h, double v, double width)
 {
-    double lo = h->lo * width, hi = h->hi * width;
-    v = v > lo ? v : lo;
-    return v < hi ? v : hi;
+    return clamp_w(h->lo, h->hi, v, width);
 }
 
 ts_status ts_histo_integral(const ts_histo *h, double a, double b, double *out)
@@ -846,6 +854,18 @@ TS_VECTOR_LOOP static void partials(const struct hstage *restrict st, size_t m,
     }
 }
 
+/* The totals of the cells [x[i − 1], x[i]], i = 1 .. m − 1, as if both
+ * ends were in one bin (integral_ab's first case, clamped), into out[i − 1]
+ * (a vector loop; the caller redoes the cells that cross an edge). */
+TS_VECTOR_LOOP static void same_bin(const double *restrict x, const double *restrict G, size_t m,
+                                    double lo, double hi, double *restrict out)
+{
+    for (size_t i = 1; i < m; i++) {
+        double w = x[i] - x[i - 1];
+        out[i - 1] = clamp_w(lo, hi, (G[i] - G[i - 1]) + lo * w, w);
+    }
+}
+
 /* Whether every point is in [e0, en] and none below the one before (a
  * vector loop; then ts_histo_totals' checks all pass). */
 TS_VECTOR_LOOP static int grid_ok(const double *restrict g, size_t m, double e0, double en)
@@ -881,7 +901,7 @@ ts_status ts_histo_totals(const ts_histo *h, const double *grid, size_t m, doubl
     ts_cursor cur = {0};
     struct hstage st;
     size_t jb[HGRID], ja = 0;
-    double G[HGRID], Ga = 0.0;
+    double G[HGRID + 1], Ga = 0.0;
     for (size_t k0 = 0; k0 < m; k0 += HGRID) {
         size_t nk = m - k0 < HGRID ? m - k0 : HGRID;
         for (size_t i = 0; i < nk; i++) {
@@ -893,27 +913,28 @@ ts_status ts_histo_totals(const ts_histo *h, const double *grid, size_t m, doubl
                         : ts__search(h->e, h->n, x, &cur);
             stage_point(h, jb[i], x, &st, i);
         }
-        partials(&st, nk, G);
-        for (size_t i = 0; i < nk; i++) {
+        /* G[0] the point before the block (G[1] the first of the block) */
+        partials(&st, nk, G + 1);
+        size_t i0 = k0 == 0 ? 1 : 0;
+        G[0] = Ga;
+        same_bin(grid + k0 - (1 - i0), G + i0, nk + 1 - i0, h->lo, h->hi,
+                 out + k0 - (1 - i0));
+        for (size_t i = i0; i < nk; i++) {
             size_t k = k0 + i;
-            if (k == 0) {
-                ja = jb[0];
-                Ga = G[0];
+            if (k == 0)
                 continue;
-            }
-            double a = grid[k - 1], b = grid[k], Gb = G[i], v;
-            if (ja == jb[i]) {
-                v = (Gb - Ga) + h->lo * (b - a);
-            } else {
-                v = h->tot[ja] - (Ga + h->lo * (a - h->e[ja]));
-                for (size_t j = ja + 1; j < jb[i]; j++)
+            size_t jprev = i > 0 ? jb[i - 1] : ja;
+            if (jprev != jb[i]) {
+                double a = grid[k - 1], b = grid[k], Gb = G[i + 1], v;
+                v = h->tot[jprev] - (G[i] + h->lo * (a - h->e[jprev]));
+                for (size_t j = jprev + 1; j < jb[i]; j++)
                     v += h->tot[j];
                 v += Gb + h->lo * (b - h->e[jb[i]]);
+                out[k - 1] = clamp_total(h, v, b - a);
             }
-            out[k - 1] = clamp_total(h, v, b - a);
-            ja = jb[i];
-            Ga = Gb;
         }
+        ja = jb[nk - 1];
+        Ga = G[nk];
     }
     return TS_OK;
 }
