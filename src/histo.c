@@ -26,6 +26,7 @@
 struct ts_histo {
     size_t n;
     double lo, hi, H; /* H = hi − lo (+inf without an upper bound) */
+    double hf;        /* hi, or 0.5 without one: a finite factor (clamp_w) */
     double *e;        /* n + 1 edges */
     double *B;        /* HB per bin: the HP pieces' control values minus lo */
     double *tot;      /* n: ∫ r over the bin from the pieces (lo included) */
@@ -490,6 +491,7 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
     h->n = n;
     h->lo = o.lo;
     h->hi = o.hi;
+    h->hf = o.hi < HUGE_VAL ? o.hi : 0.5;
     h->H = o.hi - o.lo;
     h->B = h->e + (n + 1);
     h->tot = h->B + HB * n;
@@ -757,19 +759,20 @@ static double integral_ab(const ts_histo *h, double a, size_t ja, double b, size
 }
 
 /* Within [lo, hi] times the width (rounding, §12.5). */
-TS_INLINE double clamp_w(double lo, double hi, double v, double width)
+TS_INLINE double clamp_w(double lo, double hi, double hf, double v, double width)
 {
-    /* without an upper bound none (+inf times a zero width is no bound) */
-    int bounded = hi < HUGE_VAL;
-    double hf = bounded ? hi : 0.0, lw = lo * width, hw = hf * width;
-    hw = bounded ? hw : HUGE_VAL;
+    /* without an upper bound none; hi times the width formed as hf times
+     * it, so that +inf times a zero width is never formed (no NaN, no
+     * flag, also where a compiler evaluates both sides of a select) */
+    double lw = lo * width, hw = hf * width;
+    hw = hi < HUGE_VAL ? hw : HUGE_VAL;
     v = v > lw ? v : lw;
     return v < hw ? v : hw;
 }
 
 static double clamp_total(const ts_histo *h, double v, double width)
 {
-    return clamp_w(h->lo, h->hi, v, width);
+    return clamp_w(h->lo, h->hi, h->hf, v, width);
 }
 
 ts_status ts_histo_integral(const ts_histo *h, double a, double b, double *out)
@@ -858,11 +861,11 @@ TS_VECTOR_LOOP static void partials(const struct hstage *restrict st, size_t m,
  * ends were in one bin (integral_ab's first case, clamped), into out[i − 1]
  * (a vector loop; the caller redoes the cells that cross an edge). */
 TS_VECTOR_LOOP static void same_bin(const double *restrict x, const double *restrict G, size_t m,
-                                    double lo, double hi, double *restrict out)
+                                    double lo, double hi, double hf, double *restrict out)
 {
     for (size_t i = 1; i < m; i++) {
         double w = x[i] - x[i - 1];
-        out[i - 1] = clamp_w(lo, hi, (G[i] - G[i - 1]) + lo * w, w);
+        out[i - 1] = clamp_w(lo, hi, hf, (G[i] - G[i - 1]) + lo * w, w);
     }
 }
 
@@ -917,7 +920,7 @@ ts_status ts_histo_totals(const ts_histo *h, const double *grid, size_t m, doubl
         partials(&st, nk, G + 1);
         size_t i0 = k0 == 0 ? 1 : 0;
         G[0] = Ga;
-        same_bin(grid + k0 - (1 - i0), G + i0, nk + 1 - i0, h->lo, h->hi,
+        same_bin(grid + k0 - (1 - i0), G + i0, nk + 1 - i0, h->lo, h->hi, h->hf,
                  out + k0 - (1 - i0));
         for (size_t i = i0; i < nk; i++) {
             size_t k = k0 + i;
