@@ -838,12 +838,10 @@ TS_INLINE void stage_point(const ts_histo *h, size_t j, double x, struct hstage 
 /* The rest of bin_partial for m staged points (a vector loop: the same
  * operations in the same order, both cases of piece_partial in every lane
  * and the case selected; every lane's operands finite). */
-TS_VECTOR_LOOP static void partials(const struct hstage *restrict st, size_t m,
-                                    double *restrict G)
+TS_VECTOR_LOOP static void partials(const struct hstage *restrict st, size_t m, double *restrict G)
 {
     for (size_t k = 0; k < m; k++) {
-        double q = st->q[k], P0 = st->P[0][k], P1 = st->P[1][k], P2 = st->P[2][k],
-               P3 = st->P[3][k];
+        double q = st->q[k], P0 = st->P[0][k], P1 = st->P[1][k], P2 = st->P[2][k], P3 = st->P[3][k];
         double th = TS_HALF_PI * (st->d[k] / q), tm = TS_HALF_PI - th;
         int near = th <= 0.5 * TS_HALF_PI;
         tm = tm > 0.0 ? tm : 0.0;
