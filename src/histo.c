@@ -26,6 +26,7 @@
 struct ts_histo {
     size_t n;
     double lo, hi, H; /* H = hi − lo (+inf without an upper bound) */
+    double hf;        /* hi, or 0.5 without one: a finite factor (clamp_w) */
     double *e;        /* n + 1 edges */
     double *B;        /* HB per bin: the HP pieces' control values minus lo */
     double *tot;      /* n: ∫ r over the bin from the pieces (lo included) */
@@ -414,7 +415,7 @@ static int bin_inside(const ts_histo *h, size_t j)
 }
 
 /* §12.2: ∫ of a piece of width hh over its whole width */
-static double piece_total(const double *P, double hh)
+TS_INLINE double piece_total(const double *P, double hh)
 {
     return hh * (HW0 * (P[0] + P[3]) + HW1 * (P[1] + P[2]));
 }
@@ -490,6 +491,7 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
     h->n = n;
     h->lo = o.lo;
     h->hi = o.hi;
+    h->hf = o.hi < HUGE_VAL ? o.hi : 0.5;
     h->H = o.hi - o.lo;
     h->B = h->e + (n + 1);
     h->tot = h->B + HB * n;
@@ -697,7 +699,7 @@ ts_status ts_histo_eval_batch(const ts_histo *h, const double *x, size_t m, doub
 
 /* ∫_0^θ A_l for θ in [0, π/4] (ts__basis_int with the kernels' sine and
  * cosine, ts__sincos_q: 1 − cos without cancellation). */
-static void basis_int_q(double th, double I[4])
+TS_INLINE void basis_int_q(double th, double I[4])
 {
     double s, c, ms, mc;
     ts__sincos_q(th, &s, &c, &ms, &mc);
@@ -757,11 +759,20 @@ static double integral_ab(const ts_histo *h, double a, size_t ja, double b, size
 }
 
 /* Within [lo, hi] times the width (rounding, §12.5). */
+TS_INLINE double clamp_w(double lo, double hi, double hf, double v, double width)
+{
+    /* without an upper bound none; hi times the width formed as hf times
+     * it, so that +inf times a zero width is never formed (no NaN, no
+     * flag, also where a compiler evaluates both sides of a select) */
+    double lw = lo * width, hw = hf * width;
+    hw = hi < HUGE_VAL ? hw : HUGE_VAL;
+    v = v > lw ? v : lw;
+    return v < hw ? v : hw;
+}
+
 static double clamp_total(const ts_histo *h, double v, double width)
 {
-    double lo = h->lo * width, hi = h->hi * width;
-    v = v > lo ? v : lo;
-    return v < hi ? v : hi;
+    return clamp_w(h->lo, h->hi, h->hf, v, width);
 }
 
 ts_status ts_histo_integral(const ts_histo *h, double a, double b, double *out)
@@ -780,6 +791,94 @@ ts_status ts_histo_integral(const ts_histo *h, double a, double b, double *out)
     return TS_OK;
 }
 
+/* Points staged at a time by ts_histo_totals */
+#define HGRID 256
+
+/* bin_partial's terms of the HGRID points of a block (struct-of-arrays) */
+struct hstage {
+    double d[HGRID], q[HGRID], acc[HGRID], base[HGRID], P[4][HGRID];
+    int left[HGRID];
+};
+
+/* bin_partial up to its piece_partial, for point k at x in bin j: the
+ * distance d into the partial piece from its nearer bin edge, that piece's
+ * control values read from that edge, the whole pieces before it (acc) and
+ * what the right edge's case subtracts from (base). */
+TS_INLINE void stage_point(const ts_histo *h, size_t j, double x, struct hstage *st, size_t k)
+{
+    const double *Bj = h->B + HB * j;
+    double e0 = h->e[j], e1 = h->e[j + 1], q = 0.25 * (e1 - e0);
+    double dl = x - e0, dre = e1 - x;
+    int left = dl <= dre;
+    double dd = left ? dl : dre;
+    int kk = dd > q ? 1 : 0;
+    st->q[k] = q;
+    st->left[k] = left;
+    if (left) {
+        const double *P = Bj + 4 * kk;
+        st->acc[k] = kk ? 0.0 + piece_total(Bj, q) : 0.0;
+        st->d[k] = dd - kk * q;
+        st->base[k] = 0.0;
+        st->P[0][k] = P[0];
+        st->P[1][k] = P[1];
+        st->P[2][k] = P[2];
+        st->P[3][k] = P[3];
+    } else {
+        const double *P = Bj + 4 * (HP - 1 - kk);
+        st->acc[k] = kk ? 0.0 + piece_total(Bj + 4 * (HP - 1), q) : 0.0;
+        st->d[k] = dd - kk * q;
+        st->base[k] = h->tot[j] - h->lo * (e1 - e0);
+        st->P[0][k] = P[3];
+        st->P[1][k] = P[2];
+        st->P[2][k] = P[1];
+        st->P[3][k] = P[0];
+    }
+}
+
+/* The rest of bin_partial for m staged points (a vector loop: the same
+ * operations in the same order, both cases of piece_partial in every lane
+ * and the case selected; every lane's operands finite). */
+TS_VECTOR_LOOP static void partials(const struct hstage *restrict st, size_t m, double *restrict G)
+{
+    for (size_t k = 0; k < m; k++) {
+        double q = st->q[k], P0 = st->P[0][k], P1 = st->P[1][k], P2 = st->P[2][k], P3 = st->P[3][k];
+        double th = TS_HALF_PI * (st->d[k] / q), tm = TS_HALF_PI - th;
+        int near = th <= 0.5 * TS_HALF_PI;
+        tm = tm > 0.0 ? tm : 0.0;
+        double I[4];
+        basis_int_q(near ? th : tm, I);
+        double Q0 = near ? P0 : P3, Q1 = near ? P1 : P2, Q2 = near ? P2 : P1, Q3 = near ? P3 : P0;
+        double S = (q / TS_HALF_PI) * (I[0] * Q0 + I[1] * Q1 + I[2] * Q2 + I[3] * Q3);
+        double pt = q * (HW0 * (P0 + P3) + HW1 * (P1 + P2));
+        double v = st->acc[k] + (near ? S : pt - S);
+        G[k] = st->left[k] ? v : st->base[k] - v;
+    }
+}
+
+/* The totals of the cells [x[i − 1], x[i]], i = 1 .. m − 1, as if both
+ * ends were in one bin (integral_ab's first case, clamped), into out[i − 1]
+ * (a vector loop; the caller redoes the cells that cross an edge). */
+TS_VECTOR_LOOP static void same_bin(const double *restrict x, const double *restrict G, size_t m,
+                                    double lo, double hi, double hf, double *restrict out)
+{
+    for (size_t i = 1; i < m; i++) {
+        double w = x[i] - x[i - 1];
+        out[i - 1] = clamp_w(lo, hi, hf, (G[i] - G[i - 1]) + lo * w, w);
+    }
+}
+
+/* Whether every point is in [e0, en] and none below the one before (a
+ * vector loop; then ts_histo_totals' checks all pass). */
+TS_VECTOR_LOOP static int grid_ok(const double *restrict g, size_t m, double e0, double en)
+{
+    int ok = 1;
+    for (size_t k = 0; k < m; k++)
+        ok &= (e0 <= g[k]) & (g[k] <= en);
+    for (size_t k = 1; k < m; k++)
+        ok &= g[k] >= g[k - 1];
+    return ok;
+}
+
 ts_status ts_histo_totals(const ts_histo *h, const double *grid, size_t m, double *out,
                           ts_error *err)
 {
@@ -791,35 +890,55 @@ ts_status ts_histo_totals(const ts_histo *h, const double *grid, size_t m, doubl
     if (m < 2)
         return TS_OK;
     double e0 = h->e[0], en = h->e[h->n];
-    for (size_t k = 0; k < m; k++) {
+    int ok = grid_ok(grid, m, e0, en);
+    for (size_t k = 0; k < m && !ok; k++) {
         if (!(e0 <= grid[k] && grid[k] <= en))
             return ts__fail(err, TS_ERR_DOMAIN, k, TS_WHERE_QUERY);
         if (k > 0 && grid[k] < grid[k - 1])
             return ts__fail(err, TS_ERR_UNSORTED, k, TS_WHERE_QUERY);
     }
-    /* integral_ab's expressions, each point's partial integral formed once */
+    /* integral_ab's expressions, each point's partial integral formed once
+     * (bin_partial, HGRID points at a time) */
     ts_cursor cur = {0};
-    size_t ja = ts__search(h->e, h->n, grid[0], &cur);
-    double Ga = bin_partial(h, ja, grid[0]);
-    for (size_t k = 0; k + 1 < m; k++) {
-        double a = grid[k], b = grid[k + 1];
-        size_t jb = ts__search(h->e, h->n, b, &cur);
-        double Gb = bin_partial(h, jb, b), v;
-        if (ja == jb) {
-            v = (Gb - Ga) + h->lo * (b - a);
-        } else {
-            v = h->tot[ja] - (Ga + h->lo * (a - h->e[ja]));
-            for (size_t j = ja + 1; j < jb; j++)
-                v += h->tot[j];
-            v += Gb + h->lo * (b - h->e[jb]);
+    struct hstage st;
+    size_t jb[HGRID], ja = 0;
+    double G[HGRID + 1], Ga = 0.0;
+    for (size_t k0 = 0; k0 < m; k0 += HGRID) {
+        size_t nk = m - k0 < HGRID ? m - k0 : HGRID;
+        for (size_t i = 0; i < nk; i++) {
+            /* the cursor's bin when it holds the point, as ts__search */
+            size_t c = cur.interval;
+            double x = grid[k0 + i];
+            jb[i] = c < h->n && h->e[c] <= x && (x < h->e[c + 1] || c + 1 == h->n)
+                        ? c
+                        : ts__search(h->e, h->n, x, &cur);
+            stage_point(h, jb[i], x, &st, i);
         }
-        out[k] = clamp_total(h, v, b - a);
-        ja = jb;
-        Ga = Gb;
+        /* G[0] the point before the block (G[1] the first of the block) */
+        partials(&st, nk, G + 1);
+        size_t i0 = k0 == 0 ? 1 : 0;
+        G[0] = Ga;
+        same_bin(grid + k0 - (1 - i0), G + i0, nk + 1 - i0, h->lo, h->hi, h->hf,
+                 out + k0 - (1 - i0));
+        for (size_t i = i0; i < nk; i++) {
+            size_t k = k0 + i;
+            if (k == 0)
+                continue;
+            size_t jprev = i > 0 ? jb[i - 1] : ja;
+            if (jprev != jb[i]) {
+                double a = grid[k - 1], b = grid[k], Gb = G[i + 1], v;
+                v = h->tot[jprev] - (G[i] + h->lo * (a - h->e[jprev]));
+                for (size_t j = jprev + 1; j < jb[i]; j++)
+                    v += h->tot[j];
+                v += Gb + h->lo * (b - h->e[jb[i]]);
+                out[k - 1] = clamp_total(h, v, b - a);
+            }
+        }
+        ja = jb[nk - 1];
+        Ga = G[nk];
     }
     return TS_OK;
 }
-
 
 /* §12.5: ∫_0^θ A_l dθ for θ in [0, π/2] from the nearer end (the far half
  * as the whole integral minus the mirrored rest). */

@@ -36,6 +36,15 @@ static void load(double *dst, const char *src, npy_intp step, npy_intp len)
         dst[i] = *(const double *)(src + i * step);
 }
 
+/* The len values at src: in place when contiguous, else copied to dst. */
+static const double *view(double *dst, const char *src, npy_intp step, npy_intp len)
+{
+    if (step == (npy_intp)sizeof(double))
+        return (const double *)src;
+    load(dst, src, step, len);
+    return dst;
+}
+
 /* One series: bins (e, T), grid g (q points) -> out (q); the status. */
 static ts_status one_series(const double *e, npy_intp p, const double *T, npy_intp n,
                             const double *g, npy_intp q, const double *o, double *out,
@@ -106,7 +115,8 @@ static void loop_f64(char **args, npy_intp const *dims, npy_intp const *steps, v
         npy_int64 *pix = (npy_int64 *)(args[6] + s * steps[6]);
         ts_status st;
         npy_int64 index = -1;
-        double *e = buf, *T = buf + p, *g = T + n, *out = g + q;
+        double *eb = buf, *Tb = buf + p, *gb = Tb + n, *out = gb + q;
+        const double *e = eb, *T = Tb, *g = gb;
         /* contiguous output: written in place */
         if (sout == (npy_intp)sizeof(double))
             out = (double *)pout;
@@ -117,10 +127,10 @@ static void loop_f64(char **args, npy_intp const *dims, npy_intp const *steps, v
         } else {
             double o[OPT_LEN];
             load(o, po, so, OPT_LEN);
-            load(e, pe, se, p);
-            load(T, pT, sT, n);
+            e = view(eb, pe, se, p);
+            T = view(Tb, pT, sT, n);
             if (o[OPT_KIND] != 3.0) /* kind 3 reads only the grid's length */
-                load(g, pg, sg, q);
+                g = view(gb, pg, sg, q);
             st = one_series(e, p, T, n, g, q, o, out, &index);
         }
         *pst = (npy_int32)st;
