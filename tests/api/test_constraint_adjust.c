@@ -225,6 +225,83 @@ static void test_conflict(void)
     }
 }
 
+static ts_status fit_user(const double *x, const double *f, const double *d, size_t np,
+                          const ts_constraint *c, size_t nc, ts_spline **s)
+{
+    ts_spline_options o;
+    ts_spline_options_init(&o);
+    o.constraints = c;
+    o.n_constraints = nc;
+    o.slopes = TS_SLOPES_USER;
+    o.user_slopes = d;
+    o.n_user_slopes = np;
+    *s = NULL;
+    return ts_spline_new(x, f, np, &o, s, NULL);
+}
+
+/* Caller's slopes (TS_SLOPES_USER) that break the records, so that each
+ * adjustment of §13.2 is taken with a known result (unit steps):
+ * convex data with slopes 0 get the three-point means (Δ_{j−1} + Δ_j)/2
+ * inside and Δ_3 + (Δ_3 − Δ_2)/2 = 4.5 at the right end (0 < Δ_0 stays);
+ * a slope between two equal secants that is exactly them stays; a touched
+ * lower bound with slopes pointing out at both ends gets 0 there, and a
+ * touched upper bound the same mirrored; a slope beyond a slope bound is
+ * clamped onto it. */
+static void test_user_slopes(void)
+{
+    TH_CASE("caller's slopes adjusted");
+    double x[5] = {0, 1, 2, 3, 4}, f[5] = {0, 1, 3, 6, 10}, z[5] = {0};
+    ts_constraint c;
+    ts_spline *s;
+    ts_constraint_init(&c, TS_CONSTRAINT_CONVEX);
+    CHECK(fit_user(x, f, z, 5, &c, 1, &s) == TS_OK);
+    if (s) {
+        double want[5] = {0, 1.5, 2.5, 3.5, 4.5};
+        for (int j = 0; j < 5; j++)
+            CHECK_CLOSE(slope_at(s, j == 4 ? 4.0 : x[j]), want[j], 1e-12);
+        check_record(s, &c, 0);
+        ts_spline_free(s);
+    }
+    /* equal secants (a line through points 0..2) and slopes exactly them */
+    double g[5] = {0, 1, 2, 4, 7}, dg[5] = {1, 1, 1, 2.5, 3.5};
+    CHECK(fit_user(x, g, dg, 5, &c, 1, &s) == TS_OK);
+    if (s) {
+        for (int j = 0; j <= 20; j++) {
+            double xx = j / 10.0, y;
+            CHECK(ts_spline_eval(s, xx, NULL, &y) == TS_OK);
+            CHECK_CLOSE(y, xx, 1e-12);
+        }
+        check_record(s, &c, 0);
+        ts_spline_free(s);
+    }
+    /* touched bounds: slopes pointing out at both ends, and inside */
+    double t[5] = {0, 1, 0, 1, 0}, dt[5] = {-1, 0.5, 2, -0.5, 1}, tn[5], dn[5];
+    for (int sgn = 0; sgn < 2; sgn++) {
+        ts_constraint_init(&c, sgn ? TS_CONSTRAINT_UPPER : TS_CONSTRAINT_LOWER);
+        for (int j = 0; j < 5; j++)
+            tn[j] = sgn ? -t[j] : t[j], dn[j] = sgn ? -dt[j] : dt[j];
+        CHECK(fit_user(x, tn, dn, 5, &c, 1, &s) == TS_OK);
+        if (!s)
+            continue;
+        CHECK(slope_at(s, 0.0) == 0.0 && slope_at(s, 2.0) == 0.0 && slope_at(s, 4.0) == 0.0);
+        CHECK(slope_at(s, 1.0) == dn[1] && slope_at(s, 3.0) == dn[3]);
+        check_record(s, &c, 0);
+        ts_spline_free(s);
+    }
+    /* slopes beyond |S'| <= 3 clamped onto ±3 (the secants are inside) */
+    double q[5] = {0, 2, 3, 2, 0}, dq[5] = {5, 1, 0, -1, -7};
+    ts_constraint_init(&c, TS_CONSTRAINT_SLOPE_ABS);
+    c.value = 3.0;
+    CHECK(fit_user(x, q, dq, 5, &c, 1, &s) == TS_OK);
+    if (s) {
+        /* the derivative at a knot evaluated from the control values: 1e-12 */
+        CHECK_CLOSE(slope_at(s, 0.0), 3.0, 1e-12);
+        CHECK_CLOSE(slope_at(s, 4.0), -3.0, 1e-12);
+        check_record(s, &c, 0);
+        ts_spline_free(s);
+    }
+}
+
 int main(void)
 {
     test_scope_ends();
@@ -232,5 +309,6 @@ int main(void)
     test_touch_ends();
     test_forced_lines();
     test_conflict();
+    test_user_slopes();
     return th_report("test_constraint_adjust");
 }
