@@ -243,7 +243,8 @@ static ts_status fit_user(const double *x, const double *f, const double *d, siz
  * adjustment of §13.2 is taken with a known result (unit steps):
  * convex data with slopes 0 get the three-point means (Δ_{j−1} + Δ_j)/2
  * inside and Δ_3 + (Δ_3 − Δ_2)/2 = 4.5 at the right end (0 < Δ_0 stays);
- * a slope between two equal secants that is exactly them stays; a touched
+ * a slope between two equal secants stays if it is exactly them, else
+ * becomes them; a touched
  * lower bound with slopes pointing out at both ends gets 0 there, and a
  * touched upper bound the same mirrored; a slope beyond a slope bound is
  * clamped onto it. */
@@ -262,10 +263,14 @@ static void test_user_slopes(void)
         check_record(s, &c, 0);
         ts_spline_free(s);
     }
-    /* equal secants (a line through points 0..2) and slopes exactly them */
+    /* equal secants (a line through points 0..2) and slopes exactly them,
+     * then a slope 1.5 between them, replaced by their mean 1 */
     double g[5] = {0, 1, 2, 4, 7}, dg[5] = {1, 1, 1, 2.5, 3.5};
-    CHECK(fit_user(x, g, dg, 5, &c, 1, &s) == TS_OK);
-    if (s) {
+    for (int v = 0; v < 2; v++) {
+        dg[1] = v ? 1.5 : 1.0;
+        CHECK(fit_user(x, g, dg, 5, &c, 1, &s) == TS_OK);
+        if (!s)
+            continue;
         for (int j = 0; j <= 20; j++) {
             double xx = j / 10.0, y;
             CHECK(ts_spline_eval(s, xx, NULL, &y) == TS_OK);
