@@ -10,7 +10,7 @@
 #include <string.h>
 
 #define CON_EXACT TS_EXACT_TERMS /* terms of the exact sums below (ts__exact_sign) */
-#define CON_DOUBLINGS 60
+#define CON_DOUBLINGS TS_LIMIT(con_doublings)
 
 /* a − b exactly as two terms (TwoSum). */
 static void two_diff(double a, double b, double r[2])

@@ -200,6 +200,7 @@ extern long ts__test_fail_alloc;
 #define TS_LIMIT_DEFAULT_solve_cap 64             /* solve.c, roots stored per interval */
 #define TS_LIMIT_DEFAULT_solve_depth 52           /* solve.c, subdivision depth */
 #define TS_LIMIT_DEFAULT_integral_steps 1152      /* eval.c, the integral's scale search */
+#define TS_LIMIT_DEFAULT_con_doublings 60         /* constrain.c, doublings of a_i */
 #ifdef TS_TEST_HOOKS
 typedef struct ts__limits {
     int curve_len_depth, curve_len_pieces;
@@ -212,6 +213,7 @@ typedef struct ts__limits {
     size_t solve_cap;
     int solve_depth;
     int integral_steps;
+    int con_doublings;
 } ts__limits;
 #define TS_LIMITS_DEFAULT                                                                        \
     {TS_LIMIT_DEFAULT_curve_len_depth, TS_LIMIT_DEFAULT_curve_len_pieces,                        \
@@ -219,7 +221,8 @@ typedef struct ts__limits {
      TS_LIMIT_DEFAULT_repair_budget_per, TS_LIMIT_DEFAULT_repair_budget_base,                    \
      TS_LIMIT_DEFAULT_trigmin_steps, TS_LIMIT_DEFAULT_trigmin_depth,                             \
      TS_LIMIT_DEFAULT_surface_cert_depth, TS_LIMIT_DEFAULT_surface_cert_nodes,                   \
-     TS_LIMIT_DEFAULT_solve_cap, TS_LIMIT_DEFAULT_solve_depth, TS_LIMIT_DEFAULT_integral_steps}
+     TS_LIMIT_DEFAULT_solve_cap, TS_LIMIT_DEFAULT_solve_depth, TS_LIMIT_DEFAULT_integral_steps,  \
+     TS_LIMIT_DEFAULT_con_doublings}
 extern ts__limits ts__test_limits;
 #define TS_LIMIT(name) (ts__test_limits.name)
 #else

@@ -22,6 +22,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdint.h>
 #include <string.h>
 
 static const ts__limits defaults = TS_LIMITS_DEFAULT;
@@ -424,6 +425,79 @@ static void short_piece_end(void)
     ts_spline_free(s);
 }
 
+/* ---- the constraint scheme's doubling search (constrain.c) -------------- */
+
+/* A polyline lower bound close under random data: certificates that need
+ * a_i raised (the search of docs/method.md §13.4).  With no doublings
+ * allowed, the search goes straight to its 16 values below a0: each fit
+ * is then certified (every report proven, as under the default limits)
+ * or refused with the documented TS_ERR_UNPROVEN, and some fit differs
+ * from the default one (the limit was reached). */
+static void con_doublings_limit(void)
+{
+    TH_CASE("constraint doublings limit");
+    uint64_t st = 0x243F6A8885A308D3u;
+    int differ = 0, built = 0;
+    for (int p = 0; p < 60; p++) {
+        double x[6], f[6], px[11], py[11];
+        for (int j = 0; j < 6; j++) {
+            st ^= st << 13, st ^= st >> 7, st ^= st << 17;
+            x[j] = j;
+            f[j] = 4.0 * (double)(st >> 11) * 0x1p-53;
+        }
+        /* teeth: 0.5 under the data at the knots, and at each interval's
+         * middle just under the chord, where the curve of convex-looking
+         * data dips below it unless a_i is raised (towards the chord);
+         * the pieces' lines extended over an interval pass above its data,
+         * so no closed form applies (§13.3) */
+        for (int j = 0; j < 11; j++) {
+            st ^= st << 13, st ^= st >> 7, st ^= st << 17;
+            int k = j / 2;
+            px[j] = 0.5 * j;
+            py[j] = j % 2 ? 0.5 * (f[k] + f[k + 1]) - 1e-3 * (0.1 + (double)(st >> 11) * 0x1p-53)
+                          : f[k] - 0.5;
+        }
+        ts_constraint c;
+        ts_constraint_init(&c, TS_CONSTRAINT_LOWER);
+        c.bound = TS_BOUND_POLYLINE;
+        c.px = px;
+        c.py = py;
+        c.n_poly = 11;
+        ts_spline_options o;
+        ts_spline_options_init(&o);
+        o.constraints = &c;
+        o.n_constraints = 1;
+        ts_spline *s0 = NULL, *s1 = NULL;
+        reset();
+        ts_status a = ts_spline_new(x, f, 6, &o, &s0, NULL);
+        ts__test_limits.con_doublings = 0;
+        ts_status b = ts_spline_new(x, f, 6, &o, &s1, NULL);
+        reset();
+        CHECKF(b == TS_OK || b == TS_ERR_UNPROVEN || (b == a && a == TS_ERR_CONDITION), "%s",
+               ts_status_name(b));
+        if (a != b)
+            differ++;
+        else if (a == TS_OK) {
+            for (size_t i = 0; i < 5; i++)
+                if (s0->alpha[i] + s0->beta[i] != s1->alpha[i] + s1->beta[i])
+                    differ++, i = 5;
+        }
+        if (s1) {
+            built++;
+            for (size_t i = 0; i < 5; i++) {
+                ts_constraint_report r;
+                ts_constraint_report_init(&r);
+                CHECK(ts_spline_constraint_report(s1, 0, i, &r) == TS_OK && r.certified == 1 &&
+                      r.gap >= 0.0);
+            }
+        }
+        ts_spline_free(s0);
+        ts_spline_free(s1);
+    }
+    CHECKF(differ > 0 && built > 0, "%d differ, %d built", differ, built);
+    printf("constraint doublings limit: %d of 60 differ, %d built\n", differ, built);
+}
+
 int main(void)
 {
     curve_length();
@@ -433,6 +507,7 @@ int main(void)
     solve_limits();
     integral_limit();
     short_piece_end();
+    con_doublings_limit();
     reset();
     return th_report("test_safeguards");
 }
