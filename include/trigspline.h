@@ -708,7 +708,11 @@ TS_API ts_status ts_spline_certify(const ts_spline *s, const ts_line *lower, con
  *   TS_ERR_INFEASIBLE  the slopes the constraints require at a knot
  *                      exclude each other (a proof that no C¹ curve exists);
  *   TS_ERR_UNPROVEN    no certified a_i up to 2^60 alpha_i was found, without
- *                      a proof that none exists (polyline and spline bounds);
+ *                      a proof that none exists (polyline and spline bounds;
+ *                      also a slope bound that a data secant reaches exactly:
+ *                      the interval must then be that line, and its rounded
+ *                      control values are collinear only where f_{i+1} − L h κ
+ *                      is a double, which doubling a does not change);
  *   TS_ERR_OPTION      an unknown kind or bound type, a scope beyond the
  *                      intervals, a form other than geometric, a shape;
  *   TS_ERR_NONFINITE   a non-finite value or polyline point;
@@ -1280,8 +1284,11 @@ TS_API void ts_surface_options_init(ts_surface_options *opt);
  *                      TS_WHERE_NONE; ts_error_message names the place)
  *   TS_ERR_SIDE        BOUNDS: a node outside [lower.c, upper.c]; PLANES: a node on
  *                      or across a plane; GRIDS: a node on or across a field
- *                      (decided exactly; ts_error_message gives the field's
- *                      value there)
+ *                      (decided exactly where the node's value, the field's
+ *                      values and the weights lie between 2^-300 and 2^300 in
+ *                      magnitude or are 0; beyond that range a node the exact
+ *                      sum cannot place is refused as across; ts_error_message
+ *                      gives the field's value there)
  *   TS_ERR_INFEASIBLE  a patch whose control values, as rounded, leave the region
  *                      even after a^x, a^y of its column and row were raised
  *                      tenfold up to 12 times (docs/method.md §11.6; the rule
