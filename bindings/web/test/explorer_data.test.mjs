@@ -31,9 +31,9 @@ before(async () => {
   server = createServer((req, res) => {
     const name = decodeURIComponent(new URL(req.url, 'http://x').pathname).replace(/^\/+/, '') || 'index.html';
     if (name.includes('..')) { res.writeHead(403).end(); return; }
-    try {
-      res.writeHead(200, { 'content-type': types[extname(name)] ?? 'application/octet-stream' }).end(readFileSync(join(OUT, name)));
-    } catch { res.writeHead(404).end(); }
+    let body; // read before any header is written: a missing file (the browser's favicon) is a 404
+    try { body = readFileSync(join(OUT, name)); } catch { res.writeHead(404).end(); return; }
+    res.writeHead(200, { 'content-type': types[extname(name)] ?? 'application/octet-stream' }).end(body);
   });
   await new Promise((r) => server.listen(0, '127.0.0.1', r));
   base = `http://127.0.0.1:${server.address().port}`;
