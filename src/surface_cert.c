@@ -22,6 +22,20 @@ static const double bern[7][4] = {
 /* the row sums: Bernstein coefficients of (1 + t²)³ */
 static const double wgt[7] = {1.0, 1.0, 1.2, 1.6, 2.4, 4.0, 8.0};
 
+/* H: the degree-(6, 6) Bernstein coefficients of (1 + t²)³(1 + u²)³ times the
+ * patch form with control values G (4 × 4), row-major 7 × 7 */
+static void elevate(const double G[16], double H[49])
+{
+    for (int m = 0; m < 7; m++)
+        for (int n = 0; n < 7; n++) {
+            double v = 0.0;
+            for (int k = 0; k < 4; k++)
+                for (int l = 0; l < 4; l++)
+                    v += bern[m][k] * bern[n][l] * G[4 * k + l];
+            H[7 * m + n] = v;
+        }
+}
+
 
 typedef struct bb_ctx {
     double kx, ky;          /* linear rest −kx θ − ky φ (paper, C¹ with a sloped plane) */
@@ -139,14 +153,7 @@ int ts__surf_certify_patch(const ts_surface *s, size_t i, size_t j, const ts_pla
     c.depth_max = 0;
     c.nodes = 0;
     double H[49];
-    for (int m = 0; m < 7; m++)
-        for (int n = 0; n < 7; n++) {
-            double v = 0.0;
-            for (int k = 0; k < 4; k++)
-                for (int l = 0; l < 4; l++)
-                    v += bern[m][k] * bern[n][l] * G[4 * k + l];
-            H[7 * m + n] = v;
-        }
+    elevate(G, H);
     bb(&c, H, wgt, wgt, 0.0, 1.0, 0.0, 1.0, 0);
     /* rounding of H (sums of non-negative multiples of G) and of each
      * subdivision level (averages), relative to the scale, plus the gaps' */
@@ -287,14 +294,7 @@ static int certify_cell(const ts_surface *s, size_t i, size_t j, const ts__gboun
     c.depth_max = 0;
     c.nodes = 0;
     double H[49];
-    for (int m = 0; m < 7; m++)
-        for (int n = 0; n < 7; n++) {
-            double v = 0.0;
-            for (int k = 0; k < 4; k++)
-                for (int l = 0; l < 4; l++)
-                    v += bern[m][k] * bern[n][l] * G[4 * k + l];
-            H[7 * m + n] = v;
-        }
+    elevate(G, H);
     bb(&c, H, wgt, wgt, 0.0, 1.0, 0.0, 1.0, 0);
     double pv = c.lower - (32.0 + 4.0 * c.depth_max) * DBL_EPSILON * scale - guard;
     int proof = ts__surf_gaps_inside(G, guard) && G[0] > guard && G[3] > guard &&
@@ -343,15 +343,10 @@ int ts__surf_certify_grid(const ts_surface *s, size_t i, size_t j, const ts__gbo
     c.bt = c.bu = 0.0;
     c.depth_max = c.stop = 0;
     c.nodes = 0;
-    double H[49];
-    for (int m = 0; m < 7; m++)
-        for (int n = 0; n < 7; n++) {
-            double v = 0.0;
-            for (int k = 0; k < 4; k++)
-                for (int l = 0; l < 4; l++)
-                    v += bern[m][k] * bern[n][l] * (sign * B[4 * k + l]);
-            H[7 * m + n] = v;
-        }
+    double H[49], SB[16];
+    for (int k = 0; k < 16; k++)
+        SB[k] = sign * B[k]; /* exact: sign is ±1 */
+    elevate(SB, H);
     gbb(&c, H, wgt, wgt, 0.0, 1.0, 0.0, 1.0, 0);
     *proven = c.lower;
     *sampled = c.best;
