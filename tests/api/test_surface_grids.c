@@ -4,6 +4,7 @@
  * data, every form; every value returned for a certified surface is checked
  * against the exact bilinear fields (exact sign arithmetic of the test's
  * own, on dyadic grids and samples where the field's numerator is exact). */
+#include "common/th_exact.h"
 #include "th.h"
 #include "trigspline.h"
 
@@ -11,26 +12,6 @@
 #include <string.h>
 
 /* ---- the exact side of a value against a dyadic field ------------------- */
-
-/* sign of a + b + c, exact (TwoSum expansion) */
-static int sign3(double a, double b, double c)
-{
-    double e[3], v[3] = {a, b, c};
-    int k = 0;
-    for (int j = 0; j < 3; j++) {
-        double q = v[j];
-        for (int l = 0; l < k; l++) {
-            double s = q + e[l], z = s - q;
-            e[l] = (q - (s - z)) + (e[l] - z);
-            q = s;
-        }
-        e[k++] = q;
-    }
-    for (int l = k - 1; l >= 0; l--)
-        if (e[l] != 0.0)
-            return e[l] > 0.0 ? 1 : -1;
-    return 0;
-}
 
 /* sign of v − field(x, y): hx hy field = N exactly (dyadic coordinates and
  * values of few bits: every product and sum below is exact), and
@@ -47,7 +28,8 @@ static int field_side(const ts_grid_bound *g, double x, double y, double v)
     double N = z0[0] * (X1 - x) * (Y1 - y) + z0[1] * (x - X0) * (Y1 - y) +
                z1[0] * (X1 - x) * (y - Y0) + z1[1] * (x - X0) * (y - Y0);
     double D = (X1 - X0) * (Y1 - Y0), P = v * D, E = fma(v, D, -P);
-    return sign3(P, E, -N);
+    double t[3] = {P, E, -N};
+    return th_exact_sign(t, 3); /* a big-integer sum, not the library's method */
 }
 
 /* the field's value (rounded; for building data) */
