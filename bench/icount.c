@@ -1,7 +1,8 @@
 /* Instruction counts of the batch kernels (bench/HISTORY.md): run under
  *   valgrind --tool=callgrind --toggle-collect=measured bench/icount FORM ISA ORDER [DERIV]
  * FORM paper | c1 | geometric | gsl (GSL steffen, gsl_interp_eval + accel);
- * ISA 0 portable, 1 AVX2+FMA, 2 AVX-512F (valgrind has no AVX-512);
+ * ISA 0 portable, 1 AVX2+FMA, 2 AVX-512F (valgrind has no AVX-512), -1 one
+ * ts_spline_eval call per point with a cursor instead of the batch kernel;
  * ORDER sorted | random.  The bench's data at 10001 knots, 1e5 queries
  * (ICOUNT_NP, ICOUNT_M to change them); instructions per point = the Ir of
  * `measured` / the queries.  With ICOUNT_REPS=r
@@ -40,6 +41,12 @@ __attribute__((noinline)) static int measured(const ts_spline *s, gsl_interp *g,
         return 1;
     }
     ts_cursor c = TS_CURSOR_INIT;
+    if (isa < 0) { /* one ts_spline_eval call per point */
+        for (size_t j = 0; j < M; j++)
+            if (ts_spline_eval(s, Q[j], &c, &Y[j]) != TS_OK)
+                return 0;
+        return 1;
+    }
     size_t done = 0;
     return ts__fast_batch_isa(s, deriv, Q, M, Y, &c, isa, &done) && done == M;
 }

@@ -17,5 +17,8 @@ for form in paper c1 geometric; do
         run $form $isa random
     done
 done
+for form in paper c1 geometric; do
+    run $form -1 sorted
+done
 run paper 1 sorted 1
 run geometric 1 sorted 1

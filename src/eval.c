@@ -100,29 +100,25 @@ static TS_NOINLINE ts_status eval_value(const ts_spline *s, double x, ts_cursor 
     return st;
 }
 
-/* ts_spline_eval's usual case in the geometric form (x in the cursor's interval),
- * out of line so that the other forms' needs no stack frame. */
-static TS_NOINLINE ts_status eval_geo(const ts_spline *s, double x, ts_cursor *cur, double *y)
+/* ts_spline_eval's usual case in the geometric form (x in interval i), out
+ * of line so that the other forms' needs no stack frame. */
+static TS_NOINLINE ts_status eval_geo(const ts_spline *s, size_t i, double x, double *y)
 {
-    size_t i = ts__cursor_interval(s, x, cur);
-    if (i < s->n) {
-        double o[3];
-        ts__geo_in(s, i, x, 0, o);
-        *y = o[0];
-        return TS_OK;
-    }
-    return eval_value(s, x, cur, y);
+    double o[3];
+    ts__geo_in(s, i, x, 0, o);
+    *y = o[0];
+    return TS_OK;
 }
 
 ts_status ts_spline_eval(const ts_spline *s, double x, ts_cursor *cur, double *y)
 {
-    /* the usual case: x inside the data (NaN fails) and in the cursor's
-     * interval; the same value as eval_at's */
-    if (s && y && x <= s->x[s->n]) {
-        if (s->form == TS_FORM_GEOMETRIC)
-            return eval_geo(s, x, cur, y);
-        size_t i = ts__cursor_interval(s, x, cur);
+    /* the usual case: x in the cursor's interval or the next (so inside the
+     * data; NaN fails); the same value as eval_at's */
+    if (s && y) {
+        size_t i = ts__cursor_step(s, x, cur);
         if (i < s->n) {
+            if (s->form == TS_FORM_GEOMETRIC)
+                return eval_geo(s, i, x, y);
             double o[3];
             ts__trig_eval_in(s, i, x, 0, o);
             *y = o[0];

@@ -42,6 +42,8 @@
 #include <float.h>
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
+#include <string.h>
 
 /* Every internal function is hidden from the shared library.  (A
  * TS_VECTOR_LOOP function must still be static: the ifunc resolver of one
@@ -330,6 +332,25 @@ static inline size_t ts__cursor_interval(const ts_spline *sp, double x, const ts
 {
     size_t i = cur ? cur->interval : sp->n;
     return i < sp->n && sp->x[i] <= x && (x < sp->x[i + 1] || i + 1 == sp->n) ? i : sp->n;
+}
+/* For x anywhere (NaN too): the cursor's interval if it holds x, else the
+ * next one (sorted queries), setting the cursor as ts__search sets it; n,
+ * with the cursor unchanged, where ts__locate would search (or x is
+ * outside [x0, xn]).  No call: ts_spline_eval's usual case. */
+static inline size_t ts__cursor_step(const ts_spline *sp, double x, ts_cursor *cur)
+{
+    size_t n = sp->n, i = cur ? cur->interval : n;
+    const double *xs = sp->x;
+    if (!(i < n && xs[i] <= x)) /* NaN fails */
+        return n;
+    if (x < xs[i + 1])
+        return i;
+    if (++i == n) /* x >= xn: xn itself is in the last interval */
+        return x == xs[n] ? n - 1 : n;
+    if (!(x < xs[i + 1] || (i + 1 == n && x == xs[n])))
+        return n;
+    cur->interval = i;
+    return i;
 }
 static inline size_t ts__locate(const ts_spline *sp, double x, ts_cursor *cur)
 {
@@ -750,6 +771,18 @@ double ts__cum(const ts_spline *sp, size_t i);
 /* Value and derivatives (in x; out[1], out[2] only if want > 0, > 1) of
  * interval i at x, any form; x may lie outside the interval (extension). */
 void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double o[3]);
+/* a if r is 0, b if r is 1, by masks on the bits: no branch, which a
+ * compiler may make of a select (sorted queries would mispredict it at
+ * every interval's midpoint, random ones at every other query) */
+TS_INLINE double ts__pick(size_t r, double a, double b)
+{
+    uint64_t ua, ub, m = (uint64_t)0 - (uint64_t)r;
+    memcpy(&ua, &a, sizeof ua);
+    memcpy(&ub, &b, sizeof ub);
+    ua ^= (ua ^ ub) & m;
+    memcpy(&a, &ua, sizeof a);
+    return a;
+}
 /* The same, paper and C¹ forms, x inside the interval (x_i <= x <= x_{i+1}):
  * ϑ from the nearer end (<= π/4), so the kernels' polynomial sine and cosine
  * (sin and cos of π/2 − θ are exact at the right knot: both knots are
@@ -760,10 +793,11 @@ TS_INLINE void ts__trig_eval_in(const ts_spline *sp, size_t i, double x, int wan
     double tu = (x - sp->x[i]) * w, tv = (sp->x[i + 1] - x) * w;
     /* from the right end as the kernels (the same test, on the products):
      * ϑ = π/2 − θ, the control values reversed (docs/method.md §2),
-     * dϑ/dθ = −1; chosen by index and pointer, not by a branch, which
-     * sorted queries would mispredict at every interval's midpoint */
+     * dϑ/dθ = −1; chosen by index and by masks (ts__pick), not by a
+     * branch, which sorted queries would mispredict at every midpoint */
     size_t r = tv < tu;
-    double B[4] = {sp->f[i + r], (r ? sp->b2 : sp->b1)[i], (r ? sp->b1 : sp->b2)[i], sp->f[i + 1 - r]};
+    double b1 = sp->b1[i], b2 = sp->b2[i];
+    double B[4] = {sp->f[i + r], ts__pick(r, b1, b2), ts__pick(r, b2, b1), sp->f[i + 1 - r]};
     double s, c, ms, mc;
     ts__sincos_q(tv < tu ? tv : tu, &s, &c, &ms, &mc);
     ts__seg_scm(B, s, c, ms, mc, want, o);

@@ -27,6 +27,7 @@
 #include <float.h>
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #define EPS DBL_EPSILON
 /* the largest κ the library forms: a_i >= TS_GEOMETRIC_A_MIN, κ = 2/(3π a)
@@ -379,6 +380,63 @@ static void entry_points(void)
     }
 }
 
+/* ts_spline_eval's inline cursor step (ts__cursor_step): from every cursor
+ * (valid, past the end) and at every kind of query (inside, at and beside
+ * each knot, outside, ±Inf, NaN), the status and value of the path without
+ * a cursor (ts_spline_eval_deriv: the binary search), and the cursor
+ * ts_spline_find_interval leaves (ts__search: the cursor, its successor,
+ * else the search), which the header documents as the cursor's meaning.
+ * The value is the same bits: the same interval's same operations
+ * (docs/method.md §2, §4). */
+static void cursor_step(void)
+{
+    const double x[5] = {0.0, 1.0, 2.5, 3.0, 4.5}, f[5] = {1.0, 3.0, 2.0, 2.5, 0.5};
+    double q[64];
+    int nq = 0;
+    for (int k = 0; k < 5; k++) {
+        q[nq++] = x[k];
+        q[nq++] = nextafter(x[k], -(double)INFINITY);
+        q[nq++] = nextafter(x[k], (double)INFINITY);
+        if (k < 4) {
+            q[nq++] = 0.5 * (x[k] + x[k + 1]);
+            q[nq++] = x[k] + 0.1 * (x[k + 1] - x[k]);
+        }
+    }
+    q[nq++] = -1.0;
+    q[nq++] = 7.0;
+    q[nq++] = (double)INFINITY;
+    q[nq++] = -(double)INFINITY;
+    q[nq++] = TH_NAN;
+    for (int form = 0; form < 3; form++) {
+        for (int ex = 0; ex < 2; ex++) {
+            ts_spline_options o;
+            th_options_paper(&o);
+            o.form = form == 0 ? TS_FORM_PAPER : form == 1 ? TS_FORM_C1 : TS_FORM_GEOMETRIC;
+            o.extrapolate = ex ? TS_EXTRAP_EXTEND : TS_EXTRAP_ERROR;
+            ts_spline *s = NULL;
+            CHECK(ts_spline_new(x, f, 5, &o, &s, NULL) == TS_OK);
+            if (!s)
+                return;
+            for (size_t c0 = 0; c0 <= 6; c0++) {
+                for (int j = 0; j < nq; j++) {
+                    ts_cursor c = {c0}, cf = {c0};
+                    double y = 0.0, yr = 0.0;
+                    size_t i;
+                    ts_status st = ts_spline_eval(s, q[j], &c, &y);
+                    ts_status sr = ts_spline_eval_deriv(s, q[j], NULL, &yr, NULL, NULL);
+                    (void)ts_spline_find_interval(s, q[j], &cf, &i);
+                    CHECKF(st == sr && (memcmp(&y, &yr, sizeof y) == 0 || (isnan(y) && isnan(yr))) &&
+                               c.interval == cf.interval,
+                           "form %d extrap %d cursor %zu x %.17g: %d %.17g (cursor %zu), expected %d "
+                           "%.17g (cursor %zu)",
+                           form, ex, c0, q[j], (int)st, y, c.interval, (int)sr, yr, cf.interval);
+                }
+            }
+            ts_spline_free(s);
+        }
+    }
+}
+
 static void interval_eval(void)
 {
     /* ts__interval_eval inside an interval with every want (the library
@@ -431,6 +489,8 @@ int main(void)
     mt_threads();
     TH_CASE("entry_points");
     entry_points();
+    TH_CASE("cursor_step");
+    cursor_step();
     TH_CASE("interval_eval");
     interval_eval();
     return th_report("test_cover_eval");
