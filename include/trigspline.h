@@ -1612,7 +1612,9 @@ TS_API void ts_histo_options_init(ts_histo_options *opt);
  *   TS_ERR_NONFINITE   an edge (where = point) or a total (where = interval) NaN/inf
  *   TS_ERR_UNSORTED    edges not strictly increasing (point i with e[i] <= e[i-1])
  *   TS_ERR_WIDTH       a bin width overflows or is below DBL_MIN (point i = its right edge)
- *   TS_ERR_TOO_LARGE   a bin mean beyond TS_VALUE_MAX / 4 in magnitude (interval)
+ *   TS_ERR_TOO_LARGE   a bin mean beyond TS_VALUE_MAX / 4 in magnitude, or a bin
+ *                      whose integral (lo times its width included) overflows
+ *                      (interval)
  *   TS_ERR_NEGATIVE    a total below lo times the bin width, with lo = 0 and
  *                      hi = +inf: a negative total (interval)
  *   TS_ERR_INFEASIBLE  with other bounds, a bin whose mean is outside [lo, hi], or two
@@ -1626,7 +1628,8 @@ TS_API ts_status ts_histo_new(const double *edges, const double *totals, size_t 
 /* The same checks, without building: status[j] (n_bins entries; may be
  * NULL) is TS_OK or the status of bin j (an edge failing names both of its
  * bins; TS_ERR_INFEASIBLE marks both bins of an edge the scheme cannot
- * join).  Statuses as ts_histo_new, except TS_ERR_NOMEM; status[] is
+ * join).  Statuses as ts_histo_new, except TS_ERR_NOMEM and an integral
+ * that overflows (found by building); status[] is
  * written (all TS_OK first) whenever the arguments are not NULL, the
  * options valid and n_bins > 0. */
 TS_API ts_status ts_histo_check(const double *edges, const double *totals, size_t n_bins,

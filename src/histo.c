@@ -186,8 +186,10 @@ static ts_status analyse(const double *e, const double *T, size_t n, const ts_hi
     for (size_t j = 1; j < n && edges_ok && first == TS_OK && H < HUGE_VAL; j++) {
         int bad;
         (void)edge_value(rho_of(e, T, j - 1, o->lo, o->hi), rho_of(e, T, j, o->lo, o->hi), H, &bad);
-        if (bad) {
-            HFAIL(TS_ERR_INFEASIBLE, j - 1, TS_WHERE_INTERVAL);
+        if (bad) { /* the first failure: the loop runs while there is none */
+            first = TS_ERR_INFEASIBLE;
+            fi = j - 1;
+            fw = TS_WHERE_INTERVAL;
             set_status(st, j - 1, TS_ERR_INFEASIBLE);
             set_status(st, j, TS_ERR_INFEASIBLE);
         }
@@ -284,10 +286,12 @@ static int inside(const double *B, double H)
     return ok;
 }
 
-/* §12.3: bin j from its edge values y, edge slopes sg: the C² solution X
- * of (12.3) blended with the flat solution Z by the largest λ in [0, 1]
- * that keeps every control value in [0, H]; flat: λ = 0. */
-static int build_wet(ts_histo *h, size_t j, double rho, const double *y, const double *sg, int flat)
+/* §12.3: bin j from its edge values y, edge slopes sg (a bin whose C²
+ * solution X wet_fast found outside [0, H]): X blended with the flat
+ * solution Z by the largest λ in [0, 1] that keeps every control value in
+ * [0, H], else Z itself, whose rounded control values are in [0, H]
+ * (§12.6.1). */
+static void build_wet(ts_histo *h, size_t j, double rho, const double *y, const double *sg)
 {
     double *B = h->B + HB * j;
     double w = h->e[j + 1] - h->e[j], Kq = w / (6.0 * TS_PI), H = h->H;
@@ -299,22 +303,7 @@ static int build_wet(ts_histo *h, size_t j, double rho, const double *y, const d
                     hrow(HINV[2], b) / 2400.0, Y4};
     double EX[5] = {E0, hrow(HINV[3], b) / 2400.0, hrow(HINV[4], b) / 2400.0,
                     hrow(HINV[5], b) / 2400.0, E4};
-    /* X itself when every control value is finite and in [0, H]: the inner
-     * knots' data finite (their sum is; the edge ones are), then the least
-     * and largest control value */
-    double sf = YX[1] + YX[2] + YX[3] + EX[1] + EX[2] + EX[3];
-    if (!flat && sf - sf == 0.0) {
-        controls(YX, EX, B);
-        double m0 = B[0], m1 = B[1], M0 = B[0], M1 = B[1];
-        for (int l = 2; l < HB; l += 2) {
-            m0 = B[l] < m0 ? B[l] : m0;
-            m1 = B[l + 1] < m1 ? B[l + 1] : m1;
-            M0 = B[l] > M0 ? B[l] : M0;
-            M1 = B[l + 1] > M1 ? B[l + 1] : M1;
-        }
-        if (0.0 <= m0 && 0.0 <= m1 && M0 <= H && M1 <= H && M0 <= DBL_MAX && M1 <= DBL_MAX)
-            return 1;
-    }
+    /* b0/3 > 0 for a wet bin (§12.6.1); the clamps keep Z inside regardless */
     double zv = b[0] / 3.0;
     zv = zv > 0.0 ? zv : 0.0;
     zv = zv < H ? zv : H;
@@ -322,7 +311,7 @@ static int build_wet(ts_histo *h, size_t j, double rho, const double *y, const d
     double BZ[HB], BX[HB];
     controls(YZ, EZ, BZ);
     controls(YX, EX, BX);
-    double lam = flat ? 0.0 : 1.0;
+    double lam = 1.0;
     for (int l = 0; l < HB; l++) {
         double z = BZ[l], x = BX[l];
         if (!isfinite(x))
@@ -333,7 +322,8 @@ static int build_wet(ts_histo *h, size_t j, double rho, const double *y, const d
             lam = fmin(lam, (H - z) / (x - z));
     }
     /* the control values are linear in the knot data: blend them directly
-     * (the edge ones are the same in X and Z, so they stay exact) */
+     * (the edge ones are the same in X and Z, so they stay exact); λ
+     * rounded to 1 keeps X, which may then be outside by rounding */
     if (lam == 1.0) {
         memcpy(B, BX, sizeof BX);
     } else {
@@ -341,10 +331,15 @@ static int build_wet(ts_histo *h, size_t j, double rho, const double *y, const d
         for (int l = 0; l < HB; l++)
             B[l] = BZ[l] + lam * (BX[l] - BZ[l]);
     }
-    if (inside(B, H))
-        return 1;
-    memcpy(B, BZ, sizeof BZ);
-    return inside(B, H);
+    if (!inside(B, H))
+        memcpy(B, BZ, sizeof BZ); /* inside: §12.6.1 */
+}
+
+/* *mn, *mx updated with v (the least and largest control value) */
+TS_INLINE void min_max(double v, double *mn, double *mx)
+{
+    *mn = v < *mn ? v : *mn;
+    *mx = v > *mx ? v : *mx;
 }
 
 /* The fast path of build_wet for m wet bins at once (a vector loop): from
@@ -373,10 +368,10 @@ TS_VECTOR_LOOP static void wet_fast(size_t m, const double *restrict r, const do
         double P01 = Y0 + E0, P02 = Y1 - E1, P11 = Y1 + E1, P12 = Y2 - E2;
         double P21 = Y2 + E2, P22 = Y3 - E3, P31 = Y3 + E3, P32 = Y4 - E4;
         double mn = Y0 < Y1 ? Y0 : Y1, mx = Y0 > Y1 ? Y0 : Y1;
-#define HMINMAX(v) (mn = (v) < mn ? (v) : mn, mx = (v) > mx ? (v) : mx)
-        HMINMAX(Y2), HMINMAX(Y3), HMINMAX(Y4), HMINMAX(P01), HMINMAX(P02), HMINMAX(P11);
-        HMINMAX(P12), HMINMAX(P21), HMINMAX(P22), HMINMAX(P31), HMINMAX(P32);
-#undef HMINMAX
+        min_max(Y2, &mn, &mx), min_max(Y3, &mn, &mx), min_max(Y4, &mn, &mx);
+        min_max(P01, &mn, &mx), min_max(P02, &mn, &mx), min_max(P11, &mn, &mx);
+        min_max(P12, &mn, &mx), min_max(P21, &mn, &mx), min_max(P22, &mn, &mx);
+        min_max(P31, &mn, &mx), min_max(P32, &mn, &mx);
         ok[i] = (sf - sf == 0.0) & (0.0 <= mn) & (mx <= H) & (mx <= DBL_MAX);
         double *o = Bt + i;
         o[0] = Y0, o[HCHUNK] = P01, o[2 * HCHUNK] = P02, o[3 * HCHUNK] = Y1;
@@ -397,16 +392,6 @@ TS_VECTOR_LOOP static void wet_fast(size_t m, const double *restrict r, const do
 static inline int dry(double rho, const double *y, const double *sg, size_t j)
 {
     return (rho == 0.0) & (y[j] == 0.0) & (y[j + 1] == 0.0) & (sg[j] == 0.0) & (sg[j + 1] == 0.0);
-}
-
-static inline int build_bin(ts_histo *h, size_t j, double rho, const double *y, const double *sg,
-                            int flat)
-{
-    if (dry(rho, y, sg, j)) {
-        memset(h->B + HB * j, 0, HB * sizeof(double)); /* +0 */
-        return 1;
-    }
-    return build_wet(h, j, rho, y, sg, flat);
 }
 
 static int bin_inside(const ts_histo *h, size_t j)
@@ -465,18 +450,16 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
     ts_status st = check_args(edges, totals, n_bins, opt, &o, err);
     if (st != TS_OK)
         return st;
-    /* doubles: e (n+1), B (HB n), tot (n), y (n+1), sg (n+1), rho (n); flags n */
+    /* doubles: e (n+1), B (HB n), tot (n), y (n+1), sg (n+1), rho (n) */
     if (n_bins > (SIZE_MAX / sizeof(double) - 3) / (HB + 4))
         return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
     size_t n = n_bins;
     ts_histo *h = ts__calloc(1, sizeof *h);
     double *work = ts__malloc((3 * n + 2) * sizeof(double));
-    unsigned char *zs = ts__calloc(n, 1);
     if (h)
         h->e = ts__calloc((HB + 2) * n + 1, sizeof(double)); /* B +0: the dry bins' */
-    if (!h || !h->e || !work || !zs) {
+    if (!h || !h->e || !work) {
         free(work);
-        free(zs);
         release(h);
         return ts__fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
     }
@@ -484,7 +467,6 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
     st = analyse(edges, totals, n_bins, &o, NULL, rho, err);
     if (st != TS_OK) {
         free(work);
-        free(zs);
         release(h);
         return st;
     }
@@ -517,8 +499,7 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
     /* bins in chunks: the wet ones listed (no branch on the data), every
      * total lo w (a dry bin's: bin_total of +0s; its control values are the
      * +0s of calloc), the wet ones built together (wet_fast) and written, the
-     * scalar build where one of theirs falls outside */
-    int bad = 0;
+     * scalar build where one of theirs falls outside (then inside: §12.6.1) */
     for (size_t j0 = 0; j0 < n; j0 += HCHUNK) {
         size_t j1 = n - j0 < HCHUNK ? n : j0 + HCHUNK, list[HCHUNK], m = 0;
         for (size_t j = j0; j < j1; j++) {
@@ -548,38 +529,18 @@ ts_status ts_histo_new(const double *edges, const double *totals, size_t n_bins,
                 h->tot[j] = tt[i];
                 continue;
             }
-            bad |= !build_wet(h, j, rho[j], y, sg, 0);
+            build_wet(h, j, rho[j], y, sg);
             h->tot[j] = bin_total(B, edges[j + 1] - edges[j], o.lo);
         }
     }
-    /* rounding (subnormal widths) may leave a control value outside by an
-     * ulp: such a bin's slopes become 0, its neighbours rebuilt (§12.6) */
-    for (int changed = bad; changed;) {
-        changed = 0;
-        for (size_t j = 0; j < n; j++) {
-            if (bin_inside(h, j))
-                continue;
-            changed = !(sg[j] == 0.0 && sg[j + 1] == 0.0 && zs[j]);
-            sg[j] = sg[j + 1] = 0.0;
-            zs[j] = 1;
-            for (size_t k = j > 0 ? j - 1 : 0; k <= j + 1 && k < n; k++)
-                (void)build_bin(h, k, rho[k], y, sg, zs[k]);
-            if (changed)
-                break;
-        }
-    }
-    for (size_t j = 0; j < n && bad; j++) /* after a repair, every bin's again */
-        h->tot[j] = bin_total(h->B + HB * j, edges[j + 1] - edges[j], o.lo);
     for (size_t j = 0; j < n; j++) {
         if (!isfinite(h->tot[j])) {
             free(work);
-            free(zs);
             release(h);
             return ts__fail(err, TS_ERR_TOO_LARGE, j, TS_WHERE_INTERVAL);
         }
     }
     free(work);
-    free(zs);
     *out = h;
     return TS_OK;
 }
@@ -890,8 +851,12 @@ ts_status ts_histo_totals(const ts_histo *h, const double *grid, size_t m, doubl
     if (m < 2)
         return TS_OK;
     double e0 = h->e[0], en = h->e[h->n];
+    /* grid_ok's tests point by point: the first point failing one (k < m
+     * when ok is 0: a point outside fails the first test here, and where
+     * the first failure is the order, both points are inside, so not NaN,
+     * and !(g_k >= g_k-1) is g_k < g_k-1) returns */
     int ok = grid_ok(grid, m, e0, en);
-    for (size_t k = 0; k < m && !ok; k++) {
+    for (size_t k = 0; !ok; k++) {
         if (!(e0 <= grid[k] && grid[k] <= en))
             return ts__fail(err, TS_ERR_DOMAIN, k, TS_WHERE_QUERY);
         if (k > 0 && grid[k] < grid[k - 1])
@@ -906,12 +871,12 @@ ts_status ts_histo_totals(const ts_histo *h, const double *grid, size_t m, doubl
     for (size_t k0 = 0; k0 < m; k0 += HGRID) {
         size_t nk = m - k0 < HGRID ? m - k0 : HGRID;
         for (size_t i = 0; i < nk; i++) {
-            /* the cursor's bin when it holds the point, as ts__search */
+            /* the cursor's bin when it holds the point, as ts__search (the
+             * cursor is 0 or the bin of an earlier point: c < n and
+             * e_c <= x, the points being sorted) */
             size_t c = cur.interval;
             double x = grid[k0 + i];
-            jb[i] = c < h->n && h->e[c] <= x && (x < h->e[c + 1] || c + 1 == h->n)
-                        ? c
-                        : ts__search(h->e, h->n, x, &cur);
+            jb[i] = x < h->e[c + 1] || c + 1 == h->n ? c : ts__search(h->e, h->n, x, &cur);
             stage_point(h, jb[i], x, &st, i);
         }
         /* G[0] the point before the block (G[1] the first of the block) */
@@ -920,10 +885,8 @@ ts_status ts_histo_totals(const ts_histo *h, const double *grid, size_t m, doubl
         G[0] = Ga;
         same_bin(grid + k0 - (1 - i0), G + i0, nk + 1 - i0, h->lo, h->hi, h->hf,
                  out + k0 - (1 - i0));
-        for (size_t i = i0; i < nk; i++) {
+        for (size_t i = i0; i < nk; i++) { /* k >= 1 (i0 = 1 in the first block) */
             size_t k = k0 + i;
-            if (k == 0)
-                continue;
             size_t jprev = i > 0 ? jb[i - 1] : ja;
             if (jprev != jb[i]) {
                 double a = grid[k - 1], b = grid[k], Gb = G[i + 1], v;
@@ -1124,8 +1087,8 @@ ts_status ts_histo_report(const ts_histo *h, size_t bin, ts_bin_report *rep)
             mn = v;
             rep->at_min = x0 + (q / TS_HALF_PI) * th;
         }
+        /* its guard is the minimum's (§12.5): g stays */
         v = -ts__trig_min_core(-P[0], -P[1], -P[2], -P[3], 0.0, &th, &tb, &eb);
-        g = eb > g ? eb : g;
         if (v > mx) {
             mx = v;
             rep->at_max = x0 + (q / TS_HALF_PI) * th;

@@ -474,6 +474,17 @@ static void errors(void)
     double Tl[3] = {1, 1e300, 1};
     double el[4] = {0, 1, 1 + 1e-15, 2};
     CHECK(ts_histo_new(el, Tl, 3, NULL, &h, &err) == TS_ERR_TOO_LARGE && err.index == 1);
+    /* a mean within the limit whose integral overflows: lo = -1e300 over a
+     * width of 1e300 (lo w = -1e600), which ts_histo_check does not build */
+    {
+        ts_histo_options ol;
+        ts_histo_options_init(&ol);
+        ol.lo = -1e300;
+        double eo[3] = {0, 1, 1e300}, To[2] = {0, 0};
+        CHECK(ts_histo_new(eo, To, 2, &ol, &h, &err) == TS_ERR_TOO_LARGE && err.index == 1 &&
+              err.where == TS_WHERE_INTERVAL && h == NULL);
+        CHECK(ts_histo_check(eo, To, 2, &ol, NULL, NULL) == TS_OK);
+    }
     double Tn[3] = {1, -1e-300, 1};
     CHECK(ts_histo_new(e, Tn, 3, NULL, &h, &err) == TS_ERR_NEGATIVE && err.index == 1);
     CHECK(err.where == TS_WHERE_INTERVAL);

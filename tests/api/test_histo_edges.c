@@ -76,6 +76,127 @@ static void test_cases(void)
     check(ew, tw, 3, 0.0, 2.0);
 }
 
+/* The flat solution Z of §12.3 in a bin's report: its twelve inner control
+ * values equal (v), and 3v = 4ρ − (Y0 + Y4)/2 − W1 (E0 − E4) with the edge
+ * data read from the four outer ones (Y0 = B0, E0 = B1 − B0, Y4 = B15,
+ * E4 = B15 − B14) and W1 = 22/(3π) − 2 (§12.2).  Tolerance: the library
+ * rounds the right-hand side, the test re-forms it: a few ε of the largest
+ * term (1e-14 of it). */
+static int is_flat(const ts_bin_report *rep, double lo)
+{
+    int flat = 1;
+    for (int l = 2; l < 14; l++)
+        flat &= rep->B[l] == rep->B[2];
+    double W1 = 22.0 / (3.0 * acos(-1.0)) - 2.0, rho = rep->mean - lo;
+    double Y0 = rep->B[0], E0 = rep->B[1] - rep->B[0], Y4 = rep->B[15], E4 = rep->B[15] - rep->B[14];
+    double rhs = 4.0 * rho - 0.5 * (Y0 + Y4) - W1 * (E0 - E4);
+    double scale = fmax(4.0 * fabs(rho), fmax(fabs(Y0), fabs(Y4)));
+    return flat && fabs(3.0 * rep->B[2] - rhs) <= 1e-14 * scale;
+}
+
+/* The scalar build of §12.3 (a bin whose C² solution X has a control value
+ * outside [0, H]) in its three outcomes besides the ordinary blend, and
+ * bins in more than one chunk of 64 (the build lists them 64 at a time). */
+static void test_scalar_build(void)
+{
+    TH_CASE("the blend's fall-backs (§12.3, §12.6.1)");
+    ts_histo_options o;
+    ts_histo_options_init(&o);
+    ts_histo *h = NULL;
+    ts_bin_report rep;
+    /* two bins at an upper bound whose H = hi − lo has a full significand:
+     * constant data, so X = Z = H exactly; the rounded X leaves [0, H] and
+     * b0/3 rounds to H or above (clamped to H), λ = 0: every control
+     * value is H and r is hi to rounding (1e-15 relative: a sum of four
+     * products A_l H with A_l summing to 1) */
+    {
+        double e[3] = {0, 1, 2}, hi = 0x1.b49eb5386a4a8p+4, t[2] = {hi, hi};
+        o.lo = -0x1.777647fcd243fp-1, o.hi = hi;
+        CHECK(ts_histo_new(e, t, 2, &o, &h, NULL) == TS_OK);
+        for (size_t j = 0; j < 2 && h; j++) {
+            ts_bin_report_init(&rep);
+            CHECK(ts_histo_report(h, j, &rep) == TS_OK && rep.certified);
+            for (int l = 0; l < 16; l++)
+                CHECKF(rep.B[l] == hi - o.lo, "bin %zu B%d %a", j, l, rep.B[l]);
+        }
+        for (int k = 0; k <= 64 && h; k++) {
+            double r;
+            CHECK(ts_histo_eval(h, k / 32.0, &r, NULL) == TS_OK);
+            CHECKF(r <= hi && hi - r <= 1e-15 * hi, "x %g: r %a", k / 32.0, r);
+        }
+        /* cells of 1/sub of a bin: hi/sub each (the cell totals, kept at or
+         * below hi times the width, reach it where the sum rounds up; 1e-15
+         * relative as above) */
+        for (size_t sub = 1; sub <= 12 && h; sub++) {
+            double c[24];
+            CHECK(ts_histo_subdivide(h, sub, c, NULL) == TS_OK);
+            for (size_t k = 0; k < 2 * sub; k++) {
+                double cw = 1.0 / (double)sub;
+                CHECKF(c[k] <= hi * cw && hi * cw - c[k] <= 1e-15 * hi * cw, "sub %zu cell %zu: %a",
+                       sub, k, c[k]);
+            }
+        }
+        ts_histo_free(h);
+        h = NULL;
+    }
+    /* a bin below hi next to one at hi: the first bin's λ rounds to 1 with
+     * a control value of X a few ulps outside [0, H]; that bin is Z
+     * (is_flat; the blend at λ < 1 would not be flat), every bin certified
+     * and its total kept (1e-15 relative: §12.6) */
+    {
+        double e[3] = {0, 1, 2}, t[2] = {-0x1.34e6409f88ae1p-4, -0x1.18c68732e31b1p-4};
+        o.lo = -0x1.58326f9abec98p-4, o.hi = -0x1.18c68732e31b1p-4;
+        CHECK(ts_histo_new(e, t, 2, &o, &h, NULL) == TS_OK);
+        int flat = 0;
+        for (size_t j = 0; j < 2 && h; j++) {
+            ts_bin_report_init(&rep);
+            CHECK(ts_histo_report(h, j, &rep) == TS_OK && rep.certified);
+            CHECKF(fabs(rep.total - t[j]) <= 1e-15 * fabs(t[j]), "bin %zu total %a", j, rep.total);
+            flat |= is_flat(&rep, o.lo) << j;
+        }
+        CHECKF(flat & 1, "flat bins %d", flat);
+        ts_histo_free(h);
+        h = NULL;
+    }
+    /* a mean of 2^1018 (below the limit 2^1019 of §12.6): (12.3)'s products
+     * overflow, X is not finite, the bin is Z: constant, every control
+     * value 2^1018 exactly (Y0 = Y4 = ρ, b0 = 3ρ, v = ρ), the total kept.
+     * The overflow raises FE_OVERFLOW and FE_INVALID (∞ − ∞ in the sums of
+     * (12.3)): means above about 2^1010 are valid input that raises flags,
+     * which test_histo's series (scales up to 1e6, spikes ×1000) do not reach. */
+    {
+        double e[2] = {0, 1}, t[1] = {0x1p1018};
+        CHECK(ts_histo_new(e, t, 1, NULL, &h, NULL) == TS_OK);
+        ts_bin_report_init(&rep);
+        CHECK(h && ts_histo_report(h, 0, &rep) == TS_OK && rep.certified);
+        for (int l = 0; l < 16; l++)
+            CHECKF(rep.B[l] == 0x1p1018, "B%d %a", l, rep.B[l]);
+        CHECKF(fabs(rep.total - 0x1p1018) <= 1e-15 * 0x1p1018, "total %a", rep.total);
+        ts_histo_free(h);
+        h = NULL;
+    }
+    /* 200 bins of widths 0.5 .. 1.5 at the constant rate 2.5: more than one
+     * chunk of edges and bins; the rate is 2.5 to rounding everywhere
+     * (the constant solves (12.3); 1e-14 relative) */
+    {
+        enum { N = 200 };
+        double e[N + 1], t[N];
+        e[0] = 0.0;
+        for (int j = 0; j < N; j++) {
+            e[j + 1] = e[j] + 0.5 + (double)(j * 37 % 101) / 101.0;
+            t[j] = 2.5 * (e[j + 1] - e[j]);
+        }
+        CHECK(ts_histo_new(e, t, N, NULL, &h, NULL) == TS_OK);
+        for (int k = 0; k <= 4 * N && h; k++) {
+            double x = k == 4 * N ? e[N] : e[0] + (e[N] - e[0]) * k / (4.0 * N), r;
+            CHECK(ts_histo_eval(h, x, &r, NULL) == TS_OK);
+            CHECKF(fabs(r - 2.5) <= 1e-14 * 2.5, "x %.17g: r %.17g", x, r);
+        }
+        ts_histo_free(h);
+        h = NULL;
+    }
+}
+
 /* Random bins whose means are drawn near the bounds, on them, or far
  * apart (a fixed seed; 3000 histograms of up to 12 bins). */
 static void test_random(void)
@@ -112,6 +233,7 @@ static void test_random(void)
 int main(void)
 {
     test_cases();
+    test_scalar_build();
     test_random();
     printf("histograms built %ld, refused %ld\n", built, refused);
     return th_report("test_histo_edges");

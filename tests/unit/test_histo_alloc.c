@@ -27,6 +27,6 @@ int main(void)
         CHECKF(st == TS_ERR_NOMEM && h == NULL && err.status == TS_ERR_NOMEM, "allocation %ld: %d",
                k, (int)st);
     }
-    CHECK(failed == 4); /* the handle, the work arrays, the flags, the block */
+    CHECK(failed == 3); /* the handle, the work arrays, the block */
     return th_report("test_histo_alloc");
 }
