@@ -250,16 +250,22 @@ static ts_status data_checks(const double *x, const double *f, size_t n, const t
                     int m = 0, ke;
                     double hd[2], sc = 1.0;
                     two_diff(x[i + 1], x[i], hd);
-                    if (!(fabs(L * hd[0]) <= 0x1p1020) && isfinite(L * 0x1p-64 * hd[0])) {
-                        (void)frexp(L * 0x1p-64 * hd[0], &ke);
-                        sc = ldexp(1.0, -(ke + 64 - 1010));
-                    }
-                    v[m++] = s * (sc * f[i + 1]);
-                    v[m++] = -s * (sc * f[i]);
-                    for (int e = 0; e < 2; e++) {
-                        if (ts__exact_product(sc * L, hd[e], -s, p) != 2)
-                            p[0] = -s * (sc * L) * hd[e], p[1] = 0.0;
-                        v[m++] = p[0], v[m++] = p[1];
+                    if (!isfinite(L * 0x1p-64 * hd[0])) {
+                        /* |L h| > 2^1087 > 2 TS_VALUE_MAX >= |f_{i+1} − f_i|:
+                         * the sign is −s L's */
+                        v[m++] = -s * L;
+                    } else {
+                        if (!(fabs(L * hd[0]) <= 0x1p1020)) {
+                            (void)frexp(L * 0x1p-64 * hd[0], &ke);
+                            sc = ldexp(1.0, -(ke + 64 - 1010));
+                        }
+                        v[m++] = s * (sc * f[i + 1]);
+                        v[m++] = -s * (sc * f[i]);
+                        for (int e = 0; e < 2; e++) {
+                            if (ts__exact_product(sc * L, hd[e], -s, p) != 2)
+                                p[0] = -s * (sc * L) * hd[e], p[1] = 0.0;
+                            v[m++] = p[0], v[m++] = p[1];
+                        }
                     }
                     if (ts__exact_sign(v, m) < 0)
                         return mono ? con_fail(err, fail, TS_ERR_CONDITION, k, i + 1, TS_WHERE_POINT,
@@ -964,13 +970,14 @@ static double con_gap(const ts_spline *sp, const ts_constraint *c, size_t i, dou
         *proven = const_polygon(&g, c->value, bs);
         best = want ? min_on(&tg, &s, &g, 0.0, 1.0, &tmin) : best;
     } else {
-        int ok = 1, any = 0;
-        double x1 = g.xi + g.h;
+        /* covers() holds (the callers ask for no other interval): a piece
+         * meets (x_i, x_{i+1}), since the pieces tile [px_0, px_m] */
+        int ok = 1;
+        double x1 = sp->x[i + 1];
         for (size_t p = 0; p + 1 < c->n_poly; p++) {
             double a = fmax(c->px[p], g.xi), b = fmin(c->px[p + 1], x1), tm = 0.0;
             if (!(a < b))
                 continue;
-            any = 1;
             double m = piece_slope(c, p);
             tg.which = 2, tg.sg = bs, tg.m = m, tg.x0 = c->px[p], tg.y0 = c->py[p];
             double ta = a <= g.xi ? 0.0 : t_of_x(&g, a), tb = b >= x1 ? 1.0 : t_of_x(&g, b);
@@ -988,11 +995,6 @@ static double con_gap(const ts_spline *sp, const ts_constraint *c, size_t i, dou
             }
         }
         *proven = ok;
-        if (!any) {
-            *at = (double)NAN;
-            *proven = 1;
-            return (double)NAN;
-        }
     }
     *at = x_at(&g, tmin);
     return best;
