@@ -103,8 +103,8 @@ static void unread_bound_fields(void)
 /* Convex on [0, 2] needs S'(2) >= Δ_1 = 2; S' <= 1.5 on [2, 3] needs
  * S'(2) <= 1.5: no C¹ curve meets both (the forced-line pass finds the
  * convex interval's right slope below its secant and makes interval 1 the
- * line).  The fit is refused, or (as now) accepted with a_1 so large that
- * B1 of interval 1 rounds to f_1: each record's certificate then holds for
+ * line).  The fit is refused, or (as now) accepted with a_2 so large that
+ * B1 of interval 2 rounds to f_2: each record's certificate then holds for
  * the stored control values (docs/design.md, "Coverage", on this case). */
 static void contradicting_slopes(void)
 {
