@@ -69,7 +69,7 @@ static void unread_bound_fields(void)
     ts_spline *b = NULL, *s[3] = {NULL, NULL, NULL};
     ts_spline_options o;
     ts_spline_options_init(&o);
-    CHECK(ts_spline_new(x, py[0] == 9 ? f : f, 5, &o, &b, NULL) == TS_OK);
+    CHECK(ts_spline_new(x, f, 5, &o, &b, NULL) == TS_OK);
     for (int v = 0; v < 3; v++) {
         ts_constraint c;
         ts_constraint_init(&c, TS_CONSTRAINT_CONVEX);
