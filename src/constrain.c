@@ -250,16 +250,22 @@ static ts_status data_checks(const double *x, const double *f, size_t n, const t
                     int m = 0, ke;
                     double hd[2], sc = 1.0;
                     two_diff(x[i + 1], x[i], hd);
-                    if (!(fabs(L * hd[0]) <= 0x1p1020) && isfinite(L * 0x1p-64 * hd[0])) {
-                        (void)frexp(L * 0x1p-64 * hd[0], &ke);
-                        sc = ldexp(1.0, -(ke + 64 - 1010));
-                    }
-                    v[m++] = s * (sc * f[i + 1]);
-                    v[m++] = -s * (sc * f[i]);
-                    for (int e = 0; e < 2; e++) {
-                        if (ts__exact_product(sc * L, hd[e], -s, p) != 2)
-                            p[0] = -s * (sc * L) * hd[e], p[1] = 0.0;
-                        v[m++] = p[0], v[m++] = p[1];
+                    if (!isfinite(L * 0x1p-64 * hd[0])) {
+                        /* |L h| > 2^1087 > 2 TS_VALUE_MAX >= |f_{i+1} − f_i|:
+                         * the sign is −s L's */
+                        v[m++] = -s * L;
+                    } else {
+                        if (!(fabs(L * hd[0]) <= 0x1p1020)) {
+                            (void)frexp(L * 0x1p-64 * hd[0], &ke);
+                            sc = ldexp(1.0, -(ke + 64 - 1010));
+                        }
+                        v[m++] = s * (sc * f[i + 1]);
+                        v[m++] = -s * (sc * f[i]);
+                        for (int e = 0; e < 2; e++) {
+                            if (ts__exact_product(sc * L, hd[e], -s, p) != 2)
+                                p[0] = -s * (sc * L) * hd[e], p[1] = 0.0;
+                            v[m++] = p[0], v[m++] = p[1];
+                        }
                     }
                     if (ts__exact_sign(v, m) < 0)
                         return mono ? con_fail(err, fail, TS_ERR_CONDITION, k, i + 1, TS_WHERE_POINT,
@@ -373,8 +379,6 @@ static ts_status con_slopes(const double *x, const double *f, size_t n, const ts
             double v = (j > i0 && j < i1) ? 0.0
                        : j == i0 ? (bs * d[j] < 0.0 ? 0.0 : d[j])
                                  : (bs * d[j] > 0.0 ? 0.0 : d[j]);
-            if (i1 - i0 >= 1 && j == i0 && j == i1)
-                v = 0.0;
             if (v != d[j])
                 d[j] = v, by[j] = (int)k;
         }
@@ -394,8 +398,12 @@ static ts_status con_slopes(const double *x, const double *f, size_t n, const ts
         }
     }
     /* intervals that must be lines; a knot between two such with different
-     * secants has no admissible slope (S' continuous) */
-    for (size_t pass = 0; pass <= n + 1; pass++) {
+     * secants has no admissible slope (S' continuous).  The passes end: an
+     * interval set to its line here stays a line that must be one (its
+     * test holds with d = D; a neighbour would change its end only where
+     * the conflict below returns first), and each pass that changes a
+     * slope adds one, so at most n passes change something. */
+    for (;;) {
         int changed = 0;
         for (size_t i = 0; i < n; i++) {
             double D = secant(x, f, i);
@@ -418,8 +426,6 @@ static ts_status con_slopes(const double *x, const double *f, size_t n, const ts
         if (!changed)
             return TS_OK;
     }
-    return con_fail(err, fail, TS_ERR_INFEASIBLE, TS_NO_INDEX, 0, TS_WHERE_POINT,
-                    TS_CONDITION_SLOPE_CONFLICT);
 }
 
 /* docs/method.md §13.3: the smallest a the record needs on interval i
@@ -448,9 +454,7 @@ static double a_needed(const ts_constraint *c, double h, double fi, double fj, d
         }
         return a;
     }
-    double bs = bound_sign(c);
-    if (bs == 0.0)
-        return 0.0;
+    double bs = bound_sign(c); /* lower or upper: every other kind returned above */
     double cv = c->value, blo, bhi;
     if (c->bound == TS_BOUND_SPLINE) {
         /* the constant rule against B's range over the interval (§13.7) */
@@ -610,36 +614,18 @@ static int slope_polygon(const seg *g, double L, double s)
     return 1;
 }
 
-/* bs (B_l − y0 − m (x_i − x0 + h X̂_l)) > 0 for every l: the curve on the
- * right side of the line through (x0, y0) of slope m over the whole
- * interval (convex hull, (4.1)); exact. */
-static int line_polygon(const seg *g, double x0, double y0, double m, double bs)
+/* bs (B_l − c) >= 0 for every l: S − c = Σ A_l (B_l − c) on the bound's
+ * side over the whole interval (convex hull, (4.1); the data may touch it);
+ * exact.  Not proven where h κ is not an exact product (|h κ| < 2^-960),
+ * as when this test also took sloped lines (X̂_l h in its terms). */
+static int const_polygon(const seg *g, double c, double bs)
 {
-    double X[4][3];
-    int nx[4];
-    double off[2];
-    two_diff(g->xi, x0, off);
-    for (int l = 0; l < 4; l++) {
-        X[l][0] = off[0], X[l][1] = off[1], nx[l] = 2;
-    }
     double hk[2];
     if (ts__exact_product(g->h, g->kap, 1.0, hk) != 2)
         return 0;
-    /* X̂_1 h = hκ, X̂_2 h = h − hκ, X̂_3 h = h */
-    double t1[4] = {off[0], off[1], hk[0], hk[1]};
-    double t2[5] = {off[0], off[1], g->h, -hk[0], -hk[1]};
-    double t3[3] = {off[0], off[1], g->h};
     for (int l = 0; l < 4; l++) {
-        const double *tt = l == 0 ? X[0] : l == 1 ? t1 : l == 2 ? t2 : t3;
-        int nt = l == 0 ? nx[0] : l == 1 ? 4 : l == 2 ? 5 : 3;
-        double v[CON_EXACT], mm[1] = {m};
-        int k = 0;
-        v[k++] = bs * g->B[l];
-        v[k++] = -bs * y0;
-        prod_terms(mm, 1, tt, nt, -bs, v, &k);
-        /* a constant bound: S − c = Σ A_l (B_l − c) >= 0 needs B_l >= c only
-         * (the data may touch it); a sloped piece: strictly above */
-        if (ts__exact_sign(v, k) < (m == 0.0 && x0 == g->xi ? 0 : 1))
+        double v[2] = {bs * g->B[l], -bs * c};
+        if (ts__exact_sign(v, 2) < 0)
             return 0;
     }
     return 1;
@@ -703,13 +689,10 @@ static void p_mul(const poly *a, const poly *b, poly *r)
             o.c[i + j] += a->c[i] * b->c[j];
     *r = o;
 }
-static void p_axpy(double s, const poly *a, poly *r) /* r += s a */
+/* r += s a, a->deg <= r->deg: every sum below adds polynomials of one
+ * degree (12, 23 or 6: p_combo and p_dtheta give degree 6) */
+static void p_axpy(double s, const poly *a, poly *r)
 {
-    if (a->deg > r->deg) {
-        for (int j = r->deg + 1; j <= a->deg; j++)
-            r->c[j] = 0.0;
-        r->deg = a->deg;
-    }
     for (int j = 0; j <= a->deg; j++)
         r->c[j] += s * a->c[j];
 }
@@ -734,9 +717,9 @@ static void p_dtheta(const poly *a, poly *r)
     for (int j = 0; j <= a->deg; j++)
         o.c[j + 1] -= 3.0 * a->c[j];
     /* a trigonometric polynomial of degree 3 times q³ has degree <= 6: the
-     * leading terms cancel exactly (rounding residue dropped) */
-    if (o.deg > 6)
-        o.deg = 6;
+     * leading terms cancel exactly (rounding residue dropped; a has
+     * degree 6, p_combo's or this function's) */
+    o.deg = 6;
     *r = o;
 }
 
@@ -755,7 +738,9 @@ static void p_combo(const double w[4], poly *r)
             r->c[j] += w[l] * PA[l][j];
 }
 
-/* Real roots of p in (lo, hi) by Bernstein subdivision; appended to t[*nt]. */
+/* Real roots of p in (lo, hi) by Bernstein subdivision; appended to t[*nt]
+ * while *nt < cap; subdivision depth and bisection steps TS_LIMIT(con_root_*)
+ * (the 62 places beyond the ends exceed the degree, at most 23). */
 static void to_bernstein(const poly *p, double lo, double hi, double *b)
 {
     /* p(lo + (hi − lo) u) in powers of u, then Bernstein on [0, 1] */
@@ -797,10 +782,10 @@ static void roots_in(const poly *p, double lo, double hi, int depth, double *t, 
     int v = sign_changes(b, p->deg);
     if (v == 0 || *nt >= cap)
         return;
-    if (v == 1 || depth > 45) {
+    if (v == 1 || depth >= TS_LIMIT(con_root_depth)) {
         double a = lo, c = hi, fa = p_eval(p, a);
         if (v == 1 && fa * p_eval(p, c) < 0.0) {
-            for (int it = 0; it < 80 && c - a > 4 * DBL_EPSILON; it++) {
+            for (int it = 0; it < TS_LIMIT(con_root_steps) && c - a > 4 * DBL_EPSILON; it++) {
                 double mid = 0.5 * (a + c), fm = p_eval(p, mid);
                 if ((fm < 0.0) == (fa < 0.0))
                     a = mid, fa = fm;
@@ -931,15 +916,16 @@ static double min_on(const target *tg, const seg_poly *s, const seg *g, double l
         D = s->Y1;
         p_axpy(-tg->m * g->h, &s->X1, &D);
     }
-    double ts[64];
+    double ts[TS_LIMIT_DEFAULT_con_root_cap];
     int nt = 0;
     ts[nt++] = lo;
     ts[nt++] = hi;
-    roots_in(&D, lo, hi, 0, ts, &nt, 64);
-    double best = HUGE_VAL;
-    for (int j = 0; j < nt; j++) {
+    roots_in(&D, lo, hi, 0, ts, &nt, TS_LIMIT(con_root_cap));
+    double best = f_at(tg, s, g, ts[0]);
+    *tmin = ts[0];
+    for (int j = 1; j < nt; j++) {
         double v = f_at(tg, s, g, ts[j]);
-        if (v < best || j == 0)
+        if (v < best)
             best = v, *tmin = ts[j];
     }
     return best;
@@ -981,16 +967,17 @@ static double con_gap(const ts_spline *sp, const ts_constraint *c, size_t i, dou
         *proven = ok;
     } else if (c->bound == TS_BOUND_CONSTANT) {
         tg.which = 2, tg.sg = bs, tg.m = 0.0, tg.x0 = g.xi, tg.y0 = c->value;
-        *proven = line_polygon(&g, g.xi, c->value, 0.0, bs);
+        *proven = const_polygon(&g, c->value, bs);
         best = want ? min_on(&tg, &s, &g, 0.0, 1.0, &tmin) : best;
     } else {
-        int ok = 1, any = 0;
-        double x1 = g.xi + g.h;
+        /* covers() holds (the callers ask for no other interval): a piece
+         * meets (x_i, x_{i+1}), since the pieces tile [px_0, px_m] */
+        int ok = 1;
+        double x1 = sp->x[i + 1];
         for (size_t p = 0; p + 1 < c->n_poly; p++) {
             double a = fmax(c->px[p], g.xi), b = fmin(c->px[p + 1], x1), tm = 0.0;
             if (!(a < b))
                 continue;
-            any = 1;
             double m = piece_slope(c, p);
             tg.which = 2, tg.sg = bs, tg.m = m, tg.x0 = c->px[p], tg.y0 = c->py[p];
             double ta = a <= g.xi ? 0.0 : t_of_x(&g, a), tb = b >= x1 ? 1.0 : t_of_x(&g, b);
@@ -1008,11 +995,6 @@ static double con_gap(const ts_spline *sp, const ts_constraint *c, size_t i, dou
             }
         }
         *proven = ok;
-        if (!any) {
-            *at = (double)NAN;
-            *proven = 1;
-            return (double)NAN;
-        }
     }
     *at = x_at(&g, tmin);
     return best;

@@ -9,8 +9,8 @@
 #include <string.h>
 
 #define EPS DBL_EPSILON /* 2u: bounds the rounding of one operation, relative */
-#define CELLS 4096      /* cells of one certificate */
-#define DEPTH 48        /* halvings of a cell in t */
+#define CELLS TS_LIMIT(bcurve_cells) /* cells of one certificate */
+#define DEPTH TS_LIMIT(bcurve_depth) /* halvings of a cell in t */
 #define TMARGIN 0x1p-40 /* t-widening of a paper / C¹ piece's range (§13.7) */
 #define SCAN 32         /* the report's scan of S' − B' per piece */
 
@@ -78,12 +78,16 @@ static void bern(const rv c[4], double t0, double t1, rv b[7])
     }
 }
 
-/* A lower bound of b/w (w > 0), each step rounded outwards. */
+/* A lower bound of b/w, each step rounded outwards; never NaN (−∞ for a
+ * NaN numerator: control values near TS_VALUE_MAX overflow the sums).  w
+ * is a Bernstein coefficient of q³ on [t0, t1] ⊂ [0, 1]: at least
+ * q³(t0) >= 1 (every coefficient of q³(t0 + (t1 − t0) u) is >= 0), its
+ * bound far below 1, so d >= 1/2. */
 static double lo_ratio(rv b, rv w)
 {
     double n = nextafter(b.v - b.r, -HUGE_VAL);
     double d = n >= 0.0 ? nextafter(w.v + w.r, HUGE_VAL) : nextafter(w.v - w.r, -HUGE_VAL);
-    if (!(d > 0.0) || isnan(n))
+    if (isnan(n))
         return -HUGE_VAL;
     return nextafter(n / d, -HUGE_VAL);
 }
@@ -105,8 +109,6 @@ static void hull(const rv c[4], double t0, double t1, double *lo, double *hi)
         *lo = l < *lo ? l : *lo;
         *hi = u > *hi ? u : *hi;
     }
-    if (isnan(*lo) || isnan(*hi))
-        *lo = -HUGE_VAL, *hi = HUGE_VAL;
 }
 
 /* Control values of interval i of any spline: Y and, geometric form, X̂ =
@@ -182,11 +184,12 @@ static double t_of(double th)
 }
 
 /* [*t0, *t1]: every parameter of interval j of b whose x lies in [xa, xb]
- * (xa <= xb); 0 when the interval does not meet [xa, xb]. */
+ * (xa <= xb, x_j <= xb: the callers' loops); 0 when the interval ends
+ * before xa. */
 static int b_trange(const ts_spline *b, size_t j, double xa, double xb, double *t0, double *t1)
 {
     double xj = b->x[j], xk = b->x[j + 1];
-    if (xb < xj || xa > xk)
+    if (xa > xk)
         return 0;
     if (geo(b)) {
         *t0 = xa <= xj ? 0.0 : geo_t(b, j, xa, -1);
@@ -198,8 +201,8 @@ static int b_trange(const ts_spline *b, size_t j, double xa, double xb, double *
         *t0 = xa <= xj ? 0.0 : fmax(0.0, t_of(TS_HALF_PI * ((xa - xj) / h)) - TMARGIN);
         *t1 = xb >= xk ? 1.0 : fmin(1.0, t_of(TS_HALF_PI * ((xb - xj) / h)) + TMARGIN);
     }
-    if (*t1 < *t0) /* cannot happen for xa <= xb; kept safe */
-        *t0 = 0.0, *t1 = 1.0;
+    /* t0 <= t1 for xa <= xb: geo_t's bisections are monotone in x (lo
+     * of xa <= hi of xb), and sin/(1 + cos) within 2 TMARGIN of monotone */
     return 1;
 }
 
@@ -270,8 +273,8 @@ static double gap_t(const ts_spline *sp, size_t i, const ts_spline *b, double sg
 
 int ts__bcurve_certify(const ts_spline *sp, size_t i, const ts_spline *b, double sg)
 {
-    double st0[DEPTH + 2], st1[DEPTH + 2];
-    int sd[DEPTH + 2], top = 0, cells = 0;
+    double st0[TS_LIMIT_DEFAULT_bcurve_depth + 2], st1[TS_LIMIT_DEFAULT_bcurve_depth + 2];
+    int sd[TS_LIMIT_DEFAULT_bcurve_depth + 2], top = 0, cells = 0;
     rv Y[4];
     y_ctl(sp, i, Y);
     st0[0] = 0.0, st1[0] = 1.0, sd[0] = 0, top = 1;
@@ -343,8 +346,8 @@ static int scan_points(const ts_spline *sp, size_t i, const ts_spline *b, size_t
             if (u0 < c[l] && c[l] < u1)
                 xs[m++] = c[l];
     }
-    for (int k = 1; k < m; k++) /* insertion sort */
-        for (int l = k; l > 0 && xs[l - 1] > xs[l]; l--) {
+    for (int k = 2; k < m; k++) /* insertion sort; xs[0] = u0 is the least */
+        for (int l = k; l > 1 && xs[l - 1] > xs[l]; l--) {
             double v = xs[l];
             xs[l] = xs[l - 1];
             xs[l - 1] = v;
@@ -354,11 +357,10 @@ static int scan_points(const ts_spline *sp, size_t i, const ts_spline *b, size_t
 
 double ts__bcurve_gap(const ts_spline *sp, size_t i, const ts_spline *b, double sg, double *at)
 {
+    /* a < e: the report asks for intervals that B overlaps (covers()) */
     double a = fmax(sp->x[i], b->x[0]), e = fmin(sp->x[i + 1], b->x[b->n]);
     double best = (double)NAN;
     *at = (double)NAN;
-    if (!(a < e))
-        return best;
     for (size_t j = locate(b, a); j < b->n && b->x[j] < e; j++) {
         double u0 = fmax(a, b->x[j]), u1 = fmin(e, b->x[j + 1]);
         double xs[2 * SCAN + 2], gs[2 * SCAN + 2][2];
@@ -373,7 +375,8 @@ double ts__bcurve_gap(const ts_spline *sp, size_t i, const ts_spline *b, double 
             if (!(gs[k][1] < 0.0 && gs[k + 1][1] >= 0.0))
                 continue;
             double lo = xs[k], hi = xs[k + 1], g[2];
-            for (int it = 0; it < 60 && lo < hi; it++) {
+            /* lo < hi: equal scan points have equal derivatives */
+            for (int it = 0; it < TS_LIMIT(bcurve_gap_steps); it++) {
                 double mid = 0.5 * (lo + hi);
                 if (mid <= lo || mid >= hi)
                     break;

@@ -203,6 +203,12 @@ extern long ts__test_fail_alloc;
 #define TS_LIMIT_DEFAULT_solve_depth 52           /* solve.c, subdivision depth */
 #define TS_LIMIT_DEFAULT_integral_steps 1152      /* eval.c, the integral's scale search */
 #define TS_LIMIT_DEFAULT_con_doublings 60         /* constrain.c, doublings of a_i */
+#define TS_LIMIT_DEFAULT_con_root_cap 64          /* constrain.c, candidates per minimum (ends + roots) */
+#define TS_LIMIT_DEFAULT_con_root_depth 46        /* constrain.c, root isolation's subdivision depth */
+#define TS_LIMIT_DEFAULT_con_root_steps 80        /* constrain.c, a root's bisection steps */
+#define TS_LIMIT_DEFAULT_bcurve_cells 4096        /* constrain_spline.c, cells of a certificate */
+#define TS_LIMIT_DEFAULT_bcurve_depth 48          /* constrain_spline.c, halvings of a cell */
+#define TS_LIMIT_DEFAULT_bcurve_gap_steps 60      /* constrain_spline.c, the report's bisection steps */
 #ifdef TS_TEST_HOOKS
 typedef struct ts__limits {
     int curve_len_depth, curve_len_pieces;
@@ -216,6 +222,8 @@ typedef struct ts__limits {
     int solve_depth;
     int integral_steps;
     int con_doublings;
+    int con_root_cap, con_root_depth, con_root_steps;
+    int bcurve_cells, bcurve_depth, bcurve_gap_steps;
 } ts__limits;
 #define TS_LIMITS_DEFAULT                                                                        \
     {TS_LIMIT_DEFAULT_curve_len_depth, TS_LIMIT_DEFAULT_curve_len_pieces,                        \
@@ -224,7 +232,10 @@ typedef struct ts__limits {
      TS_LIMIT_DEFAULT_trigmin_steps, TS_LIMIT_DEFAULT_trigmin_depth,                             \
      TS_LIMIT_DEFAULT_surface_cert_depth, TS_LIMIT_DEFAULT_surface_cert_nodes,                   \
      TS_LIMIT_DEFAULT_solve_cap, TS_LIMIT_DEFAULT_solve_depth, TS_LIMIT_DEFAULT_integral_steps,  \
-     TS_LIMIT_DEFAULT_con_doublings}
+     TS_LIMIT_DEFAULT_con_doublings, TS_LIMIT_DEFAULT_con_root_cap,                              \
+     TS_LIMIT_DEFAULT_con_root_depth, TS_LIMIT_DEFAULT_con_root_steps,                           \
+     TS_LIMIT_DEFAULT_bcurve_cells, TS_LIMIT_DEFAULT_bcurve_depth,                               \
+     TS_LIMIT_DEFAULT_bcurve_gap_steps}
 extern ts__limits ts__test_limits;
 #define TS_LIMIT(name) (ts__test_limits.name)
 #else
@@ -967,7 +978,7 @@ int ts__bcurve_range(const ts_spline *b, double xa, double xb, double *lo, doubl
  * is defined), by subdivision and rigorous hulls: 1; 0 not proved. */
 int ts__bcurve_certify(const ts_spline *sp, size_t i, const ts_spline *b, double sg);
 /* The minimum of sg (S − B) over interval i where B is defined, *at its x;
- * NaN (and *at) when B does not cover an open part of it. */
+ * B must overlap the interval (x_0 of b < x_{i+1}, x_i < x_m of b). */
 double ts__bcurve_gap(const ts_spline *sp, size_t i, const ts_spline *b, double sg, double *at);
 /* Doubles of a copy of b (knots, values, slopes, widths, controls, κ);
  * ts__bcurve_copy fills dst (zeroed first) with arrays in q. */

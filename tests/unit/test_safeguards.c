@@ -498,6 +498,143 @@ static void con_doublings_limit(void)
     printf("constraint doublings limit: %d of 60 differ, %d built\n", differ, built);
 }
 
+/* ---- the constraint scheme's minima and bound-spline certificates --------- */
+
+/* Four records on random data (convex data for the convex one): reports of
+ * the spline built under the default limits, again under a lowered limit
+ * of the minimum's root isolation (candidates: the ends only; no
+ * subdivision; no bisection steps).  A lowered minimum is a least value
+ * over fewer or coarser candidates, each a value of the gap: never below
+ * the default one beyond the evaluation's rounding (1e-12 of the scale);
+ * some differ (the limit was reached). */
+static void con_root_limits(void)
+{
+    TH_CASE("constraint minimum limits");
+    uint64_t st = 0x13198A2E03707344u;
+    int differ = 0;
+    for (int p = 0; p < 40; p++) {
+        double x[6], f[6], px[3] = {-1.0, 2.5, 6.0}, py[3];
+        for (int j = 0; j < 6; j++) {
+            st ^= st << 13, st ^= st >> 7, st ^= st << 17;
+            x[j] = j + 0.5 * (double)(st >> 11) * 0x1p-53;
+            f[j] = p % 4 == 0 ? x[j] * x[j] : 3.0 * (double)(st >> 11) * 0x1p-53;
+        }
+        py[0] = py[2] = -1.0, py[1] = -0.2;
+        ts_constraint c;
+        ts_constraint_init(&c, p % 4 == 0   ? TS_CONSTRAINT_CONVEX
+                               : p % 4 == 1 ? TS_CONSTRAINT_SLOPE_ABS
+                               : p % 4 == 2 ? TS_CONSTRAINT_UPPER
+                                            : TS_CONSTRAINT_LOWER);
+        c.value = p % 4 == 1 ? 50.0 : 3.5;
+        if (p % 4 == 3)
+            c.bound = TS_BOUND_POLYLINE, c.px = px, c.py = py, c.n_poly = 3;
+        ts_spline_options o;
+        ts_spline_options_init(&o);
+        o.constraints = &c;
+        o.n_constraints = 1;
+        ts_spline *s = NULL;
+        reset();
+        if (ts_spline_new(x, f, 6, &o, &s, NULL) != TS_OK)
+            continue;
+        for (size_t i = 0; i < 5; i++) {
+            ts_constraint_report r0, r;
+            ts_constraint_report_init(&r0);
+            CHECK(ts_spline_constraint_report(s, 0, i, &r0) == TS_OK && r0.certified == 1);
+            for (int lim = 0; lim < 3; lim++) {
+                reset();
+                if (lim == 0)
+                    ts__test_limits.con_root_cap = 2;
+                else if (lim == 1)
+                    ts__test_limits.con_root_depth = 0;
+                else
+                    ts__test_limits.con_root_steps = 0;
+                ts_constraint_report_init(&r);
+                CHECK(ts_spline_constraint_report(s, 0, i, &r) == TS_OK);
+                reset();
+                CHECKF(r.gap >= r0.gap - 1e-12 * (1.0 + fabs(r0.gap)), "%d: %.17g < %.17g", lim,
+                       r.gap, r0.gap);
+                differ += r.gap != r0.gap;
+            }
+        }
+        ts_spline_free(s);
+    }
+    CHECKF(differ > 0, "%d", differ);
+    printf("constraint minimum limits: %d minima differ\n", differ);
+}
+
+/* A lower bound spline B (geometric, through points of 0.4 sin) under
+ * random data 0.01 to 0.06 above it: built with the certificate's cells or depth
+ * lowered to 1 and 0, each fit is certified under the default limits or
+ * refused with the documented TS_ERR_UNPROVEN, and some are refused (the
+ * limit was reached).  The report's bisection without steps keeps its
+ * scan points' least value: never below the default one (1e-12). */
+static void bcurve_limits(void)
+{
+    TH_CASE("bound spline limits");
+    double bx[9], by[9];
+    for (int j = 0; j < 9; j++)
+        bx[j] = 0.5 * j, by[j] = 0.4 * sin(1.3 * bx[j]);
+    ts_spline_options ob;
+    ts_spline_options_init(&ob);
+    ts_spline *b = NULL;
+    CHECK(ts_spline_new(bx, by, 9, &ob, &b, NULL) == TS_OK);
+    uint64_t st = 0xA4093822299F31D0u;
+    int refused = 0, built = 0, differ = 0;
+    for (int p = 0; p < 30 && b; p++) {
+        double x[5], f[5];
+        for (int j = 0; j < 5; j++) {
+            st ^= st << 13, st ^= st >> 7, st ^= st << 17;
+            x[j] = j;
+            f[j] = 0.4 * sin(1.3 * x[j]) + 0.01 + 0.05 * (double)(st >> 11) * 0x1p-53;
+        }
+        ts_constraint c;
+        ts_constraint_init(&c, TS_CONSTRAINT_LOWER);
+        c.bound = TS_BOUND_SPLINE, c.spline = b;
+        ts_spline_options o;
+        ts_spline_options_init(&o);
+        o.constraints = &c;
+        o.n_constraints = 1;
+        for (int lim = 0; lim < 2; lim++) {
+            ts_spline *s = NULL;
+            reset();
+            if (lim == 0)
+                ts__test_limits.bcurve_cells = 1;
+            else
+                ts__test_limits.bcurve_depth = 0;
+            ts_status r = ts_spline_new(x, f, 5, &o, &s, NULL);
+            reset();
+            CHECKF(r == TS_OK || r == TS_ERR_UNPROVEN, "%s", ts_status_name(r));
+            refused += r == TS_ERR_UNPROVEN;
+            built += r == TS_OK;
+            for (size_t i = 0; s && i < 4; i++) {
+                ts_constraint_report rp;
+                ts_constraint_report_init(&rp);
+                CHECK(ts_spline_constraint_report(s, 0, i, &rp) == TS_OK && rp.certified == 1);
+            }
+            ts_spline_free(s);
+        }
+        ts_spline *s = NULL;
+        if (ts_spline_new(x, f, 5, &o, &s, NULL) != TS_OK)
+            continue;
+        for (size_t i = 0; i < 4; i++) {
+            ts_constraint_report r0, r1;
+            ts_constraint_report_init(&r0);
+            ts_constraint_report_init(&r1);
+            CHECK(ts_spline_constraint_report(s, 0, i, &r0) == TS_OK);
+            ts__test_limits.bcurve_gap_steps = 0;
+            CHECK(ts_spline_constraint_report(s, 0, i, &r1) == TS_OK);
+            reset();
+            CHECKF(r1.gap >= r0.gap - 1e-12 * (1.0 + fabs(r0.gap)), "%.17g < %.17g", r1.gap,
+                   r0.gap);
+            differ += r1.gap != r0.gap;
+        }
+        ts_spline_free(s);
+    }
+    ts_spline_free(b);
+    CHECKF(refused > 0 && differ > 0, "%d refused, %d built, %d differ", refused, built, differ);
+    printf("bound spline limits: %d refused, %d built, %d minima differ\n", refused, built, differ);
+}
+
 int main(void)
 {
     curve_length();
@@ -508,6 +645,8 @@ int main(void)
     integral_limit();
     short_piece_end();
     con_doublings_limit();
+    con_root_limits();
+    bcurve_limits();
     reset();
     return th_report("test_safeguards");
 }
