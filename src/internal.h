@@ -230,6 +230,9 @@ extern ts__limits ts__test_limits;
 #endif
 void *ts__malloc(size_t bytes);
 void *ts__calloc(size_t count, size_t size);
+/* An array of count elements of size bytes (size > 0): NULL also when
+ * count * size overflows (the n·sizeof check of caller-given counts). */
+void *ts__malloc_n(size_t count, size_t size);
 /* A large block (the spline's arrays); freed with free(). */
 void *ts__alloc_block(size_t bytes);
 /* |x1 − x0 − h| for h = fl(x1 − x0): the TwoSum error, exact (0 where the
