@@ -163,6 +163,20 @@ static void spline_repair(void)
             refused[4] += build_check(x, f, NP, fm, &ln, 1e-300, &certified[4]) != TS_OK;
         }
     }
+    /* the same with data farther from the line (gaps 0.01 or 0.1 .. 3), which
+     * the uniform family certifies at its first A = 64: a_j = 64 for every
+     * j, beta_j = 0 where alpha_j = 64 (the margin is below ulp(64)) */
+    for (int p = 0; p < 120; p++) {
+        random_above(x, f, NP, &ln, 1e-2);
+        double al[NP - 1];
+        for (size_t k = 0; k + 1 < NP; k++)
+            al[k] = k == (size_t)p % (NP - 1) ? 64.0 : 1.0;
+        reset();
+        ts__test_limits.repair_budget_per = 0;
+        ts__test_limits.repair_budget_base = 0;
+        alphas_of_next = al;
+        refused[4] += build_check(x, f, NP, TS_FORM_C1, &ln, 1e-300, &certified[4]) != TS_OK;
+    }
     /* more intervals than one block of the exact paper form's batch
      * certificate (TS_CERT_BLOCK = 256, repair.c) left by the control-value
      * proof: the default limits, the same checks */
