@@ -531,10 +531,10 @@ size_t ts__skip_proven(const ts_spline *sp, size_t i, size_t i1)
             return i;
         return skip_geo(sp, i, i1, positive ? 0 : sp->shape == TS_SHAPE_MONOTONE ? 1 : 2);
     }
-    if ((sp->has_lower | sp->has_upper) && !positive && sp->form != TS_FORM_GEOMETRIC) {
+    /* the paper and C¹ forms from here (the geometric form returned above) */
+    if ((sp->has_lower | sp->has_upper) && !positive)
         return skip_lines(sp, i, i1);
-    }
-    if (!(positive || (sp->shape == TS_SHAPE_MONOTONE && sp->form != TS_FORM_GEOMETRIC)))
+    if (!(positive || sp->shape == TS_SHAPE_MONOTONE))
         return i;
     if (positive && all_proven_positive(sp->f, sp->b1, sp->b2, i, i1)) /* i < i1 */
         return i1;

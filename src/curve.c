@@ -728,13 +728,28 @@ static const double gl_w[5] = {0.295524224714752870174, 0.269266719309996355091,
                                0.219086362515982043996, 0.149451349150580593146,
                                0.0666713443086881375936};
 
-/* |dP/dθ| of segment i at θ, times 2^-e (control points scaled exactly by
- * 2^-e <= 1/max|ctrl|, so differences and sums cannot overflow). */
+/* Control values B of coordinate k on segment i; 1 when they are not all
+ * equal (a constant coordinate adds nothing to the speed), *bmax = max|B|. */
+static int coord_moves(const ts_curve *c, size_t i, size_t k, double B[4], double *bmax)
+{
+    ctrl_coord(c, i, k, B);
+    double lo = fmin(fmin(B[0], B[1]), fmin(B[2], B[3]));
+    double hi = fmax(fmax(B[0], B[1]), fmax(B[2], B[3]));
+    *bmax = fmax(-lo, hi);
+    return lo != hi;
+}
+
+/* |dP/dθ| of segment i at θ, times 2^-e (the moving coordinates' control
+ * values scaled exactly by 2^-e <= 1/max|B|, so differences and sums cannot
+ * overflow; a constant coordinate, perhaps far larger, is left out). */
 static double seg_speed(const ts_curve *c, size_t i, double theta, int e)
 {
-    double s = sin(theta), co = cos(theta), v[3], B[4], o[3];
+    double s = sin(theta), co = cos(theta), v[3], B[4], o[3], bmax;
     for (size_t k = 0; k < c->dim; k++) {
-        ctrl_coord(c, i, k, B);
+        if (!coord_moves(c, i, k, B, &bmax)) {
+            v[k] = 0.0;
+            continue;
+        }
         for (int l = 0; l < 4; l++)
             B[l] = ldexp(B[l], -e);
         ts__seg_sc(B, s, co, 1, o);
@@ -769,9 +784,12 @@ ts_status ts_curve_length(const ts_curve *c, double tol, double *len)
     for (size_t i = 0; i < c->n; i++) {
         struct { double a, b, I; int depth; } stk[LEN_DEPTH + 2];
         int sp = 0, pieces = 0, e = 0;
-        double cmax = 0.0;
-        for (size_t j = 0; j < 4 * c->dim; j++)
-            cmax = fmax(cmax, fabs(c->ctrl[i * 4 * c->dim + j]));
+        /* the scale of the moving coordinates: a constant one of 1e300 next
+         * to one moving by 1e-310 would flush the latter's speed to 0 */
+        double cmax = 0.0, B[4], bmax;
+        for (size_t k = 0; k < c->dim; k++)
+            if (coord_moves(c, i, k, B, &bmax))
+                cmax = fmax(cmax, bmax);
         (void)frexp(cmax, &e); /* cmax > 0: a segment joins two distinct points */
         double whole = gl_seg(c, i, 0.0, TS_HALF_PI, e), seg = 0.0;
         stk[sp].a = 0.0;

@@ -153,22 +153,20 @@ static double per_interval(const double *arr, size_t n_arr, double scalar, size_
     return arr && i < n_arr ? arr[i] : scalar;
 }
 
-/* TS_ERR_CONDITION: which record and which necessary condition
- * (docs/method.md §13.1), found again by the data checks alone. */
-static int condition_sentence(out *o, const data *d, const ts_error *e)
+/* The sentence of the failure record fl of the data checks (docs/method.md
+ * §13.1): which record and which necessary condition; 0 when fl names
+ * nothing these data and records have (another condition, an index or a
+ * record outside them, a touched breakpoint that is not an inner one). */
+static int failure_sentence(out *o, const data *d, const ts_constraint_failure *fl)
 {
     const ts_spline_options *opt = d->opt;
-    size_t i = e->index, n = d->n;
-    if (!opt->constraints || !opt->n_constraints || n < 2 || !d->c->x || !d->c->f)
+    size_t i = fl->index, n = d->n;
+    if (!(fl->constraint < opt->n_constraints && i < n) ||
+        ts__con_validate(opt, n - 1, NULL, NULL) != TS_OK) /* then opt->constraints != NULL */
         return 0;
-    ts_constraint_failure fl;
-    memset(&fl, 0, sizeof fl);
-    if (ts__con_conditions(d->c->x, d->c->f, n - 1, opt, &fl) != TS_ERR_CONDITION ||
-        fl.index != i || fl.constraint >= opt->n_constraints)
-        return 0;
-    const ts_constraint *c = &opt->constraints[fl.constraint];
+    const ts_constraint *c = &opt->constraints[fl->constraint];
     const char *kind = ts__vocab_name(TS_VOCAB_CONSTRAINT, (int)c->kind);
-    switch (fl.condition) {
+    switch (fl->condition) {
     case TS_CONDITION_CONVEX_DATA:
     case TS_CONDITION_CONCAVE_DATA:
         if (!(i > 0 && i + 1 < n))
@@ -189,6 +187,9 @@ static int condition_sentence(out *o, const data *d, const ts_error *e)
         break;
     case TS_CONDITION_TOUCH_CORNER: {
         size_t p = 1;
+        int bounded = c->kind == TS_CONSTRAINT_LOWER || c->kind == TS_CONSTRAINT_UPPER;
+        if (!(bounded && c->bound == TS_BOUND_POLYLINE)) /* validated: px, py, n_poly >= 2 */
+            return 0;
         while (p + 1 < c->n_poly && c->px[p] != d->c->x[i])
             p++;
         if (!(p + 1 < c->n_poly))
@@ -216,8 +217,24 @@ static int condition_sentence(out *o, const data *d, const ts_error *e)
     default:
         return 0;
     }
-    put(o, " (constraint %zu, %s)", fl.constraint, kind);
+    put(o, " (constraint %zu, %s)", fl->constraint, kind);
     return 1;
+}
+
+/* TS_ERR_CONDITION: the record and condition found again by the data
+ * checks alone, when they name the same index as e. */
+static int condition_sentence(out *o, const data *d, const ts_error *e)
+{
+    const ts_spline_options *opt = d->opt;
+    /* d->n is 0 unless x and f are given */
+    if (!opt->constraints || !opt->n_constraints || d->n < 2)
+        return 0;
+    ts_constraint_failure fl;
+    memset(&fl, 0, sizeof fl);
+    if (ts__con_conditions(d->c->x, d->c->f, d->n - 1, opt, &fl) != TS_ERR_CONDITION ||
+        fl.index != e->index)
+        return 0;
+    return failure_sentence(o, d, &fl);
 }
 
 /* The sentence of a spline failure; 0 when the generic form applies. */
@@ -793,8 +810,8 @@ static int histo_sentence(out *o, const ts_error_context *c, const ts_error *e)
             (e->status == TS_ERR_INFEASIBLE && !opt))
             return 0;
         double m = c->f[i] / (c->x[i + 1] - c->x[i]);
-        int pair = e->status == TS_ERR_INFEASIBLE && opt && opt->lo <= m && m <= opt->hi &&
-                   i + 1 < nb;
+        /* TS_ERR_INFEASIBLE: opt != NULL (returned above otherwise) */
+        int pair = e->status == TS_ERR_INFEASIBLE && opt->lo <= m && m <= opt->hi && i + 1 < nb;
         bin_text(o, c, i);
         if (!pair) {
             put(o, ": total ");
@@ -900,3 +917,16 @@ size_t ts_error_message(const ts_error *err, const ts_error_context *ctx, char *
         put(&o, " (error context of another version ignored)");
     return o.need;
 }
+
+#ifdef TS_TEST_HOOKS
+/* internal.h: the sentence of a failure record, for records the data
+ * checks do not produce (tests/unit/test_error_message.c). */
+size_t ts__failure_message(const ts_constraint_failure *fl, const ts_error_context *ctx, char *buf,
+                           size_t len)
+{
+    out o = {buf, len, 0};
+    buf[0] = '\0';
+    data d = {ctx, ctx->spline_options, ctx->n_points, ctx->first_index};
+    return failure_sentence(&o, &d, fl) ? o.need : 0;
+}
+#endif

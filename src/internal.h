@@ -243,6 +243,9 @@ extern ts__limits ts__test_limits;
 #endif
 void *ts__malloc(size_t bytes);
 void *ts__calloc(size_t count, size_t size);
+/* An array of count elements of size bytes (size > 0): NULL also when
+ * count * size overflows (the n·sizeof check of caller-given counts). */
+void *ts__malloc_n(size_t count, size_t size);
 /* A large block (the spline's arrays); freed with free(). */
 void *ts__alloc_block(size_t bytes);
 /* |x1 − x0 − h| for h = fl(x1 − x0): the TwoSum error, exact (0 where the
@@ -1065,6 +1068,14 @@ ts_status ts__con_prepare(const double *x, const double *f, size_t n, const ts_s
  * the sentence of TS_ERR_CONDITION (errmsg.c). */
 ts_status ts__con_conditions(const double *x, const double *f, size_t n,
                              const ts_spline_options *o, ts_constraint_failure *fail);
+#ifdef TS_TEST_HOOKS
+/* errmsg.c: the sentence ts_error_message gives for the failure record fl
+ * of the data checks, for any record (tests): ctx with x, f, n_points and
+ * spline_options set, len > 0; 0 (buf "") when fl names nothing those
+ * data and validated records have, else the sentence's length. */
+size_t ts__failure_message(const ts_constraint_failure *fl, const ts_error_context *ctx, char *buf,
+                           size_t len);
+#endif
 /* beta[0..n) from the closed-form requirements; bind[i] the record that set it. */
 void ts__con_betas(const double *x, const double *f, size_t n, const ts_spline_options *o,
                    const double *d, double *beta, int *bind);

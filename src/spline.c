@@ -304,17 +304,16 @@ static ts_status con_begin(const double *x, const double *f, size_t np, const ts
     for (size_t i = 0; i < n; i++)
         if (!ts__margin_ok(o->margins ? o->margins[i] : o->margin))
             return ts__fail(err, TS_ERR_MARGIN, i, TS_WHERE_INTERVAL);
-    size_t bd, bi;
-    if (!mul_ok(np, sizeof(double), &bd) || !mul_ok(np, sizeof(int), &bi))
-        return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
-    p->d = ts__malloc(bd);
-    p->beta = ts__malloc(bd);
-    p->by = ts__malloc(bi);
-    p->bind = ts__malloc(bi);
+    /* np·sizeof cannot overflow here (spline_new checked 3 np doubles);
+     * ts__malloc_n checks it anyway */
+    p->d = ts__malloc_n(np, sizeof *p->d);
+    p->beta = ts__malloc_n(np, sizeof *p->beta);
+    p->by = ts__malloc_n(np, sizeof *p->by);
+    p->bind = ts__malloc_n(np, sizeof *p->bind);
     if (!p->d || !p->beta || !p->by || !p->bind)
         return ts__fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
     if (o->slopes == TS_SLOPES_USER)
-        memcpy(p->d, o->user_slopes, bd);
+        memcpy(p->d, o->user_slopes, np * sizeof *p->d);
     else
         ts__slopes_range(o->slopes, x, f, np, p->d, 0, np);
     for (size_t j = 0; j < np; j++)
@@ -335,6 +334,15 @@ static ts_status con_begin(const double *x, const double *f, size_t np, const ts
     return TS_OK;
 }
 
+/* The bound a record's copy keeps: LOWER and UPPER records' own (validated:
+ * a polyline has px, py, a spline bound its spline); other kinds ignore the
+ * bound fields (include/trigspline.h), whatever the caller left in them. */
+static ts_bound kept_bound(const ts_constraint *c)
+{
+    int bounded = c->kind == TS_CONSTRAINT_LOWER || c->kind == TS_CONSTRAINT_UPPER;
+    return bounded ? c->bound : TS_BOUND_CONSTANT;
+}
+
 /* After build: certify and repair, the integrals again, and the records
  * copied into the spline (which owns them). */
 static ts_status con_finish(ts_spline *sp, const ts_spline_options *o, con_prep *p, ts_error *err,
@@ -344,25 +352,23 @@ static ts_status con_finish(ts_spline *sp, const ts_spline_options *o, con_prep 
     if (st != TS_OK)
         return st;
     (void)cumulate(sp, 0, sp->n, 0.0);
-    size_t nc = o->n_constraints, npts = 0, bytes, bp, bs;
+    size_t nc = o->n_constraints, npts = 0;
     for (size_t k = 0; k < nc; k++)
-        if (o->constraints[k].bound == TS_BOUND_POLYLINE)
+        if (kept_bound(&o->constraints[k]) == TS_BOUND_POLYLINE)
             npts += 2 * o->constraints[k].n_poly; /* each <= the caller's arrays: no overflow */
-        else if (o->constraints[k].bound == TS_BOUND_SPLINE && o->constraints[k].spline)
+        else if (kept_bound(&o->constraints[k]) == TS_BOUND_SPLINE)
             npts += ts__bcurve_doubles(o->constraints[k].spline); /* <= its arrays */
-    if (!mul_ok(nc, sizeof(ts_constraint), &bytes) || !mul_ok(npts ? npts : 1, sizeof(double), &bp) ||
-        !mul_ok(nc, sizeof(ts_spline), &bs))
-        return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
-    sp->con = ts__malloc(bytes);
-    sp->con_pts = ts__malloc(bp);
-    sp->con_spl = ts__malloc(bs);
+    sp->con = ts__malloc_n(nc, sizeof *sp->con);
+    sp->con_pts = ts__malloc_n(npts ? npts : 1, sizeof *sp->con_pts);
+    sp->con_spl = ts__malloc_n(nc, sizeof *sp->con_spl);
     if (!sp->con || !sp->con_pts || !sp->con_spl)
         return ts__fail(err, TS_ERR_NOMEM, TS_NO_INDEX, TS_WHERE_NONE);
-    memcpy(sp->con, o->constraints, bytes);
+    memcpy(sp->con, o->constraints, nc * sizeof *sp->con);
     double *q = sp->con_pts;
     for (size_t k = 0; k < nc; k++) {
         ts_constraint *c = &sp->con[k];
-        if (c->bound == TS_BOUND_SPLINE && c->spline) {
+        ts_bound b = kept_bound(c);
+        if (b == TS_BOUND_SPLINE) {
             /* the fitted spline keeps its own copy of B (docs/method.md §13.7) */
             ts__bcurve_copy(c->spline, &sp->con_spl[k], q);
             q += ts__bcurve_doubles(c->spline);
@@ -370,7 +376,7 @@ static ts_status con_finish(ts_spline *sp, const ts_spline_options *o, con_prep 
         } else {
             c->spline = NULL;
         }
-        if (c->bound != TS_BOUND_POLYLINE) {
+        if (b != TS_BOUND_POLYLINE) {
             c->px = c->py = NULL;
             continue;
         }

@@ -92,6 +92,11 @@ void *ts__malloc(size_t bytes)
     return alloc_should_fail() ? NULL : malloc(bytes);
 }
 
+void *ts__malloc_n(size_t count, size_t size)
+{
+    return count > SIZE_MAX / size ? NULL : ts__malloc(count * size);
+}
+
 void *ts__calloc(size_t count, size_t size)
 {
     return alloc_should_fail() ? NULL : calloc(count, size);

@@ -8,6 +8,7 @@
 
 #include <math.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <string.h>
 
 static const double X5[5] = {0, 1, 2.5, 3, 4.75};
@@ -365,6 +366,30 @@ static void test_overflow(void)
         CHECKF(st == TS_ERR_OVERFLOW && s == NULL && err.status == TS_ERR_OVERFLOW, "n_points %zu: %d", sizes[k],
                (int)st);
     }
+    /* each later step of the layout's count (spline.c: 3 arrays of n + 1,
+     * per-interval arrays, then n/8 + 1 running integrals, TS_CUM_STEP = 8)
+     * overflowing while the earlier ones fit: the paper form's 4 arrays of
+     * n when 3 (n + 1) fits; the geometric form's 3 (n + 1) + 3 n = 6 n + 3
+     * fits but the integrals do not */
+    ts_spline_options paper;
+    ts_spline_options_init(&paper);
+    paper.form = TS_FORM_PAPER;
+    size_t n6 = (SIZE_MAX - 3) / 6; /* 6 n6 + 3 <= SIZE_MAX < 6 n6 + 3 + n6/8 + 1 */
+    size_t later[2] = {SIZE_MAX / 3, n6 + 1};
+    const ts_spline_options *lopt[2] = {&paper, NULL};
+    for (int k = 0; k < 2; k++) {
+        ts_spline *s = (ts_spline *)(uintptr_t)1;
+        ts_error err;
+        ts_status st = ts_spline_new(two, two, later[k], lopt[k], &s, &err);
+        CHECKF(st == TS_ERR_OVERFLOW && s == NULL && err.status == TS_ERR_OVERFLOW,
+               "n_points %zu: %d", later[k], (int)st);
+    }
+    /* the allocation helper's own n·sizeof check (internal.h) */
+    CHECK(ts__malloc_n(SIZE_MAX / 8 + 1, 8) == NULL);
+    CHECK(ts__malloc_n(SIZE_MAX, 2) == NULL);
+    double *three = ts__malloc_n(3, sizeof *three);
+    CHECK(three != NULL);
+    free(three);
 }
 
 /* TS_ERR_NOMEM: the library's test hook (internal.h) makes the k-th

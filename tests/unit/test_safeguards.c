@@ -163,28 +163,50 @@ static void spline_repair(void)
             refused[4] += build_check(x, f, NP, fm, &ln, 1e-300, &certified[4]) != TS_OK;
         }
     }
+    /* the same with data farther from the line (gaps 0.01 or 0.1 .. 3), which
+     * the uniform family certifies at its first A = 64: a_j = 64 for every
+     * j, beta_j = 0 where alpha_j = 64 (the margin is below ulp(64)) */
+    for (int p = 0; p < 120; p++) {
+        random_above(x, f, NP, &ln, 1e-2);
+        double al[NP - 1];
+        for (size_t k = 0; k + 1 < NP; k++)
+            al[k] = k == (size_t)p % (NP - 1) ? 64.0 : 1.0;
+        reset();
+        ts__test_limits.repair_budget_per = 0;
+        ts__test_limits.repair_budget_base = 0;
+        alphas_of_next = al;
+        refused[4] += build_check(x, f, NP, TS_FORM_C1, &ln, 1e-300, &certified[4]) != TS_OK;
+    }
     /* more intervals than one block of the exact paper form's batch
-     * certificate (TS_CERT_BLOCK = 256, repair.c), with a repair before the
-     * last block: the default limits, the same checks */
+     * certificate (TS_CERT_BLOCK = 256, repair.c) left by the control-value
+     * proof: the default limits, the same checks */
     enum { NB = 700 };
     static double xb[NB], fb[NB];
-    ts_line zero = {0.0, 0.0};
     for (int p = 0; p < 4; p++) {
+        /* unit steps, values 1 .. 2 and 1e-30 .. 2e-30 in turn above y = 0:
+         * the low points' control values are within the bound's rounding
+         * guard of the line, so the control-value proof leaves them to the
+         * exact batch from the first interval on */
+        ts_line lb = {0.0, 0.0};
         for (size_t k = 0; k < NB; k++) {
             xb[k] = (double)k;
-            fb[k] = th_rng_logu(&rng, 1e-4, 1.0); /* positive data, steep steps */
+            fb[k] = k % 2 ? th_rng_logu(&rng, 1.0, 2.0) : 1e-30 * th_rng_logu(&rng, 1.0, 2.0);
         }
         ts_spline_options o;
-        th_options_paper(&o);
-        o.shape = TS_SHAPE_POSITIVE;
+        ts_spline_options_init(&o);
+        o.form = TS_FORM_PAPER;
+        o.shape = TS_SHAPE_ABOVE; /* a line: the exact certificate */
+        o.lower = lb;
         ts_spline *s = NULL;
         ts_error e;
         reset();
         ts_status st = ts_spline_new(xb, fb, NB, &o, &s, &e);
         CHECKF(st == TS_OK, "%s", ts_strerror(st));
         if (st == TS_OK) {
-            st = ts_spline_certify(s, &zero, NULL, NULL, &e);
-            CHECKF(st == TS_OK, "positive: %s at %zu", ts_strerror(st), e.index);
+            size_t first = ts__skip_proven(s, 0, NB - 1);
+            CHECKF(NB - 1 - first > 256, "first interval left to the batch: %zu", first);
+            st = ts_spline_certify(s, &lb, NULL, NULL, &e);
+            CHECKF(st == TS_OK, "above: %s at %zu", ts_strerror(st), e.index);
         }
         ts_spline_free(s);
     }
