@@ -357,16 +357,21 @@ TS_ALWAYS_INLINE void eval_run(int deriv, const double *q, size_t j0, size_t j1,
     /* B'0 and the differences from each end (eval_one's, per interval) */
     double l1 = b1 - b0, l2 = deriv ? b2 - b1 : b2 - b0, l3 = deriv ? b3 - b2 : b3 - b0;
     double r1 = b2 - b3, r2 = deriv ? b1 - b2 : b1 - b3, r3 = deriv ? b0 - b1 : b0 - b3;
-    size_t j = j0;
+    const double *qe = q + j1;
+    q += j0;
+    y += j0;
     do {
+#if !defined(__wasm__) /* GCC 12 would unroll it at some places into scalar code: other contractions */
 #pragma GCC unroll 1
+#endif
         for (size_t l = 0; l < run; l++) {
-            double x = q[j + l], tu = (x - x0) * w, tv = (x1 - x) * w;
+            double x = q[l], tu = (x - x0) * w, tv = (x1 - x) * w;
             int left = tu <= tv;
-            y[j + l] = eval_core(deriv, tu, tv, w, left ? b0 : b3, left ? l1 : r1, left ? l2 : r2, left ? l3 : r3);
+            y[l] = eval_core(deriv, tu, tv, w, left ? b0 : b3, left ? l1 : r1, left ? l2 : r2, left ? l3 : r3);
         }
-        j += run;
-    } while (j < j1);
+        q += run;
+        y += run;
+    } while (q < qe);
 }
 
 /* Sorted q[0..nb), xs[i] <= q[0], a dense block (long runs): walk the
