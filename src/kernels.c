@@ -357,21 +357,32 @@ TS_ALWAYS_INLINE void eval_run(int deriv, const double *q, size_t j0, size_t j1,
     /* B'0 and the differences from each end (eval_one's, per interval) */
     double l1 = b1 - b0, l2 = deriv ? b2 - b1 : b2 - b0, l3 = deriv ? b3 - b2 : b3 - b0;
     double r1 = b2 - b3, r2 = deriv ? b1 - b2 : b1 - b3, r3 = deriv ? b0 - b1 : b0 - b3;
-    const double *qe = q + j1;
+#define TS_RUN_LANE(l)                                                                     \
+    do {                                                                                   \
+        double x = q[l], tu = (x - x0) * w, tv = (x1 - x) * w;                             \
+        int left = tu <= tv;                                                               \
+        y[l] = eval_core(deriv, tu, tv, w, left ? b0 : b3, left ? l1 : r1, left ? l2 : r2, \
+                         left ? l3 : r3);                                                  \
+    } while (0)
     q += j0;
     y += j0;
+#if defined(__wasm__)
+    /* one loop over whole vectors, which emscripten's Clang vectorises (no
+     * fused multiply-add there: the bits do not depend on the loop's shape) */
+    size_t k = (j1 - j0 + run - 1) / run * run;
+    for (size_t l = 0; l < k; l++)
+        TS_RUN_LANE(l);
+#else
+    const double *qe = q + (j1 - j0);
     do {
-#if !defined(__wasm__) /* GCC 12 would unroll it at some places into scalar code: other contractions */
-#pragma GCC unroll 1
-#endif
-        for (size_t l = 0; l < run; l++) {
-            double x = q[l], tu = (x - x0) * w, tv = (x1 - x) * w;
-            int left = tu <= tv;
-            y[l] = eval_core(deriv, tu, tv, w, left ? b0 : b3, left ? l1 : r1, left ? l2 : r2, left ? l3 : r3);
-        }
+#pragma GCC unroll 1 /* GCC 12 unrolled it at some places into scalar code: other contractions */
+        for (size_t l = 0; l < run; l++)
+            TS_RUN_LANE(l);
         q += run;
         y += run;
     } while (q < qe);
+#endif
+#undef TS_RUN_LANE
 }
 
 /* Sorted q[0..nb), xs[i] <= q[0], a dense block (long runs): walk the
@@ -448,8 +459,7 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
                    : deriv == 1 ? eval_sorted_dense(sp, 1, q, nb, y, i, run)
                                 : eval_sorted_dense(sp, 2, q, nb, y, i, run);
             return 2;
-        }
-        else
+        } else
             *cur = want_w ? stage_sorted_sparse(sp, q, nb, 1, st, i)
                           : stage_sorted_sparse(sp, q, nb, 0, st, i);
         return 1;
