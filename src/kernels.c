@@ -7,23 +7,25 @@
  *     A block with a query outside goes back to eval.c.
  *  2. stage: the interval is ts__locate's (largest i <= n−1 with x_i <= x:
  *     the right-hand one at an inner knot).  A sorted block walks the cursor,
- *     galloping over gaps.  In a dense block (runs of TS_FAST_RUN queries per
- *     interval on average) it stages each interval's run of queries when it
- *     leaves it: a run as long as a vector gets the interval's values with
- *     whole-vector stores and its tu, tv from a short vector loop, a shorter
- *     one query by query (the per-query scalar stores bounded the kernel
- *     when several queries share an interval); a sparse block is staged
- *     query by query with the interval's values in registers.  An unsorted
- *     block runs one branch-free binary search per query, all queries
- *     advancing a level at a time so their cache misses overlap.
+ *     galloping over gaps.  A dense block (runs of TS_FAST_RUN queries per
+ *     interval on average) is not staged: each interval's run of queries is
+ *     evaluated when the walk leaves it, a vector's width at a time with the
+ *     interval's values in registers (eval_run; the per-query stores and
+ *     loads of the staging bounded the kernel when several queries share an
+ *     interval).  A sparse block is staged query by query with the
+ *     interval's values in registers.  An unsorted block runs one
+ *     branch-free binary search per query, all queries advancing a level at
+ *     a time so their cache misses overlap.
  *     Per query: tu = (x − x_i)·w, tv = (x_{i+1} − x)·w, w = (π/2)/h_i, and
  *     B0..B3 — exactly the products eval.c's eval_in forms.
- *  3. evaluate, in a straight loop the compiler vectorises, always over a
- *     whole block (a short one padded) into an aligned buffer, so that a
- *     query's value does not depend on where it sits in the batch: from the nearer
+ *  3. evaluate, in straight loops the compiler vectorises, so that a query's
+ *     value does not depend on where it sits in the batch: a staged block
+ *     always whole (a short one padded) into an aligned buffer, a dense
+ *     block's runs in whole vectors (the last one of a run spilling into the
+ *     next run's places, or into the buffers' slack): from the nearer
  *     end as eval.c (ϑ = tu or tv <= π/4, no range reduction: docs/method.md §1), sin
  *     and 1 − cos by polynomials, then docs/method.md §2 (value) or (2.1) and its
- *     θ-derivative, times w or w·w.
+ *     θ-derivative, times w or w·w (eval_core: every query of every path).
  * Agreement with ts_spline_eval_deriv, derived and checked on 1e7 random points in
  * tests/unit/test_fast.c: measured |fast − plain| <= 3.9ε·M for the value
  * (M = max|B_l| of the interval), 12ε·M·w for S', 35ε·M·w² for S''; a
@@ -104,11 +106,10 @@ TS_ALWAYS_INLINE size_t gallop(const double *xs, size_t n, size_t i, double x)
  * = B3) is staged with w = 0: ϑ = 0 gives A = (1, 0, 0, 0) exactly, so its
  * value is B0 (Σ A_l need not round to 1 elsewhere) and its derivatives 0,
  * without a test per query. */
-#define TS_FAST_RUN 8 /* the widest vector, in doubles: the arrays' slack */
+#define TS_FAST_RUN 8 /* the widest vector, in doubles: the slack of run-wise arrays */
 typedef struct fast_stage {
-    double tu[TS_FAST_BLOCK], tv[TS_FAST_BLOCK], w[TS_FAST_BLOCK + TS_FAST_RUN]; /* w: derivatives only */
-    double b0[TS_FAST_BLOCK + TS_FAST_RUN], b1[TS_FAST_BLOCK + TS_FAST_RUN];
-    double b2[TS_FAST_BLOCK + TS_FAST_RUN], b3[TS_FAST_BLOCK + TS_FAST_RUN];
+    double tu[TS_FAST_BLOCK], tv[TS_FAST_BLOCK], w[TS_FAST_BLOCK]; /* w: derivatives only */
+    double b0[TS_FAST_BLOCK], b1[TS_FAST_BLOCK], b2[TS_FAST_BLOCK], b3[TS_FAST_BLOCK];
 } fast_stage;
 
 typedef struct fast_iv {
@@ -137,38 +138,6 @@ TS_ALWAYS_INLINE void stage_one(fast_stage *st, size_t j, double x, const fast_i
     st->b3[j] = v->b3;
 }
 
-/* Queries q[j0..j1) (j0 < j1) in interval v: shorter than run (<= TS_FAST_RUN,
- * a vector's width; a constant at each call) query by query; a longer run
- * with whole-vector stores of v's values, run places at a time, the last one
- * spilling past j1 (overwritten by the next run, or into the slack), and tu,
- * tv by a loop the compiler vectorises (the same two operations per query as
- * stage_one, so the same bits wherever the vector loop's tail falls). */
-TS_ALWAYS_INLINE void stage_run(fast_stage *st, const double *q, size_t j0, size_t j1, const fast_iv *v,
-                                int want_w, size_t run)
-{
-    if (j1 - j0 < run) {
-        for (size_t j = j0; j < j1; j++)
-            stage_one(st, j, q[j], v, want_w);
-        return;
-    }
-    size_t j = j0;
-    do {
-        for (size_t l = 0; l < run; l++) { /* whole-vector stores */
-            st->w[j + l] = v->w;
-            st->b0[j + l] = v->b0;
-            st->b1[j + l] = v->b1;
-            st->b2[j + l] = v->b2;
-            st->b3[j + l] = v->b3;
-        }
-        j += run;
-    } while (j < j1);
-    double x0 = v->x0, x1 = v->x1, w = v->w;
-    for (j = j0; j < j1; j++) {
-        st->tu[j] = (q[j] - x0) * w;
-        st->tv[j] = (x1 - q[j]) * w;
-    }
-}
-
 /* Sorted q[0..nb), xs[i] <= q[0], a sparse block: walk the cursor with the
  * current interval's values in registers, staging query by query. */
 TS_ALWAYS_INLINE size_t stage_sorted_sparse(const ts_spline *sp, const double *q, size_t nb, int want_w,
@@ -189,37 +158,6 @@ TS_ALWAYS_INLINE size_t stage_sorted_sparse(const ts_spline *sp, const double *q
         }
         stage_one(st, j, x, &v, want_w);
     }
-    return i;
-}
-
-/* Sorted q[0..nb), xs[i] <= q[0], a dense block (long runs): walk the
- * cursor, staging each interval's run of queries when the walk leaves it;
- * the next knot stays in a register.  want_w is a constant at each call. */
-TS_ALWAYS_INLINE size_t stage_sorted_dense(const ts_spline *sp, const double *q, size_t nb, int want_w,
-                                           fast_stage *st, size_t i, size_t run)
-{
-    const double *xs = sp->x;
-    size_t n = sp->n, j0 = 0;
-    /* dense (stage_block): every query is below xs[probe] with probe < n, so
-     * the walk stays in intervals below probe and i + 1 <= probe < n: the
-     * next knot always exists and the last interval is never reached */
-    double next = xs[i + 1];
-    for (size_t j = 0; j < nb; j++) {
-        double x = q[j];
-        if (x >= next) {
-            if (j > j0) {
-                fast_iv v = fast_interval(sp, i);
-                stage_run(st, q, j0, j, &v, want_w, run);
-            }
-            j0 = j;
-            i++;
-            if (xs[i + 1] <= x)
-                i = gallop(xs, n, i, x);
-            next = xs[i + 1];
-        }
-    }
-    fast_iv v = fast_interval(sp, i);
-    stage_run(st, q, j0, nb, &v, want_w, run);
     return i;
 }
 
@@ -261,7 +199,12 @@ TS_ALWAYS_INLINE void geo_stage_one(geo_stage *st, size_t j, double x, const geo
     st->d1[j] = g->d1;
 }
 
-/* stage_run for the geometric form. */
+/* Queries q[j0..j1) (j0 < j1) in interval g: shorter than run (<= TS_FAST_RUN,
+ * a vector's width; a constant at each call) query by query; a longer run
+ * with whole-vector stores of g's values, run places at a time, the last one
+ * spilling past j1 (overwritten by the next run, or into the slack), and the
+ * distances by a loop the compiler vectorises (the same two operations per
+ * query as geo_stage_one). */
 TS_ALWAYS_INLINE void geo_stage_run(geo_stage *st, const double *q, size_t j0, size_t j1, const geo_iv *g,
                                     size_t run)
 {
@@ -311,13 +254,18 @@ TS_ALWAYS_INLINE size_t geo_stage_sorted_sparse(const ts_spline *sp, const doubl
     return i;
 }
 
-/* Sorted, dense: stage_sorted_dense for the geometric form. */
+/* Sorted q[0..nb), xs[i] <= q[0], a dense block (long runs), the geometric
+ * form: walk the cursor, staging each interval's run of queries when the
+ * walk leaves it; the next knot stays in a register. */
 TS_ALWAYS_INLINE size_t geo_stage_sorted_dense(const ts_spline *sp, const double *q, size_t nb,
                                                geo_stage *st, size_t i, size_t run)
 {
     const double *xs = sp->x;
     size_t n = sp->n, j0 = 0;
-    double next = xs[i + 1]; /* i + 1 <= probe < n, as in stage_sorted_dense */
+    /* dense (stage_block): every query is below xs[probe] with probe < n, so
+     * the walk stays in intervals below probe and i + 1 <= probe < n: the
+     * next knot always exists and the last interval is never reached */
+    double next = xs[i + 1];
     for (size_t j = 0; j < nb; j++) {
         double x = q[j];
         if (x >= next) {
@@ -337,6 +285,135 @@ TS_ALWAYS_INLINE size_t geo_stage_sorted_dense(const ts_spline *sp, const double
     return i;
 }
 
+/* ---- evaluate -------------------------------------------------------- */
+
+/* s = sin ϑ, c = cos ϑ, ms = 1 − s, mc = 1 − c for ϑ in [0, π/4]: internal.h. */
+#define fast_trig ts__sincos_q
+
+/* One query from its nearer end: ϑ = min(tu, tv), left = tu <= tv (dϑ/dθ =
+ * ±1) and the control values B' seen from that end as B'0 and differences:
+ * e1, e2, e3 = B'1 − B'0, B'2 − B'0, B'3 − B'0 for the value (docs/method.md
+ * §2, the expressions of ts__seg_scm: B0 + Σ A_l (B_l − B0)), B'1 − B'0,
+ * B'2 − B'1, B'3 − B'2 for S' by (2.1) and S'' by its θ-derivative; deriv a
+ * constant at each call.  eval_block forms the differences per query,
+ * eval_run once per interval and end (the same subtractions, so the same
+ * bits). */
+TS_ALWAYS_INLINE double eval_core(int deriv, double tu, double tv, double w, double B0, double e1, double e2,
+                                  double e3)
+{
+    int left = tu <= tv;
+    double s, c, ms, mc;
+    fast_trig(tv < tu ? tv : tu, &s, &c, &ms, &mc); /* minpd: left ? tu : tv */
+    if (deriv == 0)
+        return B0 + ((s * ms * (3.0 - s)) * e1 + (c * mc * (3.0 - c)) * e2 + (mc * mc * mc) * e3);
+    if (deriv == 1) {
+        double d = 3.0 * (ms * ms) * c * e1 + 2.0 * (s * c) * e2 + 3.0 * (mc * mc) * s * e3;
+        return d * (left ? w : -w);
+    }
+    double a0 = 6.0 * ms * (c * c) + 3.0 * (ms * ms) * s;
+    double a3 = 6.0 * mc * (s * s) + 3.0 * (mc * mc) * c;
+    double d = (a3 * e3 - a0 * e1) + 2.0 * ((c * c - s * s) * e2);
+    return d * (w * w);
+}
+
+/* eval_core of one staged query */
+TS_ALWAYS_INLINE double eval_one(int deriv, double tu, double tv, double w, double b0, double b1, double b2,
+                                 double b3)
+{
+    int left = tu <= tv;
+    double B0 = left ? b0 : b3, B1 = left ? b1 : b2;
+    double B2 = left ? b2 : b1, B3 = left ? b3 : b0;
+    if (deriv == 0)
+        return eval_core(0, tu, tv, w, B0, B1 - B0, B2 - B0, B3 - B0);
+    return eval_core(deriv, tu, tv, w, B0, B1 - B0, B2 - B1, B3 - B2);
+}
+
+/* deriv a constant at each call */
+TS_ALWAYS_INLINE void eval_loop(int deriv, const fast_stage *st, size_t nb, double *y)
+{
+    for (size_t j = 0; j < nb; j++)
+        y[j] = eval_one(deriv, st->tu[j], st->tv[j], deriv > 0 ? st->w[j] : 0.0, st->b0[j], st->b1[j], st->b2[j],
+                        st->b3[j]);
+}
+
+TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, double *y)
+{
+    if (deriv == 0)
+        eval_loop(0, st, nb, y);
+    else if (deriv == 1)
+        eval_loop(1, st, nb, y);
+    else
+        eval_loop(2, st, nb, y);
+}
+
+/* Queries q[j0..j1) (j0 < j1) of interval v evaluated into y, run places
+ * at a time (a vector's width), the last vector spilling past j1 (the next
+ * run overwrites it, or it lands in the slack of q and y): every query
+ * goes through eval_core in a vector lane, as in eval_block. */
+TS_ALWAYS_INLINE void eval_run(int deriv, const double *q, size_t j0, size_t j1, const fast_iv *v, double *y,
+                               size_t run)
+{
+    double x0 = v->x0, x1 = v->x1, w = v->w, b0 = v->b0, b1 = v->b1, b2 = v->b2, b3 = v->b3;
+    /* B'0 and the differences from each end (eval_one's, per interval) */
+    double l1 = b1 - b0, l2 = deriv ? b2 - b1 : b2 - b0, l3 = deriv ? b3 - b2 : b3 - b0;
+    double r1 = b2 - b3, r2 = deriv ? b1 - b2 : b1 - b3, r3 = deriv ? b0 - b1 : b0 - b3;
+#define TS_RUN_LANE(l)                                                                     \
+    do {                                                                                   \
+        double x = q[l], tu = (x - x0) * w, tv = (x1 - x) * w;                             \
+        int left = tu <= tv;                                                               \
+        y[l] = eval_core(deriv, tu, tv, w, left ? b0 : b3, left ? l1 : r1, left ? l2 : r2, \
+                         left ? l3 : r3);                                                  \
+    } while (0)
+    q += j0;
+    y += j0;
+#if defined(__wasm__)
+    /* one loop over whole vectors, which emscripten's Clang vectorises (no
+     * fused multiply-add there: the bits do not depend on the loop's shape) */
+    size_t k = (j1 - j0 + run - 1) / run * run;
+    for (size_t l = 0; l < k; l++)
+        TS_RUN_LANE(l);
+#else
+    const double *qe = q + (j1 - j0);
+    do {
+#pragma GCC unroll 1 /* GCC 12 unrolled it at some places into scalar code: other contractions */
+        for (size_t l = 0; l < run; l++)
+            TS_RUN_LANE(l);
+        q += run;
+        y += run;
+    } while (q < qe);
+#endif
+#undef TS_RUN_LANE
+}
+
+/* Sorted q[0..nb), xs[i] <= q[0], a dense block (long runs): walk the
+ * cursor as geo_stage_sorted_dense and evaluate each interval's run of
+ * queries when the walk leaves it, with its values in registers; q and y
+ * have TS_FAST_RUN places of slack. */
+TS_ALWAYS_INLINE size_t eval_sorted_dense(const ts_spline *sp, int deriv, const double *q, size_t nb, double *y,
+                                          size_t i, size_t run)
+{
+    const double *xs = sp->x;
+    size_t n = sp->n, j0 = 0;
+    double next = xs[i + 1]; /* i + 1 <= probe < n, as in geo_stage_sorted_dense */
+    for (size_t j = 0; j < nb; j++) {
+        double x = q[j];
+        if (x >= next) {
+            if (j > j0) {
+                fast_iv v = fast_interval(sp, i);
+                eval_run(deriv, q, j0, j, &v, y, run);
+            }
+            j0 = j;
+            i++;
+            if (xs[i + 1] <= x)
+                i = gallop(xs, n, i, x);
+            next = xs[i + 1];
+        }
+    }
+    fast_iv v = fast_interval(sp, i);
+    eval_run(deriv, q, j0, nb, &v, y, run);
+    return i;
+}
+
 /* Every q[j] in [x0, xn] (none NaN). */
 TS_ALWAYS_INLINE int all_inside(const double *q, size_t nb, double x0, double xn)
 {
@@ -347,11 +424,15 @@ TS_ALWAYS_INLINE int all_inside(const double *q, size_t nb, double x0, double xn
 }
 
 /* Stages q[0..nb) (1 <= nb <= TS_FAST_BLOCK) into st, or into gs for the
- * geometric form (gs != NULL); *cur is the cursor, left on the last query's
- * interval.  Returns 0, without staging, if a query is outside [x0, xn] or NaN. */
-TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb, int want_w,
-                                 fast_stage *st, geo_stage *gs, size_t *cur, size_t run)
+ * geometric form (gs != NULL), and returns 1; a dense sorted block of the
+ * other forms is evaluated into y instead (eval_sorted_dense; q and y with
+ * TS_FAST_RUN places of slack), returning 2; *cur is the cursor, left on the
+ * last query's interval.  Returns 0, without staging, if a query is outside
+ * [x0, xn] or NaN. */
+TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb, int deriv,
+                                 fast_stage *st, geo_stage *gs, double *y, size_t *cur, size_t run)
 {
+    int want_w = deriv > 0;
     const double *xs = sp->x;
     size_t n = sp->n, i = *cur;
     /* flags kept as doubles: this form vectorises */
@@ -373,10 +454,12 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
         if (gs)
             *cur = dense ? geo_stage_sorted_dense(sp, q, nb, gs, i, run)
                          : geo_stage_sorted_sparse(sp, q, nb, gs, i);
-        else if (dense)
-            *cur = want_w ? stage_sorted_dense(sp, q, nb, 1, st, i, run)
-                          : stage_sorted_dense(sp, q, nb, 0, st, i, run);
-        else
+        else if (dense) {
+            *cur = deriv == 0   ? eval_sorted_dense(sp, 0, q, nb, y, i, run)
+                   : deriv == 1 ? eval_sorted_dense(sp, 1, q, nb, y, i, run)
+                                : eval_sorted_dense(sp, 2, q, nb, y, i, run);
+            return 2;
+        } else
             *cur = want_w ? stage_sorted_sparse(sp, q, nb, 1, st, i)
                           : stage_sorted_sparse(sp, q, nb, 0, st, i);
         return 1;
@@ -404,53 +487,6 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
     *cur = i;
     return 1;
 }
-
-/* ---- evaluate -------------------------------------------------------- */
-
-/* s = sin ϑ, c = cos ϑ, ms = 1 − s, mc = 1 − c for ϑ in [0, π/4]: internal.h. */
-#define fast_trig ts__sincos_q
-
-/* Query j seen from its nearer end: ϑ, the control values B', and the sign
- * of dϑ/dθ as ±1. */
-#define TS_FAST_NEAR(st, j)                                                        \
-    double tu = (st)->tu[j], tv = (st)->tv[j];                                     \
-    int left = tu <= tv;                                                           \
-    double b0 = (st)->b0[j], b1 = (st)->b1[j], b2 = (st)->b2[j], b3 = (st)->b3[j]; \
-    double B0 = left ? b0 : b3, B1 = left ? b1 : b2;                               \
-    double B2 = left ? b2 : b1, B3 = left ? b3 : b0;                               \
-    double s, c, ms, mc;                                                           \
-    fast_trig(tv < tu ? tv : tu, &s, &c, &ms, &mc) /* minpd: left ? tu : tv */
-
-TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, double *y)
-{
-    if (deriv == 0) {
-        for (size_t j = 0; j < nb; j++) {
-            TS_FAST_NEAR(st, j);
-            /* docs/method.md §2, the expressions of ts__seg_scm (B0 + Σ A_l (B_l − B0)) */
-            y[j] = B0 + ((s * ms * (3.0 - s)) * (B1 - B0) + (c * mc * (3.0 - c)) * (B2 - B0) +
-                         (mc * mc * mc) * (B3 - B0));
-        }
-    } else if (deriv == 1) {
-        for (size_t j = 0; j < nb; j++) {
-            TS_FAST_NEAR(st, j);
-            double d01 = B1 - B0, d12 = B2 - B1, d23 = B3 - B2;
-            /* docs/method.md (2.1) */
-            double d = 3.0 * (ms * ms) * c * d01 + 2.0 * (s * c) * d12 + 3.0 * (mc * mc) * s * d23;
-            y[j] = d * (left ? st->w[j] : -st->w[j]);
-        }
-    } else {
-        for (size_t j = 0; j < nb; j++) {
-            TS_FAST_NEAR(st, j);
-            double d01 = B1 - B0, d12 = B2 - B1, d23 = B3 - B2;
-            /* d/dθ of (2.1) */
-            double a0 = 6.0 * ms * (c * c) + 3.0 * (ms * ms) * s;
-            double a3 = 6.0 * mc * (s * s) + 3.0 * (mc * mc) * c;
-            double d = (a3 * d23 - a0 * d01) + 2.0 * ((c * c - s * s) * d12);
-            y[j] = d * (st->w[j] * st->w[j]);
-        }
-    }
-}
-
 
 /* The geometric form: solve X̂(φ) = u for φ in [0, π/4] (u = distance to
  * the nearer end / h; geometric.c), all queries of the block a step at a
@@ -602,12 +638,12 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
         fast_stage p;
         geo_stage g;
     } st;
-    _Alignas(64) double yt[TS_FAST_BLOCK];
+    _Alignas(64) double yt[TS_FAST_BLOCK + TS_FAST_RUN], qt[TS_FAST_BLOCK + TS_FAST_RUN];
     size_t j0 = 0;
     if (geo) {
         while (j0 < m) {
             size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
-            if (!stage_block(sp, xq + j0, nb, 0, NULL, &st.g, cur, run))
+            if (!stage_block(sp, xq + j0, nb, 0, NULL, &st.g, NULL, cur, run))
                 break;
             geo_pad(&st.g, nb); /* as below */
             geo_eval_block(deriv, &st.g, TS_FAST_BLOCK, yt);
@@ -619,8 +655,25 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
     }
     while (j0 < m) {
         size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
-        if (!stage_block(sp, xq + j0, nb, deriv > 0, &st.p, NULL, cur, run))
+        /* q needs TS_FAST_RUN places of slack (eval_run): the batch's
+         * next queries, or at its end a copy */
+        const double *q = xq + j0;
+        if (m - j0 < nb + TS_FAST_RUN) {
+            for (size_t j = 0; j < nb; j++)
+                qt[j] = q[j];
+            for (size_t j = nb; j < TS_FAST_BLOCK + TS_FAST_RUN; j++)
+                qt[j] = qt[nb - 1];
+            q = qt;
+        }
+        int got = stage_block(sp, q, nb, deriv, &st.p, NULL, yt, cur, run);
+        if (!got)
             break;
+        if (got == 2) {
+            for (size_t j = 0; j < nb; j++)
+                yq[j0 + j] = yt[j];
+            j0 += nb;
+            continue;
+        }
         /* A short block is padded with its first query and every block is
          * evaluated whole into an aligned buffer: no loop tail and no
          * alignment peel, so each query runs the same instructions wherever
@@ -647,7 +700,8 @@ typedef size_t (*pipeline_fn)(const ts_spline *, int, const double *, size_t, do
 
 /* Per ISA, the geometric form's pipeline and the others' in functions of
  * their own (one's loops do not change the other's register allocation),
- * with the ISA's vector width in doubles as stage_run's run;
+ * with the ISA's vector width in doubles as geo_stage_run's and eval_run's
+ * run (AVX-512: eval_run with 8 measured faster than with 4);
  * pick chooses by ISA and form. */
 #define TS_PIPELINE_ARGS const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur
 static TS_NOINLINE size_t pipeline_geo_portable(TS_PIPELINE_ARGS)
