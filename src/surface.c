@@ -268,8 +268,8 @@ static ts_status check_nodes(ts_surface *s, const ts_surface_options *o, const d
         return TS_OK;
     }
     int strict = o->shape == TS_SURFACE_PLANES;
-    for (size_t n = 0; n < nn; n++) {
-        double xv = s->x[n % np], yv = s->y[n / np];
+    for (size_t n = 0, i = 0, j = 0; n < nn; n++, i = i + 1 == np ? 0 : i + 1, j += i == 0) {
+        double xv = s->x[i], yv = s->y[j];
         if (o->shape == TS_SURFACE_POSITIVE && z[n] < 0.0)
             return ts__fail(err, TS_ERR_NEGATIVE, n, TS_WHERE_POINT);
         if (strict && s->has_lower && s->has_upper && plane_order(&s->lower, &s->upper, xv, yv) <= 0)
@@ -346,8 +346,7 @@ static void touch_slopes(ts_surface *s)
     size_t np = s->nx + 1, nn = np * (s->ny + 1);
     if (s->shape == TS_SURFACE_GRIDS) /* nodes strictly inside */
         return;
-    for (size_t n = 0; n < nn; n++) {
-        size_t i = n % np, j = n / np;
+    for (size_t n = 0, i = 0, j = 0; n < nn; n++, i = i + 1 == np ? 0 : i + 1, j += i == 0) {
         for (int side = 0; side < 2; side++) {
             int has = side ? s->has_upper : s->has_lower;
             double c = side ? s->upper.c : s->lower.c;
@@ -364,24 +363,32 @@ static void touch_slopes(ts_surface *s)
  * the plane, all with the sign that makes "inside" positive.  A field
  * (docs/method.md §11.7): its rounded value, and its secants along the
  * edges of patch (pi, pj) through the node as its slopes. */
-static void node_gap(const ts_surface *s, size_t n, int side, size_t pi, size_t pj, double *g,
-                     double *pp, double *qq)
+static void field_gap(const ts_surface *s, size_t n, int side, size_t pi, size_t pj, double *g,
+                      double *pp, double *qq)
 {
+    size_t np = s->nx + 1;
+    double sg = side ? -1.0 : 1.0;
+    const ts__gbound *f = side ? &s->gup : &s->glo;
+    double xv = s->x[n % np], yv = s->y[n / np];
+    double bx = (ts__gb_value(f, s->x[pi + 1], yv) - ts__gb_value(f, s->x[pi], yv)) /
+                (s->x[pi + 1] - s->x[pi]);
+    double by = (ts__gb_value(f, xv, s->y[pj + 1]) - ts__gb_value(f, xv, s->y[pj])) /
+                (s->y[pj + 1] - s->y[pj]);
+    *g = sg * (s->z[n] - ts__gb_value(f, xv, yv));
+    *pp = sg * (s->p[n] - bx);
+    *qq = sg * (s->q[n] - by);
+}
+
+static inline void node_gap(const ts_surface *s, size_t n, int side, size_t pi, size_t pj,
+                            double *g, double *pp, double *qq)
+{
+    if (s->shape == TS_SURFACE_GRIDS) {
+        field_gap(s, n, side, pi, pj, g, pp, qq);
+        return;
+    }
     size_t np = s->nx + 1;
     const ts_plane *pl = side ? &s->upper : &s->lower;
     double sg = side ? -1.0 : 1.0;
-    if (s->shape == TS_SURFACE_GRIDS) {
-        const ts__gbound *f = side ? &s->gup : &s->glo;
-        double xv = s->x[n % np], yv = s->y[n / np];
-        double bx = (ts__gb_value(f, s->x[pi + 1], yv) - ts__gb_value(f, s->x[pi], yv)) /
-                    (s->x[pi + 1] - s->x[pi]);
-        double by = (ts__gb_value(f, xv, s->y[pj + 1]) - ts__gb_value(f, xv, s->y[pj])) /
-                    (s->y[pj + 1] - s->y[pj]);
-        *g = sg * (s->z[n] - ts__gb_value(f, xv, yv));
-        *pp = sg * (s->p[n] - bx);
-        *qq = sg * (s->q[n] - by);
-        return;
-    }
     /* a constant plane's value is c + 0 at every finite point (ts__surf_plane_at) */
     double L = pl->p == 0.0 && pl->q == 0.0 ? pl->c + 0.0 : plane_at(pl, s->x[n % np], s->y[n / np]);
     *g = sg * (s->z[n] - L);
@@ -513,43 +520,45 @@ static double min_of(double a, double b)
  * scratch doubles (each interval's k, formed once). */
 static void clamp_twists(ts_surface *s, double *k)
 {
-    size_t np = s->nx + 1, nn = np * (s->ny + 1);
     double *kx = k, *ky = k + s->nx;
     for (size_t i = 0; i < s->nx; i++)
         kx[i] = ts__geo_k(s->x[i + 1] - s->x[i], s->ax[i]);
     for (size_t j = 0; j < s->ny; j++)
         ky[j] = ts__geo_k(s->y[j + 1] - s->y[j], s->ay[j]);
-    for (size_t n = 0, i = 0, j = 0; n < nn; n++, i = i == s->nx ? 0 : i + 1, j += i == 0) {
-        double lo = -(double)INFINITY, hi = (double)INFINITY;
-        double g[2] = {0.0, 0.0}, pp[2] = {0.0, 0.0}, qq[2] = {0.0, 0.0};
-        int per_patch = s->shape == TS_SURFACE_GRIDS;
-        for (int side = 0; side < 2 && !per_patch; side++) /* the node's gaps, the same for its patches */
-            if (side ? s->has_upper : s->has_lower)
-                node_gap(s, n, side, 0, 0, &g[side], &pp[side], &qq[side]);
-        for (int cx = 0; cx < 2; cx++) {
-            for (int cy = 0; cy < 2; cy++) {
-                /* patch (i - cx, j - cy); the node is its corner (cx, cy) */
-                if ((cx && i == 0) || (!cx && i == s->nx) || (cy && j == 0) ||
-                    (!cy && j == s->ny))
+    int per_patch = s->shape == TS_SURFACE_GRIDS;
+    for (size_t j = 0, n = 0; j <= s->ny; j++) {
+        for (size_t i = 0; i <= s->nx; i++, n++) {
+            double lo = -(double)INFINITY, hi = (double)INFINITY;
+            double g[2] = {0.0, 0.0}, pp[2] = {0.0, 0.0}, qq[2] = {0.0, 0.0};
+            for (int side = 0; side < 2 && !per_patch; side++) /* the node's gaps, the same for its patches */
+                if (side ? s->has_upper : s->has_lower)
+                    node_gap(s, n, side, 0, 0, &g[side], &pp[side], &qq[side]);
+            for (int cx = 0; cx < 2; cx++) {
+                if (cx ? i == 0 : i == s->nx)
                     continue;
-                size_t pi = i - (size_t)cx, pj = j - (size_t)cy;
-                double ux = kx[pi], uy = ky[pj];
-                double sx = cx ? -1.0 : 1.0, sy = cy ? -1.0 : 1.0;
-                for (int side = 0; side < 2; side++) {
-                    if (!(side ? s->has_upper : s->has_lower))
+                for (int cy = 0; cy < 2; cy++) {
+                    /* patch (i - cx, j - cy); the node is its corner (cx, cy) */
+                    if (cy ? j == 0 : j == s->ny)
                         continue;
-                    if (per_patch) /* a field's slopes depend on the patch (§11.7) */
-                        node_gap(s, n, side, pi, pj, &g[side], &pp[side], &qq[side]);
-                    double F = g[side] + sx * ux * pp[side] + sy * uy * qq[side];
-                    double c = (side ? -1.0 : 1.0) * sx * sy * ux * uy; /* c r >= -F/2 */
-                    if (c > 0.0)
-                        lo = max_of(lo, -0.5 * F / c);
-                    if (c < 0.0)
-                        hi = min_of(hi, -0.5 * F / c);
+                    size_t pi = i - (size_t)cx, pj = j - (size_t)cy;
+                    double ux = kx[pi], uy = ky[pj];
+                    double sx = cx ? -1.0 : 1.0, sy = cy ? -1.0 : 1.0;
+                    for (int side = 0; side < 2; side++) {
+                        if (!(side ? s->has_upper : s->has_lower))
+                            continue;
+                        if (per_patch) /* a field's slopes depend on the patch (§11.7) */
+                            node_gap(s, n, side, pi, pj, &g[side], &pp[side], &qq[side]);
+                        double F = g[side] + sx * ux * pp[side] + sy * uy * qq[side];
+                        double c = (side ? -1.0 : 1.0) * sx * sy * ux * uy; /* c r >= -F/2 */
+                        if (c > 0.0)
+                            lo = max_of(lo, -0.5 * F / c);
+                        if (c < 0.0)
+                            hi = min_of(hi, -0.5 * F / c);
+                    }
                 }
             }
+            s->r[n] = s->r[n] < lo ? lo : (s->r[n] > hi ? hi : s->r[n]);
         }
-        s->r[n] = s->r[n] < lo ? lo : (s->r[n] > hi ? hi : s->r[n]);
     }
 }
 
@@ -594,6 +603,7 @@ static ts_status repair(ts_surface *s, double *flag, ts_error *err)
     const ts_plane *lo = s->has_lower ? &s->lower : NULL, *up = s->has_upper ? &s->upper : NULL;
     int constant = s->shape != TS_SURFACE_GRIDS && !(lo && sloped(lo)) && !(up && sloped(up));
     double *ks = flag + nx + ny; /* each interval's k at its ends (ts__surf_ks), per round */
+    double cl = lo ? lo->c : -(double)INFINITY, cu = up ? up->c : (double)INFINITY;
     for (int round = 0;; round++) {
         size_t bad = SIZE_MAX;
         for (size_t k = 0; k < nx + ny; k++) {
@@ -603,12 +613,14 @@ static ts_status repair(ts_surface *s, double *flag, ts_error *err)
         for (size_t c = 0, i = 0, j = 0; c < nx * ny; c++, i = i + 1 == nx ? 0 : i + 1, j += i == 0) {
             double B[16];
             ts__surf_patch_k(s, i, j, ks + 2 * i, ks + 2 * (nx + j), B);
-            int finite = 1, in = 1;
+            double zero = 0.0, mn = B[0], mx = B[0]; /* zero: NaN unless every B[k] is finite */
             for (size_t k = 0; k < 16; k++) {
-                finite &= fabs(B[k]) <= DBL_MAX;
-                in &= (lo == NULL || B[k] >= lo->c) && (up == NULL || B[k] <= up->c);
+                zero += 0.0 * B[k];
+                mn = B[k] < mn ? B[k] : mn;
+                mx = B[k] > mx ? B[k] : mx;
             }
-            if (!finite)
+            int in = mn >= cl && mx <= cu;
+            if (zero != 0.0)
                 return ts__fail(err, TS_ERR_NONFINITE, c, TS_WHERE_INTERVAL);
             if (bad == SIZE_MAX || flag[i] == 0.0 || flag[nx + j] == 0.0) {
                 if (!(constant ? in : patch_inside(s, c, B))) {
