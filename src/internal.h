@@ -42,6 +42,8 @@
 #include <float.h>
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
+#include <string.h>
 
 /* Every internal function is hidden from the shared library.  (A
  * TS_VECTOR_LOOP function must still be static: the ifunc resolver of one
@@ -240,6 +242,20 @@ TS_INLINE double ts__width_error(double x0, double x1, double h)
 {
     double z = h - x1;
     return fabs((x1 - (h - z)) + (-x0 - z));
+}
+/* c ? a : b by bit masks: no branch where c is as good as random
+ * (scattered queries), which a compiler would otherwise make of it. */
+TS_INLINE double ts__pick(int c, double a, double b)
+{
+    uint64_t ua, ub, m = (uint64_t)0 - (uint64_t)(c != 0);
+#if defined(__GNUC__)
+    __asm__("" : "+r"(m)); /* opaque: not turned back into a branch */
+#endif
+    memcpy(&ua, &a, sizeof ua);
+    memcpy(&ub, &b, sizeof ub);
+    ua = (ua & m) | (ub & ~m);
+    memcpy(&a, &ua, sizeof a);
+    return a;
 }
 /* docs/method.md §5.1, §5.8: does slope d at a knot where the data touch a
  * constant bound leave the region?  up = +1 for a lower bound, −1 for an

@@ -94,12 +94,41 @@ static double into_region(const ts_surface *s, double x, double y, double v)
     return v;
 }
 
+/* ts__search (the same interval and cursor), its binary search without
+ * branches on the data: scattered queries mispredict none. */
+static size_t find(const double *t, size_t n, double v, ts_cursor *cur)
+{
+    size_t i = cur ? cur->interval : n;
+    if (i < n && t[i] <= v) {
+        if (v < t[i + 1] || i + 1 == n)
+            return i;
+        if (v < t[i + 2] || i + 2 == n) {
+            cur->interval = i + 1;
+            return i + 1;
+        }
+    }
+    /* the largest i < n with t[i] <= v lies in [lo, lo + len) */
+    size_t lo = 0, len = n;
+    while (len > 1) {
+        size_t half = len / 2;
+#if defined(__GNUC__) /* both knots the next step may read: in flight together */
+        __builtin_prefetch(t + lo + (len - half) / 2);
+        __builtin_prefetch(t + lo + half + (len - half) / 2);
+#endif
+        lo = t[lo + half] <= v ? lo + half : lo;
+        len -= half;
+    }
+    if (cur)
+        cur->interval = lo;
+    return lo;
+}
+
 /* Value (and partials when zx/zy) at a point known to be on the grid. */
 static void eval_at(const ts_surface *s, double x, double y, ts_surface_cursor *cur, double *z,
                     double *zx, double *zy)
 {
-    size_t i = ts__search(s->x, s->nx, x, cur ? &cur->x : NULL);
-    size_t j = ts__search(s->y, s->ny, y, cur ? &cur->y : NULL);
+    size_t i = find(s->x, s->nx, x, cur ? &cur->x : NULL);
+    size_t j = find(s->y, s->ny, y, cur ? &cur->y : NULL);
     double Ax[4], Ay[4], dAx[4], dAy[4];
     int want = zx || zy;
     ts__surf_basis(s->x, s->ax, i, s->form, x, Ax, want ? dAx : NULL);
