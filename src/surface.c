@@ -390,7 +390,8 @@ static inline void node_gap(const ts_surface *s, size_t n, int side, size_t pi, 
     const ts_plane *pl = side ? &s->upper : &s->lower;
     double sg = side ? -1.0 : 1.0;
     /* a constant plane's value is c + 0 at every finite point (ts__surf_plane_at) */
-    double L = pl->p == 0.0 && pl->q == 0.0 ? pl->c + 0.0 : plane_at(pl, s->x[n % np], s->y[n / np]);
+    double L = pl->p == 0.0 && pl->q == 0.0 ? pl->c + 0.0
+                                            : plane_at(pl, s->x[n % np], s->y[n / np]);
     *g = sg * (s->z[n] - L);
     *pp = sg * (s->p[n] - pl->p);
     *qq = sg * (s->q[n] - pl->q);
@@ -530,7 +531,8 @@ static void clamp_twists(ts_surface *s, double *k)
         for (size_t i = 0; i <= s->nx; i++, n++) {
             double lo = -(double)INFINITY, hi = (double)INFINITY;
             double g[2] = {0.0, 0.0}, pp[2] = {0.0, 0.0}, qq[2] = {0.0, 0.0};
-            for (int side = 0; side < 2 && !per_patch; side++) /* the node's gaps, the same for its patches */
+            /* the node's gaps, the same for its patches */
+            for (int side = 0; side < 2 && !per_patch; side++)
                 if (side ? s->has_upper : s->has_lower)
                     node_gap(s, n, side, 0, 0, &g[side], &pp[side], &qq[side]);
             for (int cx = 0; cx < 2; cx++) {
@@ -610,7 +612,8 @@ static ts_status repair(ts_surface *s, double *flag, ts_error *err)
             flag[k] = 0.0;
             ts__surf_ks(s, k >= nx, k < nx ? k : k - nx, ks + 2 * k);
         }
-        for (size_t c = 0, i = 0, j = 0; c < nx * ny; c++, i = i + 1 == nx ? 0 : i + 1, j += i == 0) {
+        for (size_t c = 0, i = 0, j = 0; c < nx * ny;
+             c++, i = i + 1 == nx ? 0 : i + 1, j += i == 0) {
             double B[16];
             ts__surf_patch_k(s, i, j, ks + 2 * i, ks + 2 * (nx + j), B);
             double zero = 0.0, mn = B[0], mx = B[0]; /* zero: NaN unless every B[k] is finite */
