@@ -6,7 +6,7 @@
 /* 1 - s without cancellation near s = 1 (docs/method.md §2: 1 - s = c²/(1 + s)). */
 static inline double one_minus(double s, double c)
 {
-    return s > 0.5 ? c * c / (1.0 + s) : 1.0 - s;
+    return ts__pick(s > 0.5, c * c / (1.0 + s), 1.0 - s);
 }
 
 void ts__basis(double s, double c, double A[4])

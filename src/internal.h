@@ -257,6 +257,21 @@ TS_INLINE double ts__width_error(double x0, double x1, double h)
     double z = h - x1;
     return fabs((x1 - (h - z)) + (-x0 - z));
 }
+/* c ? a : b by bit masks: no branch where c is as good as random
+ * (scattered queries; sorted ones at every interval's midpoint), which a
+ * compiler would otherwise make of it. */
+TS_INLINE double ts__pick(int c, double a, double b)
+{
+    uint64_t ua, ub, m = (uint64_t)0 - (uint64_t)(c != 0);
+#if defined(__GNUC__)
+    __asm__("" : "+r"(m)); /* opaque: not turned back into a branch */
+#endif
+    memcpy(&ua, &a, sizeof ua);
+    memcpy(&ub, &b, sizeof ub);
+    ua = (ua & m) | (ub & ~m);
+    memcpy(&a, &ua, sizeof a);
+    return a;
+}
 /* docs/method.md §5.1, §5.8: does slope d at a knot where the data touch a
  * constant bound leave the region?  up = +1 for a lower bound, −1 for an
  * upper; an inner knot needs d = 0, the first up·d >= 0, the last
@@ -785,18 +800,6 @@ double ts__cum(const ts_spline *sp, size_t i);
 /* Value and derivatives (in x; out[1], out[2] only if want > 0, > 1) of
  * interval i at x, any form; x may lie outside the interval (extension). */
 void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double o[3]);
-/* a if r is 0, b if r is 1, by masks on the bits: no branch, which a
- * compiler may make of a select (sorted queries would mispredict it at
- * every interval's midpoint, random ones at every other query) */
-TS_INLINE double ts__pick(size_t r, double a, double b)
-{
-    uint64_t ua, ub, m = (uint64_t)0 - (uint64_t)r;
-    memcpy(&ua, &a, sizeof ua);
-    memcpy(&ub, &b, sizeof ub);
-    ua ^= (ua ^ ub) & m;
-    memcpy(&a, &ua, sizeof a);
-    return a;
-}
 /* The same, paper and C¹ forms, x inside the interval (x_i <= x <= x_{i+1}):
  * ϑ from the nearer end (<= π/4), so the kernels' polynomial sine and cosine
  * (sin and cos of π/2 − θ are exact at the right knot: both knots are
@@ -811,7 +814,7 @@ TS_INLINE void ts__trig_eval_in(const ts_spline *sp, size_t i, double x, int wan
      * branch, which sorted queries would mispredict at every midpoint */
     size_t r = tv < tu;
     double b1 = sp->b1[i], b2 = sp->b2[i];
-    double B[4] = {sp->f[i + r], ts__pick(r, b1, b2), ts__pick(r, b2, b1), sp->f[i + 1 - r]};
+    double B[4] = {sp->f[i + r], ts__pick(r != 0, b2, b1), ts__pick(r != 0, b1, b2), sp->f[i + 1 - r]};
     double s, c, ms, mc;
     ts__sincos_q(tv < tu ? tv : tu, &s, &c, &ms, &mc);
     ts__seg_scm(B, s, c, ms, mc, want, o);

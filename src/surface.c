@@ -54,6 +54,8 @@ static int plane_side(double z, const ts_plane *pl, double x, double y)
     double g = z - L;
     if (fabs(g) > 2.0 * err)
         return (g > 0.0) - (g < 0.0);
+    if (pl->p == 0.0 && pl->q == 0.0) /* the exact sum below is z − c */
+        return fabs(pl->c) <= 0x1p1020 && fabs(z) <= 0x1p1020 ? (z > pl->c) - (z < pl->c) : 0;
     int n = plane_terms(pl, x, y, -1.0, t);
     t[n] = z;
     return n && fabs(z) <= 0x1p1020 ? ts__exact_sign(t, n + 1) : 0;
@@ -266,8 +268,8 @@ static ts_status check_nodes(ts_surface *s, const ts_surface_options *o, const d
         return TS_OK;
     }
     int strict = o->shape == TS_SURFACE_PLANES;
-    for (size_t n = 0; n < nn; n++) {
-        double xv = s->x[n % np], yv = s->y[n / np];
+    for (size_t n = 0, i = 0, j = 0; n < nn; n++, i = i + 1 == np ? 0 : i + 1, j += i == 0) {
+        double xv = s->x[i], yv = s->y[j];
         if (o->shape == TS_SURFACE_POSITIVE && z[n] < 0.0)
             return ts__fail(err, TS_ERR_NEGATIVE, n, TS_WHERE_POINT);
         if (strict && s->has_lower && s->has_upper && plane_order(&s->lower, &s->upper, xv, yv) <= 0)
@@ -288,16 +290,18 @@ static ts_status line_slopes(const ts_surface *s, ts_slopes method, int dir, con
     size_t np = s->nx + 1, nq = s->ny + 1;
     size_t lines = dir ? np : nq, len = dir ? nq : np;
     const double *t = dir ? s->y : s->x;
-    double *f = tmp, *g = tmp + len;
     for (size_t L = 0; L < lines; L++) {
-        for (size_t k = 0; k < len; k++)
-            f[k] = v[dir ? k * np + L : L * np + k];
+        /* a row in place; a column through tmp */
+        const double *f = dir ? tmp : v + L * np;
+        double *g = dir ? tmp + len : d + L * np;
+        for (size_t k = 0; dir && k < len; k++)
+            tmp[k] = v[k * np + L];
         ts_error e;
         if (ts__slopes(method, t, f, len, g, &e) != TS_OK)
             return ts__fail(err, TS_ERR_NONFINITE, dir ? e.index * np + L : L * np + e.index,
                             TS_WHERE_POINT);
-        for (size_t k = 0; k < len; k++)
-            d[dir ? k * np + L : L * np + k] = g[k];
+        for (size_t k = 0; dir && k < len; k++)
+            d[k * np + L] = g[k];
     }
     return TS_OK;
 }
@@ -312,6 +316,10 @@ static void line_slopes_raw(const ts_surface *s, ts_slopes method, int dir, cons
     const double *t = dir ? s->y : s->x;
     double *f = tmp, *g = tmp + len;
     for (size_t L = 0; L < lines; L++) {
+        if (!dir && !mean) { /* a row straight into d */
+            ts__slopes_range(method, t, v + L * np, len, d + L * np, 0, len);
+            continue;
+        }
         for (size_t k = 0; k < len; k++)
             f[k] = v[dir ? k * np + L : L * np + k];
         ts__slopes_range(method, t, f, len, g, 0, len);
@@ -338,8 +346,7 @@ static void touch_slopes(ts_surface *s)
     size_t np = s->nx + 1, nn = np * (s->ny + 1);
     if (s->shape == TS_SURFACE_GRIDS) /* nodes strictly inside */
         return;
-    for (size_t n = 0; n < nn; n++) {
-        size_t i = n % np, j = n / np;
+    for (size_t n = 0, i = 0, j = 0; n < nn; n++, i = i + 1 == np ? 0 : i + 1, j += i == 0) {
         for (int side = 0; side < 2; side++) {
             int has = side ? s->has_upper : s->has_lower;
             double c = side ? s->upper.c : s->lower.c;
@@ -356,30 +363,67 @@ static void touch_slopes(ts_surface *s)
  * the plane, all with the sign that makes "inside" positive.  A field
  * (docs/method.md §11.7): its rounded value, and its secants along the
  * edges of patch (pi, pj) through the node as its slopes. */
-static void node_gap(const ts_surface *s, size_t n, int side, size_t pi, size_t pj, double *g,
-                     double *pp, double *qq)
+static void field_gap(const ts_surface *s, size_t n, int side, size_t pi, size_t pj, double *g,
+                      double *pp, double *qq)
 {
+    size_t np = s->nx + 1;
+    double sg = side ? -1.0 : 1.0;
+    const ts__gbound *f = side ? &s->gup : &s->glo;
+    double xv = s->x[n % np], yv = s->y[n / np];
+    double bx = (ts__gb_value(f, s->x[pi + 1], yv) - ts__gb_value(f, s->x[pi], yv)) /
+                (s->x[pi + 1] - s->x[pi]);
+    double by = (ts__gb_value(f, xv, s->y[pj + 1]) - ts__gb_value(f, xv, s->y[pj])) /
+                (s->y[pj + 1] - s->y[pj]);
+    *g = sg * (s->z[n] - ts__gb_value(f, xv, yv));
+    *pp = sg * (s->p[n] - bx);
+    *qq = sg * (s->q[n] - by);
+}
+
+static inline void node_gap(const ts_surface *s, size_t n, int side, size_t pi, size_t pj,
+                            double *g, double *pp, double *qq)
+{
+    if (s->shape == TS_SURFACE_GRIDS) {
+        field_gap(s, n, side, pi, pj, g, pp, qq);
+        return;
+    }
     size_t np = s->nx + 1;
     const ts_plane *pl = side ? &s->upper : &s->lower;
     double sg = side ? -1.0 : 1.0;
-    if (s->shape == TS_SURFACE_GRIDS) {
-        const ts__gbound *f = side ? &s->gup : &s->glo;
-        double xv = s->x[n % np], yv = s->y[n / np];
-        double bx = (ts__gb_value(f, s->x[pi + 1], yv) - ts__gb_value(f, s->x[pi], yv)) /
-                    (s->x[pi + 1] - s->x[pi]);
-        double by = (ts__gb_value(f, xv, s->y[pj + 1]) - ts__gb_value(f, xv, s->y[pj])) /
-                    (s->y[pj + 1] - s->y[pj]);
-        *g = sg * (s->z[n] - ts__gb_value(f, xv, yv));
-        *pp = sg * (s->p[n] - bx);
-        *qq = sg * (s->q[n] - by);
-        return;
-    }
-    *g = sg * (s->z[n] - plane_at(pl, s->x[n % np], s->y[n / np]));
+    /* a constant plane's value is c + 0 at every finite point (ts__surf_plane_at) */
+    double L = pl->p == 0.0 && pl->q == 0.0 ? pl->c + 0.0
+                                            : plane_at(pl, s->x[n % np], s->y[n / np]);
+    *g = sg * (s->z[n] - L);
     *pp = sg * (s->p[n] - pl->p);
     *qq = sg * (s->q[n] - pl->q);
 }
 
-/* docs/method.md §11.3: a^x_i (dir 0) or a^y_j (dir 1) of the scheme. */
+/* The need of one edge term d at a node with gap g (docs/method.md §11.3):
+ * the inward term ±k d' must keep at least half the gap, so T rises to
+ * 2K(−d)/g; 0 where a would pass 1e300 (refused as in 1-D, §5.7: a gap
+ * near the underflow threshold). */
+static int need_of(double K, double d, double g, double *T)
+{
+    if (d < 0.0) {
+        if (2.0 * K * -d > 1e300 * g)
+            return 0;
+        double need = 2.0 * K * -d / g;
+        *T = need > *T ? need : *T;
+    }
+    return 1;
+}
+
+/* a from the need T: the margin additive as in 1-D and relative on the
+ * rule's value, so that F of (11.4) keeps t/(1 + t) of the gap however
+ * large a is. */
+static double rule_a(const ts_surface_options *o, double T)
+{
+    T *= 1.0 + o->margin;
+    double a = o->margin + (T > o->alpha ? T : o->alpha);
+    return o->form == TS_FORM_GEOMETRIC && a < TS_GEOMETRIC_A_RAISE ? TS_GEOMETRIC_A_RAISE : a;
+}
+
+/* docs/method.md §11.3: a^x_i (dir 0) or a^y_j (dir 1) of the scheme
+ * against fields (their slopes depend on the patch). */
 static ts_status scheme_a(ts_surface *s, const ts_surface_options *o, int dir, ts_error *err)
 {
     size_t np = s->nx + 1, n = dir ? s->ny : s->nx, lines = dir ? s->nx + 1 : s->ny + 1;
@@ -396,30 +440,80 @@ static ts_status scheme_a(ts_surface *s, const ts_surface_options *o, int dir, t
                     double g, pp, qq;
                     size_t pl = L < lines - 1 ? L : lines - 2;
                     node_gap(s, node, side, dir ? pl : i, dir ? i : pl, &g, &pp, &qq);
-                    /* the inward edge term ±k d' must keep at least half the gap */
-                    double d = (end ? -1.0 : 1.0) * (dir ? qq : pp);
-                    if (d < 0.0) {
-                        /* an a beyond 1e300 is refused (as in 1-D, docs/method.md
-                         * §5.7): a gap near the underflow threshold */
-                        if (2.0 * K * -d > 1e300 * g) {
-                            return ts__fail(err, TS_ERR_INFEASIBLE,
-                                            dir ? i * s->nx + pl : pl * s->nx + i,
-                                            TS_WHERE_INTERVAL);
-                        }
-                        double need = 2.0 * K * -d / g;
-                        T = need > T ? need : T;
+                    if (!need_of(K, (end ? -1.0 : 1.0) * (dir ? qq : pp), g, &T))
+                        return ts__fail(err, TS_ERR_INFEASIBLE,
+                                        dir ? i * s->nx + pl : pl * s->nx + i,
+                                        TS_WHERE_INTERVAL);
+                }
+            }
+        }
+        a[i] = rule_a(o, T);
+    }
+    return TS_OK;
+}
+
+/* The same against planes and constants, whose gaps at a node are the same
+ * for all its patches: one pass over the nodes in memory order, both
+ * directions, each node's gaps formed once (T accumulated in ax, ay; the
+ * maximum does not depend on the order).  The refusal is the one scheme_a
+ * meets first: x before y, the least interval, then the least line. */
+static ts_status scheme_a_nodes(ts_surface *s, const ts_surface_options *o, ts_error *err)
+{
+    size_t nx = s->nx, ny = s->ny, np = nx + 1;
+    size_t bad[2][2] = {{SIZE_MAX, 0}, {SIZE_MAX, 0}}; /* per direction: interval, line */
+    for (size_t i = 0; i < nx; i++)
+        s->ax[i] = 0.0;
+    for (size_t j = 0; j < ny; j++)
+        s->ay[j] = 0.0;
+    for (size_t j = 0; j <= ny; j++) {
+        double Ky0 = j < ny ? ts__geo_K(s->y[j + 1] - s->y[j]) : 0.0;
+        double Ky1 = j > 0 ? ts__geo_K(s->y[j] - s->y[j - 1]) : 0.0;
+        for (size_t i = 0; i <= nx; i++) {
+            double Kx0 = i < nx ? ts__geo_K(s->x[i + 1] - s->x[i]) : 0.0;
+            double Kx1 = i > 0 ? ts__geo_K(s->x[i] - s->x[i - 1]) : 0.0;
+            for (int side = 0; side < 2; side++) {
+                if (!(side ? s->has_upper : s->has_lower))
+                    continue;
+                double g, pp, qq;
+                node_gap(s, j * np + i, side, 0, 0, &g, &pp, &qq);
+                /* (interval, line) of each end of the node's four edges */
+                size_t e[4][3] = {{0, i, j}, {0, i - 1, j}, {1, j, i}, {1, j - 1, i}};
+                int ok[4] = {i < nx ? need_of(Kx0, 1.0 * pp, g, &s->ax[i]) : 1,
+                             i > 0 ? need_of(Kx1, -1.0 * pp, g, &s->ax[i - 1]) : 1,
+                             j < ny ? need_of(Ky0, 1.0 * qq, g, &s->ay[j]) : 1,
+                             j > 0 ? need_of(Ky1, -1.0 * qq, g, &s->ay[j - 1]) : 1};
+                for (int k = 0; !(ok[0] && ok[1] && ok[2] && ok[3]) && k < 4; k++) {
+                    size_t *b = bad[e[k][0]];
+                    if (!ok[k] && (e[k][1] < b[0] || (e[k][1] == b[0] && e[k][2] < b[1]))) {
+                        b[0] = e[k][1];
+                        b[1] = e[k][2];
                     }
                 }
             }
         }
-        /* the margin: additive as in 1-D and relative on the rule's value, so
-         * that F of (11.4) keeps t/(1 + t) of the gap however large a is */
-        T *= 1.0 + o->margin;
-        a[i] = o->margin + (T > o->alpha ? T : o->alpha);
-        if (o->form == TS_FORM_GEOMETRIC && a[i] < TS_GEOMETRIC_A_RAISE)
-            a[i] = TS_GEOMETRIC_A_RAISE;
     }
+    if (bad[0][0] != SIZE_MAX) /* the last line's nodes belong to the patches before it */
+        return ts__fail(err, TS_ERR_INFEASIBLE,
+                        (bad[0][1] < ny ? bad[0][1] : ny - 1) * nx + bad[0][0], TS_WHERE_INTERVAL);
+    if (bad[1][0] != SIZE_MAX)
+        return ts__fail(err, TS_ERR_INFEASIBLE,
+                        bad[1][0] * nx + (bad[1][1] < nx ? bad[1][1] : nx - 1), TS_WHERE_INTERVAL);
+    for (size_t i = 0; i < nx; i++)
+        s->ax[i] = rule_a(o, s->ax[i]);
+    for (size_t j = 0; j < ny; j++)
+        s->ay[j] = rule_a(o, s->ay[j]);
     return TS_OK;
+}
+
+/* fmax and fmin as glibc's x86-64 ones: the second argument where they are
+ * equal (±0), the first where the second is NaN */
+static double max_of(double a, double b)
+{
+    return a > b || b != b ? a : b;
+}
+static double min_of(double a, double b)
+{
+    return a < b || b != b ? a : b;
 }
 
 /* docs/method.md §11.3: clamp every twist so that on each of its patches the
@@ -427,44 +521,46 @@ static ts_status scheme_a(ts_surface *s, const ts_surface_options *o, int dir, t
  * scratch doubles (each interval's k, formed once). */
 static void clamp_twists(ts_surface *s, double *k)
 {
-    size_t np = s->nx + 1, nn = np * (s->ny + 1);
     double *kx = k, *ky = k + s->nx;
     for (size_t i = 0; i < s->nx; i++)
         kx[i] = ts__geo_k(s->x[i + 1] - s->x[i], s->ax[i]);
     for (size_t j = 0; j < s->ny; j++)
         ky[j] = ts__geo_k(s->y[j + 1] - s->y[j], s->ay[j]);
-    for (size_t n = 0; n < nn; n++) {
-        size_t i = n % np, j = n / np;
-        double lo = -(double)INFINITY, hi = (double)INFINITY;
-        double g[2] = {0.0, 0.0}, pp[2] = {0.0, 0.0}, qq[2] = {0.0, 0.0};
-        int per_patch = s->shape == TS_SURFACE_GRIDS;
-        for (int side = 0; side < 2 && !per_patch; side++) /* the node's gaps, the same for its patches */
-            if (side ? s->has_upper : s->has_lower)
-                node_gap(s, n, side, 0, 0, &g[side], &pp[side], &qq[side]);
-        for (int cx = 0; cx < 2; cx++) {
-            for (int cy = 0; cy < 2; cy++) {
-                /* patch (i - cx, j - cy); the node is its corner (cx, cy) */
-                if ((cx && i == 0) || (!cx && i == s->nx) || (cy && j == 0) ||
-                    (!cy && j == s->ny))
+    int per_patch = s->shape == TS_SURFACE_GRIDS;
+    for (size_t j = 0, n = 0; j <= s->ny; j++) {
+        for (size_t i = 0; i <= s->nx; i++, n++) {
+            double lo = -(double)INFINITY, hi = (double)INFINITY;
+            double g[2] = {0.0, 0.0}, pp[2] = {0.0, 0.0}, qq[2] = {0.0, 0.0};
+            /* the node's gaps, the same for its patches */
+            for (int side = 0; side < 2 && !per_patch; side++)
+                if (side ? s->has_upper : s->has_lower)
+                    node_gap(s, n, side, 0, 0, &g[side], &pp[side], &qq[side]);
+            for (int cx = 0; cx < 2; cx++) {
+                if (cx ? i == 0 : i == s->nx)
                     continue;
-                size_t pi = i - (size_t)cx, pj = j - (size_t)cy;
-                double ux = kx[pi], uy = ky[pj];
-                double sx = cx ? -1.0 : 1.0, sy = cy ? -1.0 : 1.0;
-                for (int side = 0; side < 2; side++) {
-                    if (!(side ? s->has_upper : s->has_lower))
+                for (int cy = 0; cy < 2; cy++) {
+                    /* patch (i - cx, j - cy); the node is its corner (cx, cy) */
+                    if (cy ? j == 0 : j == s->ny)
                         continue;
-                    if (per_patch) /* a field's slopes depend on the patch (§11.7) */
-                        node_gap(s, n, side, pi, pj, &g[side], &pp[side], &qq[side]);
-                    double F = g[side] + sx * ux * pp[side] + sy * uy * qq[side];
-                    double c = (side ? -1.0 : 1.0) * sx * sy * ux * uy; /* c r >= -F/2 */
-                    if (c > 0.0)
-                        lo = fmax(lo, -0.5 * F / c);
-                    if (c < 0.0)
-                        hi = fmin(hi, -0.5 * F / c);
+                    size_t pi = i - (size_t)cx, pj = j - (size_t)cy;
+                    double ux = kx[pi], uy = ky[pj];
+                    double sx = cx ? -1.0 : 1.0, sy = cy ? -1.0 : 1.0;
+                    for (int side = 0; side < 2; side++) {
+                        if (!(side ? s->has_upper : s->has_lower))
+                            continue;
+                        if (per_patch) /* a field's slopes depend on the patch (§11.7) */
+                            node_gap(s, n, side, pi, pj, &g[side], &pp[side], &qq[side]);
+                        double F = g[side] + sx * ux * pp[side] + sy * uy * qq[side];
+                        double c = (side ? -1.0 : 1.0) * sx * sy * ux * uy; /* c r >= -F/2 */
+                        if (c > 0.0)
+                            lo = max_of(lo, -0.5 * F / c);
+                        if (c < 0.0)
+                            hi = min_of(hi, -0.5 * F / c);
+                    }
                 }
             }
+            s->r[n] = s->r[n] < lo ? lo : (s->r[n] > hi ? hi : s->r[n]);
         }
-        s->r[n] = s->r[n] < lo ? lo : (s->r[n] > hi ? hi : s->r[n]);
     }
 }
 
@@ -496,28 +592,43 @@ static int patch_inside(const ts_surface *s, size_t c, const double B[16])
  * on or across a side, raise a^x and a^y of its column and row tenfold (at
  * most REPAIR_ROUNDS times, a <= 1e300) and clamp the twists again, until
  * every patch is proven; else TS_ERR_INFEASIBLE at the first patch that is
- * not.  Each net is formed once per round (ts__surf_patch).  flag: nx + ny
- * scratch doubles. */
+ * not.  Each net is formed once per round (ts__surf_patch).  flag: 3 (nx +
+ * ny) scratch doubles. */
 #define REPAIR_ROUNDS 12
 static ts_status repair(ts_surface *s, double *flag, ts_error *err)
 {
     size_t nx = s->nx, ny = s->ny;
     /* fields: the certificate of §11.7 failing is no proof of infeasibility */
     ts_status fail = s->shape == TS_SURFACE_GRIDS ? TS_ERR_UNPROVEN : TS_ERR_INFEASIBLE;
+    /* constant sides: ts__surf_gaps gives B − c (c − B) with guard 0, whose
+     * sign is that of B − c for finite B: compared directly */
+    const ts_plane *lo = s->has_lower ? &s->lower : NULL, *up = s->has_upper ? &s->upper : NULL;
+    int constant = s->shape != TS_SURFACE_GRIDS && !(lo && sloped(lo)) && !(up && sloped(up));
+    double *ks = flag + nx + ny; /* each interval's k at its ends (ts__surf_ks), per round */
+    double cl = lo ? lo->c : -(double)INFINITY, cu = up ? up->c : (double)INFINITY;
     for (int round = 0;; round++) {
         size_t bad = SIZE_MAX;
-        for (size_t k = 0; k < nx + ny; k++)
+        for (size_t k = 0; k < nx + ny; k++) {
             flag[k] = 0.0;
-        for (size_t c = 0; c < nx * ny; c++) {
+            ts__surf_ks(s, k >= nx, k < nx ? k : k - nx, ks + 2 * k);
+        }
+        for (size_t c = 0, i = 0, j = 0; c < nx * ny;
+             c++, i = i + 1 == nx ? 0 : i + 1, j += i == 0) {
             double B[16];
-            ts__surf_patch(s, c % nx, c / nx, B);
-            for (size_t k = 0; k < 16; k++)
-                if (!isfinite(B[k]))
-                    return ts__fail(err, TS_ERR_NONFINITE, c, TS_WHERE_INTERVAL);
-            if (bad == SIZE_MAX || flag[c % nx] == 0.0 || flag[nx + c / nx] == 0.0) {
-                if (!patch_inside(s, c, B)) {
+            ts__surf_patch_k(s, i, j, ks + 2 * i, ks + 2 * (nx + j), B);
+            double zero = 0.0, mn = B[0], mx = B[0]; /* zero: NaN unless every B[k] is finite */
+            for (size_t k = 0; k < 16; k++) {
+                zero += 0.0 * B[k];
+                mn = B[k] < mn ? B[k] : mn;
+                mx = B[k] > mx ? B[k] : mx;
+            }
+            int in = mn >= cl && mx <= cu;
+            if (zero != 0.0)
+                return ts__fail(err, TS_ERR_NONFINITE, c, TS_WHERE_INTERVAL);
+            if (bad == SIZE_MAX || flag[i] == 0.0 || flag[nx + j] == 0.0) {
+                if (!(constant ? in : patch_inside(s, c, B))) {
                     bad = bad == SIZE_MAX ? c : bad;
-                    flag[c % nx] = flag[nx + c / nx] = 1.0;
+                    flag[i] = flag[nx + j] = 1.0;
                 }
             }
         }
@@ -565,7 +676,7 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
     ts_status st = check_options(o, err);
     if (st != TS_OK)
         return st;
-    /* 4 (nx+1)(ny+1) + 6 max(nx+1, ny+1) doubles <= 32 (nx+1)(ny+1) */
+    /* 4 (nx+1)(ny+1) + 10 max(nx+1, ny+1) doubles <= 32 (nx+1)(ny+1) */
     if (ny_points > SIZE_MAX / 32 / sizeof(double) / nx_points)
         return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
     if ((st = check_axis(x, nx_points, err)) != TS_OK ||
@@ -575,8 +686,7 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
     if (grids && (st = check_grids(o, x, nx_points, y, ny_points, err)) != TS_OK)
         return st;
     size_t nx = nx_points - 1, ny = ny_points - 1, nn = nx_points * ny_points;
-    size_t len = nx_points > ny_points ? nx_points : ny_points;
-    size_t total = nx_points + ny_points + 4 * nn + nx + ny + 2 * len;
+    size_t total = nx_points + ny_points + 4 * nn + nx + ny + 3 * (nx_points + ny_points);
     ts_surface *s = ts__calloc(1, sizeof *s);
     double *blk = s ? ts__alloc_block(total * sizeof(double)) : NULL;
     if (!blk) {
@@ -639,7 +749,8 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
             s->ay[j] = o->alpha + o->beta;
     } else {
         touch_slopes(s);
-        if ((st = scheme_a(s, o, 0, err)) != TS_OK || (st = scheme_a(s, o, 1, err)) != TS_OK)
+        if (grids ? (st = scheme_a(s, o, 0, err)) != TS_OK || (st = scheme_a(s, o, 1, err)) != TS_OK
+                  : (st = scheme_a_nodes(s, o, err)) != TS_OK)
             goto fail;
         clamp_twists(s, tmp);
     }

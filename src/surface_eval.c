@@ -94,12 +94,48 @@ static double into_region(const ts_surface *s, double x, double y, double v)
     return v;
 }
 
-/* Value (and partials when zx/zy) at a point known to be on the grid. */
-static void eval_at(const ts_surface *s, double x, double y, ts_surface_cursor *cur, double *z,
-                    double *zx, double *zy)
+/* ts__search (the same interval and cursor), its binary search without
+ * branches on the data: scattered queries mispredict none.  *hit (if not
+ * NULL): try the cursor only if the previous query's interval was the
+ * cursor's or the next, and say whether this one's was (the interval is
+ * unique and the cursor ends on it either way). */
+static size_t find(const double *t, size_t n, double v, ts_cursor *cur, int *hit)
 {
-    size_t i = ts__search(s->x, s->nx, x, cur ? &cur->x : NULL);
-    size_t j = ts__search(s->y, s->ny, y, cur ? &cur->y : NULL);
+    size_t was = cur ? cur->interval : n, i = !hit || *hit ? was : n;
+    if (hit)
+        *hit = 1;
+    if (i < n && t[i] <= v) {
+        if (v < t[i + 1] || i + 1 == n)
+            return i;
+        if (v < t[i + 2] || i + 2 == n) {
+            cur->interval = i + 1;
+            return i + 1;
+        }
+    }
+    /* the largest i < n with t[i] <= v lies in [lo, lo + len) */
+    size_t lo = 0, len = n;
+    while (len > 1) {
+        size_t half = len / 2;
+#if defined(__GNUC__) /* both knots the next step may read: in flight together */
+        __builtin_prefetch(t + lo + (len - half) / 2);
+        __builtin_prefetch(t + lo + half + (len - half) / 2);
+#endif
+        lo = t[lo + half] <= v ? lo + half : lo;
+        len -= half;
+    }
+    if (cur)
+        cur->interval = lo;
+    if (hit)
+        *hit = lo == was || lo == was + 1;
+    return lo;
+}
+
+/* Value (and partials when zx/zy) at a point known to be on the grid. */
+static void eval_at(const ts_surface *s, double x, double y, ts_surface_cursor *cur, int *hit,
+                    double *z, double *zx, double *zy)
+{
+    size_t i = find(s->x, s->nx, x, cur ? &cur->x : NULL, hit);
+    size_t j = find(s->y, s->ny, y, cur ? &cur->y : NULL, hit ? hit + 1 : NULL);
     double Ax[4], Ay[4], dAx[4], dAy[4];
     int want = zx || zy;
     ts__surf_basis(s->x, s->ax, i, s->form, x, Ax, want ? dAx : NULL);
@@ -138,7 +174,7 @@ ts_status ts_surface_eval(const ts_surface *s, double x, double y, ts_surface_cu
     if (!inside(s->x, s->nx, x) || !inside(s->y, s->ny, y))
         return TS_ERR_DOMAIN;
     double v;
-    eval_at(s, x, y, cur, &v, zx, zy);
+    eval_at(s, x, y, cur, NULL, &v, zx, zy);
     if (z)
         *z = v;
     return TS_OK;
@@ -151,11 +187,12 @@ ts_status ts_surface_eval_batch(const ts_surface *s, const double *xq, const dou
     if (!s || (m > 0 && (!xq || !yq || !zq)))
         return ts__fail(err, TS_ERR_NULL, TS_NO_INDEX, TS_WHERE_NONE);
     ts_surface_cursor cur = TS_SURFACE_CURSOR_INIT;
+    int hit[2] = {1, 1};
     ts_status st = TS_OK;
     for (size_t n = 0; n < m; n++) {
         double *px = zxq ? zxq + n : NULL, *py = zyq ? zyq + n : NULL;
         if (inside(s->x, s->nx, xq[n]) && inside(s->y, s->ny, yq[n])) {
-            eval_at(s, xq[n], yq[n], &cur, zq + n, px, py);
+            eval_at(s, xq[n], yq[n], &cur, hit, zq + n, px, py);
             continue;
         }
         zq[n] = (double)NAN;

@@ -37,18 +37,13 @@ void ts__surf_basis(const double *t, const double *a, size_t i, ts_form form, do
     double h = t[i + 1] - t[i];
     double u = (v - t[i]) / h, w = (t[i + 1] - v) / h; /* from the nearer end: exact knots */
     int right = u > 0.5;
-    double phi, s, c;
+    double r = ts__pick(right, w, u), phi;
     if (form == TS_FORM_GEOMETRIC)
-        phi = ts__geo_solve(ts__kappa(a[i]), right ? w : u);
+        phi = ts__geo_solve(ts__kappa(a[i]), r);
     else
-        phi = TS_HALF_PI * (right ? w : u);
-    s = sin(phi);
-    c = cos(phi);
-    if (right) { /* θ = π/2 − φ */
-        double tmp = s;
-        s = c;
-        c = tmp;
-    }
+        phi = TS_HALF_PI * r;
+    double sp = sin(phi), cp = cos(phi);
+    double s = ts__pick(right, cp, sp), c = ts__pick(right, sp, cp); /* right: θ = π/2 − φ */
     ts__basis(s, c, A);
     if (dA) {
         double D[4];

@@ -717,6 +717,16 @@ static void test_errors(void)
     /* the same on the last row (the patch below it is named) */
     double zl[9] = {4, 4, 4, 1, 1, 1, 4, 1e-310, 1};
     CHECK(ts_surface_new(x, 3, x, 3, zl, &o, &s, &e) == TS_ERR_INFEASIBLE && e.index == 3);
+    /* and on the last column (zl transposed: along y, the patch left of it) */
+    double zlt[9] = {4, 1, 4, 4, 1, 1e-310, 4, 1, 1};
+    CHECK(ts_surface_new(x, 3, x, 3, zlt, &o, &s, &e) == TS_ERR_INFEASIBLE && e.index == 3);
+    /* two refusals along y on interval 0: column 2 rises from the tiny
+     * node (2, 0) (slope < 0 at its lower end) and column 0 through the
+     * tiny node (0, 1) (slope > 0 at the interval's upper end); the rows
+     * are flat to within the tiny values, so nothing along x.  The least
+     * line is named: patch (0, 0), not (1, 0) */
+    double zt[9] = {0, 0, 1e-310, 1e-310, 0, 0, 10, 10, 10};
+    CHECK(ts_surface_new(x, 3, x, 3, zt, &o, &s, &e) == TS_ERR_INFEASIBLE && e.index == 0);
     /* planes: lower only, upper only (valid) */
     ts_surface_options_init(&o);
     o.form = TS_FORM_GEOMETRIC;
