@@ -925,7 +925,8 @@ void ts__surf_ks(const ts_surface *s, int dir, size_t i, double u[2]);
 void ts__surf_patch_k(const ts_surface *s, size_t i, size_t j, const double ux[2],
                       const double uy[2], double B[16]);
 /* p x + q y + c to about one rounding of the result (error-free products
- * and sums, docs/method.md §11.3); *err (if not NULL) bounds its error. */
+ * and sums, docs/method.md §11.3); *err (if not NULL) bounds its error.
+ * x, y finite. */
 double ts__surf_plane_at(const ts_plane *pl, double x, double y, double *err);
 /* Control gaps of patch (i, j) with net B to a plane in local coordinates: G[16] =
  * sign (B − plane at the control abscissae), the plane taken at the patch's

@@ -1,0 +1,88 @@
+/* Surface options and reports at their edges (include/trigspline.h):
+ * a shape beyond the enum is TS_ERR_OPTION; the report of a surface
+ * between gridded fields that has an upper field only says so (no lower
+ * field, its numbers NaN) and is certified; ts_surface_certify checks a
+ * surface between fields against planes given by the caller, not against
+ * its fields; an alpha so large that raising a (times 10, docs/method.md
+ * §11.4) would pass 1e300 stops the repair with the status of the failing
+ * patch (TS_ERR_UNPROVEN for fields) rather than overflowing.  Expected
+ * values from the header's contract and closed forms: a field that peaks
+ * at 2 in the middle of a cell whose four nodes are 1 is above the surface
+ * there whatever a (the patch interpolates its nodes, and a surface of
+ * nodes 1 cannot reach 2 when its a grows: its control values tend to the
+ * nodes). */
+#include "th.h"
+#include "trigspline.h"
+
+#include <math.h>
+
+static const double X[2] = {0.0, 1.0}, Y[2] = {0.0, 1.0};
+
+int main(void)
+{
+    ts_surface_options o;
+    ts_surface *s = NULL;
+    ts_error e;
+    double z[4] = {1.0, 1.0, 1.0, 1.0};
+
+    TH_CASE("a shape beyond the enum");
+    {
+        ts_surface_options_init(&o);
+        o.shape = (ts_surface_shape)(TS_SURFACE_GRIDS + 1);
+        ts_status st = ts_surface_new(X, 2, Y, 2, z, &o, &s, &e);
+        CHECKF(st == TS_ERR_OPTION && !s, "%s", ts_status_name(st));
+    }
+
+    /* an upper field 2 everywhere, on a grid of its own */
+    double fx[3] = {-1.0, 0.5, 2.0}, fz2[9] = {2, 2, 2, 2, 2, 2, 2, 2, 2};
+    TH_CASE("the report of a surface under an upper field only");
+    {
+        ts_surface_options_init(&o);
+        o.shape = TS_SURFACE_GRIDS;
+        o.has_upper = 1;
+        o.upper_grid = (ts_grid_bound){fx, 3, fx, 3, fz2};
+        ts_status st = ts_surface_new(X, 2, Y, 2, z, &o, &s, &e);
+        CHECKF(st == TS_OK && s, "%s", ts_status_name(st));
+        if (s) {
+            ts_patch_report r;
+            ts_patch_report_init(&r, 1);
+            CHECK(ts_surface_report(s, 0, 0, &r) == TS_OK);
+            CHECK(!r.has_lower && r.has_upper && r.certified);
+            CHECK(isnan(r.proven_lower) && isnan(r.sampled_lower));
+            /* a constant surface 1 under a field 2: the gap is 1 up to rounding */
+            CHECKF(r.proven_upper > 0.0 && r.proven_upper <= 1.0, "%.17g", r.proven_upper);
+            CHECKF(fabs(r.sampled_upper - 1.0) < 1e-12, "%.17g", r.sampled_upper);
+
+            TH_CASE("ts_surface_certify of a surface between fields against planes");
+            ts_plane below = {0.0, 0.0, 0.5}, above = {0.0, 0.0, 0.75};
+            ts_patch_report_init(&r, 1);
+            CHECK(ts_surface_certify(s, &below, NULL, &r, &e) == TS_OK);
+            CHECK(r.has_lower && !r.has_upper && r.certified);
+            /* the constant plane 0.5 under the constant surface 1 */
+            CHECKF(fabs(r.sampled_lower - 0.5) < 1e-12, "%.17g", r.sampled_lower);
+            ts_patch_report_init(&r, 1);
+            CHECK(ts_surface_certify(s, NULL, &above, &r, &e) == TS_ERR_VIOLATED && e.index == 0);
+            CHECK(!r.certified);
+            ts_surface_free(s);
+            s = NULL;
+        }
+    }
+
+    TH_CASE("a repair that would raise a beyond 1e300");
+    {
+        double lz[9] = {0, 0, 0, 0, 2, 0, 0, 0, 0}; /* 2 at (0.5, 0.5) */
+        for (int big = 0; big < 2; big++) {
+            ts_surface_options_init(&o);
+            o.shape = TS_SURFACE_GRIDS;
+            o.has_lower = 1;
+            o.lower_grid = (ts_grid_bound){fx, 3, fx, 3, lz};
+            o.alpha = big ? 2e299 : 1.0;
+            ts_status st = ts_surface_new(X, 2, Y, 2, z, &o, &s, &e);
+            CHECKF(st == TS_ERR_UNPROVEN && e.index == 0 && e.where == TS_WHERE_INTERVAL && !s,
+                   "alpha %g: %s at %zu", o.alpha, ts_status_name(st), e.index);
+            ts_surface_free(s);
+            s = NULL;
+        }
+    }
+    return th_report("test_surface_edges");
+}
