@@ -84,5 +84,28 @@ int main(void)
             s = NULL;
         }
     }
+    TH_CASE("a node whose gap to the field equals the cell certificate's guard");
+    {
+        /* geometric form, a field 0 on one cell covering the data: the
+         * guard is e_F + 2 eps max(|B| + |b|) = 8*2^-1074 + 2^-51, which
+         * rounds to 2^-51 (the nodes 1 the largest control values); a node
+         * 2^-51 above the field is above it (decided) but its gap is not
+         * above the guard, so no a certifies the patch: TS_ERR_UNPROVEN */
+        double fz[4] = {0, 0, 0, 0}, fg[2] = {-1.0, 2.0};
+        for (int corner = 0; corner < 4; corner++) {
+            double zc[4] = {1, 1, 1, 1};
+            zc[corner] = 0x1p-51;
+            ts_surface_options_init(&o);
+            o.form = TS_FORM_GEOMETRIC;
+            o.shape = TS_SURFACE_GRIDS;
+            o.has_lower = 1;
+            o.lower_grid = (ts_grid_bound){fg, 2, fg, 2, fz};
+            ts_status st = ts_surface_new(X, 2, Y, 2, zc, &o, &s, &e);
+            CHECKF(st == TS_ERR_UNPROVEN && e.index == 0 && !s, "corner %d: %s at %zu", corner,
+                   ts_status_name(st), e.index);
+            ts_surface_free(s);
+            s = NULL;
+        }
+    }
     return th_report("test_surface_edges");
 }
