@@ -30,7 +30,7 @@ static double near_to(double a)
 {
     switch (th_below(5)) {
     case 0: return a;
-    case 1: return nextafter(a, th_chance(0.5) ? INFINITY : -INFINITY);
+    case 1: return nextafter(a, th_chance(0.5) ? (double)INFINITY : -(double)INFINITY);
     case 2: return 0.0;
     case 3: return a * (1.0 + ldexp(th_range(-1.0, 1.0), -(int)th_below(60)));
     default: return pick();
