@@ -10,10 +10,20 @@
  * at 2 in the middle of a cell whose four nodes are 1 is above the surface
  * there whatever a (the patch interpolates its nodes, and a surface of
  * nodes 1 cannot reach 2 when its a grows: its control values tend to the
- * nodes). */
+ * nodes).
+ *
+ * A value of a surface between fields that evaluation puts within the
+ * field's rounding bound e_F of it (docs/method.md §11.5, §11.7): a constant
+ * surface z0 over a field that is the constant lev on the data's cell and 1
+ * on a far node (so e_F = 32 eps), z0 just above lev + the certificate's
+ * guard (found by sampling such pairs); at the point below it evaluates 7
+ * ulps under z0, within e_F of lev, where the exact side decides.  The
+ * value returned must be strictly above the field, which is lev on that
+ * cell exactly, and near z0. */
 #include "th.h"
 #include "trigspline.h"
 
+#include <float.h>
 #include <math.h>
 
 static const double X[2] = {0.0, 1.0}, Y[2] = {0.0, 1.0};
@@ -106,6 +116,30 @@ int main(void)
             ts_surface_free(s);
             s = NULL;
         }
+    }
+    TH_CASE("values within the field's rounding bound of it");
+    {
+        const double lev = 0x1.9e63743024626p-17, z0 = 0x1.9e6374342462dp-17;
+        const double p = 0x1.50325e429de58p-1;
+        double gx[3] = {0, 1, 2}, gy[2] = {0, 1}, gz[6] = {lev, lev, 1, lev, lev, 1};
+        double zz[4] = {z0, z0, z0, z0};
+        ts_surface_options_init(&o);
+        o.form = TS_FORM_GEOMETRIC;
+        o.shape = TS_SURFACE_GRIDS;
+        o.has_lower = 1;
+        o.lower_grid = (ts_grid_bound){gx, 3, gy, 2, gz};
+        ts_status st = ts_surface_new(X, 2, Y, 2, zz, &o, &s, &e);
+        CHECKF(st == TS_OK && s, "%s", ts_status_name(st));
+        if (s) {
+            double v = 0.0, w = 0.0;
+            CHECK(ts_surface_eval(s, p, p, NULL, &v, NULL, NULL) == TS_OK);
+            CHECK(ts_surface_eval_grid(s, &p, 1, &p, 1, &w, &e) == TS_OK && w == v);
+            /* strictly above the field, and within 40 ulps of the constant
+             * surface (a few of evaluation, e_F = 32 eps of a move) */
+            CHECKF(v > lev && fabs(v - z0) <= 40.0 * DBL_EPSILON, "%a", v);
+        }
+        ts_surface_free(s);
+        s = NULL;
     }
     return th_report("test_surface_edges");
 }
