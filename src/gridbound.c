@@ -33,67 +33,10 @@ double ts__gb_value(const ts__gbound *g, double x, double y)
                       ts__search(g->y, g->ny - 1, y, NULL), x, y);
 }
 
-/* ---- expansions (Shewchuk): nonoverlapping, increasing magnitude, zeros
- * eliminated; exact while no product underflows or overflows ------------- */
-#define GB_TERMS 160
-
-/* h = e + b (h may be e) */
-static int grow(const double *e, int n, double b, double *h)
-{
-    int k = 0;
-    double Q = b;
-    for (int i = 0; i < n; i++) {
-        double ei = e[i], s = Q + ei, bv = s - Q, hh = (Q - (s - bv)) + (ei - bv);
-        Q = s;
-        if (hh != 0.0)
-            h[k++] = hh;
-    }
-    if (Q != 0.0 || k == 0)
-        h[k++] = Q;
-    return k;
-}
-
-/* h = e b (h not e) */
-static int scale(const double *e, int n, double b, double *h)
-{
-    int k = 0;
-    double Q = e[0] * b, hh = fma(e[0], b, -Q);
-    if (hh != 0.0)
-        h[k++] = hh;
-    for (int i = 1; i < n; i++) {
-        double p1 = e[i] * b, p0 = fma(e[i], b, -p1);
-        double s = Q + p0, bv = s - Q;
-        hh = (Q - (s - bv)) + (p0 - bv);
-        if (hh != 0.0)
-            h[k++] = hh;
-        Q = p1 + s;
-        hh = s - (Q - p1);
-        if (hh != 0.0)
-            h[k++] = hh;
-    }
-    if (Q != 0.0 || k == 0)
-        h[k++] = Q;
-    return k;
-}
-
-/* h = e f (m <= 2 components in f; h not e) */
-static int product(const double *e, int n, const double *f, int m, double *h)
-{
-    double t[GB_TERMS];
-    int k = scale(e, n, f[0], h);
-    for (int j = 1; j < m; j++) {
-        int nt = scale(e, n, f[j], t);
-        for (int l = 0; l < nt; l++)
-            k = grow(h, k, t[l], h);
-    }
-    return k;
-}
-
-/* a − b exactly as an expansion of at most two terms */
+/* a − b exactly as an expansion of two components (TwoSum) */
 static int diff(double a, double b, double *h)
 {
-    double e[1] = {a};
-    return grow(e, 1, -b, h);
+    return ts__exp_grow(&a, 1, -b, h);
 }
 
 /* zero, or 2^-300 <= |v| <= 2^300: then every product of three values and
@@ -117,27 +60,25 @@ int ts__gb_side(const ts__gbound *g, double x, double y, double v)
     for (int k = 0; k < 7; k++)
         if (!tame(in[k]))
             return 2;
-    double acc[GB_TERMS], wx[2][2], wy[2][2], dz[2], t1[8], t2[GB_TERMS];
-    int nwx[2], nwy[2], na = 0;
-    nwx[0] = diff(X[1], x, wx[0]);
-    nwx[1] = diff(x, X[0], wx[1]);
-    nwy[0] = diff(Y[1], y, wy[0]);
-    nwy[1] = diff(y, Y[0], wy[1]);
+    /* components: 2 per difference, 8 per product of two, 32 per corner */
+    double acc[4 * 32], wx[2][2], wy[2][2], dz[2], t1[8], t2[32];
+    int na = 0;
+    diff(X[1], x, wx[0]);
+    diff(x, X[0], wx[1]);
+    diff(Y[1], y, wy[0]);
+    diff(y, Y[0], wy[1]);
     for (int cy = 0; cy < 2; cy++)
         for (int cx = 0; cx < 2; cx++) {
             double zc = g->z[(j + (size_t)cy) * g->nx + i + (size_t)cx];
             if (!tame(zc))
                 return 2;
             int nd = diff(v, zc, dz);
-            int n1 = product(dz, nd, wx[cx], nwx[cx], t1);
-            int n2 = product(t1, n1, wy[cy], nwy[cy], t2);
+            int n1 = ts__exp_product(dz, nd, wx[cx], 2, t1);
+            int n2 = ts__exp_product(t1, n1, wy[cy], 2, t2);
             for (int l = 0; l < n2; l++)
-                na = na ? grow(acc, na, t2[l], acc) : (acc[0] = t2[l], 1);
+                na = ts__exp_grow(acc, na, t2[l], acc);
         }
-    for (int l = na - 1; l >= 0; l--)
-        if (acc[l] != 0.0)
-            return (acc[l] > 0.0) - (acc[l] < 0.0);
-    return 0;
+    return ts__exp_sign(acc, na);
 }
 
 /* The p-th place along an axis (p = i0 .. i1 + 1): a, the grid lines strictly

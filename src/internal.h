@@ -10,6 +10,7 @@
  *       numfmt.c    shortest round-trip decimal form of a double
  *       basis.c     the basis, its derivatives and integrals, interval search
  *       trigmin.c   exact minimum of a trigonometric polynomial minus a line
+ *       expansion.c exact sums and products of doubles (expansions), exact signs
  *   L1  slopes.c    slope estimates
  *       controls.c  control values of every form
  *       geometric.c the geometric form: X(θ) = x, value, integral, bound
@@ -639,6 +640,41 @@ TS_INLINE int ts__trig_min_ends(double c0, double c1, double c2, double c3, doub
 void ts__basis_t(double t, double A[4]);
 double ts__theta_of(double t);
 
+/* ---- expansion.c (docs/method.md §5.8, §11.3, §11.7, §13.4) ---------- */
+/* Exact sums and products of doubles as expansions (Shewchuk): e[0..n)
+ * nonoverlapping, of increasing magnitude, zero components kept (their
+ * lengths fixed by n).  Exact while no sum overflows and no product
+ * underflows or overflows (the callers bound their inputs' range).
+ * h = e + b: n + 1 components (h may be e). */
+int ts__exp_grow(const double *e, int n, double b, double *h);
+/* h = e b: 2n components (h not e; n >= 1). */
+int ts__exp_scale(const double *e, int n, double b, double *h);
+/* h = e f: 2nm components (h not e; 1 <= n <= TS_EXP_PRODUCT_MAX, m >= 1). */
+#define TS_EXP_PRODUCT_MAX 16
+int ts__exp_product(const double *e, int n, const double *f, int m, double *h);
+/* The sign (−1, 0, 1) of the expansion e[0..n): that of its largest
+ * nonzero component. */
+int ts__exp_sign(const double *e, int n);
+/* The sign (−1, 0, 1) of the exact sum of v[0..n), n <= TS_EXACT_TERMS,
+ * each |v_j| <= 2^1020 (so that no partial sum overflows): Shewchuk's
+ * expansion sum (ts__exp_grow term by term, then ts__exp_sign).  The data
+ * checks' side of a line or plane (docs/method.md §5.8, §11.3) and the
+ * constraint records' certificates (§13.4, up to 32 terms). */
+#define TS_EXACT_TERMS 32
+int ts__exact_sign(const double *v, int n);
+/* sg times the two terms of a x = P + e (exact by fma) into v[0..2), for
+ * ts__exact_sign: returns 2, or 0 where P is beyond its range or so small
+ * (nonzero factors, |P| < 2^-960) that e is not exact. */
+TS_INLINE int ts__exact_product(double a, double x, double sg, double v[2])
+{
+    double P = a * x;
+    if (!(fabs(P) <= 0x1p1020) || (fabs(P) < 0x1p-960 && a != 0.0 && x != 0.0))
+        return 0;
+    v[0] = sg * P;
+    v[1] = sg * fma(a, x, -P);
+    return 2;
+}
+
 /* ==== L1 ============================================================ */
 
 /* ---- gridbound.c (docs/method.md §11.7) ------------------------------- */
@@ -847,26 +883,6 @@ ts_status ts__shape_begin(ts_spline *sp, const ts_spline_options *opt, const dou
                           ts_error *err);
 ts_status ts__shape_range(ts_spline *sp, const ts_spline_options *opt, int dir, size_t p0, size_t p1,
                           size_t i0, size_t i1, ts_error *err);
-/* The sign (−1, 0, 1) of the exact sum of v[0..n), n <= TS_EXACT_TERMS,
- * each |v_j| <= 2^1020 (so that no partial sum overflows): Shewchuk's
- * expansion sum (TwoSum keeps each rounding error; the largest nonzero
- * component of the nonoverlapping result has the sum's sign).  The data
- * checks' side of a line or plane (docs/method.md §5.8, §11.3) and the
- * constraint records' certificates (§13.4, up to 32 terms). */
-#define TS_EXACT_TERMS 32
-int ts__exact_sign(const double *v, int n);
-/* sg times the two terms of a x = P + e (exact by fma) into v[0..2), for
- * ts__exact_sign: returns 2, or 0 where P is beyond its range or so small
- * (nonzero factors, |P| < 2^-960) that e is not exact. */
-TS_INLINE int ts__exact_product(double a, double x, double sg, double v[2])
-{
-    double P = a * x;
-    if (!(fabs(P) <= 0x1p1020) || (fabs(P) < 0x1p-960 && a != 0.0 && x != 0.0))
-        return 0;
-    v[0] = sg * P;
-    v[1] = sg * fma(a, x, -P);
-    return 2;
-}
 
 /* ---- certificate.c (docs/method.md §4, §5) -------------------------------------- */
 /* The exact gaps of one interval (NaN where absent or not computed). */
@@ -960,7 +976,8 @@ void ts__surf_ks(const ts_surface *s, int dir, size_t i, double u[2]);
 void ts__surf_patch_k(const ts_surface *s, size_t i, size_t j, const double ux[2],
                       const double uy[2], double B[16]);
 /* p x + q y + c to about one rounding of the result (error-free products
- * and sums, docs/method.md §11.3); *err (if not NULL) bounds its error. */
+ * and sums, docs/method.md §11.3); *err (if not NULL) bounds its error.
+ * x, y finite. */
 double ts__surf_plane_at(const ts_plane *pl, double x, double y, double *err);
 /* Control gaps of patch (i, j) with net B to a plane in local coordinates: G[16] =
  * sign (B − plane at the control abscissae), the plane taken at the patch's

@@ -37,25 +37,6 @@ static double line_at(const ts_line *l, double x)
     return fma(l->m, x, l->c);
 }
 
-int ts__exact_sign(const double *v, int n)
-{
-    double e[TS_EXACT_TERMS];
-    int k = 0;
-    for (int j = 0; j < n; j++) {
-        double q = v[j];
-        for (int l = 0; l < k; l++) {
-            double s = q + e[l], z = s - q;
-            e[l] = (q - (s - z)) + (e[l] - z);
-            q = s;
-        }
-        e[k++] = q;
-    }
-    for (int l = k - 1; l >= 0; l--)
-        if (e[l] != 0.0)
-            return (e[l] > 0.0) - (e[l] < 0.0);
-    return 0;
-}
-
 /* sg times the terms of m x + c − Lh (Lh = line_at(l, x): its rounding
  * error) into v[0..3]: m x = p + e exactly (fma) where m x is 0 or far from
  * underflow, and every term within ts__exact_sign's range; else no terms

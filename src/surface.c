@@ -783,8 +783,8 @@ ts_form ts_surface_form(const ts_surface *s) { return s->form; }
 ts_surface_shape ts_surface_shape_of(const ts_surface *s) { return s->shape; }
 int ts_surface_certified(const ts_surface *s) { return s->certified; }
 
-static void report_patch(const ts_surface *s, size_t i, size_t j, const ts_plane *lower,
-                         const ts_plane *upper, ts_patch_report *rep)
+/* The patch's place, parameters and control values. */
+static void report_head(const ts_surface *s, size_t i, size_t j, ts_patch_report *rep)
 {
     rep->i = i;
     rep->j = j;
@@ -795,28 +795,38 @@ static void report_patch(const ts_surface *s, size_t i, size_t j, const ts_plane
     rep->ax = s->ax[i];
     rep->ay = s->ay[j];
     ts__surf_patch(s, i, j, rep->B);
+}
+
+/* A patch against the planes lower, upper (NULL: none). */
+static void report_patch(const ts_surface *s, size_t i, size_t j, const ts_plane *lower,
+                         const ts_plane *upper, ts_patch_report *rep)
+{
+    report_head(s, i, j, rep);
     rep->has_lower = lower != NULL;
     rep->has_upper = upper != NULL;
     int ok = lower || upper;
-    if (s->shape == TS_SURFACE_GRIDS && lower == &s->lower && upper == &s->upper) {
-        rep->has_lower = s->has_lower;
-        rep->has_upper = s->has_upper;
-        ok = 1;
-        if (s->has_lower)
-            ok &= ts__surf_certify_grid(s, i, j, &s->glo, 1, &rep->proven_lower,
-                                        &rep->sampled_lower, &rep->at_lower[0], &rep->at_lower[1]);
-        if (s->has_upper)
-            ok &= ts__surf_certify_grid(s, i, j, &s->gup, -1, &rep->proven_upper,
-                                        &rep->sampled_upper, &rep->at_upper[0], &rep->at_upper[1]);
-        rep->certified = ok;
-        return;
-    }
     if (lower)
         ok &= ts__surf_certify_patch(s, i, j, lower, 1, &rep->proven_lower, &rep->sampled_lower,
                                      &rep->at_lower[0], &rep->at_lower[1]);
     if (upper)
         ok &= ts__surf_certify_patch(s, i, j, upper, -1, &rep->proven_upper,
                                      &rep->sampled_upper, &rep->at_upper[0], &rep->at_upper[1]);
+    rep->certified = ok;
+}
+
+/* A patch of a surface between gridded fields against its own fields. */
+static void report_fields(const ts_surface *s, size_t i, size_t j, ts_patch_report *rep)
+{
+    report_head(s, i, j, rep);
+    rep->has_lower = s->has_lower;
+    rep->has_upper = s->has_upper;
+    int ok = 1;
+    if (s->has_lower)
+        ok &= ts__surf_certify_grid(s, i, j, &s->glo, 1, &rep->proven_lower, &rep->sampled_lower,
+                                    &rep->at_lower[0], &rep->at_lower[1]);
+    if (s->has_upper)
+        ok &= ts__surf_certify_grid(s, i, j, &s->gup, -1, &rep->proven_upper,
+                                    &rep->sampled_upper, &rep->at_upper[0], &rep->at_upper[1]);
     rep->certified = ok;
 }
 
@@ -849,7 +859,7 @@ ts_status ts_surface_report(const ts_surface *s, size_t i, size_t j, ts_patch_re
     if (i >= s->nx || j >= s->ny)
         return TS_ERR_INDEX;
     if (s->shape == TS_SURFACE_GRIDS) /* the fields: has_lower / has_upper say which */
-        report_patch(s, i, j, &s->lower, &s->upper, rep);
+        report_fields(s, i, j, rep);
     else
         report_patch(s, i, j, s->has_lower ? &s->lower : NULL, s->has_upper ? &s->upper : NULL,
                      rep);

@@ -34,12 +34,13 @@ static int strictly_beyond(const ts_plane *pl, double x, double y, double v, dou
 }
 
 /* v moved strictly beyond a plane (sg = +1: above the lower, −1: below the
- * upper) where rounding put it on or across it: the nearest doubles beyond
- * the plane's rounded value, then that value moved by 4 of its error
+ * upper) where rounding put it on or across it, or where its side cannot
+ * be decided (a term beyond the exact sum's range): the nearest doubles
+ * beyond the plane's rounded value, then that value moved by 4 of its error
  * bounds (docs/method.md §11.5, "Values inside the region"). */
 static double beyond_plane(const ts_plane *pl, double x, double y, double v, double sg)
 {
-    if (strictly_beyond(pl, x, y, v, sg) != 0)
+    if (strictly_beyond(pl, x, y, v, sg) == 1)
         return v;
     double err, r = ts__surf_plane_at(pl, x, y, &err);
     for (int k = 0; k < 4; k++) {

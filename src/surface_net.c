@@ -162,10 +162,12 @@ void ts__surf_patch(const ts_surface *s, size_t i, size_t j, double B[16])
 
 double ts__surf_plane_at(const ts_plane *pl, double x, double y, double *err)
 {
-    /* a constant plane at a finite point: every term below but s2 is ±0
-     * and their sum +0, so v = c + 0 (c, or +0 for c = ±0) and the error
-     * bound 2ε|v| + 4·2^-1074: the same bits without the products */
-    if (pl->p == 0.0 && pl->q == 0.0 && fabs(x) <= DBL_MAX && fabs(y) <= DBL_MAX) {
+    /* a constant plane (x, y finite: every caller passes a node, a patch
+     * corner or a point inside the grid, whose knots are checked finite):
+     * every term below but s2 is ±0 and their sum +0, so v = c + 0 (c, or
+     * +0 for c = ±0) and the error bound 2ε|v| + 4·2^-1074: the same bits
+     * without the products */
+    if (pl->p == 0.0 && pl->q == 0.0) {
         double v = pl->c + 0.0;
         if (err)
             *err = 2.0 * DBL_EPSILON * fabs(v) + 4.0 * DBL_TRUE_MIN;

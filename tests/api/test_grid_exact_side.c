@@ -6,7 +6,16 @@
  * weights 1/3, 2/3: a handful of roundings, each at most half an ulp of
  * values below 1, so at most 4 ulps from the exact bilinear value, while 8
  * ulps lie well inside the field's rounding bound (32 ε max|z| = 115 ulps of
- * the value here), where only the exact test decides. */
+ * the value here), where only the exact test decides.
+ *
+ * Where an input of that exact test is nonzero and outside [2^-300, 2^300]
+ * in magnitude, its products are not proven exact: the side is undecided
+ * and the node refused as across (docs/method.md §11.7; TS_ERR_SIDE at that
+ * node), although each node below is above its field: a node 2^-1000 above
+ * a field 0 there, a node 2 ulps above a field 1 at x = 2^301, and a node 2
+ * ulps above a field 1 in a cell with a corner value 2^-400 (every other
+ * input of that node in range).  Each lies within the field's rounding
+ * bound 2 e_F = 64 ε max|z| + 16·2^-1074 of it. */
 #include "trigspline.h"
 #include "th.h"
 
@@ -44,6 +53,33 @@ int main(void)
                 CHECKF(st == TS_ERR_SIDE && e.index == 4 && !s, "%s", ts_status_name(st));
             else
                 CHECKF(st != TS_ERR_SIDE, "%s at %zu", ts_status_name(st), e.index);
+            ts_surface_free(s);
+        }
+    }
+    TH_CASE("inputs outside 2^-300 .. 2^300 near a node: undecided, refused");
+    {
+        const double u = 0x1p-52; /* 1 ulp of 1 upwards */
+        struct {
+            const char *what;
+            double x[2], f[4], z[4];
+            size_t at;
+        } c[3] = {
+            {"a value below 2^-300", {0, 1}, {0, 1, 1, 1}, {0x1p-1000, 2, 2, 2}, 0},
+            {"a coordinate above 2^300", {0x1p301, 0x1p302}, {1, 1, 1, 1}, {2, 1 + 2 * u, 2, 2}, 1},
+            {"a corner of the field's cell below 2^-300", {0, 1}, {1, 1, 1, 0x1p-400},
+             {1 + 2 * u, 2, 2, 0.5}, 0},
+        };
+        for (int k = 0; k < 3; k++) {
+            TH_CASE(c[k].what);
+            ts_surface_options_init(&o);
+            o.shape = TS_SURFACE_GRIDS;
+            o.has_lower = 1;
+            o.lower_grid = (ts_grid_bound){c[k].x, 2, c[k].x, 2, c[k].f};
+            ts_surface *s = NULL;
+            ts_error e;
+            ts_status st = ts_surface_new(c[k].x, 2, c[k].x, 2, c[k].z, &o, &s, &e);
+            CHECKF(st == TS_ERR_SIDE && e.index == c[k].at && e.where == TS_WHERE_POINT && !s,
+                   "%s at %zu", ts_status_name(st), e.index);
             ts_surface_free(s);
         }
     }

@@ -6,7 +6,15 @@
  * planes not decidably ordered at a node, TS_ERR_LINES).  Expected values
  * from the header's contract: which node, which status.  Every node here
  * is exactly on the plane in real arithmetic (p x + c with powers of two),
- * so no answer but "on the plane" would be right. */
+ * so no answer but "on the plane" would be right.
+ *
+ * Evaluation near such a plane (docs/method.md §11.5, "Values inside the
+ * region"): a certified surface under the constant upper plane 2^1020 (and
+ * 2^1021, the same data times 2), nodes 17 to 944 units of 2^967 below it
+ * (z = c − m 2^(e−53)), evaluates by rounding to c + 1 ulp at some points of
+ * a 300 x 300 grid, where the exact sign cannot be formed (|z| or |c| above
+ * 2^1020).  Every value returned must still be strictly below the plane:
+ * for a constant plane that is z < c, compared exactly in double. */
 #include "th.h"
 #include "trigspline.h"
 
@@ -75,6 +83,39 @@ int main(void)
         ts_plane lo = {T, 0, 0}, up = {H, 0, H};
         const double z[4] = {H / 2, T, H / 2, T};
         CHECK(build(z, 1, lo, 1, up, &e) == TS_ERR_LINES && e.index == 1);
+    }
+    TH_CASE("values near a plane beyond the range stay inside the region");
+    {
+        static const int m[16] = {23, 328, 22, 517, 21, 274, 238, 944,
+                                  128, 17, 17, 653, 881, 17, 17, 610};
+        double x4[4] = {0, 1, 2, 3}, q[300];
+        for (int k = 0; k < 300; k++)
+            q[k] = 3.0 * k / 299.0;
+        for (int e2 = 1020; e2 <= 1021; e2++) {
+            double c = ldexp(1.0, e2), z[16];
+            for (int k = 0; k < 16; k++)
+                z[k] = c - m[k] * ldexp(1.0, e2 - 53);
+            ts_surface_options o;
+            ts_surface_options_init(&o);
+            o.form = TS_FORM_GEOMETRIC;
+            o.shape = TS_SURFACE_PLANES;
+            o.has_upper = 1;
+            o.upper = (ts_plane){0, 0, c};
+            ts_surface *s = NULL;
+            ts_status st = ts_surface_new(x4, 4, x4, 4, z, &o, &s, &e);
+            CHECKF(st == TS_OK && s, "2^%d: %s", e2, ts_status_name(st));
+            if (!s)
+                continue;
+            static double out[300 * 300];
+            CHECK(ts_surface_eval_grid(s, q, 300, q, 300, out, &e) == TS_OK);
+            size_t bad = 0;
+            for (size_t k = 0; k < 300 * 300; k++)
+                bad += !(out[k] < c);
+            CHECKF(bad == 0, "2^%d: %zu values not below the plane", e2, bad);
+            double v;
+            CHECK(ts_surface_eval(s, q[168], q[242], NULL, &v, NULL, NULL) == TS_OK && v < c);
+            ts_surface_free(s);
+        }
     }
     return th_report("test_surface_huge_planes");
 }
