@@ -204,6 +204,24 @@ static int failure_sentence(out *o, const data *d, const ts_constraint_failure *
             c->kind == TS_CONSTRAINT_LOWER ? "above" : "below");
         break;
     }
+    case TS_CONDITION_CURVATURE_SLOPE: {
+        size_t kc, iv;
+        double sl;
+        if (!ts__con_knot_conflict(d->c->x, d->c->f, n - 1, opt->constraints,
+                                   opt->n_constraints, fl->constraint, i, &kc, &iv, &sl))
+            return 0;
+        const ts_constraint *cc = &opt->constraints[kc];
+        int least = (cc->kind == TS_CONSTRAINT_CONVEX) == (iv + 1 == i);
+        point_xf(o, d, i);
+        put(o, ": constraint %zu (%s) needs a slope here of at %s the secant ", kc,
+            ts__vocab_name(TS_VOCAB_CONSTRAINT, (int)cc->kind), least ? "least" : "most");
+        num(o, (d->c->f[iv + 1] - d->c->f[iv]) / (d->c->x[iv + 1] - d->c->x[iv]));
+        put(o, " of the interval %s it, but the %s constraint allows at %s ",
+            iv + 1 == i ? "before" : "after", kind, least ? "most" : "least");
+        num(o, sl);
+        put(o, " there: no curve with a continuous slope meets both");
+        break;
+    }
     case TS_CONDITION_SECANT_SLOPE:
         if (!(i + 1 < n))
             return 0;

@@ -1068,6 +1068,12 @@ ts_status ts__con_prepare(const double *x, const double *f, size_t n, const ts_s
  * the sentence of TS_ERR_CONDITION (errmsg.c). */
 ts_status ts__con_conditions(const double *x, const double *f, size_t n,
                              const ts_spline_options *o, ts_constraint_failure *fail);
+/* docs/method.md §13.1 curvature-slope: record k's slope rule at knot j
+ * (its scope) against every convex / concave record's secant there: 1 when
+ * they exclude each other, *kc that record, *iv its interval (j − 1 or j),
+ * *slope the rule's slope (rounded); else 0.  x, f, cs validated. */
+int ts__con_knot_conflict(const double *x, const double *f, size_t n, const ts_constraint *cs,
+                          size_t nc, size_t k, size_t j, size_t *kc, size_t *iv, double *slope);
 #ifdef TS_TEST_HOOKS
 /* errmsg.c: the sentence ts_error_message gives for the failure record fl
  * of the data checks, for any record (tests): ctx with x, f, n_points and
