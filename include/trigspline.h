@@ -1562,7 +1562,9 @@ TS_API void ts_error_context_init(ts_error_context *ctx);
  *                        must be strictly increasing"
  *   TS_ERR_WIDTH        "B: the width W overflows a double" (or "is below the smallest
  *                        normal double")
- *   TS_ERR_TOO_LARGE    "B: total T gives the mean M, too large in magnitude"
+ *   TS_ERR_TOO_LARGE    "B: total T gives the mean M, too large in magnitude" /
+ *                        "B: total T over the width W: the integral of the rates (the
+ *                        lower bound L times the width included) overflows a double"
  *   TS_ERR_NEGATIVE     "B: total T is negative; totals must be >= 0"
  *   TS_ERR_INFEASIBLE   "B: total T gives the mean M, outside the rate bounds [L, H]" /
  *                        "B and bin I+1 [X1, X2]: the means M1 and M2 are too far apart

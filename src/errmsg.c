@@ -3,6 +3,7 @@
  * Bookkeeping only; the numbers are printed by numfmt.c. */
 #include "internal.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -840,9 +841,23 @@ static int histo_sentence(out *o, const ts_error_context *c, const ts_error *e)
             return 1;
         }
         if (e->status == TS_ERR_TOO_LARGE) {
-            put(o, " gives the mean ");
-            num(o, m);
-            put(o, ", too large in magnitude");
+            double lo = opt ? opt->lo : 0.0;
+            if (!(fabs(m - lo) <= TS__HISTO_MEAN_MAX)) {
+                put(o, " gives the mean ");
+                num(o, m);
+                put(o, ", too large in magnitude");
+                return 1;
+            }
+            /* the mean is within the limit: the bin's integral overflowed */
+            put(o, " over the width ");
+            num(o, c->x[i + 1] - c->x[i]);
+            put(o, ": the integral of the rates");
+            if (lo != 0.0) {
+                put(o, " (the lower bound ");
+                num(o, lo);
+                put(o, " times the width included)");
+            }
+            put(o, " overflows a double");
             return 1;
         }
         if (!pair) {

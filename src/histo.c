@@ -15,9 +15,7 @@
 #define HW0 0.16572750131886840872 /* 5/2 − 22/(3π) */
 /* §12.4: limits scaled by this keep every rounded control value inside */
 #define HSHRINK (1.0 - 8.0 * DBL_EPSILON)
-/* §12.6: the largest |mean − lo| accepted (control values stay below
- * 6 times it, TS_VALUE_MAX) */
-#define HMEAN_MAX 0x1p1019
+#define HMEAN_MAX TS__HISTO_MEAN_MAX /* §12.6: the largest |mean − lo| accepted */
 #define HP 4          /* pieces per bin */
 #define HB (4 * HP)   /* control values per bin */
 #define HCHUNK 64     /* bins listed at a time (no branch on the data) */

@@ -1057,6 +1057,10 @@ void ts__certify_done(ts_spline *sp, const ts_spline_options *opt);
 /* Records of opt (n_constraints > 0) valid for n intervals: TS_ERR_NULL,
  * TS_ERR_OPTION (also a form other than geometric, a shape), TS_ERR_VERSION,
  * TS_ERR_NONFINITE, TS_ERR_UNSORTED, TS_ERR_LENGTH; fail (may be NULL) too. */
+/* §12.6: the largest |mean − lo| of a bin ts_histo_new accepts (control
+ * values stay below 6 times it, TS_VALUE_MAX); beyond, TS_ERR_TOO_LARGE
+ * (histo.c; the sentence of errmsg.c) */
+#define TS__HISTO_MEAN_MAX 0x1p1019
 ts_status ts__con_validate(const ts_spline_options *o, size_t n, ts_error *err,
                            ts_constraint_failure *fail);
 /* The data's necessary conditions (TS_ERR_CONDITION) and the slopes d[0..n]
