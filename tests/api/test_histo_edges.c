@@ -268,7 +268,7 @@ static void test_huge_means(void)
         ts_status ss = ts_histo_new(e, ts, n, &os, &hs, NULL);
         CHECKF(st == ss, "%s vs %s", ts_status_name(st), ts_status_name(ss));
         for (int q = 0; q <= 40 && h && hs; q++) {
-            double x = q == 40 ? e[n] : e[0] + (e[n] - e[0]) * q / 40.0, r, rs;
+            double x = q == 40 ? e[n] : e[0] + (e[n] - e[0]) * q / 40.0, r = 0.0, rs = 0.0;
             CHECK(ts_histo_eval(h, x, &r, NULL) == TS_OK && ts_histo_eval(hs, x, &rs, NULL) == TS_OK);
             CHECKF(r == ldexp(rs, k), "2^%d: x %.17g r %a, scaled %a", k, x, r, ldexp(rs, k));
             compared++;
