@@ -176,7 +176,7 @@ typedef enum ts_vocab {
     TS_VOCAB_BOUND = 10,     /* ts_bound: constant, polyline, spline */
     TS_VOCAB_CONDITION = 11, /* ts_condition: none, convex-data, concave-data, monotone-data,
                                 inside-bound, secant-slope, slope-conflict, unproven,
-                                touch-corner */
+                                touch-corner, curvature-slope */
     TS_VOCAB_COUNT_ = 12 /* not a vocabulary: their number */
 } ts_vocab;
 
@@ -700,7 +700,11 @@ TS_API ts_status ts_spline_certify(const ts_spline *s, const ts_line *lower, con
  *                      data point across a bound, or on a polyline's inner
  *                      breakpoint that turns into the region (lower: the
  *                      slope rises there; touch-corner), or on or within
- *                      rounding of a bound spline (not certified there).
+ *                      rounding of a bound spline (not certified there),
+ *                      or a knot where the slope a record allows (slope
+ *                      bound, monotone, a touched bound) lies beyond the
+ *                      secant a convex/concave record needs on its side
+ *                      (curvature-slope, index = point).
  *                      A bound may be touched: a constant one with slope 0
  *                      there (pointing into the region at the ends), a
  *                      polyline with the slope between those of its two
@@ -769,9 +773,14 @@ typedef enum ts_condition {
                                         (S' = Δ_i somewhere in it: mean value theorem) */
     TS_CONDITION_SLOPE_CONFLICT = 6, /* the slope ranges required at knot i are disjoint */
     TS_CONDITION_UNPROVEN = 7,       /* interval i: the search gave up, no proof of infeasibility */
-    TS_CONDITION_TOUCH_CORNER = 8    /* point i lies on a polyline bound at a breakpoint that
+    TS_CONDITION_TOUCH_CORNER = 8,   /* point i lies on a polyline bound at a breakpoint that
                                         turns towards the region (lower: the slope rises there):
                                         no C¹ curve on the bound's side passes through it */
+    TS_CONDITION_CURVATURE_SLOPE = 9 /* at knot i the slope the record allows (slope bound,
+                                        monotone, a bound the data touch) excludes the secant
+                                        side a convex / concave record on a neighbouring
+                                        interval needs (convex: S'(x_i) >= Δ_{i-1},
+                                        S'(x_i) <= Δ_i) */
 } ts_condition;
 
 typedef struct ts_constraint_failure {
@@ -1553,7 +1562,9 @@ TS_API void ts_error_context_init(ts_error_context *ctx);
  *                        must be strictly increasing"
  *   TS_ERR_WIDTH        "B: the width W overflows a double" (or "is below the smallest
  *                        normal double")
- *   TS_ERR_TOO_LARGE    "B: total T gives the mean M, too large in magnitude"
+ *   TS_ERR_TOO_LARGE    "B: total T gives the mean M, too large in magnitude" /
+ *                        "B: total T over the width W: the integral of the rates (the
+ *                        lower bound L times the width included) overflows a double"
  *   TS_ERR_NEGATIVE     "B: total T is negative; totals must be >= 0"
  *   TS_ERR_INFEASIBLE   "B: total T gives the mean M, outside the rate bounds [L, H]" /
  *                        "B and bin I+1 [X1, X2]: the means M1 and M2 are too far apart

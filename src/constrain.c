@@ -209,6 +209,161 @@ static int touch_range(const ts_constraint *c, const double *x, const double *f,
     return 1;
 }
 
+/* The exact sign of f_{i+1} − f_i − L (x_{i+1} − x_i) (docs/method.md §13.1),
+ * with x_{i+1} − x_i = h0 + h1 exactly (two_diff): L x_{i+1} may overflow
+ * where L h does not.  Where L h0 is beyond the exact products' range
+ * (|L h| > 2^1020), every term is scaled by 2^-k first, |L h| 2^-k near
+ * 2^1010: |f| <= TS_VALUE_MAX = 2^1022, so an f term loses bits only far
+ * below L h, whose sign then decides. */
+static int secant_side(const double *x, const double *f, size_t i, double L)
+{
+    double v[8], p[2], hd[2], sc = 1.0;
+    int m = 0, ke;
+    two_diff(x[i + 1], x[i], hd);
+    if (!isfinite(L * 0x1p-64 * hd[0])) {
+        /* |L h| > 2^1087 > 2 TS_VALUE_MAX >= |f_{i+1} − f_i|: the sign is −L's */
+        v[m++] = -L;
+    } else {
+        if (!(fabs(L * hd[0]) <= 0x1p1020)) {
+            (void)frexp(L * 0x1p-64 * hd[0], &ke);
+            sc = ldexp(1.0, -(ke + 64 - 1010));
+        }
+        v[m++] = sc * f[i + 1];
+        v[m++] = -(sc * f[i]);
+        for (int e = 0; e < 2; e++) {
+            if (ts__exact_product(sc * L, hd[e], -1.0, p) != 2)
+                p[0] = -(sc * L) * hd[e], p[1] = 0.0;
+            v[m++] = p[0], v[m++] = p[1];
+        }
+    }
+    return ts__exact_sign(v, m);
+}
+
+/* One side of the slope rule record c sets at knot j of its scope [i0, i1]
+ * (docs/method.md §13.1, curvature-slope): none (0), the value *L (1), or
+ * the slope of polyline piece *p (2).  side 0: the least slope, 1: the
+ * greatest.  A slope bound or monotone record: its bound; a constant bound
+ * the datum touches: 0 (inner knot both sides; at i0 only the side into
+ * the region, at i1 the other); a polyline the datum touches: the pieces'
+ * slopes as touch_range. */
+static int knot_rule(const ts_constraint *c, const double *x, const double *f, size_t j,
+                     size_t i0, size_t i1, int side, double *L, size_t *p)
+{
+    double lo, hi, bs = bound_sign(c);
+    if (slope_range(c, &lo, &hi)) {
+        *L = side ? hi : lo;
+        return !isinf(*L);
+    }
+    if (bs == 0.0 || c->bound == TS_BOUND_SPLINE || data_side(c, x[j], f[j]) != 0)
+        return 0; /* a datum touching a bound spline is refused (inside-bound) */
+    /* lower: S − bound >= 0 on each side of a zero: S' <= m_l, S' >= m_r */
+    int upper_side = (bs > 0.0) == (side == 1); /* the side m_l bounds */
+    if (c->bound == TS_BOUND_CONSTANT) {
+        *L = 0.0;
+        return upper_side ? j > i0 : j < i1;
+    }
+    size_t m = c->n_poly, pr = 0;
+    while (pr + 2 < m && c->px[pr + 1] <= x[j])
+        pr++;
+    size_t pl = pr > 0 && c->px[pr] == x[j] ? pr - 1 : pr;
+    if (upper_side) {
+        *p = pl;
+        return j > i0 && x[j] > c->px[0] ? 2 : 0;
+    }
+    *p = pr;
+    return j < i1 && x[j] < c->px[m - 1] ? 2 : 0;
+}
+
+/* A slope: the value L (type 1) or the secant of points p, p + 1 of (X, Y)
+ * (type 2: a polyline piece, a data interval); k its record. */
+typedef struct slope_of {
+    int type;
+    double L;
+    const double *X, *Y;
+    size_t p, k;
+} slope_of;
+
+/* The exact sign of a − b. */
+static int slope_cmp(const slope_of *a, const slope_of *b)
+{
+    if (a->type == 1 && b->type == 1)
+        return (a->L > b->L) - (a->L < b->L);
+    if (b->type == 1)
+        return secant_side(a->X, a->Y, a->p, b->L);
+    if (a->type == 1)
+        return -secant_side(b->X, b->Y, b->p, a->L);
+    /* (Ya_{p+1} − Ya_p)(Xb_{q+1} − Xb_q) − (Yb_{q+1} − Yb_q)(Xa_{p+1} − Xa_p) */
+    double u[2], w[2], e[2], g[2], v[CON_EXACT];
+    int m = 0;
+    two_diff(a->Y[a->p + 1], a->Y[a->p], u);
+    two_diff(b->X[b->p + 1], b->X[b->p], w);
+    two_diff(b->Y[b->p + 1], b->Y[b->p], e);
+    two_diff(a->X[a->p + 1], a->X[a->p], g);
+    prod_terms(u, 2, w, 2, 1.0, v, &m);
+    prod_terms(e, 2, g, 2, -1.0, v, &m);
+    return ts__exact_sign(v, m);
+}
+
+/* Record k's rule at knot j (side 0 least, 1 greatest) as a slope_of; 0
+ * when it sets none there (knot j outside its scope too). */
+static int rule_at(const ts_constraint *cs, size_t k, const double *x, const double *f, size_t n,
+                   size_t j, int side, slope_of *r)
+{
+    const ts_constraint *c = &cs[k];
+    size_t i0 = c->first, i1 = scope_end(c, n);
+    if (!(i0 <= j && j <= i1))
+        return 0;
+    r->k = k;
+    r->type = knot_rule(c, x, f, j, i0, i1, side, &r->L, &r->p);
+    r->X = c->px, r->Y = c->py;
+    return r->type != 0;
+}
+
+/* Does curvature record q's secant on its interval next to knot j
+ * (left: j − 1) fall beyond the rule r (the greatest slope allowed for
+ * convex left / concave right, else the least)?  *iv the interval. */
+static int curv_beyond(const ts_constraint *q, const double *x, const double *f, size_t n,
+                       size_t j, int left, const slope_of *lo, const slope_of *hi, size_t *rk,
+                       size_t *iv)
+{
+    double sg = curv_sign(q);
+    size_t c0 = q->first, c1 = scope_end(q, n);
+    if (sg == 0.0 || (left ? !(c0 < j && j <= c1) : !(c0 <= j && j < c1)))
+        return 0;
+    /* convex, left of x_j: S'(x_j) >= Δ_{j−1} (S' non-decreasing, mean
+     * Δ_{j−1}), so the greatest allowed slope must not lie below it; right
+     * of x_j: S'(x_j) <= Δ_j, the least not above it; concave mirrored */
+    const slope_of *r = (sg > 0.0) == (left == 1) ? hi : lo;
+    if (!r)
+        return 0;
+    slope_of D = {2, 0.0, x, f, left ? j - 1 : j, 0};
+    int sd = slope_cmp(&D, r);
+    if (left ? sg * sd > 0 : sg * sd < 0) {
+        *rk = r->k, *iv = D.p;
+        return 1;
+    }
+    return 0;
+}
+
+int ts__con_knot_conflict(const double *x, const double *f, size_t n, const ts_constraint *cs,
+                          size_t nc, size_t k, size_t j, size_t *kc, size_t *iv, double *slope)
+{
+    slope_of lo, hi;
+    int hl = rule_at(cs, k, x, f, n, j, 0, &lo), hh = rule_at(cs, k, x, f, n, j, 1, &hi);
+    for (size_t q = 0; q < nc; q++)
+        for (int left = 1; left >= 0; left--) {
+            size_t rk;
+            if (curv_beyond(&cs[q], x, f, n, j, left, hl ? &lo : NULL, hh ? &hi : NULL, &rk,
+                            iv)) {
+                const slope_of *r = (curv_sign(&cs[q]) > 0.0) == (left == 1) ? &hi : &lo;
+                *kc = q;
+                *slope = r->type == 1 ? r->L : piece_slope(&cs[k], r->p);
+                return 1;
+            }
+        }
+    return 0;
+}
+
 /* docs/method.md §13.1: the necessary conditions on the data. */
 static ts_status data_checks(const double *x, const double *f, size_t n, const ts_constraint *cs,
                              size_t nc, ts_error *err, ts_constraint_failure *fail)
@@ -237,37 +392,10 @@ static ts_status data_checks(const double *x, const double *f, size_t n, const t
             int mono = c->kind == TS_CONSTRAINT_INCREASING || c->kind == TS_CONSTRAINT_DECREASING;
             for (size_t i = i0; i < i1; i++)
                 for (int side = 0; side < 2; side++) {
-                    double L = side ? hi : lo, s = side ? -1.0 : 1.0, v[8], p[2];
+                    double L = side ? hi : lo, s = side ? -1.0 : 1.0;
                     if (isinf(L))
                         continue;
-                    /* s [f_{i+1} − f_i − L (x_{i+1} − x_i)] >= 0, with
-                     * x_{i+1} − x_i = h0 + h1 exactly (two_diff): L x_{i+1}
-                     * may overflow where L h does not.  Where L h0 is beyond
-                     * the exact products' range (|L h| > 2^1020), every
-                     * term is scaled by 2^-k first, |L h| 2^-k near 2^1010:
-                     * |f| <= TS_VALUE_MAX = 2^1022, so an f term loses bits
-                     * only far below L h, whose sign then decides */
-                    int m = 0, ke;
-                    double hd[2], sc = 1.0;
-                    two_diff(x[i + 1], x[i], hd);
-                    if (!isfinite(L * 0x1p-64 * hd[0])) {
-                        /* |L h| > 2^1087 > 2 TS_VALUE_MAX >= |f_{i+1} − f_i|:
-                         * the sign is −s L's */
-                        v[m++] = -s * L;
-                    } else {
-                        if (!(fabs(L * hd[0]) <= 0x1p1020)) {
-                            (void)frexp(L * 0x1p-64 * hd[0], &ke);
-                            sc = ldexp(1.0, -(ke + 64 - 1010));
-                        }
-                        v[m++] = s * (sc * f[i + 1]);
-                        v[m++] = -s * (sc * f[i]);
-                        for (int e = 0; e < 2; e++) {
-                            if (ts__exact_product(sc * L, hd[e], -s, p) != 2)
-                                p[0] = -s * (sc * L) * hd[e], p[1] = 0.0;
-                            v[m++] = p[0], v[m++] = p[1];
-                        }
-                    }
-                    if (ts__exact_sign(v, m) < 0)
+                    if (s * secant_side(x, f, i, L) < 0)
                         return mono ? con_fail(err, fail, TS_ERR_CONDITION, k, i + 1, TS_WHERE_POINT,
                                                TS_CONDITION_MONOTONE_DATA)
                                     : con_fail(err, fail, TS_ERR_CONDITION, k, i,
@@ -284,6 +412,37 @@ static ts_status data_checks(const double *x, const double *f, size_t n, const t
                 if (touch_range(c, x, f, j, i0, i1, &tl, &th, &corner) && corner)
                     return con_fail(err, fail, TS_ERR_CONDITION, k, j, TS_WHERE_POINT,
                                     TS_CONDITION_TOUCH_CORNER);
+            }
+    }
+    return TS_OK;
+}
+
+/* docs/method.md §13.1, curvature-slope: a knot whose slope rule and a
+ * curvature record's secant exclude each other.  Checked after the slopes
+ * (§13.2), whose slope-conflict proof keeps its precedence. */
+static ts_status knot_checks(const double *x, const double *f, size_t n, const ts_constraint *cs,
+                             size_t nc, ts_error *err, ts_constraint_failure *fail)
+{
+    for (size_t j = 0; j <= n; j++) {
+        slope_of lo, hi, r;
+        int hl = 0, hh = 0;
+        for (size_t k = 0; k < nc; k++) {
+            if (rule_at(cs, k, x, f, n, j, 0, &r) && (!hl || slope_cmp(&r, &lo) > 0))
+                lo = r, hl = 1;
+            if (rule_at(cs, k, x, f, n, j, 1, &r) && (!hh || slope_cmp(&r, &hi) < 0))
+                hi = r, hh = 1;
+        }
+        /* two records' slope rules at one knot exclude each other */
+        if (hl && hh && slope_cmp(&lo, &hi) > 0)
+            return con_fail(err, fail, TS_ERR_INFEASIBLE, TS_NO_INDEX, j, TS_WHERE_POINT,
+                            TS_CONDITION_SLOPE_CONFLICT);
+        for (size_t q = 0; q < nc; q++)
+            for (int left = 1; left >= 0; left--) {
+                size_t rk, iv;
+                if (curv_beyond(&cs[q], x, f, n, j, left, hl ? &lo : NULL, hh ? &hi : NULL, &rk,
+                                &iv))
+                    return con_fail(err, fail, TS_ERR_CONDITION, rk, j, TS_WHERE_POINT,
+                                    TS_CONDITION_CURVATURE_SLOPE);
             }
     }
     return TS_OK;
@@ -516,7 +675,9 @@ ts_status ts__con_conditions(const double *x, const double *f, size_t n,
                              const ts_spline_options *o, ts_constraint_failure *fail)
 {
     ts_status st = ts__con_validate(o, n, NULL, fail);
-    return st == TS_OK ? data_checks(x, f, n, o->constraints, o->n_constraints, NULL, fail) : st;
+    if (st == TS_OK)
+        st = data_checks(x, f, n, o->constraints, o->n_constraints, NULL, fail);
+    return st == TS_OK ? knot_checks(x, f, n, o->constraints, o->n_constraints, NULL, fail) : st;
 }
 
 ts_status ts__con_prepare(const double *x, const double *f, size_t n, const ts_spline_options *o,
@@ -525,6 +686,8 @@ ts_status ts__con_prepare(const double *x, const double *f, size_t n, const ts_s
     ts_status st = data_checks(x, f, n, o->constraints, o->n_constraints, err, fail);
     if (st == TS_OK)
         st = con_slopes(x, f, n, o->constraints, o->n_constraints, d, by, err, fail);
+    if (st == TS_OK)
+        st = knot_checks(x, f, n, o->constraints, o->n_constraints, err, fail);
     return st;
 }
 
@@ -1014,21 +1177,30 @@ static int covers(const ts_constraint *c, const ts_spline *sp, size_t i)
     return 1;
 }
 
+/* Every covering record's certificate on interval i, and no control value
+ * next to an inner knot rounded onto it where the slope there is not 0:
+ * κ h d_i ≠ 0 in exact arithmetic, so B1 = f_i would break the stored
+ * curve's tangent at x_i (horizontal on one side, d_i on the other; a large
+ * a_i makes κ h d_i vanish below half an ulp of f_i; docs/method.md §13.4).
+ * At the first and last knot there is no other side: the end slope is the
+ * stored one.  *bad the first failing (or covering) record. */
 static int interval_ok(const ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i,
                        size_t *bad)
 {
+    int any = 0;
     for (size_t k = 0; k < nc; k++) {
         if (!covers(&cs[k], sp, i))
             continue;
         double at;
         int proven;
         (void)con_gap(sp, &cs[k], i, &at, &proven, 0); /* the proof alone */
-        if (!proven) {
-            *bad = k;
+        if (!proven || !any)
+            *bad = k, any = 1;
+        if (!proven)
             return 0;
-        }
     }
-    return 1;
+    return !(any && ((i > 0 && sp->d[i] != 0.0 && sp->b1[i] == sp->f[i]) ||
+                     (i + 1 < sp->n && sp->d[i + 1] != 0.0 && sp->b2[i] == sp->f[i + 1])));
 }
 
 static int nudge(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i, size_t *bad)

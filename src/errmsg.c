@@ -3,6 +3,7 @@
  * Bookkeeping only; the numbers are printed by numfmt.c. */
 #include "internal.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -202,6 +203,24 @@ static int failure_sentence(out *o, const data *d, const ts_constraint_failure *
         num(o, (c->py[p + 1] - c->py[p]) / (c->px[p + 1] - c->px[p]));
         put(o, ": no curve with a continuous slope stays %s it through this point",
             c->kind == TS_CONSTRAINT_LOWER ? "above" : "below");
+        break;
+    }
+    case TS_CONDITION_CURVATURE_SLOPE: {
+        size_t kc, iv;
+        double sl;
+        if (!ts__con_knot_conflict(d->c->x, d->c->f, n - 1, opt->constraints,
+                                   opt->n_constraints, fl->constraint, i, &kc, &iv, &sl))
+            return 0;
+        const ts_constraint *cc = &opt->constraints[kc];
+        int least = (cc->kind == TS_CONSTRAINT_CONVEX) == (iv + 1 == i);
+        point_xf(o, d, i);
+        put(o, ": constraint %zu (%s) needs a slope here of at %s the secant ", kc,
+            ts__vocab_name(TS_VOCAB_CONSTRAINT, (int)cc->kind), least ? "least" : "most");
+        num(o, (d->c->f[iv + 1] - d->c->f[iv]) / (d->c->x[iv + 1] - d->c->x[iv]));
+        put(o, " of the interval %s it, but the %s constraint allows at %s ",
+            iv + 1 == i ? "before" : "after", kind, least ? "most" : "least");
+        num(o, sl);
+        put(o, " there: no curve with a continuous slope meets both");
         break;
     }
     case TS_CONDITION_SECANT_SLOPE:
@@ -822,9 +841,23 @@ static int histo_sentence(out *o, const ts_error_context *c, const ts_error *e)
             return 1;
         }
         if (e->status == TS_ERR_TOO_LARGE) {
-            put(o, " gives the mean ");
-            num(o, m);
-            put(o, ", too large in magnitude");
+            double lo = opt ? opt->lo : 0.0;
+            if (!(fabs(m - lo) <= TS__HISTO_MEAN_MAX)) {
+                put(o, " gives the mean ");
+                num(o, m);
+                put(o, ", too large in magnitude");
+                return 1;
+            }
+            /* the mean is within the limit: the bin's integral overflowed */
+            put(o, " over the width ");
+            num(o, c->x[i + 1] - c->x[i]);
+            put(o, ": the integral of the rates");
+            if (lo != 0.0) {
+                put(o, " (the lower bound ");
+                num(o, lo);
+                put(o, " times the width included)");
+            }
+            put(o, " overflows a double");
             return 1;
         }
         if (!pair) {

@@ -15,9 +15,7 @@
 #define HW0 0.16572750131886840872 /* 5/2 − 22/(3π) */
 /* §12.4: limits scaled by this keep every rounded control value inside */
 #define HSHRINK (1.0 - 8.0 * DBL_EPSILON)
-/* §12.6: the largest |mean − lo| accepted (control values stay below
- * 6 times it, TS_VALUE_MAX) */
-#define HMEAN_MAX 0x1p1019
+#define HMEAN_MAX TS__HISTO_MEAN_MAX /* §12.6: the largest |mean − lo| accepted */
 #define HP 4          /* pieces per bin */
 #define HB (4 * HP)   /* control values per bin */
 #define HCHUNK 64     /* bins listed at a time (no branch on the data) */
@@ -253,6 +251,21 @@ static const double HINV[6][6] = {
     {240, -40, 40, -280, -140, 1100}, {240, 280, -40, 40, -100, -140},
     {0, -80, 320, -80, -160, 160},    {-240, 40, -40, 280, 140, 100}};
 
+/* The power of 2 b is scaled by before HINV: 1 unless some |b_k| exceeds
+ * 2^1008, where Σ |HINV_k| |b_k| <= 11520 · 2^1008 < 2^1022.5 would no
+ * longer bound the sums of hrow below DBL_MAX (§12.6: means up to 2^1019);
+ * then 2^-16.  A power of 2 commutes with every rounding of hrow and the
+ * division by 2400 (no result near the subnormal range: the largest term
+ * is above 2^992), so the scaled X is 2^16 times the X of b 2^-16 bit for
+ * bit, and with scale 1 every value is as before. */
+TS_INLINE double hscale(const double b[6])
+{
+    double m = fabs(b[0]);
+    for (int k = 1; k < 6; k++)
+        m = fabs(b[k]) > m ? fabs(b[k]) : m;
+    return m > 0x1p1008 ? 0x1p-16 : 1.0;
+}
+
 /* Σ_k R[k] b[k] from 0, in order (one row of HINV times b) */
 TS_INLINE double hrow(const double R[6], const double b[6])
 {
@@ -299,10 +312,13 @@ static void build_wet(ts_histo *h, size_t j, double rho, const double *y, const 
     /* (12.3) with r'' = 0 at the edges */
     double b[6] = {4.0 * rho - 0.5 * (Y0 + Y4) - HW1 * (E0 - E4), -Y0 - E0, 0.0, Y4 - E4,
                    2.0 * Y0 + 8.0 * E0, 2.0 * Y4 - 8.0 * E4};
-    double YX[5] = {Y0, hrow(HINV[0], b) / 2400.0, hrow(HINV[1], b) / 2400.0,
-                    hrow(HINV[2], b) / 2400.0, Y4};
-    double EX[5] = {E0, hrow(HINV[3], b) / 2400.0, hrow(HINV[4], b) / 2400.0,
-                    hrow(HINV[5], b) / 2400.0, E4};
+    double sc = hscale(b), bs[6], us = 1.0 / sc;
+    for (int k = 0; k < 6; k++)
+        bs[k] = sc * b[k];
+    double YX[5] = {Y0, hrow(HINV[0], bs) / 2400.0 * us, hrow(HINV[1], bs) / 2400.0 * us,
+                    hrow(HINV[2], bs) / 2400.0 * us, Y4};
+    double EX[5] = {E0, hrow(HINV[3], bs) / 2400.0 * us, hrow(HINV[4], bs) / 2400.0 * us,
+                    hrow(HINV[5], bs) / 2400.0 * us, E4};
     /* b0/3 > 0 for a wet bin (§12.6.1); the clamps keep Z inside regardless */
     double zv = b[0] / 3.0;
     zv = zv > 0.0 ? zv : 0.0;
@@ -358,10 +374,13 @@ TS_VECTOR_LOOP static void wet_fast(size_t m, const double *restrict r, const do
         double Y0 = Y0a[i], Y4 = Y4a[i], E0 = Kq * s0a[i], E4 = Kq * s4a[i];
         double b[6] = {4.0 * r[i] - 0.5 * (Y0 + Y4) - HW1 * (E0 - E4), -Y0 - E0, 0.0, Y4 - E4,
                        2.0 * Y0 + 8.0 * E0, 2.0 * Y4 - 8.0 * E4};
-        double Y1 = hrow(HINV[0], b) / 2400.0, Y2 = hrow(HINV[1], b) / 2400.0,
-               Y3 = hrow(HINV[2], b) / 2400.0;
-        double E1 = hrow(HINV[3], b) / 2400.0, E2 = hrow(HINV[4], b) / 2400.0,
-               E3 = hrow(HINV[5], b) / 2400.0;
+        double sc = hscale(b), us = 1.0 / sc;
+        for (int k = 0; k < 6; k++)
+            b[k] *= sc;
+        double Y1 = hrow(HINV[0], b) / 2400.0 * us, Y2 = hrow(HINV[1], b) / 2400.0 * us,
+               Y3 = hrow(HINV[2], b) / 2400.0 * us;
+        double E1 = hrow(HINV[3], b) / 2400.0 * us, E2 = hrow(HINV[4], b) / 2400.0 * us,
+               E3 = hrow(HINV[5], b) / 2400.0 * us;
         double sf = Y1 + Y2 + Y3 + E1 + E2 + E3;
         /* the control values (controls) piece by piece: Y_k, Y_k + E_k,
          * Y_{k+1} − E_{k+1}, Y_{k+1} */

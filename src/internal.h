@@ -1077,6 +1077,10 @@ void ts__certify_done(ts_spline *sp, const ts_spline_options *opt);
 /* Records of opt (n_constraints > 0) valid for n intervals: TS_ERR_NULL,
  * TS_ERR_OPTION (also a form other than geometric, a shape), TS_ERR_VERSION,
  * TS_ERR_NONFINITE, TS_ERR_UNSORTED, TS_ERR_LENGTH; fail (may be NULL) too. */
+/* §12.6: the largest |mean − lo| of a bin ts_histo_new accepts (control
+ * values stay below 6 times it, TS_VALUE_MAX); beyond, TS_ERR_TOO_LARGE
+ * (histo.c; the sentence of errmsg.c) */
+#define TS__HISTO_MEAN_MAX 0x1p1019
 ts_status ts__con_validate(const ts_spline_options *o, size_t n, ts_error *err,
                            ts_constraint_failure *fail);
 /* The data's necessary conditions (TS_ERR_CONDITION) and the slopes d[0..n]
@@ -1088,6 +1092,12 @@ ts_status ts__con_prepare(const double *x, const double *f, size_t n, const ts_s
  * the sentence of TS_ERR_CONDITION (errmsg.c). */
 ts_status ts__con_conditions(const double *x, const double *f, size_t n,
                              const ts_spline_options *o, ts_constraint_failure *fail);
+/* docs/method.md §13.1 curvature-slope: record k's slope rule at knot j
+ * (its scope) against every convex / concave record's secant there: 1 when
+ * they exclude each other, *kc that record, *iv its interval (j − 1 or j),
+ * *slope the rule's slope (rounded); else 0.  x, f, cs validated. */
+int ts__con_knot_conflict(const double *x, const double *f, size_t n, const ts_constraint *cs,
+                          size_t nc, size_t k, size_t j, size_t *kc, size_t *iv, double *slope);
 #ifdef TS_TEST_HOOKS
 /* errmsg.c: the sentence ts_error_message gives for the failure record fl
  * of the data checks, for any record (tests): ctx with x, f, n_points and

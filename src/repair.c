@@ -27,6 +27,16 @@ static ts_status infeasible(const ts__repair_ops *o, size_t i, double a0)
     return TS_ERR_INFEASIBLE;
 }
 
+/* No control value rounded onto its knot by the search (the tangent break
+ * constrain.c's interval_ok rejects, docs/method.md §13.4): the a_i it
+ * returns is within a factor 2 (doubling) or the bisection's width of the
+ * smallest certified a, plus the caller's margin t.  A certified interval
+ * has the gap at its knot above the certificate's guard, at least
+ * 64ε|f_i| (§5.6), and the smallest certified a makes κ h |d_i − m| of
+ * the order of that gap, far above the half ulp of f_i below which
+ * B1 = f_i + κ h d_i would round to f_i.  What remains is the rounding
+ * every interval has at any a: a slope with κ h |d_i| below half an ulp of
+ * f_i while |d_i − m| is not (|d_i| ≪ |m|), not a search made a_i huge. */
 ts_status ts__repair_search(const ts__repair_ops *o, size_t i, double al, double a0, double t)
 {
     double lo, hi, amax;

@@ -94,7 +94,8 @@ static const char *const condition_names[] = {
     [TS_CONDITION_SECANT_SLOPE] = "secant-slope",
     [TS_CONDITION_SLOPE_CONFLICT] = "slope-conflict",
     [TS_CONDITION_UNPROVEN] = "unproven",
-    [TS_CONDITION_TOUCH_CORNER] = "touch-corner"};
+    [TS_CONDITION_TOUCH_CORNER] = "touch-corner",
+    [TS_CONDITION_CURVATURE_SLOPE] = "curvature-slope"};
 
 /* A new enumerator without its name fails to compile here. */
 _Static_assert(TS_NELEM(status_names) == TS_STATUS_COUNT_, "a status without a name");
@@ -108,7 +109,7 @@ _Static_assert(TS_NELEM(term_names) == TS_TERM_GEOMETRIC + 1, "a term without a 
 _Static_assert(TS_NELEM(where_names) == TS_WHERE_QUERY + 1, "a where without a name");
 _Static_assert(TS_NELEM(constraint_names) == TS_CONSTRAINT_COUNT_, "a constraint without a name");
 _Static_assert(TS_NELEM(bound_names) == TS_BOUND_SPLINE + 1, "a bound without a name");
-_Static_assert(TS_NELEM(condition_names) == TS_CONDITION_TOUCH_CORNER + 1, "a condition without a name");
+_Static_assert(TS_NELEM(condition_names) == TS_CONDITION_CURVATURE_SLOPE + 1, "a condition without a name");
 
 typedef struct vocab_table {
     const char *const *name;

@@ -100,12 +100,48 @@ static void unread_bound_fields(void)
         ts_spline_free(s[v]);
 }
 
-/* Convex on [0, 2] needs S'(2) >= Δ_1 = 2; S' <= 1.5 on [2, 3] needs
- * S'(2) <= 1.5: no C¹ curve meets both (the forced-line pass finds the
- * convex interval's right slope below its secant and makes interval 1 the
- * line).  The fit is refused, or (as now) accepted with a_2 so large that
- * B1 of interval 2 rounds to f_2: each record's certificate then holds for
- * the stored control values (docs/design.md, "Coverage", on this case). */
+/* Build with records c and expect status want, condition cond at point j
+ * naming record k (ts_constraints_diagnose and the ts_error), and, when
+ * said is not NULL, that text in ts_error_message's sentence. */
+static void refused(const double *x, const double *f, size_t np, const ts_constraint *c,
+                    size_t nc, ts_status want, ts_condition cond, size_t k, size_t j,
+                    const char *said)
+{
+    ts_spline_options o;
+    ts_spline_options_init(&o);
+    o.constraints = c;
+    o.n_constraints = nc;
+    ts_spline *s = NULL;
+    ts_error e;
+    ts_status st = ts_spline_new(x, f, np, &o, &s, &e);
+    CHECKF(st == want && s == NULL, "%s", ts_status_name(st));
+    CHECK(e.index == j && e.where == TS_WHERE_POINT);
+    ts_spline_free(s);
+    ts_constraint_failure fl;
+    ts_constraint_failure_init(&fl);
+    CHECK(ts_constraints_diagnose(x, f, np, &o, &fl) == want);
+    CHECKF(fl.condition == cond && fl.constraint == k && fl.index == j &&
+               fl.where == TS_WHERE_POINT,
+           "condition %d record %zu index %zu", (int)fl.condition, fl.constraint, fl.index);
+    if (said) {
+        ts_error_context ctx;
+        ts_error_context_init(&ctx);
+        ctx.x = x, ctx.f = f, ctx.n_points = np, ctx.spline_options = &o;
+        char buf[512];
+        (void)ts_error_message(&e, &ctx, buf, sizeof buf);
+        CHECKF(strcmp(buf, said) == 0, "\n   got  \"%s\"\n   want \"%s\"", buf, said);
+    }
+}
+
+/* Convex on [0, 2] needs S'(2) >= Δ_1 = 2 (S' non-decreasing with mean
+ * Δ_1 on [1, 2]); S' <= 1.5 on [2, 3] needs S'(2) <= 1.5: no C¹ curve meets
+ * both, refused as a condition on the data (docs/method.md §13.1,
+ * curvature-slope; the secants are exact, so the sentence's numbers are).
+ * A constant bound touched at x_2 (S <= 3 right of x_2 with S(2) = 3: S'(2)
+ * <= 0), a polyline touched there (slope 1 right of it), and the mirror
+ * (concave right of a knot: S'(x_1) >= Δ_1 = 2 against S' <= 1.5) likewise.
+ * A bound equal to the secant (S' <= 2) is no contradiction (the interval
+ * a line), one ulp below it is. */
 static void contradicting_slopes(void)
 {
     TH_CASE("convex next to a slope bound below its secant");
@@ -115,13 +151,91 @@ static void contradicting_slopes(void)
     c[0].count = 2;
     ts_constraint_init(&c[1], TS_CONSTRAINT_SLOPE_MAX);
     c[1].value = 1.5, c[1].first = 2, c[1].count = 1;
+    refused(x, f, 4, c, 2, TS_ERR_CONDITION, TS_CONDITION_CURVATURE_SLOPE, 1, 2,
+            "point 2 (x = 2, f = 3): constraint 0 (convex) needs a slope here of at least the "
+            "secant 2 of the interval before it, but the slope-max constraint allows at most "
+            "1.5 there: no curve with a continuous slope meets both (constraint 1, slope-max)");
+    c[1].value = nextafter(2.0, 0.0);
+    refused(x, f, 4, c, 2, TS_ERR_CONDITION, TS_CONDITION_CURVATURE_SLOPE, 1, 2, NULL);
+    c[1].value = 2.0;
     ts_spline *s = NULL;
     ts_status st = fit(x, f, 4, c, 2, 0.0, 0.0, &s);
-    CHECKF(st == TS_OK || st == TS_ERR_UNPROVEN || st == TS_ERR_INFEASIBLE, "%s",
-           ts_status_name(st));
+    CHECKF(st == TS_OK || st == TS_ERR_UNPROVEN, "%s", ts_status_name(st));
+    ts_spline_free(s);
+
+    TH_CASE("convex next to a touched constant bound");
+    double f2[4] = {0, 1, 3, 2};
+    ts_constraint_init(&c[1], TS_CONSTRAINT_UPPER);
+    c[1].value = 3.0, c[1].first = 2, c[1].count = 1;
+    refused(x, f2, 4, c, 2, TS_ERR_CONDITION, TS_CONDITION_CURVATURE_SLOPE, 1, 2,
+            "point 2 (x = 2, f = 3): constraint 0 (convex) needs a slope here of at least the "
+            "secant 2 of the interval before it, but the upper constraint allows at most 0 "
+            "there: no curve with a continuous slope meets both (constraint 1, upper)");
+    c[1].value = 3.5; /* not touched: S'(2) free */
+    st = fit(x, f2, 4, c, 2, 0.0, 0.0, &s);
+    CHECKF(st == TS_OK, "%s", ts_status_name(st));
+    if (s)
+        certified(s, 0), certified(s, 1);
+    ts_spline_free(s);
+
+    TH_CASE("convex next to a touched polyline");
+    double px[3] = {1, 2, 3}, py[3] = {2, 3, 4}, f3[4] = {0, 1, 3, 3.5};
+    c[1].bound = TS_BOUND_POLYLINE, c[1].px = px, c[1].py = py, c[1].n_poly = 3;
+    refused(x, f3, 4, c, 2, TS_ERR_CONDITION, TS_CONDITION_CURVATURE_SLOPE, 1, 2, NULL);
+
+    TH_CASE("concave right of a slope bound below its secant");
+    double g[4] = {0, 0, 2, 3};
+    ts_constraint_init(&c[0], TS_CONSTRAINT_CONCAVE);
+    c[0].first = 1, c[0].count = 2;
+    ts_constraint_init(&c[1], TS_CONSTRAINT_SLOPE_MAX);
+    c[1].value = 1.5, c[1].count = 1;
+    refused(x, g, 4, c, 2, TS_ERR_CONDITION, TS_CONDITION_CURVATURE_SLOPE, 1, 1,
+            "point 1 (x = 1, f = 0): constraint 0 (concave) needs a slope here of at least the "
+            "secant 2 of the interval after it, but the slope-max constraint allows at most "
+            "1.5 there: no curve with a continuous slope meets both (constraint 1, slope-max)");
+
+    TH_CASE("two slope bounds excluding each other at a knot");
+    /* S' >= 1.5 on [0, 1], |S'| <= 1 on [1, 2]: S'(1) in [1.5, inf) and
+     * [-1, 1] (the secants 2 and 0 meet their own bounds) */
+    double y[3] = {0, 2, 2};
+    ts_constraint_init(&c[0], TS_CONSTRAINT_SLOPE_MIN);
+    c[0].value = 1.5, c[0].count = 1;
+    ts_constraint_init(&c[1], TS_CONSTRAINT_SLOPE_ABS);
+    c[1].value = 1.0, c[1].first = 1, c[1].count = 1;
+    refused(x, y, 3, c, 2, TS_ERR_INFEASIBLE, TS_CONDITION_SLOPE_CONFLICT, TS_NO_INDEX, 1,
+            NULL);
+    c[0].value = 1.0; /* S'(1) = 1 meets both */
+    st = fit(x, y, 3, c, 2, 0.0, 0.0, &s);
+    CHECKF(st == TS_OK || st == TS_ERR_UNPROVEN, "%s", ts_status_name(st));
+    ts_spline_free(s);
+}
+
+/* S' <= 2 on [x_0, x_2], S' >= 0 on [x_1, x_2], the secant of interval 1
+ * 2 (1 − 2^-52)/(1 + 2^-53 ...) a few ulps below the bound: the closed form
+ * raises a_1 until κ h d_1 falls below half an ulp of f_1 = 3, where B1
+ * = f_1 would break the tangent at x_1 (left S' ≈ 1.5, right 2 in
+ * floating point).  The search must not accept that (docs/method.md
+ * §13.4): refused as unproven (the header's rule for a secant on its
+ * bound), or a curve whose slope is continuous at x_1 (one-sided
+ * derivatives one ulp of x away agree to 1e-6: a C¹ curve's S' moves by
+ * |S''| 2^-52 there). */
+static void no_tangent_break(void)
+{
+    TH_CASE("a control value rounded onto its knot");
+    double x[3] = {0, 1.0009752911796965, 2.0009752911796967}, f[3] = {2, 3, 5};
+    ts_constraint c[2];
+    ts_constraint_init(&c[0], TS_CONSTRAINT_SLOPE_MIN);
+    c[0].value = 0.0, c[0].first = 1, c[0].count = 1;
+    ts_constraint_init(&c[1], TS_CONSTRAINT_SLOPE_MAX);
+    c[1].value = 2.0, c[1].count = 2;
+    ts_spline *s = NULL;
+    ts_status st = fit(x, f, 3, c, 2, 0.0, 0.0, &s);
+    CHECKF(st == TS_OK || st == TS_ERR_UNPROVEN, "%s", ts_status_name(st));
     if (s) {
-        certified(s, 0);
-        certified(s, 1);
+        double y, dl, dr, d2;
+        CHECK(ts_spline_eval_deriv(s, nextafter(x[1], 0.0), NULL, &y, &dl, &d2) == TS_OK);
+        CHECK(ts_spline_eval_deriv(s, nextafter(x[1], 3.0), NULL, &y, &dr, &d2) == TS_OK);
+        CHECKF(fabs(dl - dr) <= 1e-6, "S' %.17g left, %.17g right of x_1", dl, dr);
     }
     ts_spline_free(s);
 }
@@ -455,6 +569,7 @@ int main(void)
 {
     unread_bound_fields();
     contradicting_slopes();
+    no_tangent_break();
     equal_neighbour_secant();
     overflowing_need();
     huge_slope_bounds();

@@ -9,6 +9,8 @@
 #include "trigspline.h"
 #include "th.h"
 
+#include <fenv.h>
+#include <float.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -158,19 +160,17 @@ static void test_scalar_build(void)
         ts_histo_free(h);
         h = NULL;
     }
-    /* a mean of 2^1018 (below the limit 2^1019 of §12.6): (12.3)'s products
-     * overflow, X is not finite, the bin is Z: constant, every control
-     * value 2^1018 exactly (Y0 = Y4 = ρ, b0 = 3ρ, v = ρ), the total kept.
-     * The overflow raises FE_OVERFLOW and FE_INVALID (∞ − ∞ in the sums of
-     * (12.3)): means above about 2^1010 are valid input that raises flags,
-     * which test_histo's series (scales up to 1e6, spikes ×1000) do not reach. */
+    /* a mean of 2^1018 (below the limit 2^1019 of §12.6): one bin with
+     * Y0 = Y4 = ρ and slopes 0, the constant ρ solves (12.3) (and is Z):
+     * every control value 2^1018 to rounding (1e-15 relative: hrow's sums
+     * and the division by 2400, a few ε), the total kept */
     {
         double e[2] = {0, 1}, t[1] = {0x1p1018};
         CHECK(ts_histo_new(e, t, 1, NULL, &h, NULL) == TS_OK);
         ts_bin_report_init(&rep);
         CHECK(h && ts_histo_report(h, 0, &rep) == TS_OK && rep.certified);
         for (int l = 0; l < 16; l++)
-            CHECKF(rep.B[l] == 0x1p1018, "B%d %a", l, rep.B[l]);
+            CHECKF(fabs(rep.B[l] - 0x1p1018) <= 1e-15 * 0x1p1018, "B%d %a", l, rep.B[l]);
         CHECKF(fabs(rep.total - 0x1p1018) <= 1e-15 * 0x1p1018, "total %a", rep.total);
         ts_histo_free(h);
         h = NULL;
@@ -230,11 +230,89 @@ static void test_random(void)
     CHECKF(built > 500 && refused > 0, "%ld built, %ld refused", built, refused);
 }
 
+/* Means from 2^1000 to the limit 2^1019 of §12.6 (totals up to about
+ * DBL_MAX: widths to 16), with and without bounds: valid input, so no
+ * FE_INVALID or FE_DIVBYZERO (the header's promise; the sums of (12.3)
+ * overflowed there and raised both).  The scheme is homogeneous of degree
+ * 1 in (totals, lo, hi): every operation is a sum, a product by a
+ * constant, a quotient or a comparison, which commute with a power of 2
+ * away from overflow and underflow, so the rate of totals 2^k T is 2^k
+ * times the rate of T bit for bit (checked against the same series at
+ * 2^k smaller, k up to 1012: the means of that series are below 2^8). */
+static void test_huge_means(void)
+{
+    TH_CASE("means up to 2^1019: no flag, the rate scaled bit for bit");
+    long flagged = 0, compared = 0;
+    for (int rep = 0; rep < 400; rep++) {
+        size_t n = 1 + (size_t)(urand() * 6);
+        double e[8], t[7], ts[7];
+        int k = 1000 + (int)(urand() * 13); /* 2^k: series means below 2^7 */
+        e[0] = urand();
+        for (size_t i = 1; i <= n; i++)
+            e[i] = e[i - 1] + 0.25 + urand() * (urand() < 0.3 ? 15.0 : 1.0);
+        for (size_t i = 0; i < n; i++) {
+            ts[i] = (urand() < 0.2 ? 0.0 : 100.0 * urand()) * (e[i + 1] - e[i]);
+            t[i] = ldexp(ts[i], k);
+        }
+        ts_histo_options o, os;
+        ts_histo_options_init(&o);
+        ts_histo_options_init(&os);
+        if (urand() < 0.3)
+            os.hi = 120.0, o.hi = ldexp(120.0, k);
+        if (urand() < 0.3)
+            os.lo = -3.0, o.lo = ldexp(-3.0, k);
+        ts_histo *h = NULL, *hs = NULL;
+        feclearexcept(FE_ALL_EXCEPT);
+        ts_status st = ts_histo_new(e, t, n, &o, &h, NULL);
+        flagged += st == TS_OK && fetestexcept(FE_INVALID | FE_DIVBYZERO);
+        ts_status ss = ts_histo_new(e, ts, n, &os, &hs, NULL);
+        CHECKF(st == ss, "%s vs %s", ts_status_name(st), ts_status_name(ss));
+        for (int q = 0; q <= 40 && h && hs; q++) {
+            double x = q == 40 ? e[n] : e[0] + (e[n] - e[0]) * q / 40.0, r = 0.0, rs = 0.0;
+            CHECK(ts_histo_eval(h, x, &r, NULL) == TS_OK && ts_histo_eval(hs, x, &rs, NULL) == TS_OK);
+            CHECKF(r == ldexp(rs, k), "2^%d: x %.17g r %a, scaled %a", k, x, r, ldexp(rs, k));
+            compared++;
+        }
+        ts_histo_free(h);
+        ts_histo_free(hs);
+    }
+    CHECKF(flagged == 0, "%ld builds raised FE_INVALID or FE_DIVBYZERO", flagged);
+    CHECK(compared > 4000);
+    /* totals near DBL_MAX = 2^1024 (1 − 2^-53) over widths 32: the mean
+     * 2^1019 (1 − 2^-53) just below the limit, neighbours 2^1018, 2^1017;
+     * with bounds a join may be refused (TS_ERR_INFEASIBLE, §12.4) */
+    {
+        double e[4] = {0, 32, 64, 96}, t[3] = {DBL_MAX / 2, DBL_MAX, 0x1p1022};
+        ts_histo_options o;
+        ts_histo_options_init(&o);
+        for (int b = 0; b < 3; b++) {
+            if (b == 1)
+                o.hi = 0x1p1019;
+            if (b == 2)
+                o.lo = 0x1p1000, o.hi = HUGE_VAL; /* |mean − lo| within the limit */
+            ts_histo *h = NULL;
+            feclearexcept(FE_ALL_EXCEPT);
+            ts_status st = ts_histo_new(e, t, 3, &o, &h, NULL);
+            CHECKF((st == TS_OK || (b > 0 && st == TS_ERR_INFEASIBLE)) &&
+                       !fetestexcept(FE_INVALID | FE_DIVBYZERO),
+                   "bounds %d: %s", b, ts_status_name(st));
+            for (size_t j = 0; j < 3 && h; j++) {
+                ts_bin_report rep;
+                ts_bin_report_init(&rep);
+                CHECK(ts_histo_report(h, j, &rep) == TS_OK && rep.certified);
+                CHECKF(fabs(rep.total - t[j]) <= 1e-13 * t[j], "bin %zu total %a", j, rep.total);
+            }
+            ts_histo_free(h);
+        }
+    }
+}
+
 int main(void)
 {
     test_cases();
     test_scalar_build();
     test_random();
+    test_huge_means();
     printf("histograms built %ld, refused %ld\n", built, refused);
     return th_report("test_histo_edges");
 }

@@ -896,6 +896,17 @@ static void test_histo(void)
                      "bin 0 [0, 1]: total 1e+308 gives the mean 1e+308, too large in magnitude");
     }
     {
+        /* the mean 0 is fine; lo w = -1e600 is not (the header's second
+         * case of TS_ERR_TOO_LARGE) */
+        const double e[] = {0, 1, 1e300}, t[] = {0, 0};
+        ts_histo_options_init(&o);
+        o.lo = -1e300;
+        expect_histo(e, t, 2, &o,
+                     "bin 1 [1, 1e+300]: total 0 over the width 1e+300: the integral of the "
+                     "rates (the lower bound -1e+300 times the width included) overflows a "
+                     "double");
+    }
+    {
         const double e[] = {0, 1, 2}, t[] = {0.5, 4};
         ts_histo_options_init(&o);
         o.hi = 1;

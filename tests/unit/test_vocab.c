@@ -67,7 +67,8 @@ int main(void)
     static const char *const bound[] = {"constant", "polyline", "spline"};
     static const char *const condition[] = {"none", "convex-data", "concave-data",
                                             "monotone-data", "inside-bound", "secant-slope",
-                                            "slope-conflict", "unproven", "touch-corner"};
+                                            "slope-conflict", "unproven", "touch-corner",
+                                            "curvature-slope"};
 #define LIST(v, a) check_list(v, a, (int)(sizeof(a) / sizeof((a)[0])), #v)
     LIST(TS_VOCAB_STATUS, status);
     LIST(TS_VOCAB_FORM, form);
