@@ -14,6 +14,11 @@
  * range where its side of the field is decided exactly (2^-300 .. 2^300),
  * its neighbours 1e299 far above it, so 2 K |d| / g ~ 1e389.
  *
+ * A twist clamp bound that is NaN (k_x infinite times a zero slope, the
+ * clamp ignores it as fmax / fmin do) on data whose control values
+ * overflow: TS_ERR_NONFINITE at a patch (the header), and the same data
+ * with a tenth of the width build.
+ *
  * Cursor: ts_surface_eval_batch keeps one cursor over its queries; a query
  * three intervals from the previous one skips the cursor, and the query
  * after that, one interval further, finds its interval by search and is
@@ -82,6 +87,36 @@ int main(void)
         /* the same data against the constant bound 0: the same patches */
         REFUSES(zx, 0, 1);
         REFUSES(zy, 0, 2);
+    }
+
+    TH_CASE("a twist bound that is NaN: k_x infinite times a zero slope");
+    {
+        /* alpha = margin = 1e-300: a = 2e-300, k_x = 2 h / (3 pi a)
+         * overflows for h = 1e10 (1.06e309; for h = 1e9 it is 1.06e308,
+         * below the largest double 1.8e308); rows flat in x, so the twist clamp's
+         * bound -F/(2c) is inf * 0 = NaN, which the clamp ignores (fmax /
+         * fmin), and the patch's control values z + k_x * 0 are NaN:
+         * TS_ERR_NONFINITE at a patch.  With h = 1e9 the same data build. */
+        double zf[9] = {1, 1, 1, 2, 2, 2, 3, 3, 3}, y[3] = {0, 1, 2};
+        for (int big = 0; big < 2; big++) {
+            double h = big ? 1e10 : 1e9, x[3] = {0.0, h, 2.0 * h};
+            ts_surface_options o;
+            ts_surface *s = NULL;
+            ts_error e;
+            ts_surface_options_init(&o);
+            o.shape = TS_SURFACE_BOUNDS;
+            o.has_lower = o.has_upper = 1;
+            o.lower.c = 0.5;
+            o.upper.c = 3.5;
+            o.alpha = o.margin = 1e-300;
+            ts_status st = ts_surface_new(x, 3, y, 3, zf, &o, &s, &e);
+            if (big)
+                CHECKF(st == TS_ERR_NONFINITE && e.where == TS_WHERE_INTERVAL && e.index < 4,
+                       "%s", ts_status_name(st));
+            else
+                CHECKF(st == TS_OK, "%s", ts_status_name(st));
+            ts_surface_free(s);
+        }
     }
 
     TH_CASE("a batch's cursor after a query that skipped it");
