@@ -111,8 +111,8 @@ int main(void)
             o.alpha = o.margin = 1e-300;
             ts_status st = ts_surface_new(x, 3, y, 3, zf, &o, &s, &e);
             if (big)
-                CHECKF(st == TS_ERR_NONFINITE && e.where == TS_WHERE_INTERVAL && e.index < 4,
-                       "%s", ts_status_name(st));
+                CHECKF(st == TS_ERR_NONFINITE && e.where == TS_WHERE_INTERVAL && e.index < 4, "%s",
+                       ts_status_name(st));
             else
                 CHECKF(st == TS_OK, "%s", ts_status_name(st));
             ts_surface_free(s);
