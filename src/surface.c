@@ -306,27 +306,25 @@ static ts_status line_slopes(const ts_surface *s, ts_slopes method, int dir, con
     return TS_OK;
 }
 
-/* The same without the check (twists: their sum is checked); mean: d
- * becomes the mean 0.5 (d + slope) of what it holds and the slopes. */
+/* The same without the check (twists: their sum is checked), for the two
+ * uses r needs: rows (dir 0) straight into d; columns (dir 1) as the mean
+ * 0.5 (d + slope) of what d holds and the slopes. */
 static void line_slopes_raw(const ts_surface *s, ts_slopes method, int dir, const double *v,
-                            double *d, double *tmp, int mean)
+                            double *d, double *tmp)
 {
     size_t np = s->nx + 1, nq = s->ny + 1;
-    size_t lines = dir ? np : nq, len = dir ? nq : np;
-    const double *t = dir ? s->y : s->x;
-    double *f = tmp, *g = tmp + len;
-    for (size_t L = 0; L < lines; L++) {
-        if (!dir && !mean) { /* a row straight into d */
-            ts__slopes_range(method, t, v + L * np, len, d + L * np, 0, len);
-            continue;
-        }
-        for (size_t k = 0; k < len; k++)
-            f[k] = v[dir ? k * np + L : L * np + k];
-        ts__slopes_range(method, t, f, len, g, 0, len);
-        for (size_t k = 0; k < len; k++) {
-            double *o = &d[dir ? k * np + L : L * np + k];
-            *o = mean ? 0.5 * (*o + g[k]) : g[k];
-        }
+    if (!dir) {
+        for (size_t L = 0; L < nq; L++)
+            ts__slopes_range(method, s->x, v + L * np, np, d + L * np, 0, np);
+        return;
+    }
+    double *f = tmp, *g = tmp + nq;
+    for (size_t L = 0; L < np; L++) {
+        for (size_t k = 0; k < nq; k++)
+            f[k] = v[k * np + L];
+        ts__slopes_range(method, s->y, f, nq, g, 0, nq);
+        for (size_t k = 0; k < nq; k++)
+            d[k * np + L] = 0.5 * (d[k * np + L] + g[k]);
     }
 }
 
@@ -733,8 +731,8 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
             s->r[n] = 0.0;
     } else {
         /* r = (∂q/∂x + ∂p/∂y)/2: symmetric under transposition */
-        line_slopes_raw(s, o->slopes, 0, s->q, s->r, tmp, 0);
-        line_slopes_raw(s, o->slopes, 1, s->p, s->r, tmp, 1);
+        line_slopes_raw(s, o->slopes, 0, s->q, s->r, tmp);
+        line_slopes_raw(s, o->slopes, 1, s->p, s->r, tmp);
         for (size_t n = 0; n < nn; n++) {
             if (!isfinite(s->r[n])) {
                 st = ts__fail(err, TS_ERR_NONFINITE, n, TS_WHERE_POINT);

@@ -6,7 +6,9 @@
  * planes not decidably ordered at a node, TS_ERR_LINES).  Expected values
  * from the header's contract: which node, which status.  Every node here
  * is exactly on the plane in real arithmetic (p x + c with powers of two),
- * so no answer but "on the plane" would be right.
+ * so no answer but "on the plane" would be right, but one: a node one ulp
+ * above the constant plane 2^1020, above it in real arithmetic, refused
+ * by the same rule (|z| beyond 2^1020 within the rounding bound).
  *
  * Evaluation near such a plane (docs/method.md §11.5, "Values inside the
  * region"): a certified surface under the constant upper plane 2^1020 (and
@@ -69,6 +71,15 @@ int main(void)
         ts_plane lo = {H, 0, H};
         const double z[4] = {T, T, T, T}; /* (0,0): 2^1021 above 2^1020, decided; (1,0) on it */
         CHECK(build(z, 1, lo, 0, none, &e) == TS_ERR_SIDE && e.index == 1);
+    }
+    TH_CASE("a constant plane in range, z beyond: one ulp above 2^1020");
+    {
+        /* 2^1020 + 2^968 is within the plane value's rounding bound
+         * 2 * 2 eps 2^1020 = 2^970 of 2^1020 and beyond 2^1020: undecided,
+         * refused as on the plane (the others, 2^1021, are decided above) */
+        ts_plane lo = {0, 0, H};
+        const double z[4] = {T, T, H + 0x1p968, T};
+        CHECK(build(z, 1, lo, 0, none, &e) == TS_ERR_SIDE && e.index == 2);
     }
     TH_CASE("two planes equal at a node, the upper's terms beyond the range");
     {
