@@ -323,7 +323,7 @@ static void ref_read(const char *d0, size_t n, const ropts *o, ref *r)
     while (pos < n) {
         /* one record: physical lines joined while a quote is open */
         size_t rl = 0, rec_line = line + 1, cend = (size_t)-1;
-        int inq = 0, fs = 1;
+        int inq = 0, fs = 1, utf8 = 0; /* utf8: line 1 began with UTF-8's byte-order mark */
         if (line < (size_t)o->skip) {
             const char *nl = memchr(d + pos, '\n', n - pos);
             pos = nl ? (size_t)(nl - d) + 1 : n;
@@ -335,7 +335,7 @@ static void ref_read(const char *d0, size_t n, const ropts *o, ref *r)
             size_t e = nl ? (size_t)(nl - d) : n, i = pos;
             line++;
             if (line == 1 && e - pos >= 3 && memcmp(d + pos, "\xef\xbb\xbf", 3) == 0)
-                i += 3, pos += 3;
+                i += 3, pos += 3, utf8 = 1;
             for (; i < e; i++) {
                 char c = d[i];
                 if (inq) {
@@ -373,8 +373,10 @@ static void ref_read(const char *d0, size_t n, const ropts *o, ref *r)
             }
             rec[rl++] = '\n';
         }
-        /* UTF-16: its byte-order mark on line 1, or a NUL before the first content */
-        if ((rec_line == 1 && rl >= 2 && ((unsigned char)rec[0] == 0xff || (unsigned char)rec[0] == 0xfe) &&
+        /* UTF-16: its byte-order mark at the start of the file (after UTF-8's
+         * mark the file is UTF-8 and FE FF are text), or a NUL before the
+         * first content */
+        if ((rec_line == 1 && !utf8 && rl >= 2 && ((unsigned char)rec[0] == 0xff || (unsigned char)rec[0] == 0xfe) &&
              (unsigned char)rec[1] == ((unsigned char)rec[0] ^ 1u)) ||
             (!seen && memchr(rec, '\0', rl))) {
             r->ok = 0;

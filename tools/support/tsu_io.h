@@ -274,8 +274,13 @@ size_t tsu_format_time(double t, const tsu_time_form *form, char buf[TSU_TIME_SI
 
 /*
  * Input format (one table per input):
- *  - Records end in "\n" or "\r\n"; the last needs no terminator.  A
- *    record is one line, except that a quoted field may contain line breaks.
+ *  - UTF-8; its byte-order mark at the start is skipped.  UTF-16 text is
+ *    TSU_IO_ERR_ENCODING: a UTF-16 byte-order mark at the start of the
+ *    first line read (not after UTF-8's: FE FF there are text), or a NUL
+ *    byte in a line before the first content line.
+ *  - Records end in "\n", "\r\n" or a lone "\r"; the last needs no
+ *    terminator.  A record is one line, except that a quoted field may
+ *    contain line breaks.
  *  - tsu_read_options.skip leading lines are skipped unread.
  *  - '#' outside quotes starts a comment running to the end of the line.
  *  - Blank lines (only spaces/tabs, or only a comment) are skipped.
