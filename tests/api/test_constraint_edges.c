@@ -181,7 +181,23 @@ static void contradicting_slopes(void)
     TH_CASE("convex next to a touched polyline");
     double px[3] = {1, 2, 3}, py[3] = {2, 3, 4}, f3[4] = {0, 1, 3, 3.5};
     c[1].bound = TS_BOUND_POLYLINE, c[1].px = px, c[1].py = py, c[1].n_poly = 3;
-    refused(x, f3, 4, c, 2, TS_ERR_CONDITION, TS_CONDITION_CURVATURE_SLOPE, 1, 2, NULL);
+    refused(x, f3, 4, c, 2, TS_ERR_CONDITION, TS_CONDITION_CURVATURE_SLOPE, 1, 2,
+            "point 2 (x = 2, f = 3): constraint 0 (convex) needs a slope here of at least the "
+            "secant 2 of the interval before it, but the upper constraint allows at most 1 "
+            "there: no curve with a continuous slope meets both (constraint 1, upper)");
+
+    TH_CASE("convex right of a slope floor above its secant");
+    /* convex on [2, 3] needs S'(2) <= Δ_2 = 0.5; S' >= 0.8 on [1, 2] (secant 1
+     * there) needs S'(2) >= 0.8 */
+    double f4[4] = {0, 1, 2, 2.5};
+    ts_constraint_init(&c[0], TS_CONSTRAINT_CONVEX);
+    c[0].first = 2, c[0].count = 1;
+    ts_constraint_init(&c[1], TS_CONSTRAINT_SLOPE_MIN);
+    c[1].value = 0.8, c[1].first = 1, c[1].count = 1;
+    refused(x, f4, 4, c, 2, TS_ERR_CONDITION, TS_CONDITION_CURVATURE_SLOPE, 1, 2,
+            "point 2 (x = 2, f = 2): constraint 0 (convex) needs a slope here of at most the "
+            "secant 0.5 of the interval after it, but the slope-min constraint allows at least "
+            "0.8 there: no curve with a continuous slope meets both (constraint 1, slope-min)");
 
     TH_CASE("concave right of a slope bound below its secant");
     double g[4] = {0, 0, 2, 3};

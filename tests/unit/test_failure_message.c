@@ -107,6 +107,8 @@ int main(void)
     NONE(rec(0, 4, TS_CONDITION_CONCAVE_DATA), &c); /* the last: no secant after */
     NONE(rec(1, 4, TS_CONDITION_SECANT_SLOPE), &c); /* interval 4 of 4 */
     NONE(rec(0, 2, TS_CONDITION_SLOPE_CONFLICT), &c);
+    /* point 2: convex needs S' in [1, 2], slope-max allows up to 1.5: no conflict */
+    NONE(rec(1, 2, TS_CONDITION_CURVATURE_SLOPE), &c);
     NONE(rec(0, 2, TS_CONDITION_UNPROVEN), &c);
     NONE(rec(0, 2, TS_CONDITION_NONE), &c);
     NONE(rec(3, 1, TS_CONDITION_TOUCH_CORNER), &c); /* a constant bound has no corner */
