@@ -345,23 +345,34 @@ static int curv_beyond(const ts_constraint *q, const double *x, const double *f,
     return 0;
 }
 
+/* The first curvature record (in order, left of x_j before right) whose
+ * secant next to knot j falls beyond the rules lo, hi (NULL: none on that
+ * side): 1 with *q the record, *rk the rule's record, *iv the interval and
+ * *r the rule it passes; 0 if none. */
+static int curv_scan(const ts_constraint *cs, size_t nc, const double *x, const double *f,
+                     size_t n, size_t j, const slope_of *lo, const slope_of *hi, size_t *q,
+                     size_t *rk, size_t *iv, const slope_of **r)
+{
+    for (*q = 0; *q < nc; (*q)++)
+        for (int left = 1; left >= 0; left--)
+            if (curv_beyond(&cs[*q], x, f, n, j, left, lo, hi, rk, iv)) {
+                *r = (curv_sign(&cs[*q]) > 0.0) == (left == 1) ? hi : lo;
+                return 1;
+            }
+    return 0;
+}
+
 int ts__con_knot_conflict(const double *x, const double *f, size_t n, const ts_constraint *cs,
                           size_t nc, size_t k, size_t j, size_t *kc, size_t *iv, double *slope)
 {
     slope_of lo, hi;
+    const slope_of *r;
+    size_t rk;
     int hl = rule_at(cs, k, x, f, n, j, 0, &lo), hh = rule_at(cs, k, x, f, n, j, 1, &hi);
-    for (size_t q = 0; q < nc; q++)
-        for (int left = 1; left >= 0; left--) {
-            size_t rk;
-            if (curv_beyond(&cs[q], x, f, n, j, left, hl ? &lo : NULL, hh ? &hi : NULL, &rk,
-                            iv)) {
-                const slope_of *r = (curv_sign(&cs[q]) > 0.0) == (left == 1) ? &hi : &lo;
-                *kc = q;
-                *slope = r->type == 1 ? r->L : piece_slope(&cs[k], r->p);
-                return 1;
-            }
-        }
-    return 0;
+    if (!curv_scan(cs, nc, x, f, n, j, hl ? &lo : NULL, hh ? &hi : NULL, kc, &rk, iv, &r))
+        return 0;
+    *slope = r->type == 1 ? r->L : piece_slope(&cs[k], r->p);
+    return 1;
 }
 
 /* docs/method.md §13.1: the necessary conditions on the data. */
@@ -436,14 +447,11 @@ static ts_status knot_checks(const double *x, const double *f, size_t n, const t
         if (hl && hh && slope_cmp(&lo, &hi) > 0)
             return con_fail(err, fail, TS_ERR_INFEASIBLE, TS_NO_INDEX, j, TS_WHERE_POINT,
                             TS_CONDITION_SLOPE_CONFLICT);
-        for (size_t q = 0; q < nc; q++)
-            for (int left = 1; left >= 0; left--) {
-                size_t rk, iv;
-                if (curv_beyond(&cs[q], x, f, n, j, left, hl ? &lo : NULL, hh ? &hi : NULL, &rk,
-                                &iv))
-                    return con_fail(err, fail, TS_ERR_CONDITION, rk, j, TS_WHERE_POINT,
-                                    TS_CONDITION_CURVATURE_SLOPE);
-            }
+        size_t q, rk, iv;
+        const slope_of *rule;
+        if (curv_scan(cs, nc, x, f, n, j, hl ? &lo : NULL, hh ? &hi : NULL, &q, &rk, &iv, &rule))
+            return con_fail(err, fail, TS_ERR_CONDITION, rk, j, TS_WHERE_POINT,
+                            TS_CONDITION_CURVATURE_SLOPE);
     }
     return TS_OK;
 }
