@@ -353,8 +353,9 @@ static void test_extreme_widths(void)
         ts_histo_free(h);
     }
     {
-        /* widths 1.5e308 and 1.6e308 (each a double, their sum is not) */
-        double e[4] = {-1.5e308, 0.0, 1.6e308, 1.7e308}, t[3] = {1e308, 3e307, 1e300};
+        /* widths 1e306, 1.69e308, 1.6e308 (each a double, the sum of the
+         * last two is not) */
+        double e[4] = {-1.7e308, -1.69e308, 0.0, 1.6e308}, t[3] = {1e300, 1e308, 3e307};
         feclearexcept(FE_ALL_EXCEPT);
         check(e, t, 3, 0.0, HUGE_VAL);
         CHECK(!fetestexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW));
