@@ -184,7 +184,7 @@ static double worst_mismatch(const ts_spline *s, const prob *p)
     const double *d = ts_spline_slopes(s);
     double worst = 0.0;
     for (size_t i = 1; i < n; i++) {
-        double aL, aR, BL[4], BR[4], X[4];
+        double aL = 1.0, aR = 1.0, BL[4] = {0}, BR[4] = {0}, X[4];
         CHECK(ts_spline_a(s, i - 1, &aL) == TS_OK && ts_spline_a(s, i, &aR) == TS_OK);
         CHECK(ts_spline_control(s, i - 1, BL, X) == TS_OK);
         CHECK(ts_spline_control(s, i, BR, X) == TS_OK);
