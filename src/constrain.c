@@ -12,16 +12,18 @@
 #define CON_EXACT TS_EXACT_TERMS /* terms of the exact sums below (ts__exact_sign) */
 #define CON_DOUBLINGS TS_LIMIT(con_doublings)
 
-/* a − b exactly as two terms (TwoSum). */
+/* a − b exactly as a two-term expansion (ts__exp_grow of a by −b, TwoSum):
+ * r[1] the rounded difference, r[0] its rounding error. */
 static void two_diff(double a, double b, double r[2])
 {
-    double s = a - b, z = s - a;
-    r[0] = s;
-    r[1] = (a - (s - z)) + (-b - z);
+    (void)ts__exp_grow(&a, 1, -b, r);
 }
 
-/* Product of expansions a[0..na) and b[0..nb) (exact, TwoProduct by fma)
- * appended to v at *k, times sg. */
+/* Product of term lists a[0..na) and b[0..nb) (exact, TwoProduct by fma)
+ * appended to v at *k, times sg: the pairwise products, for ts__exact_sign
+ * to sum.  Not ts__exp_product: piece_polygon's lists are not expansions
+ * (nonoverlapping, increasing), which its Scale-Expansion needs, and where
+ * a product underflows the two would sum different inexact terms. */
 static void prod_terms(const double *a, int na, const double *b, int nb, double sg, double *v,
                        int *k)
 {
@@ -220,12 +222,12 @@ static int secant_side(const double *x, const double *f, size_t i, double L)
     double v[8], p[2], hd[2], sc = 1.0;
     int m = 0, ke;
     two_diff(x[i + 1], x[i], hd);
-    if (!isfinite(L * 0x1p-64 * hd[0])) {
+    if (!isfinite(L * 0x1p-64 * hd[1])) {
         /* |L h| > 2^1087 > 2 TS_VALUE_MAX >= |f_{i+1} − f_i|: the sign is −L's */
         v[m++] = -L;
     } else {
-        if (!(fabs(L * hd[0]) <= 0x1p1020)) {
-            (void)frexp(L * 0x1p-64 * hd[0], &ke);
+        if (!(fabs(L * hd[1]) <= 0x1p1020)) {
+            (void)frexp(L * 0x1p-64 * hd[1], &ke);
             sc = ldexp(1.0, -(ke + 64 - 1010));
         }
         v[m++] = sc * f[i + 1];
@@ -760,12 +762,12 @@ static int slope_polygon(const seg *g, double L, double s)
             return 0;
         /* |L h| below 2^-960, where its product's error is not exact: then
          * |L h dX̂_l| < 2^-960 (0 <= dX̂_l <= 1), so the difference
-         * B_{l+1} − B_l = d0 + d1 (two_diff, exact; |d1| <= ulp(d0)/2) with
-         * s d0 >= 2^-958 decides each sign; a smaller one is not proven */
+         * B_{l+1} − B_l = d1 + d0 (two_diff, exact; |d0| <= ulp(d1)/2) with
+         * s d1 >= 2^-958 decides each sign; a smaller one is not proven */
         for (int l = 0; l < 3; l++) {
             double d[2];
             two_diff(g->B[l + 1], g->B[l], d);
-            if (!(s * d[0] >= 0x1p-958))
+            if (!(s * d[1] >= 0x1p-958))
                 return 0;
         }
         return 1;
