@@ -1187,35 +1187,37 @@ static int covers(const ts_constraint *c, const ts_spline *sp, size_t i)
     return 1;
 }
 
-/* docs/method.md §13.4: the slope of interval i's stored curve at one of
- * its ends, db/k (db = B1 − f_i or f_{i+1} − B2 with fj the knot's value,
- * k = κ h), equals the knot's slope d within CON_C1_TOL of max(|d|,
- * |secant_i|), or within the rounding of a few ulps of fj at the closed-form
- * a_i or RESLOPE_A_MAX, the smaller (k0 its k: 2^-50 |fj| there, in slope
- * units a constant, so it shrinks as a_i is raised); compared times k, so
- * nothing overflows.  db = 0 with
- * d ≠ 0 fails whatever the scale.  A large a_i leaves κ h d a few ulps of
- * fj, or none: the stored curve's tangent breaks at the knot. */
-#define CON_C1_TOL 0x1p-20
+#define CON_C1_TOL 0x1p-20 /* docs/method.md §13.4 */
 /* the largest a_k of a changed slope (beyond, the curve is a polyline to
  * rounding, §13.4); also the largest a whose rounding end_slope_ok accepts */
 #define RESLOPE_A_MAX (0x1p14 * 4.0 / (3.0 * TS_PI))
-static int end_slope_ok(const ts_spline *sp, size_t i, double db, double d, double fj, double k0)
+
+/* docs/method.md §13.4: the slope of interval i's stored curve at one of
+ * its ends, db/k (db = B1 − f_i or f_{i+1} − B2, fj the knot's value,
+ * k = κ h), equals the knot's slope d within CON_C1_TOL of max(|d|,
+ * |secant_i|), or within the rounding of a few ulps of fj at a0, the
+ * closed-form a_i or RESLOPE_A_MAX, the smaller (2^-50 |fj| there, times
+ * κ/κ0 = a0/a elsewhere: a constant in slope units, so raising a_i cannot
+ * buy it);
+ * compared times k, so nothing overflows.  db = 0 with d ≠ 0 fails
+ * whatever the scale.  A large a_i leaves κ h d a few ulps of fj, or none:
+ * the stored curve's tangent breaks at the knot. */
+static int end_slope_ok(const ts_spline *sp, size_t i, double db, double d, double fj, double a0)
 {
-    double k = ts__geo_k(ts__h(sp, i), sp->alpha[i] + sp->beta[i]);
+    double a = sp->alpha[i] + sp->beta[i], k = ts__geo_k(ts__h(sp, i), a);
     double m = fmax(k * fabs(d), sp->kappa[i] * fabs(sp->f[i + 1] - sp->f[i]));
-    double tol = CON_C1_TOL * m + 0x1p-50 * fabs(fj) * (k / k0);
+    double tol = CON_C1_TOL * m + 0x1p-50 * fabs(fj) * (a0 / a);
     return (db != 0.0 || d == 0.0) && fabs(db - k * d) <= tol;
 }
 
 /* Every covering record's certificate on interval i, and the stored
- * curve's slope at an inner knot d_i (end_slope_ok; k0 the k of the
- * closed-form a_i): a tangent break there is seen by no record's
+ * curve's slope at an inner knot d_i (end_slope_ok; a0 the closed-form a_i,
+ * at most RESLOPE_A_MAX): a tangent break there is seen by no record's
  * certificate, which holds for the stored values.  At the first and last
  * knot there is no other side: the end slope is the stored one.  *bad the
  * first failing (or covering) record. */
 static int interval_ok(const ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i,
-                       double k0, size_t *bad)
+                       double a0, size_t *bad)
 {
     int any = 0;
     for (size_t k = 0; k < nc; k++) {
@@ -1231,11 +1233,11 @@ static int interval_ok(const ts_spline *sp, const ts_constraint *cs, size_t nc, 
     }
     const double *f = sp->f;
     return !any ||
-           ((i == 0 || end_slope_ok(sp, i, sp->b1[i] - f[i], sp->d[i], f[i], k0)) &&
-            (i + 1 == sp->n || end_slope_ok(sp, i, f[i + 1] - sp->b2[i], sp->d[i + 1], f[i + 1], k0)));
+           ((i == 0 || end_slope_ok(sp, i, sp->b1[i] - f[i], sp->d[i], f[i], a0)) &&
+            (i + 1 == sp->n || end_slope_ok(sp, i, f[i + 1] - sp->b2[i], sp->d[i + 1], f[i + 1], a0)));
 }
 
-static int nudge(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i, double k0,
+static int nudge(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i, double a0,
                  size_t *bad)
 {
     double b1 = sp->b1[i], b2 = sp->b2[i];
@@ -1248,7 +1250,7 @@ static int nudge(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i, do
                 c2 = nextafter(c2, v < 0 ? -HUGE_VAL : HUGE_VAL);
             sp->b1[i] = c1;
             sp->b2[i] = c2;
-            if (interval_ok(sp, cs, nc, i, k0, bad))
+            if (interval_ok(sp, cs, nc, i, a0, bad))
                 return 1;
         }
     sp->b1[i] = b1;
@@ -1266,13 +1268,13 @@ static int certify_interval(ts_spline *sp, const ts_constraint *cs, size_t nc, s
 {
     int tries = 0;
     double a0 = sp->alpha[i] + sp->beta[i], lo = TS_GEOMETRIC_A_RAISE;
-    double k0 = ts__geo_k(ts__h(sp, i), fmin(a_ref, RESLOPE_A_MAX));
-    while (!interval_ok(sp, cs, nc, i, k0, bad)) {
+    double ar = fmin(a_ref, RESLOPE_A_MAX);
+    while (!interval_ok(sp, cs, nc, i, ar, bad)) {
         /* first the inner control values moved by up to 2 ulps: a slope
          * set exactly to a bound, or a forced line, is met in exact
          * arithmetic only if B1, B2 round the right way (docs/method.md
          * §13.4); evaluation reads the stored values */
-        if (tries == 0 && nudge(sp, cs, nc, i, k0, bad))
+        if (tries == 0 && nudge(sp, cs, nc, i, ar, bad))
             return 1;
         /* a0 doubled CON_DOUBLINGS times, then (a polyline piece's gap
          * is not monotone in a) 16 values from 4/(3π) up to a0 */
