@@ -712,7 +712,10 @@ TS_API ts_status ts_spline_certify(const ts_spline *s, const ts_line *lower, con
  *   TS_ERR_INFEASIBLE  the slopes the constraints require at a knot
  *                      exclude each other (a proof that no C¹ curve exists);
  *   TS_ERR_UNPROVEN    no certified a_i up to 2^60 alpha_i was found, without
- *                      a proof that none exists (polyline and spline bounds;
+ *                      a proof that none exists (certified: every record's
+ *                      certificate holds and the stored curve's slope at each
+ *                      inner knot is d_i within 2^-20 of the slopes there,
+ *                      docs/method.md §13.4; polyline and spline bounds;
  *                      also a slope bound that a data secant reaches exactly:
  *                      the interval must then be that line, and its rounded
  *                      control values are collinear only where f_{i+1} − L h κ

@@ -12,16 +12,18 @@
 #define CON_EXACT TS_EXACT_TERMS /* terms of the exact sums below (ts__exact_sign) */
 #define CON_DOUBLINGS TS_LIMIT(con_doublings)
 
-/* a − b exactly as two terms (TwoSum). */
+/* a − b exactly as a two-term expansion (ts__exp_grow of a by −b, TwoSum):
+ * r[1] the rounded difference, r[0] its rounding error. */
 static void two_diff(double a, double b, double r[2])
 {
-    double s = a - b, z = s - a;
-    r[0] = s;
-    r[1] = (a - (s - z)) + (-b - z);
+    (void)ts__exp_grow(&a, 1, -b, r);
 }
 
-/* Product of expansions a[0..na) and b[0..nb) (exact, TwoProduct by fma)
- * appended to v at *k, times sg. */
+/* Product of term lists a[0..na) and b[0..nb) (exact, TwoProduct by fma)
+ * appended to v at *k, times sg: the pairwise products, for ts__exact_sign
+ * to sum.  Not ts__exp_product: piece_polygon's lists are not expansions
+ * (nonoverlapping, increasing), which its Scale-Expansion needs, and where
+ * a product underflows the two would sum different inexact terms. */
 static void prod_terms(const double *a, int na, const double *b, int nb, double sg, double *v,
                        int *k)
 {
@@ -220,12 +222,12 @@ static int secant_side(const double *x, const double *f, size_t i, double L)
     double v[8], p[2], hd[2], sc = 1.0;
     int m = 0, ke;
     two_diff(x[i + 1], x[i], hd);
-    if (!isfinite(L * 0x1p-64 * hd[0])) {
+    if (!isfinite(L * 0x1p-64 * hd[1])) {
         /* |L h| > 2^1087 > 2 TS_VALUE_MAX >= |f_{i+1} − f_i|: the sign is −L's */
         v[m++] = -L;
     } else {
-        if (!(fabs(L * hd[0]) <= 0x1p1020)) {
-            (void)frexp(L * 0x1p-64 * hd[0], &ke);
+        if (!(fabs(L * hd[1]) <= 0x1p1020)) {
+            (void)frexp(L * 0x1p-64 * hd[1], &ke);
             sc = ldexp(1.0, -(ke + 64 - 1010));
         }
         v[m++] = sc * f[i + 1];
@@ -760,12 +762,12 @@ static int slope_polygon(const seg *g, double L, double s)
             return 0;
         /* |L h| below 2^-960, where its product's error is not exact: then
          * |L h dX̂_l| < 2^-960 (0 <= dX̂_l <= 1), so the difference
-         * B_{l+1} − B_l = d0 + d1 (two_diff, exact; |d1| <= ulp(d0)/2) with
-         * s d0 >= 2^-958 decides each sign; a smaller one is not proven */
+         * B_{l+1} − B_l = d1 + d0 (two_diff, exact; |d0| <= ulp(d1)/2) with
+         * s d1 >= 2^-958 decides each sign; a smaller one is not proven */
         for (int l = 0; l < 3; l++) {
             double d[2];
             two_diff(g->B[l + 1], g->B[l], d);
-            if (!(s * d[0] >= 0x1p-958))
+            if (!(s * d[1] >= 0x1p-958))
                 return 0;
         }
         return 1;
@@ -1185,15 +1187,37 @@ static int covers(const ts_constraint *c, const ts_spline *sp, size_t i)
     return 1;
 }
 
-/* Every covering record's certificate on interval i, and no control value
- * next to an inner knot rounded onto it where the slope there is not 0:
- * κ h d_i ≠ 0 in exact arithmetic, so B1 = f_i would break the stored
- * curve's tangent at x_i (horizontal on one side, d_i on the other; a large
- * a_i makes κ h d_i vanish below half an ulp of f_i; docs/method.md §13.4).
- * At the first and last knot there is no other side: the end slope is the
- * stored one.  *bad the first failing (or covering) record. */
+#define CON_C1_TOL 0x1p-20 /* docs/method.md §13.4 */
+/* the largest a_k of a changed slope (beyond, the curve is a polyline to
+ * rounding, §13.4); also the largest a whose rounding end_slope_ok accepts */
+#define RESLOPE_A_MAX (0x1p14 * 4.0 / (3.0 * TS_PI))
+
+/* docs/method.md §13.4: the slope of interval i's stored curve at one of
+ * its ends, db/k (db = B1 − f_i or f_{i+1} − B2, fj the knot's value,
+ * k = κ h), equals the knot's slope d within CON_C1_TOL of max(|d|,
+ * |secant_i|), or within the rounding of a few ulps of fj at a0, the
+ * closed-form a_i or RESLOPE_A_MAX, the smaller (2^-50 |fj| there, times
+ * κ/κ0 = a0/a elsewhere: a constant in slope units, so raising a_i cannot
+ * buy it);
+ * compared times k, so nothing overflows.  db = 0 with d ≠ 0 fails
+ * whatever the scale.  A large a_i leaves κ h d a few ulps of fj, or none:
+ * the stored curve's tangent breaks at the knot. */
+static int end_slope_ok(const ts_spline *sp, size_t i, double db, double d, double fj, double a0)
+{
+    double a = sp->alpha[i] + sp->beta[i], k = ts__geo_k(ts__h(sp, i), a);
+    double m = fmax(k * fabs(d), sp->kappa[i] * fabs(sp->f[i + 1] - sp->f[i]));
+    double tol = CON_C1_TOL * m + 0x1p-50 * fabs(fj) * (a0 / a);
+    return (db != 0.0 || d == 0.0) && fabs(db - k * d) <= tol;
+}
+
+/* Every covering record's certificate on interval i, and the stored
+ * curve's slope at an inner knot d_i (end_slope_ok; a0 the closed-form a_i,
+ * at most RESLOPE_A_MAX): a tangent break there is seen by no record's
+ * certificate, which holds for the stored values.  At the first and last
+ * knot there is no other side: the end slope is the stored one.  *bad the
+ * first failing (or covering) record. */
 static int interval_ok(const ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i,
-                       size_t *bad)
+                       double a0, size_t *bad)
 {
     int any = 0;
     for (size_t k = 0; k < nc; k++) {
@@ -1207,11 +1231,14 @@ static int interval_ok(const ts_spline *sp, const ts_constraint *cs, size_t nc, 
         if (!proven)
             return 0;
     }
-    return !(any && ((i > 0 && sp->d[i] != 0.0 && sp->b1[i] == sp->f[i]) ||
-                     (i + 1 < sp->n && sp->d[i + 1] != 0.0 && sp->b2[i] == sp->f[i + 1])));
+    const double *f = sp->f;
+    return !any ||
+           ((i == 0 || end_slope_ok(sp, i, sp->b1[i] - f[i], sp->d[i], f[i], a0)) &&
+            (i + 1 == sp->n || end_slope_ok(sp, i, f[i + 1] - sp->b2[i], sp->d[i + 1], f[i + 1], a0)));
 }
 
-static int nudge(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i, size_t *bad)
+static int nudge(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i, double a0,
+                 size_t *bad)
 {
     double b1 = sp->b1[i], b2 = sp->b2[i];
     for (int u = -2; u <= 2; u++)
@@ -1223,7 +1250,7 @@ static int nudge(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i, si
                 c2 = nextafter(c2, v < 0 ? -HUGE_VAL : HUGE_VAL);
             sp->b1[i] = c1;
             sp->b2[i] = c2;
-            if (interval_ok(sp, cs, nc, i, bad))
+            if (interval_ok(sp, cs, nc, i, a0, bad))
                 return 1;
         }
     sp->b1[i] = b1;
@@ -1233,18 +1260,21 @@ static int nudge(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i, si
 
 /* docs/method.md §13.4: certify interval i; double a_i where a certificate
  * fails (every closed-form condition of §13.3 survives a larger a); 0 after
- * CON_DOUBLINGS doublings and the downward values, *bad the record. */
+ * CON_DOUBLINGS doublings and the downward values, *bad the record.  a_ref
+ * the closed-form a_i (end_slope_ok accepts the rounding there, or at
+ * RESLOPE_A_MAX if that is smaller). */
 static int certify_interval(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t i,
-                            size_t *bad)
+                            double a_ref, size_t *bad)
 {
     int tries = 0;
     double a0 = sp->alpha[i] + sp->beta[i], lo = TS_GEOMETRIC_A_RAISE;
-    while (!interval_ok(sp, cs, nc, i, bad)) {
+    double ar = fmin(a_ref, RESLOPE_A_MAX);
+    while (!interval_ok(sp, cs, nc, i, ar, bad)) {
         /* first the inner control values moved by up to 2 ulps: a slope
          * set exactly to a bound, or a forced line, is met in exact
          * arithmetic only if B1, B2 round the right way (docs/method.md
          * §13.4); evaluation reads the stored values */
-        if (tries == 0 && nudge(sp, cs, nc, i, bad))
+        if (tries == 0 && nudge(sp, cs, nc, i, ar, bad))
             return 1;
         /* a0 doubled CON_DOUBLINGS times, then (a polyline piece's gap
          * is not monotone in a) 16 values from 4/(3π) up to a0 */
@@ -1267,7 +1297,6 @@ static int certify_interval(ts_spline *sp, const ts_constraint *cs, size_t nc, s
 
 /* Is interval k's a_k, raised first to the closed-form need of the records
  * with the current slopes (§13.3), at most RESLOPE_A_MAX after the search? */
-#define RESLOPE_A_MAX (0x1p14 * 4.0 / (3.0 * TS_PI))
 static int resloped_ok(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t k)
 {
     double need = 0.0;
@@ -1282,7 +1311,8 @@ static int resloped_ok(ts_spline *sp, const ts_constraint *cs, size_t nc, size_t
         ts__controls_geo(sp, k, k + 1);
     }
     size_t bad;
-    return certify_interval(sp, cs, nc, k, &bad) && sp->alpha[k] + sp->beta[k] <= RESLOPE_A_MAX;
+    return certify_interval(sp, cs, nc, k, fmax(need, sp->alpha[k]), &bad) &&
+           sp->alpha[k] + sp->beta[k] <= RESLOPE_A_MAX;
 }
 
 /* docs/method.md §13.4: interval i has no certified a_i with its slopes;
@@ -1326,7 +1356,8 @@ ts_status ts__con_certify(ts_spline *sp, const ts_constraint *cs, size_t nc, ts_
 {
     for (size_t i = 0; i < sp->n; i++) {
         size_t bad = 0;
-        if (!certify_interval(sp, cs, nc, i, &bad) && !reslope(sp, cs, nc, i))
+        if (!certify_interval(sp, cs, nc, i, sp->alpha[i] + sp->beta[i], &bad) &&
+            !reslope(sp, cs, nc, i))
             return con_fail(err, fail, TS_ERR_UNPROVEN, bad, i, TS_WHERE_INTERVAL,
                             TS_CONDITION_UNPROVEN);
     }

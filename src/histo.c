@@ -424,25 +424,45 @@ TS_INLINE double piece_total(const double *P, double hh)
     return hh * (HW0 * (P[0] + P[3]) + HW1 * (P[1] + P[2]));
 }
 
+/* a / b for b > 0 (not NaN): ±∞ where it overflows, without raising
+ * FE_OVERFLOW (§12.6).  |a| < 2^1022 b cannot overflow (2^1022 b is exact
+ * for b < 1).  Otherwise |a| >= 2^-52, so |a| 2^-100 and b 2^1000 are
+ * exact and their quotient is normal, in [2^-78, 2^998]: it is a / b
+ * rounded, times 2^-1100 exactly, and a / b rounds to 2^1024 or above
+ * (overflows) exactly where it is at least 2^-76. */
+static double quot(double a, double b)
+{
+    if (b >= 1.0 || fabs(a) < 0x1p1022 * b)
+        return a / b;
+    return fabs(a) * 0x1p-100 / (b * 0x1p1000) >= 0x1p-76 ? copysign(HUGE_VAL, a) : a / b;
+}
+
 /* §12.4: the slope at inner edge j, limited by the room its value and
- * both bins leave (y[j] neither 0 nor H) */
+ * both bins leave (y[j] neither 0 nor H).  The limits and the central
+ * difference may exceed DBL_MAX on narrow bins (means near the limit over
+ * widths near DBL_MIN): quot gives the ∞ they rounded to, without
+ * FE_OVERFLOW (an infinite limit does not bind; both infinite: slope 0). */
 static double edge_slope(const double *edges, const double *rho, const double *y, double H,
                          double alpha, size_t j)
 {
     double wl = edges[j] - edges[j - 1], wr = edges[j + 1] - edges[j];
     double Kl = wl / (3.0 * TS_PI), Kr = wr / (3.0 * TS_PI);
     double room = y[j] < H - y[j] ? y[j] : H - y[j];
-    double L = room / (Kl > Kr ? Kl : Kr);
+    double L = quot(room, Kl > Kr ? Kl : Kr);
     for (int side = 0; side < 2; side++) {
         size_t b = j - 1 + (size_t)side;
         double m = 0.5 * (y[b] + y[b + 1]);
         double sl = 2.0 * rho[b] - m, sh = H - 2.0 * rho[b] + m;
         double slack = sl < sh ? sl : sh;
-        double Lb = slack / (4.0 * HW1 * (side ? Kr : Kl));
+        double Lb = quot(slack, 4.0 * HW1 * (side ? Kr : Kl));
         L = Lb < L ? Lb : L;
     }
     L *= HSHRINK;
-    double d = (rho[j] - rho[j - 1]) / (0.5 * (wl + wr)) / alpha;
+    /* the half sum of the widths: wl + wr overflows where both are near
+     * DBL_MAX; halving first is exact there (both >= 2^-1021) or loses
+     * only a width far below half an ulp of the other: the same double */
+    double hw = wl < 0x1p1022 && wr < 0x1p1022 ? 0.5 * (wl + wr) : 0.5 * wl + 0.5 * wr;
+    double d = quot(quot(rho[j] - rho[j - 1], hw), alpha);
     d = d < L ? d : L;
     d = d > -L ? d : -L;
     return isfinite(d) ? d : 0.0;
@@ -628,7 +648,9 @@ static void eval_in(const ts_histo *h, size_t j, double x, double *r, double *dr
     if (dr) {
         double d = 3.0 * ms * ms * c * (Q[1] - Q[0]) + 2.0 * s * c * (Q[2] - Q[1]) +
                    3.0 * mc * mc * s * (Q[3] - Q[2]);
-        d *= TS_HALF_PI / q;
+        /* π/(2q) overflows for q below about 2^-1023.35 (widths near
+         * DBL_MIN), and times a zero sum gave NaN: there divide last */
+        d = q >= 0x1p-1023 ? d * (TS_HALF_PI / q) : d * TS_HALF_PI / q;
         *dr = rev ? -d : d;
     }
 }

@@ -47,7 +47,7 @@ static void check(const double *e, const double *t, size_t n, double lo, double 
         double scale = fmax(fabs(t[j]), fmax(fabs(lo), isinf(hi) ? 0.0 : fabs(hi)) * w);
         CHECKF(fabs(v - t[j]) <= 1e-12 * scale, "bin %zu: %.17g vs %.17g", j, v, t[j]);
         for (int k = 0; k <= 64; k++) {
-            double x = k == 64 ? e[j + 1] : e[j] + w * k / 64.0, r;
+            double x = k == 64 ? e[j + 1] : e[j] + w * (k / 64.0), r; /* w k: overflow */
             CHECK(ts_histo_eval(h, x, &r, NULL) == TS_OK);
             CHECKF(lo <= r && r <= hi, "bin %zu x %.17g: r %.17g outside [%g, %g]", j, x, r, lo, hi);
         }
@@ -232,8 +232,9 @@ static void test_random(void)
 
 /* Means from 2^1000 to the limit 2^1019 of §12.6 (totals up to about
  * DBL_MAX: widths to 16), with and without bounds: valid input, so no
- * FE_INVALID or FE_DIVBYZERO (the header's promise; the sums of (12.3)
- * overflowed there and raised both).  The scheme is homogeneous of degree
+ * FE_INVALID, FE_DIVBYZERO or FE_OVERFLOW (the header's promise; the sums
+ * of (12.3) overflowed there and raised all three, then the edge-slope
+ * limit room/K alone raised FE_OVERFLOW).  The scheme is homogeneous of degree
  * 1 in (totals, lo, hi): every operation is a sum, a product by a
  * constant, a quotient or a comparison, which commute with a power of 2
  * away from overflow and underflow, so the rate of totals 2^k T is 2^k
@@ -264,19 +265,20 @@ static void test_huge_means(void)
         ts_histo *h = NULL, *hs = NULL;
         feclearexcept(FE_ALL_EXCEPT);
         ts_status st = ts_histo_new(e, t, n, &o, &h, NULL);
-        flagged += st == TS_OK && fetestexcept(FE_INVALID | FE_DIVBYZERO);
+        flagged += st == TS_OK && fetestexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW);
         ts_status ss = ts_histo_new(e, ts, n, &os, &hs, NULL);
         CHECKF(st == ss, "%s vs %s", ts_status_name(st), ts_status_name(ss));
         for (int q = 0; q <= 40 && h && hs; q++) {
             double x = q == 40 ? e[n] : e[0] + (e[n] - e[0]) * q / 40.0, r = 0.0, rs = 0.0;
             CHECK(ts_histo_eval(h, x, &r, NULL) == TS_OK && ts_histo_eval(hs, x, &rs, NULL) == TS_OK);
             CHECKF(r == ldexp(rs, k), "2^%d: x %.17g r %a, scaled %a", k, x, r, ldexp(rs, k));
+            flagged += !!fetestexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW);
             compared++;
         }
         ts_histo_free(h);
         ts_histo_free(hs);
     }
-    CHECKF(flagged == 0, "%ld builds raised FE_INVALID or FE_DIVBYZERO", flagged);
+    CHECKF(flagged == 0, "%ld calls raised FE_INVALID, FE_DIVBYZERO or FE_OVERFLOW", flagged);
     CHECK(compared > 4000);
     /* totals near DBL_MAX = 2^1024 (1 − 2^-53) over widths 32: the mean
      * 2^1019 (1 − 2^-53) just below the limit, neighbours 2^1018, 2^1017;
@@ -294,7 +296,7 @@ static void test_huge_means(void)
             feclearexcept(FE_ALL_EXCEPT);
             ts_status st = ts_histo_new(e, t, 3, &o, &h, NULL);
             CHECKF((st == TS_OK || (b > 0 && st == TS_ERR_INFEASIBLE)) &&
-                       !fetestexcept(FE_INVALID | FE_DIVBYZERO),
+                       !fetestexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW),
                    "bounds %d: %s", b, ts_status_name(st));
             for (size_t j = 0; j < 3 && h; j++) {
                 ts_bin_report rep;
@@ -307,12 +309,66 @@ static void test_huge_means(void)
     }
 }
 
+/* Widths near DBL_MIN and near DBL_MAX: no flag from building, from r
+ * anywhere, from r' where it is a double.  (1) Means up to 2^1018 over
+ * widths from 2^-1022 to 2^-960 (the edge slope's limit room/K reaches
+ * 2^2040, its central difference as much: both were formed and raised
+ * FE_OVERFLOW); a limit beyond DBL_MAX does not bind, so the rates are
+ * checked as everywhere (inside [lo, hi], the totals).  (2) Every width in
+ * [2^-1022, 2^-1021): the end edges' slope is 0, and r' there is 0 (it was
+ * 0 · π/(2q) with π/(2q) = ∞: NaN, FE_INVALID).  (3) Two widths near
+ * DBL_MAX at an edge: their sum overflowed. */
+static void test_extreme_widths(void)
+{
+    TH_CASE("widths near DBL_MIN and DBL_MAX: no flag");
+    long flagged = 0, built0 = built;
+    for (int rep = 0; rep < 300; rep++) {
+        size_t n = 2 + (size_t)(urand() * 5);
+        double e[8], t[7];
+        int ex = -1022 + (int)(urand() * 60);
+        e[0] = 0.0;
+        for (size_t i = 1; i <= n; i++)
+            e[i] = e[i - 1] + ldexp(1.0 + urand(), ex + (int)(urand() * 3));
+        for (size_t i = 0; i < n; i++)
+            t[i] = (urand() < 0.3 ? 0.0 : ldexp(urand(), 1010 + (int)(urand() * 9))) *
+                   (e[i + 1] - e[i]);
+        feclearexcept(FE_ALL_EXCEPT);
+        check(e, t, n, 0.0, HUGE_VAL); /* builds, r, integrals */
+        flagged += !!fetestexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW);
+    }
+    CHECKF(flagged == 0, "%ld series raised FE_INVALID, FE_DIVBYZERO or FE_OVERFLOW", flagged);
+    CHECKF(built - built0 > 150, "%ld built", built - built0);
+    {
+        double e[4] = {0.0, 0x1p-1022, 0x1.fffffffffffffp-1021, 0x1.7ffffffffffffp-1020};
+        double t[3] = {0x1p-7, 0x1p-6, 0x1p-8}; /* means 2^1015 to 2^1016 */
+        ts_histo *h = NULL;
+        feclearexcept(FE_ALL_EXCEPT);
+        CHECK(ts_histo_new(e, t, 3, NULL, &h, NULL) == TS_OK);
+        double r = 0.0, dr = 1.0;
+        CHECK(ts_histo_eval(h, e[0], &r, &dr) == TS_OK);
+        CHECKF(dr == 0.0, "r'(e0) %g", dr);
+        CHECK(ts_histo_eval(h, e[3], &r, &dr) == TS_OK);
+        CHECKF(dr == 0.0, "r'(e3) %g", dr);
+        CHECK(!fetestexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW));
+        ts_histo_free(h);
+    }
+    {
+        /* widths 1e306, 1.69e308, 1.6e308 (each a double, the sum of the
+         * last two is not) */
+        double e[4] = {-1.7e308, -1.69e308, 0.0, 1.6e308}, t[3] = {1e300, 1e308, 3e307};
+        feclearexcept(FE_ALL_EXCEPT);
+        check(e, t, 3, 0.0, HUGE_VAL);
+        CHECK(!fetestexcept(FE_INVALID | FE_DIVBYZERO | FE_OVERFLOW));
+    }
+}
+
 int main(void)
 {
     test_cases();
     test_scalar_build();
     test_random();
     test_huge_means();
+    test_extreme_widths();
     printf("histograms built %ld, refused %ld\n", built, refused);
     return th_report("test_histo_edges");
 }
