@@ -8,11 +8,11 @@
  *  2. stage: the interval is ts__locate's (largest i <= n−1 with x_i <= x:
  *     the right-hand one at an inner knot).  A sorted block walks the cursor,
  *     galloping over gaps.  A dense block (runs of TS_FAST_RUN queries per
- *     interval on average) is not staged: each interval's run of queries is
- *     evaluated when the walk leaves it, a vector's width at a time with the
- *     interval's values in registers (eval_run; the per-query stores and
- *     loads of the staging bounded the kernel when several queries share an
- *     interval).  A sparse block is staged query by query with the
+ *     interval on average) is not staged: its queries are evaluated a
+ *     vector's width at a time with the interval's values in registers, the
+ *     cursor tested once per vector (eval_sorted_dense; the per-query stores
+ *     and loads of the staging bounded the kernel when several queries share
+ *     an interval).  A sparse block is staged query by query with the
  *     interval's values in registers.  An unsorted block runs one
  *     branch-free binary search per query, all queries advancing a level at
  *     a time so their cache misses overlap.
@@ -296,7 +296,7 @@ TS_ALWAYS_INLINE size_t geo_stage_sorted_dense(const ts_spline *sp, const double
  * §2, the expressions of ts__seg_scm: B0 + Σ A_l (B_l − B0)), B'1 − B'0,
  * B'2 − B'1, B'3 − B'2 for S' by (2.1) and S'' by its θ-derivative; deriv a
  * constant at each call.  eval_block forms the differences per query,
- * eval_run once per interval and end (the same subtractions, so the same
+ * run_interval once per interval and end (the same subtractions, so the same
  * bits). */
 TS_ALWAYS_INLINE double eval_core(int deriv, double tu, double tv, double w, double B0, double e1, double e2,
                                   double e3)
@@ -346,49 +346,49 @@ TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, dou
         eval_loop(2, st, nb, y);
 }
 
-/* Queries q[j0..j1) (j0 < j1) of interval v evaluated into y, run places
- * at a time (a vector's width), the last vector spilling past j1 (the next
- * run overwrites it, or it lands in the slack of q and y): every query
- * goes through eval_core in a vector lane, as in eval_block. */
-TS_ALWAYS_INLINE void eval_run(int deriv, const double *q, size_t j0, size_t j1, const fast_iv *v, double *y,
-                               size_t run)
+/* Per-interval constants of a dense block's lanes (eval_sorted_dense): x_i, x_{i+1}, w, and B'0 and
+ * the differences from either end (eval_one's, formed once per interval). */
+typedef struct run_iv {
+    double x0, x1, w, b0, b3, l1, l2, l3, r1, r2, r3;
+} run_iv;
+
+TS_ALWAYS_INLINE run_iv run_interval(const ts_spline *sp, int deriv, size_t i)
 {
-    double x0 = v->x0, x1 = v->x1, w = v->w, b0 = v->b0, b1 = v->b1, b2 = v->b2, b3 = v->b3;
-    /* B'0 and the differences from each end (eval_one's, per interval) */
-    double l1 = b1 - b0, l2 = deriv ? b2 - b1 : b2 - b0, l3 = deriv ? b3 - b2 : b3 - b0;
-    double r1 = b2 - b3, r2 = deriv ? b1 - b2 : b1 - b3, r3 = deriv ? b0 - b1 : b0 - b3;
-#define TS_RUN_LANE(l)                                                                     \
-    do {                                                                                   \
-        double x = q[l], tu = (x - x0) * w, tv = (x1 - x) * w;                             \
-        int left = tu <= tv;                                                               \
-        y[l] = eval_core(deriv, tu, tv, w, left ? b0 : b3, left ? l1 : r1, left ? l2 : r2, \
-                         left ? l3 : r3);                                                  \
+    fast_iv v = fast_interval(sp, i);
+    double b0 = v.b0, b1 = v.b1, b2 = v.b2, b3 = v.b3;
+    run_iv r = {v.x0, v.x1, v.w, b0, b3,
+                b1 - b0, deriv ? b2 - b1 : b2 - b0, deriv ? b3 - b2 : b3 - b0,
+                b2 - b3, deriv ? b1 - b2 : b1 - b3, deriv ? b0 - b1 : b0 - b3};
+    return r;
+}
+
+/* One lane of a dense block: query x_ of interval r into y_. */
+#define TS_RUN_LANE(deriv, r, x_, y_)                                                                  \
+    do {                                                                                           \
+        double x = (x_), tu = (x - (r).x0) * (r).w, tv = ((r).x1 - x) * (r).w;                     \
+        int left = tu <= tv;                                                                       \
+        (y_) = eval_core(deriv, tu, tv, (r).w, left ? (r).b0 : (r).b3, left ? (r).l1 : (r).r1,      \
+                         left ? (r).l2 : (r).r2, left ? (r).l3 : (r).r3);                          \
     } while (0)
-    q += j0;
-    y += j0;
+
 #if defined(__wasm__)
-    /* one loop over whole vectors, which emscripten's Clang vectorises (no
-     * fused multiply-add there: the bits do not depend on the loop's shape) */
-    size_t k = (j1 - j0 + run - 1) / run * run;
-    for (size_t l = 0; l < k; l++)
-        TS_RUN_LANE(l);
-#else
-    const double *qe = q + (j1 - j0);
-    do {
-#pragma GCC unroll 1 /* GCC 12 unrolled it at some places into scalar code: other contractions */
-        for (size_t l = 0; l < run; l++)
-            TS_RUN_LANE(l);
-        q += run;
-        y += run;
-    } while (q < qe);
-#endif
-#undef TS_RUN_LANE
+/* Queries q[j0..j1) (j0 < j1) of interval i evaluated into y in one loop
+ * over whole vectors (the last spilling past j1: the next run overwrites
+ * it, or it lands in the slack of q and y), which emscripten's Clang
+ * vectorises (no fused multiply-add there: the bits do not depend on the
+ * loop's shape). */
+TS_ALWAYS_INLINE void eval_run(int deriv, const double *q, size_t j0, size_t j1, const ts_spline *sp, size_t i,
+                               double *y, size_t run)
+{
+    run_iv r = run_interval(sp, deriv, i);
+    size_t k = j0 + (j1 - j0 + run - 1) / run * run;
+    for (size_t l = j0; l < k; l++)
+        TS_RUN_LANE(deriv, r, q[l], y[l]);
 }
 
 /* Sorted q[0..nb), xs[i] <= q[0], a dense block (long runs): walk the
  * cursor as geo_stage_sorted_dense and evaluate each interval's run of
- * queries when the walk leaves it, with its values in registers; q and y
- * have TS_FAST_RUN places of slack. */
+ * queries when the walk leaves it (eval_run). */
 TS_ALWAYS_INLINE size_t eval_sorted_dense(const ts_spline *sp, int deriv, const double *q, size_t nb, double *y,
                                           size_t i, size_t run)
 {
@@ -398,10 +398,8 @@ TS_ALWAYS_INLINE size_t eval_sorted_dense(const ts_spline *sp, int deriv, const 
     for (size_t j = 0; j < nb; j++) {
         double x = q[j];
         if (x >= next) {
-            if (j > j0) {
-                fast_iv v = fast_interval(sp, i);
-                eval_run(deriv, q, j0, j, &v, y, run);
-            }
+            if (j > j0)
+                eval_run(deriv, q, j0, j, sp, i, y, run);
             j0 = j;
             i++;
             if (xs[i + 1] <= x)
@@ -409,10 +407,60 @@ TS_ALWAYS_INLINE size_t eval_sorted_dense(const ts_spline *sp, int deriv, const 
             next = xs[i + 1];
         }
     }
-    fast_iv v = fast_interval(sp, i);
-    eval_run(deriv, q, j0, nb, &v, y, run);
+    eval_run(deriv, q, j0, nb, sp, i, y, run);
     return i;
 }
+#else
+/* Sorted q[0..nb), xs[i] <= q[0], a dense block (long runs): evaluate a
+ * vector's width (run) of queries at a time with the current interval's
+ * values in registers while the vector's last query is below the next knot
+ * (one compare per vector, not per query); the vector that reaches it is
+ * evaluated up to the first query at or above it, k (its lanes from k on
+ * are evaluated again in their interval), counted branch-free.  At the
+ * block's end a vector spills into the slack of q and y.  Every query goes
+ * through eval_core in a vector lane, as in eval_block; q and y have
+ * TS_FAST_RUN places of slack. */
+#define TS_RUN_VECTOR(j_)                                                                              \
+    do {                                                                                           \
+        _Pragma("GCC unroll 1") /* GCC 12 unrolled it at some places into scalar code: other contractions */ \
+        for (size_t l = 0; l < run; l++)                                                           \
+            TS_RUN_LANE(deriv, r, q[(j_) + l], y[(j_) + l]);                                       \
+    } while (0)
+TS_ALWAYS_INLINE size_t eval_sorted_dense(const ts_spline *sp, int deriv, const double *q, size_t nb, double *y,
+                                          size_t i, size_t run)
+{
+    const double *xs = sp->x;
+    size_t n = sp->n, j = 0;
+    /* dense (stage_block): every query is below xs[probe] with probe < n, so
+     * the walk stays in intervals below probe and i + 1 <= probe < n: the
+     * next knot always exists and the last interval is never reached */
+    double next = xs[i + 1];
+    for (;;) {
+        run_iv r = run_interval(sp, deriv, i);
+        int more;
+        do {
+            size_t e = j + run, k = e;
+            more = e < nb && q[e] < next; /* the next vector starts in this interval too */
+            if (!more) {
+                size_t lim = e <= nb ? e : nb;
+                k = j;
+                for (size_t l = 0; l < run; l++)
+                    k += (j + l < lim) & (q[j + l] < next);
+            }
+            TS_RUN_VECTOR(j);
+            j = k;
+        } while (more);
+        if (j >= nb)
+            return i;
+        i++;
+        if (xs[i + 1] <= q[j])
+            i = gallop(xs, n, i, q[j]);
+        next = xs[i + 1];
+    }
+}
+#undef TS_RUN_VECTOR
+#endif
+#undef TS_RUN_LANE
 
 /* Every q[j] in [x0, xn] (none NaN). */
 TS_ALWAYS_INLINE int all_inside(const double *q, size_t nb, double x0, double xn)
@@ -655,7 +703,7 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
     }
     while (j0 < m) {
         size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
-        /* q needs TS_FAST_RUN places of slack (eval_run): the batch's
+        /* q needs TS_FAST_RUN places of slack (eval_sorted_dense): the batch's
          * next queries, or at its end a copy */
         const double *q = xq + j0;
         if (m - j0 < nb + TS_FAST_RUN) {
@@ -700,8 +748,8 @@ typedef size_t (*pipeline_fn)(const ts_spline *, int, const double *, size_t, do
 
 /* Per ISA, the geometric form's pipeline and the others' in functions of
  * their own (one's loops do not change the other's register allocation),
- * with the ISA's vector width in doubles as geo_stage_run's and eval_run's
- * run (AVX-512: eval_run with 8 measured faster than with 4);
+ * with the ISA's vector width in doubles as geo_stage_run's and eval_sorted_dense's
+ * run (AVX-512: 8 measured faster than with 4);
  * pick chooses by ISA and form. */
 #define TS_PIPELINE_ARGS const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur
 static TS_NOINLINE size_t pipeline_geo_portable(TS_PIPELINE_ARGS)
