@@ -416,7 +416,8 @@ TS_ALWAYS_INLINE size_t eval_sorted_dense(const ts_spline *sp, int deriv, const 
  * values in registers while the vector's last query is below the next knot
  * (one compare per vector, not per query); the vector that reaches it is
  * evaluated up to the first query at or above it, k (its lanes from k on
- * are evaluated again in their interval), counted branch-free.  At the
+ * are evaluated again in their interval), counted without a branch but in
+ * the block's last vector.  At the
  * block's end a vector spills into the slack of q and y.  Every query goes
  * through eval_core in a vector lane, as in eval_block; q and y have
  * TS_FAST_RUN places of slack. */
@@ -441,11 +442,14 @@ TS_ALWAYS_INLINE size_t eval_sorted_dense(const ts_spline *sp, int deriv, const 
         do {
             size_t e = j + run, k = e;
             more = e < nb && q[e] < next; /* the next vector starts in this interval too */
-            if (!more) {
-                size_t lim = e <= nb ? e : nb;
+            if (!more) { /* k: the first query at or above the next knot */
                 k = j;
-                for (size_t l = 0; l < run; l++)
-                    k += (j + l < lim) & (q[j + l] < next);
+                if (e <= nb)
+                    for (size_t l = 0; l < run; l++)
+                        k += q[j + l] < next;
+                else /* the block's last vector: its lanes past nb are slack */
+                    while (k < nb && q[k] < next)
+                        k++;
             }
             TS_RUN_VECTOR(j);
             j = k;
