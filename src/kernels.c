@@ -294,19 +294,19 @@ TS_ALWAYS_INLINE run_iv run_interval(const ts_spline *sp, int deriv, size_t i)
 {
     fast_iv v = fast_interval(sp, i);
     double b0 = v.b0, b1 = v.b1, b2 = v.b2, b3 = v.b3;
-    run_iv r = {v.x0, v.x1, v.w, b0, b3,
-                b1 - b0, deriv ? b2 - b1 : b2 - b0, deriv ? b3 - b2 : b3 - b0,
-                b2 - b3, deriv ? b1 - b2 : b1 - b3, deriv ? b0 - b1 : b0 - b3};
+    double l1 = b1 - b0, l2 = deriv ? b2 - b1 : b2 - b0, l3 = deriv ? b3 - b2 : b3 - b0;
+    double r1 = b2 - b3, r2 = deriv ? b1 - b2 : b1 - b3, r3 = deriv ? b0 - b1 : b0 - b3;
+    run_iv r = {v.x0, v.x1, v.w, b0, b3, l1, l2, l3, r1, r2, r3};
     return r;
 }
 
 /* One lane of a dense block: query x_ of interval r into y_. */
-#define TS_RUN_LANE(deriv, r, x_, y_)                                                                  \
-    do {                                                                                           \
-        double x = (x_), tu = (x - (r).x0) * (r).w, tv = ((r).x1 - x) * (r).w;                     \
-        int left = tu <= tv;                                                                       \
-        (y_) = eval_core(deriv, tu, tv, (r).w, left ? (r).b0 : (r).b3, left ? (r).l1 : (r).r1,      \
-                         left ? (r).l2 : (r).r2, left ? (r).l3 : (r).r3);                          \
+#define TS_RUN_LANE(deriv, r, x_, y_)                                                          \
+    do {                                                                                       \
+        double x = (x_), tu = (x - (r).x0) * (r).w, tv = ((r).x1 - x) * (r).w;                 \
+        int left = tu <= tv;                                                                   \
+        (y_) = eval_core(deriv, tu, tv, (r).w, left ? (r).b0 : (r).b3, left ? (r).l1 : (r).r1, \
+                         left ? (r).l2 : (r).r2, left ? (r).l3 : (r).r3);                      \
     } while (0)
 
 /* Sorted q[0..nb), xs[i] <= q[0], a dense block (long runs): a vector's
@@ -318,7 +318,9 @@ TS_ALWAYS_INLINE run_iv run_interval(const ts_spline *sp, int deriv, size_t i)
  * reaches it is taken up to the first query at or above it, k (its lanes
  * from k on are done again in their interval), counted without a branch
  * but in the block's last vector.  That vector spills into the slack of q,
- * y and gs (TS_FAST_RUN places).  gs and deriv are constants at each call. */
+ * y and gs (TS_FAST_RUN places).  gs and deriv are constants at each call.
+ * The lane loop carries GCC unroll 1: GCC 12 unrolled it at some places
+ * into scalar code with other contractions (other bits). */
 #if defined(__wasm__)
 /* emscripten's Clang vectorises the lanes of a whole run in one loop, not
  * those of one vector (no fused multiply-add there: the bits do not depend
@@ -327,28 +329,27 @@ TS_ALWAYS_INLINE run_iv run_interval(const ts_spline *sp, int deriv, size_t i)
 #else
 #define TS_RUN_AFTER 0
 #endif
-#define TS_RUN_VECTOR(j_)                                                                              \
-    do {                                                                                           \
-        if (gs) {                                                                                  \
-            for (size_t l = 0; l < run; l++) {                                                     \
-                double x = q[(j_) + l];                                                            \
-                gs->dl[(j_) + l] = x - g.x0;                                                       \
-                gs->dr[(j_) + l] = g.x1 - x;                                                       \
-                gs->h[(j_) + l] = g.h;                                                             \
-                gs->kappa[(j_) + l] = g.kappa;                                                     \
-                gs->f0[(j_) + l] = g.f0;                                                           \
-                gs->f1[(j_) + l] = g.f1;                                                           \
-                gs->d0[(j_) + l] = g.d0;                                                           \
-                gs->d1[(j_) + l] = g.d1;                                                           \
-            }                                                                                      \
-        } else {                                                                                   \
-            _Pragma("GCC unroll 1") /* GCC 12 unrolled it at some places into scalar code: other contractions */ \
-            for (size_t l = 0; l < run; l++)                                                       \
-                TS_RUN_LANE(deriv, r, q[(j_) + l], y[(j_) + l]);                                   \
-        }                                                                                          \
+#define TS_RUN_VECTOR(j_)                                            \
+    do {                                                             \
+        if (gs) {                                                    \
+            for (size_t l = 0; l < run; l++) {                       \
+                double x = q[(j_) + l];                              \
+                gs->dl[(j_) + l] = x - g.x0;                         \
+                gs->dr[(j_) + l] = g.x1 - x;                         \
+                gs->h[(j_) + l] = g.h;                               \
+                gs->kappa[(j_) + l] = g.kappa;                       \
+                gs->f0[(j_) + l] = g.f0;                             \
+                gs->f1[(j_) + l] = g.f1;                             \
+                gs->d0[(j_) + l] = g.d0;                             \
+                gs->d1[(j_) + l] = g.d1;                             \
+            }                                                        \
+        } else {                                                     \
+            _Pragma("GCC unroll 1") for (size_t l = 0; l < run; l++) \
+                TS_RUN_LANE(deriv, r, q[(j_) + l], y[(j_) + l]);     \
+        }                                                            \
     } while (0)
-TS_ALWAYS_INLINE size_t sorted_dense(const ts_spline *sp, int deriv, const double *q, size_t nb, double *y,
-                                     geo_stage *gs, size_t i, size_t run)
+TS_ALWAYS_INLINE size_t sorted_dense(const ts_spline *sp, int deriv, const double *q, size_t nb,
+                                     double *y, geo_stage *gs, size_t i, size_t run)
 {
     const double *xs = sp->x;
     size_t n = sp->n, j = 0;
@@ -368,8 +369,8 @@ TS_ALWAYS_INLINE size_t sorted_dense(const ts_spline *sp, int deriv, const doubl
         do {
             size_t e = j + run, k = e;
             more = e < nb && q[e] < next; /* the next vector starts in this interval too */
-            if (!more) { /* k: the first query at or above the next knot */
-                k = j;
+            if (!more) {
+                k = j; /* the first query at or above the next knot */
                 if (e <= nb)
                     for (size_t l = 0; l < run; l++)
                         k += q[j + l] < next;
