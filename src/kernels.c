@@ -8,11 +8,12 @@
  *  2. stage: the interval is ts__locate's (largest i <= n−1 with x_i <= x:
  *     the right-hand one at an inner knot).  A sorted block walks the cursor,
  *     galloping over gaps.  A dense block (runs of TS_FAST_RUN queries per
- *     interval on average) is not staged: each interval's run of queries is
- *     evaluated when the walk leaves it, a vector's width at a time with the
- *     interval's values in registers (eval_run; the per-query stores and
- *     loads of the staging bounded the kernel when several queries share an
- *     interval).  A sparse block is staged query by query with the
+ *     interval on average) is not staged: its queries are evaluated a
+ *     vector's width at a time with the interval's values in registers, the
+ *     cursor tested once per vector (sorted_dense; the per-query stores
+ *     and loads of the staging bounded the kernel when several queries share
+ *     an interval); the same walk stages the geometric form's dense blocks
+ *     by whole-vector stores.  A sparse block is staged query by query with the
  *     interval's values in registers.  An unsorted block runs one
  *     branch-free binary search per query, all queries advancing a level at
  *     a time so their cache misses overlap.
@@ -166,7 +167,7 @@ TS_ALWAYS_INLINE size_t stage_sorted_sparse(const ts_spline *sp, const double *q
  * f_i, f_{i+1}, d_i, d_{i+1}.  phi, u: the solve's scratch; s, c, ms, mc:
  * sin φ, cos φ, 1 − sin φ, 1 − cos φ at its root. */
 typedef struct geo_stage {
-    double dl[TS_FAST_BLOCK], dr[TS_FAST_BLOCK];
+    double dl[TS_FAST_BLOCK + TS_FAST_RUN], dr[TS_FAST_BLOCK + TS_FAST_RUN];
     double h[TS_FAST_BLOCK + TS_FAST_RUN], kappa[TS_FAST_BLOCK + TS_FAST_RUN];
     double f0[TS_FAST_BLOCK + TS_FAST_RUN], f1[TS_FAST_BLOCK + TS_FAST_RUN];
     double d0[TS_FAST_BLOCK + TS_FAST_RUN], d1[TS_FAST_BLOCK + TS_FAST_RUN];
@@ -199,39 +200,6 @@ TS_ALWAYS_INLINE void geo_stage_one(geo_stage *st, size_t j, double x, const geo
     st->d1[j] = g->d1;
 }
 
-/* Queries q[j0..j1) (j0 < j1) in interval g: shorter than run (<= TS_FAST_RUN,
- * a vector's width; a constant at each call) query by query; a longer run
- * with whole-vector stores of g's values, run places at a time, the last one
- * spilling past j1 (overwritten by the next run, or into the slack), and the
- * distances by a loop the compiler vectorises (the same two operations per
- * query as geo_stage_one). */
-TS_ALWAYS_INLINE void geo_stage_run(geo_stage *st, const double *q, size_t j0, size_t j1, const geo_iv *g,
-                                    size_t run)
-{
-    if (j1 - j0 < run) {
-        for (size_t j = j0; j < j1; j++)
-            geo_stage_one(st, j, q[j], g);
-        return;
-    }
-    size_t j = j0;
-    do {
-        for (size_t l = 0; l < run; l++) { /* whole-vector stores */
-            st->h[j + l] = g->h;
-            st->kappa[j + l] = g->kappa;
-            st->f0[j + l] = g->f0;
-            st->f1[j + l] = g->f1;
-            st->d0[j + l] = g->d0;
-            st->d1[j + l] = g->d1;
-        }
-        j += run;
-    } while (j < j1);
-    double x0 = g->x0, x1 = g->x1;
-    for (j = j0; j < j1; j++) {
-        st->dl[j] = q[j] - x0;
-        st->dr[j] = x1 - q[j];
-    }
-}
-
 /* Sorted, sparse: stage_sorted_sparse for the geometric form. */
 TS_ALWAYS_INLINE size_t geo_stage_sorted_sparse(const ts_spline *sp, const double *q, size_t nb,
                                                 geo_stage *st, size_t i)
@@ -254,37 +222,6 @@ TS_ALWAYS_INLINE size_t geo_stage_sorted_sparse(const ts_spline *sp, const doubl
     return i;
 }
 
-/* Sorted q[0..nb), xs[i] <= q[0], a dense block (long runs), the geometric
- * form: walk the cursor, staging each interval's run of queries when the
- * walk leaves it; the next knot stays in a register. */
-TS_ALWAYS_INLINE size_t geo_stage_sorted_dense(const ts_spline *sp, const double *q, size_t nb,
-                                               geo_stage *st, size_t i, size_t run)
-{
-    const double *xs = sp->x;
-    size_t n = sp->n, j0 = 0;
-    /* dense (stage_block): every query is below xs[probe] with probe < n, so
-     * the walk stays in intervals below probe and i + 1 <= probe < n: the
-     * next knot always exists and the last interval is never reached */
-    double next = xs[i + 1];
-    for (size_t j = 0; j < nb; j++) {
-        double x = q[j];
-        if (x >= next) {
-            if (j > j0) {
-                geo_iv g = geo_interval(sp, i);
-                geo_stage_run(st, q, j0, j, &g, run);
-            }
-            j0 = j;
-            i++;
-            if (xs[i + 1] <= x)
-                i = gallop(xs, n, i, x);
-            next = xs[i + 1];
-        }
-    }
-    geo_iv g = geo_interval(sp, i);
-    geo_stage_run(st, q, j0, nb, &g, run);
-    return i;
-}
-
 /* ---- evaluate -------------------------------------------------------- */
 
 /* s = sin ϑ, c = cos ϑ, ms = 1 − s, mc = 1 − c for ϑ in [0, π/4]: internal.h. */
@@ -296,7 +233,7 @@ TS_ALWAYS_INLINE size_t geo_stage_sorted_dense(const ts_spline *sp, const double
  * §2, the expressions of ts__seg_scm: B0 + Σ A_l (B_l − B0)), B'1 − B'0,
  * B'2 − B'1, B'3 − B'2 for S' by (2.1) and S'' by its θ-derivative; deriv a
  * constant at each call.  eval_block forms the differences per query,
- * eval_run once per interval and end (the same subtractions, so the same
+ * run_interval once per interval and end (the same subtractions, so the same
  * bits). */
 TS_ALWAYS_INLINE double eval_core(int deriv, double tu, double tv, double w, double B0, double e1, double e2,
                                   double e3)
@@ -346,73 +283,119 @@ TS_ALWAYS_INLINE void eval_block(int deriv, const fast_stage *st, size_t nb, dou
         eval_loop(2, st, nb, y);
 }
 
-/* Queries q[j0..j1) (j0 < j1) of interval v evaluated into y, run places
- * at a time (a vector's width), the last vector spilling past j1 (the next
- * run overwrites it, or it lands in the slack of q and y): every query
- * goes through eval_core in a vector lane, as in eval_block. */
-TS_ALWAYS_INLINE void eval_run(int deriv, const double *q, size_t j0, size_t j1, const fast_iv *v, double *y,
-                               size_t run)
+/* Per-interval constants of a dense block's lanes (sorted_dense): x_i,
+ * x_{i+1}, w, and B'0 and the differences from either end (eval_one's,
+ * formed once per interval). */
+typedef struct run_iv {
+    double x0, x1, w, b0, b3, l1, l2, l3, r1, r2, r3;
+} run_iv;
+
+TS_ALWAYS_INLINE run_iv run_interval(const ts_spline *sp, int deriv, size_t i)
 {
-    double x0 = v->x0, x1 = v->x1, w = v->w, b0 = v->b0, b1 = v->b1, b2 = v->b2, b3 = v->b3;
-    /* B'0 and the differences from each end (eval_one's, per interval) */
+    fast_iv v = fast_interval(sp, i);
+    double b0 = v.b0, b1 = v.b1, b2 = v.b2, b3 = v.b3;
     double l1 = b1 - b0, l2 = deriv ? b2 - b1 : b2 - b0, l3 = deriv ? b3 - b2 : b3 - b0;
     double r1 = b2 - b3, r2 = deriv ? b1 - b2 : b1 - b3, r3 = deriv ? b0 - b1 : b0 - b3;
-#define TS_RUN_LANE(l)                                                                     \
-    do {                                                                                   \
-        double x = q[l], tu = (x - x0) * w, tv = (x1 - x) * w;                             \
-        int left = tu <= tv;                                                               \
-        y[l] = eval_core(deriv, tu, tv, w, left ? b0 : b3, left ? l1 : r1, left ? l2 : r2, \
-                         left ? l3 : r3);                                                  \
-    } while (0)
-    q += j0;
-    y += j0;
-#if defined(__wasm__)
-    /* one loop over whole vectors, which emscripten's Clang vectorises (no
-     * fused multiply-add there: the bits do not depend on the loop's shape) */
-    size_t k = (j1 - j0 + run - 1) / run * run;
-    for (size_t l = 0; l < k; l++)
-        TS_RUN_LANE(l);
-#else
-    const double *qe = q + (j1 - j0);
-    do {
-#pragma GCC unroll 1 /* GCC 12 unrolled it at some places into scalar code: other contractions */
-        for (size_t l = 0; l < run; l++)
-            TS_RUN_LANE(l);
-        q += run;
-        y += run;
-    } while (q < qe);
-#endif
-#undef TS_RUN_LANE
+    run_iv r = {v.x0, v.x1, v.w, b0, b3, l1, l2, l3, r1, r2, r3};
+    return r;
 }
 
-/* Sorted q[0..nb), xs[i] <= q[0], a dense block (long runs): walk the
- * cursor as geo_stage_sorted_dense and evaluate each interval's run of
- * queries when the walk leaves it, with its values in registers; q and y
- * have TS_FAST_RUN places of slack. */
-TS_ALWAYS_INLINE size_t eval_sorted_dense(const ts_spline *sp, int deriv, const double *q, size_t nb, double *y,
-                                          size_t i, size_t run)
+/* One lane of a dense block: query x_ of interval r into y_. */
+#define TS_RUN_LANE(deriv, r, x_, y_)                                                          \
+    do {                                                                                       \
+        double x = (x_), tu = (x - (r).x0) * (r).w, tv = ((r).x1 - x) * (r).w;                 \
+        int left = tu <= tv;                                                                   \
+        (y_) = eval_core(deriv, tu, tv, (r).w, left ? (r).b0 : (r).b3, left ? (r).l1 : (r).r1, \
+                         left ? (r).l2 : (r).r2, left ? (r).l3 : (r).r3);                      \
+    } while (0)
+
+/* Sorted q[0..nb), xs[i] <= q[0], a dense block (long runs): a vector's
+ * width (run) of queries at a time with the current interval's values in
+ * registers, evaluated (gs NULL: eval_core in each lane, as eval_block) or,
+ * for the geometric form, staged into gs (geo_stage_one's values by
+ * whole-vector stores), while the next vector's first query is below the
+ * next knot (one compare per vector, not per query); the vector that
+ * reaches it is taken up to the first query at or above it, k (its lanes
+ * from k on are done again in their interval), counted without a branch
+ * but in the block's last vector.  That vector spills into the slack of q,
+ * y and gs (TS_FAST_RUN places).  gs and deriv are constants at each call.
+ * The lane loop carries GCC unroll 1: GCC 12 unrolled it at some places
+ * into scalar code with other contractions (other bits). */
+#if defined(__wasm__)
+/* emscripten's Clang vectorises the lanes of a whole run in one loop, not
+ * those of one vector (no fused multiply-add there: the bits do not depend
+ * on the loop's shape): the run is evaluated after its walk */
+#define TS_RUN_AFTER 1
+#else
+#define TS_RUN_AFTER 0
+#endif
+#define TS_RUN_VECTOR(j_)                                            \
+    do {                                                             \
+        if (gs) {                                                    \
+            for (size_t l = 0; l < run; l++) {                       \
+                double x = q[(j_) + l];                              \
+                gs->dl[(j_) + l] = x - g.x0;                         \
+                gs->dr[(j_) + l] = g.x1 - x;                         \
+                gs->h[(j_) + l] = g.h;                               \
+                gs->kappa[(j_) + l] = g.kappa;                       \
+                gs->f0[(j_) + l] = g.f0;                             \
+                gs->f1[(j_) + l] = g.f1;                             \
+                gs->d0[(j_) + l] = g.d0;                             \
+                gs->d1[(j_) + l] = g.d1;                             \
+            }                                                        \
+        } else {                                                     \
+            _Pragma("GCC unroll 1") for (size_t l = 0; l < run; l++) \
+                TS_RUN_LANE(deriv, r, q[(j_) + l], y[(j_) + l]);     \
+        }                                                            \
+    } while (0)
+TS_ALWAYS_INLINE size_t sorted_dense(const ts_spline *sp, int deriv, const double *q, size_t nb,
+                                     double *y, geo_stage *gs, size_t i, size_t run)
 {
     const double *xs = sp->x;
-    size_t n = sp->n, j0 = 0;
-    double next = xs[i + 1]; /* i + 1 <= probe < n, as in geo_stage_sorted_dense */
-    for (size_t j = 0; j < nb; j++) {
-        double x = q[j];
-        if (x >= next) {
-            if (j > j0) {
-                fast_iv v = fast_interval(sp, i);
-                eval_run(deriv, q, j0, j, &v, y, run);
+    size_t n = sp->n, j = 0;
+    /* dense (stage_block): every query is below xs[probe] with probe < n, so
+     * the walk stays in intervals below probe and i + 1 <= probe < n: the
+     * next knot always exists and the last interval is never reached */
+    double next = xs[i + 1];
+    for (;;) {
+        run_iv r = {0};
+        geo_iv g = {0};
+        if (gs)
+            g = geo_interval(sp, i);
+        else
+            r = run_interval(sp, deriv, i);
+        size_t j0 = j;
+        int more;
+        do {
+            size_t e = j + run, k = e;
+            more = e < nb && q[e] < next; /* the next vector starts in this interval too */
+            if (!more) {
+                k = j; /* the first query at or above the next knot */
+                if (e <= nb)
+                    for (size_t l = 0; l < run; l++)
+                        k += q[j + l] < next;
+                else /* the block's last vector: its lanes past nb are slack */
+                    while (k < nb && q[k] < next)
+                        k++;
             }
-            j0 = j;
-            i++;
-            if (xs[i + 1] <= x)
-                i = gallop(xs, n, i, x);
-            next = xs[i + 1];
-        }
+            if (gs || !TS_RUN_AFTER)
+                TS_RUN_VECTOR(j);
+            j = k;
+        } while (more);
+        if (!gs && TS_RUN_AFTER) /* the run q[j0..j) in one loop over whole vectors */
+            for (size_t l = j0; l < j0 + (j - j0 + run - 1) / run * run; l++)
+                TS_RUN_LANE(deriv, r, q[l], y[l]);
+        if (j >= nb)
+            return i;
+        i++;
+        if (xs[i + 1] <= q[j])
+            i = gallop(xs, n, i, q[j]);
+        next = xs[i + 1];
     }
-    fast_iv v = fast_interval(sp, i);
-    eval_run(deriv, q, j0, nb, &v, y, run);
-    return i;
 }
+#undef TS_RUN_VECTOR
+#undef TS_RUN_AFTER
+#undef TS_RUN_LANE
 
 /* Every q[j] in [x0, xn] (none NaN). */
 TS_ALWAYS_INLINE int all_inside(const double *q, size_t nb, double x0, double xn)
@@ -425,7 +408,7 @@ TS_ALWAYS_INLINE int all_inside(const double *q, size_t nb, double x0, double xn
 
 /* Stages q[0..nb) (1 <= nb <= TS_FAST_BLOCK) into st, or into gs for the
  * geometric form (gs != NULL), and returns 1; a dense sorted block of the
- * other forms is evaluated into y instead (eval_sorted_dense; q and y with
+ * other forms is evaluated into y instead (sorted_dense; q and y with
  * TS_FAST_RUN places of slack), returning 2; *cur is the cursor, left on the
  * last query's interval.  Returns 0, without staging, if a query is outside
  * [x0, xn] or NaN. */
@@ -452,12 +435,11 @@ TS_ALWAYS_INLINE int stage_block(const ts_spline *sp, const double *q, size_t nb
         size_t probe = i + nb / TS_FAST_RUN;
         int dense = probe < n && q[nb - 1] < xs[probe];
         if (gs)
-            *cur = dense ? geo_stage_sorted_dense(sp, q, nb, gs, i, run)
-                         : geo_stage_sorted_sparse(sp, q, nb, gs, i);
+            *cur = dense ? sorted_dense(sp, 0, q, nb, NULL, gs, i, run) : geo_stage_sorted_sparse(sp, q, nb, gs, i);
         else if (dense) {
-            *cur = deriv == 0   ? eval_sorted_dense(sp, 0, q, nb, y, i, run)
-                   : deriv == 1 ? eval_sorted_dense(sp, 1, q, nb, y, i, run)
-                                : eval_sorted_dense(sp, 2, q, nb, y, i, run);
+            *cur = deriv == 0   ? sorted_dense(sp, 0, q, nb, y, NULL, i, run)
+                   : deriv == 1 ? sorted_dense(sp, 1, q, nb, y, NULL, i, run)
+                                : sorted_dense(sp, 2, q, nb, y, NULL, i, run);
             return 2;
         } else
             *cur = want_w ? stage_sorted_sparse(sp, q, nb, 1, st, i)
@@ -629,6 +611,19 @@ TS_ALWAYS_INLINE void geo_pad(geo_stage *st, size_t nb)
     }
 }
 
+/* q[0..nb) with TS_FAST_RUN places of slack (sorted_dense): the batch's
+ * next queries (left places of it), or at its end a copy in qt. */
+TS_ALWAYS_INLINE const double *pad_queries(const double *q, size_t nb, size_t left, double *qt)
+{
+    if (left >= nb + TS_FAST_RUN)
+        return q;
+    for (size_t j = 0; j < nb; j++)
+        qt[j] = q[j];
+    for (size_t j = nb; j < TS_FAST_BLOCK + TS_FAST_RUN; j++)
+        qt[j] = qt[nb - 1];
+    return qt;
+}
+
 /* The whole batch, or its prefix up to the first block with a query outside
  * [x0, xn]; *cur is the cursor; returns the number of queries evaluated. */
 TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *xq, size_t m,
@@ -643,7 +638,8 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
     if (geo) {
         while (j0 < m) {
             size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
-            if (!stage_block(sp, xq + j0, nb, 0, NULL, &st.g, NULL, cur, run))
+            const double *q = pad_queries(xq + j0, nb, m - j0, qt); /* as below */
+            if (!stage_block(sp, q, nb, 0, NULL, &st.g, NULL, cur, run))
                 break;
             geo_pad(&st.g, nb); /* as below */
             geo_eval_block(deriv, &st.g, TS_FAST_BLOCK, yt);
@@ -655,16 +651,7 @@ TS_ALWAYS_INLINE size_t pipeline(const ts_spline *sp, int deriv, const double *x
     }
     while (j0 < m) {
         size_t nb = m - j0 < TS_FAST_BLOCK ? m - j0 : TS_FAST_BLOCK;
-        /* q needs TS_FAST_RUN places of slack (eval_run): the batch's
-         * next queries, or at its end a copy */
-        const double *q = xq + j0;
-        if (m - j0 < nb + TS_FAST_RUN) {
-            for (size_t j = 0; j < nb; j++)
-                qt[j] = q[j];
-            for (size_t j = nb; j < TS_FAST_BLOCK + TS_FAST_RUN; j++)
-                qt[j] = qt[nb - 1];
-            q = qt;
-        }
+        const double *q = pad_queries(xq + j0, nb, m - j0, qt);
         int got = stage_block(sp, q, nb, deriv, &st.p, NULL, yt, cur, run);
         if (!got)
             break;
@@ -700,8 +687,8 @@ typedef size_t (*pipeline_fn)(const ts_spline *, int, const double *, size_t, do
 
 /* Per ISA, the geometric form's pipeline and the others' in functions of
  * their own (one's loops do not change the other's register allocation),
- * with the ISA's vector width in doubles as geo_stage_run's and eval_run's
- * run (AVX-512: eval_run with 8 measured faster than with 4);
+ * with the ISA's vector width in doubles as sorted_dense's run (AVX-512:
+ * 8 measured faster than 4);
  * pick chooses by ISA and form. */
 #define TS_PIPELINE_ARGS const ts_spline *sp, int deriv, const double *xq, size_t m, double *yq, size_t *cur
 static TS_NOINLINE size_t pipeline_geo_portable(TS_PIPELINE_ARGS)
