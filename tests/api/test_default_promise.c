@@ -99,6 +99,28 @@ static void test_long_and_huge(void)
     for (int i = 1; i < NP - 1; i++)
         bad += d[i] != 2.0 * i;
     CHECKF(bad == 0, "%d inner slopes differ from 2i", bad);
+    /* the same data between two lines with the defaults (geometric form,
+     * certified a block of intervals at a time): certified, and by the
+     * theorem of docs/method.md §5.10 every interval's control values
+     * increase from f_i to f_{i+1} */
+    ts_spline_options o;
+    ts_spline_options_init(&o);
+    o.shape = TS_SHAPE_BETWEEN;
+    o.lower = (ts_line){1.0, -10.0};
+    o.upper = (ts_line){0.0, 1e7};
+    ts_spline *s = NULL;
+    CHECK(ts_spline_new(x, f, NP, &o, &s, NULL) == TS_OK);
+    if (s) {
+        CHECK(ts_spline_certified(s) == 1);
+        bad = 0;
+        for (size_t i = 0; i + 1 < NP; i++) {
+            double B[4];
+            CHECK(ts_spline_control(s, i, B, NULL) == TS_OK);
+            bad += !(B[0] == f[i] && B[0] <= B[1] && B[1] <= B[2] && B[2] <= B[3] && B[3] == f[i + 1]);
+        }
+        CHECKF(bad == 0, "%d intervals' control values not increasing", bad);
+        ts_spline_free(s);
+    }
     const double xs[3] = {0, 8, 16}, fs[3] = {-0x1p1023, 0x1p1023, DBL_MAX};
     double ds[3];
     slopes_of(xs, fs, 3, ds);
