@@ -491,8 +491,63 @@ TS_GEO_ALL_PROVEN(geo_all_lower, 2, 1, 0)
 TS_GEO_ALL_PROVEN(geo_all_upper, 2, 0, 1)
 TS_GEO_ALL_PROVEN(geo_all_lines, 2, 1, 1)
 
+/* docs/method.md §5.6 item 9: sg·(Y_l − L̂_0 − fl(m h) X̂_l) in plain
+ * arithmetic above 32ε(max|B| + |L̂_0| + |m h|) + 16ε²(|m x_0| + |c|) +
+ * 16·2^-1074 implies geo_hull's test of every control gap (it bounds the
+ * rounding of both); κ <= 1 and no magnitude above 2^1019 (no overflow
+ * there either).  Branch-free. */
+TS_INLINE int geo_quick(const double B[4], double bmax, double k, double k2, double x0, double h,
+                        double m, double c, double sg)
+{
+    double L0 = fma(m, x0, c), mh = m * h, px = fabs(m * x0);
+    double w0 = sg * (B[0] - L0), w1 = sg * ((B[1] - L0) - mh * k);
+    double w2 = sg * ((B[2] - L0) - mh * k2), w3 = sg * ((B[3] - L0) - mh);
+    double lo = w0 < w1 ? w0 : w1, lo2 = w2 < w3 ? w2 : w3;
+    lo = lo < lo2 ? lo : lo2;
+    double S = bmax + fabs(L0) + fabs(mh), S2 = px + fabs(c);
+    double guard = 32.0 * TM_EPS * S + 16.0 * TM_EPS * TM_EPS * S2 + 16.0 * DBL_TRUE_MIN;
+    return (lo > guard) & (S + S2 <= 0x1p1019) & (k <= 1.0);
+}
+
+/* geo_quick of interval i for each line sp has (hl, hu; lc as geo_proven):
+ * 1 only where geo_proven (kind 2) passes it.  Branch-free. */
+TS_INLINE int geo_quick_proven(const double *restrict x, const double *restrict f,
+                               const double *restrict d, const double *restrict al,
+                               const double *restrict be, const double *restrict kappa, size_t i,
+                               const double *restrict lc, int hl, int hu)
+{
+    double x0 = x[i], x1 = x[i + 1], a = al[i] + be[i], k = kappa[i], h = x1 - x0;
+    double B[4] = {f[i], 0.0, 0.0, f[i + 1]};
+    B[1] = ts__geo_b1(x0, x1, B[0], d[i], a);
+    B[2] = ts__geo_b2(x0, x1, B[3], d[i + 1], a);
+    double a0 = fabs(B[0]), a1 = fabs(B[1]), a2 = fabs(B[2]), a3 = fabs(B[3]);
+    double bmax = a0 > a1 ? a0 : a1, bmax2 = a2 > a3 ? a2 : a3;
+    bmax = bmax > bmax2 ? bmax : bmax2;
+    double k2 = 1.0 - k;
+    return ((1 - hl) | geo_quick(B, bmax, k, k2, x0, h, lc[0], lc[1], 1.0)) &
+           ((1 - hu) | geo_quick(B, bmax, k, k2, x0, h, lc[2], lc[3], -1.0));
+}
+
+/* 1 if geo_quick_proven passes every interval of [i0, i1) (a flag, so
+ * that it vectorises; one loop per set of lines). */
+#define TS_GEO_ALL_QUICK(name, hl, hu)                                                           \
+    TS_VECTOR_LOOP static int name(const double *restrict x, const double *restrict f,          \
+                                   const double *restrict d, const double *restrict al,         \
+                                   const double *restrict be, const double *restrict kappa,     \
+                                   size_t i0, size_t i1, const double *restrict lc)             \
+    {                                                                                            \
+        int ok = 1;                                                                              \
+        for (size_t i = i0; i < i1; i++)                                                         \
+            ok &= geo_quick_proven(x, f, d, al, be, kappa, i, lc, hl, hu);                       \
+        return ok;                                                                               \
+    }
+TS_GEO_ALL_QUICK(geo_quick_lower, 1, 0)
+TS_GEO_ALL_QUICK(geo_quick_upper, 0, 1)
+TS_GEO_ALL_QUICK(geo_quick_lines, 1, 1)
+
 /* ts__skip_proven in the geometric form (kind as geo_proven): blocks of
- * TS_BOUND_BLOCK at once, as skip_lines. */
+ * TS_BOUND_BLOCK at once, as skip_lines; lines: a block geo_quick passes
+ * needs no error-free gaps (the same decision). */
 static size_t skip_geo(const ts_spline *sp, size_t i, size_t i1, int kind)
 {
     const double lc[4] = {sp->lower.m, sp->lower.c, sp->upper.m, sp->upper.c};
@@ -505,8 +560,19 @@ static size_t skip_geo(const ts_spline *sp, size_t i, size_t i1, int kind)
         : hl && hu  ? geo_all_lines
         : hl        ? geo_all_lower
                     : geo_all_upper;
+    int (*quick)(const double *restrict, const double *restrict, const double *restrict,
+                 const double *restrict, const double *restrict, const double *restrict, size_t,
+                 size_t, const double *restrict) =
+        kind != 2  ? NULL
+        : hl && hu ? geo_quick_lines
+        : hl       ? geo_quick_lower
+                   : geo_quick_upper;
     while (i < i1) {
         size_t k1 = i1 - i > TS_BOUND_BLOCK ? i + TS_BOUND_BLOCK : i1;
+        if (quick && quick(sp->x, sp->f, sp->d, sp->alpha, sp->beta, sp->kappa, i, k1, lc)) {
+            i = k1;
+            continue;
+        }
         if (!all(sp->x, sp->f, sp->d, sp->alpha, sp->beta, sp->kappa, i, k1, lc)) {
             while (i + 1 < k1 &&
                    geo_proven(sp->x, sp->f, sp->d, sp->alpha, sp->beta, sp->kappa, i, kind, lc, hl, hu))

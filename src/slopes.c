@@ -237,23 +237,58 @@ static void periodic(const double *x, const double *f, size_t n, double *d, size
         d[n] = e;
 }
 
+/* Secants Δ_j, j in [j0, j1), into S[j − j0]: secant_of with one division
+ * (the halves' numerator and the factor 2 selected around it, the same
+ * operations on each path), in a loop that vectorises. */
+TS_VECTOR_LOOP static void secants(const double *restrict x, const double *restrict f, size_t j0,
+                                   size_t j1, double *restrict S)
+{
+    for (size_t j = j0; j < j1; j++) {
+        double df = f[j + 1] - f[j], half = 0.5 * f[j + 1] - 0.5 * f[j];
+        int ok = fabs(df) <= DBL_MAX;
+        double q = (ok ? df : half) / (x[j + 1] - x[j]);
+        S[j - j0] = (ok ? 1.0 : 2.0) * q;
+    }
+}
+
 /* docs/method.md §6 Steffen (1990): inner d_i = (sgn Δ_{i-1} + sgn Δ_i)
  * min(|Δ_{i-1}|, |Δ_i|, |p_i|/2), p_i the three-point slope; 2 min(..) <= |p_i|,
- * so no overflow.  Ends (his eq. 26): the three-point end value, 0 unless it
- * has the sign of Δ_0, at most 2Δ_0. */
+ * so no overflow; i in [i0, i1), Δ_j = S[j − i0 + 1].  Branch-free, so that
+ * it vectorises: where the signs differ the mean is taken of 1 and 1 (no
+ * exception from secants it does not need) and d_i = 0 selected.  fmin of
+ * non-negative numbers (no NaN: the secants of one sign are not infinite
+ * of both signs) is the smaller, either zero +0. */
+TS_VECTOR_LOOP static void steffen_inner(const double *restrict x, const double *restrict S,
+                                         size_t i0, size_t i1, double *restrict d)
+{
+    for (size_t i = i0; i < i1; i++) {
+        double hl = x[i] - x[i - 1], hr = x[i + 1] - x[i];
+        double Dl = S[i - i0], Dr = S[i - i0 + 1];
+        int same = ((Dl > 0.0) & (Dr > 0.0)) | ((Dl < 0.0) & (Dr < 0.0));
+        Dl = same ? Dl : 1.0;
+        Dr = same ? Dr : 1.0;
+        double p = mean_arith3(hl, hr, Dl, Dr);
+        double al = fabs(Dl), ar = fabs(Dr), ap = 0.5 * fabs(p);
+        double m = al < ar ? al : ar;
+        m = m < ap ? m : ap;
+        double v = Dl > 0.0 ? 2.0 * m : -2.0 * m;
+        d[i] = same ? v : 0.0;
+    }
+}
+
+/* Knots per steffen_inner call (its secants on the stack). */
+#define TS_SLOPE_CHUNK 1024
+
+/* Ends (his eq. 26): the three-point end value, 0 unless it has the sign
+ * of Δ_0, at most 2Δ_0. */
 static void steffen(const double *x, const double *f, size_t n, double *d, size_t p0, size_t p1)
 {
     size_t lo = p0 > 1 ? p0 : 1, hi = p1 < n ? p1 : n;
-    for (size_t i = lo; i < hi; i++) {
-        double hl = x[i] - x[i - 1], hr = x[i + 1] - x[i];
-        double Dl = secant_of(f[i - 1], f[i], hl), Dr = secant_of(f[i], f[i + 1], hr);
-        if (!same_sign(Dl, Dr)) {
-            d[i] = 0.0;
-            continue;
-        }
-        double p = mean_arith3(hl, hr, Dl, Dr);
-        double m = fmin(fmin(fabs(Dl), fabs(Dr)), 0.5 * fabs(p));
-        d[i] = Dl > 0.0 ? 2.0 * m : -2.0 * m;
+    double S[TS_SLOPE_CHUNK + 1];
+    for (size_t c0 = lo; c0 < hi; c0 += TS_SLOPE_CHUNK) {
+        size_t c1 = hi - c0 > TS_SLOPE_CHUNK ? c0 + TS_SLOPE_CHUNK : hi;
+        secants(x, f, c0 - 1, c1, S);
+        steffen_inner(x, S, c0, c1, d);
     }
     ends3(x, f, n, d, 2, p0, p1);
 }

@@ -144,29 +144,36 @@ static double cumulate(ts_spline *sp, size_t i0, size_t i1, double sum)
 static void spline_release(ts_spline *s);
 
 
-/* 1 if every |b1[i]|, |b2[i]| <= TS_VALUE_MAX, i < n (NaN-safe). */
+/* 1 if every |b1[i]|, |b2[i]| <= TS_VALUE_MAX, i in [i0, i1) (NaN-safe). */
 TS_VECTOR_LOOP static int values_ok(const double *restrict b1, const double *restrict b2,
-                                    size_t n)
+                                    size_t i0, size_t i1)
 {
     int ok = 1;
-    for (size_t i = 0; i < n; i++)
+    for (size_t i = i0; i < i1; i++)
         ok &= (fabs(b1[i]) <= TS_VALUE_MAX) & (fabs(b2[i]) <= TS_VALUE_MAX);
     return ok;
 }
 
-/* values_ok of the geometric form's derived B1, B2 (ts__B). */
+/* values_ok of the geometric form's derived B1, B2 (ts__B), i in [i0, i1). */
 TS_VECTOR_LOOP static int geo_values_ok(const double *restrict x, const double *restrict f,
                                         const double *restrict d, const double *restrict al,
-                                        const double *restrict be, size_t n)
+                                        const double *restrict be, size_t i0, size_t i1)
 {
     int ok = 1;
-    for (size_t i = 0; i < n; i++) {
+    for (size_t i = i0; i < i1; i++) {
         double a = al[i] + be[i];
         double b1 = ts__geo_b1(x[i], x[i + 1], f[i], d[i], a);
         double b2 = ts__geo_b2(x[i], x[i + 1], f[i + 1], d[i + 1], a);
         ok &= (fabs(b1) <= TS_VALUE_MAX) & (fabs(b2) <= TS_VALUE_MAX);
     }
     return ok;
+}
+
+/* values_ok or geo_values_ok of intervals [i0, i1), whichever sp stores. */
+static int controls_ok(const ts_spline *sp, size_t i0, size_t i1)
+{
+    return sp->b1 ? values_ok(sp->b1, sp->b2, i0, i1)
+                  : geo_values_ok(sp->x, sp->f, sp->d, sp->alpha, sp->beta, i0, i1);
 }
 
 /* The first non-finite d_i, i in [p0, p1) (there is one). */
@@ -193,6 +200,7 @@ static ts_status build(ts_spline *sp, const ts_spline_options *o, const double *
 {
     size_t n = sp->n, np = n + 1, done = 0;
     int user = o->slopes == TS_SLOPES_USER, shaped = o->shape != TS_SHAPE_NONE, dir = 0;
+    int vals = 1; /* controls_ok of the blocks, checked while they are in cache */
     const ts__form_ops *form = ts__form(sp->form);
     int c1 = form->neighbours, geo = form->geometric;
     ts_status st = TS_OK;
@@ -241,21 +249,23 @@ static ts_status build(ts_spline *sp, const ts_spline_options *o, const double *
         if (shaped && (st = ts__certify_range(sp, o, i0, i1, err)) != TS_OK)
             return st;
         sum = cumulate(sp, i0, i1, sum);
+        vals &= controls_ok(sp, i0, i1);
     }
     if (c1) {
         form->controls(sp, 0, n);
         if (shaped && (st = ts__certify_range(sp, o, 0, n, err)) != TS_OK)
             return st;
         (void)cumulate(sp, 0, n, 0.0);
+        vals = controls_ok(sp, 0, n);
     }
     if (shaped)
         ts__certify_done(sp, o);
     /* control values must be finite (a tiny a_i with a large slope can
      * overflow B1, B2 with no scheme to catch it) and at most TS_VALUE_MAX
-     * (so S between the knots cannot overflow); an integral that overflows
-     * is not an error: ts_spline_integral then returns ±Inf */
-    if (!(sp->b1 ? values_ok(sp->b1, sp->b2, n)
-                 : geo_values_ok(sp->x, sp->f, sp->d, sp->alpha, sp->beta, n))) {
+     * (so S between the knots cannot overflow), reported after every other
+     * check of the build; an integral that overflows is not an error:
+     * ts_spline_integral then returns ±Inf */
+    if (!vals) {
         size_t i = 0; /* the first offender (there is one) */
         double B[4];
         for (;; i++) {

@@ -74,6 +74,60 @@ static void test_hand(void)
     }
 }
 
+/* More knots than one pass of the slope loop takes (1024 inner knots a
+ * pass; here 2500) and a secant whose numerator overflows.
+ * f = x² on the integers: secants 2i + 1, the three-point slope p_i = 2i,
+ * min(2i - 1, 2i + 1, i) = i for i >= 1, so d_i = 2i exactly (every value
+ * and operation exact in binary: weights 1/2).  The huge case:
+ * x = 0, 8, 16, f = -2^1023, 2^1023, DBL_MAX: f_1 - f_0 = 2^1024 overflows
+ * and the secant is taken by halves, Δ_0 = 2((2^1022 + 2^1022)/8) = 2^1021
+ * exactly; Δ_1 = (DBL_MAX - 2^1023)/8 = 2^1020 - 2^968 exactly; both
+ * positive, p_1 = (Δ_0 + Δ_1)/2 (weights 1/2) is the smallest of the three
+ * halves' candidates (|p_1|/2 ~ 0.75·2^1020 < Δ_1), so d_1 = p_1, within one
+ * rounding of its sum (the halvings are exact). */
+static void test_long_and_huge(void)
+{
+    TH_CASE("long and huge");
+    enum { NP = 2500 };
+    static double x[NP], f[NP], d[NP];
+    for (int i = 0; i < NP; i++) {
+        x[i] = i;
+        f[i] = (double)i * i;
+    }
+    slopes_of(x, f, NP, d);
+    int bad = 0;
+    for (int i = 1; i < NP - 1; i++)
+        bad += d[i] != 2.0 * i;
+    CHECKF(bad == 0, "%d inner slopes differ from 2i", bad);
+    /* the same data between two lines with the defaults (geometric form,
+     * certified a block of intervals at a time): certified, and by the
+     * theorem of docs/method.md §5.10 every interval's control values
+     * increase from f_i to f_{i+1} */
+    ts_spline_options o;
+    ts_spline_options_init(&o);
+    o.shape = TS_SHAPE_BETWEEN;
+    o.lower = (ts_line){1.0, -10.0};
+    o.upper = (ts_line){0.0, 1e7};
+    ts_spline *s = NULL;
+    CHECK(ts_spline_new(x, f, NP, &o, &s, NULL) == TS_OK);
+    if (s) {
+        CHECK(ts_spline_certified(s) == 1);
+        bad = 0;
+        for (size_t i = 0; i + 1 < NP; i++) {
+            double B[4];
+            CHECK(ts_spline_control(s, i, B, NULL) == TS_OK);
+            bad += !(B[0] == f[i] && B[0] <= B[1] && B[1] <= B[2] && B[2] <= B[3] && B[3] == f[i + 1]);
+        }
+        CHECKF(bad == 0, "%d intervals' control values not increasing", bad);
+        ts_spline_free(s);
+    }
+    const double xs[3] = {0, 8, 16}, fs[3] = {-0x1p1023, 0x1p1023, DBL_MAX};
+    double ds[3];
+    slopes_of(xs, fs, 3, ds);
+    double d0 = 0x1p1021, d1 = 0x1p1020 - 0x1p968;
+    CHECK_CLOSE(ds[1], 0.5 * d0 + 0.5 * d1, EPS * (0.5 * d0 + 0.5 * d1));
+}
+
 /* Random data (monotone runs, flat runs, turns, uneven spacing): with the
  * defaults, per interval (i) Steffen's box 0 <= d/Δ <= 2 (exact comparison),
  * (ii) the control values B0..B3 monotone and between f_i, f_{i+1} (exact:
@@ -196,6 +250,7 @@ static void test_promise_positive(void)
 int main(void)
 {
     test_hand();
+    test_long_and_huge();
     test_promise();
     test_promise_positive();
     return th_report("test_default_promise");
