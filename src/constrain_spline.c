@@ -313,7 +313,7 @@ static void b_eval(const ts_spline *b, size_t j, double x, int want, double o[3]
     if (geo(b))
         ts__geo_eval(b, j, x, want, o);
     else
-        ts__trig_eval_in(b, j, x, want, o);
+        ts__trig_eval_in(b, j, x, b->w[j], want, o);
 }
 
 /* sg (S − B) and its derivative at x in interval i of sp and j of b. */

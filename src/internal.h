@@ -112,9 +112,10 @@ struct ts_spline {
      * form's B1, B2 are f_i ± k_i d_i (ts__B, as controls.c forms them)
      * unless constraint records nudged them (then stored); the running
      * integral is kept at every TS_CUM_STEP-th knot (ts__cum).  The paper
-     * and C¹ forms also store dθ/dx = (π/2)/h_i (w, ts__w): one division
-     * fewer per single evaluation; the geometric form, whose bytes per
-     * knot are a goal, has none. */
+     * and C¹ forms also store dθ/dx = (π/2)/h_i (w, ts__w): no division
+     * in a single evaluation from the cursor's interval (sorted queries,
+     * ts__trig_eval_in); the geometric form, whose bytes per knot are a
+     * goal, has none. */
     double *x, *f, *d;   /* n+1: knots, values, slopes d_i (after shape adjustment) */
     double *alpha, *beta;/* n */
     double *b1, *b2;     /* n: control values B1, B2 (B0 = f[i], B3 = f[i+1]); NULL in
@@ -850,10 +851,13 @@ void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double
 /* The same, paper and C¹ forms, x inside the interval (x_i <= x <= x_{i+1}):
  * ϑ from the nearer end (<= π/4), so the kernels' polynomial sine and cosine
  * (sin and cos of π/2 − θ are exact at the right knot: both knots are
- * interpolated exactly).  Inline: ts_spline_eval's path. */
-TS_INLINE void ts__trig_eval_in(const ts_spline *sp, size_t i, double x, int want, double o[3])
+ * interpolated exactly).  w = dθ/dx, the bits of ts__w: sp->w[i] where the
+ * interval came from the cursor (sorted queries: no division), ts__w after
+ * a search (random queries: no cache line of w to miss).  Inline:
+ * ts_spline_eval's path. */
+TS_INLINE void ts__trig_eval_in(const ts_spline *sp, size_t i, double x, double w, int want,
+                                double o[3])
 {
-    double w = sp->w[i]; /* dθ/dx, ts__w */
     double tu = (x - sp->x[i]) * w, tv = (sp->x[i + 1] - x) * w;
     /* from the right end as the kernels (the same test, on the products):
      * ϑ = π/2 − θ, the control values reversed (docs/method.md §2),

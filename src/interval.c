@@ -11,7 +11,7 @@ static void trig_eval(const ts_spline *sp, size_t i, double x, int want, double 
 {
     double u = x - sp->x[i], v = sp->x[i + 1] - x;
     if (u >= 0.0 && v >= 0.0) {
-        ts__trig_eval_in(sp, i, x, want, o);
+        ts__trig_eval_in(sp, i, x, sp->w[i], want, o);
         return;
     }
     /* outside (TS_EXTRAP_EXTEND): θ from the nearer end, libm */
