@@ -516,7 +516,7 @@ enum cimpl {
 #define C_RSS_COUNT (C_GSL_CSPLINE + 1) /* peak RSS measured for these rows */
 static const char *cimpl_name[C_COUNT] = {
     "(part of it) ts_slopes_compute, arithmetic mean, into a buffer allocated once",
-    "(floor) fresh memory alone: allocate, write, free the spline's bytes (58 per knot), as ts_spline_new allocates",
+    "(floor) fresh memory alone: allocate, write, free the spline's bytes (66 per knot), as ts_spline_new allocates",
     "trigspline ts_spline_new, no shape",
     "**trigspline ts_spline_new, positive, certify = 0**",
     "**trigspline ts_spline_new, positive, certify = 1**",
@@ -565,13 +565,13 @@ static ts_spline *build_scheme(const data *D, int impl)
 }
 
 /* The floor row: the bytes ts_spline_new allocates for the paper form (3
- * arrays of n+1 doubles, 4 of n, n/8 + 1 running integrals, n term bytes),
+ * arrays of n+1 doubles, 5 of n, n/8 + 1 running integrals, n term bytes),
  * allocated the way it does
  * (2 MiB-aligned, transparent huge pages, ts__alloc_block in src/status.c) and written once:
  * page faults, the kernel's zeroing and the first writes, no arithmetic. */
 static int fresh_memory(size_t np)
 {
-    size_t n = np - 1, bytes = 8 * (3 * np + 4 * n + n / 8 + 1) + n, huge = (size_t)2 << 20;
+    size_t n = np - 1, bytes = 8 * (3 * np + 5 * n + n / 8 + 1) + n, huge = (size_t)2 << 20;
     void *p;
     if (bytes >= 4 * huge) {
         size_t rounded = (bytes + huge - 1) / huge * huge;

@@ -313,7 +313,7 @@ static void b_eval(const ts_spline *b, size_t j, double x, int want, double o[3]
     if (geo(b))
         ts__geo_eval(b, j, x, want, o);
     else
-        ts__trig_eval_in(b, j, x, want, o);
+        ts__trig_eval_in(b, j, x, b->w[j], want, o);
 }
 
 /* sg (S − B) and its derivative at x in interval i of sp and j of b. */
@@ -411,7 +411,8 @@ void ts__bcurve_copy(const ts_spline *b, ts_spline *dst, double *q)
     dst->f = q, memcpy(q, b->f, p), q += m + 1;
     dst->d = q, memcpy(q, b->d, p), q += m + 1;
     /* the inner control values stored (a geometric B derives them from its
-       a_i, which are not copied); the widths are derived from x (ts__h) */
+       a_i, which are not copied); the widths are derived from x (ts__h),
+       dθ/dx copied (the paper and C¹ forms' w, in κ's place) */
     dst->b1 = q, q += m;
     dst->b2 = q, q += m;
     for (size_t i = 0; i < m; i++) {
@@ -421,4 +422,6 @@ void ts__bcurve_copy(const ts_spline *b, ts_spline *dst, double *q)
     }
     if (b->kappa)
         dst->kappa = q, memcpy(q, b->kappa, s);
+    else
+        dst->w = q, memcpy(q, b->w, s);
 }

@@ -17,5 +17,5 @@ double ts__interval_deriv(const ts_spline *sp, size_t i, double x, int nu)
     /* d^ν/dθ^ν sin kθ = k^ν sin(kθ + ν π/2), likewise cos */
     double y = p * sin(th + sh) + q * cos(th + sh) + r * pow(2.0, nu) * cos(2.0 * th + sh) +
                pow(3.0, nu) * (u * sin(3.0 * th + sh) + w * cos(3.0 * th + sh));
-    return y * pow(TS_HALF_PI / h, nu);
+    return y * pow(sp->w[i], nu); /* (π/2)/h (ts__w) */
 }

@@ -81,11 +81,16 @@ static ts_status eval_at(const ts_spline *sp, ts_extrap mode, int lim, double x,
     if (!(sp->x[0] <= x && x <= sp->x[sp->n])) /* NaN fails */
         return eval_out(sp, mode, lim, x, want, o);
     o[1] = o[2] = 0.0;
-    size_t i = ts__locate(sp, x, cur);
-    if (sp->form != TS_FORM_GEOMETRIC)
-        ts__trig_eval_in(sp, i, x, want, o);
-    else
+    /* ts__locate's interval; dθ/dx stored where the cursor held x, formed
+     * after a search (ts__trig_eval_in) */
+    size_t n = sp->n, i = ts__cursor_interval(sp, x, cur);
+    int held = i < n;
+    if (!held)
+        i = ts__search(sp->x, n, x, cur);
+    if (sp->form == TS_FORM_GEOMETRIC)
         ts__geo_in(sp, i, x, want, o);
+    else
+        ts__trig_eval_in(sp, i, x, held ? sp->w[i] : ts__w(sp->x[i], sp->x[i + 1]), want, o);
     return TS_OK;
 }
 
@@ -120,7 +125,7 @@ ts_status ts_spline_eval(const ts_spline *s, double x, ts_cursor *cur, double *y
             if (s->form == TS_FORM_GEOMETRIC)
                 return eval_geo(s, i, x, y);
             double o[3];
-            ts__trig_eval_in(s, i, x, 0, o);
+            ts__trig_eval_in(s, i, x, s->w[i], 0, o);
             *y = o[0];
             return TS_OK;
         }

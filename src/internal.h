@@ -111,13 +111,19 @@ struct ts_spline {
      * x[i+1] − x[i] (ts__h), bitwise what was once stored; the geometric
      * form's B1, B2 are f_i ± k_i d_i (ts__B, as controls.c forms them)
      * unless constraint records nudged them (then stored); the running
-     * integral is kept at every TS_CUM_STEP-th knot (ts__cum). */
+     * integral is kept at every TS_CUM_STEP-th knot (ts__cum).  The paper
+     * and C¹ forms also store dθ/dx = (π/2)/h_i (w, ts__w): no division
+     * in a single evaluation from the cursor's interval (sorted queries,
+     * ts__trig_eval_in); the geometric form, whose bytes per knot are a
+     * goal, has none. */
     double *x, *f, *d;   /* n+1: knots, values, slopes d_i (after shape adjustment) */
     double *alpha, *beta;/* n */
     double *b1, *b2;     /* n: control values B1, B2 (B0 = f[i], B3 = f[i+1]); NULL in
                           * the geometric form without constraint records (derived) */
     double *kappa;       /* n: geometric form only (NULL otherwise), κ_i = 2/(3π(α_i + β_i))
                           * (docs/method.md §4), the one expression every user of κ reads */
+    double *w;           /* n: paper and C¹ forms only (NULL otherwise), w_i = (π/2)/h_i
+                          * = dθ/dx (docs/method.md §2), bitwise ts__w's expression */
     unsigned char *term; /* n: ts_term */
     double *cum;         /* n/TS_CUM_STEP + 1: cum[j] = ∫_{x0}^{x_{j·TS_CUM_STEP}} S dx,
                           * the running sum of the wholes (set last by spline.c) */
@@ -749,6 +755,12 @@ static inline double ts__h(const ts_spline *sp, size_t i)
 {
     return sp->x[i + 1] - sp->x[i];
 }
+/* dθ/dx = (π/2)/h_i of interval i (docs/method.md §2): the one expression,
+ * whose bits struct ts_spline's w stores (paper and C¹ forms). */
+TS_INLINE double ts__w(double x0, double x1)
+{
+    return TS_HALF_PI / (x1 - x0);
+}
 /* docs/method.md §4 B1, B2 of the geometric form from the knots (x_i,
  * x_{i+1}: h), f, d and a = α + β: the operations of controls.c, so the
  * bits it once stored (also in vector loops: no contraction there). */
@@ -839,10 +851,13 @@ void ts__interval_eval(const ts_spline *sp, size_t i, double x, int want, double
 /* The same, paper and C¹ forms, x inside the interval (x_i <= x <= x_{i+1}):
  * ϑ from the nearer end (<= π/4), so the kernels' polynomial sine and cosine
  * (sin and cos of π/2 − θ are exact at the right knot: both knots are
- * interpolated exactly).  Inline: ts_spline_eval's path. */
-TS_INLINE void ts__trig_eval_in(const ts_spline *sp, size_t i, double x, int want, double o[3])
+ * interpolated exactly).  w = dθ/dx, the bits of ts__w: sp->w[i] where the
+ * interval came from the cursor (sorted queries: no division), ts__w after
+ * a search (random queries: no cache line of w to miss).  Inline:
+ * ts_spline_eval's path. */
+TS_INLINE void ts__trig_eval_in(const ts_spline *sp, size_t i, double x, double w, int want,
+                                double o[3])
 {
-    double w = TS_HALF_PI / ts__h(sp, i); /* dθ/dx */
     double tu = (x - sp->x[i]) * w, tv = (sp->x[i + 1] - x) * w;
     /* from the right end as the kernels (the same test, on the products):
      * ϑ = π/2 − θ, the control values reversed (docs/method.md §2),
@@ -1003,7 +1018,7 @@ int ts__bcurve_certify(const ts_spline *sp, size_t i, const ts_spline *b, double
 /* The minimum of sg (S − B) over interval i where B is defined, *at its x;
  * B must overlap the interval (x_0 of b < x_{i+1}, x_i < x_m of b). */
 double ts__bcurve_gap(const ts_spline *sp, size_t i, const ts_spline *b, double sg, double *at);
-/* Doubles of a copy of b (knots, values, slopes, widths, controls, κ);
+/* Doubles of a copy of b (knots, values, slopes, controls, κ or w);
  * ts__bcurve_copy fills dst (zeroed first) with arrays in q. */
 size_t ts__bcurve_doubles(const ts_spline *b);
 void ts__bcurve_copy(const ts_spline *b, ts_spline *dst, double *q);

@@ -11,13 +11,13 @@ static void trig_eval(const ts_spline *sp, size_t i, double x, int want, double 
 {
     double u = x - sp->x[i], v = sp->x[i + 1] - x;
     if (u >= 0.0 && v >= 0.0) {
-        ts__trig_eval_in(sp, i, x, want, o);
+        ts__trig_eval_in(sp, i, x, sp->w[i], want, o);
         return;
     }
     /* outside (TS_EXTRAP_EXTEND): θ from the nearer end, libm */
-    double h = ts__h(sp, i), B[4];
+    double B[4];
     ts__B(sp, i, B);
-    double w = TS_HALF_PI / h; /* dθ/dx */
+    double w = sp->w[i]; /* dθ/dx, ts__w */
     if (u <= v) {
         ts__seg_sc(B, sin(u * w), cos(u * w), want, o);
     } else {

@@ -76,6 +76,13 @@ static void copy_points(ts_spline *sp, const double *x, const double *f, size_t 
     *done = upto;
 }
 
+/* w_i = dθ/dx of intervals [i0, i1) (ts__w; x through i1 copied). */
+TS_VECTOR_LOOP static void widths(const double *restrict x, double *restrict w, size_t i0, size_t i1)
+{
+    for (size_t i = i0; i < i1; i++)
+        w[i] = ts__w(x[i], x[i + 1]);
+}
+
 /* docs/method.md §6 user slopes, points [p0, p1) (array checked non-NULL, length np). */
 static ts_status user_slopes(ts_spline *sp, const ts_spline_options *o, size_t p0, size_t p1,
                              ts_error *err)
@@ -221,6 +228,8 @@ static ts_status build(ts_spline *sp, const ts_spline_options *o, const double *
         /* points p0..i1: d_{i1} is needed for interval i1 - 1 */
         size_t p0 = i0 ? i0 + 1 : 0, p1 = i1 + 1;
         copy_points(sp, x, f, &done, i1 + 2 < np ? i1 + 2 : np);
+        if (!geo)
+            widths(sp->x, sp->w, i0, i1);
         if (user) {
             st = user_slopes(sp, o, p0, p1, err);
         } else {
@@ -477,11 +486,12 @@ static ts_status spline_new(const double *x, const double *f, size_t n_points,
     /* layout: 3 arrays of n+1 (x, f, d), n/TS_CUM_STEP + 1 running integrals,
      * alpha and beta (n each), the control values b1, b2 (n each; the
      * geometric form derives them unless constraint records may nudge
-     * them), the geometric form's κ (n), term bytes.  Only what cannot be
-     * derived cheaply: every byte per knot costs construction time. */
+     * them), the geometric form's κ or the other forms' w (n), term bytes.
+     * Only what cannot be derived cheaply: every byte per knot costs
+     * construction time. */
     int geo = ts__form(opt->form)->geometric;
     int keep_b = !geo || opt->n_constraints;
-    size_t per_interval_arrays = 2 + 2 * (size_t)keep_b + (size_t)geo;
+    size_t per_interval_arrays = 2 + 2 * (size_t)keep_b + 1;
     size_t n = n_points - 1, a, b, c, total, bytes;
     if (!mul_ok(n_points, 3, &a) || !mul_ok(n, per_interval_arrays, &b))
         return ts__fail(err, TS_ERR_OVERFLOW, TS_NO_INDEX, TS_WHERE_NONE);
@@ -533,6 +543,8 @@ static ts_status spline_new(const double *x, const double *f, size_t n_points,
     }
     if (geo)
         sp->kappa = p, p += n;
+    else
+        sp->w = p, p += n;
     sp->term = (unsigned char *)p;
     st = build(sp, opt->n_constraints ? &o2 : opt, x, f, err);
     if (st == TS_OK && opt->n_constraints)

@@ -387,7 +387,8 @@ static void entry_points(void)
  * ts_spline_find_interval leaves (ts__search: the cursor, its successor,
  * else the search), which the header documents as the cursor's meaning.
  * The value is the same bits: the same interval's same operations
- * (docs/method.md §2, §4). */
+ * (docs/method.md §2, §4); so are ts_spline_eval_deriv's S, S', S'' with
+ * and without the cursor. */
 static void cursor_step(void)
 {
     const double x[5] = {0.0, 1.0, 2.5, 3.0, 4.5}, f[5] = {1.0, 3.0, 2.0, 2.5, 0.5};
@@ -430,6 +431,18 @@ static void cursor_step(void)
                            "form %d extrap %d cursor %zu x %.17g: %d %.17g (cursor %zu), expected %d "
                            "%.17g (cursor %zu)",
                            form, ex, c0, q[j], (int)st, y, c.interval, (int)sr, yr, cf.interval);
+                    /* S, S', S'' from the cursor's interval (the paper and C¹
+                     * forms read the stored dθ/dx) and after the search (they
+                     * form it): the same bits */
+                    ts_cursor cd = {c0};
+                    double a[3], b[3];
+                    ts_status sa = ts_spline_eval_deriv(s, q[j], &cd, &a[0], &a[1], &a[2]);
+                    ts_status sb = ts_spline_eval_deriv(s, q[j], NULL, &b[0], &b[1], &b[2]);
+                    int eq = sa == sb;
+                    for (int k = 0; k < 3; k++)
+                        eq &= memcmp(&a[k], &b[k], sizeof a[k]) == 0 || (isnan(a[k]) && isnan(b[k]));
+                    CHECKF(eq, "form %d extrap %d cursor %zu x %.17g: S, S', S'' %.17g %.17g %.17g, without the "
+                           "cursor %.17g %.17g %.17g", form, ex, c0, q[j], a[0], a[1], a[2], b[0], b[1], b[2]);
                 }
             }
             ts_spline_free(s);

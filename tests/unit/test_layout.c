@@ -4,8 +4,10 @@
  * order), the geometric form's B1, B2 (ts__B against f_i ± k_i d_i with
  * k_i = 2h/(3π a_i), docs/method.md §4, formed here), and the geometric
  * form's vectorised control-value proofs (ts__skip_proven against the
- * interval-by-interval ts__check_interval).  Every comparison is bitwise:
- * the derived values must be the bits the stored ones were. */
+ * interval-by-interval ts__check_interval), and what the paper and C¹
+ * forms store besides: dθ/dx = (π/2)/h_i, from every construction path.
+ * Every comparison is bitwise: the derived values must be the bits the
+ * stored ones were. */
 #include "th.h"
 #include "trigspline.h"
 #include "internal.h"
@@ -173,6 +175,90 @@ static void test_skip_geo(void)
     }
 }
 
+/* The paper and C¹ forms' stored dθ/dx: w_i = (π/2)/(x_{i+1} − x_i)
+ * bitwise (docs/method.md §2, formed here) for every i; none in the
+ * geometric form. */
+static long check_w(const ts_spline *s)
+{
+    if (s->form == TS_FORM_GEOMETRIC)
+        return s->w != NULL || s->kappa == NULL;
+    if (!s->w)
+        return 1;
+    long bad = 0;
+    for (size_t i = 0; i < s->n; i++)
+        bad += !same(s->w[i], TH_HALF_PI / (s->x[i + 1] - s->x[i]));
+    return bad;
+}
+
+/* Every construction path: each form and shape scheme (blocks of
+ * spline.c's TS_BLOCK intervals: NMAX + 1 points span three), user
+ * slopes, a constraint record, and a bound spline's copy kept by the
+ * spline it bounds (each form of bound). */
+static void test_widths(void)
+{
+    make_data(NMAX + 1);
+    const ts_shape shapes[6] = {TS_SHAPE_NONE,  TS_SHAPE_POSITIVE, TS_SHAPE_ABOVE,
+                                TS_SHAPE_BELOW, TS_SHAPE_BETWEEN,  TS_SHAPE_MONOTONE};
+    for (int form = 0; form < 3; form++) {
+        for (int k = 0; k < 7; k++) {
+            ts_spline_options o;
+            ts_spline_options_init(&o);
+            o.form = (ts_form)form;
+            o.lower = (ts_line){1e-5, 0.1};
+            o.upper = (ts_line){0.0, 4.0};
+            if (k < 6) {
+                o.shape = shapes[k];
+            } else {
+                o.slopes = TS_SLOPES_USER;
+                o.user_slopes = fs; /* any finite slopes */
+                o.n_user_slopes = NMAX + 1;
+            }
+            ts_spline *s = NULL;
+            CHECKF(ts_spline_new(xs, k == 5 ? fm : fs, NMAX + 1, &o, &s, NULL) == TS_OK, "form %d, case %d",
+                   form, k);
+            if (!s)
+                continue;
+            long bad = check_w(s);
+            CHECKF(bad == 0, "form %d, case %d: %ld widths' dθ/dx differ", form, k, bad);
+            ts_spline_free(s);
+        }
+    }
+    /* constraint records (the geometric form only): an increasing one, and
+     * a lower bound spline of each form, a copy of which the record keeps
+     * and evaluates (constrain_spline.c) */
+    double bx[4] = {-1.0, 100.0, 900.0, 4000.0}, by[4] = {-5.0, -4.0, -6.0, -5.0};
+    for (int form = 0; form < 3; form++) {
+        ts_spline_options o;
+        ts_spline_options_init(&o);
+        o.form = (ts_form)form;
+        ts_spline *b = NULL, *s = NULL, *t = NULL;
+        CHECK(ts_spline_new(bx, by, 4, &o, &b, NULL) == TS_OK);
+        o.form = TS_FORM_GEOMETRIC;
+        ts_constraint c[2];
+        ts_constraint_init(&c[0], TS_CONSTRAINT_LOWER);
+        c[0].bound = TS_BOUND_SPLINE, c[0].spline = b;
+        ts_constraint_init(&c[1], TS_CONSTRAINT_INCREASING);
+        o.constraints = c;
+        o.n_constraints = 1;
+        CHECKF(ts_spline_new(xs, fs, NMAX + 1, &o, &s, NULL) == TS_OK, "form %d, bound spline", form);
+        o.constraints = &c[1];
+        CHECKF(ts_spline_new(xs, fm, NMAX + 1, &o, &t, NULL) == TS_OK, "form %d, increasing", form);
+        ts_spline_free(b); /* the copy stays */
+        if (s) {
+            CHECKF(check_w(s) == 0, "form %d: the bound spline's spline", form);
+            CHECKF(s->ncon == 1 && s->con[0].spline == &s->con_spl[0], "form %d: the copy", form);
+            if (s->ncon == 1) {
+                const ts_spline *cb = s->con[0].spline;
+                CHECKF(cb->n == 3 && check_w(cb) == 0, "form %d: the bound's copy", form);
+            }
+        }
+        if (t)
+            CHECKF(check_w(t) == 0, "form %d: the increasing record's spline", form);
+        ts_spline_free(s);
+        ts_spline_free(t);
+    }
+}
+
 int main(void)
 {
     TH_CASE("cum");
@@ -181,5 +267,7 @@ int main(void)
     test_geo_controls();
     TH_CASE("skip_geo");
     test_skip_geo();
+    TH_CASE("widths");
+    test_widths();
     return th_report("test_layout");
 }
