@@ -931,7 +931,8 @@ typedef struct goal {
     char what[256];
     double value, limit;
     int at_least;   /* the goal is value >= limit */
-    char note[128]; /* after the verdict: what the machine measured meanwhile */
+    char note[256]; /* after the verdict: what the machine measured meanwhile, or
+                     * where bench/HISTORY.md shows the limit with its profile */
 } goal;
 #define MAXGOALS 128
 static goal goals[MAXGOALS];
@@ -963,6 +964,21 @@ static void add_goal(const char *what, double value, double limit)
 {
     add_goal_dir(what, value, limit, 0);
 }
+
+/* The last goal's note, printed when it does not hold: where the limit is
+ * shown with its profile and how far it is (bench/HISTORY.md). */
+static void limit_note(const char *why)
+{
+    if (ngoals > 0)
+        snprintf(goals[ngoals - 1].note, sizeof goals[0].note, "%s", why);
+}
+
+#define WHY_GEO_SOLVE                                                                                            \
+    "the limit: θ(x) is solved per query (a start and two Halley steps, about 60 % of the kernel's time); "       \
+    "bench/HISTORY.md, Seventh round (geometric evaluation)"
+#define WHY_INSTR                                                                                                \
+    "the limit: instructions per point (AVX2 28, portable 65; the sine and cosine polynomials and the §2 sum, "   \
+    "fixed by the bits, about 60 %); bench/HISTORY.md, Ninth round (sorted batch)"
 
 static const char *mib(char *buf, double v)
 {
@@ -1417,20 +1433,26 @@ static void issue_goals(const double *evS, const double *evR, const double *bd, 
         for (int k = 0; k < 3 && f == 2; k++) {
             snprintf(w, sizeof w, "sorted batch, geometric form, %s: / paper form, same kernel <= 1.5", kname[k]);
             add_goal(w, evS[im[k]] / evS[pim[k]], 1.5);
+            limit_note(WHY_GEO_SOLVE);
         }
         for (int k = 0; k < 3; k++) { /* paper and C¹: 0.5 (0.8 portable); geometric: 1.0 (1.5 portable) */
             double lim = f < 2 ? (k < 2 ? 0.5 : 0.8) : (k < 2 ? 1.0 : 1.5);
             snprintf(w, sizeof w, "sorted batch, %s form, %s: / GSL steffen <= %.1f", F[f].form, kname[k], lim);
             add_goal(w, evS[im[k]] / st, lim);
+            limit_note(f == 2 ? WHY_GEO_SOLVE : WHY_INSTR);
         }
         for (int k = 0; k < 3 && f < 2; k++) {
             snprintf(w, sizeof w, "sorted batch, %s form, %s: / the memory-bandwidth floor row <= 1.5", F[f].form,
                      kname[k]);
             add_goal(w, evS[im[k]] / evS[I_FLOOR], 1.5);
+            limit_note(WHY_INSTR);
         }
         for (int k = 0; k < 3; k++) {
             snprintf(w, sizeof w, "random batch, %s form, %s: / GSL steffen <= 0.2", F[f].form, kname[k]);
             add_goal(w, evR[im[k]] / str, 0.2);
+            limit_note("the limit: the binary search's dependent cache misses (46 % of the samples; an interval's data "
+                       "in one cache line did not pay); bench/HISTORY.md, Eighth round (single evaluation), Ninth "
+                       "round (construction between lines)");
         }
     }
     const struct {
@@ -1444,6 +1466,10 @@ static void issue_goals(const double *evS, const double *evR, const double *bd, 
                  "<= %.1f",
                  E[k].form, lim);
         add_goal(w, evS[E[k].im] / st, lim);
+        limit_note(k == 2 ? "the limit: the solve is one latency chain (the start about 16 ns, each Halley step about "
+                            "25 ns); bench/HISTORY.md, Eighth round (single evaluation)"
+                          : "1.33-1.47 in the paired runs of bench/HISTORY.md, Ninth round (single evaluation: w "
+                            "stored); a chain of about 90 cycles");
     }
     add_goal("WebAssembly sorted batch: / the native portable build <= 1.3", (double)NAN, 1.3);
     snprintf(goals[ngoals - 1].note, sizeof goals[0].note,
