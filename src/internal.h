@@ -152,6 +152,8 @@ struct ts_surface {
     double *x, *y;                   /* nx+1, ny+1 */
     double *z, *p, *q, *r;           /* nodes: value, ∂z/∂x, ∂z/∂y, twist */
     double *ax, *ay;                 /* nx, ny */
+    double *ks;                      /* each interval's k at its ends (ts__surf_ks): x's 2 nx,
+                                        then y's 2 ny; the build's last, kept in its block */
     /* the control nets are derived per patch (ts__surf_patch), not stored */
     ts__gbound glo, gup;             /* TS_SURFACE_GRIDS: the fields (glo.x NULL when absent) */
     double *gblk;                    /* their owned arrays */
@@ -257,6 +259,20 @@ TS_INLINE double ts__width_error(double x0, double x1, double h)
 {
     double z = h - x1;
     return fabs((x1 - (h - z)) + (-x0 - z));
+}
+/* q[0] = a0 / b0 and q[1] = a1 / b1, one packed division where SSE2 has
+ * it (each lane correctly rounded: the bits of two divisions). */
+TS_INLINE void ts__div2(double a0, double b0, double a1, double b1, double q[2])
+{
+#if defined(__GNUC__) && defined(__SSE2__)
+    typedef double ts__v2 __attribute__((vector_size(16)));
+    ts__v2 a = {a0, a1}, b = {b0, b1}, r = a / b;
+    q[0] = r[0];
+    q[1] = r[1];
+#else
+    q[0] = a0 / b0;
+    q[1] = a1 / b1;
+#endif
 }
 /* c ? a : b by bit masks: no branch where c is as good as random
  * (scattered queries; sorted ones at every interval's midpoint), which a

@@ -689,7 +689,8 @@ static ts_status repair(ts_surface *s, double *flag, ts_error *err)
      * sign is that of B − c for finite B: compared directly */
     const ts_plane *lo = s->has_lower ? &s->lower : NULL, *up = s->has_upper ? &s->upper : NULL;
     int constant = s->shape != TS_SURFACE_GRIDS && !(lo && sloped(lo)) && !(up && sloped(up));
-    double *ks = flag + nx + ny; /* each interval's k at its ends (ts__surf_ks), per round */
+    double *ks = flag + nx + ny; /* each interval's k at its ends (ts__surf_ks), per round;
+                                    those of the round that returns TS_OK are s->ks */
     double cl = lo ? lo->c : -(double)INFINITY, cu = up ? up->c : (double)INFINITY;
     for (int round = 0;; round++) {
         size_t bad = SIZE_MAX;
@@ -849,6 +850,7 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
     }
     if ((st = repair(s, tmp, err)) != TS_OK)
         goto fail;
+    s->ks = tmp + nx + ny; /* the last round's, of the final a */
     s->certified = o->shape != TS_SURFACE_NONE;
     *out = s;
     return TS_OK;

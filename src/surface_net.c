@@ -35,7 +35,9 @@ void ts__surf_basis(const double *t, const double *a, size_t i, ts_form form, do
                     double A[4], double *dA)
 {
     double h = t[i + 1] - t[i];
-    double u = (v - t[i]) / h, w = (t[i + 1] - v) / h; /* from the nearer end: exact knots */
+    double uw[2]; /* u, 1 − u from the nearer end: exact knots */
+    ts__div2(v - t[i], h, t[i + 1] - v, h, uw);
+    double u = uw[0], w = uw[1];
     int right = u > 0.5;
     double r = ts__pick(right, w, u), phi;
     if (form == TS_FORM_GEOMETRIC)
