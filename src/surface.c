@@ -611,15 +611,9 @@ static void clamp_twists(ts_surface *s, double *k)
         clamp_twists_planes(s, kx, ky);
         return;
     }
-    int per_patch = 1;
     for (size_t j = 0, n = 0; j <= s->ny; j++) {
         for (size_t i = 0; i <= s->nx; i++, n++) {
             double lo = -(double)INFINITY, hi = (double)INFINITY;
-            double g[2] = {0.0, 0.0}, pp[2] = {0.0, 0.0}, qq[2] = {0.0, 0.0};
-            /* the node's gaps, the same for its patches */
-            for (int side = 0; side < 2 && !per_patch; side++)
-                if (side ? s->has_upper : s->has_lower)
-                    node_gap(s, n, side, 0, 0, &g[side], &pp[side], &qq[side]);
             for (int cx = 0; cx < 2; cx++) {
                 if (cx ? i == 0 : i == s->nx)
                     continue;
@@ -628,19 +622,15 @@ static void clamp_twists(ts_surface *s, double *k)
                     if (cy ? j == 0 : j == s->ny)
                         continue;
                     size_t pi = i - (size_t)cx, pj = j - (size_t)cy;
-                    double ux = kx[pi], uy = ky[pj];
                     double sx = cx ? -1.0 : 1.0, sy = cy ? -1.0 : 1.0;
                     for (int side = 0; side < 2; side++) {
                         if (!(side ? s->has_upper : s->has_lower))
                             continue;
-                        if (per_patch) /* a field's slopes depend on the patch (§11.7) */
-                            node_gap(s, n, side, pi, pj, &g[side], &pp[side], &qq[side]);
-                        double F = g[side] + sx * ux * pp[side] + sy * uy * qq[side];
-                        double c = (side ? -1.0 : 1.0) * sx * sy * ux * uy; /* c r >= -F/2 */
-                        if (c > 0.0)
-                            lo = max_of(lo, -0.5 * F / c);
-                        if (c < 0.0)
-                            hi = min_of(hi, -0.5 * F / c);
+                        /* a field's slopes depend on the patch (§11.7) */
+                        double g, pp, qq;
+                        node_gap(s, n, side, pi, pj, &g, &pp, &qq);
+                        twist_bound(g, pp, qq, side ? -1.0 : 1.0, sx, sy, kx[pi], ky[pj], &lo,
+                                    &hi);
                     }
                 }
             }
@@ -715,8 +705,8 @@ static ts_status repair(ts_surface *s, double *flag, ts_error *err)
                     mx[l] = B[k + l] > mx[l] ? B[k + l] : mx[l];
                 }
             }
-            int in = mn[0] >= cl && mn[1] >= cl && mn[2] >= cl && mn[3] >= cl && mx[0] <= cu &&
-                     mx[1] <= cu && mx[2] <= cu && mx[3] <= cu;
+            int in = (mn[0] >= cl) & (mn[1] >= cl) & (mn[2] >= cl) & (mn[3] >= cl) &
+                     (mx[0] <= cu) & (mx[1] <= cu) & (mx[2] <= cu) & (mx[3] <= cu);
             if ((zero[0] + zero[1]) + (zero[2] + zero[3]) != 0.0)
                 return ts__fail(err, TS_ERR_NONFINITE, c, TS_WHERE_INTERVAL);
             if (bad == SIZE_MAX || flag[i] == 0.0 || flag[nx + j] == 0.0) {
@@ -980,7 +970,7 @@ ts_status ts_surface_certify(const ts_surface *s, const ts_plane *lower, const t
     ts_status st = TS_OK;
     for (size_t c = 0; c < np; c++) {
         ts_patch_report r;
-        r.struct_size = sizeof r;
+        report_reset(&r); /* an absent side's numbers NaN, as the header says */
         report_patch(s, c % s->nx, c / s->nx, lower, upper, &r);
         if (reports)
             reports[c] = r;

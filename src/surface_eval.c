@@ -98,6 +98,9 @@ static double into_region(const ts_surface *s, double x, double y, double v)
 /* Knots from which the search prefetches: fewer stay in L1 between
  * queries (the prefetches cost time there). */
 #define PREFETCH_KNOTS 512
+/* Nodes from which a batch prefetches the patches' corners (z, p, q, r:
+ * 2 MB at this size, beyond L2). */
+#define PREFETCH_NODES 65536
 /* Queries of a batch searched before their values are formed. */
 #define BATCH_BLOCK 32
 
@@ -221,7 +224,7 @@ ts_status ts_surface_eval_batch(const ts_surface *s, const double *xq, const dou
     ts_status st = TS_OK;
     /* blocks: the searches first, then the bases, then the values (each
      * pass's queries independent: in flight together) */
-    int want = zxq || zyq;
+    int want = (zxq != NULL) | (zyq != NULL), far = (s->nx + 1) * (s->ny + 1) >= PREFETCH_NODES;
     for (size_t n0 = 0; n0 < m; n0 += BATCH_BLOCK) {
         size_t nb = m - n0 < BATCH_BLOCK ? m - n0 : BATCH_BLOCK, ij[BATCH_BLOCK][2];
         double A[BATCH_BLOCK][4][4];
@@ -231,6 +234,19 @@ ts_status ts_surface_eval_batch(const ts_surface *s, const double *xq, const dou
             if (inside(s->x, s->nx, x) && inside(s->y, s->ny, y)) {
                 ij[b][0] = find(s->x, s->nx, x, &cur.x, hit);
                 ij[b][1] = find(s->y, s->ny, y, &cur.y, hit + 1);
+#if defined(__GNUC__)
+                if (far) { /* the patch's corners: in flight with the other searches */
+                    size_t c0 = ij[b][1] * (s->nx + 1) + ij[b][0], c1 = c0 + s->nx + 1;
+                    __builtin_prefetch(s->z + c0);
+                    __builtin_prefetch(s->z + c1);
+                    __builtin_prefetch(s->p + c0);
+                    __builtin_prefetch(s->p + c1);
+                    __builtin_prefetch(s->q + c0);
+                    __builtin_prefetch(s->q + c1);
+                    __builtin_prefetch(s->r + c0);
+                    __builtin_prefetch(s->r + c1);
+                }
+#endif
             }
         }
         for (size_t b = 0; b < nb; b++)
