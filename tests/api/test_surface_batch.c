@@ -54,12 +54,16 @@ static double reference(const ts_surface *s, const double *x, size_t nx, const d
     double B[16];
     ts_surface_control(s, i, j, B, NULL, NULL);
     long double Ax[4], Ay[4], v = 0.0L;
-    basis(TH_HALF_PI * ((long double)xv - x[i]) / ((long double)x[i + 1] - x[i]), Ax);
-    basis(TH_HALF_PI * ((long double)yv - y[j]) / ((long double)y[j + 1] - y[j]), Ay);
+    basis((long double)TH_HALF_PI * ((long double)xv - (long double)x[i]) /
+              ((long double)x[i + 1] - (long double)x[i]),
+          Ax);
+    basis((long double)TH_HALF_PI * ((long double)yv - (long double)y[j]) /
+              ((long double)y[j + 1] - (long double)y[j]),
+          Ay);
     *bmax = 0.0;
     for (int k = 0; k < 4; k++)
         for (int l = 0; l < 4; l++) {
-            v += Ax[k] * Ay[l] * B[4 * k + l];
+            v += Ax[k] * Ay[l] * (long double)B[4 * k + l];
             *bmax = fmax(*bmax, fabs(B[4 * k + l]));
         }
     return (double)v;
