@@ -11,7 +11,9 @@ static inline double one_minus(double s, double c)
 
 void ts__basis(double s, double c, double A[4])
 {
-    double ms = one_minus(s, c), mc = one_minus(c, s);
+    double q[2]; /* one_minus(s, c), one_minus(c, s) with one division */
+    ts__div2(c * c, 1.0 + s, s * s, 1.0 + c, q);
+    double ms = ts__pick(s > 0.5, q[0], 1.0 - s), mc = ts__pick(c > 0.5, q[1], 1.0 - c);
     A[0] = ms * ms * ms;
     A[1] = s * ms * (3.0 - s);
     A[2] = c * mc * (3.0 - c);

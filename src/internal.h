@@ -158,6 +158,8 @@ struct ts_surface {
     double *x, *y;                   /* nx+1, ny+1 */
     double *z, *p, *q, *r;           /* nodes: value, ∂z/∂x, ∂z/∂y, twist */
     double *ax, *ay;                 /* nx, ny */
+    double *ks;                      /* each interval's k at its ends (ts__surf_ks): x's 2 nx,
+                                        then y's 2 ny; the build's last, kept in its block */
     /* the control nets are derived per patch (ts__surf_patch), not stored */
     ts__gbound glo, gup;             /* TS_SURFACE_GRIDS: the fields (glo.x NULL when absent) */
     double *gblk;                    /* their owned arrays */
@@ -263,6 +265,20 @@ TS_INLINE double ts__width_error(double x0, double x1, double h)
 {
     double z = h - x1;
     return fabs((x1 - (h - z)) + (-x0 - z));
+}
+/* q[0] = a0 / b0 and q[1] = a1 / b1, one packed division where SSE2 has
+ * it (each lane correctly rounded: the bits of two divisions). */
+TS_INLINE void ts__div2(double a0, double b0, double a1, double b1, double q[2])
+{
+#if defined(__GNUC__) && defined(__SSE2__)
+    typedef double ts__v2 __attribute__((vector_size(16)));
+    ts__v2 a = {a0, a1}, b = {b0, b1}, r = a / b;
+    q[0] = r[0];
+    q[1] = r[1];
+#else
+    q[0] = a0 / b0;
+    q[1] = a1 / b1;
+#endif
 }
 /* c ? a : b by bit masks: no branch where c is as good as random
  * (scattered queries; sorted ones at every interval's midpoint), which a
@@ -988,8 +1004,24 @@ void ts__surf_patch(const ts_surface *s, size_t i, size_t j, double B[16]);
  * that a caller evaluating many patches of one row or column forms them
  * once). */
 void ts__surf_ks(const ts_surface *s, int dir, size_t i, double u[2]);
-void ts__surf_patch_k(const ts_surface *s, size_t i, size_t j, const double ux[2],
-                      const double uy[2], double B[16]);
+TS_INLINE void ts__surf_patch_k(const ts_surface *s, size_t i, size_t j, const double ux[2],
+                                const double uy[2], double B[16])
+{
+    size_t np = s->nx + 1;
+    /* the four corners: (k, l) of the corner, σ the inward signs */
+    for (int cy = 0; cy < 2; cy++) {
+        for (int cx = 0; cx < 2; cx++) {
+            size_t n = (j + (size_t)cy) * np + i + (size_t)cx;
+            double sx = cx ? -1.0 : 1.0, sy = cy ? -1.0 : 1.0;
+            double ex = sx * ux[cx] * s->p[n], ey = sy * uy[cy] * s->q[n];
+            int k0 = cx ? 3 : 0, l0 = cy ? 3 : 0, k1 = cx ? 2 : 1, l1 = cy ? 2 : 1;
+            B[4 * k0 + l0] = s->z[n];
+            B[4 * k1 + l0] = s->z[n] + ex;
+            B[4 * k0 + l1] = s->z[n] + ey;
+            B[4 * k1 + l1] = s->z[n] + ex + ey + sx * sy * ux[cx] * uy[cy] * s->r[n];
+        }
+    }
+}
 /* p x + q y + c to about one rounding of the result (error-free products
  * and sums, docs/method.md §11.3); *err (if not NULL) bounds its error.
  * x, y finite. */

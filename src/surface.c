@@ -504,14 +504,97 @@ static ts_status scheme_a_nodes(ts_surface *s, const ts_surface_options *o, ts_e
 }
 
 /* fmax and fmin as glibc's x86-64 ones: the second argument where they are
- * equal (±0), the first where the second is NaN */
+ * equal (±0), the first where the second is NaN; written as the compare
+ * and select that SSE's maxsd / minsd are, then the NaN's select, so that
+ * no branch is taken on the data (a random one of the twist's bounds
+ * binds) */
 static double max_of(double a, double b)
 {
-    return a > b || b != b ? a : b;
+    double m = a > b ? a : b; /* b where equal or unordered */
+    return b == b ? m : a;
 }
 static double min_of(double a, double b)
 {
-    return a < b || b != b ? a : b;
+    double m = a < b ? a : b;
+    return b == b ? m : a;
+}
+
+/* The bound of one patch and side on a node's twist (c r >= -F/2, F of
+ * docs/method.md §11.3): into lo where c > 0, hi where c < 0. */
+static inline void twist_bound(double g, double pp, double qq, double sg, double sx, double sy,
+                               double ux, double uy, double *lo, double *hi)
+{
+    double F = g + sx * ux * pp + sy * uy * qq;
+    double c = sg * sx * sy * ux * uy, v = -0.5 * F / c;
+    if (c > 0.0)
+        *lo = max_of(*lo, v);
+    if (c < 0.0)
+        *hi = min_of(*hi, v);
+}
+
+/* The twists' clamp below against planes and constants, whose gaps at a
+ * node are the same for its patches: the same bounds in the same order
+ * (patch (i, j), (i, j − 1), (i − 1, j), (i − 1, j − 1); lower side before
+ * upper), unrolled, the sides' presence hoisted (lower: 1, upper: 2). */
+static inline void clamp_row(ts_surface *s, const double *kx, double ky0, double ky1, size_t j,
+                             int sides)
+{
+    size_t nx = s->nx, ny = s->ny, n = j * (nx + 1);
+    int up = j > 0, down = j < ny;
+    for (size_t i = 0; i <= nx; i++, n++) {
+        double lo = -(double)INFINITY, hi = (double)INFINITY;
+        double g0 = 0.0, p0 = 0.0, q0 = 0.0, g1 = 0.0, p1 = 0.0, q1 = 0.0;
+        if (sides & 1)
+            node_gap(s, n, 0, 0, 0, &g0, &p0, &q0);
+        if (sides & 2)
+            node_gap(s, n, 1, 0, 0, &g1, &p1, &q1);
+        if (i < nx) {
+            double ux = kx[i];
+            if (down) {
+                if (sides & 1)
+                    twist_bound(g0, p0, q0, 1.0, 1.0, 1.0, ux, ky0, &lo, &hi);
+                if (sides & 2)
+                    twist_bound(g1, p1, q1, -1.0, 1.0, 1.0, ux, ky0, &lo, &hi);
+            }
+            if (up) {
+                if (sides & 1)
+                    twist_bound(g0, p0, q0, 1.0, 1.0, -1.0, ux, ky1, &lo, &hi);
+                if (sides & 2)
+                    twist_bound(g1, p1, q1, -1.0, 1.0, -1.0, ux, ky1, &lo, &hi);
+            }
+        }
+        if (i > 0) {
+            double ux = kx[i - 1];
+            if (down) {
+                if (sides & 1)
+                    twist_bound(g0, p0, q0, 1.0, -1.0, 1.0, ux, ky0, &lo, &hi);
+                if (sides & 2)
+                    twist_bound(g1, p1, q1, -1.0, -1.0, 1.0, ux, ky0, &lo, &hi);
+            }
+            if (up) {
+                if (sides & 1)
+                    twist_bound(g0, p0, q0, 1.0, -1.0, -1.0, ux, ky1, &lo, &hi);
+                if (sides & 2)
+                    twist_bound(g1, p1, q1, -1.0, -1.0, -1.0, ux, ky1, &lo, &hi);
+            }
+        }
+        double r = s->r[n], in = r > hi ? hi : r;
+        s->r[n] = ts__pick(r < lo, lo, in); /* r < lo ? lo : (r > hi ? hi : r) */
+    }
+}
+
+static void clamp_twists_planes(ts_surface *s, const double *kx, const double *ky)
+{
+    int sides = (s->has_lower ? 1 : 0) | (s->has_upper ? 2 : 0);
+    for (size_t j = 0; j <= s->ny; j++) {
+        double ky0 = j < s->ny ? ky[j] : 0.0, ky1 = j > 0 ? ky[j - 1] : 0.0;
+        if (sides == 1)
+            clamp_row(s, kx, ky0, ky1, j, 1);
+        else if (sides == 2)
+            clamp_row(s, kx, ky0, ky1, j, 2);
+        else
+            clamp_row(s, kx, ky0, ky1, j, 3);
+    }
 }
 
 /* docs/method.md §11.3: clamp every twist so that on each of its patches the
@@ -524,15 +607,13 @@ static void clamp_twists(ts_surface *s, double *k)
         kx[i] = ts__geo_k(s->x[i + 1] - s->x[i], s->ax[i]);
     for (size_t j = 0; j < s->ny; j++)
         ky[j] = ts__geo_k(s->y[j + 1] - s->y[j], s->ay[j]);
-    int per_patch = s->shape == TS_SURFACE_GRIDS;
+    if (s->shape != TS_SURFACE_GRIDS) {
+        clamp_twists_planes(s, kx, ky);
+        return;
+    }
     for (size_t j = 0, n = 0; j <= s->ny; j++) {
         for (size_t i = 0; i <= s->nx; i++, n++) {
             double lo = -(double)INFINITY, hi = (double)INFINITY;
-            double g[2] = {0.0, 0.0}, pp[2] = {0.0, 0.0}, qq[2] = {0.0, 0.0};
-            /* the node's gaps, the same for its patches */
-            for (int side = 0; side < 2 && !per_patch; side++)
-                if (side ? s->has_upper : s->has_lower)
-                    node_gap(s, n, side, 0, 0, &g[side], &pp[side], &qq[side]);
             for (int cx = 0; cx < 2; cx++) {
                 if (cx ? i == 0 : i == s->nx)
                     continue;
@@ -541,19 +622,15 @@ static void clamp_twists(ts_surface *s, double *k)
                     if (cy ? j == 0 : j == s->ny)
                         continue;
                     size_t pi = i - (size_t)cx, pj = j - (size_t)cy;
-                    double ux = kx[pi], uy = ky[pj];
                     double sx = cx ? -1.0 : 1.0, sy = cy ? -1.0 : 1.0;
                     for (int side = 0; side < 2; side++) {
                         if (!(side ? s->has_upper : s->has_lower))
                             continue;
-                        if (per_patch) /* a field's slopes depend on the patch (§11.7) */
-                            node_gap(s, n, side, pi, pj, &g[side], &pp[side], &qq[side]);
-                        double F = g[side] + sx * ux * pp[side] + sy * uy * qq[side];
-                        double c = (side ? -1.0 : 1.0) * sx * sy * ux * uy; /* c r >= -F/2 */
-                        if (c > 0.0)
-                            lo = max_of(lo, -0.5 * F / c);
-                        if (c < 0.0)
-                            hi = min_of(hi, -0.5 * F / c);
+                        /* a field's slopes depend on the patch (§11.7) */
+                        double g, pp, qq;
+                        node_gap(s, n, side, pi, pj, &g, &pp, &qq);
+                        twist_bound(g, pp, qq, side ? -1.0 : 1.0, sx, sy, kx[pi], ky[pj], &lo,
+                                    &hi);
                     }
                 }
             }
@@ -602,7 +679,8 @@ static ts_status repair(ts_surface *s, double *flag, ts_error *err)
      * sign is that of B − c for finite B: compared directly */
     const ts_plane *lo = s->has_lower ? &s->lower : NULL, *up = s->has_upper ? &s->upper : NULL;
     int constant = s->shape != TS_SURFACE_GRIDS && !(lo && sloped(lo)) && !(up && sloped(up));
-    double *ks = flag + nx + ny; /* each interval's k at its ends (ts__surf_ks), per round */
+    double *ks = flag + nx + ny; /* each interval's k at its ends (ts__surf_ks), per round;
+                                    those of the round that returns TS_OK are s->ks */
     double cl = lo ? lo->c : -(double)INFINITY, cu = up ? up->c : (double)INFINITY;
     for (int round = 0;; round++) {
         size_t bad = SIZE_MAX;
@@ -614,14 +692,22 @@ static ts_status repair(ts_surface *s, double *flag, ts_error *err)
              c++, i = i + 1 == nx ? 0 : i + 1, j += i == 0) {
             double B[16];
             ts__surf_patch_k(s, i, j, ks + 2 * i, ks + 2 * (nx + j), B);
-            double zero = 0.0, mn = B[0], mx = B[0]; /* zero: NaN unless every B[k] is finite */
-            for (size_t k = 0; k < 16; k++) {
-                zero += 0.0 * B[k];
-                mn = B[k] < mn ? B[k] : mn;
-                mx = B[k] > mx ? B[k] : mx;
+            /* zero: NaN unless every B[k] is finite (in any order of the
+             * sums); mn, mx: the least and greatest (their compares with the
+             * sides do not depend on which zero where ±0 tie): four lanes */
+            double zero[4] = {0.0, 0.0, 0.0, 0.0}, mn[4], mx[4];
+            for (size_t l = 0; l < 4; l++)
+                mn[l] = mx[l] = B[l];
+            for (size_t k = 0; k < 16; k += 4) {
+                for (size_t l = 0; l < 4; l++) {
+                    zero[l] += 0.0 * B[k + l];
+                    mn[l] = B[k + l] < mn[l] ? B[k + l] : mn[l];
+                    mx[l] = B[k + l] > mx[l] ? B[k + l] : mx[l];
+                }
             }
-            int in = mn >= cl && mx <= cu;
-            if (zero != 0.0)
+            int in = (mn[0] >= cl) & (mn[1] >= cl) & (mn[2] >= cl) & (mn[3] >= cl) &
+                     (mx[0] <= cu) & (mx[1] <= cu) & (mx[2] <= cu) & (mx[3] <= cu);
+            if ((zero[0] + zero[1]) + (zero[2] + zero[3]) != 0.0)
                 return ts__fail(err, TS_ERR_NONFINITE, c, TS_WHERE_INTERVAL);
             if (bad == SIZE_MAX || flag[i] == 0.0 || flag[nx + j] == 0.0) {
                 if (!(constant ? in : patch_inside(s, c, B))) {
@@ -754,6 +840,7 @@ ts_status ts_surface_new(const double *x, size_t nx_points, const double *y, siz
     }
     if ((st = repair(s, tmp, err)) != TS_OK)
         goto fail;
+    s->ks = tmp + nx + ny; /* the last round's, of the final a */
     s->certified = o->shape != TS_SURFACE_NONE;
     *out = s;
     return TS_OK;
@@ -883,7 +970,7 @@ ts_status ts_surface_certify(const ts_surface *s, const ts_plane *lower, const t
     ts_status st = TS_OK;
     for (size_t c = 0; c < np; c++) {
         ts_patch_report r;
-        r.struct_size = sizeof r;
+        report_reset(&r); /* an absent side's numbers NaN, as the header says */
         report_patch(s, c % s->nx, c / s->nx, lower, upper, &r);
         if (reports)
             reports[c] = r;

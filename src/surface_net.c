@@ -35,7 +35,9 @@ void ts__surf_basis(const double *t, const double *a, size_t i, ts_form form, do
                     double A[4], double *dA)
 {
     double h = t[i + 1] - t[i];
-    double u = (v - t[i]) / h, w = (t[i + 1] - v) / h; /* from the nearer end: exact knots */
+    double uw[2]; /* u, 1 − u from the nearer end: exact knots */
+    ts__div2(v - t[i], h, t[i + 1] - v, h, uw);
+    double u = uw[0], w = uw[1];
     int right = u > 0.5;
     double r = ts__pick(right, w, u), phi;
     if (form == TS_FORM_GEOMETRIC)
@@ -131,25 +133,6 @@ void ts__surf_ks(const ts_surface *s, int dir, size_t i, double u[2])
     u[0] = ts__surf_k(t, a, n, i, i, s->form);
     /* the same at both ends but in the C¹ form (its neighbours' a) */
     u[1] = s->form == TS_FORM_C1 ? ts__surf_k(t, a, n, i, i + 1, s->form) : u[0];
-}
-
-void ts__surf_patch_k(const ts_surface *s, size_t i, size_t j, const double ux[2],
-                      const double uy[2], double B[16])
-{
-    size_t np = s->nx + 1;
-    /* the four corners: (k, l) of the corner, σ the inward signs */
-    for (int cy = 0; cy < 2; cy++) {
-        for (int cx = 0; cx < 2; cx++) {
-            size_t n = (j + (size_t)cy) * np + i + (size_t)cx;
-            double sx = cx ? -1.0 : 1.0, sy = cy ? -1.0 : 1.0;
-            double ex = sx * ux[cx] * s->p[n], ey = sy * uy[cy] * s->q[n];
-            int k0 = cx ? 3 : 0, l0 = cy ? 3 : 0, k1 = cx ? 2 : 1, l1 = cy ? 2 : 1;
-            B[4 * k0 + l0] = s->z[n];
-            B[4 * k1 + l0] = s->z[n] + ex;
-            B[4 * k0 + l1] = s->z[n] + ey;
-            B[4 * k1 + l1] = s->z[n] + ex + ey + sx * sy * ux[cx] * uy[cy] * s->r[n];
-        }
-    }
 }
 
 void ts__surf_patch(const ts_surface *s, size_t i, size_t j, double B[16])

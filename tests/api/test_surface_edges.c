@@ -3,7 +3,7 @@
  * between gridded fields that has an upper field only says so (no lower
  * field, its numbers NaN) and is certified; ts_surface_certify checks a
  * surface between fields against planes given by the caller, not against
- * its fields; an alpha so large that raising a (times 10, docs/method.md
+ * its fields, and leaves the numbers of the side it is not given NaN; an alpha so large that raising a (times 10, docs/method.md
  * §11.4) would pass 1e300 stops the repair with the status of the failing
  * patch (TS_ERR_UNPROVEN for fields) rather than overflowing.  Expected
  * values from the header's contract and closed forms: a field that peaks
@@ -68,11 +68,16 @@ int main(void)
             ts_patch_report_init(&r, 1);
             CHECK(ts_surface_certify(s, &below, NULL, &r, &e) == TS_OK);
             CHECK(r.has_lower && !r.has_upper && r.certified);
+            /* the absent side's numbers NaN (the header), not left unset */
+            CHECK(isnan(r.proven_upper) && isnan(r.sampled_upper) && isnan(r.at_upper[0]) &&
+                  isnan(r.at_upper[1]));
             /* the constant plane 0.5 under the constant surface 1 */
             CHECKF(fabs(r.sampled_lower - 0.5) < 1e-12, "%.17g", r.sampled_lower);
             ts_patch_report_init(&r, 1);
             CHECK(ts_surface_certify(s, NULL, &above, &r, &e) == TS_ERR_VIOLATED && e.index == 0);
             CHECK(!r.certified);
+            CHECK(isnan(r.proven_lower) && isnan(r.sampled_lower) && isnan(r.at_lower[0]) &&
+                  isnan(r.at_lower[1]));
             ts_surface_free(s);
             s = NULL;
         }
