@@ -472,9 +472,10 @@ TS_INLINE int geo_proven(const double *restrict x, const double *restrict f,
            ((1 - hu) | geo_hull(B, X, x0, x1, lc[2], lc[3], -1.0));
 }
 
-/* 1 if geo_proven passes every interval of [i0, i1) (a flag, so that it
- * vectorises; one loop per kind and set of lines, constants in each). */
-#define TS_GEO_ALL_PROVEN(name, kind, hl, hu)                                                    \
+/* 1 if test (an expression of interval i) passes every interval of
+ * [i0, i1) (a flag, so that it vectorises; one loop per test, constants in
+ * each). */
+#define TS_GEO_ALL(name, test)                                                                   \
     TS_VECTOR_LOOP static int name(const double *restrict x, const double *restrict f,          \
                                    const double *restrict d, const double *restrict al,         \
                                    const double *restrict be, const double *restrict kappa,     \
@@ -482,9 +483,12 @@ TS_INLINE int geo_proven(const double *restrict x, const double *restrict f,
     {                                                                                            \
         int ok = 1;                                                                              \
         for (size_t i = i0; i < i1; i++)                                                         \
-            ok &= geo_proven(x, f, d, al, be, kappa, i, kind, lc, hl, hu);                       \
+            ok &= test;                                                                          \
         return ok;                                                                               \
     }
+/* geo_proven of each kind and set of lines */
+#define TS_GEO_ALL_PROVEN(name, kind, hl, hu)                                                    \
+    TS_GEO_ALL(name, geo_proven(x, f, d, al, be, kappa, i, kind, lc, hl, hu))
 TS_GEO_ALL_PROVEN(geo_all_positive, 0, 0, 0)
 TS_GEO_ALL_PROVEN(geo_all_monotone, 1, 0, 0)
 TS_GEO_ALL_PROVEN(geo_all_lower, 2, 1, 0)
@@ -528,19 +532,9 @@ TS_INLINE int geo_quick_proven(const double *restrict x, const double *restrict 
            ((1 - hu) | geo_quick(B, bmax, k, k2, x0, h, lc[2], lc[3], -1.0));
 }
 
-/* 1 if geo_quick_proven passes every interval of [i0, i1) (a flag, so
- * that it vectorises; one loop per set of lines). */
+/* geo_quick_proven of each set of lines */
 #define TS_GEO_ALL_QUICK(name, hl, hu)                                                           \
-    TS_VECTOR_LOOP static int name(const double *restrict x, const double *restrict f,          \
-                                   const double *restrict d, const double *restrict al,         \
-                                   const double *restrict be, const double *restrict kappa,     \
-                                   size_t i0, size_t i1, const double *restrict lc)             \
-    {                                                                                            \
-        int ok = 1;                                                                              \
-        for (size_t i = i0; i < i1; i++)                                                         \
-            ok &= geo_quick_proven(x, f, d, al, be, kappa, i, lc, hl, hu);                       \
-        return ok;                                                                               \
-    }
+    TS_GEO_ALL(name, geo_quick_proven(x, f, d, al, be, kappa, i, lc, hl, hu))
 TS_GEO_ALL_QUICK(geo_quick_lower, 1, 0)
 TS_GEO_ALL_QUICK(geo_quick_upper, 0, 1)
 TS_GEO_ALL_QUICK(geo_quick_lines, 1, 1)

@@ -6,11 +6,14 @@
 #include <math.h>
 
 /* (f1 − f0)/h, finite whenever the secant is: where f1 − f0 overflows (f of
- * both signs near ±DBL_MAX) the halves are subtracted (exact scaling). */
+ * both signs near ±DBL_MAX) the halves are subtracted (exact scaling).  One
+ * division, the numerator and the factor 2 selected around it (the same
+ * operations on each path), so that loops of it vectorise. */
 TS_INLINE double secant_of(double f0, double f1, double h)
 {
-    double df = f1 - f0;
-    return fabs(df) <= DBL_MAX ? df / h : 2.0 * ((0.5 * f1 - 0.5 * f0) / h);
+    double df = f1 - f0, half = 0.5 * f1 - 0.5 * f0;
+    int ok = fabs(df) <= DBL_MAX;
+    return (ok ? 1.0 : 2.0) * ((ok ? df : half) / h);
 }
 
 /* Δ_j, j = 0..n-1 (docs/method.md §1). */
@@ -237,18 +240,12 @@ static void periodic(const double *x, const double *f, size_t n, double *d, size
         d[n] = e;
 }
 
-/* Secants Δ_j, j in [j0, j1), into S[j − j0]: secant_of with one division
- * (the halves' numerator and the factor 2 selected around it, the same
- * operations on each path), in a loop that vectorises. */
+/* Secants Δ_j, j in [j0, j1), into S[j − j0], in a loop that vectorises. */
 TS_VECTOR_LOOP static void secants(const double *restrict x, const double *restrict f, size_t j0,
                                    size_t j1, double *restrict S)
 {
-    for (size_t j = j0; j < j1; j++) {
-        double df = f[j + 1] - f[j], half = 0.5 * f[j + 1] - 0.5 * f[j];
-        int ok = fabs(df) <= DBL_MAX;
-        double q = (ok ? df : half) / (x[j + 1] - x[j]);
-        S[j - j0] = (ok ? 1.0 : 2.0) * q;
-    }
+    for (size_t j = j0; j < j1; j++)
+        S[j - j0] = secant_of(f[j], f[j + 1], x[j + 1] - x[j]);
 }
 
 /* docs/method.md §6 Steffen (1990): inner d_i = (sgn Δ_{i-1} + sgn Δ_i)

@@ -124,19 +124,15 @@ static size_t find(const double *t, size_t n, double v, ts_cursor *cur, int *hit
     }
     /* the largest i < n with t[i] <= v lies in [lo, lo + len) */
     size_t lo = 0, len = n;
-#if defined(__GNUC__)
-    if (n >= PREFETCH_KNOTS) {
-        while (len > 1) { /* both knots the next step may read: in flight together */
-            size_t half = len / 2;
-            __builtin_prefetch(t + lo + (len - half) / 2);
-            __builtin_prefetch(t + lo + half + (len - half) / 2);
-            lo = t[lo + half] <= v ? lo + half : lo;
-            len -= half;
-        }
-    }
-#endif
+    int far = n >= PREFETCH_KNOTS; /* the same for every step: predicted */
     while (len > 1) {
         size_t half = len / 2;
+#if defined(__GNUC__)
+        if (far) { /* both knots the next step may read: in flight together */
+            __builtin_prefetch(t + lo + (len - half) / 2);
+            __builtin_prefetch(t + lo + half + (len - half) / 2);
+        }
+#endif
         lo = t[lo + half] <= v ? lo + half : lo;
         len -= half;
     }
